@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+// satviz: the Separating Axis Theorem for 2D collision detection.
+//
+// SUMMARY
+//   Convex polygons of any vertex count and circles. Overlap() answers yes or no as fast as possible; Collide()
+//   returns the minimum translation vector (depth and unit normal from A to B), up to two contact points and the
+//   axis that decided. Both can record a complete step trace (TraceT) for teaching views, with results
+//   bit-identical to the untraced call. Double precision by default; every type and query also exists for float.
+//
+// THE IMPORTANT PARTS
+//   math.h      Vec2, Rot, Transform and their operations.
+//   polygon.h   Polygon; MakePolygon (validates: count, finite, duplicates, collinear, winding, convexity,
+//               self-intersection, with an optional repair), ComputeHull, MakeBox, MakeRegularPolygon.
+//   shape.h     Circle, and Shape (a polygon or a circle).
+//   collide.h   Overlap(A, xfA, B, xfB) -> bool and Collide(A, xfA, B, xfB) -> Manifold, for every pair of shape
+//               kinds; an optional Trace* records every step.
+//   manifold.h  Manifold, ContactPoint, AxisRef (which shape, which edge or vertex).
+//   trace.h     Trace: the axes in test order with both projection intervals, then the contact clipping.
+//
+// CONVENTIONS
+//   y points up; angles are radians, counter-clockwise. Polygon vertices are listed counter-clockwise in the body
+//   frame, so the interior lies to the left of each edge and RightPerp(edge) is the outward normal. A transform
+//   maps body coordinates to world: world = Rotate(q, local) + p. Normals in results point from A to B: moving B
+//   by depth * normal separates the shapes. Touching shapes overlap with depth 0.
+//
+// NUMERIC ROBUSTNESS
+//   The queries work in A's frame: B's offset from A is formed as xfB.p - xfA.p before any rotation, so a pair far
+//   from the origin (1e6, 1e8) is decided as precisely as the same pair at the origin; only the world coordinates
+//   of the returned contact points carry the rounding of their magnitude. Support points are found by walking
+//   along the outline and deciding on the sign of Dot(direction, edge), never by comparing two rounded
+//   projections, so nearly parallel edges cannot send the walk astray. Construction rejects collinear vertices
+//   (turns below a few ulps), whose turn direction rounding could not decide.
+//
+// COST
+//   Overlap and Collide run in O(n + m) for polygons of n and m vertices: the support point of one polygon turns
+//   with the normals of the other, so it is walked forward, not searched for each axis. No heap allocation per
+//   query. Faces of B exactly anti-parallel to a face of A repeat that face's test and are skipped (two aligned
+//   boxes test 2 axes, four faces of A; two rotated boxes 4 axes).
+//
+// REFERENCES
+//   C. Ericson, Real-Time Collision Detection, Morgan Kaufmann 2005, chapter 5.
+//   D. Gregorius, The Separating Axis Test between Convex Polyhedra, GDC 2013.
+//   E. Catto, Contact Manifolds, GDC 2007.
+#pragma once
+
+#include <satviz/collide.h>
+#include <satviz/manifold.h>
+#include <satviz/math.h>
+#include <satviz/polygon.h>
+#include <satviz/shape.h>
+#include <satviz/trace.h>

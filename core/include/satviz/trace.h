@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+// satviz: the step trace of a SAT query, recorded for teaching views and figures. Data only: nothing here draws.
+#pragma once
+
+#include <satviz/manifold.h>
+
+#include <vector>
+
+namespace satviz
+{
+
+/// One axis as the algorithm tested it. Geometry is in world space, oriented as `direction`.
+template <typename S>
+struct AxisTestT
+{
+    AxisRef axis{};        ///< where the axis comes from
+    Vec2T<S> direction{};  ///< unit axis in world space (a face's outward normal, or vertex/centre to centre)
+    S minA{}, maxA{};      ///< projection interval of shape A on `direction`
+    S minB{}, maxB{};      ///< projection interval of shape B on `direction`
+    /// The separation the algorithm computed on this axis, scaled to unit length: > 0 is a gap that separates,
+    /// <= 0 an overlap of -separation. For a face of A it is minB - maxA; for a face of B, minA - maxB on B's
+    /// normal.
+    S separation{};
+    int supportA = -1;       ///< A's vertex that realises the separation (-1 for a circle)
+    int supportB = -1;       ///< B's vertex that realises the separation (-1 for a circle)
+    bool separating = false; ///< this axis separates the shapes: the test stopped here (early exit)
+    /// The axis repeats one already tested (a face of B anti-parallel to a face of A): no work was done for it.
+    bool skipped = false;
+    int duplicateOf = -1; ///< with skipped: index in TraceT::axes of the test it repeats
+    int best = -1;        ///< index in TraceT::axes of the axis with the largest separation so far, this one included
+};
+
+/// Double-precision axis test.
+using AxisTest = AxisTestT<double>;
+
+/// How the contact points of an overlapping polygon pair were found (Sutherland-Hodgman clipping of the incident
+/// edge against the side planes of the reference face). World space.
+template <typename S>
+struct ClipTraceT
+{
+    AxisRef reference{};          ///< the reference face (the deciding axis)
+    Vec2T<S> referenceV1{};       ///< first vertex of the reference face
+    Vec2T<S> referenceV2{};       ///< second vertex of the reference face
+    Vec2T<S> referenceNormal{};   ///< outward normal of the reference face
+    int incidentShape = -1;       ///< 0 (A) or 1 (B): the shape that owns the incident edge
+    int incidentEdge = -1;        ///< index of the incident edge: the edge most anti-parallel to the reference face
+    Vec2T<S> incidentV1{};        ///< first vertex of the incident edge
+    Vec2T<S> incidentV2{};        ///< second vertex of the incident edge
+    Vec2T<S> sideClip1[2]{};      ///< incident edge clipped by the side plane through referenceV1
+    int sideClip1Count = 0;       ///< number of points in sideClip1
+    Vec2T<S> sideClip2[2]{};      ///< then clipped by the side plane through referenceV2
+    int sideClip2Count = 0;       ///< number of points in sideClip2
+    S clippedSeparation[2]{};     ///< signed distance of each sideClip2 point to the reference face
+    bool kept[2]{};               ///< whether each sideClip2 point was kept (below the reference face)
+    bool usedFallback = false;    ///< no clipped point was kept, the deepest incident vertex was used instead
+};
+
+/// Double-precision clip trace.
+using ClipTrace = ClipTraceT<double>;
+
+/// Why the test ended.
+enum class TraceExit
+{
+    None,           ///< nothing recorded yet
+    SeparatingAxis, ///< an axis separated the shapes (the last entry of axes)
+    AllAxesOverlap, ///< every axis overlapped: the shapes intersect
+};
+
+/// The complete record of one query: every axis in the order tested, the contact clipping, and the result.
+/// Recorded in every build type. Filling it allocates; the untraced queries never do.
+template <typename S>
+struct TraceT
+{
+    std::vector<AxisTestT<S>> axes; ///< axes in test order, skipped duplicates included
+    bool hasClip = false;           ///< clip is filled (overlapping polygon pairs)
+    ClipTraceT<S> clip{};           ///< contact clipping
+    TraceExit exit = TraceExit::None; ///< why the test ended
+    ManifoldT<S> result{};          ///< the query's result (for Overlap: only `overlap` is set)
+    /// Empties the trace for reuse.
+    void Clear() { *this = TraceT<S>(); }
+};
+
+/// Double-precision trace.
+using Trace = TraceT<double>;
+
+} // namespace satviz

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+// satviz: query results and step traces as JSON, as printed by satviz-query.
+#pragma once
+
+#include <satviz/collide.h>
+#include <satviz/scene.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace satviz
+{
+
+/// The deciding axis as JSON: {"kind": "face", "shape": "a", "edge": 2}, {"kind": "vertex-to-center", "shape": "b",
+/// "vertex": 1} or {"kind": "center-to-center"}.
+nlohmann::ordered_json AxisJson(const AxisRef& axis);
+
+/// One pair's result: {"a", "b", "overlap", "depth" or "gap", "normal", "contacts", "axis"}.
+nlohmann::ordered_json ManifoldJson(const std::string& nameA, const std::string& nameB, const Manifold& manifold);
+
+/// A step trace: the axes in test order with their intervals, the contact clipping and why the test ended.
+nlohmann::ordered_json TraceJson(const Trace& trace);
+
+/// Every pair of bodies of a scene, in file order: {"scene": file, "pairs": [...]}. With `withTrace`, each pair
+/// also carries its "trace".
+nlohmann::ordered_json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace);
+
+} // namespace satviz

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+// satviz: the public entry points of the SAT queries. Each one picks the tracer once per call (null, or the
+// recorder when a trace is requested) and runs the single template implementation in sat_impl.h.
+
+#include "sat_impl.h"
+
+#include <satviz/collide.h>
+
+namespace satviz
+{
+namespace
+{
+
+template <typename S>
+detail::ShapeRef<S> Ref(const PolygonT<S>& polygon)
+{
+    return {&polygon, nullptr};
+}
+
+template <typename S>
+detail::ShapeRef<S> Ref(const CircleT<S>& circle)
+{
+    return {nullptr, &circle};
+}
+
+// Runs `query(tracer)` with the null tracer, or with a recorder filling `trace` when it is non-null.
+template <typename S, typename A, typename B, typename Query>
+auto WithTracer(TraceT<S>* trace, const A& a, const TransformT<S>& xfA, const B& b, const TransformT<S>& xfB,
+                Query&& query)
+{
+    if (trace == nullptr)
+    {
+        detail::NullTracer tracer;
+        return query(tracer);
+    }
+    detail::TraceRecorder<S> tracer(*trace, Ref(a), xfA, Ref(b), xfB);
+    return query(tracer);
+}
+
+} // namespace
+
+template <typename S>
+bool Overlap(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b, const TransformT<S>& xfB,
+             TraceT<S>* trace)
+{
+    return WithTracer(trace, a, xfA, b, xfB,
+                      [&](auto& tracer) { return detail::OverlapPolygons(a, xfA, b, xfB, tracer); });
+}
+
+template <typename S>
+bool Overlap(const PolygonT<S>& a, const TransformT<S>& xfA, const CircleT<S>& b, const TransformT<S>& xfB,
+             TraceT<S>* trace)
+{
+    return WithTracer(trace, a, xfA, b, xfB, [&](auto& tracer) {
+        return detail::CollidePolygonCircle<false>(a, xfA, b, xfB, 0, tracer).overlap;
+    });
+}
+
+template <typename S>
+bool Overlap(const CircleT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b, const TransformT<S>& xfB,
+             TraceT<S>* trace)
+{
+    return WithTracer(trace, a, xfA, b, xfB, [&](auto& tracer) {
+        return detail::CollidePolygonCircle<false>(b, xfB, a, xfA, 1, tracer).overlap;
+    });
+}
+
+template <typename S>
+bool Overlap(const CircleT<S>& a, const TransformT<S>& xfA, const CircleT<S>& b, const TransformT<S>& xfB,
+             TraceT<S>* trace)
+{
+    return WithTracer(trace, a, xfA, b, xfB,
+                      [&](auto& tracer) { return detail::CollideCircles<false>(a, xfA, b, xfB, tracer).overlap; });
+}
+
+template <typename S>
+bool Overlap(const ShapeT<S>& a, const TransformT<S>& xfA, const ShapeT<S>& b, const TransformT<S>& xfB,
+             TraceT<S>* trace)
+{
+    const bool polygonA = a.type == ShapeType::Polygon;
+    const bool polygonB = b.type == ShapeType::Polygon;
+    if (polygonA && polygonB)
+    {
+        return Overlap(a.polygon, xfA, b.polygon, xfB, trace);
+    }
+    if (polygonA)
+    {
+        return Overlap(a.polygon, xfA, b.circle, xfB, trace);
+    }
+    if (polygonB)
+    {
+        return Overlap(a.circle, xfA, b.polygon, xfB, trace);
+    }
+    return Overlap(a.circle, xfA, b.circle, xfB, trace);
+}
+
+template <typename S>
+ManifoldT<S> Collide(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b, const TransformT<S>& xfB,
+                     TraceT<S>* trace)
+{
+    return WithTracer(trace, a, xfA, b, xfB,
+                      [&](auto& tracer) { return detail::CollidePolygons(a, xfA, b, xfB, tracer); });
+}
+
+template <typename S>
+ManifoldT<S> Collide(const PolygonT<S>& a, const TransformT<S>& xfA, const CircleT<S>& b, const TransformT<S>& xfB,
+                     TraceT<S>* trace)
+{
+    return WithTracer(trace, a, xfA, b, xfB,
+                      [&](auto& tracer) { return detail::CollidePolygonCircle<true>(a, xfA, b, xfB, 0, tracer); });
+}
+
+template <typename S>
+ManifoldT<S> Collide(const CircleT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b, const TransformT<S>& xfB,
+                     TraceT<S>* trace)
+{
+    return WithTracer(trace, a, xfA, b, xfB,
+                      [&](auto& tracer) { return detail::CollidePolygonCircle<true>(b, xfB, a, xfA, 1, tracer); });
+}
+
+template <typename S>
+ManifoldT<S> Collide(const CircleT<S>& a, const TransformT<S>& xfA, const CircleT<S>& b, const TransformT<S>& xfB,
+                     TraceT<S>* trace)
+{
+    return WithTracer(trace, a, xfA, b, xfB,
+                      [&](auto& tracer) { return detail::CollideCircles<true>(a, xfA, b, xfB, tracer); });
+}
+
+template <typename S>
+ManifoldT<S> Collide(const ShapeT<S>& a, const TransformT<S>& xfA, const ShapeT<S>& b, const TransformT<S>& xfB,
+                     TraceT<S>* trace)
+{
+    const bool polygonA = a.type == ShapeType::Polygon;
+    const bool polygonB = b.type == ShapeType::Polygon;
+    if (polygonA && polygonB)
+    {
+        return Collide(a.polygon, xfA, b.polygon, xfB, trace);
+    }
+    if (polygonA)
+    {
+        return Collide(a.polygon, xfA, b.circle, xfB, trace);
+    }
+    if (polygonB)
+    {
+        return Collide(a.circle, xfA, b.polygon, xfB, trace);
+    }
+    return Collide(a.circle, xfA, b.circle, xfB, trace);
+}
+
+#define SATVIZ_INSTANTIATE(S)                                                                                        \
+    template bool Overlap(const PolygonT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&,        \
+                          TraceT<S>*);                                                                               \
+    template bool Overlap(const PolygonT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,         \
+                          TraceT<S>*);                                                                               \
+    template bool Overlap(const CircleT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&,         \
+                          TraceT<S>*);                                                                               \
+    template bool Overlap(const CircleT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,          \
+                          TraceT<S>*);                                                                               \
+    template bool Overlap(const ShapeT<S>&, const TransformT<S>&, const ShapeT<S>&, const TransformT<S>&,            \
+                          TraceT<S>*);                                                                               \
+    template ManifoldT<S> Collide(const PolygonT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&, \
+                                  TraceT<S>*);                                                                       \
+    template ManifoldT<S> Collide(const PolygonT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,  \
+                                  TraceT<S>*);                                                                       \
+    template ManifoldT<S> Collide(const CircleT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&,  \
+                                  TraceT<S>*);                                                                       \
+    template ManifoldT<S> Collide(const CircleT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,   \
+                                  TraceT<S>*);                                                                       \
+    template ManifoldT<S> Collide(const ShapeT<S>&, const TransformT<S>&, const ShapeT<S>&, const TransformT<S>&,     \
+                                  TraceT<S>*);
+
+SATVIZ_INSTANTIATE(double)
+SATVIZ_INSTANTIATE(float)
+
+#undef SATVIZ_INSTANTIATE
+
+} // namespace satviz

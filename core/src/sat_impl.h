@@ -1,0 +1,522 @@
+// SPDX-License-Identifier: MIT
+// satviz (private): the Separating Axis Theorem, written once as templates over the scalar type and a tracer.
+//
+// References:
+//   C. Ericson, Real-Time Collision Detection (2005), 5.2.1 (separating-axis test), 5.2.6 (circle against
+//     polygon, Voronoi regions), 5.1.1 (closest point).
+//   D. Gregorius, "The Separating Axis Test between Convex Polyhedra", GDC 2013 (face queries with support points,
+//     reference face and incident edge, clipping).
+//   E. Catto, "Contact Manifolds", GDC 2007 (clipping the incident edge against the reference face's side planes).
+#pragma once
+
+#include "tracer.h"
+
+#include <satviz/manifold.h>
+
+#include <cmath>
+#include <limits>
+
+namespace satviz::detail
+{
+
+// ---------------------------------------------------------------------------------------------------------------
+// Support points by walking
+// ---------------------------------------------------------------------------------------------------------------
+
+/// Index after i on a polygon of n vertices.
+inline int Next(int i, int n)
+{
+    return i + 1 == n ? 0 : i + 1;
+}
+
+/// Index before i on a polygon of n vertices.
+inline int Prev(int i, int n)
+{
+    return i == 0 ? n - 1 : i - 1;
+}
+
+/// Walks forward from `start` to the support vertex of `polygon` in direction `d` (polygon frame): while edge j
+/// climbs along d, step to its end. Valid when the support lies ahead of `start` by less than half a turn, which
+/// holds when d rotates counter-clockwise from the direction whose support `start` was. Deciding on the sign of
+/// Dot(d, edge) rather than comparing two rounded projections keeps the walk exact up to the edge's own rounding.
+/// Stops on the first vertex of a plateau (an edge perpendicular to d).
+template <typename S>
+int WalkToSupport(const PolygonT<S>& polygon, Vec2T<S> d, int start)
+{
+    const int n = polygon.Count();
+    int j = start;
+    for (int steps = 0; steps < n && Dot(d, polygon.edges[j]) > S(0); ++steps)
+    {
+        j = Next(j, n);
+    }
+    return j;
+}
+
+/// The support vertex of `polygon` in direction `d` from no prior knowledge: climb from vertex 0 forwards or
+/// backwards, whichever goes up (projections along a convex outline rise, then fall: one maximum). Ends on the
+/// first vertex of a plateau, like WalkToSupport.
+template <typename S>
+int ClimbToSupport(const PolygonT<S>& polygon, Vec2T<S> d)
+{
+    if (Dot(d, polygon.edges[0]) > S(0))
+    {
+        return WalkToSupport(polygon, d, 0);
+    }
+    const int n = polygon.Count();
+    int j = 0;
+    for (int steps = 0; steps < n; ++steps)
+    {
+        const int p = Prev(j, n);
+        if (Dot(d, polygon.edges[p]) > S(0))
+        {
+            break;
+        }
+        j = p;
+    }
+    return j;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Face queries
+// ---------------------------------------------------------------------------------------------------------------
+
+/// Outcome of testing every face of one polygon against another.
+template <typename S>
+struct FaceQuery
+{
+    S separation = -std::numeric_limits<S>::infinity(); ///< largest separation found (> 0: separated)
+    int face = -1;                                      ///< the face that has it
+    int support = -1;                                   ///< the other polygon's support vertex for that face
+    bool separated = false;                             ///< stopped at a separating face
+};
+
+/// Face query of `ref` against `inc` (Gregorius): for each face i of ref, with outward normal n, the separation is
+/// the signed distance from the face to inc's support point in direction -n, taken in ref's frame:
+///     separation_i = Dot(n, support(inc, -n) - v_i).
+/// Outline:
+///   1. The normals of ref turn counter-clockwise face after face, so the support point of inc turns with them:
+///      find it for face 0 by climbing, then walk it forward. The whole pass visits each vertex of both polygons
+///      a bounded number of times: O(n + m).
+///   2. A separation > 0 is a separating axis: stop there (early exit).
+///   3. Second pass only (skipDuplicates): when inc's support edge is exactly perpendicular to the direction, inc
+///      has a face anti-parallel to this one; the first pass already made this very test from that face, so it is
+///      skipped.
+/// kUnit selects unit normals (Collide: separations are distances) or raw edge normals (Overlap: only the sign
+/// matters, so no square root or division is needed).
+template <bool kUnit, typename S, typename Tracer>
+FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const PolygonT<S>& inc, const TransformT<S>& incInRef, int side,
+                        bool skipDuplicates, Tracer& tracer)
+{
+    FaceQuery<S> query;
+    const int n = ref.Count();
+    int support = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        const Vec2T<S> normal = kUnit ? ref.normals[i] : RightPerp(ref.edges[i]);
+        const Vec2T<S> d = InvRotate(incInRef.q, -normal);
+        support = i == 0 ? ClimbToSupport(inc, d) : WalkToSupport(inc, d, support);
+        if (skipDuplicates && Dot(d, inc.edges[support]) == S(0))
+        {
+            if constexpr (Tracer::kEnabled)
+            {
+                tracer.SkippedFace(i, support);
+            }
+            continue;
+        }
+        const S separation = Dot(normal, TransformPoint(incInRef, inc.vertices[support]) - ref.vertices[i]);
+        const bool separating = separation > S(0);
+        if (separation > query.separation)
+        {
+            query.separation = separation;
+            query.face = i;
+            query.support = support;
+        }
+        if constexpr (Tracer::kEnabled)
+        {
+            tracer.FaceAxis(side, i, normal, separation, support, separating);
+        }
+        if (separating)
+        {
+            query.separated = true;
+            return query;
+        }
+    }
+    return query;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Polygon against polygon
+// ---------------------------------------------------------------------------------------------------------------
+
+/// Overlap of two polygons: the face query of A, then of B, each stopping at the first separating face.
+template <typename S, typename Tracer>
+bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b, const TransformT<S>& xfB,
+                     Tracer& tracer)
+{
+    const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
+    const FaceQuery<S> queryA = QueryFaces<false>(a, b, bInA, 0, false, tracer);
+    bool overlap = !queryA.separated;
+    if (overlap)
+    {
+        const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
+        overlap = !QueryFaces<false>(b, a, aInB, 1, true, tracer).separated;
+    }
+    if constexpr (Tracer::kEnabled)
+    {
+        ManifoldT<S> result;
+        result.overlap = overlap;
+        tracer.Finish(overlap ? TraceExit::AllAxesOverlap : TraceExit::SeparatingAxis, result);
+    }
+    return overlap;
+}
+
+/// Keeps the part of segment [p0, p1] on the inner side of a plane, where Dot(normal, p - point) <= 0
+/// (Sutherland-Hodgman for one plane). Returns the number of points written to out (0 to 2).
+template <typename S>
+int ClipSegmentToPlane(Vec2T<S> out[2], Vec2T<S> p0, Vec2T<S> p1, Vec2T<S> normal, Vec2T<S> point)
+{
+    const S d0 = Dot(normal, p0 - point);
+    const S d1 = Dot(normal, p1 - point);
+    int count = 0;
+    if (d0 <= S(0))
+    {
+        out[count++] = p0;
+    }
+    if (d1 <= S(0))
+    {
+        out[count++] = p1;
+    }
+    if ((d0 < S(0) && d1 > S(0)) || (d0 > S(0) && d1 < S(0)))
+    {
+        const S u = d0 / (d0 - d1);
+        out[count++] = p0 + u * (p1 - p0);
+    }
+    return count;
+}
+
+/// The manifold of two polygons (Gregorius; Catto).
+/// Outline:
+///   1. Work in A's frame: B relative to A, so far-away pairs keep their relative precision.
+///   2. Face query of A's faces, then of B's faces (in B's frame); stop at the first separating face.
+///   3. Reference face: the face of largest separation (least penetration), A's on a tie. Its unit normal is the
+///      minimum translation direction and -separation the depth, also when one polygon contains the other.
+///   4. Incident edge: of the two edges of the other polygon at its support vertex, the one whose normal is most
+///      anti-parallel to the reference normal.
+///   5. Clip the incident edge against the two side planes of the reference face; keep the clipped points on or
+///      below the reference face. The contact point is halfway between such a point and the reference face.
+template <typename S, typename Tracer>
+ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b,
+                             const TransformT<S>& xfB, Tracer& tracer)
+{
+    ManifoldT<S> manifold;
+    const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
+    const FaceQuery<S> queryA = QueryFaces<true>(a, b, bInA, 0, false, tracer);
+    if (queryA.separated)
+    {
+        manifold.gap = queryA.separation;
+        manifold.normal = Rotate(xfA.q, a.normals[queryA.face]);
+        manifold.axis = {AxisKind::FaceNormal, 0, queryA.face};
+        if constexpr (Tracer::kEnabled)
+        {
+            tracer.Finish(TraceExit::SeparatingAxis, manifold);
+        }
+        return manifold;
+    }
+    const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
+    const FaceQuery<S> queryB = QueryFaces<true>(b, a, aInB, 1, true, tracer);
+    if (queryB.separated)
+    {
+        manifold.gap = queryB.separation;
+        manifold.normal = -Rotate(xfB.q, b.normals[queryB.face]);
+        manifold.axis = {AxisKind::FaceNormal, 1, queryB.face};
+        if constexpr (Tracer::kEnabled)
+        {
+            tracer.Finish(TraceExit::SeparatingAxis, manifold);
+        }
+        return manifold;
+    }
+
+    // Reference face: B's only when strictly better, so ties (and skipped duplicates) keep A's face.
+    const bool flip = queryB.separation > queryA.separation;
+    const PolygonT<S>& ref = flip ? b : a;
+    const PolygonT<S>& inc = flip ? a : b;
+    const TransformT<S>& xfRef = flip ? xfB : xfA;
+    const TransformT<S>& incInRef = flip ? aInB : bInA;
+    const FaceQuery<S>& query = flip ? queryB : queryA;
+
+    const int m = inc.Count();
+    const int i1 = query.face;
+    const int i2 = Next(i1, ref.Count());
+    const Vec2T<S> v1 = ref.vertices[i1];
+    const Vec2T<S> v2 = ref.vertices[i2];
+    const Vec2T<S> normal = ref.normals[i1];
+    const Vec2T<S> tangent = LeftPerp(normal);
+
+    // Incident edge: the edge leaving or the edge entering the support vertex.
+    const int s = query.support;
+    const int before = Prev(s, m);
+    const S dotLeaving = Dot(normal, Rotate(incInRef.q, inc.normals[s]));
+    const S dotEntering = Dot(normal, Rotate(incInRef.q, inc.normals[before]));
+    const int incidentEdge = dotEntering < dotLeaving ? before : s;
+    const Vec2T<S> w1 = TransformPoint(incInRef, inc.vertices[incidentEdge]);
+    const Vec2T<S> w2 = TransformPoint(incInRef, inc.vertices[Next(incidentEdge, m)]);
+
+    Vec2T<S> clip1[2];
+    Vec2T<S> clip2[2];
+    const int count1 = ClipSegmentToPlane(clip1, w1, w2, -tangent, v1);
+    int count2 = 0;
+    if (count1 == 2)
+    {
+        count2 = ClipSegmentToPlane(clip2, clip1[0], clip1[1], tangent, v2);
+    }
+    else if (count1 == 1)
+    {
+        // A single point survives the first plane only when the edge touches it; test it against the second.
+        if (Dot(tangent, clip1[0] - v2) <= S(0))
+        {
+            clip2[count2++] = clip1[0];
+        }
+    }
+
+    S separations[2] = {S(0), S(0)};
+    bool kept[2] = {false, false};
+    for (int k = 0; k < count2; ++k)
+    {
+        separations[k] = Dot(normal, clip2[k] - v1);
+        if (separations[k] <= S(0))
+        {
+            kept[k] = true;
+            ContactPointT<S>& contact = manifold.contacts[manifold.contactCount++];
+            contact.point = TransformPoint(xfRef, clip2[k] - (S(0.5) * separations[k]) * normal);
+            contact.separation = separations[k];
+        }
+    }
+    const bool fallback = manifold.contactCount == 0;
+    if (fallback)
+    {
+        // Clipping lost every point (a rounding artefact at a vertex-vertex contact): use the deepest vertex.
+        const Vec2T<S> deepest = TransformPoint(incInRef, inc.vertices[s]);
+        ContactPointT<S>& contact = manifold.contacts[manifold.contactCount++];
+        contact.point = TransformPoint(xfRef, deepest - (S(0.5) * query.separation) * normal);
+        contact.separation = query.separation;
+    }
+
+    manifold.overlap = true;
+    manifold.depth = -query.separation;
+    const Vec2T<S> worldNormal = Rotate(xfRef.q, normal);
+    manifold.normal = flip ? -worldNormal : worldNormal;
+    manifold.axis = {AxisKind::FaceNormal, flip ? 1 : 0, i1};
+    manifold.incidentEdge = incidentEdge;
+
+    if constexpr (Tracer::kEnabled)
+    {
+        const TransformT<S>& xfInc = flip ? xfA : xfB;
+        ClipTraceT<S> clip;
+        clip.reference = manifold.axis;
+        clip.referenceV1 = TransformPoint(xfRef, v1);
+        clip.referenceV2 = TransformPoint(xfRef, v2);
+        clip.referenceNormal = worldNormal;
+        clip.incidentShape = flip ? 0 : 1;
+        clip.incidentEdge = incidentEdge;
+        clip.incidentV1 = TransformPoint(xfInc, inc.vertices[incidentEdge]);
+        clip.incidentV2 = TransformPoint(xfInc, inc.vertices[Next(incidentEdge, m)]);
+        clip.sideClip1Count = count1;
+        clip.sideClip2Count = count2;
+        for (int k = 0; k < count1; ++k)
+        {
+            clip.sideClip1[k] = TransformPoint(xfRef, clip1[k]);
+        }
+        for (int k = 0; k < count2; ++k)
+        {
+            clip.sideClip2[k] = TransformPoint(xfRef, clip2[k]);
+            clip.clippedSeparation[k] = separations[k];
+            clip.kept[k] = kept[k];
+        }
+        clip.usedFallback = fallback;
+        tracer.Clip(clip);
+        tracer.Finish(TraceExit::AllAxesOverlap, manifold);
+    }
+    return manifold;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Polygon against circle
+// ---------------------------------------------------------------------------------------------------------------
+
+/// Polygon (side `polySide`) against circle (Ericson 5.2.6 and 5.1.1; the Voronoi regions of the polygon).
+/// Outline:
+///   1. Work in the polygon's frame: the circle's centre c relative to the polygon.
+///   2. For each face: separation s_i = Dot(n_i, c - v_i) - r. s_i > 0 separates: stop (early exit).
+///      Keep the face of largest separation.
+///   3. If c lies inside the polygon, that face's normal is the axis of least penetration.
+///   4. Otherwise c is in the Voronoi region of that face or of one of its two vertices. In a vertex region the
+///      axis runs from the vertex to c (the closest point of the polygon is the vertex); in the face region the
+///      face normal is the axis.
+/// The face tests use the precomputed unit normals: the Voronoi step needs the face of largest true distance,
+/// which raw normals would not give. kManifold = false answers only yes or no and compares squared distances, so
+/// it takes no square root.
+template <bool kManifold, typename S, typename Tracer>
+ManifoldT<S> CollidePolygonCircle(const PolygonT<S>& polygon, const TransformT<S>& xfP, const CircleT<S>& circle,
+                                  const TransformT<S>& xfC, int polySide, Tracer& tracer)
+{
+    ManifoldT<S> manifold;
+    const S r = circle.radius;
+    const Vec2T<S> c = InvRotate(xfP.q, (xfC.p - xfP.p) + Rotate(xfC.q, circle.center));
+    // Normals point out of the polygon; the manifold's normal points from A to B.
+    const S orient = polySide == 0 ? S(1) : S(-1);
+    const int n = polygon.Count();
+
+    S bestSeparation = -std::numeric_limits<S>::infinity(); // Dot(n, c - v) over the faces, before subtracting r
+    int bestFace = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        const S s = Dot(polygon.normals[i], c - polygon.vertices[i]);
+        const bool separating = s > r;
+        if (s > bestSeparation)
+        {
+            bestSeparation = s;
+            bestFace = i;
+        }
+        if constexpr (Tracer::kEnabled)
+        {
+            tracer.FaceAxis(polySide, i, polygon.normals[i], s - r, -1, separating);
+        }
+        if (separating)
+        {
+            if constexpr (kManifold)
+            {
+                manifold.gap = s - r;
+                manifold.normal = orient * Rotate(xfP.q, polygon.normals[i]);
+                manifold.axis = {AxisKind::FaceNormal, polySide, i};
+            }
+            if constexpr (Tracer::kEnabled)
+            {
+                tracer.Finish(TraceExit::SeparatingAxis, manifold);
+            }
+            return manifold;
+        }
+    }
+
+    const Vec2T<S> v1 = polygon.vertices[bestFace];
+    const Vec2T<S> v2 = polygon.vertices[Next(bestFace, n)];
+    int vertex = -1;
+    if (bestSeparation > S(0))
+    {
+        if (Dot(c - v1, v2 - v1) <= S(0))
+        {
+            vertex = bestFace;
+        }
+        else if (Dot(c - v2, v1 - v2) <= S(0))
+        {
+            vertex = Next(bestFace, n);
+        }
+    }
+
+    if (vertex >= 0)
+    {
+        const Vec2T<S> v = polygon.vertices[vertex];
+        const Vec2T<S> offset = c - v;
+        const S distanceSquared = LengthSquared(offset);
+        const bool separating = distanceSquared > r * r;
+        if constexpr (Tracer::kEnabled)
+        {
+            const S distance = std::sqrt(distanceSquared);
+            tracer.VertexAxis(polySide, vertex, Rotate(xfP.q, Normalize(offset)), distance - r, separating);
+        }
+        if constexpr (kManifold)
+        {
+            const S distance = std::sqrt(distanceSquared);
+            // The centre is outside the polygon here, so the distance is positive.
+            const Vec2T<S> direction = (S(1) / distance) * offset;
+            manifold.normal = orient * Rotate(xfP.q, direction);
+            manifold.axis = {AxisKind::VertexToCenter, polySide, vertex};
+            if (separating)
+            {
+                manifold.gap = distance - r;
+            }
+            else
+            {
+                manifold.overlap = true;
+                manifold.depth = r - distance;
+                manifold.contactCount = 1;
+                manifold.contacts[0].separation = distance - r;
+                manifold.contacts[0].point = TransformPoint(xfP, v + (S(0.5) * (distance - r)) * direction);
+            }
+        }
+        else
+        {
+            manifold.overlap = !separating;
+        }
+    }
+    else
+    {
+        manifold.overlap = true;
+        if constexpr (kManifold)
+        {
+            const Vec2T<S> normal = polygon.normals[bestFace];
+            manifold.depth = r - bestSeparation;
+            manifold.normal = orient * Rotate(xfP.q, normal);
+            manifold.axis = {AxisKind::FaceNormal, polySide, bestFace};
+            manifold.contactCount = 1;
+            manifold.contacts[0].separation = bestSeparation - r;
+            // Halfway between the circle's deepest point c - r n and the face.
+            manifold.contacts[0].point = TransformPoint(xfP, c - (S(0.5) * (r + bestSeparation)) * normal);
+        }
+    }
+    if constexpr (Tracer::kEnabled)
+    {
+        tracer.Finish(manifold.overlap ? TraceExit::AllAxesOverlap : TraceExit::SeparatingAxis, manifold);
+    }
+    return manifold;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Circle against circle
+// ---------------------------------------------------------------------------------------------------------------
+
+/// Two circles: the only axis is the line through their centres. Concentric circles use the normal (0, 1).
+template <bool kManifold, typename S, typename Tracer>
+ManifoldT<S> CollideCircles(const CircleT<S>& a, const TransformT<S>& xfA, const CircleT<S>& b,
+                            const TransformT<S>& xfB, Tracer& tracer)
+{
+    ManifoldT<S> manifold;
+    const Vec2T<S> ca = Rotate(xfA.q, a.center);
+    const Vec2T<S> d = (xfB.p - xfA.p) + Rotate(xfB.q, b.center) - ca;
+    const S radii = a.radius + b.radius;
+    const S distanceSquared = LengthSquared(d);
+    const bool separating = distanceSquared > radii * radii;
+    if constexpr (kManifold || Tracer::kEnabled)
+    {
+        const S distance = std::sqrt(distanceSquared);
+        const Vec2T<S> normal = distance > S(0) ? (S(1) / distance) * d : Vec2T<S>{S(0), S(1)};
+        if constexpr (kManifold)
+        {
+            manifold.normal = normal;
+            manifold.axis = {AxisKind::CenterToCenter, -1, -1};
+            if (separating)
+            {
+                manifold.gap = distance - radii;
+            }
+            else
+            {
+                manifold.depth = radii - distance;
+                manifold.contactCount = 1;
+                manifold.contacts[0].separation = distance - radii;
+                const Vec2T<S> surfaceA = ca + a.radius * normal;
+                manifold.contacts[0].point = xfA.p + (surfaceA + (S(0.5) * (distance - radii)) * normal);
+            }
+        }
+        if constexpr (Tracer::kEnabled)
+        {
+            tracer.CenterAxis(normal, distance - radii, separating);
+        }
+    }
+    manifold.overlap = !separating;
+    if constexpr (Tracer::kEnabled)
+    {
+        tracer.Finish(separating ? TraceExit::SeparatingAxis : TraceExit::AllAxesOverlap, manifold);
+    }
+    return manifold;
+}
+
+} // namespace satviz::detail

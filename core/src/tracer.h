@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: MIT
+// satviz (private): the tracer policies of the SAT templates. NullTracer is the fast path and records nothing;
+// TraceRecorder fills a TraceT. The algorithm calls a tracer only inside `if constexpr (Tracer::kEnabled)`, so
+// everything the trace needs beyond the result (world axes, full projection intervals) is computed only when
+// recording, and the arithmetic that produces the result is the same in both instantiations.
+#pragma once
+
+#include <satviz/polygon.h>
+#include <satviz/shape.h>
+#include <satviz/trace.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace satviz::detail
+{
+
+/// A non-owning view of a polygon or a circle.
+template <typename S>
+struct ShapeRef
+{
+    const PolygonT<S>* polygon = nullptr; ///< the polygon, or null
+    const CircleT<S>* circle = nullptr;   ///< the circle, or null
+};
+
+/// The tracer that records nothing.
+struct NullTracer
+{
+    static constexpr bool kEnabled = false;
+};
+
+/// Projection interval of a shape on a world direction.
+template <typename S>
+void ProjectShape(ShapeRef<S> shape, const TransformT<S>& xf, Vec2T<S> direction, S& lo, S& hi)
+{
+    if (shape.circle != nullptr)
+    {
+        const S center = Dot(direction, TransformPoint(xf, shape.circle->center));
+        lo = center - shape.circle->radius;
+        hi = center + shape.circle->radius;
+        return;
+    }
+    lo = std::numeric_limits<S>::infinity();
+    hi = -std::numeric_limits<S>::infinity();
+    for (const Vec2T<S>& v : shape.polygon->vertices)
+    {
+        const S d = Dot(direction, TransformPoint(xf, v));
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+    }
+}
+
+/// The tracer that records every step into a TraceT.
+template <typename S>
+class TraceRecorder
+{
+public:
+    static constexpr bool kEnabled = true;
+
+    TraceRecorder(TraceT<S>& trace, ShapeRef<S> a, const TransformT<S>& xfA, ShapeRef<S> b, const TransformT<S>& xfB)
+        : m_trace(trace), m_a(a), m_b(b), m_xfA(xfA), m_xfB(xfB)
+    {
+        m_trace.Clear();
+    }
+
+    /// The world transform of shape `side` (0 = A, 1 = B).
+    const TransformT<S>& Frame(int side) const { return side == 0 ? m_xfA : m_xfB; }
+
+    /// A face of polygon `side` was tested. `normal` is in that polygon's frame (unit or not); `separation` is
+    /// the algorithm's value on that normal; `support` is the other shape's support vertex (-1 for a circle).
+    void FaceAxis(int side, int face, Vec2T<S> normal, S separation, int support, bool separating)
+    {
+        AxisTestT<S> test;
+        test.axis = {AxisKind::FaceNormal, side, face};
+        test.direction = Normalize(Rotate(Frame(side).q, normal));
+        test.separation = separation / Length(normal);
+        test.supportA = side == 0 ? face : support;
+        test.supportB = side == 0 ? support : face;
+        test.separating = separating;
+        Push(test);
+    }
+
+    /// A face of B was skipped: it is anti-parallel to face `duplicateFace` of A, already tested.
+    void SkippedFace(int face, int duplicateFace)
+    {
+        AxisTestT<S> test;
+        test.axis = {AxisKind::FaceNormal, 1, face};
+        test.direction = Rotate(m_xfB.q, m_b.polygon->normals[face]);
+        test.skipped = true;
+        for (size_t i = 0; i < m_trace.axes.size(); ++i)
+        {
+            const AxisRef& ref = m_trace.axes[i].axis;
+            if (ref.kind == AxisKind::FaceNormal && ref.shape == 0 && ref.index == duplicateFace)
+            {
+                test.duplicateOf = static_cast<int>(i);
+                test.separation = m_trace.axes[i].separation;
+                test.supportA = m_trace.axes[i].supportA;
+                test.supportB = m_trace.axes[i].supportB;
+            }
+        }
+        Push(test);
+    }
+
+    /// The axis from vertex `vertex` of polygon `side` to the circle's centre, `direction` in world space.
+    void VertexAxis(int side, int vertex, Vec2T<S> direction, S separation, bool separating)
+    {
+        AxisTestT<S> test;
+        test.axis = {AxisKind::VertexToCenter, side, vertex};
+        test.direction = direction;
+        test.separation = separation;
+        test.supportA = side == 0 ? vertex : -1;
+        test.supportB = side == 0 ? -1 : vertex;
+        test.separating = separating;
+        Push(test);
+    }
+
+    /// The axis between two circles' centres, `direction` in world space from A to B.
+    void CenterAxis(Vec2T<S> direction, S separation, bool separating)
+    {
+        AxisTestT<S> test;
+        test.axis = {AxisKind::CenterToCenter, -1, -1};
+        test.direction = direction;
+        test.separation = separation;
+        test.separating = separating;
+        Push(test);
+    }
+
+    /// The contact clipping, already in world space.
+    void Clip(const ClipTraceT<S>& clip)
+    {
+        m_trace.hasClip = true;
+        m_trace.clip = clip;
+    }
+
+    /// The query ended.
+    void Finish(TraceExit exit, const ManifoldT<S>& result)
+    {
+        m_trace.exit = exit;
+        m_trace.result = result;
+    }
+
+private:
+    void Push(AxisTestT<S>& test)
+    {
+        ProjectShape(m_a, m_xfA, test.direction, test.minA, test.maxA);
+        ProjectShape(m_b, m_xfB, test.direction, test.minB, test.maxB);
+        const int index = static_cast<int>(m_trace.axes.size());
+        test.best = index;
+        if (index > 0)
+        {
+            const int previous = m_trace.axes.back().best;
+            if (test.skipped || m_trace.axes[previous].separation >= test.separation)
+            {
+                test.best = previous;
+            }
+        }
+        m_trace.axes.push_back(test);
+    }
+
+    TraceT<S>& m_trace;
+    ShapeRef<S> m_a;
+    ShapeRef<S> m_b;
+    TransformT<S> m_xfA;
+    TransformT<S> m_xfB;
+};
+
+} // namespace satviz::detail
