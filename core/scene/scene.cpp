@@ -360,6 +360,23 @@ SceneResult ParseScene(std::string_view text, const std::string& file)
         result.error = file + ":" + Location(text, error.byte == 0 ? 0 : error.byte - 1) + ": malformed JSON: " + what;
         return result;
     }
+    catch (const Json::exception& error)
+    {
+        // A number beyond the range of a double: "[json.exception.out_of_range.406] number overflow parsing '1e400'".
+        std::string what = error.what();
+        const size_t bracket = what.find("] ");
+        what = bracket == std::string::npos ? what : what.substr(bracket + 2);
+        std::string where;
+        const size_t open = what.find('\'');
+        const size_t close = what.rfind('\'');
+        if (open != std::string::npos && close > open)
+        {
+            const size_t at = text.find(what.substr(open + 1, close - open - 1));
+            where = at == std::string_view::npos ? "" : ":" + Location(text, at);
+        }
+        result.error = file + where + ": malformed JSON: " + what;
+        return result;
+    }
     try
     {
         result.scene = ParseRoot(root);

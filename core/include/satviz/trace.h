@@ -18,8 +18,8 @@ struct AxisTestT
     S minA{}, maxA{};      ///< projection interval of shape A on `direction`
     S minB{}, maxB{};      ///< projection interval of shape B on `direction`
     /// The separation the algorithm computed on this axis, scaled to unit length: > 0 is a gap that separates,
-    /// <= 0 an overlap of -separation. For a face of A it is minB - maxA; for a face of B, minA - maxB on B's
-    /// normal.
+    /// <= 0 an overlap of -separation. An axis of B (a face of B, or B's vertex towards circle A) points from B
+    /// towards A and its separation is minA - maxB; every other axis points from A towards B, with minB - maxA.
     S separation{};
     int supportA = -1;       ///< A's vertex that realises the separation (-1 for a circle)
     int supportB = -1;       ///< B's vertex that realises the separation (-1 for a circle)

@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: MIT
+// An independent reference for the SAT queries, in quadruple precision (__float128, 113-bit significand) from the
+// exact double inputs. It shares no code with the library:
+//   - yes/no: two convex outlines intersect iff an edge of one crosses or touches an edge of the other, or one
+//     contains a vertex of the other (orientation predicates);
+//   - depth and normal: the minimum over the unit edge normals of both polygons of the projection overlap
+//     min(maxA - minB, maxB - minA), the interval formulation of the tutorials (for convex polygons this is the
+//     penetration depth of the Minkowski difference);
+//   - circles: the distance from the centre to the outline.
+#pragma once
+
+#include <satviz/sat.h>
+
+#include <quadmath.h>
+
+#include <vector>
+
+namespace satviz::testing
+{
+
+using Quad = __float128;
+
+/// A point in quadruple precision.
+struct QVec
+{
+    Quad x = 0;
+    Quad y = 0;
+};
+
+inline QVec operator-(QVec a, QVec b)
+{
+    return {a.x - b.x, a.y - b.y};
+}
+inline Quad QDot(QVec a, QVec b)
+{
+    return a.x * b.x + a.y * b.y;
+}
+inline Quad QCross(QVec a, QVec b)
+{
+    return a.x * b.y - a.y * b.x;
+}
+
+/// World position of a body-frame point: the products of two doubles are exact in quad precision.
+inline QVec QTransform(const Transform& xf, Vec2 v)
+{
+    const Quad c = xf.q.c, s = xf.q.s, x = v.x, y = v.y;
+    return {c * x - s * y + Quad(xf.p.x), s * x + c * y + Quad(xf.p.y)};
+}
+
+inline std::vector<QVec> QWorld(const Polygon& polygon, const Transform& xf)
+{
+    std::vector<QVec> out;
+    for (const Vec2& v : polygon.vertices)
+    {
+        out.push_back(QTransform(xf, v));
+    }
+    return out;
+}
+
+/// The reference answer for a pair.
+struct Reference
+{
+    bool overlap = false; ///< closed shapes intersect
+    /// Signed separation: > 0 the gap on the best separating axis (polygons) or the distance (circles); <= 0 minus
+    /// the penetration depth.
+    Quad separation = 0;
+    double normalX = 0, normalY = 0; ///< unit normal from A to B on the deciding axis
+};
+
+inline int Sign(Quad v)
+{
+    return v > 0 ? 1 : (v < 0 ? -1 : 0);
+}
+
+inline bool SegmentsIntersect(QVec p1, QVec p2, QVec q1, QVec q2)
+{
+    const int d1 = Sign(QCross(q2 - q1, p1 - q1));
+    const int d2 = Sign(QCross(q2 - q1, p2 - q1));
+    const int d3 = Sign(QCross(p2 - p1, q1 - p1));
+    const int d4 = Sign(QCross(p2 - p1, q2 - p1));
+    if (d1 * d2 < 0 && d3 * d4 < 0)
+    {
+        return true;
+    }
+    auto onSegment = [](QVec a, QVec b, QVec p) {
+        return QCross(b - a, p - a) == 0 && QDot(p - a, p - b) <= 0;
+    };
+    return (d1 == 0 && onSegment(q1, q2, p1)) || (d2 == 0 && onSegment(q1, q2, p2)) ||
+           (d3 == 0 && onSegment(p1, p2, q1)) || (d4 == 0 && onSegment(p1, p2, q2));
+}
+
+/// Point inside or on a counter-clockwise convex outline.
+inline bool ContainsPoint(const std::vector<QVec>& outline, QVec p)
+{
+    const size_t n = outline.size();
+    for (size_t i = 0; i < n; ++i)
+    {
+        if (QCross(outline[(i + 1) % n] - outline[i], p - outline[i]) < 0)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+/// Yes/no by edge crossings and containment.
+inline bool ReferenceOverlap(const std::vector<QVec>& a, const std::vector<QVec>& b)
+{
+    for (size_t i = 0; i < a.size(); ++i)
+    {
+        for (size_t j = 0; j < b.size(); ++j)
+        {
+            if (SegmentsIntersect(a[i], a[(i + 1) % a.size()], b[j], b[(j + 1) % b.size()]))
+            {
+                return true;
+            }
+        }
+    }
+    return ContainsPoint(a, b[0]) || ContainsPoint(b, a[0]);
+}
+
+/// Separation by projection intervals on every unit edge normal of both polygons.
+inline void ReferenceDepth(const std::vector<QVec>& a, const std::vector<QVec>& b, Reference& out)
+{
+    Quad best = -1e300Q;
+    bool first = true;
+    for (int side = 0; side < 2; ++side)
+    {
+        const std::vector<QVec>& owner = side == 0 ? a : b;
+        for (size_t i = 0; i < owner.size(); ++i)
+        {
+            const QVec e = owner[(i + 1) % owner.size()] - owner[i];
+            const Quad length = sqrtq(QDot(e, e));
+            const QVec axis{e.y / length, -e.x / length};
+            Quad minA = 1e300Q, maxA = -1e300Q, minB = 1e300Q, maxB = -1e300Q;
+            for (const QVec& v : a)
+            {
+                const Quad d = QDot(axis, v);
+                minA = d < minA ? d : minA;
+                maxA = d > maxA ? d : maxA;
+            }
+            for (const QVec& v : b)
+            {
+                const Quad d = QDot(axis, v);
+                minB = d < minB ? d : minB;
+                maxB = d > maxB ? d : maxB;
+            }
+            // Moving B along +axis by (maxA - minB), or along -axis by (maxB - minA), separates on this axis.
+            const Quad forward = minB - maxA;
+            const Quad backward = minA - maxB;
+            const Quad separation = forward > backward ? forward : backward;
+            if (first || separation > best)
+            {
+                first = false;
+                best = separation;
+                const double sign = forward > backward ? 1.0 : -1.0;
+                out.normalX = sign * static_cast<double>(axis.x);
+                out.normalY = sign * static_cast<double>(axis.y);
+            }
+        }
+    }
+    out.separation = best;
+}
+
+/// Distance from a point to a segment.
+inline Quad SegmentDistance(QVec p, QVec a, QVec b)
+{
+    const QVec ab = b - a;
+    Quad t = QDot(p - a, ab) / QDot(ab, ab);
+    t = t < 0 ? 0 : (t > 1 ? 1 : t);
+    const QVec closest{a.x + t * ab.x, a.y + t * ab.y};
+    const QVec d = p - closest;
+    return sqrtq(QDot(d, d));
+}
+
+/// Signed distance from a point to a convex outline: negative inside.
+inline Quad SignedDistance(const std::vector<QVec>& outline, QVec p)
+{
+    Quad distance = 1e300Q;
+    for (size_t i = 0; i < outline.size(); ++i)
+    {
+        const Quad d = SegmentDistance(p, outline[i], outline[(i + 1) % outline.size()]);
+        distance = d < distance ? d : distance;
+    }
+    return ContainsPoint(outline, p) ? -distance : distance;
+}
+
+/// The reference for any pair of shapes.
+inline Reference ReferenceCollide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB)
+{
+    Reference out;
+    if (a.type == ShapeType::Polygon && b.type == ShapeType::Polygon)
+    {
+        const std::vector<QVec> wa = QWorld(a.polygon, xfA);
+        const std::vector<QVec> wb = QWorld(b.polygon, xfB);
+        out.overlap = ReferenceOverlap(wa, wb);
+        ReferenceDepth(wa, wb, out);
+        return out;
+    }
+    if (a.type == ShapeType::Circle && b.type == ShapeType::Circle)
+    {
+        const QVec ca = QTransform(xfA, a.circle.center);
+        const QVec cb = QTransform(xfB, b.circle.center);
+        const QVec d = cb - ca;
+        const Quad distance = sqrtq(QDot(d, d));
+        out.separation = distance - Quad(a.circle.radius) - Quad(b.circle.radius);
+        out.overlap = out.separation <= 0;
+        out.normalX = static_cast<double>(d.x / distance);
+        out.normalY = static_cast<double>(d.y / distance);
+        return out;
+    }
+    const bool polygonFirst = a.type == ShapeType::Polygon;
+    const Polygon& polygon = polygonFirst ? a.polygon : b.polygon;
+    const Circle& circle = polygonFirst ? b.circle : a.circle;
+    const std::vector<QVec> outline = QWorld(polygon, polygonFirst ? xfA : xfB);
+    const QVec center = QTransform(polygonFirst ? xfB : xfA, circle.center);
+    out.separation = SignedDistance(outline, center) - Quad(circle.radius);
+    out.overlap = out.separation <= 0;
+    return out;
+}
+
+} // namespace satviz::testing

@@ -1,0 +1,317 @@
+// SPDX-License-Identifier: MIT
+// Property tests over random pairs against the quadruple-precision reference (support/reference.h).
+
+#include "support/random_shapes.h"
+#include "support/reference.h"
+
+#include <satviz/sat.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+using namespace satviz;
+using namespace satviz::testing;
+
+namespace
+{
+
+constexpr int kPairs = 100000;
+constexpr uint64_t kSeed = 20261122;
+// Pairs whose true separation lies within this band of zero may be decided either way by double rounding.
+constexpr double kBand = 1e-12;
+
+double Scale(const RandomPair& pair)
+{
+    auto radius = [](const Shape& s) { return s.type == ShapeType::Polygon ? Radius(s.polygon) : s.circle.radius; };
+    return std::max({radius(pair.a), radius(pair.b), 1.0});
+}
+
+Transform Moved(const Transform& xf, Vec2 by)
+{
+    return {xf.p + by, xf.q};
+}
+
+bool SameBits(double a, double b)
+{
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+bool SameBits(const Manifold& a, const Manifold& b)
+{
+    bool same = a.overlap == b.overlap && SameBits(a.depth, b.depth) && SameBits(a.gap, b.gap) &&
+                SameBits(a.normal.x, b.normal.x) && SameBits(a.normal.y, b.normal.y) &&
+                a.contactCount == b.contactCount && a.axis.kind == b.axis.kind && a.axis.shape == b.axis.shape &&
+                a.axis.index == b.axis.index && a.incidentEdge == b.incidentEdge;
+    for (int i = 0; same && i < a.contactCount; ++i)
+    {
+        same = SameBits(a.contacts[i].point.x, b.contacts[i].point.x) &&
+               SameBits(a.contacts[i].point.y, b.contacts[i].point.y) &&
+               SameBits(a.contacts[i].separation, b.contacts[i].separation);
+    }
+    return same;
+}
+
+// Distance from a world point to a shape's outline (quad precision).
+double OutlineDistance(const Shape& shape, const Transform& xf, Vec2 point)
+{
+    const QVec p{point.x, point.y};
+    if (shape.type == ShapeType::Circle)
+    {
+        const QVec d = p - QTransform(xf, shape.circle.center);
+        return static_cast<double>(fabsq(sqrtq(QDot(d, d)) - shape.circle.radius));
+    }
+    return static_cast<double>(fabsq(SignedDistance(QWorld(shape.polygon, xf), p)));
+}
+
+} // namespace
+
+TEST_CASE("Overlap and Collide agree with the reference on random pairs", "[properties]")
+{
+    Rng rng(kSeed);
+    int decided = 0;
+    int overlapping = 0;
+    double maxDepthError = 0.0;
+    double maxNormalError = 0.0;
+    for (int i = 0; i < kPairs; ++i)
+    {
+        const RandomPair pair = RandomShapePair(rng, 0.15);
+        const Reference ref = ReferenceCollide(pair.a, pair.xfA, pair.b, pair.xfB);
+        const Manifold m = Collide(pair.a, pair.xfA, pair.b, pair.xfB);
+        const bool overlap = Overlap(pair.a, pair.xfA, pair.b, pair.xfB);
+        const double scale = Scale(pair);
+        const double refSeparation = static_cast<double>(ref.separation);
+        INFO("pair " << i << ": reference separation " << refSeparation);
+        // The two independent reference computations agree with each other.
+        if (std::abs(refSeparation) > kBand * scale)
+        {
+            REQUIRE(ref.overlap == (refSeparation <= 0.0));
+            REQUIRE(overlap == ref.overlap);
+            REQUIRE(m.overlap == ref.overlap);
+            ++decided;
+        }
+        if (!m.overlap || !ref.overlap)
+        {
+            continue;
+        }
+        ++overlapping;
+        const double depthError = std::abs(m.depth + refSeparation);
+        maxDepthError = std::max(maxDepthError, depthError / scale);
+        REQUIRE(depthError <= 1e-14 * scale);
+        REQUIRE(std::abs(Length(m.normal) - 1.0) <= 1e-15);
+        if (pair.a.type == ShapeType::Polygon && pair.b.type == ShapeType::Polygon)
+        {
+            // Where another axis is nearly as shallow, either normal is right: compare only clear minima.
+            const double normalError = Length(m.normal - Vec2{ref.normalX, ref.normalY});
+            if (normalError > 1e-9)
+            {
+                Reference alternative = ReferenceCollide(pair.a, pair.xfA, pair.b,
+                                                         Moved(pair.xfB, (m.depth + 1e-9 * scale) * m.normal));
+                REQUIRE(alternative.separation > 0);
+            }
+            else
+            {
+                maxNormalError = std::max(maxNormalError, normalError);
+            }
+        }
+    }
+    WARN("decided " << decided << " of " << kPairs << " pairs, " << overlapping << " overlapping; max depth error "
+                    << maxDepthError << " (relative to scale), max normal error " << maxNormalError);
+    REQUIRE(decided > kPairs * 99 / 100);
+    REQUIRE(overlapping > kPairs / 4);
+}
+
+TEST_CASE("The minimum translation vector is minimal and sufficient", "[properties]")
+{
+    Rng rng(kSeed + 1);
+    int checked = 0;
+    for (int i = 0; i < kPairs; ++i)
+    {
+        const RandomPair pair = RandomShapePair(rng, 0.15);
+        const Manifold m = Collide(pair.a, pair.xfA, pair.b, pair.xfB);
+        if (!m.overlap)
+        {
+            continue;
+        }
+        const double scale = Scale(pair);
+        const double e = 1e-9 * scale;
+        INFO("pair " << i << ": depth " << m.depth);
+        // Moving B by (depth + e) along the normal separates the shapes ...
+        const Reference out = ReferenceCollide(pair.a, pair.xfA, pair.b, Moved(pair.xfB, (m.depth + e) * m.normal));
+        REQUIRE(!out.overlap);
+        // ... and by (depth - e) does not (no shorter push along this normal exists).
+        if (m.depth > e)
+        {
+            const Reference in =
+                ReferenceCollide(pair.a, pair.xfA, pair.b, Moved(pair.xfB, (m.depth - e) * m.normal));
+            REQUIRE(in.overlap);
+        }
+        ++checked;
+    }
+    REQUIRE(checked > kPairs / 4);
+}
+
+TEST_CASE("Contact points lie between the two surfaces", "[properties]")
+{
+    Rng rng(kSeed + 2);
+    for (int i = 0; i < kPairs; ++i)
+    {
+        const RandomPair pair = RandomShapePair(rng, 0.15);
+        const Manifold m = Collide(pair.a, pair.xfA, pair.b, pair.xfB);
+        INFO("pair " << i);
+        if (!m.overlap)
+        {
+            REQUIRE(m.contactCount == 0);
+            REQUIRE(m.gap > 0.0);
+            continue;
+        }
+        REQUIRE(m.contactCount >= 1);
+        REQUIRE(m.contactCount <= 2);
+        const double tolerance = 1e-12 * Scale(pair);
+        for (int k = 0; k < m.contactCount; ++k)
+        {
+            const ContactPoint& c = m.contacts[k];
+            REQUIRE(c.separation <= 0.0);
+            REQUIRE(-c.separation <= m.depth + tolerance);
+            REQUIRE(OutlineDistance(pair.a, pair.xfA, c.point) <= 0.5 * m.depth + tolerance);
+            REQUIRE(OutlineDistance(pair.b, pair.xfB, c.point) <= 0.5 * m.depth + tolerance);
+        }
+    }
+}
+
+TEST_CASE("A separating axis really separates, with the reported gap", "[properties]")
+{
+    Rng rng(kSeed + 3);
+    for (int i = 0; i < kPairs; ++i)
+    {
+        const RandomPair pair = RandomShapePair(rng, 0.15);
+        const Manifold m = Collide(pair.a, pair.xfA, pair.b, pair.xfB);
+        if (m.overlap)
+        {
+            continue;
+        }
+        INFO("pair " << i << ": gap " << m.gap);
+        // Project both shapes on the reported normal in quad precision: B lies beyond A by the gap.
+        const QVec axis{m.normal.x, m.normal.y};
+        auto interval = [&](const Shape& s, const Transform& xf, Quad& lo, Quad& hi) {
+            if (s.type == ShapeType::Circle)
+            {
+                const Quad c = QDot(axis, QTransform(xf, s.circle.center));
+                lo = c - s.circle.radius;
+                hi = c + s.circle.radius;
+                return;
+            }
+            lo = 1e300Q;
+            hi = -1e300Q;
+            for (const QVec& v : QWorld(s.polygon, xf))
+            {
+                const Quad d = QDot(axis, v);
+                lo = d < lo ? d : lo;
+                hi = d > hi ? d : hi;
+            }
+        };
+        Quad loA, hiA, loB, hiB;
+        interval(pair.a, pair.xfA, loA, hiA);
+        interval(pair.b, pair.xfB, loB, hiB);
+        const double projectedGap = static_cast<double>(loB - hiA);
+        REQUIRE(std::abs(projectedGap - m.gap) <= 1e-13 * Scale(pair));
+    }
+}
+
+TEST_CASE("Collide(B, A) mirrors Collide(A, B)", "[properties]")
+{
+    Rng rng(kSeed + 4);
+    for (int i = 0; i < kPairs; ++i)
+    {
+        const RandomPair pair = RandomShapePair(rng, 0.15);
+        const Manifold ab = Collide(pair.a, pair.xfA, pair.b, pair.xfB);
+        const Manifold ba = Collide(pair.b, pair.xfB, pair.a, pair.xfA);
+        const double tolerance = 1e-13 * Scale(pair);
+        INFO("pair " << i << ": depth " << ab.depth << " gap " << ab.gap);
+        if (std::abs(ab.overlap ? ab.depth : ab.gap) > tolerance)
+        {
+            REQUIRE(ab.overlap == ba.overlap);
+        }
+        if (ab.overlap && ba.overlap)
+        {
+            REQUIRE(std::abs(ab.depth - ba.depth) <= tolerance);
+            // The normal may be another axis of equal depth; otherwise it is exactly reversed.
+            if (Length(ab.normal + ba.normal) > 1e-9)
+            {
+                const Reference r = ReferenceCollide(pair.a, pair.xfA, pair.b,
+                                                     Moved(pair.xfB, (ab.depth + 1e-9) * -ba.normal));
+                REQUIRE(!r.overlap);
+            }
+        }
+    }
+}
+
+TEST_CASE("Results are invariant under translation and rotation of the pair", "[properties]")
+{
+    Rng rng(kSeed + 5);
+    for (int i = 0; i < kPairs; ++i)
+    {
+        const RandomPair pair = RandomShapePair(rng, 0.15);
+        const double angle = rng.Uniform(-kPi, kPi);
+        const double offsetScale = rng.LogUniform(0.0, 8.0);
+        const Vec2 offset{rng.Uniform(-1.0, 1.0) * offsetScale, rng.Uniform(-1.0, 1.0) * offsetScale};
+        const Rot q = MakeRot(angle);
+        // Rotate the pair about A's position, then translate it.
+        auto moved = [&](const Transform& xf) {
+            const Vec2 local = xf.p - pair.xfA.p;
+            return MakeTransform(pair.xfA.p + offset + Rotate(q, local), std::atan2(xf.q.s, xf.q.c) + angle);
+        };
+        const Transform xfA = moved(pair.xfA);
+        const Transform xfB = moved(pair.xfB);
+        const Manifold before = Collide(pair.a, pair.xfA, pair.b, pair.xfB);
+        const Manifold after = Collide(pair.a, xfA, pair.b, xfB);
+        // The moved input is itself rounded, by up to an ulp of the offset's magnitude.
+        const double tolerance = 1e-13 * Scale(pair) + 4e-16 * (std::abs(offset.x) + std::abs(offset.y));
+        INFO("pair " << i << ": offset " << offset.x << ", " << offset.y << ", angle " << angle);
+        if (std::abs(before.overlap ? before.depth : before.gap) > tolerance)
+        {
+            REQUIRE(before.overlap == after.overlap);
+        }
+        if (before.overlap && after.overlap)
+        {
+            REQUIRE(std::abs(before.depth - after.depth) <= tolerance);
+        }
+    }
+}
+
+TEST_CASE("Traced and untraced queries are bit-identical", "[properties][trace]")
+{
+    Rng rng(kSeed + 6);
+    Trace trace;
+    for (int i = 0; i < kPairs; ++i)
+    {
+        const RandomPair pair = RandomShapePair(rng, 0.15);
+        INFO("pair " << i);
+        const Manifold plain = Collide(pair.a, pair.xfA, pair.b, pair.xfB);
+        const Manifold traced = Collide(pair.a, pair.xfA, pair.b, pair.xfB, &trace);
+        REQUIRE(SameBits(plain, traced));
+        REQUIRE(SameBits(plain, trace.result));
+        REQUIRE(Overlap(pair.a, pair.xfA, pair.b, pair.xfB) == Overlap(pair.a, pair.xfA, pair.b, pair.xfB, &trace));
+        // The float instantiation gives the same answer outside its own rounding band.
+        if (pair.a.type == ShapeType::Polygon && pair.b.type == ShapeType::Polygon)
+        {
+            const PolygonResultT<float> fa = ConvertPolygon<float>(pair.a.polygon);
+            const PolygonResultT<float> fb = ConvertPolygon<float>(pair.b.polygon);
+            if (fa.Ok() && fb.Ok())
+            {
+                auto toFloat = [](const Transform& xf) {
+                    return TransformT<float>{ConvertVec<float>(xf.p), {float(xf.q.c), float(xf.q.s)}};
+                };
+                const ManifoldT<float> mf = Collide(fa.polygon, toFloat(pair.xfA), fb.polygon, toFloat(pair.xfB));
+                if (std::abs(plain.overlap ? plain.depth : plain.gap) > 1e-5 * Scale(pair))
+                {
+                    REQUIRE(mf.overlap == plain.overlap);
+                }
+                if (mf.overlap && plain.overlap)
+                {
+                    REQUIRE(std::abs(double(mf.depth) - plain.depth) <= 1e-5 * Scale(pair));
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: MIT
+// satviz-query as a program: one JSON line per file, errors on stderr, a non-zero exit, the other files answered.
+
+#include <satviz/collide.h>
+#include <satviz/scene.h>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+using namespace satviz;
+
+namespace
+{
+
+struct Run
+{
+    int exitCode = -1;
+    std::vector<std::string> out;
+    std::string err;
+};
+
+std::vector<std::string> Lines(const std::string& path)
+{
+    std::ifstream in(path);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);)
+    {
+        lines.push_back(line);
+    }
+    return lines;
+}
+
+Run Query(const std::string& arguments)
+{
+    const std::string command =
+        std::string(SATVIZ_QUERY_EXE) + " " + arguments + " > query.out 2> query.err";
+    const int status = std::system(command.c_str());
+    Run run;
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.out = Lines("query.out");
+    std::ifstream err("query.err");
+    std::ostringstream text;
+    text << err.rdbuf();
+    run.err = text.str();
+    return run;
+}
+
+void Write(const std::string& path, const std::string& text)
+{
+    std::ofstream(path) << text;
+}
+
+} // namespace
+
+TEST_CASE("satviz-query answers every pair, in the documented form", "[query]")
+{
+    const std::string scene = SATVIZ_SOURCE_DIR "/tutorials/scenes/overlapping_boxes.json";
+    const Run run = Query(scene);
+    REQUIRE(run.exitCode == 0);
+    REQUIRE(run.out.size() == 1);
+    const nlohmann::json line = nlohmann::json::parse(run.out[0]);
+    CHECK(line["scene"] == scene);
+    REQUIRE(line["pairs"].size() == 1);
+    const nlohmann::json& pair = line["pairs"][0];
+    CHECK(pair["a"] == "A");
+    CHECK(pair["b"] == "B");
+
+    // The printed numbers read back as the very doubles the library computed.
+    const SceneResult loaded = LoadScene(scene);
+    REQUIRE(loaded.Ok());
+    const Body& a = loaded.scene.bodies[0];
+    const Body& b = loaded.scene.bodies[1];
+    const Manifold m = Collide(a.shape, a.Xf(), b.shape, b.Xf());
+    CHECK(pair["overlap"] == m.overlap);
+    CHECK(pair["depth"].get<double>() == m.depth);
+    CHECK(pair["normal"][0].get<double>() == m.normal.x);
+    CHECK(pair["normal"][1].get<double>() == m.normal.y);
+    REQUIRE(pair["contacts"].size() == static_cast<size_t>(m.contactCount));
+    CHECK(pair["contacts"][0][0].get<double>() == m.contacts[0].point.x);
+    CHECK(pair["axis"]["shape"] == (m.axis.shape == 0 ? "a" : "b"));
+    CHECK(pair["axis"]["edge"] == m.axis.index);
+    CHECK(!pair.contains("trace"));
+
+    const Run traced = Query("--trace " + scene);
+    REQUIRE(traced.exitCode == 0);
+    const nlohmann::json withTrace = nlohmann::json::parse(traced.out[0])["pairs"][0];
+    CHECK(withTrace["trace"]["axes"].size() >= 4);
+    CHECK(withTrace["trace"]["exit"] == "all-axes-overlap");
+    CHECK(withTrace["trace"].contains("clip"));
+}
+
+TEST_CASE("satviz-query: bad files get one error line each, the others are answered", "[query]")
+{
+    Write("bad_syntax.json", "{\"bodies\": [");
+    Write("bad_polygon.json", R"({"bodies": [{"polygon": [[0,0],[1,0],[1,1],[0.9,0.2]]}, {"box": [1, 1]}]})");
+    const std::string good = SATVIZ_SOURCE_DIR "/tutorials/scenes/containment.json";
+    const Run run = Query("bad_syntax.json " + good + " missing.json bad_polygon.json");
+    CHECK(run.exitCode == 1);
+    REQUIRE(run.out.size() == 4);
+    CHECK(nlohmann::json::parse(run.out[0]).contains("error"));
+    CHECK(nlohmann::json::parse(run.out[1])["pairs"].size() == 1);
+    CHECK(nlohmann::json::parse(run.out[2])["error"] ==
+          "missing.json: cannot open: No such file or directory");
+    CHECK(nlohmann::json::parse(run.out[3])["error"] ==
+          "bad_polygon.json: bodies[0].polygon: polygon is not convex at vertex 3 (use a convex decomposition)");
+    // Exactly one line on stderr per bad file.
+    size_t lines = 0;
+    for (char c : run.err)
+    {
+        lines += c == '\n' ? 1 : 0;
+    }
+    CHECK(lines == 3);
+    CHECK(run.err.find("satviz-query: bad_polygon.json: bodies[0].polygon:") != std::string::npos);
+}
+
+TEST_CASE("satviz-query without files explains its usage and fails", "[query]")
+{
+    const Run run = Query("");
+    CHECK(run.exitCode != 0);
+    CHECK(run.err.find("files") != std::string::npos);
+}

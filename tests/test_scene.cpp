@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+// Scene files: what loads, and the one-line error for everything that does not.
+
+#include <satviz/scene.h>
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+using namespace satviz;
+
+namespace
+{
+
+std::string ErrorOf(const std::string& text)
+{
+    return ParseScene(text, "s.json").error;
+}
+
+} // namespace
+
+TEST_CASE("A scene with every shape kind loads", "[scene]")
+{
+    const SceneResult r = ParseScene(R"({
+        "$schema": "scene.schema.json", "description": "all kinds",
+        "bodies": [
+          {"name": "p", "polygon": [[0, 0], [1, 0], [0, 1]], "position": [1, 2], "angle": 0.5, "velocity": [3, 4]},
+          {"box": [2, 1]},
+          {"regular": {"sides": 7, "radius": 0.5, "phase": 0.1}},
+          {"name": "c", "circle": {"radius": 0.25, "center": [0.1, 0]}, "tool:color": "red"}
+        ]})",
+                                     "s.json");
+    REQUIRE(r.Ok());
+    REQUIRE(r.scene.bodies.size() == 4);
+    const Body& p = r.scene.bodies[0];
+    CHECK(p.name == "p");
+    CHECK(p.shape.type == ShapeType::Polygon);
+    CHECK(p.position == Vec2{1, 2});
+    CHECK(p.angle == 0.5);
+    CHECK(p.velocity == Vec2{3, 4});
+    CHECK(r.scene.bodies[1].name == "B");
+    CHECK(r.scene.bodies[1].shape.polygon.vertices[2] == Vec2{1.0, 0.5});
+    CHECK(r.scene.bodies[2].shape.polygon.Count() == 7);
+    CHECK(r.scene.bodies[3].shape.type == ShapeType::Circle);
+    CHECK(r.scene.bodies[3].shape.circle.radius == 0.25);
+    CHECK(r.scene.description == "all kinds");
+}
+
+TEST_CASE("Errors name the file, the JSON path and what is wrong", "[scene]")
+{
+    CHECK(ErrorOf(R"({"bodies": [{"polygon": [[0,0],[1,0],[1,1],[0.9,0.2]]}]})") ==
+          "s.json: bodies[0].polygon: polygon is not convex at vertex 3 (use a convex decomposition)");
+    CHECK(ErrorOf(R"({"bodies": [{"circle": {"radius": 1}}, {"polygon": [[0,0],[1,0],"x"]}]})") ==
+          "s.json: bodies[1].polygon[2]: expected a pair of numbers [x, y], got a string");
+    CHECK(ErrorOf(R"({"bodies": [{"polygon": [[0,0],[1,0],[0,1]], "positon": [0, 0]}]})") ==
+          "s.json: bodies[0].positon: unknown field \"positon\" (did you mean \"position\"?)");
+    CHECK(ErrorOf(R"({"bodies": [{"polygon": [[0,0],[1,0],[0,1]], "colour": "red"}]})").find(
+              "unknown field \"colour\" (known fields: name, polygon") != std::string::npos);
+    CHECK(ErrorOf(R"({"bodies": [{"polygon": [[0,0],[0,1],[1,0]]}]})") ==
+          "s.json: bodies[0].polygon: polygon winds clockwise (list the vertices counter-clockwise, y up)");
+    CHECK(ErrorOf(R"({"bodies": [{"circle": {"radius": -1}}]})") ==
+          "s.json: bodies[0].circle.radius: must be greater than 0");
+    CHECK(ErrorOf(R"({"bodies": [{"circle": {"radius": 1}, "position": [1e400, 0]}]})") ==
+          "s.json:1:52: malformed JSON: number overflow parsing '1e400'");
+    CHECK(ErrorOf(R"({"bodies": [{"circle": {"radius": 1}, "position": [1e13, 0]}]})") ==
+          "s.json: bodies[0].position[0]: magnitude exceeds 1e+12");
+    CHECK(ErrorOf(R"({"bodies": [{"circle": {"radius": 1}, "box": [1, 1]}]})").find("more than one shape") !=
+          std::string::npos);
+    CHECK(ErrorOf(R"({"bodies": [{"name": "A", "box": [1, 1]}, {"name": "A", "box": [1, 1]}]})") ==
+          "s.json: bodies[1].name: \"A\" is already the name of another body");
+    CHECK(ErrorOf(R"({"bodies": [{"regular": {"sides": 2, "radius": 1}}]})") ==
+          "s.json: bodies[0].regular.sides: expected a whole number of sides from 3 to 1000000");
+    CHECK(ErrorOf(R"({"bodies": {}})") == "s.json: bodies: expected an array of bodies, got an object");
+    CHECK(ErrorOf(R"([1, 2])") == "s.json: (root): expected an object with \"bodies\", got an array");
+    CHECK(ErrorOf(R"({})") == "s.json: bodies: is missing (a scene lists its bodies in \"bodies\": [...])");
+}
+
+TEST_CASE("Malformed JSON reports line and column", "[scene]")
+{
+    const std::string error = ErrorOf("{\"bodies\": [\n  {\"box\": [1, 1]},\n  {\"box\": [1 1]}\n]}");
+    CHECK(error.rfind("s.json:3:", 0) == 0);
+    CHECK(error.find("malformed JSON") != std::string::npos);
+    CHECK(ErrorOf("").find("malformed JSON") != std::string::npos);
+    CHECK(ErrorOf("{\"bodies\": [{\"box\": [NaN, 1]}]}").find("malformed JSON") != std::string::npos);
+}
+
+TEST_CASE("Missing files and directories are errors, not crashes", "[scene]")
+{
+    CHECK(LoadScene("does/not/exist.json").error == "does/not/exist.json: cannot open: No such file or directory");
+    CHECK(LoadScene(".").error == ".: cannot open: is a directory");
+}
+
+TEST_CASE("Every bundled scene loads", "[scene]")
+{
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(SATVIZ_SOURCE_DIR "/tutorials/scenes"))
+    {
+        if (entry.path().extension() == ".json")
+        {
+            const SceneResult r = LoadScene(entry.path().string());
+            INFO(r.error);
+            CHECK(r.Ok());
+            ++count;
+        }
+    }
+    CHECK(count >= 4);
+}
