@@ -161,17 +161,28 @@ PolygonResultT<S> MakePolygon(const std::vector<Vec2T<S>>& input, PolygonOptions
         return Fail<S>(PolygonError::SelfIntersecting, -1);
     }
 
-    PolygonResultT<S> result;
-    PolygonT<S>& polygon = result.polygon;
-    polygon.vertices = points;
-    polygon.edges.resize(static_cast<size_t>(n));
-    polygon.normals.resize(static_cast<size_t>(n));
+    // One block: vertices, then edges, then normals.
+    std::vector<Vec2T<S>> storage(3 * static_cast<size_t>(n));
     for (int i = 0; i < n; ++i)
     {
         const Vec2T<S> edge = points[(i + 1) % n] - points[i];
-        polygon.edges[i] = edge;
-        polygon.normals[i] = Normalize(RightPerp(edge));
+        storage[i] = points[i];
+        storage[n + i] = edge;
+        storage[2 * n + i] = Normalize(RightPerp(edge));
     }
+    // Area centroid as the area-weighted mean of the triangles fanned from vertex 0, relative to vertex 0.
+    S area = S(0);
+    Vec2T<S> moment{};
+    for (int i = 1; i + 1 < n; ++i)
+    {
+        const Vec2T<S> e1 = points[i] - points[0];
+        const Vec2T<S> e2 = points[i + 1] - points[0];
+        const S triangle = Cross(e1, e2);
+        area += triangle;
+        moment = moment + (triangle / S(3)) * (e1 + e2);
+    }
+    PolygonResultT<S> result;
+    result.polygon = PolygonT<S>::FromStorage(std::move(storage), points[0] + (S(1) / area) * moment);
     return result;
 }
 

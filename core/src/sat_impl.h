@@ -13,8 +13,14 @@
 
 #include <satviz/manifold.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace satviz::detail
 {
@@ -33,6 +39,14 @@ inline int Next(int i, int n)
 inline int Prev(int i, int n)
 {
     return i == 0 ? n - 1 : i - 1;
+}
+
+/// a when c holds, else b, computed with a mask: the compiler cannot turn it back into a branch, and a branch
+/// on geometric data is mispredicted about half of the time.
+inline int Select(bool c, int a, int b)
+{
+    const int mask = -static_cast<int>(c);
+    return (a & mask) | (b & ~mask);
 }
 
 /// Walks forward from `start` to the support vertex of `polygon` in direction `d` (polygon frame): while edge j
@@ -80,65 +94,254 @@ int ClimbToSupport(const PolygonT<S>& polygon, Vec2T<S> d)
 // Face queries
 // ---------------------------------------------------------------------------------------------------------------
 
-/// Outcome of testing every face of one polygon against another.
+/// Outcome of testing the faces of one polygon against another.
 template <typename S>
 struct FaceQuery
 {
     S separation = -std::numeric_limits<S>::infinity(); ///< largest separation found (> 0: separated)
     int face = -1;                                      ///< the face that has it
-    int support = -1;                                   ///< the other polygon's support vertex for that face
+    int support = -1;                                   ///< walk only: the other polygon's support for that face
     bool separated = false;                             ///< stopped at a separating face
 };
+
+/// Polygons with at most this many vertices are scanned whole for each face instead of walked: for small
+/// counts a branch-free scan of a few projections beats the data-dependent branches of the walk.
+constexpr int kScanLimit = 16;
+
+/// Smallest of the projections nx * x[j] + ny * y[j] over `count` entries, `count` a multiple of 4 (the caller
+/// pads by repeating a vertex). The SSE2 versions do the same multiplications and additions as the scalar one,
+/// without contraction, and a minimum is exact, so the result is the same to the bit.
+inline double MinProjection(const double* x, const double* y, int count, double nx, double ny)
+{
+#if defined(__SSE2__)
+    const __m128d vx = _mm_set1_pd(nx);
+    const __m128d vy = _mm_set1_pd(ny);
+    __m128d low = _mm_add_pd(_mm_mul_pd(vx, _mm_load_pd(x)), _mm_mul_pd(vy, _mm_load_pd(y)));
+    for (int j = 2; j < count; j += 2)
+    {
+        low = _mm_min_pd(low, _mm_add_pd(_mm_mul_pd(vx, _mm_load_pd(x + j)), _mm_mul_pd(vy, _mm_load_pd(y + j))));
+    }
+    return _mm_cvtsd_f64(_mm_min_sd(low, _mm_unpackhi_pd(low, low)));
+#else
+    double low = nx * x[0] + ny * y[0];
+    for (int j = 1; j < count; ++j)
+    {
+        low = std::min(low, nx * x[j] + ny * y[j]);
+    }
+    return low;
+#endif
+}
+
+/// The float version of MinProjection.
+inline float MinProjection(const float* x, const float* y, int count, float nx, float ny)
+{
+#if defined(__SSE2__)
+    const __m128 vx = _mm_set1_ps(nx);
+    const __m128 vy = _mm_set1_ps(ny);
+    __m128 low = _mm_add_ps(_mm_mul_ps(vx, _mm_load_ps(x)), _mm_mul_ps(vy, _mm_load_ps(y)));
+    for (int j = 4; j < count; j += 4)
+    {
+        low = _mm_min_ps(low, _mm_add_ps(_mm_mul_ps(vx, _mm_load_ps(x + j)), _mm_mul_ps(vy, _mm_load_ps(y + j))));
+    }
+    low = _mm_min_ps(low, _mm_movehl_ps(low, low));
+    return _mm_cvtss_f32(_mm_min_ss(low, _mm_shuffle_ps(low, low, 1)));
+#else
+    float low = nx * x[0] + ny * y[0];
+    for (int j = 1; j < count; ++j)
+    {
+        low = std::min(low, nx * x[j] + ny * y[j]);
+    }
+    return low;
+#endif
+}
+
+/// The incident polygon of a face query: the polygon, its transform into the reference frame, and, when it is
+/// small enough to scan, its vertices mapped into that frame as a structure of arrays on the stack (padded to a
+/// multiple of 4 entries by repeating the last vertex).
+template <typename S>
+struct IncidentPolygon
+{
+    static constexpr int kCapacity = kScanLimit + 4;
+    const PolygonT<S>& polygon; ///< the incident polygon
+    TransformT<S> xf;           ///< its frame relative to the reference polygon
+    bool scan;                  ///< small: mapped below, scanned
+    int padded = 0;             ///< entries filled in x and y
+    alignas(16) S x[kCapacity];
+    alignas(16) S y[kCapacity];
+
+    IncidentPolygon(const PolygonT<S>& p, const TransformT<S>& incInRef)
+        : polygon(p), xf(incInRef), scan(p.Count() <= kScanLimit)
+    {
+        if (!scan)
+        {
+            return;
+        }
+        const int count = polygon.Count();
+        padded = (count + 3) & ~3;
+        for (int j = 0; j < count; ++j)
+        {
+            const Vec2T<S> w = TransformPoint(xf, polygon.vertices[j]);
+            x[j] = w.x;
+            y[j] = w.y;
+        }
+        for (int j = count; j < padded; ++j)
+        {
+            x[j] = x[count - 1];
+            y[j] = y[count - 1];
+        }
+    }
+
+    /// The smallest projection on `normal` (reference frame), scan only.
+    S Min(Vec2T<S> normal) const { return MinProjection(x, y, padded, normal.x, normal.y); }
+
+    /// The first vertex whose projection on `normal` (reference frame) is the smallest: the support point in
+    /// direction -normal.
+    int Support(Vec2T<S> normal) const
+    {
+        if (!scan)
+        {
+            return ClimbToSupport(polygon, InvRotate(xf.q, -normal));
+        }
+        // The smallest projection is known exactly (MinProjection rounds each projection the same way); mark the
+        // vertices that reach it and take the first. No chain of dependent comparisons.
+        const S low = Min(normal);
+        uint32_t hits = 0;
+        for (int j = 0; j < polygon.Count(); ++j)
+        {
+            hits |= static_cast<uint32_t>(normal.x * x[j] + normal.y * y[j] == low) << j;
+        }
+        return __builtin_ctz(hits);
+    }
+};
+
+/// The face of `polygon` farthest from `point` (polygon frame): the face query of a single point, the other
+/// polygon's centroid. A separating axis is most likely there, so the face query starts with it and separated
+/// pairs usually end on the first axis.
+template <typename S>
+int FaceTowards(const PolygonT<S>& polygon, Vec2T<S> point)
+{
+    int best = 0;
+    S high = Dot(polygon.normals[0], point - polygon.vertices[0]);
+    for (int i = 1; i < polygon.Count(); ++i)
+    {
+        const S d = Dot(polygon.normals[i], point - polygon.vertices[i]);
+        best = Select(d > high, i, best);
+        high = std::max(d, high);
+    }
+    return best;
+}
+
+/// The face to start the face query with: for a walked (large) incident polygon the face towards its centroid,
+/// which saves walking round the outline for separated pairs; for a scanned one face 0, because each face there
+/// costs less than the search for a better start.
+template <typename S>
+int StartFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, Vec2T<S> incCentroid)
+{
+    return inc.scan ? 0 : FaceTowards(ref, TransformPoint(inc.xf, incCentroid));
+}
+
+/// Faces of b (at most 64) exactly anti-parallel to a face of a, as a bit mask. Rotated normals are exact only
+/// when the relative rotation is a multiple of a quarter turn (one of its components is zero), so other rotations
+/// are not searched: the search would cost as much as the axes it could save.
+template <typename S>
+uint64_t AntiParallelFaces(const PolygonT<S>& a, const PolygonT<S>& b, const RotT<S>& bInA)
+{
+    uint64_t mask = 0;
+    if ((bInA.s != S(0) && bInA.c != S(0)) || b.Count() > 64)
+    {
+        return mask;
+    }
+    for (int j = 0; j < b.Count(); ++j)
+    {
+        const Vec2T<S> nb = Rotate(bInA, b.normals[j]);
+        for (int k = 0; k < a.Count(); ++k)
+        {
+            if (Cross(nb, a.normals[k]) == S(0) && Dot(nb, a.normals[k]) < S(0))
+            {
+                mask |= uint64_t(1) << j;
+                break;
+            }
+        }
+    }
+    return mask;
+}
 
 /// Face query of `ref` against `inc` (Gregorius): for each face i of ref, with outward normal n, the separation is
 /// the signed distance from the face to inc's support point in direction -n, taken in ref's frame:
 ///     separation_i = Dot(n, support(inc, -n) - v_i).
 /// Outline:
-///   1. The normals of ref turn counter-clockwise face after face, so the support point of inc turns with them:
-///      find it for face 0 by climbing, then walk it forward. The whole pass visits each vertex of both polygons
-///      a bounded number of times: O(n + m).
-///   2. A separation > 0 is a separating axis: stop there (early exit).
-///   3. Second pass only (skipDuplicates): when inc's support edge is exactly perpendicular to the direction, inc
-///      has a face anti-parallel to this one; the first pass already made this very test from that face, so it is
-///      skipped.
-/// kUnit selects unit normals (Collide: separations are distances) or raw edge normals (Overlap: only the sign
-/// matters, so no square root or division is needed).
+///   1. Start at `start` (StartFace) and go round once.
+///   2. Small inc (kScanLimit vertices or fewer): inc's vertices are mapped into ref's frame once; each face takes
+///      the smallest projection of all of them, without branches: O(n m) with a tiny constant.
+///   3. Large inc: the normals of ref turn counter-clockwise face after face, so the support point of inc turns
+///      with them: find it for the first face by climbing, then walk it forward. The pass visits each vertex of
+///      both polygons a bounded number of times: O(n + m).
+///   4. A separation > 0 is a separating axis: stop there (early exit).
+///   5. Second pass only: a face of ref exactly anti-parallel to a face of inc repeats the test the first pass made
+///      from that face, and is skipped (scan: the faces in `skip`; walk: inc's support edge is exactly
+///      perpendicular to the direction).
+/// kUnit selects unit normals (Collide: separations are distances, the best face is tracked) or raw edge normals
+/// (Overlap: only the sign matters, so no square root or division is needed).
 template <bool kUnit, typename S, typename Tracer>
-FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const PolygonT<S>& inc, const TransformT<S>& incInRef, int side,
-                        bool skipDuplicates, Tracer& tracer)
+FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int start, int side, bool second,
+                        Tracer& tracer)
 {
     FaceQuery<S> query;
     const int n = ref.Count();
+    const uint64_t skip = second && inc.scan ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
+                                             : uint64_t(0);
     int support = 0;
-    for (int i = 0; i < n; ++i)
+    int i = start;
+    for (int k = 0; k < n; ++k, i = Next(i, n))
     {
         const Vec2T<S> normal = kUnit ? ref.normals[i] : RightPerp(ref.edges[i]);
-        const Vec2T<S> d = InvRotate(incInRef.q, -normal);
-        support = i == 0 ? ClimbToSupport(inc, d) : WalkToSupport(inc, d, support);
-        if (skipDuplicates && Dot(d, inc.edges[support]) == S(0))
+        S separation;
+        if (inc.scan)
         {
-            if constexpr (Tracer::kEnabled)
+            if (i < 64 && ((skip >> i) & 1u))
             {
-                tracer.SkippedFace(i, support);
+                if constexpr (Tracer::kEnabled)
+                {
+                    tracer.SkippedFace(i, -1);
+                }
+                continue;
             }
-            continue;
+            separation = inc.Min(normal) - Dot(normal, ref.vertices[i]);
         }
-        const S separation = Dot(normal, TransformPoint(incInRef, inc.vertices[support]) - ref.vertices[i]);
+        else
+        {
+            const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
+            support = k == 0 ? ClimbToSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
+            if (second && Dot(d, inc.polygon.edges[support]) == S(0))
+            {
+                if constexpr (Tracer::kEnabled)
+                {
+                    tracer.SkippedFace(i, support);
+                }
+                continue;
+            }
+            separation = Dot(normal, TransformPoint(inc.xf, inc.polygon.vertices[support]) - ref.vertices[i]);
+        }
         const bool separating = separation > S(0);
-        if (separation > query.separation)
+        if constexpr (kUnit)
+        {
+            // Only Collide needs the best face; selecting without a branch keeps the loop free of mispredictions.
+            const bool better = separation > query.separation;
+            query.face = Select(better, i, query.face);
+            query.support = Select(better, support, query.support);
+            query.separation = std::max(separation, query.separation);
+        }
+        if constexpr (Tracer::kEnabled)
+        {
+            tracer.FaceAxis(side, i, normal, separation, inc.scan ? inc.Support(normal) : support, separating);
+        }
+        if (separating)
         {
             query.separation = separation;
             query.face = i;
             query.support = support;
-        }
-        if constexpr (Tracer::kEnabled)
-        {
-            tracer.FaceAxis(side, i, normal, separation, support, separating);
-        }
-        if (separating)
-        {
             query.separated = true;
-            return query;
+            break;
         }
     }
     return query;
@@ -154,12 +357,15 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
                      Tracer& tracer)
 {
     const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
-    const FaceQuery<S> queryA = QueryFaces<false>(a, b, bInA, 0, false, tracer);
-    bool overlap = !queryA.separated;
+    const IncidentPolygon<S> incB(b, bInA);
+    const int startA = StartFace(a, incB, b.centroid);
+    bool overlap = !QueryFaces<false>(a, incB, startA, 0, false, tracer).separated;
     if (overlap)
     {
         const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
-        overlap = !QueryFaces<false>(b, a, aInB, 1, true, tracer).separated;
+        const IncidentPolygon<S> incA(a, aInB);
+        const int startB = StartFace(b, incA, a.centroid);
+        overlap = !QueryFaces<false>(b, incA, startB, 1, true, tracer).separated;
     }
     if constexpr (Tracer::kEnabled)
     {
@@ -210,7 +416,9 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
 {
     ManifoldT<S> manifold;
     const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
-    const FaceQuery<S> queryA = QueryFaces<true>(a, b, bInA, 0, false, tracer);
+    const IncidentPolygon<S> incB(b, bInA);
+    const int startA = StartFace(a, incB, b.centroid);
+    const FaceQuery<S> queryA = QueryFaces<true>(a, incB, startA, 0, false, tracer);
     if (queryA.separated)
     {
         manifold.gap = queryA.separation;
@@ -223,7 +431,9 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
         return manifold;
     }
     const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
-    const FaceQuery<S> queryB = QueryFaces<true>(b, a, aInB, 1, true, tracer);
+    const IncidentPolygon<S> incA(a, aInB);
+    const int startB = StartFace(b, incA, a.centroid);
+    const FaceQuery<S> queryB = QueryFaces<true>(b, incA, startB, 1, true, tracer);
     if (queryB.separated)
     {
         manifold.gap = queryB.separation;
@@ -239,12 +449,11 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     // Reference face: B's only when strictly better, so ties (and skipped duplicates) keep A's face.
     const bool flip = queryB.separation > queryA.separation;
     const PolygonT<S>& ref = flip ? b : a;
-    const PolygonT<S>& inc = flip ? a : b;
+    const IncidentPolygon<S>& inc = flip ? incA : incB;
     const TransformT<S>& xfRef = flip ? xfB : xfA;
-    const TransformT<S>& incInRef = flip ? aInB : bInA;
     const FaceQuery<S>& query = flip ? queryB : queryA;
 
-    const int m = inc.Count();
+    const int m = inc.polygon.Count();
     const int i1 = query.face;
     const int i2 = Next(i1, ref.Count());
     const Vec2T<S> v1 = ref.vertices[i1];
@@ -253,13 +462,13 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     const Vec2T<S> tangent = LeftPerp(normal);
 
     // Incident edge: the edge leaving or the edge entering the support vertex.
-    const int s = query.support;
+    const int s = inc.scan ? inc.Support(normal) : query.support;
     const int before = Prev(s, m);
-    const S dotLeaving = Dot(normal, Rotate(incInRef.q, inc.normals[s]));
-    const S dotEntering = Dot(normal, Rotate(incInRef.q, inc.normals[before]));
-    const int incidentEdge = dotEntering < dotLeaving ? before : s;
-    const Vec2T<S> w1 = TransformPoint(incInRef, inc.vertices[incidentEdge]);
-    const Vec2T<S> w2 = TransformPoint(incInRef, inc.vertices[Next(incidentEdge, m)]);
+    const S dotLeaving = Dot(normal, Rotate(inc.xf.q, inc.polygon.normals[s]));
+    const S dotEntering = Dot(normal, Rotate(inc.xf.q, inc.polygon.normals[before]));
+    const int incidentEdge = Select(dotEntering < dotLeaving, before, s);
+    const Vec2T<S> w1 = TransformPoint(inc.xf, inc.polygon.vertices[incidentEdge]);
+    const Vec2T<S> w2 = TransformPoint(inc.xf, inc.polygon.vertices[Next(incidentEdge, m)]);
 
     Vec2T<S> clip1[2];
     Vec2T<S> clip2[2];
@@ -269,13 +478,10 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     {
         count2 = ClipSegmentToPlane(clip2, clip1[0], clip1[1], tangent, v2);
     }
-    else if (count1 == 1)
+    else if (count1 == 1 && Dot(tangent, clip1[0] - v2) <= S(0))
     {
         // A single point survives the first plane only when the edge touches it; test it against the second.
-        if (Dot(tangent, clip1[0] - v2) <= S(0))
-        {
-            clip2[count2++] = clip1[0];
-        }
+        clip2[count2++] = clip1[0];
     }
 
     S separations[2] = {S(0), S(0)};
@@ -295,7 +501,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     if (fallback)
     {
         // Clipping lost every point (a rounding artefact at a vertex-vertex contact): use the deepest vertex.
-        const Vec2T<S> deepest = TransformPoint(incInRef, inc.vertices[s]);
+        const Vec2T<S> deepest = TransformPoint(inc.xf, inc.polygon.vertices[s]);
         ContactPointT<S>& contact = manifold.contacts[manifold.contactCount++];
         contact.point = TransformPoint(xfRef, deepest - (S(0.5) * query.separation) * normal);
         contact.separation = query.separation;
@@ -318,8 +524,8 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
         clip.referenceNormal = worldNormal;
         clip.incidentShape = flip ? 0 : 1;
         clip.incidentEdge = incidentEdge;
-        clip.incidentV1 = TransformPoint(xfInc, inc.vertices[incidentEdge]);
-        clip.incidentV2 = TransformPoint(xfInc, inc.vertices[Next(incidentEdge, m)]);
+        clip.incidentV1 = TransformPoint(xfInc, inc.polygon.vertices[incidentEdge]);
+        clip.incidentV2 = TransformPoint(xfInc, inc.polygon.vertices[Next(incidentEdge, m)]);
         clip.sideClip1Count = count1;
         clip.sideClip2Count = count2;
         for (int k = 0; k < count1; ++k)

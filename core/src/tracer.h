@@ -80,22 +80,30 @@ public:
         Push(test);
     }
 
-    /// A face of B was skipped: it is anti-parallel to face `duplicateFace` of A, already tested.
+    /// A face of B was skipped: it is anti-parallel to face `duplicateFace` of A, already tested (-1: the face of
+    /// A whose normal is most anti-parallel).
     void SkippedFace(int face, int duplicateFace)
     {
         AxisTestT<S> test;
         test.axis = {AxisKind::FaceNormal, 1, face};
         test.direction = Rotate(m_xfB.q, m_b.polygon->normals[face]);
         test.skipped = true;
+        S lowest = std::numeric_limits<S>::infinity();
         for (size_t i = 0; i < m_trace.axes.size(); ++i)
         {
-            const AxisRef& ref = m_trace.axes[i].axis;
-            if (ref.kind == AxisKind::FaceNormal && ref.shape == 0 && ref.index == duplicateFace)
+            const AxisTestT<S>& tested = m_trace.axes[i];
+            if (tested.axis.kind != AxisKind::FaceNormal || tested.axis.shape != 0)
             {
+                continue;
+            }
+            const S alignment = Dot(tested.direction, test.direction);
+            if (tested.axis.index == duplicateFace || (duplicateFace < 0 && alignment < lowest))
+            {
+                lowest = alignment;
                 test.duplicateOf = static_cast<int>(i);
-                test.separation = m_trace.axes[i].separation;
-                test.supportA = m_trace.axes[i].supportA;
-                test.supportB = m_trace.axes[i].supportB;
+                test.separation = tested.separation;
+                test.supportA = tested.supportA;
+                test.supportB = tested.supportB;
             }
         }
         Push(test);

@@ -119,4 +119,91 @@ inline RandomPair RandomShapePair(Rng& rng, double circleChance)
     return pair;
 }
 
+/// How a contact pair is placed.
+enum class PairCategory
+{
+    Overlap,   ///< pushed into each other by 1e-4 to 0.5 of the smaller width
+    Touch,     ///< within 1e-9 of touching, either side
+    Separated, ///< apart by 1e-4 to 0.5
+};
+
+/// Two n-gons in contact: B's support vertex (or, 30% of the time, one of B's edges turned anti-parallel) is placed
+/// on a random boundary point P of A, then B is pushed by a signed distance along A's outward normal at P. A
+/// negative push overlaps, a positive one separates: the line through P then separates the pair.
+inline RandomPair ContactPair(Rng& rng, int n, PairCategory category, double slivers = 0.0)
+{
+    RandomPair pair;
+    const double aspectA = rng.Chance(slivers) ? rng.LogUniform(-4.0, -2.0) : rng.Uniform(0.35, 1.0);
+    const double aspectB = rng.Chance(slivers * 0.5) ? rng.LogUniform(-4.0, -2.0) : rng.Uniform(0.35, 1.0);
+    const double radiusA = rng.Uniform(0.5, 1.5);
+    const double radiusB = rng.Uniform(0.5, 1.5);
+    const Polygon a = RandomPolygon(rng, n, radiusA, aspectA);
+    const Polygon b = RandomPolygon(rng, n, radiusB, aspectB);
+    const double width = 2.0 * std::min(radiusA * aspectA, radiusB * aspectB);
+
+    // A boundary point of A, on an edge chosen by length.
+    double perimeter = 0.0;
+    for (const Vec2& e : a.edges)
+    {
+        perimeter += Length(e);
+    }
+    double pick = rng.Uniform(0.0, perimeter);
+    int edge = 0;
+    while (edge + 1 < a.Count() && pick > Length(a.edges[edge]))
+    {
+        pick -= Length(a.edges[edge]);
+        ++edge;
+    }
+    const Vec2 point = a.vertices[edge] + rng.Uniform(0.1, 0.9) * a.edges[edge];
+    const Vec2 normal = a.normals[edge];
+
+    // B's rotation relative to A, and the vertex of B that touches the point.
+    double angleB = rng.Uniform(-kPi, kPi);
+    int touching = 0;
+    if (rng.Chance(0.3))
+    {
+        // Edge against edge: turn B so that its edge j faces A's edge.
+        const int j = rng.Int(0, n - 1);
+        const Vec2 nb = b.normals[j];
+        angleB = std::atan2(-normal.y, -normal.x) - std::atan2(nb.y, nb.x);
+        touching = j;
+    }
+    else
+    {
+        const Rot q = MakeRot(angleB);
+        double lowest = 1e300;
+        for (int k = 0; k < n; ++k)
+        {
+            const double d = Dot(normal, Rotate(q, b.vertices[k]));
+            if (d < lowest)
+            {
+                lowest = d;
+                touching = k;
+            }
+        }
+    }
+    double delta = 0.0;
+    switch (category)
+    {
+    case PairCategory::Overlap:
+        delta = -width * rng.LogUniform(-4.0, -0.3);
+        break;
+    case PairCategory::Touch:
+        delta = rng.Uniform(-1e-9, 1e-9);
+        break;
+    case PairCategory::Separated:
+        delta = rng.LogUniform(-4.0, -0.3);
+        break;
+    }
+    const Rot qB = MakeRot(angleB);
+    const Vec2 positionInA = point - Rotate(qB, b.vertices[touching]) + delta * normal;
+
+    const double angleA = rng.Uniform(-kPi, kPi);
+    pair.a = MakeShape(a);
+    pair.b = MakeShape(b);
+    pair.xfA = MakeTransform(Vec2{rng.Uniform(-1.0, 1.0), rng.Uniform(-1.0, 1.0)}, angleA);
+    pair.xfB = MakeTransform(TransformPoint(pair.xfA, positionInA), angleA + angleB);
+    return pair;
+}
+
 } // namespace satviz::testing

@@ -10,18 +10,89 @@
 namespace satviz
 {
 
+/// A read-only view of consecutive vectors, indexable and iterable.
+template <typename S>
+struct Vec2Span
+{
+    const Vec2T<S>* data = nullptr; ///< first element
+    int count = 0;                  ///< number of elements
+    /// Element i (0 <= i < count).
+    const Vec2T<S>& operator[](int i) const { return data[i]; }
+    /// Number of elements.
+    size_t size() const { return static_cast<size_t>(count); }
+    /// Start of the range.
+    const Vec2T<S>* begin() const { return data; }
+    /// End of the range.
+    const Vec2T<S>* end() const { return data + count; }
+};
+
 /// A convex polygon in its body frame: counter-clockwise vertices (interior to the left of each edge), y up.
 /// Any vertex count from 3 upwards; there is no fixed cap. Edge i runs from vertex i to vertex i + 1 (mod count).
-/// @warning Do not fill the fields by hand: build polygons with MakePolygon, ComputeHull, MakeBox or
-/// MakeRegularPolygon, which validate the outline and precompute the edges and normals consistently.
+/// Vertices, edges and normals live in one allocation, so a query touches one block of memory per polygon.
+/// Build polygons with MakePolygon, ComputeHull, MakeBox or MakeRegularPolygon, which validate the outline and
+/// precompute the edges and normals consistently; a default-constructed polygon is empty.
 template <typename S>
-struct PolygonT
+class PolygonT
 {
-    std::vector<Vec2T<S>> vertices; ///< vertices in the body frame, counter-clockwise, strictly convex
-    std::vector<Vec2T<S>> edges;    ///< edges[i] = vertices[i + 1] - vertices[i]
-    std::vector<Vec2T<S>> normals;  ///< unit outward normal of edge i: RightPerp(edges[i]) / |edges[i]|
+public:
+    Vec2Span<S> vertices; ///< vertices in the body frame, counter-clockwise, strictly convex
+    Vec2Span<S> edges;    ///< edges[i] = vertices[i + 1] - vertices[i]
+    Vec2Span<S> normals;  ///< unit outward normal of edge i: RightPerp(edges[i]) / |edges[i]|
+    Vec2T<S> centroid{};  ///< area centroid, body frame
+
+    /// An empty polygon.
+    PolygonT() = default;
+    /// A copy with its own storage.
+    PolygonT(const PolygonT& other) : centroid(other.centroid), m_storage(other.m_storage) { Bind(); }
+    /// Takes over the other polygon's storage.
+    PolygonT(PolygonT&& other) noexcept : centroid(other.centroid), m_storage(std::move(other.m_storage))
+    {
+        Bind();
+        other.Bind();
+    }
+    /// Copies another polygon.
+    PolygonT& operator=(const PolygonT& other)
+    {
+        m_storage = other.m_storage;
+        centroid = other.centroid;
+        Bind();
+        return *this;
+    }
+    /// Takes over the other polygon's storage.
+    PolygonT& operator=(PolygonT&& other) noexcept
+    {
+        m_storage = std::move(other.m_storage);
+        centroid = other.centroid;
+        Bind();
+        other.Bind();
+        return *this;
+    }
+
     /// Number of vertices.
-    int Count() const { return static_cast<int>(vertices.size()); }
+    int Count() const { return vertices.count; }
+
+    /// Takes validated data: `storage` holds the vertices, then the edges, then the normals (3 * count vectors).
+    /// Used by the builders; callers outside them would break the invariants.
+    static PolygonT FromStorage(std::vector<Vec2T<S>> storage, Vec2T<S> centroid)
+    {
+        PolygonT polygon;
+        polygon.m_storage = std::move(storage);
+        polygon.centroid = centroid;
+        polygon.Bind();
+        return polygon;
+    }
+
+private:
+    void Bind()
+    {
+        const int n = static_cast<int>(m_storage.size() / 3);
+        const Vec2T<S>* base = m_storage.data();
+        vertices = {base, n};
+        edges = {base + n, n};
+        normals = {base + 2 * n, n};
+    }
+
+    std::vector<Vec2T<S>> m_storage;
 };
 
 /// Double-precision polygon.

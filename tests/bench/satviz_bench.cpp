@@ -1,0 +1,440 @@
+// SPDX-License-Identifier: MIT
+// satviz-bench: run time and error of the SAT queries on random contact pairs, beside Box2D 2.4.1 in the same
+// process on the same pairs. A benchmark program, not a test: it prints figures and ratios measured in this run.
+//
+// Method (after ../shared/research peer measurements): per vertex count, a pool of `slices` x `pairs` fresh pairs,
+// a random mix of overlapping, touching (within 1e-9) and separated pairs. A pass runs one query over every pair
+// of one slice in storage order; passes rotate over the slices so that no outcome sequence is learnt by the branch
+// predictor. Per round and query: a warm pass, then the median of `reps` passes; the figure is the median over
+// `rounds` rounds, which interleave all queries. Native shapes are built before timing.
+// Accuracy: a separate pool, against the __float128 reference of tests/support/reference.h.
+
+#include "support/random_shapes.h"
+#include "support/reference.h"
+
+#include <satviz/sat.h>
+
+#include <CLI/CLI.hpp>
+
+#ifdef SATVIZ_HAVE_BOX2D
+#include <box2d/box2d.h>
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+using namespace satviz;
+using namespace satviz::testing;
+
+namespace
+{
+
+struct Settings
+{
+    int slices = 4;
+    int pairs = 1000;
+    int rounds = 5;
+    int reps = 7;
+    int accuracyPairs = 3000;
+    uint64_t seed = 20240601;
+    std::vector<int> counts = {3, 4, 8, 16, 64, 1024};
+};
+
+// A pair in every representation a query needs, built before timing.
+struct BenchPair
+{
+    Polygon a, b;
+    Transform xfA, xfB;
+    PolygonT<float> fa, fb;
+    TransformT<float> fxfA, fxfB;
+    bool floatOk = false;
+#ifdef SATVIZ_HAVE_BOX2D
+    b2PolygonShape ba, bb;
+    b2Transform bxfA, bxfB;
+#endif
+};
+
+TransformT<float> ToFloat(const Transform& xf)
+{
+    return {ConvertVec<float>(xf.p), {static_cast<float>(xf.q.c), static_cast<float>(xf.q.s)}};
+}
+
+#ifdef SATVIZ_HAVE_BOX2D
+// Box2D's Set() welds close vertices and recomputes the hull, which would alter slivers: fill the fields it would
+// compute for a valid hull directly, with the skin radius set to 0 so the polygon is the input polygon.
+b2PolygonShape ToBox2D(const Polygon& polygon)
+{
+    b2PolygonShape shape;
+    shape.m_count = polygon.Count();
+    b2Vec2 centroid(0.0f, 0.0f);
+    for (int i = 0; i < polygon.Count(); ++i)
+    {
+        shape.m_vertices[i].Set(static_cast<float>(polygon.vertices[i].x), static_cast<float>(polygon.vertices[i].y));
+        shape.m_normals[i].Set(static_cast<float>(polygon.normals[i].x), static_cast<float>(polygon.normals[i].y));
+        centroid += shape.m_vertices[i];
+    }
+    shape.m_centroid = (1.0f / static_cast<float>(polygon.Count())) * centroid;
+    shape.m_radius = 0.0f;
+    return shape;
+}
+
+b2Transform ToBox2D(const Transform& xf)
+{
+    b2Transform out;
+    out.p.Set(static_cast<float>(xf.p.x), static_cast<float>(xf.p.y));
+    out.q.c = static_cast<float>(xf.q.c);
+    out.q.s = static_cast<float>(xf.q.s);
+    return out;
+}
+
+// Penetration depth from a Box2D manifold: minus the smallest separation of its world points.
+double Box2DDepth(const b2Manifold& manifold, const BenchPair& p)
+{
+    b2WorldManifold world;
+    world.Initialize(&manifold, p.bxfA, 0.0f, p.bxfB, 0.0f);
+    float smallest = 1e30f;
+    for (int i = 0; i < manifold.pointCount; ++i)
+    {
+        smallest = std::min(smallest, world.separations[i]);
+    }
+    return -static_cast<double>(smallest);
+}
+#endif
+
+BenchPair MakeBenchPair(const RandomPair& r)
+{
+    BenchPair p;
+    p.a = r.a.polygon;
+    p.b = r.b.polygon;
+    p.xfA = r.xfA;
+    p.xfB = r.xfB;
+    const PolygonResultT<float> fa = ConvertPolygon<float>(p.a);
+    const PolygonResultT<float> fb = ConvertPolygon<float>(p.b);
+    p.floatOk = fa.Ok() && fb.Ok();
+    p.fa = fa.polygon;
+    p.fb = fb.polygon;
+    p.fxfA = ToFloat(p.xfA);
+    p.fxfB = ToFloat(p.xfB);
+#ifdef SATVIZ_HAVE_BOX2D
+    if (p.a.Count() <= b2_maxPolygonVertices)
+    {
+        p.ba = ToBox2D(p.a);
+        p.bb = ToBox2D(p.b);
+        p.bxfA = ToBox2D(p.xfA);
+        p.bxfB = ToBox2D(p.xfB);
+    }
+#endif
+    return p;
+}
+
+std::vector<BenchPair> MakePool(Rng& rng, int n, int count)
+{
+    std::vector<BenchPair> pool;
+    pool.reserve(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i)
+    {
+        const PairCategory category = static_cast<PairCategory>(rng.Int(0, 2));
+        BenchPair p = MakeBenchPair(ContactPair(rng, n, category));
+        if (p.floatOk)
+        {
+            pool.push_back(std::move(p));
+        }
+    }
+    return pool;
+}
+
+// A query under test: returns a value folded into a sink so the work cannot be optimised away.
+struct Query
+{
+    std::string name;
+    bool box2d = false; // needs n <= 8
+    std::function<double(const BenchPair&)> run;
+};
+
+volatile double g_sink = 0.0;
+
+double Median(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+std::vector<Query> Queries()
+{
+    static Trace trace;
+    static TraceT<float> traceFloat;
+    std::vector<Query> queries = {
+        {"satviz Overlap", false, [](const BenchPair& p) { return Overlap(p.a, p.xfA, p.b, p.xfB) ? 1.0 : 0.0; }},
+        {"satviz Overlap traced", false,
+         [](const BenchPair& p) { return Overlap(p.a, p.xfA, p.b, p.xfB, &trace) ? 1.0 : 0.0; }},
+        {"satviz Overlap float", false,
+         [](const BenchPair& p) { return Overlap(p.fa, p.fxfA, p.fb, p.fxfB) ? 1.0 : 0.0; }},
+        {"satviz Collide", false, [](const BenchPair& p) { return Collide(p.a, p.xfA, p.b, p.xfB).depth; }},
+        {"satviz Collide traced", false,
+         [](const BenchPair& p) { return Collide(p.a, p.xfA, p.b, p.xfB, &trace).depth; }},
+        {"satviz Collide float", false,
+         [](const BenchPair& p) { return static_cast<double>(Collide(p.fa, p.fxfA, p.fb, p.fxfB).depth); }},
+    };
+#ifdef SATVIZ_HAVE_BOX2D
+    queries.push_back({"box2d b2TestOverlap", true, [](const BenchPair& p) {
+                           return b2TestOverlap(&p.ba, 0, &p.bb, 0, p.bxfA, p.bxfB) ? 1.0 : 0.0;
+                       }});
+    queries.push_back({"box2d b2CollidePolygons", true, [](const BenchPair& p) {
+                           b2Manifold manifold;
+                           b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
+                           return static_cast<double>(manifold.pointCount);
+                       }});
+#endif
+    return queries;
+}
+
+// ns per query for each query, at one vertex count.
+std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rng)
+{
+    const int perSlice = n >= 1024 ? std::max(1, s.pairs / 10) : s.pairs;
+    std::vector<std::vector<BenchPair>> slices;
+    for (int i = 0; i < s.slices; ++i)
+    {
+        slices.push_back(MakePool(rng, n, perSlice));
+    }
+    std::map<std::string, std::vector<double>> rounds;
+    int slice = 0;
+    for (int round = 0; round < s.rounds; ++round)
+    {
+        for (const Query& q : queries)
+        {
+            if (q.box2d && n > 8)
+            {
+                continue;
+            }
+            auto pass = [&]() {
+                const std::vector<BenchPair>& pool = slices[static_cast<size_t>(slice)];
+                slice = (slice + 1) % s.slices;
+                double sink = 0.0;
+                const auto start = std::chrono::steady_clock::now();
+                for (const BenchPair& p : pool)
+                {
+                    sink += q.run(p);
+                }
+                const auto stop = std::chrono::steady_clock::now();
+                g_sink = g_sink + sink;
+                return std::chrono::duration<double, std::nano>(stop - start).count() / static_cast<double>(pool.size());
+            };
+            for (int w = 0; w < s.slices; ++w)
+            {
+                pass();
+            }
+            std::vector<double> passes;
+            for (int r = 0; r < s.reps; ++r)
+            {
+                passes.push_back(pass());
+            }
+            rounds[q.name].push_back(Median(passes));
+        }
+    }
+    std::map<std::string, double> out;
+    for (auto& [name, values] : rounds)
+    {
+        out[name] = Median(values);
+    }
+    return out;
+}
+
+struct Accuracy
+{
+    int pairs = 0;
+    int wrong = 0;
+    int falsePositives = 0;
+    int falseNegatives = 0;
+    std::vector<double> depthErrors;
+};
+
+void Record(Accuracy& acc, bool answer, const Reference& ref, double depth, bool withDepth)
+{
+    acc.pairs += 1;
+    if (answer != ref.overlap)
+    {
+        acc.wrong += 1;
+        (answer ? acc.falsePositives : acc.falseNegatives) += 1;
+    }
+    if (withDepth && answer && ref.overlap)
+    {
+        acc.depthErrors.push_back(std::abs(depth + static_cast<double>(ref.separation)));
+    }
+}
+
+std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::vector<int>& counts, Rng& rng)
+{
+    std::map<std::string, Accuracy> acc;
+    for (int n : counts)
+    {
+        const int count = n >= 1024 ? std::max(1, s.accuracyPairs / 300) : (n >= 64 ? s.accuracyPairs / 10 : s.accuracyPairs);
+        for (const BenchPair& p : MakePool(rng, n, count))
+        {
+            const Reference ref = ReferenceCollide(MakeShape(p.a), p.xfA, MakeShape(p.b), p.xfB);
+            Record(acc["satviz Overlap"], Overlap(p.a, p.xfA, p.b, p.xfB), ref, 0.0, false);
+            Record(acc["satviz Overlap float"], Overlap(p.fa, p.fxfA, p.fb, p.fxfB), ref, 0.0, false);
+            const Manifold m = Collide(p.a, p.xfA, p.b, p.xfB);
+            Record(acc["satviz Collide"], m.overlap, ref, m.depth, true);
+            const ManifoldT<float> mf = Collide(p.fa, p.fxfA, p.fb, p.fxfB);
+            Record(acc["satviz Collide float"], mf.overlap, ref, mf.depth, true);
+#ifdef SATVIZ_HAVE_BOX2D
+            if (n <= b2_maxPolygonVertices)
+            {
+                Record(acc["box2d b2TestOverlap"], b2TestOverlap(&p.ba, 0, &p.bb, 0, p.bxfA, p.bxfB), ref, 0.0, false);
+                b2Manifold manifold;
+                b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
+                Record(acc["box2d b2CollidePolygons"], manifold.pointCount > 0, ref,
+                       manifold.pointCount > 0 ? Box2DDepth(manifold, p) : 0.0, true);
+            }
+#endif
+        }
+    }
+    return acc;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    Settings s;
+    bool quick = false;
+    CLI::App app{"satviz-bench: ns per query and error against a quad-precision reference, beside Box2D."};
+    app.add_flag("--quick", quick, "Tiny pools and few rounds: checks that the benchmark runs, measures nothing");
+    app.add_option("--pairs", s.pairs, "Pairs per slice");
+    app.add_option("--rounds", s.rounds, "Rounds (the figure is their median)");
+    app.add_option("--seed", s.seed, "Random seed");
+    app.add_option("--counts", s.counts, "Vertex counts");
+    CLI11_PARSE(app, argc, argv);
+    if (quick)
+    {
+        s.pairs = 20;
+        s.rounds = 1;
+        s.reps = 1;
+        s.accuracyPairs = 300;
+    }
+
+    Rng rng(s.seed);
+    const std::vector<Query> queries = Queries();
+    std::map<int, std::map<std::string, double>> ns;
+    for (int n : s.counts)
+    {
+        ns[n] = Time(s, n, queries, rng);
+    }
+
+    std::printf("satviz-bench: ns per query, median of %d rounds x median of %d passes over %d-pair slices\n",
+                s.rounds, s.reps, s.pairs);
+    std::printf("(mix of overlapping, touching within 1e-9 and separated pairs; both polygons have n vertices)\n\n");
+    std::printf("%-26s", "query");
+    for (int n : s.counts)
+    {
+        std::printf(" %9s", ("n=" + std::to_string(n)).c_str());
+    }
+    std::printf("\n");
+    for (const Query& q : queries)
+    {
+        std::printf("%-26s", q.name.c_str());
+        for (int n : s.counts)
+        {
+            const auto it = ns[n].find(q.name);
+            if (it == ns[n].end())
+            {
+                std::printf(" %9s", "-");
+            }
+            else
+            {
+                std::printf(" %9.1f", it->second);
+            }
+        }
+        std::printf("\n");
+    }
+
+    auto ratioRow = [&](const char* label, const char* numerator, const char* denominator) {
+        std::printf("%-44s", label);
+        for (int n : s.counts)
+        {
+            const auto num = ns[n].find(numerator);
+            const auto den = ns[n].find(denominator);
+            if (num == ns[n].end() || den == ns[n].end())
+            {
+                std::printf(" %7s", "-");
+            }
+            else
+            {
+                std::printf(" %7.2f", num->second / den->second);
+            }
+        }
+        std::printf("\n");
+    };
+    std::printf("\nratios measured in this run (<1: faster)     ");
+    for (int n : s.counts)
+    {
+        std::printf(" %7s", ("n=" + std::to_string(n)).c_str());
+    }
+    std::printf("\n");
+    ratioRow("Overlap traced / Overlap", "satviz Overlap traced", "satviz Overlap");
+    ratioRow("Collide traced / Collide", "satviz Collide traced", "satviz Collide");
+    ratioRow("Overlap float / Overlap double", "satviz Overlap float", "satviz Overlap");
+    ratioRow("Collide float / Collide double", "satviz Collide float", "satviz Collide");
+    ratioRow("Overlap / Collide", "satviz Overlap", "satviz Collide");
+#ifdef SATVIZ_HAVE_BOX2D
+    ratioRow("satviz Overlap / box2d b2TestOverlap", "satviz Overlap", "box2d b2TestOverlap");
+    ratioRow("satviz Collide / box2d b2CollidePolygons", "satviz Collide", "box2d b2CollidePolygons");
+#endif
+
+    std::printf("\nscaling with the vertex count (time / time at n=8)\n");
+    for (const char* name : {"satviz Overlap", "satviz Collide"})
+    {
+        std::printf("%-26s", name);
+        for (int n : s.counts)
+        {
+            const bool have = ns[n].count(name) && ns[8].count(name);
+            std::printf(" %9s", have ? std::to_string(ns[n][name] / ns[8][name]).substr(0, 6).c_str() : "-");
+        }
+        std::printf("\n");
+    }
+
+    const std::map<std::string, Accuracy> acc = MeasureAccuracy(s, s.counts, rng);
+    std::printf("\naccuracy against the __float128 reference (all vertex counts; box2d: n <= 8)\n");
+    std::printf("%-26s %7s %14s %12s %12s\n", "query", "pairs", "wrong (fp,fn)", "depth med", "depth max");
+    for (const auto& [name, a] : acc)
+    {
+        std::string wrong = std::to_string(a.wrong) + " (" + std::to_string(a.falsePositives) + "," +
+                            std::to_string(a.falseNegatives) + ")";
+        if (a.depthErrors.empty())
+        {
+            std::printf("%-26s %7d %14s %12s %12s\n", name.c_str(), a.pairs, wrong.c_str(), "-", "-");
+        }
+        else
+        {
+            std::printf("%-26s %7d %14s %12.1e %12.1e\n", name.c_str(), a.pairs, wrong.c_str(), Median(a.depthErrors),
+                        *std::max_element(a.depthErrors.begin(), a.depthErrors.end()));
+        }
+    }
+
+    std::printf("\ntargets (8-gons)\n");
+    auto target = [&](const char* label, double value, double limit) {
+        std::printf("  %-52s %10.3g  (target <= %g)  %s\n", label, value, limit, value <= limit ? "met" : "MISSED");
+    };
+#ifdef SATVIZ_HAVE_BOX2D
+    if (ns.count(8) && ns[8].count("box2d b2TestOverlap"))
+    {
+        target("satviz Overlap / box2d b2TestOverlap", ns[8]["satviz Overlap"] / ns[8]["box2d b2TestOverlap"], 0.25);
+        target("satviz Collide / box2d b2CollidePolygons",
+               ns[8]["satviz Collide"] / ns[8]["box2d b2CollidePolygons"], 0.6);
+    }
+#else
+    std::printf("  (built without Box2D: no peer ratios)\n");
+#endif
+    if (acc.count("satviz Collide") && !acc.at("satviz Collide").depthErrors.empty())
+    {
+        const auto& e = acc.at("satviz Collide").depthErrors;
+        target("satviz Collide depth error, max (double)", *std::max_element(e.begin(), e.end()), 1e-14);
+    }
+    return 0;
+}
