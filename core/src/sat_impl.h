@@ -210,7 +210,7 @@ struct IncidentPolygon
         {
             hits |= static_cast<uint32_t>(normal.x * x[j] + normal.y * y[j] == low) << j;
         }
-        return __builtin_ctz(hits);
+        return hits != 0 ? __builtin_ctz(hits) : 0; // no hit only for NaN input
     }
 };
 

@@ -43,7 +43,7 @@ struct SceneResult
 constexpr double kMaxSceneValue = 1e12;
 
 /// Parses a scene from JSON text. `file` names the source in error messages.
-/// Format (see docs/scene.schema.json): {"bodies": [{"name": "A", "polygon": [[x, y], ...], "position": [x, y],
+/// Format (see core/scene/scene.schema.json): {"bodies": [{"name": "A", "polygon": [[x, y], ...], "position": [x, y],
 /// "angle": 0.0, "velocity": [vx, vy]}, {"name": "B", "circle": {"radius": 0.5}, ...}]}. A body has exactly one
 /// shape: "polygon" (counter-clockwise vertices), "box" ([width, height]), "regular" ({"sides": n, "radius": r})
 /// or "circle" ({"radius": r, "center": [x, y]}). Unknown fields are errors, with a hint for misspellings, unless
