@@ -37,6 +37,27 @@ auto WithTracer(TraceT<S>* trace, const A& a, const TransformT<S>& xfA, const B&
     return query(tracer);
 }
 
+// Calls query(shapeA, shapeB) with the polygon or circle each shape holds.
+template <typename S, typename Query>
+auto DispatchShapes(const ShapeT<S>& a, const ShapeT<S>& b, Query&& query)
+{
+    const bool polygonA = a.type == ShapeType::Polygon;
+    const bool polygonB = b.type == ShapeType::Polygon;
+    if (polygonA && polygonB)
+    {
+        return query(a.polygon, b.polygon);
+    }
+    if (polygonA)
+    {
+        return query(a.polygon, b.circle);
+    }
+    if (polygonB)
+    {
+        return query(a.circle, b.polygon);
+    }
+    return query(a.circle, b.circle);
+}
+
 } // namespace
 
 template <typename S>
@@ -77,21 +98,7 @@ template <typename S>
 bool Overlap(const ShapeT<S>& a, const TransformT<S>& xfA, const ShapeT<S>& b, const TransformT<S>& xfB,
              TraceT<S>* trace)
 {
-    const bool polygonA = a.type == ShapeType::Polygon;
-    const bool polygonB = b.type == ShapeType::Polygon;
-    if (polygonA && polygonB)
-    {
-        return Overlap(a.polygon, xfA, b.polygon, xfB, trace);
-    }
-    if (polygonA)
-    {
-        return Overlap(a.polygon, xfA, b.circle, xfB, trace);
-    }
-    if (polygonB)
-    {
-        return Overlap(a.circle, xfA, b.polygon, xfB, trace);
-    }
-    return Overlap(a.circle, xfA, b.circle, xfB, trace);
+    return DispatchShapes(a, b, [&](const auto& sa, const auto& sb) { return Overlap(sa, xfA, sb, xfB, trace); });
 }
 
 template <typename S>
@@ -130,21 +137,7 @@ template <typename S>
 ManifoldT<S> Collide(const ShapeT<S>& a, const TransformT<S>& xfA, const ShapeT<S>& b, const TransformT<S>& xfB,
                      TraceT<S>* trace)
 {
-    const bool polygonA = a.type == ShapeType::Polygon;
-    const bool polygonB = b.type == ShapeType::Polygon;
-    if (polygonA && polygonB)
-    {
-        return Collide(a.polygon, xfA, b.polygon, xfB, trace);
-    }
-    if (polygonA)
-    {
-        return Collide(a.polygon, xfA, b.circle, xfB, trace);
-    }
-    if (polygonB)
-    {
-        return Collide(a.circle, xfA, b.polygon, xfB, trace);
-    }
-    return Collide(a.circle, xfA, b.circle, xfB, trace);
+    return DispatchShapes(a, b, [&](const auto& sa, const auto& sb) { return Collide(sa, xfA, sb, xfB, trace); });
 }
 
 #define SATVIZ_INSTANTIATE(S)                                                                                        \

@@ -21,6 +21,24 @@ PolygonResultT<S> Fail(PolygonError error, int vertex)
     return result;
 }
 
+// NotFinite or TooLarge for the first offending point; an empty result (Ok) when every point is acceptable.
+template <typename S>
+PolygonResultT<S> CheckCoordinates(const std::vector<Vec2T<S>>& points)
+{
+    for (size_t i = 0; i < points.size(); ++i)
+    {
+        if (!IsFinite(points[i]))
+        {
+            return Fail<S>(PolygonError::NotFinite, static_cast<int>(i));
+        }
+        if (std::abs(points[i].x) > S(kMaxCoordinate) || std::abs(points[i].y) > S(kMaxCoordinate))
+        {
+            return Fail<S>(PolygonError::TooLarge, static_cast<int>(i));
+        }
+    }
+    return {};
+}
+
 // Relative tolerance under which a turn counts as straight: the cross product of two edge vectors carries a
 // rounding error of a few ulps of |e1| |e2|, so smaller turns have no reliable sign.
 template <typename S>
@@ -79,16 +97,9 @@ S SignedArea2(const std::vector<Vec2T<S>>& points)
 template <typename S>
 PolygonResultT<S> MakePolygon(const std::vector<Vec2T<S>>& input, PolygonOptions options)
 {
-    for (size_t i = 0; i < input.size(); ++i)
+    if (PolygonResultT<S> bad = CheckCoordinates(input); !bad.Ok())
     {
-        if (!IsFinite(input[i]))
-        {
-            return Fail<S>(PolygonError::NotFinite, static_cast<int>(i));
-        }
-        if (std::abs(input[i].x) > S(kMaxCoordinate) || std::abs(input[i].y) > S(kMaxCoordinate))
-        {
-            return Fail<S>(PolygonError::TooLarge, static_cast<int>(i));
-        }
+        return bad;
     }
 
     std::vector<Vec2T<S>> points = input;
@@ -189,16 +200,9 @@ PolygonResultT<S> MakePolygon(const std::vector<Vec2T<S>>& input, PolygonOptions
 template <typename S>
 PolygonResultT<S> ComputeHull(const std::vector<Vec2T<S>>& input)
 {
-    for (size_t i = 0; i < input.size(); ++i)
+    if (PolygonResultT<S> bad = CheckCoordinates(input); !bad.Ok())
     {
-        if (!IsFinite(input[i]))
-        {
-            return Fail<S>(PolygonError::NotFinite, static_cast<int>(i));
-        }
-        if (std::abs(input[i].x) > S(kMaxCoordinate) || std::abs(input[i].y) > S(kMaxCoordinate))
-        {
-            return Fail<S>(PolygonError::TooLarge, static_cast<int>(i));
-        }
+        return bad;
     }
     std::vector<Vec2T<S>> points = input;
     std::sort(points.begin(), points.end(),
