@@ -64,6 +64,12 @@ TEST_CASE("Trace invariants hold on random pairs", "[trace][properties]")
             REQUIRE(std::abs(Length(t.direction) - 1.0) < 1e-14);
             REQUIRE(t.minA <= t.maxA);
             REQUIRE(t.minB <= t.maxB);
+            if (t.pruned)
+            {
+                // The bound is an upper bound of the separation, and it could not separate the shapes.
+                REQUIRE(t.separation <= t.bound + tolerance);
+                REQUIRE_FALSE(t.separating);
+            }
             if (!t.skipped)
             {
                 best = std::max(best, t.separation);

@@ -89,6 +89,11 @@ Json TraceJson(const Trace& trace)
         entry["support_b"] = test.supportB;
         entry["separating"] = test.separating;
         entry["best"] = test.best;
+        if (test.pruned)
+        {
+            entry["pruned"] = true;
+            entry["bound"] = test.bound;
+        }
         if (test.skipped)
         {
             entry["skipped"] = true;

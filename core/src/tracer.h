@@ -80,6 +80,22 @@ public:
         Push(test);
     }
 
+    /// A face was not scanned: the separation `bound` of the other polygon's centroid showed it could neither
+    /// separate nor beat the best face so far. The separation shown is computed here, for the view only.
+    void PrunedFace(int side, int face, Vec2T<S> normal, S bound, int support)
+    {
+        const TransformT<S>& own = Frame(side);
+        const TransformT<S>& other = Frame(1 - side);
+        const PolygonT<S>& ref = side == 0 ? *m_a.polygon : *m_b.polygon;
+        const PolygonT<S>& inc = side == 0 ? *m_b.polygon : *m_a.polygon;
+        const Vec2T<S> worldNormal = Rotate(own.q, normal);
+        const S separation = Dot(worldNormal, TransformPoint(other, inc.vertices[support]) -
+                                                  TransformPoint(own, ref.vertices[face]));
+        FaceAxis(side, face, normal, separation, support, false);
+        m_trace.axes.back().pruned = true;
+        m_trace.axes.back().bound = bound / Length(normal);
+    }
+
     /// A face of B was skipped: it is anti-parallel to face `duplicateFace` of A, already tested (-1: the face of
     /// A whose normal is most anti-parallel).
     void SkippedFace(int face, int duplicateFace)

@@ -27,6 +27,11 @@ struct AxisTestT
     /// The axis repeats one already tested (a face of B anti-parallel to a face of A): no work was done for it.
     bool skipped = false;
     int duplicateOf = -1; ///< with skipped: index in TraceT::axes of the test it repeats
+    /// The axis was not scanned (back-face pruning): the separation of the other polygon's centroid, `bound`, is an
+    /// upper bound of the separation and showed that this face could neither separate the shapes nor beat the best
+    /// face so far. `separation` and the intervals are computed for the view only.
+    bool pruned = false;
+    S bound{}; ///< with pruned: the centroid's separation, an upper bound of `separation`
     int best = -1;        ///< index in TraceT::axes of the axis with the largest separation so far, this one included
 };
 
