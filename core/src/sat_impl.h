@@ -418,16 +418,123 @@ int ClipSegmentToPlane(Vec2T<S> out[2], Vec2T<S> p0, Vec2T<S> p1, Vec2T<S> norma
     return count;
 }
 
+/// Contact points from clipping, in the reference polygon's frame, with what the trace shows of the clipping.
+template <typename S>
+struct ClipResult
+{
+    ContactPointT<S> contacts[2]{}; ///< halfway between the kept points and the reference face
+    int contactCount = 0;           ///< 1 or 2
+    int incidentEdge = -1;          ///< the incident edge
+    Vec2T<S> w1{}, w2{};            ///< incident edge, reference frame
+    Vec2T<S> clip1[2]{};            ///< after the side plane through the face's first vertex
+    int count1 = 0;
+    Vec2T<S> clip2[2]{};            ///< then after the side plane through its second vertex
+    int count2 = 0;
+    S separations[2]{};             ///< of the clip2 points to the reference face
+    bool kept[2]{};                 ///< clip2 points kept as contacts
+    bool fallback = false;          ///< no point kept: the deepest incident vertex was used
+};
+
+/// Contact points of a reference face (Catto; Gregorius):
+///   1. Incident edge: of the two edges of the incident polygon at its support vertex against the face, the one
+///      whose normal is most anti-parallel to the reference normal.
+///   2. Clip it against the two side planes of the reference face (Sutherland-Hodgman).
+///   3. Keep the clipped points whose separation from the face is at most `keepBelow` (0 for resting contact; a
+///      little more at a time of impact, where touching points carry rounding of either sign). The contact point
+///      is halfway between the kept point and the reference face.
+///   4. If clipping keeps nothing (a rounding artefact at a vertex-vertex contact), use the deepest vertex.
+/// `support` is the incident support vertex if known, else -1.
+template <typename S>
+ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& inc, int support,
+                               S keepBelow)
+{
+    ClipResult<S> out;
+    const int m = inc.polygon.Count();
+    const Vec2T<S> v1 = ref.vertices[face];
+    const Vec2T<S> v2 = ref.vertices[Next(face, ref.Count())];
+    const Vec2T<S> normal = ref.normals[face];
+    const Vec2T<S> tangent = LeftPerp(normal);
+
+    const int s = support >= 0 ? support : inc.Support(normal);
+    const int before = Prev(s, m);
+    const S dotLeaving = Dot(normal, Rotate(inc.xf.q, inc.polygon.normals[s]));
+    const S dotEntering = Dot(normal, Rotate(inc.xf.q, inc.polygon.normals[before]));
+    out.incidentEdge = Select(dotEntering < dotLeaving, before, s);
+    out.w1 = TransformPoint(inc.xf, inc.polygon.vertices[out.incidentEdge]);
+    out.w2 = TransformPoint(inc.xf, inc.polygon.vertices[Next(out.incidentEdge, m)]);
+
+    out.count1 = ClipSegmentToPlane(out.clip1, out.w1, out.w2, -tangent, v1);
+    if (out.count1 == 2)
+    {
+        out.count2 = ClipSegmentToPlane(out.clip2, out.clip1[0], out.clip1[1], tangent, v2);
+    }
+    else if (out.count1 == 1 && Dot(tangent, out.clip1[0] - v2) <= S(0))
+    {
+        // A single point survives the first plane only when the edge touches it; test it against the second.
+        out.clip2[out.count2++] = out.clip1[0];
+    }
+    for (int k = 0; k < out.count2; ++k)
+    {
+        out.separations[k] = Dot(normal, out.clip2[k] - v1);
+        if (out.separations[k] <= keepBelow)
+        {
+            out.kept[k] = true;
+            ContactPointT<S>& contact = out.contacts[out.contactCount++];
+            contact.point = out.clip2[k] - (S(0.5) * out.separations[k]) * normal;
+            contact.separation = out.separations[k];
+        }
+    }
+    out.fallback = out.contactCount == 0;
+    if (out.fallback)
+    {
+        const Vec2T<S> deepest = TransformPoint(inc.xf, inc.polygon.vertices[s]);
+        const S separation = Dot(normal, deepest - v1);
+        out.contacts[0].point = deepest - (S(0.5) * separation) * normal;
+        out.contacts[0].separation = separation;
+        out.contactCount = 1;
+    }
+    return out;
+}
+
+/// The trace's view of a clipping, in world space.
+template <typename S>
+ClipTraceT<S> ClipTraceOf(const ClipResult<S>& r, const AxisRef& reference, const PolygonT<S>& ref,
+                          const TransformT<S>& xfRef, const PolygonT<S>& inc, const TransformT<S>& xfInc,
+                          int incidentShape)
+{
+    ClipTraceT<S> clip;
+    clip.reference = reference;
+    clip.referenceV1 = TransformPoint(xfRef, ref.vertices[reference.index]);
+    clip.referenceV2 = TransformPoint(xfRef, ref.vertices[Next(reference.index, ref.Count())]);
+    clip.referenceNormal = Rotate(xfRef.q, ref.normals[reference.index]);
+    clip.incidentShape = incidentShape;
+    clip.incidentEdge = r.incidentEdge;
+    clip.incidentV1 = TransformPoint(xfInc, inc.vertices[r.incidentEdge]);
+    clip.incidentV2 = TransformPoint(xfInc, inc.vertices[Next(r.incidentEdge, inc.Count())]);
+    clip.sideClip1Count = r.count1;
+    clip.sideClip2Count = r.count2;
+    for (int k = 0; k < r.count1; ++k)
+    {
+        clip.sideClip1[k] = TransformPoint(xfRef, r.clip1[k]);
+    }
+    for (int k = 0; k < r.count2; ++k)
+    {
+        clip.sideClip2[k] = TransformPoint(xfRef, r.clip2[k]);
+        clip.clippedSeparation[k] = r.separations[k];
+        clip.kept[k] = r.kept[k];
+    }
+    clip.usedFallback = r.fallback;
+    return clip;
+}
+
 /// The manifold of two polygons (Gregorius; Catto).
 /// Outline:
 ///   1. Work in A's frame: B relative to A, so far-away pairs keep their relative precision.
 ///   2. Face query of A's faces, then of B's faces (in B's frame); stop at the first separating face.
 ///   3. Reference face: the face of largest separation (least penetration), A's on a tie. Its unit normal is the
 ///      minimum translation direction and -separation the depth, also when one polygon contains the other.
-///   4. Incident edge: of the two edges of the other polygon at its support vertex, the one whose normal is most
-///      anti-parallel to the reference normal.
-///   5. Clip the incident edge against the two side planes of the reference face; keep the clipped points on or
-///      below the reference face. The contact point is halfway between such a point and the reference face.
+///   4. Contacts (ClipIncidentEdge): clip the incident edge against the side planes of the reference face and keep
+///      the points on or below it.
 template <typename S, typename Tracer>
 ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b,
                              const TransformT<S>& xfB, Tracer& tracer)
@@ -471,93 +578,23 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     const TransformT<S>& xfRef = flip ? xfB : xfA;
     const FaceQuery<S>& query = flip ? queryB : queryA;
 
-    const int m = inc.polygon.Count();
-    const int i1 = query.face;
-    const int i2 = Next(i1, ref.Count());
-    const Vec2T<S> v1 = ref.vertices[i1];
-    const Vec2T<S> v2 = ref.vertices[i2];
-    const Vec2T<S> normal = ref.normals[i1];
-    const Vec2T<S> tangent = LeftPerp(normal);
-
-    // Incident edge: the edge leaving or the edge entering the support vertex.
-    const int s = inc.scan ? inc.Support(normal) : query.support;
-    const int before = Prev(s, m);
-    const S dotLeaving = Dot(normal, Rotate(inc.xf.q, inc.polygon.normals[s]));
-    const S dotEntering = Dot(normal, Rotate(inc.xf.q, inc.polygon.normals[before]));
-    const int incidentEdge = Select(dotEntering < dotLeaving, before, s);
-    const Vec2T<S> w1 = TransformPoint(inc.xf, inc.polygon.vertices[incidentEdge]);
-    const Vec2T<S> w2 = TransformPoint(inc.xf, inc.polygon.vertices[Next(incidentEdge, m)]);
-
-    Vec2T<S> clip1[2];
-    Vec2T<S> clip2[2];
-    const int count1 = ClipSegmentToPlane(clip1, w1, w2, -tangent, v1);
-    int count2 = 0;
-    if (count1 == 2)
+    const ClipResult<S> clip = ClipIncidentEdge(ref, query.face, inc, inc.scan ? -1 : query.support, S(0));
+    for (int k = 0; k < clip.contactCount; ++k)
     {
-        count2 = ClipSegmentToPlane(clip2, clip1[0], clip1[1], tangent, v2);
+        manifold.contacts[k].point = TransformPoint(xfRef, clip.contacts[k].point);
+        manifold.contacts[k].separation = clip.contacts[k].separation;
     }
-    else if (count1 == 1 && Dot(tangent, clip1[0] - v2) <= S(0))
-    {
-        // A single point survives the first plane only when the edge touches it; test it against the second.
-        clip2[count2++] = clip1[0];
-    }
-
-    S separations[2] = {S(0), S(0)};
-    bool kept[2] = {false, false};
-    for (int k = 0; k < count2; ++k)
-    {
-        separations[k] = Dot(normal, clip2[k] - v1);
-        if (separations[k] <= S(0))
-        {
-            kept[k] = true;
-            ContactPointT<S>& contact = manifold.contacts[manifold.contactCount++];
-            contact.point = TransformPoint(xfRef, clip2[k] - (S(0.5) * separations[k]) * normal);
-            contact.separation = separations[k];
-        }
-    }
-    const bool fallback = manifold.contactCount == 0;
-    if (fallback)
-    {
-        // Clipping lost every point (a rounding artefact at a vertex-vertex contact): use the deepest vertex.
-        const Vec2T<S> deepest = TransformPoint(inc.xf, inc.polygon.vertices[s]);
-        ContactPointT<S>& contact = manifold.contacts[manifold.contactCount++];
-        contact.point = TransformPoint(xfRef, deepest - (S(0.5) * query.separation) * normal);
-        contact.separation = query.separation;
-    }
-
+    manifold.contactCount = clip.contactCount;
     manifold.overlap = true;
     manifold.depth = -query.separation;
-    const Vec2T<S> worldNormal = Rotate(xfRef.q, normal);
+    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.normals[query.face]);
     manifold.normal = flip ? -worldNormal : worldNormal;
-    manifold.axis = {AxisKind::FaceNormal, flip ? 1 : 0, i1};
-    manifold.incidentEdge = incidentEdge;
+    manifold.axis = {AxisKind::FaceNormal, flip ? 1 : 0, query.face};
+    manifold.incidentEdge = clip.incidentEdge;
 
     if constexpr (Tracer::kEnabled)
     {
-        const TransformT<S>& xfInc = flip ? xfA : xfB;
-        ClipTraceT<S> clip;
-        clip.reference = manifold.axis;
-        clip.referenceV1 = TransformPoint(xfRef, v1);
-        clip.referenceV2 = TransformPoint(xfRef, v2);
-        clip.referenceNormal = worldNormal;
-        clip.incidentShape = flip ? 0 : 1;
-        clip.incidentEdge = incidentEdge;
-        clip.incidentV1 = TransformPoint(xfInc, inc.polygon.vertices[incidentEdge]);
-        clip.incidentV2 = TransformPoint(xfInc, inc.polygon.vertices[Next(incidentEdge, m)]);
-        clip.sideClip1Count = count1;
-        clip.sideClip2Count = count2;
-        for (int k = 0; k < count1; ++k)
-        {
-            clip.sideClip1[k] = TransformPoint(xfRef, clip1[k]);
-        }
-        for (int k = 0; k < count2; ++k)
-        {
-            clip.sideClip2[k] = TransformPoint(xfRef, clip2[k]);
-            clip.clippedSeparation[k] = separations[k];
-            clip.kept[k] = kept[k];
-        }
-        clip.usedFallback = fallback;
-        tracer.Clip(clip);
+        tracer.Clip(ClipTraceOf(clip, manifold.axis, ref, xfRef, inc.polygon, flip ? xfA : xfB, flip ? 0 : 1));
         tracer.Finish(TraceExit::AllAxesOverlap, manifold);
     }
     return manifold;
