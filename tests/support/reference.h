@@ -13,6 +13,7 @@
 
 #include <quadmath.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace satviz::testing
@@ -216,6 +217,87 @@ inline Reference ReferenceCollide(const Shape& a, const Transform& xfA, const Sh
     const QVec center = QTransform(polygonFirst ? xfB : xfA, circle.center);
     out.separation = SignedDistance(outline, center) - Quad(circle.radius);
     out.overlap = out.separation <= 0;
+    return out;
+}
+
+/// The reference for a sweep of two translating polygons: B moves by v relative to A. B(t) meets A exactly when
+/// t v lies in the Minkowski difference A - B, built here as the convex hull of every vertex difference (Andrew's
+/// monotone chain, quad precision), and the ray t v is clipped against its faces (Cyrus-Beck).
+struct SweepReference
+{
+    bool insideAtStart = false; ///< the origin is strictly inside A - B: interpenetrating at t = 0
+    Quad enter = 0;             ///< first time t v is in A - B (may be negative: already inside)
+    Quad leave = 0;             ///< last time
+    bool crosses = false;       ///< the ray meets A - B with enter < leave (not only tangent)
+    Quad startSeparation = 0;   ///< signed distance of the origin from A - B at t = 0 (< 0: inside)
+};
+
+inline SweepReference ReferenceSweep(const Polygon& a, const Transform& xfA, const Polygon& b, const Transform& xfB,
+                                     Vec2 velocity)
+{
+    std::vector<QVec> points;
+    for (const QVec& p : QWorld(a, xfA))
+    {
+        for (const QVec& q : QWorld(b, xfB))
+        {
+            points.push_back(p - q);
+        }
+    }
+    std::sort(points.begin(), points.end(), [](QVec l, QVec r) { return l.x < r.x || (l.x == r.x && l.y < r.y); });
+    std::vector<QVec> hull(2 * points.size());
+    size_t k = 0;
+    for (size_t i = 0; i < points.size(); ++i)
+    {
+        while (k >= 2 && QCross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0)
+        {
+            --k;
+        }
+        hull[k++] = points[i];
+    }
+    for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;)
+    {
+        while (k >= lower && QCross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0)
+        {
+            --k;
+        }
+        hull[k++] = points[i];
+    }
+    hull.resize(k - 1);
+
+    SweepReference out;
+    out.enter = -1e300Q;
+    out.leave = 1e300Q;
+    out.insideAtStart = true;
+    const QVec v{velocity.x, velocity.y};
+    for (size_t i = 0; i < hull.size(); ++i)
+    {
+        const QVec e = hull[(i + 1) % hull.size()] - hull[i];
+        const QVec n{e.y, -e.x}; // outward for a counter-clockwise hull
+        // Inside this face's half-plane while Dot(n, t v - q) <= 0.
+        const Quad offset = -QDot(n, hull[i]);
+        const Quad rate = QDot(n, v);
+        out.insideAtStart = out.insideAtStart && offset < 0;
+        const Quad distance = offset / sqrtq(QDot(n, n));
+        out.startSeparation = i == 0 || distance > out.startSeparation ? distance : out.startSeparation;
+        if (rate == 0)
+        {
+            if (offset >= 0)
+            {
+                out.enter = 1e300Q; // parallel and outside (or on) the face: never strictly inside
+            }
+            continue;
+        }
+        const Quad t = -offset / rate;
+        if (rate < 0)
+        {
+            out.enter = t > out.enter ? t : out.enter;
+        }
+        else
+        {
+            out.leave = t < out.leave ? t : out.leave;
+        }
+    }
+    out.crosses = out.enter < out.leave;
     return out;
 }
 

@@ -16,6 +16,8 @@
 //               kinds; an optional Trace* records every step.
 //   manifold.h  Manifold, ContactPoint, AxisRef (which shape, which edge or vertex).
 //   trace.h     Trace: the axes in test order with both projection intervals, then the contact clipping.
+//   sweep.h     Sweep(A, xfA, vA, B, xfB, vB): time of impact of translating shapes, exact at any speed, with
+//               its own trace (entry and exit times per axis).
 //
 // CONVENTIONS
 //   y points up; angles are radians, counter-clockwise. Polygon vertices are listed counter-clockwise in the body
@@ -48,4 +50,5 @@
 #include <satviz/math.h>
 #include <satviz/polygon.h>
 #include <satviz/shape.h>
+#include <satviz/sweep.h>
 #include <satviz/trace.h>

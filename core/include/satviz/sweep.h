@@ -61,6 +61,8 @@ struct SweepTraceT
 
 /// Double-precision sweep trace.
 using SweepTrace = SweepTraceT<double>;
+/// Double-precision sweep axis.
+using SweepAxis = SweepAxisT<double>;
 
 /// The result of Sweep.
 template <typename S>

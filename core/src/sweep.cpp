@@ -1,0 +1,418 @@
+// SPDX-License-Identifier: MIT
+// satviz: the swept test for translating shapes (Ericson, Real-Time Collision Detection, 5.5.2 for polygons;
+// 5.3.2 and 5.5.7 for the ray against a sphere and the rounded shapes of circles).
+
+#include "sat_impl.h"
+
+#include <satviz/collide.h>
+#include <satviz/sweep.h>
+
+#include <cmath>
+#include <limits>
+
+namespace satviz
+{
+namespace detail
+{
+namespace
+{
+
+template <typename S>
+constexpr S kInfinity = std::numeric_limits<S>::infinity();
+
+struct NullSweepTracer
+{
+    static constexpr bool kEnabled = false;
+};
+
+// Records the axes of a polygon sweep. Everything here is for the trace only.
+template <typename S>
+class SweepRecorder
+{
+public:
+    static constexpr bool kEnabled = true;
+
+    SweepRecorder(SweepTraceT<S>& trace, const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b,
+                  const TransformT<S>& xfB, Vec2T<S> relativeVelocity)
+        : m_trace(trace), m_a(a), m_b(b), m_xfA(xfA), m_xfB(xfB), m_velocity(relativeVelocity)
+    {
+        m_trace.Clear();
+    }
+
+    void Axis(int side, int face, S separation, S rate, S entry, S exit, bool endsTest)
+    {
+        SweepAxisT<S> axis;
+        axis.axis = {AxisKind::FaceNormal, side, face};
+        axis.direction = side == 0 ? Rotate(m_xfA.q, m_a.normals[face]) : -Rotate(m_xfB.q, m_b.normals[face]);
+        ProjectShape(ShapeRef<S>{&m_a, nullptr}, m_xfA, axis.direction, axis.minA, axis.maxA);
+        ProjectShape(ShapeRef<S>{&m_b, nullptr}, m_xfB, axis.direction, axis.minB, axis.maxB);
+        const S shift = Dot(axis.direction, m_velocity);
+        axis.sweptMinB = axis.minB + std::min(S(0), shift);
+        axis.sweptMaxB = axis.maxB + std::max(S(0), shift);
+        axis.separation = separation;
+        axis.rate = rate;
+        axis.entry = entry;
+        axis.exit = exit;
+        axis.endsTest = endsTest;
+        const int index = static_cast<int>(m_trace.axes.size());
+        axis.latestEntry = index;
+        axis.earliestExit = index;
+        if (index > 0)
+        {
+            const SweepAxisT<S>& previous = m_trace.axes.back();
+            if (m_trace.axes[previous.latestEntry].entry >= entry)
+            {
+                axis.latestEntry = previous.latestEntry;
+            }
+            if (m_trace.axes[previous.earliestExit].exit <= exit)
+            {
+                axis.earliestExit = previous.earliestExit;
+            }
+        }
+        m_trace.axes.push_back(axis);
+    }
+
+    void Finish(SweepExit exit) { m_trace.exit = exit; }
+
+private:
+    SweepTraceT<S>& m_trace;
+    const PolygonT<S>& m_a;
+    const PolygonT<S>& m_b;
+    TransformT<S> m_xfA;
+    TransformT<S> m_xfB;
+    Vec2T<S> m_velocity;
+};
+
+template <typename S>
+TransformT<S> Moved(const TransformT<S>& xf, Vec2T<S> velocity, S t)
+{
+    return {xf.p + t * velocity, xf.q};
+}
+
+template <typename S>
+S Extent(const PolygonT<S>& polygon)
+{
+    S extent = S(0);
+    for (const Vec2T<S>& v : polygon.vertices)
+    {
+        extent = std::max({extent, std::abs(v.x), std::abs(v.y)});
+    }
+    return extent;
+}
+
+// The static verdict when nothing moves, or the shapes interpenetrate at t = 0.
+template <typename S>
+SweepResultT<S> Initial(const ManifoldT<S>& manifold)
+{
+    SweepResultT<S> result;
+    if (manifold.overlap && manifold.depth > S(0))
+    {
+        result.status = SweepStatus::Overlapping;
+        result.normal = manifold.normal;
+        result.axis = manifold.axis;
+        result.initial = manifold;
+    }
+    return result;
+}
+
+// Separation of each face of `ref` against `inc` at t = 0, face by face: scanned, or walked for large polygons.
+template <typename S>
+class FaceSeparations
+{
+public:
+    FaceSeparations(const PolygonT<S>& ref, const IncidentPolygon<S>& inc) : m_ref(ref), m_inc(inc) {}
+
+    S operator()(int i)
+    {
+        const Vec2T<S> normal = m_ref.normals[i];
+        if (m_inc.scan)
+        {
+            return m_inc.Min(normal) - Dot(normal, m_ref.vertices[i]);
+        }
+        const Vec2T<S> d = InvRotate(m_inc.xf.q, -normal);
+        m_support = i == 0 ? ClimbToSupport(m_inc.polygon, d) : WalkToSupport(m_inc.polygon, d, m_support);
+        return Dot(normal, TransformPoint(m_inc.xf, m_inc.polygon.vertices[m_support]) - m_ref.vertices[i]);
+    }
+
+private:
+    const PolygonT<S>& m_ref;
+    const IncidentPolygon<S>& m_inc;
+    int m_support = 0;
+};
+
+/// Swept SAT for two translating polygons (Ericson 5.5.2).
+/// Outline:
+///   1. B's motion relative to A is v = vB - vA. On the unit normal n of a face of A, the face's separation (as in
+///      the static face query) changes linearly: s(t) = s0 + t Dot(n, v); on a face of B, s(t) = s0 - t Dot(n, v).
+///      These are the face normals of the Minkowski difference, so they are all the axes translation needs.
+///   2. Per axis: if s0 >= 0 and the rate is >= 0 the axis never closes: no hit at any time (early exit). Else the
+///      intervals overlap from entry = max(0, s0 / -rate) to exit = -s0 / rate (rate > 0) or forever.
+///   3. First contact is the latest entry, valid while it is before the earliest exit (strictly: touching at one
+///      instant is not a hit) and not after t = 1. Each bound only tightens, so the test ends as soon as it fails.
+///   4. Every s0 < 0: the shapes interpenetrate at t = 0: the static manifold gives the MTV.
+///   5. A hit: contacts by clipping at the time of impact, the axis of the latest entry as reference face.
+template <typename S, typename Tracer>
+SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const PolygonT<S>& b,
+                              const TransformT<S>& xfB, Vec2T<S> vB, Tracer& tracer)
+{
+    const Vec2T<S> velocity = vB - vA;
+    const IncidentPolygon<S> incB(b, InvMulTransforms(xfA, xfB));
+    const IncidentPolygon<S> incA(a, InvMulTransforms(xfB, xfA));
+    const Vec2T<S> velocityInA = InvRotate(xfA.q, velocity);
+    const Vec2T<S> velocityInB = InvRotate(xfB.q, velocity);
+
+    S first = S(0);
+    S last = kInfinity<S>;
+    AxisRef firstAxis{AxisKind::FaceNormal, 0, 0};
+    bool inside = true;
+    SweepExit exit = SweepExit::AllAxesOverlap;
+    // Takes one axis; false when it ends the test with a miss.
+    auto take = [&](int side, int face, S separation, S rate) {
+        S entry = S(0);
+        S leave = kInfinity<S>;
+        bool ends = false;
+        if (separation >= S(0))
+        {
+            inside = false;
+            if (rate >= S(0))
+            {
+                exit = SweepExit::NeverCloses;
+                ends = true;
+            }
+            else
+            {
+                entry = separation / -rate;
+            }
+        }
+        else if (rate > S(0))
+        {
+            leave = -separation / rate;
+        }
+        if (!ends)
+        {
+            if (entry > first)
+            {
+                first = entry;
+                firstAxis = {AxisKind::FaceNormal, side, face};
+            }
+            last = std::min(last, leave);
+            if (first > S(1))
+            {
+                exit = SweepExit::EntryAfterStep;
+                ends = true;
+            }
+            else if (first >= last)
+            {
+                exit = SweepExit::EntryAfterExit;
+                ends = true;
+            }
+        }
+        if constexpr (Tracer::kEnabled)
+        {
+            tracer.Axis(side, face, separation, rate, entry, leave, ends);
+        }
+        return !ends;
+    };
+
+    bool going = true;
+    FaceSeparations<S> separationA(a, incB);
+    for (int i = 0; going && i < a.Count(); ++i)
+    {
+        going = take(0, i, separationA(i), Dot(a.normals[i], velocityInA));
+    }
+    FaceSeparations<S> separationB(b, incA);
+    for (int j = 0; going && j < b.Count(); ++j)
+    {
+        going = take(1, j, separationB(j), -Dot(b.normals[j], velocityInB));
+    }
+    if constexpr (Tracer::kEnabled)
+    {
+        tracer.Finish(exit);
+    }
+    if (!going)
+    {
+        return {};
+    }
+    if (inside)
+    {
+        return Initial(Collide(a, xfA, b, xfB));
+    }
+
+    SweepResultT<S> result;
+    result.status = SweepStatus::Hit;
+    result.toi = first;
+    result.axis = firstAxis;
+    const bool flip = firstAxis.shape == 1;
+    const PolygonT<S>& ref = flip ? b : a;
+    const TransformT<S> xfRef = flip ? Moved(xfB, vB, first) : Moved(xfA, vA, first);
+    const TransformT<S> xfInc = flip ? Moved(xfA, vA, first) : Moved(xfB, vB, first);
+    const IncidentPolygon<S> inc(flip ? a : b, InvMulTransforms(xfRef, xfInc));
+    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.normals[firstAxis.index]);
+    result.normal = flip ? -worldNormal : worldNormal;
+    // At the time of impact the touching points are at zero distance up to rounding of either sign.
+    const S slop = S(64) * std::numeric_limits<S>::epsilon() * (Extent(a) + Extent(b));
+    const ClipResult<S> clip = ClipIncidentEdge(ref, firstAxis.index, inc, -1, slop);
+    for (int k = 0; k < clip.contactCount; ++k)
+    {
+        result.contacts[k].point = TransformPoint(xfRef, clip.contacts[k].point);
+        result.contacts[k].separation = clip.contacts[k].separation;
+    }
+    result.contactCount = clip.contactCount;
+    return result;
+}
+
+// First time the point p0 + t v enters the disc of radius r around c, if it starts outside and crosses the
+// circle (a tangent path only touches it): the stable root of |p0 + t v - c|^2 = r^2 (Ericson 5.3.2).
+template <typename S>
+S EnterDisc(Vec2T<S> p0, Vec2T<S> v, Vec2T<S> c, S r)
+{
+    const Vec2T<S> f = p0 - c;
+    const S b = Dot(f, v);
+    const S outside = Dot(f, f) - r * r;
+    if (outside < S(0) || b >= S(0))
+    {
+        return kInfinity<S>;
+    }
+    const S discriminant = b * b - Dot(v, v) * outside;
+    if (discriminant <= S(0))
+    {
+        return kInfinity<S>;
+    }
+    return outside / (-b + std::sqrt(discriminant));
+}
+
+/// A circle of radius r, centre p0 moving by v, against a polygon (both in the polygon's frame): the first time
+/// the centre enters the polygon rounded by r (the Minkowski sum of the polygon and the disc). Its boundary is
+/// the faces pushed out by r and arcs of radius r around the vertices, so the first entry is the earliest of: a
+/// crossing of a pushed-out face within the face's extent, or an entry into a vertex's disc. Returns the time
+/// (infinity for none) and the unit normal out of the polygon at the contact.
+template <typename S>
+S CastRounded(const PolygonT<S>& polygon, Vec2T<S> p0, Vec2T<S> v, S r, Vec2T<S>& normal, AxisRef& axis, int side)
+{
+    S best = kInfinity<S>;
+    for (int i = 0; i < polygon.Count(); ++i)
+    {
+        const Vec2T<S> n = polygon.normals[i];
+        const S separation = Dot(n, p0 - polygon.vertices[i]) - r;
+        const S rate = Dot(n, v);
+        if (separation < S(0) || rate >= S(0))
+        {
+            continue;
+        }
+        const S t = separation / -rate;
+        const Vec2T<S> along = p0 + t * v - polygon.vertices[i];
+        const S u = Dot(along, polygon.edges[i]);
+        if (t < best && u >= S(0) && u <= LengthSquared(polygon.edges[i]))
+        {
+            best = t;
+            normal = n;
+            axis = {AxisKind::FaceNormal, side, i};
+        }
+    }
+    for (int k = 0; k < polygon.Count(); ++k)
+    {
+        const S t = EnterDisc(p0, v, polygon.vertices[k], r);
+        if (t < best)
+        {
+            best = t;
+            normal = Normalize(p0 + t * v - polygon.vertices[k]);
+            axis = {AxisKind::VertexToCenter, side, k};
+        }
+    }
+    return best;
+}
+
+} // namespace
+} // namespace detail
+
+template <typename S>
+SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const ShapeT<S>& b,
+                      const TransformT<S>& xfB, Vec2T<S> vB, SweepTraceT<S>* trace)
+{
+    using detail::Initial;
+    if (trace != nullptr)
+    {
+        trace->Clear();
+    }
+    const Vec2T<S> velocity = vB - vA;
+    if (velocity.x == S(0) && velocity.y == S(0))
+    {
+        // Nothing moves relative to the other: the static test decides, and no sweep is run.
+        if (trace != nullptr)
+        {
+            trace->exit = SweepExit::NotMoving;
+        }
+        return Initial(Collide(a, xfA, b, xfB));
+    }
+
+    if (a.type == ShapeType::Polygon && b.type == ShapeType::Polygon)
+    {
+        if (trace == nullptr)
+        {
+            detail::NullSweepTracer tracer;
+            return detail::SweepPolygons(a.polygon, xfA, vA, b.polygon, xfB, vB, tracer);
+        }
+        detail::SweepRecorder<S> tracer(*trace, a.polygon, xfA, b.polygon, xfB, velocity);
+        return detail::SweepPolygons(a.polygon, xfA, vA, b.polygon, xfB, vB, tracer);
+    }
+
+    // Circle pairs: the static test first (interpenetrating at t = 0), then the centre's path against the rounded
+    // outline of the other shape, in that shape's frame.
+    if (trace != nullptr)
+    {
+        trace->exit = SweepExit::RoundedOutline;
+    }
+    const ManifoldT<S> initial = Collide(a, xfA, b, xfB);
+    if (initial.overlap && initial.depth > S(0))
+    {
+        return Initial(initial);
+    }
+    const bool circleA = a.type == ShapeType::Circle;
+    const CircleT<S>& circle = circleA ? a.circle : b.circle;
+    const ShapeT<S>& other = circleA ? b : a;
+    const TransformT<S>& xfCircle = circleA ? xfA : xfB;
+    const TransformT<S>& xfOther = circleA ? xfB : xfA;
+    const Vec2T<S> vCircle = circleA ? vA : vB;
+    const Vec2T<S> vOther = circleA ? vB : vA;
+    const int otherSide = circleA ? 1 : 0;
+
+    // The circle's centre and motion relative to the other shape, in its frame.
+    const Vec2T<S> p0 = InvRotate(xfOther.q, (xfCircle.p - xfOther.p) + Rotate(xfCircle.q, circle.center));
+    const Vec2T<S> v = InvRotate(xfOther.q, vCircle - vOther);
+    Vec2T<S> normal{};
+    AxisRef axis{};
+    S t;
+    if (other.type == ShapeType::Polygon)
+    {
+        t = detail::CastRounded(other.polygon, p0, v, circle.radius, normal, axis, otherSide);
+    }
+    else
+    {
+        t = detail::EnterDisc(p0, v, other.circle.center, circle.radius + other.circle.radius);
+        normal = Normalize(p0 + t * v - other.circle.center);
+        axis = {AxisKind::CenterToCenter, -1, -1};
+    }
+    SweepResultT<S> result;
+    if (!(t <= S(1)))
+    {
+        return result;
+    }
+    result.status = SweepStatus::Hit;
+    result.toi = t;
+    result.axis = axis;
+    // The normal points out of the other shape towards the circle; from A to B it is reversed when A is the circle.
+    const Vec2T<S> worldNormal = Rotate(xfOther.q, normal);
+    result.normal = circleA ? -worldNormal : worldNormal;
+    result.contactCount = 1;
+    result.contacts[0].point =
+        TransformPoint(detail::Moved(xfOther, vOther, t), p0 + t * v - circle.radius * normal);
+    return result;
+}
+
+template SweepResultT<double> Sweep(const ShapeT<double>&, const TransformT<double>&, Vec2T<double>,
+                                    const ShapeT<double>&, const TransformT<double>&, Vec2T<double>,
+                                    SweepTraceT<double>*);
+template SweepResultT<float> Sweep(const ShapeT<float>&, const TransformT<float>&, Vec2T<float>,
+                                   const ShapeT<float>&, const TransformT<float>&, Vec2T<float>, SweepTraceT<float>*);
+
+} // namespace satviz
