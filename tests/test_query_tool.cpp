@@ -2,6 +2,7 @@
 // satviz-query as a program: one JSON line per file, errors on stderr, a non-zero exit, the other files answered.
 
 #include <satviz/collide.h>
+#include <satviz/sweep.h>
 #include <satviz/scene.h>
 
 #include <catch2/catch.hpp>
@@ -123,4 +124,32 @@ TEST_CASE("satviz-query without files explains its usage and fails", "[query]")
     const Run run = Query("");
     CHECK(run.exitCode != 0);
     CHECK(run.err.find("files") != std::string::npos);
+}
+
+TEST_CASE("satviz-query reports times of impact for moving pairs", "[query][sweep]")
+{
+    Write("moving.json", R"({"bodies": [
+        {"name": "wall", "box": [0.001, 20]},
+        {"name": "bullet", "box": [0.01, 0.01], "position": [-500, 0.2], "velocity": [1000, 0]},
+        {"name": "away", "circle": {"radius": 0.1}, "position": [5, 5], "velocity": [1, 1]},
+        {"name": "still", "circle": {"radius": 0.1}, "position": [-5, -5]}]})");
+    const Run run = Query("moving.json");
+    REQUIRE(run.exitCode == 0);
+    const nlohmann::json pairs = nlohmann::json::parse(run.out[0])["pairs"];
+    REQUIRE(pairs.size() == 6);
+    const SceneResult loaded = LoadScene("moving.json");
+    REQUIRE(loaded.Ok());
+    const Body& wall = loaded.scene.bodies[0];
+    const Body& bullet = loaded.scene.bodies[1];
+    const SweepResult expected =
+        Sweep(wall.shape, wall.Xf(), wall.velocity, bullet.shape, bullet.Xf(), bullet.velocity);
+    REQUIRE(expected.status == SweepStatus::Hit);
+    CHECK(pairs[0]["toi"].get<double>() == expected.toi);
+    CHECK(pairs[0]["toi_normal"][0].get<double>() == expected.normal.x);
+    CHECK(pairs[0]["toi_contacts"].size() == static_cast<size_t>(expected.contactCount));
+    // wall-away: moving apart, a miss; wall-still: nothing moves, no sweep fields at all.
+    CHECK(pairs[1]["b"] == "away");
+    CHECK(pairs[1]["toi"].is_null());
+    CHECK(pairs[2]["b"] == "still");
+    CHECK_FALSE(pairs[2].contains("toi"));
 }

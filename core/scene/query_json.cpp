@@ -3,6 +3,7 @@
 // back as the same double.
 
 #include <satviz/query_json.h>
+#include <satviz/sweep.h>
 
 namespace satviz
 {
@@ -141,6 +142,28 @@ Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace)
             const Body& b = scene.bodies[j];
             const Manifold manifold = Collide(a.shape, a.Xf(), b.shape, b.Xf(), withTrace ? &trace : nullptr);
             Json pair = ManifoldJson(a.name, b.name, manifold);
+            // Only pairs where something moves are swept: a still pair has nothing to add.
+            if (a.velocity != Vec2{} || b.velocity != Vec2{})
+            {
+                const SweepResult sweep = Sweep(a.shape, a.Xf(), a.velocity, b.shape, b.Xf(), b.velocity);
+                if (sweep.status == SweepStatus::Miss)
+                {
+                    pair["toi"] = nullptr;
+                }
+                else
+                {
+                    pair["toi"] = sweep.toi;
+                    pair["toi_normal"] = Pair(sweep.normal);
+                    Json contacts = Json::array();
+                    const ContactPoint* points = sweep.status == SweepStatus::Hit ? sweep.contacts : sweep.initial.contacts;
+                    const int count = sweep.status == SweepStatus::Hit ? sweep.contactCount : sweep.initial.contactCount;
+                    for (int k = 0; k < count; ++k)
+                    {
+                        contacts.push_back(Pair(points[k].point));
+                    }
+                    pair["toi_contacts"] = contacts;
+                }
+            }
             if (withTrace)
             {
                 pair["trace"] = TraceJson(trace);

@@ -22,8 +22,9 @@ nlohmann::ordered_json ManifoldJson(const std::string& nameA, const std::string&
 /// A step trace: the axes in test order with their intervals, the contact clipping and why the test ended.
 nlohmann::ordered_json TraceJson(const Trace& trace);
 
-/// Every pair of bodies of a scene, in file order: {"scene": file, "pairs": [...]}. With `withTrace`, each pair
-/// also carries its "trace".
+/// Every pair of bodies of a scene, in file order: {"scene": file, "pairs": [...]}. Pairs where a body moves also
+/// carry "toi" (the time of impact in [0, 1], 0 when overlapping at the start, null for a miss), "toi_normal" and
+/// "toi_contacts". With `withTrace`, each pair also carries its "trace".
 nlohmann::ordered_json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace);
 
 } // namespace satviz
