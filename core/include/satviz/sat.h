@@ -18,6 +18,7 @@
 //   trace.h     Trace: the axes in test order with both projection intervals, then the contact clipping.
 //   sweep.h     Sweep(A, xfA, vA, B, xfB, vB): time of impact of translating shapes, exact at any speed, with
 //               its own trace (entry and exit times per axis).
+//   slide.h     MoveAndSlide: move a shape through a step, stopping at surfaces and sliding along them.
 //
 // CONVENTIONS
 //   y points up; angles are radians, counter-clockwise. Polygon vertices are listed counter-clockwise in the body
@@ -50,5 +51,6 @@
 #include <satviz/math.h>
 #include <satviz/polygon.h>
 #include <satviz/shape.h>
+#include <satviz/slide.h>
 #include <satviz/sweep.h>
 #include <satviz/trace.h>
