@@ -89,17 +89,6 @@ TransformT<S> Moved(const TransformT<S>& xf, Vec2T<S> velocity, S t)
     return {xf.p + t * velocity, xf.q};
 }
 
-template <typename S>
-S Extent(const PolygonT<S>& polygon)
-{
-    S extent = S(0);
-    for (const Vec2T<S>& v : polygon.vertices)
-    {
-        extent = std::max({extent, std::abs(v.x), std::abs(v.y)});
-    }
-    return extent;
-}
-
 // The static verdict when nothing moves, or the shapes interpenetrate at t = 0.
 template <typename S>
 SweepResultT<S> Initial(const ManifoldT<S>& manifold)
@@ -157,7 +146,6 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
 {
     const Vec2T<S> velocity = vB - vA;
     const IncidentPolygon<S> incB(b, InvMulTransforms(xfA, xfB));
-    const IncidentPolygon<S> incA(a, InvMulTransforms(xfB, xfA));
     const Vec2T<S> velocityInA = InvRotate(xfA.q, velocity);
     const Vec2T<S> velocityInB = InvRotate(xfB.q, velocity);
 
@@ -220,10 +208,15 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     {
         going = take(0, i, separationA(i), Dot(a.normals[i], velocityInA));
     }
-    FaceSeparations<S> separationB(b, incA);
-    for (int j = 0; going && j < b.Count(); ++j)
+    if (going)
     {
-        going = take(1, j, separationB(j), -Dot(b.normals[j], velocityInB));
+        // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
+        const IncidentPolygon<S> incA(a, InvMulTransforms(xfB, xfA));
+        FaceSeparations<S> separationB(b, incA);
+        for (int j = 0; going && j < b.Count(); ++j)
+        {
+            going = take(1, j, separationB(j), -Dot(b.normals[j], velocityInB));
+        }
     }
     if constexpr (Tracer::kEnabled)
     {
@@ -249,8 +242,13 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     const IncidentPolygon<S> inc(flip ? a : b, InvMulTransforms(xfRef, xfInc));
     const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.normals[firstAxis.index]);
     result.normal = flip ? -worldNormal : worldNormal;
-    // At the time of impact the touching points are at zero distance up to rounding of either sign.
-    const S slop = S(64) * std::numeric_limits<S>::epsilon() * (Extent(a) + Extent(b));
+    // At the time of impact the touching points are at zero distance up to rounding of either sign, which scales
+    // with the coordinates in the reference frame: the offset between the frames and the face's own size.
+    const Vec2T<S> offset = inc.xf.p;
+    const Vec2T<S> face = ref.vertices[firstAxis.index];
+    const S scale = std::max({std::abs(offset.x), std::abs(offset.y), std::abs(face.x), std::abs(face.y),
+                              Length(ref.edges[firstAxis.index])});
+    const S slop = S(64) * std::numeric_limits<S>::epsilon() * scale;
     const ClipResult<S> clip = ClipIncidentEdge(ref, firstAxis.index, inc, -1, slop);
     for (int k = 0; k < clip.contactCount; ++k)
     {

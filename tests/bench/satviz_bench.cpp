@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 
 #ifdef SATVIZ_HAVE_BOX2D
+#include <box2d/b2_time_of_impact.h>
 #include <box2d/box2d.h>
 #endif
 
@@ -50,12 +51,15 @@ struct BenchPair
 {
     Polygon a, b;
     Transform xfA, xfB;
+    Shape sa, sb;  // the same polygons as shapes, for Sweep
+    Vec2 velocity; // B's displacement over the step; A stands still
     PolygonT<float> fa, fb;
     TransformT<float> fxfA, fxfB;
     bool floatOk = false;
 #ifdef SATVIZ_HAVE_BOX2D
     b2PolygonShape ba, bb;
     b2Transform bxfA, bxfB;
+    b2TOIInput toi;
 #endif
 };
 
@@ -106,13 +110,30 @@ double Box2DDepth(const b2Manifold& manifold, const BenchPair& p)
 }
 #endif
 
-BenchPair MakeBenchPair(const RandomPair& r)
+#ifdef SATVIZ_HAVE_BOX2D
+// The proxies point into the pair's shapes, so they are set for each query, as Box2D's own world does.
+const b2TOIInput& Box2DTOIInput(const BenchPair& p)
+{
+    static b2TOIInput input;
+    input = p.toi;
+    input.proxyA.Set(&p.ba, 0);
+    input.proxyB.Set(&p.bb, 0);
+    return input;
+}
+#endif
+
+BenchPair MakeBenchPair(const RandomPair& r, Rng& rng)
 {
     BenchPair p;
     p.a = r.a.polygon;
     p.b = r.b.polygon;
+    p.sa = r.a;
+    p.sb = r.b;
     p.xfA = r.xfA;
     p.xfB = r.xfB;
+    // B heads roughly towards A and sometimes misses: v = k (cA - cB) + s perp(cA - cB).
+    const Vec2 toward = TransformPoint(p.xfA, p.a.centroid) - TransformPoint(p.xfB, p.b.centroid);
+    p.velocity = rng.Uniform(0.2, 1.5) * toward + rng.Uniform(-0.5, 0.5) * LeftPerp(toward);
     const PolygonResultT<float> fa = ConvertPolygon<float>(p.a);
     const PolygonResultT<float> fb = ConvertPolygon<float>(p.b);
     p.floatOk = fa.Ok() && fb.Ok();
@@ -127,6 +148,13 @@ BenchPair MakeBenchPair(const RandomPair& r)
         p.bb = ToBox2D(p.b);
         p.bxfA = ToBox2D(p.xfA);
         p.bxfB = ToBox2D(p.xfB);
+        // Pure translation sweeps: the centre of mass at the body origin, the angle constant.
+        const float angleA = std::atan2(p.bxfA.q.s, p.bxfA.q.c);
+        const float angleB = std::atan2(p.bxfB.q.s, p.bxfB.q.c);
+        p.toi.sweepA = {b2Vec2(0.0f, 0.0f), p.bxfA.p, p.bxfA.p, angleA, angleA, 0.0f};
+        const b2Vec2 end(p.bxfB.p.x + static_cast<float>(p.velocity.x), p.bxfB.p.y + static_cast<float>(p.velocity.y));
+        p.toi.sweepB = {b2Vec2(0.0f, 0.0f), p.bxfB.p, end, angleB, angleB, 0.0f};
+        p.toi.tMax = 1.0f;
     }
 #endif
     return p;
@@ -139,7 +167,7 @@ std::vector<BenchPair> MakePool(Rng& rng, int n, int count)
     for (int i = 0; i < count; ++i)
     {
         const PairCategory category = static_cast<PairCategory>(rng.Int(0, 2));
-        BenchPair p = MakeBenchPair(ContactPair(rng, n, category));
+        BenchPair p = MakeBenchPair(ContactPair(rng, n, category), rng);
         if (p.floatOk)
         {
             pool.push_back(std::move(p));
@@ -152,7 +180,8 @@ std::vector<BenchPair> MakePool(Rng& rng, int n, int count)
 struct Query
 {
     std::string name;
-    bool box2d = false; // needs n <= 8
+    bool box2d = false;     // needs n <= 8
+    bool sweep = false;     // runs on the pairs that start apart (a time of impact needs a start)
     std::function<double(const BenchPair&)> run;
 };
 
@@ -167,27 +196,36 @@ double Median(std::vector<double> values)
 std::vector<Query> Queries()
 {
     static Trace trace;
-    static TraceT<float> traceFloat;
+    static SweepTrace sweepTrace;
     std::vector<Query> queries = {
-        {"satviz Overlap", false, [](const BenchPair& p) { return Overlap(p.a, p.xfA, p.b, p.xfB) ? 1.0 : 0.0; }},
-        {"satviz Overlap traced", false,
+        {"satviz Overlap", false, false, [](const BenchPair& p) { return Overlap(p.a, p.xfA, p.b, p.xfB) ? 1.0 : 0.0; }},
+        {"satviz Overlap traced", false, false,
          [](const BenchPair& p) { return Overlap(p.a, p.xfA, p.b, p.xfB, &trace) ? 1.0 : 0.0; }},
-        {"satviz Overlap float", false,
+        {"satviz Overlap float", false, false,
          [](const BenchPair& p) { return Overlap(p.fa, p.fxfA, p.fb, p.fxfB) ? 1.0 : 0.0; }},
-        {"satviz Collide", false, [](const BenchPair& p) { return Collide(p.a, p.xfA, p.b, p.xfB).depth; }},
-        {"satviz Collide traced", false,
+        {"satviz Collide", false, false, [](const BenchPair& p) { return Collide(p.a, p.xfA, p.b, p.xfB).depth; }},
+        {"satviz Collide traced", false, false,
          [](const BenchPair& p) { return Collide(p.a, p.xfA, p.b, p.xfB, &trace).depth; }},
-        {"satviz Collide float", false,
+        {"satviz Collide float", false, false,
          [](const BenchPair& p) { return static_cast<double>(Collide(p.fa, p.fxfA, p.fb, p.fxfB).depth); }},
+        {"satviz Sweep", false, true,
+         [](const BenchPair& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity).toi; }},
+        {"satviz Sweep traced", false, true,
+         [](const BenchPair& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity, &sweepTrace).toi; }},
     };
 #ifdef SATVIZ_HAVE_BOX2D
-    queries.push_back({"box2d b2TestOverlap", true, [](const BenchPair& p) {
+    queries.push_back({"box2d b2TestOverlap", true, false, [](const BenchPair& p) {
                            return b2TestOverlap(&p.ba, 0, &p.bb, 0, p.bxfA, p.bxfB) ? 1.0 : 0.0;
                        }});
-    queries.push_back({"box2d b2CollidePolygons", true, [](const BenchPair& p) {
+    queries.push_back({"box2d b2CollidePolygons", true, false, [](const BenchPair& p) {
                            b2Manifold manifold;
                            b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
                            return static_cast<double>(manifold.pointCount);
+                       }});
+    queries.push_back({"box2d b2TimeOfImpact", true, true, [](const BenchPair& p) {
+                           b2TOIOutput output;
+                           b2TimeOfImpact(&output, &Box2DTOIInput(p));
+                           return static_cast<double>(output.t);
                        }});
 #endif
     return queries;
@@ -198,9 +236,19 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
 {
     const int perSlice = n >= 1024 ? std::max(1, s.pairs / 10) : s.pairs;
     std::vector<std::vector<BenchPair>> slices;
+    std::vector<std::vector<const BenchPair*>> all(static_cast<size_t>(s.slices));
+    std::vector<std::vector<const BenchPair*>> apart(static_cast<size_t>(s.slices));
     for (int i = 0; i < s.slices; ++i)
     {
         slices.push_back(MakePool(rng, n, perSlice));
+        for (const BenchPair& p : slices.back())
+        {
+            all[static_cast<size_t>(i)].push_back(&p);
+            if (!Overlap(p.a, p.xfA, p.b, p.xfB))
+            {
+                apart[static_cast<size_t>(i)].push_back(&p);
+            }
+        }
     }
     std::map<std::string, std::vector<double>> rounds;
     int slice = 0;
@@ -213,17 +261,18 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
                 continue;
             }
             auto pass = [&]() {
-                const std::vector<BenchPair>& pool = slices[static_cast<size_t>(slice)];
+                const std::vector<const BenchPair*>& pool = (q.sweep ? apart : all)[static_cast<size_t>(slice)];
                 slice = (slice + 1) % s.slices;
                 double sink = 0.0;
                 const auto start = std::chrono::steady_clock::now();
-                for (const BenchPair& p : pool)
+                for (const BenchPair* p : pool)
                 {
-                    sink += q.run(p);
+                    sink += q.run(*p);
                 }
                 const auto stop = std::chrono::steady_clock::now();
                 g_sink = g_sink + sink;
-                return std::chrono::duration<double, std::nano>(stop - start).count() / static_cast<double>(pool.size());
+                return std::chrono::duration<double, std::nano>(stop - start).count() /
+                       static_cast<double>(std::max<size_t>(1, pool.size()));
             };
             for (int w = 0; w < s.slices; ++w)
             {
@@ -247,6 +296,7 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
 
 struct Accuracy
 {
+    bool sweep = false; // errors are times of impact, not depths
     int pairs = 0;
     int wrong = 0;
     int falsePositives = 0;
@@ -268,6 +318,21 @@ void Record(Accuracy& acc, bool answer, const Reference& ref, double depth, bool
     }
 }
 
+void RecordSweep(Accuracy& acc, bool hit, double t, bool refHit, double refT)
+{
+    acc.sweep = true;
+    acc.pairs += 1;
+    if (hit != refHit)
+    {
+        acc.wrong += 1;
+        (hit ? acc.falsePositives : acc.falseNegatives) += 1;
+    }
+    else if (hit)
+    {
+        acc.depthErrors.push_back(std::abs(t - refT));
+    }
+}
+
 std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::vector<int>& counts, Rng& rng)
 {
     std::map<std::string, Accuracy> acc;
@@ -283,6 +348,19 @@ std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::ve
             Record(acc["satviz Collide"], m.overlap, ref, m.depth, true);
             const ManifoldT<float> mf = Collide(p.fa, p.fxfA, p.fb, p.fxfB);
             Record(acc["satviz Collide float"], mf.overlap, ref, mf.depth, true);
+            // Times of impact against the Minkowski-difference cast (its hull of n * n points limits it to n <= 64).
+            const bool sweepRef = n <= 64 && !Overlap(p.a, p.xfA, p.b, p.xfB);
+            SweepReference sr;
+            bool refHit = false;
+            double refT = 0.0;
+            if (sweepRef)
+            {
+                sr = ReferenceSweep(p.a, p.xfA, p.b, p.xfB, p.velocity);
+                refHit = sr.insideAtStart || (sr.crosses && sr.enter <= 1 && sr.leave > 0);
+                refT = sr.insideAtStart ? 0.0 : std::max(0.0, static_cast<double>(sr.enter));
+                const SweepResult sw = Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity);
+                RecordSweep(acc["satviz Sweep"], sw.status != SweepStatus::Miss, sw.toi, refHit, refT);
+            }
 #ifdef SATVIZ_HAVE_BOX2D
             if (n <= b2_maxPolygonVertices)
             {
@@ -291,6 +369,17 @@ std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::ve
                 b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
                 Record(acc["box2d b2CollidePolygons"], manifold.pointCount > 0, ref,
                        manifold.pointCount > 0 ? Box2DDepth(manifold, p) : 0.0, true);
+                if (sweepRef)
+                {
+                    b2TOIOutput output;
+                    b2TimeOfImpact(&output, &Box2DTOIInput(p));
+                    const bool hit = output.state == b2TOIOutput::e_touching ||
+                                     output.state == b2TOIOutput::e_overlapped ||
+                                     output.state == b2TOIOutput::e_failed;
+                    RecordSweep(acc["box2d b2TimeOfImpact"], hit,
+                                output.state == b2TOIOutput::e_overlapped ? 0.0 : static_cast<double>(output.t),
+                                refHit, refT);
+                }
             }
 #endif
         }
@@ -329,7 +418,8 @@ int main(int argc, char** argv)
 
     std::printf("satviz-bench: ns per query, median of %d rounds x median of %d passes over %d-pair slices\n",
                 s.rounds, s.reps, s.pairs);
-    std::printf("(mix of overlapping, touching within 1e-9 and separated pairs; both polygons have n vertices)\n\n");
+    std::printf("(mix of overlapping, touching within 1e-9 and separated pairs; both polygons have n vertices;\n"
+                " sweeps: the pairs that start apart, B moving roughly towards A, sometimes missing)\n\n");
     std::printf("%-26s", "query");
     for (int n : s.counts)
     {
@@ -379,12 +469,14 @@ int main(int argc, char** argv)
     std::printf("\n");
     ratioRow("Overlap traced / Overlap", "satviz Overlap traced", "satviz Overlap");
     ratioRow("Collide traced / Collide", "satviz Collide traced", "satviz Collide");
+    ratioRow("Sweep traced / Sweep", "satviz Sweep traced", "satviz Sweep");
     ratioRow("Overlap float / Overlap double", "satviz Overlap float", "satviz Overlap");
     ratioRow("Collide float / Collide double", "satviz Collide float", "satviz Collide");
     ratioRow("Overlap / Collide", "satviz Overlap", "satviz Collide");
 #ifdef SATVIZ_HAVE_BOX2D
     ratioRow("satviz Overlap / box2d b2TestOverlap", "satviz Overlap", "box2d b2TestOverlap");
     ratioRow("satviz Collide / box2d b2CollidePolygons", "satviz Collide", "box2d b2CollidePolygons");
+    ratioRow("satviz Sweep / box2d b2TimeOfImpact", "satviz Sweep", "box2d b2TimeOfImpact");
 #endif
 
     std::printf("\nscaling with the vertex count (time / time at n=8)\n");
@@ -401,7 +493,9 @@ int main(int argc, char** argv)
 
     const std::map<std::string, Accuracy> acc = MeasureAccuracy(s, s.counts, rng);
     std::printf("\naccuracy against the __float128 reference (all vertex counts; box2d: n <= 8)\n");
-    std::printf("%-26s %7s %14s %12s %12s\n", "query", "pairs", "wrong (fp,fn)", "depth med", "depth max");
+    std::printf("(errors: |depth error| for the static queries, |t error| for the sweeps, on pairs both call a hit;\n"
+                " box2d b2TimeOfImpact stops 0.005 short of contact by design, so its t is early)\n");
+    std::printf("%-26s %7s %14s %12s %12s\n", "query", "pairs", "wrong (fp,fn)", "error med", "error max");
     for (const auto& [name, a] : acc)
     {
         std::string wrong = std::to_string(a.wrong) + " (" + std::to_string(a.falsePositives) + "," +
@@ -427,6 +521,7 @@ int main(int argc, char** argv)
         target("satviz Overlap / box2d b2TestOverlap", ns[8]["satviz Overlap"] / ns[8]["box2d b2TestOverlap"], 0.25);
         target("satviz Collide / box2d b2CollidePolygons",
                ns[8]["satviz Collide"] / ns[8]["box2d b2CollidePolygons"], 0.6);
+        target("satviz Sweep / box2d b2TimeOfImpact", ns[8]["satviz Sweep"] / ns[8]["box2d b2TimeOfImpact"], 0.25);
     }
 #else
     std::printf("  (built without Box2D: no peer ratios)\n");
@@ -435,6 +530,11 @@ int main(int argc, char** argv)
     {
         const auto& e = acc.at("satviz Collide").depthErrors;
         target("satviz Collide depth error, max (double)", *std::max_element(e.begin(), e.end()), 1e-14);
+    }
+    if (acc.count("satviz Sweep") && !acc.at("satviz Sweep").depthErrors.empty())
+    {
+        const auto& e = acc.at("satviz Sweep").depthErrors;
+        target("satviz Sweep |t error|, max (double)", *std::max_element(e.begin(), e.end()), 1e-12);
     }
     return 0;
 }
