@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // MoveAndSlide: stops at surfaces, slides along them, never sinks and never sticks.
 
+#include "support/builders.h"
+
 #include <satviz/sat.h>
 
 #include <catch2/catch.hpp>
@@ -8,22 +10,11 @@
 #include <cmath>
 
 using namespace satviz;
+using namespace satviz::testing;
 using Catch::Matchers::WithinAbs;
 
 namespace
 {
-
-Shape Box(double hx, double hy)
-{
-    PolygonResult result = MakeBox(hx, hy);
-    REQUIRE(result.Ok());
-    return MakeShape(result.polygon);
-}
-
-Transform At(double x, double y, double angle = 0.0)
-{
-    return MakeTransform(Vec2{x, y}, angle);
-}
 
 // Signed distance between the shapes along their manifold: > 0 apart, <= 0 touching or overlapping.
 double Distance(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB)
@@ -36,8 +27,8 @@ double Distance(const Shape& a, const Transform& xfA, const Shape& b, const Tran
 
 TEST_CASE("Sliding along a floor for many steps neither sinks nor sticks", "[slide]")
 {
-    const Shape floor = Box(1e4, 1.0);
-    const Shape mover = Box(0.5, 0.25);
+    const Shape floor = BoxShape(1e4, 1.0);
+    const Shape mover = BoxShape(0.5, 0.25);
     const Obstacle obstacles[] = {{&floor, At(0.0, -1.0)}};
     Transform xf = At(0.0, 0.25 + 1e-3);
     const double skin = DefaultSkin(mover, xf);
@@ -61,8 +52,8 @@ TEST_CASE("Sliding along a floor for many steps neither sinks nor sticks", "[sli
 
 TEST_CASE("A wall stops the mover just short of it, even at huge speed", "[slide]")
 {
-    const Shape wall = Box(5e-4, 10.0);
-    const Shape mover = Box(0.05, 0.05);
+    const Shape wall = BoxShape(5e-4, 10.0);
+    const Shape mover = BoxShape(0.05, 0.05);
     const Obstacle obstacles[] = {{&wall, At(0.0, 0.0)}};
     for (double speed : {1.0, 1e3, 1e6})
     {
@@ -84,9 +75,9 @@ TEST_CASE("A wall stops the mover just short of it, even at huge speed", "[slide
 
 TEST_CASE("Into a corner: both surfaces stop the mover", "[slide]")
 {
-    const Shape floor = Box(10.0, 1.0);
-    const Shape wall = Box(1.0, 10.0);
-    const Shape mover = Box(0.25, 0.25);
+    const Shape floor = BoxShape(10.0, 1.0);
+    const Shape wall = BoxShape(1.0, 10.0);
+    const Shape mover = BoxShape(0.25, 0.25);
     const Obstacle obstacles[] = {{&floor, At(0.0, -1.0)}, {&wall, At(3.0, 0.0)}};
     const SlideResult r = MoveAndSlide(mover, At(0.0, 1.0), Vec2{5.0, -5.0}, obstacles, 2);
     CHECK(r.contactCount == 2);
@@ -99,8 +90,8 @@ TEST_CASE("Into a corner: both surfaces stop the mover", "[slide]")
 TEST_CASE("On a slope, a push straight down slides along it", "[slide]")
 {
     const double angle = 0.5;
-    const Shape ramp = Box(10.0, 1.0);
-    const Shape mover = Box(0.2, 0.2);
+    const Shape ramp = BoxShape(10.0, 1.0);
+    const Shape mover = BoxShape(0.2, 0.2);
     const Obstacle obstacles[] = {{&ramp, At(0.0, 0.0, angle)}};
     // Resting on the ramp's top face, turned like the ramp.
     const Vec2 up{-std::sin(angle), std::cos(angle)};
@@ -116,8 +107,8 @@ TEST_CASE("On a slope, a push straight down slides along it", "[slide]")
 
 TEST_CASE("A mover that starts inside is pushed out first", "[slide]")
 {
-    const Shape floor = Box(10.0, 1.0);
-    const Shape mover = Box(0.5, 0.5);
+    const Shape floor = BoxShape(10.0, 1.0);
+    const Shape mover = BoxShape(0.5, 0.5);
     const Obstacle obstacles[] = {{&floor, At(0.0, -1.0)}};
     const SlideResult r = MoveAndSlide(mover, At(0.0, 0.3), Vec2{}, obstacles, 1);
     CHECK(r.contactCount == 1);

@@ -4,6 +4,8 @@
 #include "support/random_shapes.h"
 #include "support/reference.h"
 
+#include "support/builders.h"
+
 #include <satviz/sat.h>
 
 #include <catch2/catch.hpp>
@@ -17,25 +19,6 @@ using Catch::Matchers::WithinAbs;
 namespace
 {
 
-Shape Box(double hx, double hy)
-{
-    PolygonResult result = MakeBox(hx, hy);
-    REQUIRE(result.Ok());
-    return MakeShape(result.polygon);
-}
-
-Shape Disc(double radius)
-{
-    Circle circle;
-    circle.radius = radius;
-    return MakeShape(circle);
-}
-
-Transform At(double x, double y, double angle = 0.0)
-{
-    return MakeTransform(Vec2{x, y}, angle);
-}
-
 const Vec2 kStill{0.0, 0.0};
 
 } // namespace
@@ -44,8 +27,8 @@ TEST_CASE("A projectile never tunnels through a thin wall, at any speed and angl
 {
     // The wall is 1e-3 thick and 20 tall; the projectile a 0.01 box. Each shot is aimed to reach the wall at a
     // random time in the step; the analytic time comes from the leading face's distance over the closing speed.
-    const Shape wall = Box(5e-4, 10.0);
-    const Shape bullet = Box(0.005, 0.005);
+    const Shape wall = BoxShape(5e-4, 10.0);
+    const Shape bullet = BoxShape(0.005, 0.005);
     Rng rng(31);
     int shots = 0;
     for (double speed = 1.0; speed <= 1e6; speed *= 10.0)
@@ -77,8 +60,8 @@ TEST_CASE("A projectile never tunnels through a thin wall, at any speed and angl
 
 TEST_CASE("A fast circle hits a thin wall at the analytic time", "[sweep][circle]")
 {
-    const Shape wall = Box(5e-4, 10.0);
-    const Shape ball = Disc(0.005);
+    const Shape wall = BoxShape(5e-4, 10.0);
+    const Shape ball = DiscShape(0.005);
     for (double speed : {1.0, 1e3, 1e6})
     {
         const Vec2 v{speed, 0.0};
@@ -92,8 +75,8 @@ TEST_CASE("A fast circle hits a thin wall at the analytic time", "[sweep][circle
 
 TEST_CASE("Grazing a corner and sliding along a face are not hits", "[sweep]")
 {
-    const Shape a = Box(1.0, 1.0);
-    const Shape b = Box(0.5, 0.5);
+    const Shape a = BoxShape(1.0, 1.0);
+    const Shape b = BoxShape(0.5, 0.5);
     // B's lower right corner passes exactly through A's upper left corner (-1, 1), moving up and right.
     const SweepResult graze = Sweep(a, At(0, 0), kStill, b, At(-2.5, 0.5), Vec2{2.0, 2.0});
     CHECK(graze.status == SweepStatus::Miss);
@@ -111,14 +94,14 @@ TEST_CASE("Grazing a corner and sliding along a face are not hits", "[sweep]")
     CHECK(in.toi == 0.0);
     CHECK(Sweep(a, At(0, 0), kStill, b, At(0.0, 1.5), Vec2{0.0, 1.0}).status == SweepStatus::Miss);
     // A ball grazing the rounded corner of a box along a tangent.
-    const SweepResult tangent = Sweep(a, At(0, 0), kStill, Disc(0.5), At(-3.0, 1.5), Vec2{6.0, 0.0});
+    const SweepResult tangent = Sweep(a, At(0, 0), kStill, DiscShape(0.5), At(-3.0, 1.5), Vec2{6.0, 0.0});
     CHECK(tangent.status == SweepStatus::Miss);
 }
 
 TEST_CASE("Without motion the static test decides; overlapping shapes report their MTV", "[sweep]")
 {
-    const Shape a = Box(1.0, 1.0);
-    const Shape b = Box(0.5, 0.5);
+    const Shape a = BoxShape(1.0, 1.0);
+    const Shape b = BoxShape(0.5, 0.5);
     SweepTrace trace;
     const SweepResult still = Sweep(a, At(0, 0), Vec2{1.0, 1.0}, b, At(1.3, 0.2), Vec2{1.0, 1.0}, &trace);
     CHECK(still.status == SweepStatus::Overlapping);
@@ -136,7 +119,7 @@ TEST_CASE("Without motion the static test decides; overlapping shapes report the
 TEST_CASE("Circle sweeps against circles and rounded corners", "[sweep][circle]")
 {
     // Two discs closing head on: radii 1 and 0.5, centres 4 apart, closing at 5 per step: contact at t = 0.5.
-    const SweepResult head = Sweep(Disc(1.0), At(0, 0), Vec2{2.0, 0.0}, Disc(0.5), At(4.0, 0.0), Vec2{-3.0, 0.0});
+    const SweepResult head = Sweep(DiscShape(1.0), At(0, 0), Vec2{2.0, 0.0}, DiscShape(0.5), At(4.0, 0.0), Vec2{-3.0, 0.0});
     REQUIRE(head.status == SweepStatus::Hit);
     CHECK_THAT(head.toi, WithinAbs(0.5, 1e-15));
     CHECK(head.normal == Vec2{1.0, 0.0});
@@ -144,24 +127,24 @@ TEST_CASE("Circle sweeps against circles and rounded corners", "[sweep][circle]"
 
     // A disc of radius 0.5 moving left at height 1.3 meets the box's rounded corner at (1, 1): its centre is then
     // 0.5 from the corner, at x = 1 + sqrt(0.25 - 0.09) = 1.4.
-    const Shape box = Box(1.0, 1.0);
-    const SweepResult corner = Sweep(box, At(0, 0), kStill, Disc(0.5), At(3.0, 1.3), Vec2{-4.0, 0.0});
+    const Shape box = BoxShape(1.0, 1.0);
+    const SweepResult corner = Sweep(box, At(0, 0), kStill, DiscShape(0.5), At(3.0, 1.3), Vec2{-4.0, 0.0});
     REQUIRE(corner.status == SweepStatus::Hit);
     CHECK_THAT(corner.toi, WithinAbs((3.0 - 1.4) / 4.0, 1e-15));
     CHECK(corner.axis.kind == AxisKind::VertexToCenter);
     CHECK_THAT(corner.normal.x, WithinAbs(0.8, 1e-15));
     CHECK_THAT(corner.normal.y, WithinAbs(0.6, 1e-15));
     // The same with the disc as A: the normal points from the disc to the box.
-    const SweepResult swapped = Sweep(Disc(0.5), At(3.0, 1.3), Vec2{-4.0, 0.0}, box, At(0, 0), kStill);
+    const SweepResult swapped = Sweep(DiscShape(0.5), At(3.0, 1.3), Vec2{-4.0, 0.0}, box, At(0, 0), kStill);
     REQUIRE(swapped.status == SweepStatus::Hit);
     CHECK(swapped.toi == corner.toi);
     CHECK(swapped.normal == -corner.normal);
     // Passing the corner diagonally 0.55 from it: a miss, though the face planes pushed out by the radius (a
     // sharp corner at (1.5, 1.5)) would call it a hit.
     const double d = 0.55 / std::sqrt(2.0);
-    const SweepResult past = Sweep(box, At(0, 0), kStill, Disc(0.5), At(2.0 + d, d), Vec2{-2.0, 2.0});
+    const SweepResult past = Sweep(box, At(0, 0), kStill, DiscShape(0.5), At(2.0 + d, d), Vec2{-2.0, 2.0});
     CHECK(past.status == SweepStatus::Miss);
-    const SweepResult closer = Sweep(box, At(0, 0), kStill, Disc(0.5), At(1.9 + d, d - 0.1), Vec2{-2.0, 2.0});
+    const SweepResult closer = Sweep(box, At(0, 0), kStill, DiscShape(0.5), At(1.9 + d, d - 0.1), Vec2{-2.0, 2.0});
     CHECK(closer.status == SweepStatus::Hit);
 }
 
