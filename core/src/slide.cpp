@@ -80,8 +80,9 @@ SlideResultT<S> MoveAndSlide(const ShapeT<S>& mover, const TransformT<S>& xf, Ve
             break;
         }
         // Stop `gap` short of the surface along its normal: the closing speed along it is Dot(remaining, normal).
+        // A hit implies closing > 0; should rounding say otherwise, stay put rather than step through.
         const S closing = Dot(remaining, normal);
-        const S stop = std::max(S(0), first - gap / closing);
+        const S stop = closing > S(0) ? std::max(S(0), first - gap / closing) : S(0);
         result.xf.p = result.xf.p + stop * remaining;
         Vec2T<S> rest = (S(1) - stop) * remaining;
         const S into = Dot(rest, normal);
