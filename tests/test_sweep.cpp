@@ -229,3 +229,28 @@ TEST_CASE("Traced and untraced sweeps are bit-identical; the trace follows the e
         }
     }
 }
+
+TEST_CASE("Circle sweeps are traced axis by axis", "[sweep][circle][trace]")
+{
+    const Shape box = BoxShape(1.0, 1.0);
+    SweepTrace trace;
+    const SweepResult corner = Sweep(box, At(0, 0), kStill, DiscShape(0.5), At(3.0, 1.3), Vec2{-4.0, 0.0}, &trace);
+    REQUIRE(corner.status == SweepStatus::Hit);
+    CHECK(trace.exit == SweepExit::RoundedOutline);
+    // The four faces of the box, then the corner's vertex axis that decided.
+    REQUIRE(trace.axes.size() == 5);
+    CHECK(trace.axes[4].axis.kind == AxisKind::VertexToCenter);
+    CHECK(trace.axes[4].direction == corner.normal);
+    // The right face's interval entry is earlier than the hit: the sharp corner is met before the rounded one.
+    const SweepAxis& right = trace.axes[1];
+    CHECK(right.direction == Vec2{1.0, 0.0});
+    CHECK_THAT(right.entry, WithinAbs((3.0 - 1.5) / 4.0, 1e-15));
+    CHECK(right.entry < corner.toi);
+
+    const SweepResult discs =
+        Sweep(DiscShape(1.0), At(0, 0), kStill, DiscShape(0.5), At(4.0, 0.0), Vec2{-5.0, 0.0}, &trace);
+    REQUIRE(discs.status == SweepStatus::Hit);
+    REQUIRE(trace.axes.size() == 1);
+    CHECK(trace.axes[0].axis.kind == AxisKind::CenterToCenter);
+    CHECK_THAT(trace.axes[0].entry, WithinAbs(discs.toi, 1e-15));
+}

@@ -25,27 +25,58 @@ struct NullSweepTracer
     static constexpr bool kEnabled = false;
 };
 
-// Records the axes of a polygon sweep. Everything here is for the trace only.
+// Entry and exit times of one axis whose separation is `separation` at t = 0 and changes by `rate` per unit of
+// t; false when the axis never closes (it separates or only touches, and does not approach).
+template <typename S>
+bool AxisTimes(S separation, S rate, S& entry, S& exit)
+{
+    entry = S(0);
+    exit = kInfinity<S>;
+    if (separation >= S(0))
+    {
+        if (rate >= S(0))
+        {
+            return false;
+        }
+        entry = separation / -rate;
+    }
+    else if (rate > S(0))
+    {
+        exit = -separation / rate;
+    }
+    return true;
+}
+
+// Records the axes of a sweep. Everything here is for the trace only.
 template <typename S>
 class SweepRecorder
 {
 public:
     static constexpr bool kEnabled = true;
 
-    SweepRecorder(SweepTraceT<S>& trace, const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b,
+    SweepRecorder(SweepTraceT<S>& trace, ShapeRef<S> a, const TransformT<S>& xfA, ShapeRef<S> b,
                   const TransformT<S>& xfB, Vec2T<S> relativeVelocity)
         : m_trace(trace), m_a(a), m_b(b), m_xfA(xfA), m_xfB(xfB), m_velocity(relativeVelocity)
     {
         m_trace.Clear();
     }
 
+    // A face axis of a polygon sweep, with the algorithm's own numbers.
     void Axis(int side, int face, S separation, S rate, S entry, S exit, bool endsTest)
     {
+        const Vec2T<S> direction =
+            side == 0 ? Rotate(m_xfA.q, m_a.polygon->normals[face]) : -Rotate(m_xfB.q, m_b.polygon->normals[face]);
+        AxisWorld({AxisKind::FaceNormal, side, face}, direction, separation, rate, entry, exit, endsTest);
+    }
+
+    // An axis given in world space, oriented from A towards B.
+    void AxisWorld(AxisRef ref, Vec2T<S> direction, S separation, S rate, S entry, S exit, bool endsTest)
+    {
         SweepAxisT<S> axis;
-        axis.axis = {AxisKind::FaceNormal, side, face};
-        axis.direction = side == 0 ? Rotate(m_xfA.q, m_a.normals[face]) : -Rotate(m_xfB.q, m_b.normals[face]);
-        ProjectShape(ShapeRef<S>{&m_a, nullptr}, m_xfA, axis.direction, axis.minA, axis.maxA);
-        ProjectShape(ShapeRef<S>{&m_b, nullptr}, m_xfB, axis.direction, axis.minB, axis.maxB);
+        axis.axis = ref;
+        axis.direction = direction;
+        ProjectShape(m_a, m_xfA, axis.direction, axis.minA, axis.maxA);
+        ProjectShape(m_b, m_xfB, axis.direction, axis.minB, axis.maxB);
         const S shift = Dot(axis.direction, m_velocity);
         axis.sweptMinB = axis.minB + std::min(S(0), shift);
         axis.sweptMaxB = axis.maxB + std::max(S(0), shift);
@@ -72,12 +103,25 @@ public:
         m_trace.axes.push_back(axis);
     }
 
+    // An axis computed here from the shapes at t = 0: the projection gap and how it changes.
+    void AxisFromShapes(AxisRef ref, Vec2T<S> direction)
+    {
+        S minA, maxA, minB, maxB;
+        ProjectShape(m_a, m_xfA, direction, minA, maxA);
+        ProjectShape(m_b, m_xfB, direction, minB, maxB);
+        const S separation = minB - maxA;
+        const S rate = Dot(direction, m_velocity);
+        S entry, exit;
+        const bool closes = AxisTimes(separation, rate, entry, exit);
+        AxisWorld(ref, direction, separation, rate, entry, exit, !closes);
+    }
+
     void Finish(SweepExit exit) { m_trace.exit = exit; }
 
 private:
     SweepTraceT<S>& m_trace;
-    const PolygonT<S>& m_a;
-    const PolygonT<S>& m_b;
+    ShapeRef<S> m_a;
+    ShapeRef<S> m_b;
     TransformT<S> m_xfA;
     TransformT<S> m_xfB;
     Vec2T<S> m_velocity;
@@ -156,25 +200,17 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     SweepExit exit = SweepExit::AllAxesOverlap;
     // Takes one axis; false when it ends the test with a miss.
     auto take = [&](int side, int face, S separation, S rate) {
-        S entry = S(0);
-        S leave = kInfinity<S>;
+        S entry;
+        S leave;
         bool ends = false;
         if (separation >= S(0))
         {
             inside = false;
-            if (rate >= S(0))
-            {
-                exit = SweepExit::NeverCloses;
-                ends = true;
-            }
-            else
-            {
-                entry = separation / -rate;
-            }
         }
-        else if (rate > S(0))
+        if (!AxisTimes(separation, rate, entry, leave))
         {
-            leave = -separation / rate;
+            exit = SweepExit::NeverCloses;
+            ends = true;
         }
         if (!ends)
         {
@@ -350,19 +386,19 @@ SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
             detail::NullSweepTracer tracer;
             return detail::SweepPolygons(a.polygon, xfA, vA, b.polygon, xfB, vB, tracer);
         }
-        detail::SweepRecorder<S> tracer(*trace, a.polygon, xfA, b.polygon, xfB, velocity);
+        detail::SweepRecorder<S> tracer(*trace, {&a.polygon, nullptr}, xfA, {&b.polygon, nullptr}, xfB, velocity);
         return detail::SweepPolygons(a.polygon, xfA, vA, b.polygon, xfB, vB, tracer);
     }
 
     // Circle pairs: the static test first (interpenetrating at t = 0), then the centre's path against the rounded
     // outline of the other shape, in that shape's frame.
-    if (trace != nullptr)
-    {
-        trace->exit = SweepExit::RoundedOutline;
-    }
     const ManifoldT<S> initial = Collide(a, xfA, b, xfB);
     if (initial.overlap && initial.depth > S(0))
     {
+        if (trace != nullptr)
+        {
+            trace->exit = SweepExit::AllAxesOverlap;
+        }
         return Initial(initial);
     }
     const bool circleA = a.type == ShapeType::Circle;
@@ -389,6 +425,35 @@ SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
         t = detail::EnterDisc(p0, v, other.circle.center, circle.radius + other.circle.radius);
         normal = Normalize(p0 + t * v - other.circle.center);
         axis = {AxisKind::CenterToCenter, -1, -1};
+    }
+    if (trace != nullptr)
+    {
+        // The axes of the rounded outline: the polygon's face normals (or the line of centres), oriented from A to
+        // B, then the vertex axis that decided a hit on a rounded corner. The decision itself is the cast.
+        auto ref = [](const ShapeT<S>& shape) {
+            return shape.type == ShapeType::Polygon ? detail::ShapeRef<S>{&shape.polygon, nullptr}
+                                                    : detail::ShapeRef<S>{nullptr, &shape.circle};
+        };
+        detail::SweepRecorder<S> tracer(*trace, ref(a), xfA, ref(b), xfB, velocity);
+        const S orient = circleA ? S(-1) : S(1);
+        if (other.type == ShapeType::Polygon)
+        {
+            for (int i = 0; i < other.polygon.Count(); ++i)
+            {
+                tracer.AxisFromShapes({AxisKind::FaceNormal, otherSide, i},
+                                      orient * Rotate(xfOther.q, other.polygon.normals[i]));
+            }
+        }
+        else
+        {
+            const Vec2T<S> centers = TransformPoint(xfB, b.circle.center) - TransformPoint(xfA, a.circle.center);
+            tracer.AxisFromShapes({AxisKind::CenterToCenter, -1, -1}, Normalize(centers));
+        }
+        if (axis.kind == AxisKind::VertexToCenter && t <= S(1))
+        {
+            tracer.AxisFromShapes(axis, orient * Rotate(xfOther.q, normal));
+        }
+        tracer.Finish(SweepExit::RoundedOutline);
     }
     SweepResultT<S> result;
     if (!(t <= S(1)))

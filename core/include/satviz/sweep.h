@@ -22,7 +22,7 @@ enum class SweepStatus
 template <typename S>
 struct SweepAxisT
 {
-    AxisRef axis{};       ///< where the axis comes from (a face normal of A or B)
+    AxisRef axis{};       ///< where the axis comes from: a face normal, a vertex axis or the line of centres
     Vec2T<S> direction{}; ///< unit axis, world space, oriented from A towards B (an axis of B: B's normal negated)
     S minA{}, maxA{};     ///< A's projection interval on the axis at t = 0
     S minB{}, maxB{};     ///< B's projection interval at t = 0
@@ -46,7 +46,10 @@ enum class SweepExit
     EntryAfterStep, ///< the latest entry is after t = 1
     EntryAfterExit, ///< the latest entry is not before the earliest exit: the intervals never overlap together
     AllAxesOverlap, ///< every axis overlaps in a common time span: a hit (or overlapping at t = 0)
-    RoundedOutline, ///< circle pairs: decided by casting the centre's path against the rounded outline
+    /// Circle pairs: decided by casting the centre's path against the rounded outline of the other shape (its
+    /// faces pushed out by the radius, and arcs around its vertices). The face axes recorded show the intervals;
+    /// their entry can be earlier than the hit, which a rounded corner delays.
+    RoundedOutline,
 };
 
 /// Step trace of a sweep: the axes in test order with their intervals and times, and why it ended.
@@ -89,7 +92,8 @@ using SweepResult = SweepResultT<double>;
 /// A hit means the shapes interpenetrate right after first contact: touching at one instant (grazing a corner) or
 /// sliding along a face at zero distance is a miss. Shapes that interpenetrate at t = 0 are reported as
 /// Overlapping, with the static manifold. Without relative motion, the static test decides.
-/// With a non-null `trace` (polygon pairs), every axis is recorded; the result is bit-identical either way.
+/// With a non-null `trace`, every axis is recorded (circle pairs: the polygon's faces or the line of centres, then
+/// the vertex axis of a hit on a rounded corner); the result is bit-identical either way.
 template <typename S>
 SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const ShapeT<S>& b,
                       const TransformT<S>& xfB, Vec2T<S> vB, SweepTraceT<S>* trace = nullptr);
