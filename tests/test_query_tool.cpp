@@ -119,6 +119,25 @@ TEST_CASE("satviz-query: bad files get one error line each, the others are answe
     CHECK(run.err.find("satviz-query: bad_polygon.json: bodies[0].polygon:") != std::string::npos);
 }
 
+TEST_CASE("satviz-query survives junk bytes and invalid UTF-8", "[query]")
+{
+    std::string junk;
+    for (int i = 0; i < 4096; ++i)
+    {
+        junk += static_cast<char>((i * 73 + 11) & 0xff);
+    }
+    Write("junk.json", junk);
+    Write("bad_utf8.json", "{\"bodies\": [{\"polygon\": [[0,0],[1,0],[0,1]], \"name\": \"\xff\xfe\"}]}");
+    Write("bad_utf8_name.json", "{\"bodies\": [{\"box\": [1, 1], \"name\": \"a\"}], \"x\xff\": 1}");
+    const Run run = Query("junk.json bad_utf8.json bad_utf8_name.json");
+    CHECK(run.exitCode == 1);
+    REQUIRE(run.out.size() == 3);
+    for (const std::string& line : run.out)
+    {
+        CHECK(nlohmann::json::parse(line).contains("error"));
+    }
+}
+
 TEST_CASE("satviz-query without files explains its usage and fails", "[query]")
 {
     const Run run = Query("");

@@ -8,6 +8,9 @@
 
 #include <iostream>
 
+// Names and messages quote the input, which may hold bytes that are not UTF-8: print them replaced, never throw.
+constexpr auto kReplace = nlohmann::ordered_json::error_handler_t::replace;
+
 int main(int argc, char** argv)
 {
     CLI::App app{"Collide every pair of bodies of each scene file; print one JSON line per file."};
@@ -24,11 +27,12 @@ int main(int argc, char** argv)
         if (!loaded.Ok())
         {
             std::cerr << "satviz-query: " << loaded.error << "\n";
-            std::cout << nlohmann::ordered_json{{"scene", file}, {"error", loaded.error}}.dump() << "\n";
+            std::cout << nlohmann::ordered_json{{"scene", file}, {"error", loaded.error}}.dump(-1, ' ', false, kReplace)
+                      << "\n";
             ++failures;
             continue;
         }
-        std::cout << satviz::QuerySceneJson(loaded.scene, file, withTrace).dump() << "\n";
+        std::cout << satviz::QuerySceneJson(loaded.scene, file, withTrace).dump(-1, ' ', false, kReplace) << "\n";
     }
     std::cout.flush();
     return failures == 0 ? 0 : 1;
