@@ -293,6 +293,9 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
                         S floor, Tracer& tracer)
 {
     FaceQuery<S> query;
+    // The best face so far starts as the first one tested, so that it is a valid index even when no comparison
+    // holds (NaN input).
+    query.face = start;
     const int n = ref.Count();
     const uint64_t skip = second && inc.scan ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
                                              : uint64_t(0);
