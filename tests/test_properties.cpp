@@ -105,8 +105,8 @@ TEST_CASE("Overlap and Collide agree with the reference on random pairs", "[prop
             const double normalError = Length(m.normal - Vec2{ref.normalX, ref.normalY});
             if (normalError > 1e-9)
             {
-                Reference alternative = ReferenceCollide(pair.a, pair.xfA, pair.b,
-                                                         Moved(pair.xfB, (m.depth + 1e-9 * scale) * m.normal));
+                Reference alternative =
+                    ReferenceCollide(pair.a, pair.xfA, pair.b, Moved(pair.xfB, (m.depth + 1e-9 * scale) * m.normal));
                 REQUIRE(alternative.separation > 0);
             }
             else
@@ -142,8 +142,7 @@ TEST_CASE("The minimum translation vector is minimal and sufficient", "[properti
         // ... and by (depth - e) does not (no shorter push along this normal exists).
         if (m.depth > e)
         {
-            const Reference in =
-                ReferenceCollide(pair.a, pair.xfA, pair.b, Moved(pair.xfB, (m.depth - e) * m.normal));
+            const Reference in = ReferenceCollide(pair.a, pair.xfA, pair.b, Moved(pair.xfB, (m.depth - e) * m.normal));
             REQUIRE(in.overlap);
         }
         ++checked;
@@ -238,8 +237,8 @@ TEST_CASE("Collide(B, A) mirrors Collide(A, B)", "[properties]")
             // The normal may be another axis of equal depth; otherwise it is exactly reversed.
             if (Length(ab.normal + ba.normal) > 1e-9)
             {
-                const Reference r = ReferenceCollide(pair.a, pair.xfA, pair.b,
-                                                     Moved(pair.xfB, (ab.depth + 1e-9) * -ba.normal));
+                const Reference r =
+                    ReferenceCollide(pair.a, pair.xfA, pair.b, Moved(pair.xfB, (ab.depth + 1e-9) * -ba.normal));
                 REQUIRE(!r.overlap);
             }
         }

@@ -2,8 +2,8 @@
 // satviz-query as a program: one JSON line per file, errors on stderr, a non-zero exit, the other files answered.
 
 #include <satviz/collide.h>
-#include <satviz/sweep.h>
 #include <satviz/scene.h>
+#include <satviz/sweep.h>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -38,8 +38,7 @@ std::vector<std::string> Lines(const std::string& path)
 
 Run Query(const std::string& arguments)
 {
-    const std::string command =
-        std::string(SATVIZ_QUERY_EXE) + " " + arguments + " > query.out 2> query.err";
+    const std::string command = std::string(SATVIZ_QUERY_EXE) + " " + arguments + " > query.out 2> query.err";
     const int status = std::system(command.c_str());
     Run run;
     run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -105,8 +104,7 @@ TEST_CASE("satviz-query: bad files get one error line each, the others are answe
     REQUIRE(run.out.size() == 4);
     CHECK(nlohmann::json::parse(run.out[0]).contains("error"));
     CHECK(nlohmann::json::parse(run.out[1])["pairs"].size() == 1);
-    CHECK(nlohmann::json::parse(run.out[2])["error"] ==
-          "missing.json: cannot open: No such file or directory");
+    CHECK(nlohmann::json::parse(run.out[2])["error"] == "missing.json: cannot open: No such file or directory");
     CHECK(nlohmann::json::parse(run.out[3])["error"] ==
           "bad_polygon.json: bodies[0].polygon: polygon is not convex at vertex 3 (use a convex decomposition)");
     // Exactly one line on stderr per bad file.

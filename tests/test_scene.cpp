@@ -54,8 +54,8 @@ TEST_CASE("Errors name the file, the JSON path and what is wrong", "[scene]")
           "s.json: bodies[1].polygon[2]: expected a pair of numbers [x, y], got a string");
     CHECK(ErrorOf(R"({"bodies": [{"polygon": [[0,0],[1,0],[0,1]], "positon": [0, 0]}]})") ==
           "s.json: bodies[0].positon: unknown field \"positon\" (did you mean \"position\"?)");
-    CHECK(ErrorOf(R"({"bodies": [{"polygon": [[0,0],[1,0],[0,1]], "colour": "red"}]})").find(
-              "unknown field \"colour\" (known fields: name, polygon") != std::string::npos);
+    CHECK(ErrorOf(R"({"bodies": [{"polygon": [[0,0],[1,0],[0,1]], "colour": "red"}]})")
+              .find("unknown field \"colour\" (known fields: name, polygon") != std::string::npos);
     CHECK(ErrorOf(R"({"bodies": [{"polygon": [[0,0],[0,1],[1,0]]}]})") ==
           "s.json: bodies[0].polygon: polygon winds clockwise (list the vertices counter-clockwise, y up)");
     CHECK(ErrorOf(R"({"bodies": [{"circle": {"radius": -1}}]})") ==

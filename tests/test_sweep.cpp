@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The swept test: no tunnelling at any speed, exact times of impact, grazing and sliding are not hits.
 
+#include "support/builders.h"
 #include "support/random_shapes.h"
 #include "support/reference.h"
-
-#include "support/builders.h"
 
 #include <satviz/sat.h>
 
@@ -119,7 +118,8 @@ TEST_CASE("Without motion the static test decides; overlapping shapes report the
 TEST_CASE("Circle sweeps against circles and rounded corners", "[sweep][circle]")
 {
     // Two discs closing head on: radii 1 and 0.5, centres 4 apart, closing at 5 per step: contact at t = 0.5.
-    const SweepResult head = Sweep(DiscShape(1.0), At(0, 0), Vec2{2.0, 0.0}, DiscShape(0.5), At(4.0, 0.0), Vec2{-3.0, 0.0});
+    const SweepResult head =
+        Sweep(DiscShape(1.0), At(0, 0), Vec2{2.0, 0.0}, DiscShape(0.5), At(4.0, 0.0), Vec2{-3.0, 0.0});
     REQUIRE(head.status == SweepStatus::Hit);
     CHECK_THAT(head.toi, WithinAbs(0.5, 1e-15));
     CHECK(head.normal == Vec2{1.0, 0.0});

@@ -155,8 +155,10 @@ Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace)
                     pair["toi"] = sweep.toi;
                     pair["toi_normal"] = Pair(sweep.normal);
                     Json contacts = Json::array();
-                    const ContactPoint* points = sweep.status == SweepStatus::Hit ? sweep.contacts : sweep.initial.contacts;
-                    const int count = sweep.status == SweepStatus::Hit ? sweep.contactCount : sweep.initial.contactCount;
+                    const ContactPoint* points =
+                        sweep.status == SweepStatus::Hit ? sweep.contacts : sweep.initial.contacts;
+                    const int count =
+                        sweep.status == SweepStatus::Hit ? sweep.contactCount : sweep.initial.contactCount;
                     for (int k = 0; k < count; ++k)
                     {
                         contacts.push_back(Pair(points[k].point));

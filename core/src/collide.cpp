@@ -140,26 +140,25 @@ ManifoldT<S> Collide(const ShapeT<S>& a, const TransformT<S>& xfA, const ShapeT<
     return DispatchShapes(a, b, [&](const auto& sa, const auto& sb) { return Collide(sa, xfA, sb, xfB, trace); });
 }
 
-#define SATVIZ_INSTANTIATE(S)                                                                                        \
-    template bool Overlap(const PolygonT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&,        \
-                          TraceT<S>*);                                                                               \
-    template bool Overlap(const PolygonT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,         \
-                          TraceT<S>*);                                                                               \
-    template bool Overlap(const CircleT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&,         \
-                          TraceT<S>*);                                                                               \
-    template bool Overlap(const CircleT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,          \
-                          TraceT<S>*);                                                                               \
-    template bool Overlap(const ShapeT<S>&, const TransformT<S>&, const ShapeT<S>&, const TransformT<S>&,            \
-                          TraceT<S>*);                                                                               \
-    template ManifoldT<S> Collide(const PolygonT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&, \
-                                  TraceT<S>*);                                                                       \
-    template ManifoldT<S> Collide(const PolygonT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,  \
-                                  TraceT<S>*);                                                                       \
-    template ManifoldT<S> Collide(const CircleT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&,  \
-                                  TraceT<S>*);                                                                       \
-    template ManifoldT<S> Collide(const CircleT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,   \
-                                  TraceT<S>*);                                                                       \
-    template ManifoldT<S> Collide(const ShapeT<S>&, const TransformT<S>&, const ShapeT<S>&, const TransformT<S>&,     \
+#define SATVIZ_INSTANTIATE(S)                                                                                          \
+    template bool Overlap(const PolygonT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&,          \
+                          TraceT<S>*);                                                                                 \
+    template bool Overlap(const PolygonT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,           \
+                          TraceT<S>*);                                                                                 \
+    template bool Overlap(const CircleT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&,           \
+                          TraceT<S>*);                                                                                 \
+    template bool Overlap(const CircleT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,            \
+                          TraceT<S>*);                                                                                 \
+    template bool Overlap(const ShapeT<S>&, const TransformT<S>&, const ShapeT<S>&, const TransformT<S>&, TraceT<S>*); \
+    template ManifoldT<S> Collide(const PolygonT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&,  \
+                                  TraceT<S>*);                                                                         \
+    template ManifoldT<S> Collide(const PolygonT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,   \
+                                  TraceT<S>*);                                                                         \
+    template ManifoldT<S> Collide(const CircleT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&,   \
+                                  TraceT<S>*);                                                                         \
+    template ManifoldT<S> Collide(const CircleT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,    \
+                                  TraceT<S>*);                                                                         \
+    template ManifoldT<S> Collide(const ShapeT<S>&, const TransformT<S>&, const ShapeT<S>&, const TransformT<S>&,      \
                                   TraceT<S>*);
 
 SATVIZ_INSTANTIATE(double)

@@ -297,8 +297,8 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
     // holds (NaN input).
     query.face = start;
     const int n = ref.Count();
-    const uint64_t skip = second && inc.scan ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
-                                             : uint64_t(0);
+    const uint64_t skip =
+        second && inc.scan ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{})) : uint64_t(0);
     int support = 0;
     int i = start;
     for (int k = 0; k < n; ++k, i = Next(i, n))
@@ -430,9 +430,9 @@ struct ClipResult
     int incidentEdge = -1;          ///< the incident edge
     Vec2T<S> w1{}, w2{};            ///< incident edge, reference frame
     Vec2T<S> clip1[2]{};            ///< after the side plane through the face's first vertex
-    int count1 = 0;
+    int count1 = 0;                 ///< points in clip1
     Vec2T<S> clip2[2]{};            ///< then after the side plane through its second vertex
-    int count2 = 0;
+    int count2 = 0;                 ///< points in clip2
     S separations[2]{};             ///< of the clip2 points to the reference face
     bool kept[2]{};                 ///< clip2 points kept as contacts
     bool fallback = false;          ///< no point kept: the deepest incident vertex was used
@@ -546,7 +546,8 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
     const IncidentPolygon<S> incB(b, bInA);
     const int startA = StartFace(a, incB);
-    const FaceQuery<S> queryA = QueryFaces<true>(a, incB, startA, 0, false, -std::numeric_limits<S>::infinity(), tracer);
+    const FaceQuery<S> queryA =
+        QueryFaces<true>(a, incB, startA, 0, false, -std::numeric_limits<S>::infinity(), tracer);
     if (queryA.separated)
     {
         manifold.gap = queryA.separation;

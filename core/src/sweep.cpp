@@ -51,7 +51,7 @@ bool AxisTimes(S separation, S rate, S& entry, S& exit)
 template <typename S>
 class SweepRecorder
 {
-public:
+  public:
     static constexpr bool kEnabled = true;
 
     SweepRecorder(SweepTraceT<S>& trace, ShapeRef<S> a, const TransformT<S>& xfA, ShapeRef<S> b,
@@ -118,7 +118,7 @@ public:
 
     void Finish(SweepExit exit) { m_trace.exit = exit; }
 
-private:
+  private:
     SweepTraceT<S>& m_trace;
     ShapeRef<S> m_a;
     ShapeRef<S> m_b;
@@ -152,7 +152,7 @@ SweepResultT<S> Initial(const ManifoldT<S>& manifold)
 template <typename S>
 class FaceSeparations
 {
-public:
+  public:
     FaceSeparations(const PolygonT<S>& ref, const IncidentPolygon<S>& inc) : m_ref(ref), m_inc(inc) {}
 
     S operator()(int i)
@@ -167,7 +167,7 @@ public:
         return Dot(normal, TransformPoint(m_inc.xf, m_inc.polygon.vertices[m_support]) - m_ref.vertices[i]);
     }
 
-private:
+  private:
     const PolygonT<S>& m_ref;
     const IncidentPolygon<S>& m_inc;
     int m_support = 0;
@@ -467,15 +467,14 @@ SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
     const Vec2T<S> worldNormal = Rotate(xfOther.q, normal);
     result.normal = circleA ? -worldNormal : worldNormal;
     result.contactCount = 1;
-    result.contacts[0].point =
-        TransformPoint(detail::Moved(xfOther, vOther, t), p0 + t * v - circle.radius * normal);
+    result.contacts[0].point = TransformPoint(detail::Moved(xfOther, vOther, t), p0 + t * v - circle.radius * normal);
     return result;
 }
 
 template SweepResultT<double> Sweep(const ShapeT<double>&, const TransformT<double>&, Vec2T<double>,
                                     const ShapeT<double>&, const TransformT<double>&, Vec2T<double>,
                                     SweepTraceT<double>*);
-template SweepResultT<float> Sweep(const ShapeT<float>&, const TransformT<float>&, Vec2T<float>,
-                                   const ShapeT<float>&, const TransformT<float>&, Vec2T<float>, SweepTraceT<float>*);
+template SweepResultT<float> Sweep(const ShapeT<float>&, const TransformT<float>&, Vec2T<float>, const ShapeT<float>&,
+                                   const TransformT<float>&, Vec2T<float>, SweepTraceT<float>*);
 
 } // namespace satviz

@@ -54,7 +54,7 @@ void ProjectShape(ShapeRef<S> shape, const TransformT<S>& xf, Vec2T<S> direction
 template <typename S>
 class TraceRecorder
 {
-public:
+  public:
     static constexpr bool kEnabled = true;
 
     TraceRecorder(TraceT<S>& trace, ShapeRef<S> a, const TransformT<S>& xfA, ShapeRef<S> b, const TransformT<S>& xfB)
@@ -89,8 +89,8 @@ public:
         const PolygonT<S>& ref = side == 0 ? *m_a.polygon : *m_b.polygon;
         const PolygonT<S>& inc = side == 0 ? *m_b.polygon : *m_a.polygon;
         const Vec2T<S> worldNormal = Rotate(own.q, normal);
-        const S separation = Dot(worldNormal, TransformPoint(other, inc.vertices[support]) -
-                                                  TransformPoint(own, ref.vertices[face]));
+        const S separation =
+            Dot(worldNormal, TransformPoint(other, inc.vertices[support]) - TransformPoint(own, ref.vertices[face]));
         FaceAxis(side, face, normal, separation, support, false);
         m_trace.axes.back().pruned = true;
         m_trace.axes.back().bound = bound / Length(normal);
@@ -163,7 +163,7 @@ public:
         m_trace.result = result;
     }
 
-private:
+  private:
     void Push(AxisTestT<S>& test)
     {
         ProjectShape(m_a, m_xfA, test.direction, test.minA, test.maxA);

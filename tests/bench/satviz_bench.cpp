@@ -180,8 +180,8 @@ std::vector<BenchPair> MakePool(Rng& rng, int n, int count)
 struct Query
 {
     std::string name;
-    bool box2d = false;     // needs n <= 8
-    bool sweep = false;     // runs on the pairs that start apart (a time of impact needs a start)
+    bool box2d = false; // needs n <= 8
+    bool sweep = false; // runs on the pairs that start apart (a time of impact needs a start)
     std::function<double(const BenchPair&)> run;
 };
 
@@ -198,7 +198,8 @@ std::vector<Query> Queries()
     static Trace trace;
     static SweepTrace sweepTrace;
     std::vector<Query> queries = {
-        {"satviz Overlap", false, false, [](const BenchPair& p) { return Overlap(p.a, p.xfA, p.b, p.xfB) ? 1.0 : 0.0; }},
+        {"satviz Overlap", false, false,
+         [](const BenchPair& p) { return Overlap(p.a, p.xfA, p.b, p.xfB) ? 1.0 : 0.0; }},
         {"satviz Overlap traced", false, false,
          [](const BenchPair& p) { return Overlap(p.a, p.xfA, p.b, p.xfB, &trace) ? 1.0 : 0.0; }},
         {"satviz Overlap float", false, false,
@@ -338,7 +339,8 @@ std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::ve
     std::map<std::string, Accuracy> acc;
     for (int n : counts)
     {
-        const int count = n >= 1024 ? std::max(1, s.accuracyPairs / 300) : (n >= 64 ? s.accuracyPairs / 10 : s.accuracyPairs);
+        const int count =
+            n >= 1024 ? std::max(1, s.accuracyPairs / 300) : (n >= 64 ? s.accuracyPairs / 10 : s.accuracyPairs);
         for (const BenchPair& p : MakePool(rng, n, count))
         {
             const Reference ref = ReferenceCollide(MakeShape(p.a), p.xfA, MakeShape(p.b), p.xfB);
@@ -374,11 +376,10 @@ std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::ve
                     b2TOIOutput output;
                     b2TimeOfImpact(&output, &Box2DTOIInput(p));
                     const bool hit = output.state == b2TOIOutput::e_touching ||
-                                     output.state == b2TOIOutput::e_overlapped ||
-                                     output.state == b2TOIOutput::e_failed;
+                                     output.state == b2TOIOutput::e_overlapped || output.state == b2TOIOutput::e_failed;
                     RecordSweep(acc["box2d b2TimeOfImpact"], hit,
-                                output.state == b2TOIOutput::e_overlapped ? 0.0 : static_cast<double>(output.t),
-                                refHit, refT);
+                                output.state == b2TOIOutput::e_overlapped ? 0.0 : static_cast<double>(output.t), refHit,
+                                refT);
                 }
             }
 #endif
@@ -416,8 +417,8 @@ int main(int argc, char** argv)
         ns[n] = Time(s, n, queries, rng);
     }
 
-    std::printf("satviz-bench: ns per query, median of %d rounds x median of %d passes over %d-pair slices\n",
-                s.rounds, s.reps, s.pairs);
+    std::printf("satviz-bench: ns per query, median of %d rounds x median of %d passes over %d-pair slices\n", s.rounds,
+                s.reps, s.pairs);
     std::printf("(mix of overlapping, touching within 1e-9 and separated pairs; both polygons have n vertices;\n"
                 " sweeps: the pairs that start apart, B moving roughly towards A, sometimes missing)\n\n");
     std::printf("%-26s", "query");
@@ -519,8 +520,8 @@ int main(int argc, char** argv)
     if (ns.count(8) && ns[8].count("box2d b2TestOverlap"))
     {
         target("satviz Overlap / box2d b2TestOverlap", ns[8]["satviz Overlap"] / ns[8]["box2d b2TestOverlap"], 0.25);
-        target("satviz Collide / box2d b2CollidePolygons",
-               ns[8]["satviz Collide"] / ns[8]["box2d b2CollidePolygons"], 0.6);
+        target("satviz Collide / box2d b2CollidePolygons", ns[8]["satviz Collide"] / ns[8]["box2d b2CollidePolygons"],
+               0.6);
         target("satviz Sweep / box2d b2TimeOfImpact", ns[8]["satviz Sweep"] / ns[8]["box2d b2TimeOfImpact"], 0.25);
     }
 #else

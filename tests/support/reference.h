@@ -11,9 +11,8 @@
 
 #include <satviz/sat.h>
 
-#include <quadmath.h>
-
 #include <algorithm>
+#include <quadmath.h>
 #include <vector>
 
 namespace satviz::testing
@@ -83,9 +82,7 @@ inline bool SegmentsIntersect(QVec p1, QVec p2, QVec q1, QVec q2)
     {
         return true;
     }
-    auto onSegment = [](QVec a, QVec b, QVec p) {
-        return QCross(b - a, p - a) == 0 && QDot(p - a, p - b) <= 0;
-    };
+    auto onSegment = [](QVec a, QVec b, QVec p) { return QCross(b - a, p - a) == 0 && QDot(p - a, p - b) <= 0; };
     return (d1 == 0 && onSegment(q1, q2, p1)) || (d2 == 0 && onSegment(q1, q2, p2)) ||
            (d3 == 0 && onSegment(p1, p2, q1)) || (d4 == 0 && onSegment(p1, p2, q2));
 }

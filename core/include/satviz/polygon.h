@@ -34,7 +34,7 @@ struct Vec2Span
 template <typename S>
 class PolygonT
 {
-public:
+  public:
     Vec2Span<S> vertices; ///< vertices in the body frame, counter-clockwise, strictly convex
     Vec2Span<S> edges;    ///< edges[i] = vertices[i + 1] - vertices[i]
     Vec2Span<S> normals;  ///< unit outward normal of edge i: RightPerp(edges[i]) / |edges[i]|
@@ -82,7 +82,7 @@ public:
         return polygon;
     }
 
-private:
+  private:
     void Bind()
     {
         const int n = static_cast<int>(m_storage.size() / 3);
@@ -120,9 +120,9 @@ constexpr double kMaxCoordinate = 1e12;
 template <typename S>
 struct PolygonResultT
 {
-    PolygonT<S> polygon;                    ///< the polygon; empty when error != None
+    PolygonT<S> polygon;                     ///< the polygon; empty when error != None
     PolygonError error = PolygonError::None; ///< what is wrong, if anything
-    int vertex = -1;                        ///< input index of the offending vertex, or -1
+    int vertex = -1;                         ///< input index of the offending vertex, or -1
     /// True when the polygon was built.
     bool Ok() const { return error == PolygonError::None; }
 };

@@ -22,17 +22,17 @@ enum class SweepStatus
 template <typename S>
 struct SweepAxisT
 {
-    AxisRef axis{};       ///< where the axis comes from: a face normal, a vertex axis or the line of centres
-    Vec2T<S> direction{}; ///< unit axis, world space, oriented from A towards B (an axis of B: B's normal negated)
-    S minA{}, maxA{};     ///< A's projection interval on the axis at t = 0
-    S minB{}, maxB{};     ///< B's projection interval at t = 0
-    S sweptMinB{};        ///< B's interval swept over the step, relative to A: [sweptMinB, sweptMaxB]
-    S sweptMaxB{};        ///< (the union of B's interval at t = 0 and at t = 1, moved by the relative velocity)
-    S separation{};       ///< the gap (> 0) or minus the overlap on this axis at t = 0
-    S rate{};             ///< change of the separation per unit of t (< 0: closing)
-    S entry{};            ///< time the intervals start to overlap (0 if they already do)
-    S exit{};             ///< time they stop overlapping (infinity if never)
-    int latestEntry = -1; ///< index of the axis with the latest entry so far, this one included
+    AxisRef axis{};        ///< where the axis comes from: a face normal, a vertex axis or the line of centres
+    Vec2T<S> direction{};  ///< unit axis, world space, oriented from A towards B (an axis of B: B's normal negated)
+    S minA{}, maxA{};      ///< A's projection interval on the axis at t = 0
+    S minB{}, maxB{};      ///< B's projection interval at t = 0
+    S sweptMinB{};         ///< B's interval swept over the step, relative to A: [sweptMinB, sweptMaxB]
+    S sweptMaxB{};         ///< (the union of B's interval at t = 0 and at t = 1, moved by the relative velocity)
+    S separation{};        ///< the gap (> 0) or minus the overlap on this axis at t = 0
+    S rate{};              ///< change of the separation per unit of t (< 0: closing)
+    S entry{};             ///< time the intervals start to overlap (0 if they already do)
+    S exit{};              ///< time they stop overlapping (infinity if never)
+    int latestEntry = -1;  ///< index of the axis with the latest entry so far, this one included
     int earliestExit = -1; ///< index of the axis with the earliest exit so far
     bool endsTest = false; ///< this axis ended the test: it never closes, or it proved a miss
 };
@@ -56,7 +56,7 @@ enum class SweepExit
 template <typename S>
 struct SweepTraceT
 {
-    std::vector<SweepAxisT<S>> axes; ///< axes in test order
+    std::vector<SweepAxisT<S>> axes;  ///< axes in test order
     SweepExit exit = SweepExit::None; ///< why the test ended
     /// Empties the trace for reuse.
     void Clear() { *this = SweepTraceT<S>(); }

@@ -13,10 +13,10 @@ namespace satviz
 template <typename S>
 struct AxisTestT
 {
-    AxisRef axis{};        ///< where the axis comes from
-    Vec2T<S> direction{};  ///< unit axis in world space (a face's outward normal, or vertex/centre to centre)
-    S minA{}, maxA{};      ///< projection interval of shape A on `direction`
-    S minB{}, maxB{};      ///< projection interval of shape B on `direction`
+    AxisRef axis{};       ///< where the axis comes from
+    Vec2T<S> direction{}; ///< unit axis in world space (a face's outward normal, or vertex/centre to centre)
+    S minA{}, maxA{};     ///< projection interval of shape A on `direction`
+    S minB{}, maxB{};     ///< projection interval of shape B on `direction`
     /// The separation the algorithm computed on this axis, scaled to unit length: > 0 is a gap that separates,
     /// <= 0 an overlap of -separation. An axis of B (a face of B, or B's vertex towards circle A) points from B
     /// towards A and its separation is minA - maxB; every other axis points from A towards B, with minB - maxA.
@@ -31,8 +31,8 @@ struct AxisTestT
     /// upper bound of the separation and showed that this face could neither separate the shapes nor beat the best
     /// face so far. `separation` and the intervals are computed for the view only.
     bool pruned = false;
-    S bound{}; ///< with pruned: the centroid's separation, an upper bound of `separation`
-    int best = -1;        ///< index in TraceT::axes of the axis with the largest separation so far, this one included
+    S bound{};     ///< with pruned: the centroid's separation, an upper bound of `separation`
+    int best = -1; ///< index in TraceT::axes of the axis with the largest separation so far, this one included
 };
 
 /// Double-precision axis test.
@@ -43,21 +43,21 @@ using AxisTest = AxisTestT<double>;
 template <typename S>
 struct ClipTraceT
 {
-    AxisRef reference{};          ///< the reference face (the deciding axis)
-    Vec2T<S> referenceV1{};       ///< first vertex of the reference face
-    Vec2T<S> referenceV2{};       ///< second vertex of the reference face
-    Vec2T<S> referenceNormal{};   ///< outward normal of the reference face
-    int incidentShape = -1;       ///< 0 (A) or 1 (B): the shape that owns the incident edge
-    int incidentEdge = -1;        ///< index of the incident edge: the edge most anti-parallel to the reference face
-    Vec2T<S> incidentV1{};        ///< first vertex of the incident edge
-    Vec2T<S> incidentV2{};        ///< second vertex of the incident edge
-    Vec2T<S> sideClip1[2]{};      ///< incident edge clipped by the side plane through referenceV1
-    int sideClip1Count = 0;       ///< number of points in sideClip1
-    Vec2T<S> sideClip2[2]{};      ///< then clipped by the side plane through referenceV2
-    int sideClip2Count = 0;       ///< number of points in sideClip2
-    S clippedSeparation[2]{};     ///< signed distance of each sideClip2 point to the reference face
-    bool kept[2]{};               ///< whether each sideClip2 point was kept (below the reference face)
-    bool usedFallback = false;    ///< no clipped point was kept, the deepest incident vertex was used instead
+    AxisRef reference{};        ///< the reference face (the deciding axis)
+    Vec2T<S> referenceV1{};     ///< first vertex of the reference face
+    Vec2T<S> referenceV2{};     ///< second vertex of the reference face
+    Vec2T<S> referenceNormal{}; ///< outward normal of the reference face
+    int incidentShape = -1;     ///< 0 (A) or 1 (B): the shape that owns the incident edge
+    int incidentEdge = -1;      ///< index of the incident edge: the edge most anti-parallel to the reference face
+    Vec2T<S> incidentV1{};      ///< first vertex of the incident edge
+    Vec2T<S> incidentV2{};      ///< second vertex of the incident edge
+    Vec2T<S> sideClip1[2]{};    ///< incident edge clipped by the side plane through referenceV1
+    int sideClip1Count = 0;     ///< number of points in sideClip1
+    Vec2T<S> sideClip2[2]{};    ///< then clipped by the side plane through referenceV2
+    int sideClip2Count = 0;     ///< number of points in sideClip2
+    S clippedSeparation[2]{};   ///< signed distance of each sideClip2 point to the reference face
+    bool kept[2]{};             ///< whether each sideClip2 point was kept (below the reference face)
+    bool usedFallback = false;  ///< no clipped point was kept, the deepest incident vertex was used instead
 };
 
 /// Double-precision clip trace.
@@ -76,11 +76,11 @@ enum class TraceExit
 template <typename S>
 struct TraceT
 {
-    std::vector<AxisTestT<S>> axes; ///< axes in test order, skipped duplicates included
-    bool hasClip = false;           ///< clip is filled (overlapping polygon pairs)
-    ClipTraceT<S> clip{};           ///< contact clipping
+    std::vector<AxisTestT<S>> axes;   ///< axes in test order, skipped duplicates included
+    bool hasClip = false;             ///< clip is filled (overlapping polygon pairs)
+    ClipTraceT<S> clip{};             ///< contact clipping
     TraceExit exit = TraceExit::None; ///< why the test ended
-    ManifoldT<S> result{};          ///< the query's result (for Overlap: only `overlap` is set)
+    ManifoldT<S> result{};            ///< the query's result (for Overlap: only `overlap` is set)
     /// Empties the trace for reuse.
     void Clear() { *this = TraceT<S>(); }
 };

@@ -26,7 +26,7 @@ struct Body
 /// A scene: bodies in the world.
 struct Scene
 {
-    std::string description; ///< optional free text
+    std::string description;  ///< optional free text
     std::vector<Body> bodies; ///< the bodies, in file order
 };
 
