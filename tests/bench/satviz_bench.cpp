@@ -49,9 +49,8 @@ struct Settings
 // A pair in every representation a query needs, built before timing.
 struct BenchPair
 {
-    Polygon a, b;
     Transform xfA, xfB;
-    Shape sa, sb;  // the same polygons as shapes, for Sweep
+    Shape sa, sb;  // the polygons, as shapes (Sweep takes shapes; Overlap and Collide use sa.polygon, sb.polygon)
     Vec2 velocity; // B's displacement over the step; A stands still
     PolygonT<float> fa, fb;
     TransformT<float> fxfA, fxfB;
@@ -59,7 +58,6 @@ struct BenchPair
 #ifdef SATVIZ_HAVE_BOX2D
     b2PolygonShape ba, bb;
     b2Transform bxfA, bxfB;
-    b2TOIInput toi;
 #endif
 };
 
@@ -111,13 +109,19 @@ double Box2DDepth(const b2Manifold& manifold, const BenchPair& p)
 #endif
 
 #ifdef SATVIZ_HAVE_BOX2D
-// The proxies point into the pair's shapes, so they are set for each query, as Box2D's own world does.
+// A pure translation sweep, built per query as Box2D's own world does (its proxies point into the shapes): the
+// centre of mass at the body origin, the angle constant, B moving by the pair's velocity.
 const b2TOIInput& Box2DTOIInput(const BenchPair& p)
 {
     static b2TOIInput input;
-    input = p.toi;
     input.proxyA.Set(&p.ba, 0);
     input.proxyB.Set(&p.bb, 0);
+    const float angleA = std::atan2(p.bxfA.q.s, p.bxfA.q.c);
+    const float angleB = std::atan2(p.bxfB.q.s, p.bxfB.q.c);
+    input.sweepA = {b2Vec2(0.0f, 0.0f), p.bxfA.p, p.bxfA.p, angleA, angleA, 0.0f};
+    const b2Vec2 end(p.bxfB.p.x + static_cast<float>(p.velocity.x), p.bxfB.p.y + static_cast<float>(p.velocity.y));
+    input.sweepB = {b2Vec2(0.0f, 0.0f), p.bxfB.p, end, angleB, angleB, 0.0f};
+    input.tMax = 1.0f;
     return input;
 }
 #endif
@@ -125,36 +129,27 @@ const b2TOIInput& Box2DTOIInput(const BenchPair& p)
 BenchPair MakeBenchPair(const RandomPair& r, Rng& rng)
 {
     BenchPair p;
-    p.a = r.a.polygon;
-    p.b = r.b.polygon;
     p.sa = r.a;
     p.sb = r.b;
     p.xfA = r.xfA;
     p.xfB = r.xfB;
     // B heads roughly towards A and sometimes misses: v = k (cA - cB) + s perp(cA - cB).
-    const Vec2 toward = TransformPoint(p.xfA, p.a.centroid) - TransformPoint(p.xfB, p.b.centroid);
+    const Vec2 toward = TransformPoint(p.xfA, p.sa.polygon.centroid) - TransformPoint(p.xfB, p.sb.polygon.centroid);
     p.velocity = rng.Uniform(0.2, 1.5) * toward + rng.Uniform(-0.5, 0.5) * LeftPerp(toward);
-    const PolygonResultT<float> fa = ConvertPolygon<float>(p.a);
-    const PolygonResultT<float> fb = ConvertPolygon<float>(p.b);
+    const PolygonResultT<float> fa = ConvertPolygon<float>(p.sa.polygon);
+    const PolygonResultT<float> fb = ConvertPolygon<float>(p.sb.polygon);
     p.floatOk = fa.Ok() && fb.Ok();
     p.fa = fa.polygon;
     p.fb = fb.polygon;
     p.fxfA = ToFloat(p.xfA);
     p.fxfB = ToFloat(p.xfB);
 #ifdef SATVIZ_HAVE_BOX2D
-    if (p.a.Count() <= b2_maxPolygonVertices)
+    if (p.sa.polygon.Count() <= b2_maxPolygonVertices)
     {
-        p.ba = ToBox2D(p.a);
-        p.bb = ToBox2D(p.b);
+        p.ba = ToBox2D(p.sa.polygon);
+        p.bb = ToBox2D(p.sb.polygon);
         p.bxfA = ToBox2D(p.xfA);
         p.bxfB = ToBox2D(p.xfB);
-        // Pure translation sweeps: the centre of mass at the body origin, the angle constant.
-        const float angleA = std::atan2(p.bxfA.q.s, p.bxfA.q.c);
-        const float angleB = std::atan2(p.bxfB.q.s, p.bxfB.q.c);
-        p.toi.sweepA = {b2Vec2(0.0f, 0.0f), p.bxfA.p, p.bxfA.p, angleA, angleA, 0.0f};
-        const b2Vec2 end(p.bxfB.p.x + static_cast<float>(p.velocity.x), p.bxfB.p.y + static_cast<float>(p.velocity.y));
-        p.toi.sweepB = {b2Vec2(0.0f, 0.0f), p.bxfB.p, end, angleB, angleB, 0.0f};
-        p.toi.tMax = 1.0f;
     }
 #endif
     return p;
@@ -199,14 +194,14 @@ std::vector<Query> Queries()
     static SweepTrace sweepTrace;
     std::vector<Query> queries = {
         {"satviz Overlap", false, false,
-         [](const BenchPair& p) { return Overlap(p.a, p.xfA, p.b, p.xfB) ? 1.0 : 0.0; }},
+         [](const BenchPair& p) { return Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB) ? 1.0 : 0.0; }},
         {"satviz Overlap traced", false, false,
-         [](const BenchPair& p) { return Overlap(p.a, p.xfA, p.b, p.xfB, &trace) ? 1.0 : 0.0; }},
+         [](const BenchPair& p) { return Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace) ? 1.0 : 0.0; }},
         {"satviz Overlap float", false, false,
          [](const BenchPair& p) { return Overlap(p.fa, p.fxfA, p.fb, p.fxfB) ? 1.0 : 0.0; }},
-        {"satviz Collide", false, false, [](const BenchPair& p) { return Collide(p.a, p.xfA, p.b, p.xfB).depth; }},
+        {"satviz Collide", false, false, [](const BenchPair& p) { return Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB).depth; }},
         {"satviz Collide traced", false, false,
-         [](const BenchPair& p) { return Collide(p.a, p.xfA, p.b, p.xfB, &trace).depth; }},
+         [](const BenchPair& p) { return Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace).depth; }},
         {"satviz Collide float", false, false,
          [](const BenchPair& p) { return static_cast<double>(Collide(p.fa, p.fxfA, p.fb, p.fxfB).depth); }},
         {"satviz Sweep", false, true,
@@ -245,7 +240,7 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
         for (const BenchPair& p : slices.back())
         {
             all[static_cast<size_t>(i)].push_back(&p);
-            if (!Overlap(p.a, p.xfA, p.b, p.xfB))
+            if (!Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB))
             {
                 apart[static_cast<size_t>(i)].push_back(&p);
             }
@@ -343,21 +338,21 @@ std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::ve
             n >= 1024 ? std::max(1, s.accuracyPairs / 300) : (n >= 64 ? s.accuracyPairs / 10 : s.accuracyPairs);
         for (const BenchPair& p : MakePool(rng, n, count))
         {
-            const Reference ref = ReferenceCollide(MakeShape(p.a), p.xfA, MakeShape(p.b), p.xfB);
-            Record(acc["satviz Overlap"], Overlap(p.a, p.xfA, p.b, p.xfB), ref, 0.0, false);
+            const Reference ref = ReferenceCollide(p.sa, p.xfA, p.sb, p.xfB);
+            Record(acc["satviz Overlap"], Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB), ref, 0.0, false);
             Record(acc["satviz Overlap float"], Overlap(p.fa, p.fxfA, p.fb, p.fxfB), ref, 0.0, false);
-            const Manifold m = Collide(p.a, p.xfA, p.b, p.xfB);
+            const Manifold m = Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
             Record(acc["satviz Collide"], m.overlap, ref, m.depth, true);
             const ManifoldT<float> mf = Collide(p.fa, p.fxfA, p.fb, p.fxfB);
             Record(acc["satviz Collide float"], mf.overlap, ref, mf.depth, true);
             // Times of impact against the Minkowski-difference cast (its hull of n * n points limits it to n <= 64).
-            const bool sweepRef = n <= 64 && !Overlap(p.a, p.xfA, p.b, p.xfB);
+            const bool sweepRef = n <= 64 && !Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
             SweepReference sr;
             bool refHit = false;
             double refT = 0.0;
             if (sweepRef)
             {
-                sr = ReferenceSweep(p.a, p.xfA, p.b, p.xfB, p.velocity);
+                sr = ReferenceSweep(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
                 refHit = sr.insideAtStart || (sr.crosses && sr.enter <= 1 && sr.leave > 0);
                 refT = sr.insideAtStart ? 0.0 : std::max(0.0, static_cast<double>(sr.enter));
                 const SweepResult sw = Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity);
