@@ -117,7 +117,7 @@ TEST_CASE("satviz-query: bad files get one error line each, the others are answe
     CHECK(run.err.find("satviz-query: bad_polygon.json: bodies[0].polygon:") != std::string::npos);
 }
 
-TEST_CASE("satviz-query survives junk bytes and invalid UTF-8", "[query]")
+TEST_CASE("satviz-query survives junk bytes, invalid UTF-8 and deep nesting", "[query]")
 {
     std::string junk;
     for (int i = 0; i < 4096; ++i)
@@ -127,9 +127,11 @@ TEST_CASE("satviz-query survives junk bytes and invalid UTF-8", "[query]")
     Write("junk.json", junk);
     Write("bad_utf8.json", "{\"bodies\": [{\"polygon\": [[0,0],[1,0],[0,1]], \"name\": \"\xff\xfe\"}]}");
     Write("bad_utf8_name.json", "{\"bodies\": [{\"box\": [1, 1], \"name\": \"a\"}], \"x\xff\": 1}");
-    const Run run = Query("junk.json bad_utf8.json bad_utf8_name.json");
+    // 200 000 levels of nesting: no stack overflow in the parser.
+    Write("deep.json", std::string(200000, '[') + std::string(200000, ']'));
+    const Run run = Query("junk.json bad_utf8.json bad_utf8_name.json deep.json");
     CHECK(run.exitCode == 1);
-    REQUIRE(run.out.size() == 3);
+    REQUIRE(run.out.size() == 4);
     for (const std::string& line : run.out)
     {
         CHECK(nlohmann::json::parse(line).contains("error"));
