@@ -4,6 +4,7 @@
 
 #include <satviz/math.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -28,13 +29,17 @@ struct Vec2Span
 
 /// A convex polygon in its body frame: counter-clockwise vertices (interior to the left of each edge), y up.
 /// Any vertex count from 3 upwards; there is no fixed cap. Edge i runs from vertex i to vertex i + 1 (mod count).
-/// Vertices, edges and normals live in one allocation, so a query touches one block of memory per polygon.
+/// Vertices, edges and normals live in one block: inside the polygon itself up to kInlineVertices vertices, so a
+/// query on small polygons touches no other memory, and in one heap allocation beyond that.
 /// Build polygons with MakePolygon, ComputeHull, MakeBox or MakeRegularPolygon, which validate the outline and
 /// precompute the edges and normals consistently; a default-constructed polygon is empty.
 template <typename S>
 class PolygonT
 {
-  public:
+public:
+    /// Polygons with at most this many vertices keep their data inline.
+    static constexpr int kInlineVertices = 8;
+
     Vec2Span<S> vertices; ///< vertices in the body frame, counter-clockwise, strictly convex
     Vec2Span<S> edges;    ///< edges[i] = vertices[i + 1] - vertices[i]
     Vec2Span<S> normals;  ///< unit outward normal of edge i: RightPerp(edges[i]) / |edges[i]|
@@ -43,56 +48,83 @@ class PolygonT
     /// An empty polygon.
     PolygonT() = default;
     /// A copy with its own storage.
-    PolygonT(const PolygonT& other) : centroid(other.centroid), m_storage(other.m_storage) { Bind(); }
+    PolygonT(const PolygonT& other) { CopyFrom(other); }
     /// Takes over the other polygon's storage.
-    PolygonT(PolygonT&& other) noexcept : centroid(other.centroid), m_storage(std::move(other.m_storage))
-    {
-        Bind();
-        other.Bind();
-    }
+    PolygonT(PolygonT&& other) noexcept { MoveFrom(other); }
     /// Copies another polygon.
     PolygonT& operator=(const PolygonT& other)
     {
-        m_storage = other.m_storage;
-        centroid = other.centroid;
-        Bind();
+        if (this != &other)
+        {
+            CopyFrom(other);
+        }
         return *this;
     }
     /// Takes over the other polygon's storage.
     PolygonT& operator=(PolygonT&& other) noexcept
     {
-        m_storage = std::move(other.m_storage);
-        centroid = other.centroid;
-        Bind();
-        other.Bind();
+        if (this != &other)
+        {
+            MoveFrom(other);
+        }
         return *this;
     }
 
     /// Number of vertices.
-    int Count() const { return vertices.count; }
+    int Count() const { return m_count; }
 
     /// Takes validated data: `storage` holds the vertices, then the edges, then the normals (3 * count vectors).
     /// Used by the builders; callers outside them would break the invariants.
     static PolygonT FromStorage(std::vector<Vec2T<S>> storage, Vec2T<S> centroid)
     {
         PolygonT polygon;
-        polygon.m_storage = std::move(storage);
+        polygon.m_count = static_cast<int>(storage.size() / 3);
         polygon.centroid = centroid;
+        if (polygon.m_count <= kInlineVertices)
+        {
+            std::copy(storage.begin(), storage.end(), polygon.m_inline);
+        }
+        else
+        {
+            polygon.m_heap = std::move(storage);
+        }
         polygon.Bind();
         return polygon;
     }
 
-  private:
+private:
+    void CopyFrom(const PolygonT& other)
+    {
+        m_count = other.m_count;
+        centroid = other.centroid;
+        std::copy(other.m_inline, other.m_inline + 3 * kInlineVertices, m_inline);
+        m_heap = other.m_heap;
+        Bind();
+    }
+
+    void MoveFrom(PolygonT& other)
+    {
+        m_count = other.m_count;
+        centroid = other.centroid;
+        std::copy(other.m_inline, other.m_inline + 3 * kInlineVertices, m_inline);
+        m_heap = std::move(other.m_heap);
+        Bind();
+        other.m_count = other.m_count <= kInlineVertices ? other.m_count : 0;
+        other.Bind();
+    }
+
     void Bind()
     {
-        const int n = static_cast<int>(m_storage.size() / 3);
-        const Vec2T<S>* base = m_storage.data();
+        const int n = m_count;
+        const Vec2T<S>* base = n <= kInlineVertices ? m_inline : m_heap.data();
         vertices = {base, n};
         edges = {base + n, n};
         normals = {base + 2 * n, n};
     }
 
-    std::vector<Vec2T<S>> m_storage;
+    int m_count = 0;
+    Vec2T<S> m_inline[3 * kInlineVertices]{};
+    std::vector<Vec2T<S>> m_heap;
 };
 
 /// Double-precision polygon.
