@@ -109,11 +109,23 @@ struct FaceQuery
 constexpr int kScanLimit = 16;
 
 /// Smallest of the projections nx * x[j] + ny * y[j] over `count` entries, `count` a multiple of 4 (the caller
-/// pads by repeating a vertex). The SSE2 versions do the same multiplications and additions as the scalar one,
-/// without contraction, and a minimum is exact, so the result is the same to the bit.
+/// pads by repeating a vertex).
+template <typename S>
+S MinProjection(const S* x, const S* y, int count, S nx, S ny)
+{
+    S low = nx * x[0] + ny * y[0];
+    for (int j = 1; j < count; ++j)
+    {
+        low = std::min(low, nx * x[j] + ny * y[j]);
+    }
+    return low;
+}
+
+#if defined(__SSE2__)
+/// MinProjection with SSE2, two lanes: the same multiplications and additions as the scalar version, without
+/// contraction, and a minimum is exact, so the result is the same to the bit.
 inline double MinProjection(const double* x, const double* y, int count, double nx, double ny)
 {
-#if defined(__SSE2__)
     const __m128d vx = _mm_set1_pd(nx);
     const __m128d vy = _mm_set1_pd(ny);
     __m128d low = _mm_add_pd(_mm_mul_pd(vx, _mm_load_pd(x)), _mm_mul_pd(vy, _mm_load_pd(y)));
@@ -122,20 +134,11 @@ inline double MinProjection(const double* x, const double* y, int count, double 
         low = _mm_min_pd(low, _mm_add_pd(_mm_mul_pd(vx, _mm_load_pd(x + j)), _mm_mul_pd(vy, _mm_load_pd(y + j))));
     }
     return _mm_cvtsd_f64(_mm_min_sd(low, _mm_unpackhi_pd(low, low)));
-#else
-    double low = nx * x[0] + ny * y[0];
-    for (int j = 1; j < count; ++j)
-    {
-        low = std::min(low, nx * x[j] + ny * y[j]);
-    }
-    return low;
-#endif
 }
 
-/// The float version of MinProjection.
+/// MinProjection with SSE2, four lanes.
 inline float MinProjection(const float* x, const float* y, int count, float nx, float ny)
 {
-#if defined(__SSE2__)
     const __m128 vx = _mm_set1_ps(nx);
     const __m128 vy = _mm_set1_ps(ny);
     __m128 low = _mm_add_ps(_mm_mul_ps(vx, _mm_load_ps(x)), _mm_mul_ps(vy, _mm_load_ps(y)));
@@ -145,15 +148,8 @@ inline float MinProjection(const float* x, const float* y, int count, float nx, 
     }
     low = _mm_min_ps(low, _mm_movehl_ps(low, low));
     return _mm_cvtss_f32(_mm_min_ss(low, _mm_shuffle_ps(low, low, 1)));
-#else
-    float low = nx * x[0] + ny * y[0];
-    for (int j = 1; j < count; ++j)
-    {
-        low = std::min(low, nx * x[j] + ny * y[j]);
-    }
-    return low;
-#endif
 }
+#endif
 
 /// The incident polygon of a face query: the polygon, its transform into the reference frame, and, when it is
 /// small enough to scan, its vertices mapped into that frame as a structure of arrays on the stack (padded to a
