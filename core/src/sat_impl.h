@@ -228,15 +228,6 @@ int FaceTowards(const PolygonT<S>& polygon, Vec2T<S> point)
     return best;
 }
 
-/// The face to start the face query with: for a walked (large) incident polygon the face towards its centroid,
-/// which saves walking round the outline for separated pairs; for a scanned one face 0, because each face there
-/// costs less than the search for a better start.
-template <typename S>
-int StartFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc)
-{
-    return inc.scan ? 0 : FaceTowards(ref, inc.centroid);
-}
-
 /// Faces of b (at most 64) exactly anti-parallel to a face of a, as a bit mask. Rotated normals are exact only
 /// when the relative rotation is a multiple of a quarter turn (one of its components is zero), so other rotations
 /// are not searched: the search would cost as much as the axes it could save.
@@ -267,7 +258,7 @@ uint64_t AntiParallelFaces(const PolygonT<S>& a, const PolygonT<S>& b, const Rot
 /// the signed distance from the face to inc's support point in direction -n, taken in ref's frame:
 ///     separation_i = Dot(n, support(inc, -n) - v_i).
 /// Outline:
-///   1. Start at `start` (StartFace) and go round once.
+///   1. Start at face 0, or for a walked inc at the face towards its centroid (FaceTowards), and go round once.
 ///   2. Small inc (kScanLimit vertices or fewer): inc's vertices are mapped into ref's frame once; each face takes
 ///      the smallest projection of all of them, without branches: O(n m) with a tiny constant.
 ///   3. Large inc: the normals of ref turn counter-clockwise face after face, so the support point of inc turns
@@ -285,9 +276,12 @@ uint64_t AntiParallelFaces(const PolygonT<S>& a, const PolygonT<S>& b, const Rot
 /// kUnit selects unit normals (Collide: separations are distances, the best face is tracked) or raw edge normals
 /// (Overlap: only the sign matters, so no square root or division is needed).
 template <bool kUnit, typename S, typename Tracer>
-FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int start, int side, bool second,
-                        S floor, Tracer& tracer)
+FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, S floor,
+                        Tracer& tracer)
 {
+    // A walked (large) incident polygon starts at the face towards its centroid, which saves walking round the
+    // outline for separated pairs; a scanned one at face 0, as each face there costs less than that search.
+    const int start = inc.scan ? 0 : FaceTowards(ref, inc.centroid);
     FaceQuery<S> query;
     // The best face so far starts as the first one tested, so that it is a valid index even when no comparison
     // holds (NaN input).
@@ -375,14 +369,12 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
 {
     const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
     const IncidentPolygon<S> incB(b, bInA);
-    const int startA = StartFace(a, incB);
-    bool overlap = !QueryFaces<false>(a, incB, startA, 0, false, S(0), tracer).separated;
+    bool overlap = !QueryFaces<false>(a, incB, 0, false, S(0), tracer).separated;
     if (overlap)
     {
         const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
         const IncidentPolygon<S> incA(a, aInB);
-        const int startB = StartFace(b, incA);
-        overlap = !QueryFaces<false>(b, incA, startB, 1, true, S(0), tracer).separated;
+        overlap = !QueryFaces<false>(b, incA, 1, true, S(0), tracer).separated;
     }
     if constexpr (Tracer::kEnabled)
     {
@@ -541,9 +533,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     ManifoldT<S> manifold;
     const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
     const IncidentPolygon<S> incB(b, bInA);
-    const int startA = StartFace(a, incB);
-    const FaceQuery<S> queryA =
-        QueryFaces<true>(a, incB, startA, 0, false, -std::numeric_limits<S>::infinity(), tracer);
+    const FaceQuery<S> queryA = QueryFaces<true>(a, incB, 0, false, -std::numeric_limits<S>::infinity(), tracer);
     if (queryA.separated)
     {
         manifold.gap = queryA.separation;
@@ -557,8 +547,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     }
     const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
     const IncidentPolygon<S> incA(a, aInB);
-    const int startB = StartFace(b, incA);
-    const FaceQuery<S> queryB = QueryFaces<true>(b, incA, startB, 1, true, queryA.separation, tracer);
+    const FaceQuery<S> queryB = QueryFaces<true>(b, incA, 1, true, queryA.separation, tracer);
     if (queryB.separated)
     {
         manifold.gap = queryB.separation;
