@@ -191,6 +191,15 @@ struct IncidentPolygon
     /// The smallest projection on `normal` (reference frame), scan only.
     S Min(Vec2T<S> normal) const { return MinProjection(x, y, padded, normal.x, normal.y); }
 
+    /// Scan only: the separation of a reference face (outward `normal`, a vertex `v` on it) from this polygon.
+    S Separation(Vec2T<S> normal, Vec2T<S> v) const { return Min(normal) - Dot(normal, v); }
+
+    /// The separation of a reference face from this polygon's vertex `support`, its support point.
+    S Separation(Vec2T<S> normal, Vec2T<S> v, int support) const
+    {
+        return Dot(normal, TransformPoint(xf, polygon.vertices[support]) - v);
+    }
+
     /// The first vertex whose projection on `normal` (reference frame) is the smallest: the support point in
     /// direction -normal.
     int Support(Vec2T<S> normal) const
@@ -317,7 +326,7 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
                 }
                 continue;
             }
-            separation = inc.Min(normal) - Dot(normal, ref.vertices[i]);
+            separation = inc.Separation(normal, ref.vertices[i]);
         }
         else
         {
@@ -331,7 +340,7 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
                 }
                 continue;
             }
-            separation = Dot(normal, TransformPoint(inc.xf, inc.polygon.vertices[support]) - ref.vertices[i]);
+            separation = inc.Separation(normal, ref.vertices[i], support);
         }
         const bool separating = separation > S(0);
         if constexpr (kUnit)

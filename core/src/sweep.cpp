@@ -160,11 +160,11 @@ class FaceSeparations
         const Vec2T<S> normal = m_ref.normals[i];
         if (m_inc.scan)
         {
-            return m_inc.Min(normal) - Dot(normal, m_ref.vertices[i]);
+            return m_inc.Separation(normal, m_ref.vertices[i]);
         }
         const Vec2T<S> d = InvRotate(m_inc.xf.q, -normal);
         m_support = i == 0 ? ClimbToSupport(m_inc.polygon, d) : WalkToSupport(m_inc.polygon, d, m_support);
-        return Dot(normal, TransformPoint(m_inc.xf, m_inc.polygon.vertices[m_support]) - m_ref.vertices[i]);
+        return m_inc.Separation(normal, m_ref.vertices[i], m_support);
     }
 
   private:
