@@ -202,17 +202,13 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     auto take = [&](int side, int face, S separation, S rate) {
         S entry;
         S leave;
-        bool ends = false;
-        if (separation >= S(0))
-        {
-            inside = false;
-        }
-        if (!AxisTimes(separation, rate, entry, leave))
+        inside = inside && !(separation >= S(0)); // as written, NaN keeps "inside" as it was
+        bool ends = !AxisTimes(separation, rate, entry, leave);
+        if (ends)
         {
             exit = SweepExit::NeverCloses;
-            ends = true;
         }
-        if (!ends)
+        else
         {
             if (entry > first)
             {
