@@ -202,7 +202,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     auto take = [&](int side, int face, S separation, S rate) {
         S entry;
         S leave;
-        inside = inside && !(separation >= S(0)); // as written, NaN keeps "inside" as it was
+        inside = inside && !(separation >= S(0)); // a NaN separation does not count as apart
         bool ends = !AxisTimes(separation, rate, entry, leave);
         if (ends)
         {
