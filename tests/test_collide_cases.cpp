@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Hand-made collision cases whose answers follow from the geometry by hand.
 
+#include "support/builders.h"
+
 #include <satviz/sat.h>
 
 #include <catch2/catch.hpp>
@@ -8,6 +10,7 @@
 #include <cmath>
 
 using namespace satviz;
+using satviz::testing::At;
 using Catch::Matchers::WithinAbs;
 
 namespace
@@ -27,11 +30,6 @@ Polygon Poly(std::vector<Vec2> points)
     PolygonResult result = MakePolygon(points);
     REQUIRE(result.Ok());
     return result.polygon;
-}
-
-Transform At(double x, double y, double angle = 0.0)
-{
-    return MakeTransform(Vec2{x, y}, angle);
 }
 
 Circle Disc(double radius)
