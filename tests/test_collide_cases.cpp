@@ -10,8 +10,8 @@
 #include <cmath>
 
 using namespace satviz;
-using satviz::testing::At;
 using Catch::Matchers::WithinAbs;
+using satviz::testing::At;
 
 namespace
 {

@@ -36,7 +36,7 @@ struct Vec2Span
 template <typename S>
 class PolygonT
 {
-public:
+  public:
     /// Polygons with at most this many vertices keep their data inline.
     static constexpr int kInlineVertices = 8;
 
@@ -92,7 +92,7 @@ public:
         return polygon;
     }
 
-private:
+  private:
     void CopyFrom(const PolygonT& other)
     {
         m_count = other.m_count;
