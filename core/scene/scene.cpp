@@ -282,13 +282,162 @@ Body ParseBody(const Json& value, const std::string& path, size_t index)
     return body;
 }
 
+std::string String(const Json& value, const std::string& path)
+{
+    if (!value.is_string())
+    {
+        Fail(path, "expected a string, got " + TypeName(value));
+    }
+    return value.get<std::string>();
+}
+
+int WholeNumber(const Json& value, const std::string& path, int low, int high)
+{
+    const double number = Number(value, path);
+    if (number != std::floor(number) || number < low || number > high)
+    {
+        Fail(path, "expected a whole number from " + std::to_string(low) + " to " + std::to_string(high));
+    }
+    return static_cast<int>(number);
+}
+
+std::string BodyName(const Json& value, const std::string& path, const Scene& scene)
+{
+    std::string name = String(value, path);
+    for (const Body& body : scene.bodies)
+    {
+        if (body.name == name)
+        {
+            return name;
+        }
+    }
+    Fail(path, "no body is named \"" + name + "\"");
+}
+
+SceneView ParseView(const Json& value, const Scene& scene)
+{
+    const std::string path = "view";
+    if (!value.is_object())
+    {
+        Fail(path, "expected an object, got " + TypeName(value));
+    }
+    CheckKeys(value, path, {"center", "zoom", "size", "layers", "pair", "query", "step", "time", "caption"});
+    SceneView view;
+    if (value.contains("zoom"))
+    {
+        const Json& zoom = value["zoom"];
+        if (zoom.is_string() && zoom.get<std::string>() == "fit")
+        {
+            view.fit = true;
+        }
+        else
+        {
+            view.zoom = PositiveNumber(zoom, path + ".zoom");
+            view.fit = false;
+        }
+    }
+    if (value.contains("center"))
+    {
+        view.center = Point(value["center"], path + ".center");
+        if (!value.contains("zoom"))
+        {
+            Fail(path + ".center", "needs a \"zoom\" (pixels per unit) beside it");
+        }
+    }
+    if (value.contains("size"))
+    {
+        const Json& size = value["size"];
+        if (!size.is_array() || size.size() != 2)
+        {
+            Fail(path + ".size", "expected [width, height] in pixels, got " + TypeName(size));
+        }
+        view.width = WholeNumber(size[0], path + ".size[0]", 16, kMaxViewSize);
+        view.height = WholeNumber(size[1], path + ".size[1]", 16, kMaxViewSize);
+    }
+    if (value.contains("layers"))
+    {
+        const Json& layers = value["layers"];
+        if (!layers.is_array())
+        {
+            Fail(path + ".layers", "expected an array of layer names, got " + TypeName(layers));
+        }
+        const std::vector<std::string>& known = ViewLayerNames();
+        for (size_t i = 0; i < layers.size(); ++i)
+        {
+            const std::string p = path + ".layers[" + std::to_string(i) + "]";
+            std::string name = String(layers[i], p);
+            if (std::find(known.begin(), known.end(), name) == known.end())
+            {
+                std::string list;
+                for (const std::string& candidate : known)
+                {
+                    list += (list.empty() ? "" : ", ") + candidate;
+                }
+                Fail(p, "unknown layer \"" + name + "\" (known layers: " + list + ")");
+            }
+            view.layers.push_back(std::move(name));
+        }
+    }
+    if (value.contains("pair"))
+    {
+        const Json& pair = value["pair"];
+        if (!pair.is_array() || pair.size() != 2)
+        {
+            Fail(path + ".pair", "expected two body names [\"A\", \"B\"], got " + TypeName(pair));
+        }
+        view.bodyA = BodyName(pair[0], path + ".pair[0]", scene);
+        view.bodyB = BodyName(pair[1], path + ".pair[1]", scene);
+        if (view.bodyA == view.bodyB)
+        {
+            Fail(path + ".pair", "names the same body twice");
+        }
+    }
+    if (value.contains("query"))
+    {
+        const std::string query = String(value["query"], path + ".query");
+        if (query == "collide")
+        {
+            view.query = ViewQuery::Collide;
+        }
+        else if (query == "sweep")
+        {
+            view.query = ViewQuery::Sweep;
+        }
+        else if (query != "auto")
+        {
+            Fail(path + ".query", "expected \"collide\", \"sweep\" or \"auto\", got \"" + query + "\"");
+        }
+    }
+    if (value.contains("step"))
+    {
+        const Json& step = value["step"];
+        if (!(step.is_string() && step.get<std::string>() == "last"))
+        {
+            view.step = WholeNumber(step, path + ".step", 0, 1000000);
+        }
+    }
+    if (value.contains("time"))
+    {
+        view.time = Number(value["time"], path + ".time");
+        if (view.time < 0.0 || view.time > 1.0)
+        {
+            Fail(path + ".time", "expected a time in [0, 1] (a fraction of the step)");
+        }
+    }
+    if (value.contains("caption"))
+    {
+        view.caption = String(value["caption"], path + ".caption");
+    }
+    return view;
+}
+
 Scene ParseRoot(const Json& root)
 {
     if (!root.is_object())
     {
         Fail("(root)", "expected an object with \"bodies\", got " + TypeName(root));
     }
-    CheckKeys(root, "", {"$schema", "description", "bodies"});
+    CheckKeys(root, "", {"$schema", "description", "bodies", "view"});
     Scene scene;
     if (root.contains("description"))
     {
@@ -317,6 +466,11 @@ Scene ParseRoot(const Json& root)
             Fail(path + ".name", "\"" + body.name + "\" is already the name of another body");
         }
         scene.bodies.push_back(std::move(body));
+    }
+    if (root.contains("view"))
+    {
+        scene.view = ParseView(root["view"], scene);
+        scene.hasView = true;
     }
     return scene;
 }

@@ -23,11 +23,50 @@ struct Body
     Transform Xf() const { return MakeTransform(position, angle); }
 };
 
+/// Which query a view shows.
+enum class ViewQuery
+{
+    Automatic, ///< the swept test when the pair moves, else the static test
+    Collide,   ///< the static test: overlap, MTV and contacts
+    Sweep,     ///< the swept test: time of impact
+};
+
+/// Names of the drawing layers a view can switch on, in drawing order (see render/README.md).
+inline const std::vector<std::string>& ViewLayerNames()
+{
+    static const std::vector<std::string> names = {"shapes",  "labels", "normals",  "axes",  "projection", "exit",
+                                                   "best",    "mtv",    "contacts", "swept", "ghost",      "caption"};
+    return names;
+}
+
+/// How a scene is to be pictured: camera, image size, layers, the pair and the step of its trace. Optional in a
+/// scene file ("view": {...}); every field has a default.
+struct SceneView
+{
+    bool fit = true;                 ///< frame the pair automatically (ignores center and zoom)
+    Vec2 center{};                   ///< world point at the image centre, when not fit
+    double zoom = 100.0;             ///< pixels per world unit, when not fit
+    int width = 800;                 ///< image width in pixels
+    int height = 600;                ///< image height in pixels
+    std::vector<std::string> layers; ///< layer names to draw; empty: the default set
+    std::string bodyA;               ///< first body of the pair; empty: the first body
+    std::string bodyB;               ///< second body of the pair; empty: the second body
+    ViewQuery query = ViewQuery::Automatic; ///< which test to show
+    int step = -1;                   ///< trace step to show; -1: the last step (the verdict)
+    double time = -1.0;              ///< sweeps: draw the moving shapes at this time in [0, 1]; -1: not drawn
+    std::string caption;             ///< text drawn above the figure; empty: the step's own description
+};
+
+/// Largest accepted image side of a view, in pixels.
+constexpr int kMaxViewSize = 8192;
+
 /// A scene: bodies in the world.
 struct Scene
 {
     std::string description;  ///< optional free text
     std::vector<Body> bodies; ///< the bodies, in file order
+    bool hasView = false;     ///< the file has a "view" block
+    SceneView view;           ///< how to picture it (defaults when hasView is false)
 };
 
 /// The outcome of loading a scene: the scene, or a one-line error "FILE: JSON.PATH: what is wrong".

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// satviz render: the Canvas on Dear ImGui draw lists, shared by the app and satviz-render, and the fonts of the
+// figures. The only render header that includes imgui.h.
+#pragma once
+
+#include <satviz/render/canvas.h>
+
+#include <imgui.h>
+
+#include <string>
+
+namespace satviz
+{
+
+/// The regular and bold DejaVu Sans files of Debian's fonts-dejavu-core.
+constexpr const char* kFigureFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+/// The bold face.
+constexpr const char* kFigureBoldFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
+
+/// The fonts a figure is drawn with, one per TextStyle.
+struct FigureFonts
+{
+    ImFont* label = nullptr;   ///< TextStyle::Label
+    ImFont* body = nullptr;    ///< TextStyle::Body
+    ImFont* heading = nullptr; ///< TextStyle::Heading
+};
+
+/// Adds the figure fonts to an atlas (before it is built). Returns false, with a one-line error naming the file,
+/// when a font file is missing.
+bool AddFigureFonts(ImFontAtlas& atlas, FigureFonts& fonts, std::string& error);
+
+/// Draws on an ImGui draw list. With 16-bit indices a draw list holds at most 65 536 vertices, so when the first
+/// list fills up the canvas continues on `overflow` (drawn above it); what fits in neither is dropped and counted.
+class ImDrawListCanvas : public Canvas
+{
+  public:
+    /// A canvas whose screen origin (0, 0) is at `origin` on the draw list.
+    ImDrawListCanvas(ImDrawList* list, ImDrawList* overflow, const FigureFonts& fonts, ImVec2 origin = {0, 0});
+
+    void Segment(ScreenPoint a, ScreenPoint b, Color color, float thickness) override;
+    void Polyline(const ScreenPoint* points, int count, bool closed, Color color, float thickness) override;
+    void FillConvex(const ScreenPoint* points, int count, Color color) override;
+    void Circle(ScreenPoint center, float radius, Color color, float thickness) override;
+    void FillCircle(ScreenPoint center, float radius, Color color) override;
+    void FillRect(ScreenPoint min, ScreenPoint max, Color color) override;
+    void Text(ScreenPoint topLeft, std::string_view text, TextStyle style, Color color) override;
+    ScreenPoint MeasureText(std::string_view text, TextStyle style) override;
+
+    /// Number of calls dropped because both draw lists were full.
+    int Dropped() const { return dropped_; }
+
+  private:
+    ImDrawList* Target(int vertices);
+    ImVec2 P(ScreenPoint p) const { return {p.x + origin_.x, p.y + origin_.y}; }
+    ImFont* FontOf(TextStyle style) const;
+
+    ImDrawList* list_;
+    ImDrawList* overflow_;
+    FigureFonts fonts_;
+    ImVec2 origin_;
+    ImVector<ImVec2> scratch_;
+    int dropped_ = 0;
+};
+
+} // namespace satviz

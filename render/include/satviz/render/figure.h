@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// satviz render: from a scene file to a figure, applying the scene's view block and the caller's overrides. The
+// app's export and satviz-render both go through here, so the same scene gives the same picture.
+#pragma once
+
+#include <satviz/render/painter.h>
+
+#include <string>
+
+namespace satviz
+{
+
+/// Choices that override a scene's view block (satviz-render's options, the app's state). Unset fields keep the
+/// scene's choice.
+struct FigureOptions
+{
+    int width = 0;             ///< image width; 0: the scene's (default 800)
+    int height = 0;            ///< image height; 0: the scene's (default 600)
+    bool setStep = false;      ///< use `step` instead of the scene's
+    int step = -1;             ///< trace step; -1: the verdict
+    bool setLayers = false;    ///< use `layers` instead of the scene's
+    LayerMask layers = 0;      ///< layers to draw
+};
+
+/// A figure ready to paint, or why it cannot be made.
+struct FigureSetup
+{
+    PairStudy study;   ///< the queries on the pictured pair
+    Figure figure;     ///< camera, layers, step
+    std::string error; ///< "view.step: ..." when the scene cannot be pictured; empty on success
+    /// True when the figure can be painted.
+    bool Ok() const { return error.empty(); }
+};
+
+/// Sets up the figure of a scene: picks the pair (view.pair, or the first two bodies), runs the queries, frames
+/// the camera, resolves the step (-1: the verdict). Errors name the scene field at fault.
+FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options);
+
+} // namespace satviz

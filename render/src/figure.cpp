@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+#include <satviz/render/figure.h>
+
+namespace satviz
+{
+
+namespace
+{
+
+int BodyIndex(const Scene& scene, const std::string& name, int fallback)
+{
+    if (name.empty())
+    {
+        return fallback;
+    }
+    for (size_t i = 0; i < scene.bodies.size(); ++i)
+    {
+        if (scene.bodies[i].name == name)
+        {
+            return static_cast<int>(i);
+        }
+    }
+    return -1;
+}
+
+} // namespace
+
+FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
+{
+    FigureSetup setup;
+    const SceneView& view = scene.view;
+    if (scene.bodies.size() < 2)
+    {
+        setup.error = "bodies: a figure needs at least two bodies, the scene has " +
+                      std::to_string(scene.bodies.size());
+        return setup;
+    }
+    const int a = BodyIndex(scene, view.bodyA, 0);
+    const int b = BodyIndex(scene, view.bodyB, 1);
+    if (a < 0 || b < 0 || a == b)
+    {
+        setup.error = "view.pair: names no pair of distinct bodies";
+        return setup;
+    }
+    setup.study = StudyPair(scene, a, b, view.query);
+
+    Figure& figure = setup.figure;
+    figure.layers = options.setLayers ? options.layers
+                                      : (view.layers.empty() ? kDefaultLayers : LayersFromNames(view.layers));
+    const int width = options.width > 0 ? options.width : view.width;
+    const int height = options.height > 0 ? options.height : view.height;
+    if (view.fit)
+    {
+        figure.view = FitFigure(scene, setup.study, figure.layers, width, height);
+    }
+    else
+    {
+        figure.view.center = view.center;
+        figure.view.zoom = view.zoom;
+        figure.view.width = width;
+        figure.view.height = height;
+    }
+    const int step = options.setStep ? options.step : view.step;
+    if (step >= setup.study.StepCount())
+    {
+        setup.error = std::string(options.setStep ? "--step" : "view.step") + ": step " + std::to_string(step) +
+                      " does not exist: this pair's trace has steps 0 to " +
+                      std::to_string(setup.study.VerdictStep()) + " (the last is the verdict)";
+        return setup;
+    }
+    figure.step = step < 0 ? setup.study.VerdictStep() : step;
+    figure.time = view.time;
+    figure.caption = view.caption;
+    return setup;
+}
+
+} // namespace satviz

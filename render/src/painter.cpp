@@ -1,0 +1,1100 @@
+// SPDX-License-Identifier: MIT
+#include <satviz/render/describe.h>
+#include <satviz/render/painter.h>
+
+#include "draw_kit.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace satviz
+{
+
+namespace
+{
+
+constexpr float kCaptionLines = 2.0f;  // caption lines the band holds (longer captions extend it)
+constexpr float kLineHeight = 19.0f;   // caption line spacing
+constexpr float kPad = 12.0f;          // padding inside bands
+constexpr float kStaticPanel = 108.0f; // number-line panel height, static test
+constexpr float kSweepPanel = 166.0f;  // number line and time bar, swept test
+constexpr float kAxisGap = 30.0f;      // pixels between the pair's disc and the axis line
+constexpr float kFitMargin = 22.0f;    // pixels between the axis line and the scene area's edge
+constexpr float kOutline = 2.0f;       // shape outline thickness
+constexpr float kBar = 6.0f;           // interval bar thickness
+constexpr float kLinePad = 26.0f;      // the axis line runs this far beyond the intervals
+
+bool Has(const Figure& figure, LayerMask layer) { return (figure.layers & layer) != 0; }
+
+Vec2 Along(Vec2 base, Vec2 direction, double u) { return base + u * direction; }
+
+// Points that bound the pair, each with a radius around it: polygon vertices and circles, at t = 0 and, for
+// sweeps, at t = 1.
+std::vector<std::pair<Vec2, double>> PairPoints(const Scene& scene, const PairStudy& study)
+{
+    std::vector<std::pair<Vec2, double>> points;
+    const int ids[2] = {study.bodyA, study.bodyB};
+    for (int id : ids)
+    {
+        const Body& body = scene.bodies[static_cast<size_t>(id)];
+        const int times = study.sweep && body.velocity != Vec2{} ? 2 : 1;
+        for (int k = 0; k < times; ++k)
+        {
+            const Transform xf = BodyTransformAt(body, k);
+            if (body.shape.type == ShapeType::Polygon)
+            {
+                for (const Vec2& v : body.shape.polygon.vertices)
+                {
+                    points.push_back({TransformPoint(xf, v), 0.0});
+                }
+            }
+            else
+            {
+                points.push_back({TransformPoint(xf, body.shape.circle.center), body.shape.circle.radius});
+            }
+        }
+    }
+    return points;
+}
+
+// The disc around the pair's bounding box.
+void PairDisc(const std::vector<std::pair<Vec2, double>>& points, Vec2& center, double& radius)
+{
+    Vec2 low = points.front().first;
+    Vec2 high = low;
+    for (const auto& [p, r] : points)
+    {
+        low = {std::min(low.x, p.x - r), std::min(low.y, p.y - r)};
+        high = {std::max(high.x, p.x + r), std::max(high.y, p.y + r)};
+    }
+    center = 0.5 * (low + high);
+    radius = 0.0;
+    for (const auto& [p, r] : points)
+    {
+        radius = std::max(radius, Length(p - center) + r);
+    }
+    radius = std::max(radius, 1e-9);
+}
+
+// The side of the pair the axis line goes: below it, or left of it for a vertical axis.
+Vec2 AxisSide(Vec2 d)
+{
+    Vec2 n = LeftPerp(d);
+    if (n.y > 0.0 || (n.y == 0.0 && n.x > 0.0))
+    {
+        n = -n;
+    }
+    return n;
+}
+
+// The axis line beside the pair: the points base + u d, u a projection value on d, run parallel to the axis at
+// `gap` (world units) beyond the pair on the AxisSide.
+Vec2 AxisLineBase(const std::vector<std::pair<Vec2, double>>& points, Vec2 d, double gap)
+{
+    const Vec2 n = AxisSide(d);
+    double offset = -INFINITY;
+    for (const auto& [p, r] : points)
+    {
+        offset = std::max(offset, Dot(p, n) + r);
+    }
+    return (offset + gap) * n;
+}
+
+// The span of projection values the axis line shows: both intervals, and B's swept interval.
+void AxisLineSpan(double minA, double maxA, double minB, double maxB, double& lo, double& hi)
+{
+    lo = std::min(minA, minB);
+    hi = std::max(maxA, maxB);
+}
+
+Vec2 ShapeCenter(const Shape& shape, const Transform& xf)
+{
+    return TransformPoint(xf, shape.type == ShapeType::Polygon ? shape.polygon.centroid : shape.circle.center);
+}
+
+// Lowest and highest projection of a placed shape on a unit direction, with the points that reach them.
+void Extremes(const Shape& shape, const Transform& xf, Vec2 d, Vec2& low, Vec2& high)
+{
+    if (shape.type == ShapeType::Circle)
+    {
+        const Vec2 c = TransformPoint(xf, shape.circle.center);
+        low = c - shape.circle.radius * d;
+        high = c + shape.circle.radius * d;
+        return;
+    }
+    double lo = INFINITY;
+    double hi = -INFINITY;
+    for (const Vec2& v : shape.polygon.vertices)
+    {
+        const Vec2 p = TransformPoint(xf, v);
+        const double s = Dot(p, d);
+        if (s < lo)
+        {
+            lo = s;
+            low = p;
+        }
+        if (s > hi)
+        {
+            hi = s;
+            high = p;
+        }
+    }
+}
+
+// One axis as the painter shows it, whichever test produced it.
+struct ShownAxis
+{
+    AxisRef ref{};
+    Vec2 direction{};
+    double minA = 0.0, maxA = 0.0, minB = 0.0, maxB = 0.0;
+    double separation = 0.0;
+    bool swept = false;
+    double sweptMinB = 0.0, sweptMaxB = 0.0;
+    double entry = 0.0, exit = 0.0;
+    double windowEntry = 0.0, windowExit = 0.0; // latest entry and earliest exit so far
+    bool separating = false;
+    bool skipped = false;
+    int index = 0;
+};
+
+ShownAxis FromStatic(const PairStudy& study, int index)
+{
+    const AxisTest& t = study.trace.axes[static_cast<size_t>(index)];
+    ShownAxis s;
+    s.ref = t.axis;
+    s.direction = t.direction;
+    s.minA = t.minA;
+    s.maxA = t.maxA;
+    s.minB = t.minB;
+    s.maxB = t.maxB;
+    s.separation = t.separation;
+    s.separating = t.separating;
+    s.skipped = t.skipped;
+    s.index = index;
+    return s;
+}
+
+ShownAxis FromSweep(const PairStudy& study, int index)
+{
+    const SweepAxis& t = study.sweepTrace.axes[static_cast<size_t>(index)];
+    ShownAxis s;
+    s.ref = t.axis;
+    s.direction = t.direction;
+    s.minA = t.minA;
+    s.maxA = t.maxA;
+    s.minB = t.minB;
+    s.maxB = t.maxB;
+    s.separation = t.separation;
+    s.swept = true;
+    s.sweptMinB = t.sweptMinB;
+    s.sweptMaxB = t.sweptMaxB;
+    s.entry = t.entry;
+    s.exit = t.exit;
+    s.separating = t.endsTest;
+    s.index = index;
+    if (t.latestEntry >= 0 && t.earliestExit >= 0)
+    {
+        s.windowEntry = study.sweepTrace.axes[static_cast<size_t>(t.latestEntry)].entry;
+        s.windowExit = study.sweepTrace.axes[static_cast<size_t>(t.earliestExit)].exit;
+    }
+    else
+    {
+        s.windowEntry = t.entry;
+        s.windowExit = t.exit;
+    }
+    return s;
+}
+
+// The axis the verdict step shows: the separating axis, the axis of least overlap, or the latest entry.
+int DecidingAxis(const PairStudy& study)
+{
+    if (study.AxisCount() == 0)
+    {
+        return -1;
+    }
+    if (study.sweep)
+    {
+        const SweepAxis& last = study.sweepTrace.axes.back();
+        if (study.sweepResult.status == SweepStatus::Hit && last.latestEntry >= 0)
+        {
+            return last.latestEntry;
+        }
+        return study.AxisCount() - 1;
+    }
+    const AxisTest& last = study.trace.axes.back();
+    return last.separating || last.best < 0 ? study.AxisCount() - 1 : last.best;
+}
+
+class Painter
+{
+  public:
+    Painter(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure)
+        : canvas_(canvas), scene_(scene), study_(study), figure_(figure), view_(figure.view),
+          layout_(LayoutFigure(study, figure.layers, figure.view.width, figure.view.height)),
+          labels_(canvas, static_cast<float>(figure.view.width), static_cast<float>(figure.view.height)),
+          bodyA_(scene.bodies[static_cast<size_t>(study.bodyA)]), bodyB_(scene.bodies[static_cast<size_t>(study.bodyB)])
+    {
+        bounds_ = {-4.0f, -4.0f, static_cast<float>(view_.width) + 4.0f, static_cast<float>(view_.height) + 4.0f};
+        points_ = PairPoints(scene, study);
+        PairDisc(points_, discCenter_, discRadius_);
+        verdict_ = figure.step == study.VerdictStep();
+        axisIndex_ = verdict_ ? DecidingAxis(study) : figure.step;
+        if (axisIndex_ >= 0 && axisIndex_ < study.AxisCount())
+        {
+            axis_ = study.sweep ? FromSweep(study, axisIndex_) : FromStatic(study, axisIndex_);
+            hasAxis_ = true;
+        }
+    }
+
+    void Paint()
+    {
+        canvas_.BeginGroup("background");
+        canvas_.FillRect({0.0f, 0.0f}, {static_cast<float>(view_.width), static_cast<float>(view_.height)},
+                         palette::kBackground);
+        Grid();
+        ReserveBands();
+        if (Has(figure_, kLayerAxes))
+        {
+            CandidateAxes();
+        }
+        if (Has(figure_, kLayerShapes))
+        {
+            Shapes();
+        }
+        if (Has(figure_, kLayerNormals))
+        {
+            Normals();
+        }
+        if (Has(figure_, kLayerSwept) && study_.sweep)
+        {
+            Motion();
+        }
+        if (Has(figure_, kLayerGhost) && study_.sweep)
+        {
+            Ghosts();
+        }
+        if (hasAxis_ && Has(figure_, kLayerBest))
+        {
+            BestSoFar();
+        }
+        if (hasAxis_ && Has(figure_, kLayerProjection) && !axis_.skipped)
+        {
+            AxisInScene();
+        }
+        if (hasAxis_ && Has(figure_, kLayerExit) && axis_.separating && !axis_.swept)
+        {
+            SeparatingLine();
+        }
+        if (verdict_ && Has(figure_, kLayerMtv))
+        {
+            Mtv();
+        }
+        if (verdict_ && Has(figure_, kLayerContacts))
+        {
+            Contacts();
+        }
+        if (Has(figure_, kLayerLabels))
+        {
+            Labels();
+        }
+        labels_.Flush(WithAlpha(palette::kBackground, 0.72f));
+        if (layout_.panelTop < static_cast<float>(view_.height))
+        {
+            Panel();
+        }
+        if (Has(figure_, kLayerCaption))
+        {
+            Caption();
+        }
+    }
+
+  private:
+    ScreenPoint At(Vec2 world) const { return ToScreen(view_, world); }
+    float Width() const { return static_cast<float>(view_.width); }
+    float Height() const { return static_cast<float>(view_.height); }
+    Color ColorOf(int shape) const { return shape == 0 ? palette::kShapeA : palette::kShapeB; }
+    Color InkOf(int shape) const { return shape == 0 ? palette::kShapeA : palette::kShapeBInk; }
+    const Body& BodyOf(int shape) const { return shape == 0 ? bodyA_ : bodyB_; }
+
+    // Faint world grid at a round spacing of at least 40 pixels, with the world axes a little stronger.
+    void Grid()
+    {
+        const double target = 40.0 / view_.zoom;
+        const double decade = std::pow(10.0, std::floor(std::log10(target)));
+        double spacing = decade;
+        for (double factor : {1.0, 2.0, 5.0, 10.0})
+        {
+            spacing = factor * decade;
+            if (spacing >= target)
+            {
+                break;
+            }
+        }
+        const Vec2 low = ToWorld(view_, {0.0f, Height()});
+        const Vec2 high = ToWorld(view_, {Width(), 0.0f});
+        const Color grid = WithAlpha(palette::kFaint, 0.45f);
+        for (double x = std::ceil(low.x / spacing) * spacing; x <= high.x; x += spacing)
+        {
+            const float sx = At({x, 0.0}).x;
+            canvas_.Segment({sx, 0.0f}, {sx, Height()}, x == 0.0 ? palette::kFaint : grid, 1.0f);
+        }
+        for (double y = std::ceil(low.y / spacing) * spacing; y <= high.y; y += spacing)
+        {
+            const float sy = At({0.0, y}).y;
+            canvas_.Segment({0.0f, sy}, {Width(), sy}, y == 0.0 ? palette::kFaint : grid, 1.0f);
+        }
+    }
+
+    void ReserveBands()
+    {
+        if (Has(figure_, kLayerCaption))
+        {
+            labels_.Reserve({0.0f, 0.0f, Width(), layout_.sceneTop});
+        }
+        if (layout_.panelTop < Height())
+        {
+            labels_.Reserve({0.0f, layout_.panelTop, Width(), Height()});
+        }
+    }
+
+    // Every axis the full test could try: the face normals of both polygons (and the circle axes recorded).
+    void CandidateAxes()
+    {
+        canvas_.BeginGroup("axes");
+        const double reach = discRadius_ + kAxisGap / view_.zoom;
+        auto line = [&](Vec2 d) {
+            canvas_.Segment(At(discCenter_ - reach * d), At(discCenter_ + reach * d), palette::kFaint, 1.0f);
+        };
+        for (int s = 0; s < 2; ++s)
+        {
+            const Body& body = BodyOf(s);
+            if (body.shape.type == ShapeType::Polygon && body.shape.polygon.Count() <= 64)
+            {
+                const Rot q = body.Xf().q;
+                for (const Vec2& n : body.shape.polygon.normals)
+                {
+                    line(Rotate(q, n));
+                }
+            }
+        }
+        if (!study_.sweep)
+        {
+            for (const AxisTest& t : study_.trace.axes)
+            {
+                if (t.axis.kind != AxisKind::FaceNormal)
+                {
+                    line(t.direction);
+                }
+            }
+        }
+    }
+
+    void Shapes()
+    {
+        canvas_.BeginGroup("shapes");
+        for (size_t i = 0; i < scene_.bodies.size(); ++i)
+        {
+            const int index = static_cast<int>(i);
+            if (index == study_.bodyA || index == study_.bodyB)
+            {
+                continue;
+            }
+            const Body& body = scene_.bodies[i];
+            DrawShape(body.shape, body.Xf(), palette::kOther, 0.18f);
+        }
+        DrawShape(bodyA_.shape, bodyA_.Xf(), palette::kShapeA, 0.22f);
+        DrawShape(bodyB_.shape, bodyB_.Xf(), palette::kShapeB, 0.28f);
+    }
+
+    void DrawShape(const Shape& shape, const Transform& xf, Color color, float fill)
+    {
+        const std::vector<ScreenPoint> outline = ShapeOutline(view_, shape, xf);
+        if (outline.size() >= 3)
+        {
+            canvas_.FillConvex(outline.data(), static_cast<int>(outline.size()), WithAlpha(color, fill));
+        }
+        canvas_.Polyline(outline.data(), static_cast<int>(outline.size()), true, color, kOutline);
+        if (shape.type == ShapeType::Circle)
+        {
+            canvas_.FillCircle(At(TransformPoint(xf, shape.circle.center)), 2.5f, color);
+        }
+    }
+
+    void Normals()
+    {
+        canvas_.BeginGroup("normals");
+        for (int s = 0; s < 2; ++s)
+        {
+            const Body& body = BodyOf(s);
+            if (body.shape.type != ShapeType::Polygon)
+            {
+                continue;
+            }
+            const Transform xf = body.Xf();
+            const auto& poly = body.shape.polygon;
+            for (int i = 0; i < poly.Count(); ++i)
+            {
+                const Vec2 mid = TransformPoint(xf, poly.vertices[i] + 0.5 * poly.edges[i]);
+                const Vec2 n = Rotate(xf.q, poly.normals[i]);
+                const ScreenPoint a = At(mid);
+                Arrow(canvas_, a, {a.x + 22.0f * static_cast<float>(n.x), a.y - 22.0f * static_cast<float>(n.y)},
+                      InkOf(s), 1.5f, 7.0f);
+            }
+        }
+    }
+
+    // Velocity arrows and each moving shape's outline at t = 1.
+    void Motion()
+    {
+        canvas_.BeginGroup("swept");
+        for (int s = 0; s < 2; ++s)
+        {
+            const Body& body = BodyOf(s);
+            if (body.velocity == Vec2{})
+            {
+                continue;
+            }
+            // Where the shape would be at the end of the step; after a hit the ghost at impact says more.
+            if (study_.sweepResult.status != SweepStatus::Hit)
+            {
+                const Transform end = BodyTransformAt(body, 1.0);
+                DashedOutline(canvas_, ShapeOutline(view_, body.shape, end), WithAlpha(ColorOf(s), 0.55f), 1.2f,
+                              bounds_);
+            }
+            const Vec2 c = ShapeCenter(body.shape, body.Xf());
+            Arrow(canvas_, At(c), At(c + body.velocity), InkOf(s), 2.0f, 11.0f);
+            const ScreenPoint tip = At(c + body.velocity);
+            labels_.Place(tip, "t = 1", TextStyle::Label, InkOf(s), static_cast<float>(body.velocity.x),
+                          static_cast<float>(-body.velocity.y));
+        }
+    }
+
+    // The moving shapes at the time of impact, and at the figure's chosen time.
+    void Ghosts()
+    {
+        canvas_.BeginGroup("ghost");
+        const SweepResult& r = study_.sweepResult;
+        auto draw = [&](double t, float alpha, const std::string& label) {
+            for (int s = 0; s < 2; ++s)
+            {
+                const Body& body = BodyOf(s);
+                if (body.velocity == Vec2{})
+                {
+                    continue;
+                }
+                const Transform xf = BodyTransformAt(body, t);
+                const std::vector<ScreenPoint> outline = ShapeOutline(view_, body.shape, xf);
+                canvas_.FillConvex(outline.data(), static_cast<int>(outline.size()), WithAlpha(ColorOf(s), 0.10f));
+                DashedOutline(canvas_, outline, WithAlpha(InkOf(s), alpha), 1.8f, bounds_);
+                ScreenPoint top = outline.front();
+                for (const ScreenPoint& p : outline)
+                {
+                    top = p.y < top.y ? p : top;
+                }
+                labels_.Place(top, label, TextStyle::Label, InkOf(s), 0.0f, -1.0f, 3.0f);
+            }
+        };
+        if (r.status == SweepStatus::Hit)
+        {
+            draw(r.toi, 1.0f, "t = " + FormatNumber(r.toi));
+        }
+        if (figure_.time >= 0.0)
+        {
+            draw(figure_.time, 0.6f, "t = " + FormatNumber(figure_.time));
+        }
+    }
+
+    // Where the current axis comes from: the face (thick, with its normal) or the vertex-to-centre line.
+    void AxisSource(const AxisRef& ref, Color color)
+    {
+        if (ref.kind == AxisKind::FaceNormal && ref.shape >= 0)
+        {
+            const Body& body = BodyOf(ref.shape);
+            if (body.shape.type != ShapeType::Polygon)
+            {
+                return;
+            }
+            const auto& poly = body.shape.polygon;
+            const Transform xf = body.Xf();
+            const Vec2 v1 = TransformPoint(xf, poly.vertices[ref.index]);
+            const Vec2 v2 = TransformPoint(xf, poly.vertices[(ref.index + 1) % poly.Count()]);
+            canvas_.Segment(At(v1), At(v2), color, 4.0f);
+            const ScreenPoint mid = At(0.5 * (v1 + v2));
+            const Vec2 n = Rotate(xf.q, poly.normals[ref.index]);
+            Arrow(canvas_, mid, {mid.x + 30.0f * static_cast<float>(n.x), mid.y - 30.0f * static_cast<float>(n.y)},
+                  color, 2.0f, 9.0f);
+        }
+        else if (ref.kind == AxisKind::VertexToCenter && ref.shape >= 0)
+        {
+            const Body& poly = BodyOf(ref.shape);
+            const Body& circle = BodyOf(1 - ref.shape);
+            if (poly.shape.type != ShapeType::Polygon || circle.shape.type != ShapeType::Circle)
+            {
+                return;
+            }
+            const Vec2 v = TransformPoint(poly.Xf(), poly.shape.polygon.vertices[ref.index]);
+            const Vec2 c = TransformPoint(circle.Xf(), circle.shape.circle.center);
+            DashedSegment(canvas_, At(v), At(c), color, 2.0f, bounds_);
+            canvas_.FillCircle(At(v), 4.0f, color);
+        }
+        else if (ref.kind == AxisKind::CenterToCenter)
+        {
+            const Vec2 a = TransformPoint(bodyA_.Xf(), bodyA_.shape.circle.center);
+            const Vec2 b = TransformPoint(bodyB_.Xf(), bodyB_.shape.circle.center);
+            DashedSegment(canvas_, At(a), At(b), color, 2.0f, bounds_);
+        }
+    }
+
+    void AxisInScene()
+    {
+        canvas_.BeginGroup("projection");
+        const Vec2 d = axis_.direction;
+        const Vec2 base = AxisLineBase(points_, d, kAxisGap / view_.zoom);
+        const Vec2 n = AxisSide(d);
+        double lo = 0.0;
+        double hi = 0.0;
+        AxisLineSpan(axis_.minA, axis_.maxA, axis_.minB, axis_.maxB, lo, hi);
+        if (axis_.swept)
+        {
+            lo = std::min(lo, axis_.sweptMinB);
+            hi = std::max(hi, axis_.sweptMaxB);
+        }
+        const double pad = kLinePad / view_.zoom;
+        AxisSource(axis_.ref, palette::kInk);
+        Arrow(canvas_, At(Along(base, d, lo - pad)), At(Along(base, d, hi + pad)), palette::kMuted, 1.5f, 11.0f);
+        labels_.Place(At(Along(base, d, hi + pad)), "axis " + std::to_string(axis_.index + 1), TextStyle::Label,
+                      palette::kMuted, static_cast<float>(d.x), static_cast<float>(-d.y));
+
+        // Projectors: from each shape's extreme points down to the axis line.
+        const Transform xfA = bodyA_.Xf();
+        const Transform xfB = bodyB_.Xf();
+        Vec2 lowA, highA, lowB, highB;
+        Extremes(bodyA_.shape, xfA, d, lowA, highA);
+        Extremes(bodyB_.shape, xfB, d, lowB, highB);
+        const float ox = static_cast<float>(n.x);
+        const float oy = static_cast<float>(-n.y);
+        auto bar = [&](double lo, double hi, float offset, Color color, float thickness) {
+            ScreenPoint p = At(Along(base, d, lo));
+            ScreenPoint q = At(Along(base, d, hi));
+            p = {p.x - ox * offset, p.y - oy * offset};
+            q = {q.x - ox * offset, q.y - oy * offset};
+            canvas_.Segment(p, q, color, thickness);
+        };
+        auto projector = [&](Vec2 from, double value, float offset, Color color) {
+            ScreenPoint to = At(Along(base, d, value));
+            to = {to.x - ox * offset, to.y - oy * offset};
+            DashedSegment(canvas_, At(from), to, WithAlpha(color, 0.55f), 1.0f, bounds_, 4.0f, 4.0f);
+        };
+        projector(lowA, axis_.minA, 5.0f, palette::kShapeA);
+        projector(highA, axis_.maxA, 5.0f, palette::kShapeA);
+        projector(lowB, axis_.minB, -5.0f, palette::kShapeBInk);
+        projector(highB, axis_.maxB, -5.0f, palette::kShapeBInk);
+        if (axis_.swept)
+        {
+            bar(axis_.sweptMinB, axis_.sweptMaxB, -5.0f, WithAlpha(palette::kShapeB, 0.35f), kBar);
+        }
+        bar(axis_.minA, axis_.maxA, 5.0f, palette::kShapeA, kBar);
+        bar(axis_.minB, axis_.maxB, -5.0f, palette::kShapeB, kBar);
+
+        // The overlap or the gap, between the bars, labelled with its size.
+        const double inner0 = std::max(axis_.minA, axis_.minB);
+        const double inner1 = std::min(axis_.maxA, axis_.maxB);
+        const bool overlap = axis_.separation <= 0.0;
+        const Color mark = overlap ? palette::kOverlap : palette::kGap;
+        const double from = overlap ? inner0 : inner1;
+        const double to = overlap ? inner1 : inner0;
+        bar(from, to, 0.0f, mark, overlap ? 16.0f : 3.0f);
+        const ScreenPoint middle = At(Along(base, d, 0.5 * (from + to)));
+        const std::string text = overlap ? "overlap " + FormatNumber(-axis_.separation)
+                                         : "gap " + FormatNumber(axis_.separation);
+        labels_.Place({middle.x - ox * 14.0f, middle.y - oy * 14.0f}, text, TextStyle::Label,
+                      overlap ? 0x8E3F6CFFu : 0x006E50FFu, -ox, -oy, 4.0f);
+    }
+
+    // The separating line of a separating axis: perpendicular to it, through the middle of the gap.
+    void SeparatingLine()
+    {
+        canvas_.BeginGroup("exit");
+        const Vec2 d = axis_.direction;
+        const double lo = std::min(axis_.maxA, axis_.maxB);
+        const double hi = std::max(axis_.minA, axis_.minB);
+        const double middle = 0.5 * (lo + hi);
+        const Vec2 n = LeftPerp(d);
+        const Vec2 point = discCenter_ + (middle - Dot(discCenter_, d)) * d;
+        const double reach = discRadius_;
+        DashedSegment(canvas_, At(point - reach * n), At(point + reach * n), palette::kGap, 2.5f, bounds_, 10.0f, 6.0f);
+        const Vec2 end = n.y >= 0.0 ? point + reach * n : point - reach * n;
+        labels_.Place(At(end), "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f);
+    }
+
+    // The best axis so far (least overlap; for sweeps, the latest entry), when it is not the current one.
+    void BestSoFar()
+    {
+        int best = -1;
+        if (study_.sweep)
+        {
+            best = study_.sweepTrace.axes[static_cast<size_t>(axisIndex_)].latestEntry;
+        }
+        else
+        {
+            best = study_.trace.axes[static_cast<size_t>(axisIndex_)].best;
+        }
+        if (best < 0 || best == axisIndex_)
+        {
+            return;
+        }
+        canvas_.BeginGroup("best");
+        const AxisRef ref = study_.sweep ? study_.sweepTrace.axes[static_cast<size_t>(best)].axis
+                                         : study_.trace.axes[static_cast<size_t>(best)].axis;
+        AxisSource(ref, palette::kBest);
+    }
+
+    void Mtv()
+    {
+        const Manifold& m = study_.sweep ? study_.sweepResult.initial : study_.manifold;
+        const bool overlapping = study_.sweep ? study_.sweepResult.status == SweepStatus::Overlapping : m.overlap;
+        if (!overlapping)
+        {
+            return;
+        }
+        canvas_.BeginGroup("mtv");
+        const Vec2 shift = m.depth * m.normal;
+        Transform moved = bodyB_.Xf();
+        moved.p = moved.p + shift;
+        DashedOutline(canvas_, ShapeOutline(view_, bodyB_.shape, moved), palette::kShapeBInk, 1.8f, bounds_);
+        const Vec2 c = ShapeCenter(bodyB_.shape, bodyB_.Xf());
+        const ScreenPoint from = At(c);
+        ScreenPoint to = At(c + shift);
+        // A depth too small to see still gets a visible arrow in its direction.
+        const float dx = to.x - from.x;
+        const float dy = to.y - from.y;
+        if (dx * dx + dy * dy < 400.0f)
+        {
+            to = {from.x + 20.0f * static_cast<float>(m.normal.x), from.y - 20.0f * static_cast<float>(m.normal.y)};
+        }
+        Arrow(canvas_, from, to, palette::kResult, 3.0f, 12.0f);
+        labels_.Place(to, "MTV " + FormatNumber(m.depth), TextStyle::Heading, palette::kResult,
+                      static_cast<float>(m.normal.x), static_cast<float>(-m.normal.y));
+    }
+
+    void Contacts()
+    {
+        canvas_.BeginGroup("contacts");
+        const ContactPoint* points = nullptr;
+        int count = 0;
+        if (study_.sweep)
+        {
+            if (study_.sweepResult.status == SweepStatus::Hit)
+            {
+                points = study_.sweepResult.contacts;
+                count = study_.sweepResult.contactCount;
+            }
+            else if (study_.sweepResult.status == SweepStatus::Overlapping)
+            {
+                points = study_.sweepResult.initial.contacts;
+                count = study_.sweepResult.initial.contactCount;
+            }
+        }
+        else
+        {
+            points = study_.manifold.contacts;
+            count = study_.manifold.contactCount;
+            if (study_.trace.hasClip)
+            {
+                ClipPlanes(study_.trace.clip);
+            }
+        }
+        for (int i = 0; i < count; ++i)
+        {
+            const ScreenPoint p = At(points[i].point);
+            canvas_.FillCircle(p, 5.5f, palette::kResult);
+            canvas_.Circle(p, 5.5f, palette::kBackground, 1.5f);
+            labels_.Place(p, "c" + std::to_string(i + 1), TextStyle::Label, palette::kResult, 1.0f, -1.0f);
+        }
+    }
+
+    // The reference face, the incident edge and the two side planes that clip it.
+    void ClipPlanes(const ClipTrace& clip)
+    {
+        const int referenceShape = clip.reference.shape;
+        const ScreenPoint r1 = At(clip.referenceV1);
+        const ScreenPoint r2 = At(clip.referenceV2);
+        const Vec2 n = clip.referenceNormal;
+        const double reach = 0.5 * discRadius_;
+        for (const Vec2& v : {clip.referenceV1, clip.referenceV2})
+        {
+            DashedSegment(canvas_, At(v - reach * n), At(v + 0.3 * reach * n), palette::kMuted, 1.2f, bounds_, 5.0f,
+                          4.0f);
+        }
+        canvas_.Segment(r1, r2, InkOf(referenceShape), 5.0f);
+        labels_.Place(At(0.5 * (clip.referenceV1 + clip.referenceV2)), "reference face", TextStyle::Label,
+                      InkOf(referenceShape), static_cast<float>(n.x), static_cast<float>(-n.y), 10.0f);
+        const ScreenPoint i1 = At(clip.incidentV1);
+        const ScreenPoint i2 = At(clip.incidentV2);
+        canvas_.Segment(i1, i2, InkOf(clip.incidentShape), 5.0f);
+        canvas_.Segment(i1, i2, palette::kBackground, 1.5f);
+        labels_.Place(At(0.5 * (clip.incidentV1 + clip.incidentV2)), "incident edge", TextStyle::Label,
+                      InkOf(clip.incidentShape), static_cast<float>(-n.x), static_cast<float>(n.y), 10.0f);
+    }
+
+    void Labels()
+    {
+        canvas_.BeginGroup("labels");
+        for (int s = 0; s < 2; ++s)
+        {
+            const Body& body = BodyOf(s);
+            const Transform xf = body.Xf();
+            if (body.shape.type == ShapeType::Polygon && body.shape.polygon.Count() <= 24)
+            {
+                const auto& poly = body.shape.polygon;
+                const Vec2 centroid = TransformPoint(xf, poly.centroid);
+                for (int i = 0; i < poly.Count(); ++i)
+                {
+                    const Vec2 v = TransformPoint(xf, poly.vertices[i]);
+                    const Vec2 out = v - centroid;
+                    labels_.Place(At(v), std::to_string(i), TextStyle::Label, InkOf(s), static_cast<float>(out.x),
+                                  static_cast<float>(-out.y), 4.0f);
+                }
+                for (int i = 0; i < poly.Count(); ++i)
+                {
+                    const Vec2 mid = TransformPoint(xf, poly.vertices[i] + 0.5 * poly.edges[i]);
+                    const Vec2 n = Rotate(xf.q, poly.normals[i]);
+                    labels_.Place(At(mid), "e" + std::to_string(i), TextStyle::Label,
+                                  WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x), static_cast<float>(-n.y), 5.0f);
+                }
+            }
+        }
+        for (int s = 0; s < 2; ++s)
+        {
+            const Body& body = BodyOf(s);
+            labels_.Place(At(ShapeCenter(body.shape, body.Xf())), body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f,
+                          -7.0f);
+        }
+    }
+
+    // The number line: both intervals (and for sweeps B's swept extent and a time bar), with their values.
+    void Panel()
+    {
+        canvas_.BeginGroup("panel");
+        const float top = layout_.panelTop;
+        canvas_.FillRect({0.0f, top}, {Width(), Height()}, palette::kPanel);
+        canvas_.Segment({0.0f, top}, {Width(), top}, palette::kFaint, 1.0f);
+        if (!hasAxis_)
+        {
+            return;
+        }
+        const float left = 24.0f;
+        const float nameWidth =
+            std::max(canvas_.MeasureText(bodyA_.name, TextStyle::Heading).x,
+                     canvas_.MeasureText(bodyB_.name, TextStyle::Heading).x) + 14.0f;
+        const float lineLeft = left + nameWidth;
+        const float lineRight = Width() - 28.0f;
+        std::string title = verdict_ ? "deciding axis " : "axis ";
+        title += std::to_string(axis_.index + 1) + ": projections on " +
+                 DescribeAxis(scene_, study_, axis_.ref) + " (number line)";
+        canvas_.Text({left, top + 8.0f}, title, TextStyle::Label, palette::kMuted);
+        if (axis_.skipped)
+        {
+            canvas_.Text({left, top + 36.0f}, "skipped: parallel to an axis already tested", TextStyle::Body,
+                         palette::kMuted);
+            return;
+        }
+        double lo = std::min(axis_.minA, axis_.minB);
+        double hi = std::max(axis_.maxA, axis_.maxB);
+        if (axis_.swept)
+        {
+            lo = std::min(lo, axis_.sweptMinB);
+            hi = std::max(hi, axis_.sweptMaxB);
+        }
+        const double pad = 0.06 * std::max(hi - lo, 1e-12);
+        lo -= pad;
+        hi += pad;
+        auto x = [&](double v) { return static_cast<float>(lineLeft + (v - lo) / (hi - lo) * (lineRight - lineLeft)); };
+        const float rowA = top + 42.0f;
+        const float rowB = top + 78.0f;
+        canvas_.Text({left, rowA - 9.0f}, bodyA_.name, TextStyle::Heading, palette::kShapeA);
+        canvas_.Text({left, rowB - 9.0f}, bodyB_.name, TextStyle::Heading, palette::kShapeBInk);
+
+        // Overlap or gap band behind the bars.
+        const double olo = std::max(axis_.minA, axis_.minB);
+        const double ohi = std::min(axis_.maxA, axis_.maxB);
+        const bool overlap = axis_.separation <= 0.0;
+        const float bandLo = x(std::min(olo, ohi));
+        const float bandHi = std::max(x(std::max(olo, ohi)), bandLo + 1.0f);
+        canvas_.FillRect({bandLo, rowA - 12.0f}, {bandHi, rowB + 12.0f},
+                         WithAlpha(overlap ? palette::kOverlap : palette::kGap, 0.28f));
+        const std::string amount = overlap ? "overlap " + FormatNumber(-axis_.separation)
+                                           : "gap " + FormatNumber(axis_.separation);
+        const ScreenPoint amountSize = canvas_.MeasureText(amount, TextStyle::Label);
+        const float amountX = std::clamp(0.5f * (bandLo + bandHi) - 0.5f * amountSize.x, lineLeft,
+                                         lineRight - amountSize.x);
+        canvas_.Text({amountX, 0.5f * (rowA + rowB) - 7.0f}, amount, TextStyle::Label,
+                     overlap ? 0x8E3F6CFFu : 0x006E50FFu);
+
+        if (axis_.swept)
+        {
+            canvas_.Segment({x(axis_.sweptMinB), rowB}, {x(axis_.sweptMaxB), rowB}, WithAlpha(palette::kShapeB, 0.35f),
+                            12.0f);
+        }
+        IntervalRow(x(axis_.minA), x(axis_.maxA), rowA, axis_.minA, axis_.maxA, palette::kShapeA, palette::kShapeA,
+                    true);
+        IntervalRow(x(axis_.minB), x(axis_.maxB), rowB, axis_.minB, axis_.maxB, palette::kShapeB, palette::kShapeBInk,
+                    false);
+        if (axis_.swept)
+        {
+            TimeBar(top + 128.0f, lineLeft, lineRight);
+        }
+    }
+
+    void IntervalRow(float x0, float x1, float y, double v0, double v1, Color color, Color ink, bool above)
+    {
+        canvas_.Segment({x0, y}, {x1, y}, color, 8.0f);
+        canvas_.Segment({x0, y - 7.0f}, {x0, y + 7.0f}, ink, 1.5f);
+        canvas_.Segment({x1, y - 7.0f}, {x1, y + 7.0f}, ink, 1.5f);
+        const std::string s0 = FormatNumber(v0);
+        const std::string s1 = FormatNumber(v1);
+        const ScreenPoint size0 = canvas_.MeasureText(s0, TextStyle::Label);
+        const float ty = above ? y - 9.0f - size0.y : y + 9.0f;
+        // End values sit outside their bar ends so that the two never collide.
+        canvas_.Text({x0 - size0.x - 3.0f, ty}, s0, TextStyle::Label, ink);
+        canvas_.Text({x1 + 3.0f, ty}, s1, TextStyle::Label, ink);
+    }
+
+    // t from 0 to 1: this axis's entry and exit, and the window (latest entry, earliest exit) so far.
+    void TimeBar(float y, float left, float right)
+    {
+        canvas_.BeginGroup("timebar");
+        canvas_.Text({24.0f, y - 8.0f}, "time", TextStyle::Heading, palette::kMuted);
+        auto x = [&](double t) { return static_cast<float>(left + std::clamp(t, -0.04, 1.04) * (right - left)); };
+        canvas_.Segment({x(0.0), y}, {x(1.0), y}, palette::kMuted, 2.0f);
+        for (double t : {0.0, 0.5, 1.0})
+        {
+            canvas_.Segment({x(t), y - 5.0f}, {x(t), y + 5.0f}, palette::kMuted, 1.5f);
+            const std::string text = t == 0.0 ? "t = 0" : (t == 1.0 ? "1" : "0.5");
+            const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
+            canvas_.Text({x(t) - 0.5f * size.x, y + 8.0f}, text, TextStyle::Label, palette::kMuted);
+        }
+        // The common window of all axes so far: a hit needs it to be non-empty and to start within [0, 1].
+        const double w0 = std::max(axis_.windowEntry, 0.0);
+        const double w1 = std::min(axis_.windowExit, 1.0);
+        if (w0 <= w1 && axis_.windowEntry <= 1.0)
+        {
+            canvas_.FillRect({x(w0), y - 9.0f}, {std::max(x(w1), x(w0) + 2.0f), y + 1.0f},
+                             WithAlpha(palette::kOverlap, 0.45f));
+        }
+        auto marker = [&](double t, const std::string& name, bool up) {
+            if (std::isinf(t))
+            {
+                const std::string text = name + " never";
+                const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
+                canvas_.Text({right - size.x, up ? y - 10.0f - size.y : y + 22.0f}, text, TextStyle::Label,
+                             palette::kInk);
+                return;
+            }
+            const bool inside = t >= -0.04 && t <= 1.04;
+            const float px = x(t);
+            const float dir = up ? -1.0f : 1.0f;
+            const ScreenPoint tri[3] = {{px, y}, {px - 5.0f, y + dir * 9.0f}, {px + 5.0f, y + dir * 9.0f}};
+            canvas_.FillConvex(tri, 3, palette::kInk);
+            std::string text = name + " " + (std::isinf(t) ? "never" : FormatNumber(t));
+            if (!inside)
+            {
+                text += t < 0.0 ? " (before)" : " (after)";
+            }
+            const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
+            const float tx = std::clamp(px - 0.5f * size.x, left - 40.0f, Width() - size.x - 4.0f);
+            canvas_.Text({tx, up ? y - 10.0f - size.y : y + 22.0f}, text, TextStyle::Label, palette::kInk);
+        };
+        if (!std::isinf(axis_.entry) || axis_.separation > 0.0)
+        {
+            marker(axis_.entry, "entry", true);
+        }
+        marker(axis_.exit, "exit", false);
+        if (verdict_ && study_.sweepResult.status == SweepStatus::Hit)
+        {
+            const float px = x(study_.sweepResult.toi);
+            canvas_.Segment({px, y - 12.0f}, {px, y + 12.0f}, palette::kResult, 3.0f);
+        }
+    }
+
+    void Caption()
+    {
+        canvas_.BeginGroup("caption");
+        const std::string text =
+            figure_.caption.empty() ? DescribeStep(scene_, study_, figure_.step) : figure_.caption;
+        // Greedy word wrap to the band width.
+        std::vector<std::string> lines;
+        std::string line;
+        size_t start = 0;
+        const float maxWidth = Width() - 2.0f * kPad - 4.0f;
+        while (start < text.size())
+        {
+            size_t end = text.find(' ', start);
+            if (end == std::string::npos)
+            {
+                end = text.size();
+            }
+            const std::string word = text.substr(start, end - start);
+            const std::string candidate = line.empty() ? word : line + " " + word;
+            if (!line.empty() && canvas_.MeasureText(candidate, TextStyle::Body).x > maxWidth)
+            {
+                lines.push_back(line);
+                line = word;
+            }
+            else
+            {
+                line = candidate;
+            }
+            start = end + 1;
+        }
+        if (!line.empty())
+        {
+            lines.push_back(line);
+        }
+        const float bottom = std::max(layout_.sceneTop, kPad + kLineHeight * static_cast<float>(lines.size()) + 6.0f);
+        canvas_.FillRect({0.0f, 0.0f}, {Width(), bottom}, palette::kPanel);
+        canvas_.Segment({0.0f, bottom}, {Width(), bottom}, palette::kFaint, 1.0f);
+        float y = kPad - 2.0f;
+        for (const std::string& l : lines)
+        {
+            canvas_.Text({kPad, y}, l, TextStyle::Body, palette::kInk);
+            y += kLineHeight;
+        }
+    }
+
+    Canvas& canvas_;
+    const Scene& scene_;
+    const PairStudy& study_;
+    const Figure& figure_;
+    const View& view_;
+    FigureLayout layout_;
+    LabelPlacer labels_;
+    const Body& bodyA_;
+    const Body& bodyB_;
+    ScreenRect bounds_{};
+    std::vector<std::pair<Vec2, double>> points_;
+    Vec2 discCenter_{};
+    double discRadius_ = 1.0;
+    bool verdict_ = false;
+    int axisIndex_ = -1;
+    bool hasAxis_ = false;
+    ShownAxis axis_{};
+};
+
+} // namespace
+
+LayerMask LayerFromName(std::string_view name)
+{
+    const std::vector<std::string>& names = ViewLayerNames();
+    for (size_t i = 0; i < names.size(); ++i)
+    {
+        if (names[i] == name)
+        {
+            return 1u << i;
+        }
+    }
+    return 0;
+}
+
+LayerMask LayersFromNames(const std::vector<std::string>& names)
+{
+    LayerMask mask = 0;
+    for (const std::string& name : names)
+    {
+        mask |= LayerFromName(name);
+    }
+    return mask;
+}
+
+FigureLayout LayoutFigure(const PairStudy& study, LayerMask layers, int width, int height)
+{
+    (void)width;
+    FigureLayout layout;
+    const float h = static_cast<float>(height);
+    layout.sceneTop = (layers & kLayerCaption) ? kPad + kLineHeight * kCaptionLines + 6.0f : 0.0f;
+    const bool panel =
+        study.AxisCount() > 0 && ((layers & kLayerProjection) || (study.sweep && (layers & kLayerSwept)));
+    const float panelHeight = panel ? (study.sweep ? kSweepPanel : kStaticPanel) : 0.0f;
+    // Small images keep at least half their height for the scene.
+    layout.panelTop = panel ? std::max(h - panelHeight, layout.sceneTop + 0.5f * (h - layout.sceneTop)) : h;
+    layout.sceneBottom = layout.panelTop;
+    return layout;
+}
+
+View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int width, int height)
+{
+    const std::vector<std::pair<Vec2, double>> points = PairPoints(scene, study);
+    const FigureLayout layout = LayoutFigure(study, layers, width, height);
+    // Every axis line the steps draw, so that the camera frames them all and stays put while stepping.
+    std::vector<Vec2> directions;
+    std::vector<std::pair<double, double>> spans;
+    if (layers & kLayerProjection)
+    {
+        for (int i = 0; i < study.AxisCount(); ++i)
+        {
+            ShownAxis axis = study.sweep ? FromSweep(study, i) : FromStatic(study, i);
+            if (axis.skipped)
+            {
+                continue;
+            }
+            double lo = 0.0;
+            double hi = 0.0;
+            AxisLineSpan(axis.minA, axis.maxA, axis.minB, axis.maxB, lo, hi);
+            if (axis.swept)
+            {
+                lo = std::min(lo, axis.sweptMinB);
+                hi = std::max(hi, axis.sweptMaxB);
+            }
+            directions.push_back(axis.direction);
+            spans.push_back({lo, hi});
+        }
+    }
+    const float areaWidth = static_cast<float>(width);
+    const float areaHeight = layout.sceneBottom - layout.sceneTop;
+    View view;
+    view.width = width;
+    view.height = height;
+    view.zoom = 1.0;
+    // The line gap and padding are in pixels, so the box depends on the zoom: two refinements settle it.
+    for (int pass = 0; pass < 3; ++pass)
+    {
+        Vec2 low{INFINITY, INFINITY};
+        Vec2 high{-INFINITY, -INFINITY};
+        auto add = [&](Vec2 p, double r) {
+            low = {std::min(low.x, p.x - r), std::min(low.y, p.y - r)};
+            high = {std::max(high.x, p.x + r), std::max(high.y, p.y + r)};
+        };
+        for (const auto& [p, r] : points)
+        {
+            add(p, r);
+        }
+        if (pass > 0)
+        {
+            const double pad = (kLinePad + 12.0) / view.zoom;
+            for (size_t i = 0; i < directions.size(); ++i)
+            {
+                const Vec2 d = directions[i];
+                const Vec2 base = AxisLineBase(points, d, kAxisGap / view.zoom);
+                add(base + (spans[i].first - pad) * d, 6.0 / view.zoom);
+                add(base + (spans[i].second + pad) * d, 6.0 / view.zoom);
+            }
+        }
+        const double sizeX = std::max(high.x - low.x, 1e-12);
+        const double sizeY = std::max(high.y - low.y, 1e-12);
+        const double room = 2.0 * kFitMargin;
+        view.zoom = std::min((areaWidth - room) / sizeX, (areaHeight - room) / sizeY);
+        view.zoom = std::max(view.zoom, 1e-9);
+        const Vec2 middle = 0.5 * (low + high);
+        const double offsetY = 0.5 * (layout.sceneTop + layout.sceneBottom) - 0.5 * height;
+        view.center = {middle.x, middle.y + offsetY / view.zoom};
+    }
+    return view;
+}
+
+void PaintFigure(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure)
+{
+    Painter painter(canvas, scene, study, figure);
+    painter.Paint();
+}
+
+} // namespace satviz

@@ -1,0 +1,357 @@
+// SPDX-License-Identifier: MIT
+// satviz-render: scene files to PNG figures, headless. OSMesa (software OpenGL, no display) renders the painter's
+// ImGui draw lists through the ImGui OpenGL2 backend; stb_image_write encodes the PNG. This program links OSMesa
+// and never libGL: the app, which draws in a window, is a separate executable.
+#include <satviz/render/describe.h>
+#include <satviz/render/figure.h>
+#include <satviz/render/imgui_canvas.h>
+#include <satviz/render/png_file.h>
+#include <satviz/scene.h>
+
+#include <CLI/CLI.hpp>
+#include <GL/osmesa.h>
+#include <backends/imgui_impl_opengl2.h>
+#include <imgui.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+/// One OSMesa context and one ImGui context, shared by every figure of the run.
+class HeadlessRenderer
+{
+  public:
+    ~HeadlessRenderer()
+    {
+        if (imgui_ != nullptr)
+        {
+            ImGui_ImplOpenGL2_Shutdown();
+            ImGui::DestroyContext(imgui_);
+        }
+        if (context_ != nullptr)
+        {
+            OSMesaDestroyContext(context_);
+        }
+    }
+
+    bool Init(std::string& error)
+    {
+        const int attributes[] = {OSMESA_FORMAT,  OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS, 0,
+                                  OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
+        context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+        if (context_ == nullptr)
+        {
+            error = "OSMesa: cannot create an OpenGL context";
+            return false;
+        }
+        if (!Resize(64, 64))
+        {
+            error = "OSMesa: cannot make the context current";
+            return false;
+        }
+        IMGUI_CHECKVERSION();
+        imgui_ = ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;
+        io.LogFilename = nullptr;
+        io.DeltaTime = 1.0f / 60.0f;
+        if (!satviz::AddFigureFonts(*io.Fonts, fonts_, error))
+        {
+            return false;
+        }
+        if (!ImGui_ImplOpenGL2_Init())
+        {
+            error = "ImGui: the OpenGL2 backend did not initialise";
+            return false;
+        }
+        return true;
+    }
+
+    /// Paints one figure and reads it back as RGB rows, bottom row first.
+    bool Render(const satviz::Scene& scene, const satviz::FigureSetup& setup, std::vector<unsigned char>& rgb,
+                std::string& error)
+    {
+        const int width = setup.figure.view.width;
+        const int height = setup.figure.view.height;
+        if ((width != width_ || height != height_) && !Resize(width, height))
+        {
+            error = "OSMesa: cannot resize the frame buffer";
+            return false;
+        }
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+        ImGui_ImplOpenGL2_NewFrame();
+        ImGui::NewFrame();
+        satviz::ImDrawListCanvas canvas(ImGui::GetBackgroundDrawList(), ImGui::GetForegroundDrawList(), fonts_);
+        satviz::PaintFigure(canvas, scene, setup.study, setup.figure);
+        ImGui::Render();
+        if (canvas.Dropped() > 0)
+        {
+            error = "the figure needs more than two draw lists of vertices (" + std::to_string(canvas.Dropped()) +
+                    " drawing calls dropped); draw fewer layers or simpler shapes";
+            return false;
+        }
+        glViewport(0, 0, width, height);
+        glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+        glFinish();
+        rgb.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+        return true;
+    }
+
+  private:
+    bool Resize(int width, int height)
+    {
+        buffer_.assign(static_cast<size_t>(width) * static_cast<size_t>(height) * 4, 0);
+        if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width, height))
+        {
+            return false;
+        }
+        width_ = width;
+        height_ = height;
+        return true;
+    }
+
+    OSMesaContext context_ = nullptr;
+    ImGuiContext* imgui_ = nullptr;
+    satviz::FigureFonts fonts_;
+    std::vector<unsigned char> buffer_;
+    int width_ = 0;
+    int height_ = 0;
+};
+
+struct Job
+{
+    std::string scene;
+    int step = -1; // -1: the scene's own choice
+    std::string output;
+};
+
+bool ParseSize(const std::string& text, int& width, int& height)
+{
+    int consumed = 0;
+    if (std::sscanf(text.c_str(), "%dx%d%n", &width, &height, &consumed) != 2 ||
+        consumed != static_cast<int>(text.size()))
+    {
+        return false;
+    }
+    return width >= 16 && height >= 16 && width <= satviz::kMaxViewSize && height <= satviz::kMaxViewSize;
+}
+
+bool ParseLayers(const std::string& text, satviz::LayerMask& mask, std::string& error)
+{
+    mask = 0;
+    size_t start = 0;
+    while (start <= text.size())
+    {
+        size_t end = text.find(',', start);
+        if (end == std::string::npos)
+        {
+            end = text.size();
+        }
+        const std::string name = text.substr(start, end - start);
+        if (name == "all")
+        {
+            mask |= satviz::kAllLayers;
+        }
+        else if (name == "default")
+        {
+            mask |= satviz::kDefaultLayers;
+        }
+        else if (const satviz::LayerMask layer = satviz::LayerFromName(name))
+        {
+            mask |= layer;
+        }
+        else
+        {
+            std::string known;
+            for (const std::string& n : satviz::ViewLayerNames())
+            {
+                known += n + ", ";
+            }
+            error = "--layers: unknown layer \"" + name + "\" (known: " + known + "all, default)";
+            return false;
+        }
+        start = end + 1;
+    }
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"satviz-render: draws scene files and each step of their SAT trace to PNG, without a display"};
+    std::vector<std::string> scenes;
+    std::string output;
+    int step = -1;
+    bool allSteps = false;
+    std::string size;
+    std::string layers;
+    bool quiet = false;
+    app.add_option("scenes", scenes, "Scene files (JSON)")->required();
+    app.add_option("-o,--output", output,
+                   "Output: a .png file for a single figure, else a directory (created if missing) that receives "
+                   "SCENE.png, or SCENE-stepN.png with --all-steps")
+        ->required();
+    auto* stepOption = app.add_option("--step", step, "Trace step to draw (0 = first axis; the last is the verdict)")
+                           ->check(CLI::NonNegativeNumber);
+    app.add_flag("--all-steps", allSteps, "One figure per trace step")->excludes(stepOption);
+    app.add_option("--size", size, "Image size WxH in pixels (default: the scene's, else 800x600)");
+    app.add_option("--layers", layers,
+                   "Comma-separated layers: shapes, labels, normals, axes, projection, exit, best, mtv, contacts, "
+                   "swept, ghost, caption, or all, default");
+    app.add_flag("-q,--quiet", quiet, "No progress lines, only errors and the summary");
+    CLI11_PARSE(app, argc, argv);
+
+    satviz::FigureOptions options;
+    if (!size.empty() && !ParseSize(size, options.width, options.height))
+    {
+        std::fprintf(stderr, "satviz-render: --size: expected WxH with sides from 16 to %d, got \"%s\"\n",
+                     satviz::kMaxViewSize, size.c_str());
+        return 2;
+    }
+    if (!layers.empty())
+    {
+        std::string error;
+        if (!ParseLayers(layers, options.layers, error))
+        {
+            std::fprintf(stderr, "satviz-render: %s\n", error.c_str());
+            return 2;
+        }
+        options.setLayers = true;
+    }
+    const bool singleFile = std::filesystem::path(output).extension() == ".png";
+    if (singleFile && (scenes.size() != 1 || allSteps))
+    {
+        std::fprintf(stderr, "satviz-render: -o %s: a .png output takes exactly one figure; give a directory for "
+                             "several scenes or --all-steps\n",
+                     output.c_str());
+        return 2;
+    }
+    if (!singleFile)
+    {
+        std::error_code code;
+        std::filesystem::create_directories(output, code);
+        if (code)
+        {
+            std::fprintf(stderr, "satviz-render: %s: cannot create the directory (%s)\n", output.c_str(),
+                         code.message().c_str());
+            return 1;
+        }
+    }
+
+    HeadlessRenderer renderer;
+    std::string error;
+    if (!renderer.Init(error))
+    {
+        std::fprintf(stderr, "satviz-render: %s\n", error.c_str());
+        return 1;
+    }
+
+    const auto start = Clock::now();
+    int written = 0;
+    int failedScenes = 0;
+    double paintAndGl = 0.0;
+    double png = 0.0;
+    std::vector<unsigned char> rgb;
+    for (size_t s = 0; s < scenes.size(); ++s)
+    {
+        const std::string& file = scenes[s];
+        const satviz::SceneResult loaded = satviz::LoadScene(file);
+        if (!loaded.Ok())
+        {
+            std::fprintf(stderr, "satviz-render: %s\n", loaded.error.c_str());
+            ++failedScenes;
+            continue;
+        }
+        satviz::FigureOptions first = options;
+        if (step >= 0)
+        {
+            first.setStep = true;
+            first.step = step;
+        }
+        satviz::FigureSetup setup = satviz::SetUpFigure(loaded.scene, first);
+        if (!setup.Ok())
+        {
+            std::fprintf(stderr, "satviz-render: %s: %s\n", file.c_str(), setup.error.c_str());
+            ++failedScenes;
+            continue;
+        }
+        std::vector<int> steps;
+        if (allSteps)
+        {
+            for (int k = 0; k < setup.study.StepCount(); ++k)
+            {
+                steps.push_back(k);
+            }
+        }
+        else
+        {
+            steps.push_back(setup.figure.step);
+        }
+        const std::string stem = std::filesystem::path(file).stem().string();
+        bool sceneFailed = false;
+        for (int k : steps)
+        {
+            setup.figure.step = k;
+            const std::string path =
+                singleFile ? output
+                           : (std::filesystem::path(output) /
+                              (allSteps ? stem + "-step" + std::to_string(k) + ".png" : stem + ".png"))
+                                 .string();
+            const auto t0 = Clock::now();
+            if (!renderer.Render(loaded.scene, setup, rgb, error))
+            {
+                std::fprintf(stderr, "satviz-render: %s: %s\n", file.c_str(), error.c_str());
+                sceneFailed = true;
+                break;
+            }
+            const auto t1 = Clock::now();
+            if (!satviz::WritePngFile(path, rgb, setup.figure.view.width, setup.figure.view.height, true, error))
+            {
+                std::fprintf(stderr, "satviz-render: %s\n", error.c_str());
+                sceneFailed = true;
+                break;
+            }
+            const auto t2 = Clock::now();
+            if (written > 0)
+            {
+                paintAndGl += Seconds(t1 - t0);
+                png += Seconds(t2 - t1);
+            }
+            ++written;
+            if (!quiet && (scenes.size() > 1 || steps.size() > 1))
+            {
+                std::fprintf(stderr, "satviz-render: [%zu/%zu] %s\n", s + 1, scenes.size(), path.c_str());
+            }
+        }
+        failedScenes += sceneFailed ? 1 : 0;
+    }
+    const double total = Seconds(Clock::now() - start);
+    const int timed = written > 1 ? written - 1 : 0;
+    std::fprintf(stderr, "satviz-render: %d figure%s written in %.2f s", written, written == 1 ? "" : "s", total);
+    if (timed > 0)
+    {
+        std::fprintf(stderr, "; after the first, per figure: %.1f ms drawing, %.1f ms PNG, %.1f ms in all",
+                     1e3 * paintAndGl / timed, 1e3 * png / timed, 1e3 * (paintAndGl + png) / timed);
+    }
+    if (failedScenes > 0)
+    {
+        std::fprintf(stderr, "; %d of %zu scene%s failed", failedScenes, scenes.size(), scenes.size() == 1 ? "" : "s");
+    }
+    std::fprintf(stderr, "\n");
+    return failedScenes > 0 ? 1 : 0;
+}
