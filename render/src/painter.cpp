@@ -464,7 +464,7 @@ class Painter
             const Vec2 c = ShapeCenter(body.shape, body.Xf());
             Arrow(canvas_, At(c), At(c + body.velocity), InkOf(s), 2.0f, 11.0f);
             const ScreenPoint tip = At(c + body.velocity);
-            labels_.Place(tip, "t = 1", TextStyle::Label, InkOf(s), static_cast<float>(body.velocity.x),
+            labels_.Place(tip, "v", TextStyle::Heading, InkOf(s), static_cast<float>(body.velocity.x),
                           static_cast<float>(-body.velocity.y));
         }
     }
@@ -748,14 +748,22 @@ class Painter
             {
                 const auto& poly = body.shape.polygon;
                 const Vec2 centroid = TransformPoint(xf, poly.centroid);
-                for (int i = 0; i < poly.Count(); ++i)
+                // Numbers crowd a shape only a few dozen pixels wide: they are left out there.
+                double extent = 0.0;
+                for (const Vec2& v : poly.vertices)
+                {
+                    extent = std::max(extent, Length(v - poly.centroid) * view_.zoom);
+                }
+                const bool vertexNumbers = extent >= 45.0;
+                const bool edgeNumbers = extent >= 70.0 && poly.Count() <= 16;
+                for (int i = 0; vertexNumbers && i < poly.Count(); ++i)
                 {
                     const Vec2 v = TransformPoint(xf, poly.vertices[i]);
                     const Vec2 out = v - centroid;
                     labels_.Place(At(v), std::to_string(i), TextStyle::Label, InkOf(s), static_cast<float>(out.x),
                                   static_cast<float>(-out.y), 4.0f);
                 }
-                for (int i = 0; i < poly.Count(); ++i)
+                for (int i = 0; edgeNumbers && i < poly.Count(); ++i)
                 {
                     const Vec2 mid = TransformPoint(xf, poly.vertices[i] + 0.5 * poly.edges[i]);
                     const Vec2 n = Rotate(xf.q, poly.normals[i]);
@@ -882,6 +890,18 @@ class Painter
             canvas_.FillRect({x(w0), y - 9.0f}, {std::max(x(w1), x(w0) + 2.0f), y + 1.0f},
                              WithAlpha(palette::kOverlap, 0.45f));
         }
+        else if (axis_.windowExit < axis_.windowEntry && axis_.windowExit <= 1.0)
+        {
+            // Some axis parts before another meets: the shapes never overlap on all axes at once.
+            const float a = x(axis_.windowExit);
+            const float b = std::max(x(axis_.windowEntry), a + 2.0f);
+            canvas_.FillRect({a, y - 3.0f}, {b, y + 3.0f}, WithAlpha(palette::kResult, 0.55f));
+            const std::string text = "no common time: exit " + FormatNumber(axis_.windowExit) + " < entry " +
+                                     FormatNumber(axis_.windowEntry);
+            const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
+            canvas_.Text({std::clamp(0.5f * (a + b) - 0.5f * size.x, left, right - size.x), y + 22.0f}, text,
+                         TextStyle::Label, 0xA04000FFu);
+        }
         auto marker = [&](double t, const std::string& name, bool up) {
             if (std::isinf(t))
             {
@@ -909,7 +929,12 @@ class Painter
         {
             marker(axis_.entry, "entry", true);
         }
-        marker(axis_.exit, "exit", false);
+        const bool noCommonTime = !(w0 <= w1 && axis_.windowEntry <= 1.0) && axis_.windowExit < axis_.windowEntry &&
+                                  axis_.windowExit <= 1.0;
+        if (!(noCommonTime && std::isinf(axis_.exit)))
+        {
+            marker(axis_.exit, "exit", false);
+        }
         if (verdict_ && study_.sweepResult.status == SweepStatus::Hit)
         {
             const float px = x(study_.sweepResult.toi);
@@ -1025,6 +1050,25 @@ View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int
 {
     const std::vector<std::pair<Vec2, double>> points = PairPoints(scene, study);
     const FigureLayout layout = LayoutFigure(study, layers, width, height);
+    // B moved out by the minimum translation vector.
+    std::vector<std::pair<Vec2, double>> moved;
+    if ((layers & kLayerMtv) && !study.sweep && study.manifold.overlap)
+    {
+        Body shifted = scene.bodies[static_cast<size_t>(study.bodyB)];
+        shifted.position = shifted.position + study.manifold.depth * study.manifold.normal;
+        const Transform xf = shifted.Xf();
+        if (shifted.shape.type == ShapeType::Polygon)
+        {
+            for (const Vec2& v : shifted.shape.polygon.vertices)
+            {
+                moved.push_back({TransformPoint(xf, v), 0.0});
+            }
+        }
+        else
+        {
+            moved.push_back({TransformPoint(xf, shifted.shape.circle.center), shifted.shape.circle.radius});
+        }
+    }
     // Every axis line the steps draw, so that the camera frames them all and stays put while stepping.
     std::vector<Vec2> directions;
     std::vector<std::pair<double, double>> spans;
@@ -1065,6 +1109,10 @@ View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int
             high = {std::max(high.x, p.x + r), std::max(high.y, p.y + r)};
         };
         for (const auto& [p, r] : points)
+        {
+            add(p, r);
+        }
+        for (const auto& [p, r] : moved)
         {
             add(p, r);
         }
