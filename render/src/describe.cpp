@@ -33,7 +33,8 @@ int CandidateCount(const Scene& scene, const PairStudy& study)
 
 std::string OverlapOrGap(double separation)
 {
-    return separation > 0.0 ? "are " + FormatNumber(separation) + " apart" : "overlap by " + FormatNumber(-separation);
+    return separation > 0.0 ? "are " + FormatNumber(separation) + " apart"
+                            : "overlap: a push of " + FormatNumber(-separation) + " along this axis separates them";
 }
 
 std::string Time(double t) { return std::isinf(t) ? "never" : "t = " + FormatNumber(t); }
@@ -97,9 +98,9 @@ std::string StaticVerdict(const Scene& scene, const PairStudy& study)
     std::string text = study.startsOverlapping ? "The shapes already overlap at t = 0, so there is no time of "
                                                  "impact. "
                                                : "";
-    text += "Verdict: every axis overlaps, so the shapes collide. Least overlap on " +
-                       DescribeAxis(scene, study, m.axis) + ": moving " + nameB + " by " + FormatNumber(m.depth) +
-                       " along " + Pair(m.normal.x, m.normal.y) + " separates them.";
+    text += "Verdict: every axis overlaps, so the shapes collide. The smallest push is along " +
+            DescribeAxis(scene, study, m.axis) + ": moving " + nameB + " by " + FormatNumber(m.depth) + " along " +
+            Pair(m.normal.x, m.normal.y) + " separates them (the MTV).";
     text += m.contactCount == 1 ? " 1 contact point." : " " + std::to_string(m.contactCount) + " contact points.";
     return text;
 }
@@ -108,7 +109,9 @@ std::string SweepAxisStep(const Scene& scene, const PairStudy& study, int step)
 {
     const SweepAxis& axis = study.sweepTrace.axes[static_cast<size_t>(step)];
     std::string text = "Axis " + std::to_string(step + 1) + ": " + DescribeAxis(scene, study, axis.axis) +
-                       ". At t = 0 the intervals " + OverlapOrGap(axis.separation);
+                       ". At t = 0 the intervals " +
+                       (axis.separation > 0.0 ? "are " + FormatNumber(axis.separation) + " apart"
+                                              : "overlap by " + FormatNumber(-axis.separation));
     if (axis.rate == 0.0)
     {
         text += " and stay so (no motion along this axis).";
@@ -258,7 +261,7 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
         return title + ", skipped (parallel)";
     }
     title += test.separation > 0.0 ? ", gap " + FormatNumber(test.separation)
-                                   : ", overlap " + FormatNumber(-test.separation);
+                                   : ", push " + FormatNumber(-test.separation);
     return test.separating ? title + " (separates)" : title;
 }
 

@@ -141,22 +141,24 @@ LabelPlacer::LabelPlacer(Canvas& canvas, float width, float height) : canvas_(ca
 void LabelPlacer::Reserve(const ScreenRect& rect) { taken_.push_back(rect); }
 
 void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
-                        float distance)
+                        float distance, bool optional)
 {
     const ScreenPoint size = canvas_.MeasureText(text, style);
     const float length = std::sqrt(dx * dx + dy * dy);
     const double start = length > 0.0f ? std::atan2(dy, dx) : 0.0;
     ScreenRect chosen{};
-    for (int i = 0; i < 8; ++i)
+    bool found = false;
+    for (int i = 0; i < 24 && !found; ++i)
     {
+        const float reach = distance + static_cast<float>(i / 8) * 9.0f;
         // Preferred direction first, then alternately either side of it.
-        const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
+        const int k = (i % 8 + 1) / 2 * (i % 2 == 1 ? 1 : -1);
         const double angle = start + k * 0.78539816339744831;
         const float ux = static_cast<float>(std::cos(angle));
         const float uy = static_cast<float>(std::sin(angle));
         // The rectangle's point nearest the anchor sits `distance` away along the direction.
-        const float cx = anchor.x + ux * (distance + 0.5f * size.x * std::fabs(ux));
-        const float cy = anchor.y + uy * (distance + 0.5f * size.y * std::fabs(uy));
+        const float cx = anchor.x + ux * (reach + 0.5f * size.x * std::fabs(ux));
+        const float cy = anchor.y + uy * (reach + 0.5f * size.y * std::fabs(uy));
         ScreenRect rect{std::round(cx - 0.5f * size.x), std::round(cy - 0.5f * size.y), 0.0f, 0.0f};
         rect.maxX = rect.minX + size.x;
         rect.maxY = rect.minY + size.y;
@@ -171,8 +173,12 @@ void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
         if (inside && free)
         {
             chosen = rect;
-            break;
+            found = true;
         }
+    }
+    if (!found && optional)
+    {
+        return;
     }
     taken_.push_back(chosen);
     labels_.push_back({chosen, std::string(text), style, color});

@@ -52,9 +52,10 @@ class LabelPlacer
     /// Marks a region as taken (panels, the caption).
     void Reserve(const ScreenRect& rect);
     /// Places `text` near `anchor`, `distance` pixels away, preferring the direction (dx, dy) (any length); takes
-    /// the first free of eight positions around the anchor, or the preferred one when none is free.
+    /// the first free of eight positions around the anchor, at three distances. When none is free, an optional
+    /// label is left out and any other takes the preferred position.
     void Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
-               float distance = 6.0f);
+               float distance = 6.0f, bool optional = false);
     /// Draws the placed labels, in the group "labels".
     void Flush(Color halo);
 

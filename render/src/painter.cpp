@@ -155,6 +155,16 @@ struct ShownAxis
     bool separating = false;
     bool skipped = false;
     int index = 0;
+    // The signed separation is measured from the leading shape's face (the shape whose axis it is, or A) to the
+    // other shape's trailing end: separation = otherMin - leadMax. Negative, its size is the push along the axis
+    // that separates the pair, which can exceed the intervals' intersection when the other shape lies behind.
+    double leadMax = 0.0;
+    double otherMin = 0.0;
+    void SetLead(bool fromB)
+    {
+        leadMax = fromB ? maxB : maxA;
+        otherMin = fromB ? minA : minB;
+    }
 };
 
 ShownAxis FromStatic(const PairStudy& study, int index)
@@ -171,6 +181,7 @@ ShownAxis FromStatic(const PairStudy& study, int index)
     s.separating = t.separating;
     s.skipped = t.skipped;
     s.index = index;
+    s.SetLead(t.axis.shape == 1 && t.axis.kind != AxisKind::CenterToCenter);
     return s;
 }
 
@@ -192,6 +203,7 @@ ShownAxis FromSweep(const PairStudy& study, int index)
     s.exit = t.exit;
     s.separating = t.endsTest;
     s.index = index;
+    s.SetLead(false);
     if (t.latestEntry >= 0 && t.earliestExit >= 0)
     {
         s.windowEntry = study.sweepTrace.axes[static_cast<size_t>(t.latestEntry)].entry;
@@ -205,7 +217,7 @@ ShownAxis FromSweep(const PairStudy& study, int index)
     return s;
 }
 
-// The axis the verdict step shows: the separating axis, the axis of least overlap, or the latest entry.
+// The axis the verdict step shows: the separating axis, the axis of the smallest push, or the latest entry.
 int DecidingAxis(const PairStudy& study)
 {
     if (study.AxisCount() == 0)
@@ -589,6 +601,12 @@ class Painter
         projector(highA, axis_.maxA, 5.0f, palette::kShapeA);
         projector(lowB, axis_.minB, -5.0f, palette::kShapeBInk);
         projector(highB, axis_.maxB, -5.0f, palette::kShapeBInk);
+        // The push that separates the pair, or the gap, between the bars, labelled with its size.
+        const bool overlap = axis_.separation <= 0.0;
+        const Color mark = overlap ? palette::kOverlap : palette::kGap;
+        const double from = axis_.leadMax;
+        const double to = axis_.otherMin;
+        bar(from, to, 0.0f, overlap ? WithAlpha(mark, 0.6f) : mark, overlap ? 14.0f : 3.0f);
         if (axis_.swept)
         {
             bar(axis_.sweptMinB, axis_.sweptMaxB, -5.0f, WithAlpha(palette::kShapeB, 0.35f), kBar);
@@ -596,16 +614,8 @@ class Painter
         bar(axis_.minA, axis_.maxA, 5.0f, palette::kShapeA, kBar);
         bar(axis_.minB, axis_.maxB, -5.0f, palette::kShapeB, kBar);
 
-        // The overlap or the gap, between the bars, labelled with its size.
-        const double inner0 = std::max(axis_.minA, axis_.minB);
-        const double inner1 = std::min(axis_.maxA, axis_.maxB);
-        const bool overlap = axis_.separation <= 0.0;
-        const Color mark = overlap ? palette::kOverlap : palette::kGap;
-        const double from = overlap ? inner0 : inner1;
-        const double to = overlap ? inner1 : inner0;
-        bar(from, to, 0.0f, mark, overlap ? 16.0f : 3.0f);
         const ScreenPoint middle = At(Along(base, d, 0.5 * (from + to)));
-        const std::string text = overlap ? "overlap " + FormatNumber(-axis_.separation)
+        const std::string text = overlap ? "push " + FormatNumber(-axis_.separation)
                                          : "gap " + FormatNumber(axis_.separation);
         labels_.Place({middle.x - ox * 14.0f, middle.y - oy * 14.0f}, text, TextStyle::Label,
                       overlap ? 0x8E3F6CFFu : 0x006E50FFu, -ox, -oy, 4.0f);
@@ -627,7 +637,7 @@ class Painter
         labels_.Place(At(end), "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f);
     }
 
-    // The best axis so far (least overlap; for sweeps, the latest entry), when it is not the current one.
+    // The best axis so far (the smallest push; for sweeps, the latest entry), when it is not the current one.
     void BestSoFar()
     {
         int best = -1;
@@ -761,14 +771,14 @@ class Painter
                     const Vec2 v = TransformPoint(xf, poly.vertices[i]);
                     const Vec2 out = v - centroid;
                     labels_.Place(At(v), std::to_string(i), TextStyle::Label, InkOf(s), static_cast<float>(out.x),
-                                  static_cast<float>(-out.y), 4.0f);
+                                  static_cast<float>(-out.y), 4.0f, true);
                 }
                 for (int i = 0; edgeNumbers && i < poly.Count(); ++i)
                 {
                     const Vec2 mid = TransformPoint(xf, poly.vertices[i] + 0.5 * poly.edges[i]);
                     const Vec2 n = Rotate(xf.q, poly.normals[i]);
-                    labels_.Place(At(mid), "e" + std::to_string(i), TextStyle::Label,
-                                  WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x), static_cast<float>(-n.y), 5.0f);
+                    labels_.Place(At(mid), "e" + std::to_string(i), TextStyle::Label, WithAlpha(InkOf(s), 0.75f),
+                                  static_cast<float>(n.x), static_cast<float>(-n.y), 5.0f, true);
                 }
             }
         }
@@ -824,14 +834,12 @@ class Painter
         canvas_.Text({left, rowB - 9.0f}, bodyB_.name, TextStyle::Heading, palette::kShapeBInk);
 
         // Overlap or gap band behind the bars.
-        const double olo = std::max(axis_.minA, axis_.minB);
-        const double ohi = std::min(axis_.maxA, axis_.maxB);
         const bool overlap = axis_.separation <= 0.0;
-        const float bandLo = x(std::min(olo, ohi));
-        const float bandHi = std::max(x(std::max(olo, ohi)), bandLo + 1.0f);
+        const float bandLo = x(std::min(axis_.leadMax, axis_.otherMin));
+        const float bandHi = std::max(x(std::max(axis_.leadMax, axis_.otherMin)), bandLo + 1.0f);
         canvas_.FillRect({bandLo, rowA - 12.0f}, {bandHi, rowB + 12.0f},
                          WithAlpha(overlap ? palette::kOverlap : palette::kGap, 0.28f));
-        const std::string amount = overlap ? "overlap " + FormatNumber(-axis_.separation)
+        const std::string amount = overlap ? "push " + FormatNumber(-axis_.separation)
                                            : "gap " + FormatNumber(axis_.separation);
         const ScreenPoint amountSize = canvas_.MeasureText(amount, TextStyle::Label);
         const float amountX = std::clamp(0.5f * (bandLo + bandHi) - 0.5f * amountSize.x, lineLeft,

@@ -241,13 +241,17 @@ int main(int argc, char** argv)
                      output.c_str());
         return 2;
     }
-    if (!singleFile)
     {
+        const std::filesystem::path directory =
+            singleFile ? std::filesystem::path(output).parent_path() : std::filesystem::path(output);
         std::error_code code;
-        std::filesystem::create_directories(output, code);
+        if (!directory.empty())
+        {
+            std::filesystem::create_directories(directory, code);
+        }
         if (code)
         {
-            std::fprintf(stderr, "satviz-render: %s: cannot create the directory (%s)\n", output.c_str(),
+            std::fprintf(stderr, "satviz-render: %s: cannot create the directory (%s)\n", directory.c_str(),
                          code.message().c_str());
             return 1;
         }

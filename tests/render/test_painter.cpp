@@ -1,0 +1,472 @@
+// SPDX-License-Identifier: MIT
+// The painter through a recording canvas: each view draws what the trace says, checked against geometry computed
+// here from the shapes (not from the trace), and layers that are off draw nothing.
+#include <satviz/render/describe.h>
+#include <satviz/render/figure.h>
+#include <satviz/render/recording_canvas.h>
+
+#include "support/random_shapes.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+
+using namespace satviz;
+
+namespace
+{
+
+std::vector<std::string> TutorialScenes()
+{
+    std::vector<std::string> files;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    {
+        if (entry.path().extension() == ".json")
+        {
+            files.push_back(entry.path().string());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+Scene Load(const std::string& file)
+{
+    SceneResult result = LoadScene(file);
+    INFO(result.error);
+    REQUIRE(result.Ok());
+    return result.scene;
+}
+
+RecordingCanvas Paint(const Scene& scene, FigureSetup& setup, int step, LayerMask layers)
+{
+    setup.figure.step = step;
+    setup.figure.layers = layers;
+    RecordingCanvas canvas;
+    PaintFigure(canvas, scene, setup.study, setup.figure);
+    return canvas;
+}
+
+// Lowest and highest projection of a placed shape onto d, from its vertices (or centre and radius).
+std::pair<double, double> Project(const Body& body, Vec2 d)
+{
+    const Transform xf = body.Xf();
+    if (body.shape.type == ShapeType::Circle)
+    {
+        const double c = Dot(TransformPoint(xf, body.shape.circle.center), d);
+        return {c - body.shape.circle.radius, c + body.shape.circle.radius};
+    }
+    double lo = INFINITY;
+    double hi = -INFINITY;
+    for (const Vec2& v : body.shape.polygon.vertices)
+    {
+        const double s = Dot(TransformPoint(xf, v), d);
+        lo = std::min(lo, s);
+        hi = std::max(hi, s);
+    }
+    return {lo, hi};
+}
+
+// The interval bar of one shape in the "projection" group: the opaque segment of the shape's colour.
+const DrawCommand* FindBar(const RecordingCanvas& canvas, Color color)
+{
+    for (const DrawCommand* c : canvas.InGroup("projection"))
+    {
+        if (c->kind == DrawCommand::Kind::Segment && c->color == color && c->thickness == 6.0f)
+        {
+            return c;
+        }
+    }
+    return nullptr;
+}
+
+// The projection values on d of a bar's two ends, in increasing order.
+std::pair<double, double> BarValues(const View& view, const DrawCommand& bar, Vec2 d)
+{
+    const double a = Dot(ToWorld(view, bar.points[0]), d);
+    const double b = Dot(ToWorld(view, bar.points[1]), d);
+    return {std::min(a, b), std::max(a, b)};
+}
+
+std::set<std::string> Groups(const RecordingCanvas& canvas)
+{
+    std::set<std::string> groups;
+    for (const DrawCommand& c : canvas.commands)
+    {
+        groups.insert(c.group);
+    }
+    return groups;
+}
+
+} // namespace
+
+TEST_CASE("Each axis step draws its axis and both projection intervals where the shapes project", "[painter]")
+{
+    int checked = 0;
+    for (const std::string& file : TutorialScenes())
+    {
+        const Scene scene = Load(file);
+        FigureSetup setup = SetUpFigure(scene, {});
+        REQUIRE(setup.Ok());
+        const Body& a = scene.bodies[static_cast<size_t>(setup.study.bodyA)];
+        const Body& b = scene.bodies[static_cast<size_t>(setup.study.bodyB)];
+        for (int step = 0; step < setup.study.AxisCount(); ++step)
+        {
+            const bool sweep = setup.study.sweep;
+            const Vec2 d = sweep ? setup.study.sweepTrace.axes[static_cast<size_t>(step)].direction
+                                 : setup.study.trace.axes[static_cast<size_t>(step)].direction;
+            if (!sweep && setup.study.trace.axes[static_cast<size_t>(step)].skipped)
+            {
+                continue;
+            }
+            INFO(file << " step " << step);
+            const RecordingCanvas canvas = Paint(scene, setup, step, kLayerProjection);
+            const double pixel = 1.0 / setup.figure.view.zoom;
+            const DrawCommand* barA = FindBar(canvas, palette::kShapeA);
+            const DrawCommand* barB = FindBar(canvas, palette::kShapeB);
+            REQUIRE(barA != nullptr);
+            REQUIRE(barB != nullptr);
+            const auto [loA, hiA] = Project(a, d);
+            const auto [loB, hiB] = Project(b, d);
+            const auto [barLoA, barHiA] = BarValues(setup.figure.view, *barA, d);
+            const auto [barLoB, barHiB] = BarValues(setup.figure.view, *barB, d);
+            // Screen coordinates are floats: a bar end may be a fraction of a pixel off.
+            CHECK(std::abs(barLoA - loA) < 0.5 * pixel);
+            CHECK(std::abs(barHiA - hiA) < 0.5 * pixel);
+            CHECK(std::abs(barLoB - loB) < 0.5 * pixel);
+            CHECK(std::abs(barHiB - hiB) < 0.5 * pixel);
+            // Both bars lie on one line parallel to the axis.
+            const Vec2 along = ToWorld(setup.figure.view, barA->points[1]) - ToWorld(setup.figure.view, barA->points[0]);
+            CHECK(std::abs(Cross(Normalize(along), d)) < 1e-3);
+            ++checked;
+        }
+    }
+    CHECK(checked >= 20);
+}
+
+TEST_CASE("The caption of a step states the trace's numbers", "[painter]")
+{
+    for (const std::string& file : TutorialScenes())
+    {
+        const Scene scene = Load(file);
+        FigureSetup setup = SetUpFigure(scene, {});
+        REQUIRE(setup.Ok());
+        setup.figure.caption.clear();
+        for (int step = 0; step < setup.study.StepCount(); ++step)
+        {
+            INFO(file << " step " << step);
+            const RecordingCanvas canvas = Paint(scene, setup, step, kLayerCaption);
+            std::string drawn;
+            for (const std::string& line : canvas.Texts())
+            {
+                drawn += (drawn.empty() ? "" : " ") + line;
+            }
+            const std::string expected = DescribeStep(scene, setup.study, step);
+            CHECK(drawn == expected);
+            if (!setup.study.sweep && step < setup.study.AxisCount())
+            {
+                const AxisTest& t = setup.study.trace.axes[static_cast<size_t>(step)];
+                if (!t.skipped)
+                {
+                    for (double value : {t.minA, t.maxA, t.minB, t.maxB, std::abs(t.separation)})
+                    {
+                        CHECK(expected.find(FormatNumber(value)) != std::string::npos);
+                    }
+                    CHECK((expected.find("separating axis") != std::string::npos) == t.separating);
+                }
+                else
+                {
+                    CHECK(expected.find("skipped") != std::string::npos);
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("A layer that is off draws nothing, and each layer draws only its own groups", "[painter]")
+{
+    const std::map<LayerMask, std::set<std::string>> own = {
+        {kLayerShapes, {"shapes"}},
+        {kLayerLabels, {"labels"}},
+        {kLayerNormals, {"normals"}},
+        {kLayerAxes, {"axes"}},
+        {kLayerProjection, {"projection", "panel", "timebar", "labels"}},
+        {kLayerExit, {"exit", "labels"}},
+        {kLayerBest, {"best"}},
+        {kLayerMtv, {"mtv", "labels"}},
+        {kLayerContacts, {"contacts", "labels"}},
+        {kLayerSwept, {"swept", "panel", "timebar", "labels"}},
+        {kLayerGhost, {"ghost", "labels"}},
+        {kLayerCaption, {"caption"}},
+    };
+    std::set<std::string> seen;
+    for (const std::string& file : TutorialScenes())
+    {
+        const Scene scene = Load(file);
+        FigureSetup setup = SetUpFigure(scene, {});
+        REQUIRE(setup.Ok());
+        for (int step = 0; step < setup.study.StepCount(); ++step)
+        {
+            INFO(file << " step " << step);
+            CHECK(Groups(Paint(scene, setup, step, 0)) == std::set<std::string>{"background"});
+            for (const auto& [layer, groups] : own)
+            {
+                for (const std::string& group : Groups(Paint(scene, setup, step, layer)))
+                {
+                    INFO("layer " << layer << " drew group " << group);
+                    CHECK((group == "background" || groups.count(group) == 1));
+                    seen.insert(group);
+                }
+            }
+        }
+    }
+    // Every view appears somewhere in the example scenes.
+    for (const char* group : {"shapes", "labels", "normals", "axes", "projection", "panel", "timebar", "exit", "best",
+                              "mtv", "contacts", "swept", "ghost", "caption"})
+    {
+        INFO(group);
+        CHECK(seen.count(group) == 1);
+    }
+}
+
+TEST_CASE("The separating line of an early exit lies in the gap, across the axis", "[painter]")
+{
+    int checked = 0;
+    for (const std::string& file : TutorialScenes())
+    {
+        const Scene scene = Load(file);
+        FigureSetup setup = SetUpFigure(scene, {});
+        if (setup.study.sweep)
+        {
+            continue;
+        }
+        for (int step = 0; step < setup.study.AxisCount(); ++step)
+        {
+            const AxisTest& t = setup.study.trace.axes[static_cast<size_t>(step)];
+            const RecordingCanvas canvas = Paint(scene, setup, step, kLayerExit);
+            const std::vector<const DrawCommand*> exit = canvas.InGroup("exit");
+            CHECK(exit.empty() == !t.separating);
+            const double gapLo = std::min(t.maxA, t.maxB);
+            const double gapHi = std::max(t.minA, t.minB);
+            const double pixel = 1.0 / setup.figure.view.zoom;
+            for (const DrawCommand* c : exit)
+            {
+                for (const ScreenPoint& p : c->points)
+                {
+                    const double s = Dot(ToWorld(setup.figure.view, p), t.direction);
+                    CHECK(s > gapLo - pixel);
+                    CHECK(s < gapHi + pixel);
+                }
+                const Vec2 along = ToWorld(setup.figure.view, c->points[1]) - ToWorld(setup.figure.view, c->points[0]);
+                CHECK(std::abs(Dot(Normalize(along), t.direction)) < 1e-3);
+                ++checked;
+            }
+        }
+    }
+    CHECK(checked > 0);
+}
+
+TEST_CASE("The verdict draws the MTV arrow to B moved out, and a dot on every contact point", "[painter]")
+{
+    int arrows = 0;
+    for (const std::string& file : TutorialScenes())
+    {
+        const Scene scene = Load(file);
+        FigureSetup setup = SetUpFigure(scene, {});
+        const PairStudy& study = setup.study;
+        const RecordingCanvas canvas = Paint(scene, setup, study.VerdictStep(), kLayerMtv | kLayerContacts);
+        const View& view = setup.figure.view;
+        const ContactPoint* contacts = study.sweep ? study.sweepResult.contacts : study.manifold.contacts;
+        const int count = study.sweep ? (study.sweepResult.status == SweepStatus::Hit ? study.sweepResult.contactCount : 0)
+                                       : study.manifold.contactCount;
+        std::vector<const DrawCommand*> dots;
+        for (const DrawCommand* c : canvas.InGroup("contacts"))
+        {
+            if (c->kind == DrawCommand::Kind::FillCircle && c->color == palette::kResult)
+            {
+                dots.push_back(c);
+            }
+        }
+        INFO(file);
+        REQUIRE(static_cast<int>(dots.size()) == count);
+        for (int i = 0; i < count; ++i)
+        {
+            const ScreenPoint expected = ToScreen(view, contacts[i].point);
+            CHECK(std::abs(dots[static_cast<size_t>(i)]->points[0].x - expected.x) < 0.01f);
+            CHECK(std::abs(dots[static_cast<size_t>(i)]->points[0].y - expected.y) < 0.01f);
+        }
+        if (study.sweep || !study.manifold.overlap || study.manifold.depth * view.zoom < 20.0)
+        {
+            continue;
+        }
+        // The arrow head's tip is B's centre moved by depth along the normal.
+        const Body& b = scene.bodies[static_cast<size_t>(study.bodyB)];
+        const Vec2 center = TransformPoint(
+            b.Xf(), b.shape.type == ShapeType::Polygon ? b.shape.polygon.centroid : b.shape.circle.center);
+        const ScreenPoint tip = ToScreen(view, center + study.manifold.depth * study.manifold.normal);
+        bool found = false;
+        for (const DrawCommand* c : canvas.InGroup("mtv"))
+        {
+            if (c->kind == DrawCommand::Kind::FillConvex && c->points.size() == 3)
+            {
+                found = found || (std::abs(c->points[0].x - tip.x) < 0.01f && std::abs(c->points[0].y - tip.y) < 0.01f);
+            }
+        }
+        CHECK(found);
+        ++arrows;
+    }
+    CHECK(arrows >= 3);
+}
+
+TEST_CASE("The time bar marks each sweep axis's entry time", "[painter]")
+{
+    int checked = 0;
+    for (const std::string& file : TutorialScenes())
+    {
+        const Scene scene = Load(file);
+        FigureSetup setup = SetUpFigure(scene, {});
+        if (!setup.study.sweep)
+        {
+            continue;
+        }
+        for (int step = 0; step < setup.study.AxisCount(); ++step)
+        {
+            const SweepAxis& axis = setup.study.sweepTrace.axes[static_cast<size_t>(step)];
+            const RecordingCanvas canvas = Paint(scene, setup, step, kLayerSwept);
+            // The bar runs from t = 0 to t = 1: its ticks are the first three short segments.
+            std::vector<const DrawCommand*> segments;
+            std::vector<const DrawCommand*> markers;
+            for (const DrawCommand* c : canvas.InGroup("timebar"))
+            {
+                if (c->kind == DrawCommand::Kind::Segment)
+                {
+                    segments.push_back(c);
+                }
+                if (c->kind == DrawCommand::Kind::FillConvex && c->points.size() == 3)
+                {
+                    markers.push_back(c);
+                }
+            }
+            REQUIRE(segments.size() >= 1);
+            const float x0 = segments[0]->points[0].x;
+            const float x1 = segments[0]->points[1].x;
+            if (std::isfinite(axis.entry) && axis.entry >= 0.0 && axis.entry <= 1.0)
+            {
+                REQUIRE(!markers.empty());
+                const double t = (markers[0]->points[0].x - x0) / (x1 - x0);
+                INFO(file << " step " << step << " entry " << axis.entry);
+                CHECK(std::abs(t - axis.entry) < 1e-4);
+                ++checked;
+            }
+        }
+    }
+    CHECK(checked >= 3);
+}
+
+TEST_CASE("Labels of the example figures do not cover each other", "[painter]")
+{
+    for (const std::string& file : TutorialScenes())
+    {
+        const Scene scene = Load(file);
+        FigureSetup setup = SetUpFigure(scene, {});
+        for (int step = 0; step < setup.study.StepCount(); ++step)
+        {
+            const RecordingCanvas canvas = Paint(scene, setup, step, setup.figure.layers);
+            std::vector<std::pair<ScreenPoint, ScreenPoint>> boxes;
+            RecordingCanvas measure;
+            for (const DrawCommand* c : canvas.InGroup("labels"))
+            {
+                if (c->kind == DrawCommand::Kind::Text)
+                {
+                    const ScreenPoint size = measure.MeasureText(c->text, c->style);
+                    boxes.push_back({c->points[0], {c->points[0].x + size.x, c->points[0].y + size.y}});
+                }
+            }
+            int overlaps = 0;
+            for (size_t i = 0; i < boxes.size(); ++i)
+            {
+                for (size_t j = i + 1; j < boxes.size(); ++j)
+                {
+                    const bool apart = boxes[i].second.x <= boxes[j].first.x || boxes[j].second.x <= boxes[i].first.x ||
+                                       boxes[i].second.y <= boxes[j].first.y || boxes[j].second.y <= boxes[i].first.y;
+                    overlaps += apart ? 0 : 1;
+                }
+            }
+            INFO(file << " step " << step);
+            CHECK(overlaps == 0);
+        }
+    }
+}
+
+TEST_CASE("Random pairs paint every step with every layer, with finite coordinates", "[painter][property]")
+{
+    testing::Rng rng(20261122);
+    for (int i = 0; i < 400; ++i)
+    {
+        Scene scene;
+        for (int k = 0; k < 2; ++k)
+        {
+            Body body;
+            body.name = k == 0 ? "A" : "B";
+            if (rng.Chance(0.25))
+            {
+                body.shape = MakeShape(Circle{{0.0, 0.0}, rng.Uniform(0.1, 2.0)});
+            }
+            else
+            {
+                body.shape = MakeShape(testing::RandomPolygon(rng, rng.Int(3, 30), 1.0, rng.Uniform(0.3, 1.0)));
+            }
+            body.position = {rng.Uniform(-1.5, 1.5), rng.Uniform(-1.5, 1.5)};
+            body.angle = rng.Uniform(-3.0, 3.0);
+            if (rng.Chance(0.5))
+            {
+                body.velocity = {rng.Uniform(-4.0, 4.0), rng.Uniform(-4.0, 4.0)};
+            }
+            scene.bodies.push_back(std::move(body));
+        }
+        FigureSetup setup = SetUpFigure(scene, {});
+        REQUIRE(setup.Ok());
+        for (int step = 0; step < setup.study.StepCount(); ++step)
+        {
+            const RecordingCanvas canvas = Paint(scene, setup, step, kAllLayers);
+            for (const DrawCommand& c : canvas.commands)
+            {
+                for (const ScreenPoint& p : c.points)
+                {
+                    REQUIRE(std::isfinite(p.x));
+                    REQUIRE(std::isfinite(p.y));
+                }
+                if (c.kind == DrawCommand::Kind::Text)
+                {
+                    REQUIRE(!c.text.empty());
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("View: world and screen round trip, zoom keeps the point under the pointer", "[view]")
+{
+    View view;
+    view.center = {3.0, -2.0};
+    view.zoom = 37.5;
+    const Vec2 world{4.25, -1.5};
+    const ScreenPoint screen = ToScreen(view, world);
+    CHECK(screen.x == Approx(400.0 + 1.25 * 37.5));
+    CHECK(screen.y == Approx(300.0 - 0.5 * 37.5));
+    const Vec2 back = ToWorld(view, screen);
+    CHECK(back.x == Approx(world.x));
+    CHECK(back.y == Approx(world.y));
+    const View zoomed = ZoomAbout(view, screen, 2.0);
+    const ScreenPoint again = ToScreen(zoomed, world);
+    CHECK(again.x == Approx(screen.x).margin(1e-3));
+    CHECK(again.y == Approx(screen.y).margin(1e-3));
+    const View panned = Pan(view, 10.0f, -20.0f);
+    const ScreenPoint moved = ToScreen(panned, world);
+    CHECK(moved.x == Approx(screen.x + 10.0f));
+    CHECK(moved.y == Approx(screen.y - 20.0f));
+}

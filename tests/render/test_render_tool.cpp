@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: MIT
+// satviz-render as a program: a batch survives a bad scene, errors are one line naming the file and the field,
+// output is written atomically, and the same input gives the same bytes.
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+
+struct Run
+{
+    int exitCode = -1;
+    std::vector<std::string> errLines;
+};
+
+Run Render(const std::string& arguments)
+{
+    // ctest may run the cases of this file in parallel: each process keeps its own output files.
+    const std::string err = "render-" + std::to_string(::getpid()) + ".err";
+    const std::string command = std::string(SATVIZ_RENDER_EXE) + " " + arguments + " > /dev/null 2> " + err;
+    const int status = std::system(command.c_str());
+    Run run;
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream in(err);
+    for (std::string line; std::getline(in, line);)
+    {
+        run.errLines.push_back(line);
+    }
+    in.close();
+    std::remove(err.c_str());
+    return run;
+}
+
+std::string Scene(const std::string& name) { return std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + name; }
+
+std::string Bytes(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+}
+
+fs::path FreshDirectory(const std::string& name)
+{
+    const fs::path dir = fs::current_path() / name;
+    fs::remove_all(dir);
+    return dir;
+}
+
+std::string Joined(const std::vector<std::string>& lines)
+{
+    std::string text;
+    for (const std::string& line : lines)
+    {
+        text += line + "\n";
+    }
+    return text;
+}
+
+} // namespace
+
+TEST_CASE("satviz-render: a bad scene gets one error line and the rest of the batch is rendered", "[render-tool]")
+{
+    const fs::path dir = FreshDirectory("render-batch");
+    fs::create_directories(dir);
+    std::ofstream(dir / "broken.json") << R"({"bodies": [{"polygon": [[0, 0], [1, 0], [1, 1], [0.9, 0.2]]}]})";
+    std::ofstream(dir / "badview.json")
+        << R"({"bodies": [{"box": [1, 1]}, {"box": [1, 1]}], "view": {"layers": ["shapes", "mvt"]}})";
+    const Run run = Render(Scene("overlapping_boxes.json") + " " + (dir / "broken.json").string() + " " +
+                           (dir / "badview.json").string() + " " + (dir / "missing.json").string() + " " +
+                           Scene("two_circles.json") + " -q -o " + (dir / "out").string());
+    INFO(Joined(run.errLines));
+    CHECK(run.exitCode == 1);
+    CHECK(fs::exists(dir / "out" / "overlapping_boxes.png"));
+    CHECK(fs::exists(dir / "out" / "two_circles.png"));
+    CHECK(!fs::exists(dir / "out" / "broken.png"));
+    REQUIRE(run.errLines.size() == 4); // three errors and the summary
+    CHECK(run.errLines[0].find("broken.json") != std::string::npos);
+    CHECK(run.errLines[0].find("bodies[0].polygon") != std::string::npos);
+    CHECK(run.errLines[1].find("badview.json") != std::string::npos);
+    CHECK(run.errLines[1].find("view.layers[1]") != std::string::npos);
+    CHECK(run.errLines[2].find("missing.json") != std::string::npos);
+    CHECK(run.errLines[3].find("2 figures written") != std::string::npos);
+    CHECK(run.errLines[3].find("3 of 5 scenes failed") != std::string::npos);
+}
+
+TEST_CASE("satviz-render: one figure per step, and a step that does not exist is named", "[render-tool]")
+{
+    const fs::path dir = FreshDirectory("render-steps");
+    const Run run = Render(Scene("separated_triangle.json") + " --all-steps -q -o " + dir.string());
+    CHECK(run.exitCode == 0);
+    CHECK(fs::exists(dir / "separated_triangle-step0.png"));
+    CHECK(fs::exists(dir / "separated_triangle-step1.png"));
+    CHECK(!fs::exists(dir / "separated_triangle-step2.png"));
+
+    const Run beyond = Render(Scene("separated_triangle.json") + " --step 7 -o " + (dir / "x.png").string());
+    CHECK(beyond.exitCode == 1);
+    REQUIRE(!beyond.errLines.empty());
+    CHECK(beyond.errLines[0].find("--step") != std::string::npos);
+    CHECK(beyond.errLines[0].find("0 to 1") != std::string::npos);
+    CHECK(!fs::exists(dir / "x.png"));
+}
+
+TEST_CASE("satviz-render: usage errors exit with 2 and a one-line reason", "[render-tool]")
+{
+    const fs::path dir = FreshDirectory("render-usage");
+    const Run two = Render(Scene("two_circles.json") + " " + Scene("fly_by.json") + " -o " + (dir / "one.png").string());
+    CHECK(two.exitCode == 2);
+    REQUIRE(two.errLines.size() == 1);
+    CHECK(two.errLines[0].find(".png output takes exactly one figure") != std::string::npos);
+
+    const Run size = Render(Scene("two_circles.json") + " --size 800by600 -o " + dir.string());
+    CHECK(size.exitCode == 2);
+    REQUIRE(size.errLines.size() == 1);
+    CHECK(size.errLines[0].find("--size") != std::string::npos);
+
+    const Run layers = Render(Scene("two_circles.json") + " --layers shapes,mvt -o " + dir.string());
+    CHECK(layers.exitCode == 2);
+    REQUIRE(layers.errLines.size() == 1);
+    CHECK(layers.errLines[0].find("\"mvt\"") != std::string::npos);
+}
+
+TEST_CASE("satviz-render: output is atomic and never half-written", "[render-tool]")
+{
+    const fs::path dir = FreshDirectory("render-atomic");
+    fs::create_directories(dir);
+    // An existing image that cannot be replaced (its directory is read-only) survives a failed write intact.
+    const fs::path locked = dir / "locked";
+    fs::create_directories(locked);
+    std::ofstream(locked / "two_circles.png") << "previous figure";
+    fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec);
+    const Run run = Render(Scene("two_circles.json") + " -o " + (locked / "two_circles.png").string());
+    fs::permissions(locked, fs::perms::owner_all);
+    if (::geteuid() != 0) // root ignores the permission bits
+    {
+        CHECK(run.exitCode == 1);
+        REQUIRE(!run.errLines.empty());
+        CHECK(run.errLines[0].find("two_circles.png") != std::string::npos);
+        CHECK(Bytes(locked / "two_circles.png") == "previous figure");
+    }
+    // No temporary file is left behind by a successful batch.
+    const Run ok = Render(Scene("two_circles.json") + " " + Scene("fly_by.json") + " -q -o " + dir.string());
+    CHECK(ok.exitCode == 0);
+    for (const auto& entry : fs::directory_iterator(dir))
+    {
+        CHECK(entry.path().string().find(".tmp") == std::string::npos);
+    }
+}
+
+TEST_CASE("satviz-render: the same scene gives byte-identical PNGs, alone or in a batch", "[render-tool]")
+{
+    const fs::path dir = FreshDirectory("render-determinism");
+    REQUIRE(Render(Scene("circle_and_polygon.json") + " -q -o " + (dir / "alone.png").string()).exitCode == 0);
+    REQUIRE(Render(Scene("overlapping_boxes.json") + " " + Scene("circle_and_polygon.json") + " --size 800x600 -q -o " +
+                   (dir / "batch").string())
+                .exitCode == 0);
+    const std::string alone = Bytes(dir / "alone.png");
+    CHECK(alone.size() > 1000);
+    CHECK(alone == Bytes(dir / "batch" / "circle_and_polygon.png"));
+    CHECK(alone.substr(1, 3) == "PNG");
+}
