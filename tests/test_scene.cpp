@@ -105,3 +105,56 @@ TEST_CASE("Every bundled scene loads", "[scene]")
     }
     CHECK(count >= 4);
 }
+
+TEST_CASE("A view block sets the camera, size, layers, pair, query, step, time and caption", "[scene]")
+{
+    const SceneResult result = ParseScene(R"({"bodies": [{"name": "P", "box": [1, 1]}, {"name": "Q", "box": [1, 1]},
+        {"name": "R", "circle": {"radius": 1}}],
+        "view": {"center": [1.5, -2], "zoom": 80, "size": [640, 480], "layers": ["shapes", "mtv"],
+                 "pair": ["R", "P"], "query": "sweep", "step": 2, "time": 0.25, "caption": "Hello"}})",
+                                          "s.json");
+    INFO(result.error);
+    REQUIRE(result.Ok());
+    const Scene& scene = result.scene;
+    CHECK(scene.hasView);
+    CHECK(!scene.view.fit);
+    CHECK(scene.view.center == Vec2{1.5, -2.0});
+    CHECK(scene.view.zoom == 80.0);
+    CHECK(scene.view.width == 640);
+    CHECK(scene.view.height == 480);
+    CHECK(scene.view.layers == std::vector<std::string>{"shapes", "mtv"});
+    CHECK(scene.view.bodyA == "R");
+    CHECK(scene.view.bodyB == "P");
+    CHECK(scene.view.query == ViewQuery::Sweep);
+    CHECK(scene.view.step == 2);
+    CHECK(scene.view.time == 0.25);
+    CHECK(scene.view.caption == "Hello");
+
+    const SceneResult defaults = ParseScene(R"({"bodies": [], "view": {"zoom": "fit", "step": "last"}})", "s.json");
+    REQUIRE(defaults.Ok());
+    CHECK(defaults.scene.view.fit);
+    CHECK(defaults.scene.view.step == -1);
+    CHECK(defaults.scene.view.width == 800);
+    CHECK(!ParseScene(R"({"bodies": []})", "s.json").scene.hasView);
+}
+
+TEST_CASE("View block errors name the field", "[scene]")
+{
+    const std::string two = R"({"bodies": [{"name": "P", "box": [1, 1]}, {"name": "Q", "box": [1, 1]}], "view": )";
+    CHECK(ErrorOf(two + R"({"layers": ["shapes", "mvt"]}})").find("s.json: view.layers[1]: unknown layer \"mvt\"") ==
+          0);
+    CHECK(ErrorOf(two + R"({"pair": ["P", "Z"]}})") == "s.json: view.pair[1]: no body is named \"Z\"");
+    CHECK(ErrorOf(two + R"({"pair": ["P", "P"]}})") == "s.json: view.pair: names the same body twice");
+    CHECK(ErrorOf(two + R"({"size": [800, 9]}})") == "s.json: view.size[1]: expected a whole number from 16 to 8192");
+    CHECK(ErrorOf(two + R"({"size": [800.5, 600]}})") ==
+          "s.json: view.size[0]: expected a whole number from 16 to 8192");
+    CHECK(ErrorOf(two + R"({"time": 1.5}})") == "s.json: view.time: expected a time in [0, 1] (a fraction of the step)");
+    CHECK(ErrorOf(two + R"({"zoom": -3}})") == "s.json: view.zoom: must be greater than 0");
+    CHECK(ErrorOf(two + R"({"center": [0, 0]}})") == "s.json: view.center: needs a \"zoom\" (pixels per unit) beside it");
+    CHECK(ErrorOf(two + R"({"query": "raycast"}})") ==
+          "s.json: view.query: expected \"collide\", \"sweep\" or \"auto\", got \"raycast\"");
+    CHECK(ErrorOf(two + R"({"step": -1}})") == "s.json: view.step: expected a whole number from 0 to 1000000");
+    CHECK(ErrorOf(two + R"({"zoom": 10, "centre": [0, 0]}})") ==
+          "s.json: view.centre: unknown field \"centre\" (did you mean \"center\"?)");
+    CHECK(ErrorOf(two + R"([1, 2]})") == "s.json: view: expected an object, got an array");
+}
