@@ -148,9 +148,11 @@ TEST_CASE("View block errors name the field", "[scene]")
     CHECK(ErrorOf(two + R"({"size": [800, 9]}})") == "s.json: view.size[1]: expected a whole number from 16 to 8192");
     CHECK(ErrorOf(two + R"({"size": [800.5, 600]}})") ==
           "s.json: view.size[0]: expected a whole number from 16 to 8192");
-    CHECK(ErrorOf(two + R"({"time": 1.5}})") == "s.json: view.time: expected a time in [0, 1] (a fraction of the step)");
+    CHECK(ErrorOf(two + R"({"time": 1.5}})") ==
+          "s.json: view.time: expected a time in [0, 1] (a fraction of the step)");
     CHECK(ErrorOf(two + R"({"zoom": -3}})") == "s.json: view.zoom: must be greater than 0");
-    CHECK(ErrorOf(two + R"({"center": [0, 0]}})") == "s.json: view.center: needs a \"zoom\" (pixels per unit) beside it");
+    CHECK(ErrorOf(two + R"({"center": [0, 0]}})") ==
+          "s.json: view.center: needs a \"zoom\" (pixels per unit) beside it");
     CHECK(ErrorOf(two + R"({"query": "raycast"}})") ==
           "s.json: view.query: expected \"collide\", \"sweep\" or \"auto\", got \"raycast\"");
     CHECK(ErrorOf(two + R"({"step": -1}})") == "s.json: view.step: expected a whole number from 0 to 1000000");

@@ -16,7 +16,10 @@ ImU32 ToImColor(Color color)
 }
 
 // Vertices an anti-aliased call may add: generous, so that a list never passes the 16-bit index limit.
-int Estimate(int points) { return 8 * points + 64; }
+int Estimate(int points)
+{
+    return 8 * points + 64;
+}
 
 } // namespace
 

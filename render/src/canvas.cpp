@@ -4,6 +4,9 @@
 namespace satviz
 {
 
-float TextSize(TextStyle style) { return style == TextStyle::Label ? 13.0f : 15.0f; }
+float TextSize(TextStyle style)
+{
+    return style == TextStyle::Label ? 13.0f : 15.0f;
+}
 
 } // namespace satviz

@@ -15,19 +15,28 @@ const std::string& NameOf(const Scene& scene, const PairStudy& study, int shape)
     return scene.bodies[static_cast<size_t>(shape == 0 ? study.bodyA : study.bodyB)].name;
 }
 
-std::string Possessive(const std::string& name) { return name + "'s"; }
+std::string Possessive(const std::string& name)
+{
+    return name + "'s";
+}
 
-std::string Pair(double x, double y) { return "(" + FormatNumber(x) + ", " + FormatNumber(y) + ")"; }
+std::string Pair(double x, double y)
+{
+    return "(" + FormatNumber(x) + ", " + FormatNumber(y) + ")";
+}
 
-std::string Interval(double low, double high) { return "[" + FormatNumber(low) + ", " + FormatNumber(high) + "]"; }
+std::string Interval(double low, double high)
+{
+    return "[" + FormatNumber(low) + ", " + FormatNumber(high) + "]";
+}
 
 // Number of axes the full test could try: every face normal of a polygon, one axis per circle pair.
 int CandidateCount(const Scene& scene, const PairStudy& study)
 {
     const Shape& a = scene.bodies[static_cast<size_t>(study.bodyA)].shape;
     const Shape& b = scene.bodies[static_cast<size_t>(study.bodyB)].shape;
-    const int faces = (a.type == ShapeType::Polygon ? a.polygon.Count() : 0) +
-                      (b.type == ShapeType::Polygon ? b.polygon.Count() : 0);
+    const int faces =
+        (a.type == ShapeType::Polygon ? a.polygon.Count() : 0) + (b.type == ShapeType::Polygon ? b.polygon.Count() : 0);
     return (a.type == ShapeType::Circle || b.type == ShapeType::Circle) ? faces + 1 : faces;
 }
 
@@ -37,7 +46,10 @@ std::string OverlapOrGap(double separation)
                             : "overlap: a push of " + FormatNumber(-separation) + " along this axis separates them";
 }
 
-std::string Time(double t) { return std::isinf(t) ? "never" : "t = " + FormatNumber(t); }
+std::string Time(double t)
+{
+    return std::isinf(t) ? "never" : "t = " + FormatNumber(t);
+}
 
 std::string SweepExitReason(SweepExit exit)
 {
@@ -91,9 +103,9 @@ std::string StaticVerdict(const Scene& scene, const PairStudy& study)
     const int tested = static_cast<int>(study.trace.axes.size());
     if (!m.overlap)
     {
-        return "Verdict: " + DescribeAxis(scene, study, m.axis) + " separates the shapes by " +
-               FormatNumber(m.gap) + ", so they do not collide. The test stopped after " + std::to_string(tested) +
-               " of " + std::to_string(CandidateCount(scene, study)) + " axes.";
+        return "Verdict: " + DescribeAxis(scene, study, m.axis) + " separates the shapes by " + FormatNumber(m.gap) +
+               ", so they do not collide. The test stopped after " + std::to_string(tested) + " of " +
+               std::to_string(CandidateCount(scene, study)) + " axes.";
     }
     std::string text = study.startsOverlapping ? "The shapes already overlap at t = 0, so there is no time of "
                                                  "impact. "
@@ -260,8 +272,8 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
     {
         return title + ", skipped (parallel)";
     }
-    title += test.separation > 0.0 ? ", gap " + FormatNumber(test.separation)
-                                   : ", push " + FormatNumber(-test.separation);
+    title +=
+        test.separation > 0.0 ? ", gap " + FormatNumber(test.separation) : ", push " + FormatNumber(-test.separation);
     return test.separating ? title + " (separates)" : title;
 }
 

@@ -83,8 +83,8 @@ void Arrow(Canvas& canvas, ScreenPoint a, ScreenPoint b, Color color, float thic
     const float h = std::min(head, 0.6f * length + 4.0f);
     const ScreenPoint base{b.x - ux * h, b.y - uy * h};
     canvas.Segment(a, {b.x - ux * h * 0.6f, b.y - uy * h * 0.6f}, color, thickness);
-    const ScreenPoint tip[3] = {b, {base.x - uy * h * 0.45f, base.y + ux * h * 0.45f},
-                                {base.x + uy * h * 0.45f, base.y - ux * h * 0.45f}};
+    const ScreenPoint tip[3] = {
+        b, {base.x - uy * h * 0.45f, base.y + ux * h * 0.45f}, {base.x + uy * h * 0.45f, base.y - ux * h * 0.45f}};
     canvas.FillConvex(tip, 3, color);
 }
 
@@ -134,11 +134,12 @@ void DashedOutline(Canvas& canvas, const std::vector<ScreenPoint>& outline, Colo
     }
 }
 
-LabelPlacer::LabelPlacer(Canvas& canvas, float width, float height) : canvas_(canvas), width_(width), height_(height)
-{
-}
+LabelPlacer::LabelPlacer(Canvas& canvas, float width, float height) : canvas_(canvas), width_(width), height_(height) {}
 
-void LabelPlacer::Reserve(const ScreenRect& rect) { taken_.push_back(rect); }
+void LabelPlacer::Reserve(const ScreenRect& rect)
+{
+    taken_.push_back(rect);
+}
 
 void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
                         float distance, bool optional)
@@ -166,10 +167,10 @@ void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
         {
             chosen = rect;
         }
-        const bool inside = rect.minX >= 2.0f && rect.minY >= 2.0f && rect.maxX <= width_ - 2.0f &&
-                            rect.maxY <= height_ - 2.0f;
-        const bool free = std::none_of(taken_.begin(), taken_.end(),
-                                       [&](const ScreenRect& other) { return other.Overlaps(rect); });
+        const bool inside =
+            rect.minX >= 2.0f && rect.minY >= 2.0f && rect.maxX <= width_ - 2.0f && rect.maxY <= height_ - 2.0f;
+        const bool free =
+            std::none_of(taken_.begin(), taken_.end(), [&](const ScreenRect& other) { return other.Overlaps(rect); });
         if (inside && free)
         {
             chosen = rect;

@@ -31,8 +31,8 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
     const SceneView& view = scene.view;
     if (scene.bodies.size() < 2)
     {
-        setup.error = "bodies: a figure needs at least two bodies, the scene has " +
-                      std::to_string(scene.bodies.size());
+        setup.error =
+            "bodies: a figure needs at least two bodies, the scene has " + std::to_string(scene.bodies.size());
         return setup;
     }
     const int a = BodyIndex(scene, view.bodyA, 0);
@@ -45,8 +45,8 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
     setup.study = StudyPair(scene, a, b, view.query);
 
     Figure& figure = setup.figure;
-    figure.layers = options.setLayers ? options.layers
-                                      : (view.layers.empty() ? kDefaultLayers : LayersFromNames(view.layers));
+    figure.layers =
+        options.setLayers ? options.layers : (view.layers.empty() ? kDefaultLayers : LayersFromNames(view.layers));
     const int width = options.width > 0 ? options.width : view.width;
     const int height = options.height > 0 ? options.height : view.height;
     if (view.fit)
@@ -64,8 +64,8 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
     if (step >= setup.study.StepCount())
     {
         setup.error = std::string(options.setStep ? "--step" : "view.step") + ": step " + std::to_string(step) +
-                      " does not exist: this pair's trace has steps 0 to " +
-                      std::to_string(setup.study.VerdictStep()) + " (the last is the verdict)";
+                      " does not exist: this pair's trace has steps 0 to " + std::to_string(setup.study.VerdictStep()) +
+                      " (the last is the verdict)";
         return setup;
     }
     figure.step = step < 0 ? setup.study.VerdictStep() : step;

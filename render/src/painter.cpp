@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
+#include "draw_kit.h"
+
 #include <satviz/render/describe.h>
 #include <satviz/render/painter.h>
-
-#include "draw_kit.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,9 +24,15 @@ constexpr float kOutline = 2.0f;       // shape outline thickness
 constexpr float kBar = 6.0f;           // interval bar thickness
 constexpr float kLinePad = 26.0f;      // the axis line runs this far beyond the intervals
 
-bool Has(const Figure& figure, LayerMask layer) { return (figure.layers & layer) != 0; }
+bool Has(const Figure& figure, LayerMask layer)
+{
+    return (figure.layers & layer) != 0;
+}
 
-Vec2 Along(Vec2 base, Vec2 direction, double u) { return base + u * direction; }
+Vec2 Along(Vec2 base, Vec2 direction, double u)
+{
+    return base + u * direction;
+}
 
 // Points that bound the pair, each with a radius around it: polygon vertices and circles, at t = 0 and, for
 // sweeps, at t = 1.
@@ -615,8 +621,8 @@ class Painter
         bar(axis_.minB, axis_.maxB, -5.0f, palette::kShapeB, kBar);
 
         const ScreenPoint middle = At(Along(base, d, 0.5 * (from + to)));
-        const std::string text = overlap ? "push " + FormatNumber(-axis_.separation)
-                                         : "gap " + FormatNumber(axis_.separation);
+        const std::string text =
+            overlap ? "push " + FormatNumber(-axis_.separation) : "gap " + FormatNumber(axis_.separation);
         labels_.Place({middle.x - ox * 14.0f, middle.y - oy * 14.0f}, text, TextStyle::Label,
                       overlap ? 0x8E3F6CFFu : 0x006E50FFu, -ox, -oy, 4.0f);
     }
@@ -802,14 +808,14 @@ class Painter
             return;
         }
         const float left = 24.0f;
-        const float nameWidth =
-            std::max(canvas_.MeasureText(bodyA_.name, TextStyle::Heading).x,
-                     canvas_.MeasureText(bodyB_.name, TextStyle::Heading).x) + 14.0f;
+        const float nameWidth = std::max(canvas_.MeasureText(bodyA_.name, TextStyle::Heading).x,
+                                         canvas_.MeasureText(bodyB_.name, TextStyle::Heading).x) +
+                                14.0f;
         const float lineLeft = left + nameWidth;
         const float lineRight = Width() - 28.0f;
         std::string title = verdict_ ? "deciding axis " : "axis ";
-        title += std::to_string(axis_.index + 1) + ": projections on " +
-                 DescribeAxis(scene_, study_, axis_.ref) + " (number line)";
+        title += std::to_string(axis_.index + 1) + ": projections on " + DescribeAxis(scene_, study_, axis_.ref) +
+                 " (number line)";
         canvas_.Text({left, top + 8.0f}, title, TextStyle::Label, palette::kMuted);
         if (axis_.skipped)
         {
@@ -839,11 +845,11 @@ class Painter
         const float bandHi = std::max(x(std::max(axis_.leadMax, axis_.otherMin)), bandLo + 1.0f);
         canvas_.FillRect({bandLo, rowA - 12.0f}, {bandHi, rowB + 12.0f},
                          WithAlpha(overlap ? palette::kOverlap : palette::kGap, 0.28f));
-        const std::string amount = overlap ? "push " + FormatNumber(-axis_.separation)
-                                           : "gap " + FormatNumber(axis_.separation);
+        const std::string amount =
+            overlap ? "push " + FormatNumber(-axis_.separation) : "gap " + FormatNumber(axis_.separation);
         const ScreenPoint amountSize = canvas_.MeasureText(amount, TextStyle::Label);
-        const float amountX = std::clamp(0.5f * (bandLo + bandHi) - 0.5f * amountSize.x, lineLeft,
-                                         lineRight - amountSize.x);
+        const float amountX =
+            std::clamp(0.5f * (bandLo + bandHi) - 0.5f * amountSize.x, lineLeft, lineRight - amountSize.x);
         canvas_.Text({amountX, 0.5f * (rowA + rowB) - 7.0f}, amount, TextStyle::Label,
                      overlap ? 0x8E3F6CFFu : 0x006E50FFu);
 
@@ -937,8 +943,8 @@ class Painter
         {
             marker(axis_.entry, "entry", true);
         }
-        const bool noCommonTime = !(w0 <= w1 && axis_.windowEntry <= 1.0) && axis_.windowExit < axis_.windowEntry &&
-                                  axis_.windowExit <= 1.0;
+        const bool noCommonTime =
+            !(w0 <= w1 && axis_.windowEntry <= 1.0) && axis_.windowExit < axis_.windowEntry && axis_.windowExit <= 1.0;
         if (!(noCommonTime && std::isinf(axis_.exit)))
         {
             marker(axis_.exit, "exit", false);
@@ -953,8 +959,7 @@ class Painter
     void Caption()
     {
         canvas_.BeginGroup("caption");
-        const std::string text =
-            figure_.caption.empty() ? DescribeStep(scene_, study_, figure_.step) : figure_.caption;
+        const std::string text = figure_.caption.empty() ? DescribeStep(scene_, study_, figure_.step) : figure_.caption;
         // Greedy word wrap to the band width.
         std::vector<std::string> lines;
         std::string line;

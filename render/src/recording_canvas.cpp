@@ -88,7 +88,10 @@ ScreenPoint RecordingCanvas::MeasureText(std::string_view text, TextStyle style)
     return {0.6f * size * static_cast<float>(text.size()), size};
 }
 
-void RecordingCanvas::BeginGroup(std::string_view name) { group_ = std::string(name); }
+void RecordingCanvas::BeginGroup(std::string_view name)
+{
+    group_ = std::string(name);
+}
 
 std::vector<const DrawCommand*> RecordingCanvas::InGroup(std::string_view name) const
 {

@@ -10,9 +10,9 @@
 
 #include <CLI/CLI.hpp>
 #include <GL/osmesa.h>
-#include <backends/imgui_impl_opengl2.h>
 #include <imgui.h>
 
+#include <backends/imgui_impl_opengl2.h>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -24,7 +24,10 @@ namespace
 
 using Clock = std::chrono::steady_clock;
 
-double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+double Seconds(Clock::duration d)
+{
+    return std::chrono::duration<double>(d).count();
+}
 
 /// One OSMesa context and one ImGui context, shared by every figure of the run.
 class HeadlessRenderer
@@ -45,8 +48,15 @@ class HeadlessRenderer
 
     bool Init(std::string& error)
     {
-        const int attributes[] = {OSMESA_FORMAT,  OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS, 0,
-                                  OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
+        const int attributes[] = {OSMESA_FORMAT,
+                                  OSMESA_RGBA,
+                                  OSMESA_DEPTH_BITS,
+                                  0,
+                                  OSMESA_STENCIL_BITS,
+                                  0,
+                                  OSMESA_PROFILE,
+                                  OSMESA_COMPAT_PROFILE,
+                                  0};
         context_ = OSMesaCreateContextAttribs(attributes, nullptr);
         if (context_ == nullptr)
         {
@@ -236,8 +246,9 @@ int main(int argc, char** argv)
     const bool singleFile = std::filesystem::path(output).extension() == ".png";
     if (singleFile && (scenes.size() != 1 || allSteps))
     {
-        std::fprintf(stderr, "satviz-render: -o %s: a .png output takes exactly one figure; give a directory for "
-                             "several scenes or --all-steps\n",
+        std::fprintf(stderr,
+                     "satviz-render: -o %s: a .png output takes exactly one figure; give a directory for "
+                     "several scenes or --all-steps\n",
                      output.c_str());
         return 2;
     }
@@ -311,11 +322,11 @@ int main(int argc, char** argv)
         for (int k : steps)
         {
             setup.figure.step = k;
-            const std::string path =
-                singleFile ? output
-                           : (std::filesystem::path(output) /
-                              (allSteps ? stem + "-step" + std::to_string(k) + ".png" : stem + ".png"))
-                                 .string();
+            const std::string path = singleFile
+                                         ? output
+                                         : (std::filesystem::path(output) /
+                                            (allSteps ? stem + "-step" + std::to_string(k) + ".png" : stem + ".png"))
+                                               .string();
             const auto t0 = Clock::now();
             if (!renderer.Render(loaded.scene, setup, rgb, error))
             {

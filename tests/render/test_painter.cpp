@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The painter through a recording canvas: each view draws what the trace says, checked against geometry computed
 // here from the shapes (not from the trace), and layers that are off draw nothing.
+#include "support/random_shapes.h"
+
 #include <satviz/render/describe.h>
 #include <satviz/render/figure.h>
 #include <satviz/render/recording_canvas.h>
-
-#include "support/random_shapes.h"
 
 #include <catch2/catch.hpp>
 
@@ -140,7 +140,8 @@ TEST_CASE("Each axis step draws its axis and both projection intervals where the
             CHECK(std::abs(barLoB - loB) < 0.5 * pixel);
             CHECK(std::abs(barHiB - hiB) < 0.5 * pixel);
             // Both bars lie on one line parallel to the axis.
-            const Vec2 along = ToWorld(setup.figure.view, barA->points[1]) - ToWorld(setup.figure.view, barA->points[0]);
+            const Vec2 along =
+                ToWorld(setup.figure.view, barA->points[1]) - ToWorld(setup.figure.view, barA->points[0]);
             CHECK(std::abs(Cross(Normalize(along), d)) < 1e-3);
             ++checked;
         }
@@ -281,8 +282,9 @@ TEST_CASE("The verdict draws the MTV arrow to B moved out, and a dot on every co
         const RecordingCanvas canvas = Paint(scene, setup, study.VerdictStep(), kLayerMtv | kLayerContacts);
         const View& view = setup.figure.view;
         const ContactPoint* contacts = study.sweep ? study.sweepResult.contacts : study.manifold.contacts;
-        const int count = study.sweep ? (study.sweepResult.status == SweepStatus::Hit ? study.sweepResult.contactCount : 0)
-                                       : study.manifold.contactCount;
+        const int count = study.sweep
+                              ? (study.sweepResult.status == SweepStatus::Hit ? study.sweepResult.contactCount : 0)
+                              : study.manifold.contactCount;
         std::vector<const DrawCommand*> dots;
         for (const DrawCommand* c : canvas.InGroup("contacts"))
         {
@@ -305,8 +307,8 @@ TEST_CASE("The verdict draws the MTV arrow to B moved out, and a dot on every co
         }
         // The arrow head's tip is B's centre moved by depth along the normal.
         const Body& b = scene.bodies[static_cast<size_t>(study.bodyB)];
-        const Vec2 center = TransformPoint(
-            b.Xf(), b.shape.type == ShapeType::Polygon ? b.shape.polygon.centroid : b.shape.circle.center);
+        const Vec2 center = TransformPoint(b.Xf(), b.shape.type == ShapeType::Polygon ? b.shape.polygon.centroid
+                                                                                      : b.shape.circle.center);
         const ScreenPoint tip = ToScreen(view, center + study.manifold.depth * study.manifold.normal);
         bool found = false;
         for (const DrawCommand* c : canvas.InGroup("mtv"))

@@ -41,7 +41,10 @@ Run Render(const std::string& arguments)
     return run;
 }
 
-std::string Scene(const std::string& name) { return std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + name; }
+std::string Scene(const std::string& name)
+{
+    return std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + name;
+}
 
 std::string Bytes(const fs::path& path)
 {
@@ -115,7 +118,8 @@ TEST_CASE("satviz-render: one figure per step, and a step that does not exist is
 TEST_CASE("satviz-render: usage errors exit with 2 and a one-line reason", "[render-tool]")
 {
     const fs::path dir = FreshDirectory("render-usage");
-    const Run two = Render(Scene("two_circles.json") + " " + Scene("fly_by.json") + " -o " + (dir / "one.png").string());
+    const Run two =
+        Render(Scene("two_circles.json") + " " + Scene("fly_by.json") + " -o " + (dir / "one.png").string());
     CHECK(two.exitCode == 2);
     REQUIRE(two.errLines.size() == 1);
     CHECK(two.errLines[0].find(".png output takes exactly one figure") != std::string::npos);

@@ -34,8 +34,8 @@ enum class ViewQuery
 /// Names of the drawing layers a view can switch on, in drawing order (see render/README.md).
 inline const std::vector<std::string>& ViewLayerNames()
 {
-    static const std::vector<std::string> names = {"shapes",  "labels", "normals",  "axes",  "projection", "exit",
-                                                   "best",    "mtv",    "contacts", "swept", "ghost",      "caption"};
+    static const std::vector<std::string> names = {"shapes", "labels", "normals",  "axes",  "projection", "exit",
+                                                   "best",   "mtv",    "contacts", "swept", "ghost",      "caption"};
     return names;
 }
 
@@ -43,18 +43,18 @@ inline const std::vector<std::string>& ViewLayerNames()
 /// scene file ("view": {...}); every field has a default.
 struct SceneView
 {
-    bool fit = true;                 ///< frame the pair automatically (ignores center and zoom)
-    Vec2 center{};                   ///< world point at the image centre, when not fit
-    double zoom = 100.0;             ///< pixels per world unit, when not fit
-    int width = 800;                 ///< image width in pixels
-    int height = 600;                ///< image height in pixels
-    std::vector<std::string> layers; ///< layer names to draw; empty: the default set
-    std::string bodyA;               ///< first body of the pair; empty: the first body
-    std::string bodyB;               ///< second body of the pair; empty: the second body
+    bool fit = true;                        ///< frame the pair automatically (ignores center and zoom)
+    Vec2 center{};                          ///< world point at the image centre, when not fit
+    double zoom = 100.0;                    ///< pixels per world unit, when not fit
+    int width = 800;                        ///< image width in pixels
+    int height = 600;                       ///< image height in pixels
+    std::vector<std::string> layers;        ///< layer names to draw; empty: the default set
+    std::string bodyA;                      ///< first body of the pair; empty: the first body
+    std::string bodyB;                      ///< second body of the pair; empty: the second body
     ViewQuery query = ViewQuery::Automatic; ///< which test to show
-    int step = -1;                   ///< trace step to show; -1: the last step (the verdict)
-    double time = -1.0;              ///< sweeps: draw the moving shapes at this time in [0, 1]; -1: not drawn
-    std::string caption;             ///< text drawn above the figure; empty: the step's own description
+    int step = -1;                          ///< trace step to show; -1: the last step (the verdict)
+    double time = -1.0;                     ///< sweeps: draw the moving shapes at this time in [0, 1]; -1: not drawn
+    std::string caption;                    ///< text drawn above the figure; empty: the step's own description
 };
 
 /// Largest accepted image side of a view, in pixels.

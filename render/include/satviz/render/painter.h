@@ -20,18 +20,18 @@ using LayerMask = uint32_t;
 /// The drawing layers. A layer that is off costs nothing: the painter skips its work entirely.
 enum Layer : LayerMask
 {
-    kLayerShapes = 1u << 0,      ///< the bodies, filled and outlined
-    kLayerLabels = 1u << 1,      ///< body names, vertex and edge numbers
-    kLayerNormals = 1u << 2,     ///< outward edge normals
-    kLayerAxes = 1u << 3,        ///< every candidate axis, faint, through the pair
-    kLayerProjection = 1u << 4,  ///< the current axis, both projection intervals on it and on a number line
-    kLayerExit = 1u << 5,        ///< the early exit: the separating line of a separating axis
-    kLayerBest = 1u << 6,        ///< the best (least overlap or latest entry) axis so far
-    kLayerMtv = 1u << 7,         ///< the minimum translation vector and B moved out by it
-    kLayerContacts = 1u << 8,    ///< contact points, reference face, incident edge, clipping planes
-    kLayerSwept = 1u << 9,       ///< velocities, swept intervals, entry and exit times on a time bar
-    kLayerGhost = 1u << 10,      ///< the moving shapes at the time of impact (and at the chosen time)
-    kLayerCaption = 1u << 11,    ///< the caption above the figure
+    kLayerShapes = 1u << 0,     ///< the bodies, filled and outlined
+    kLayerLabels = 1u << 1,     ///< body names, vertex and edge numbers
+    kLayerNormals = 1u << 2,    ///< outward edge normals
+    kLayerAxes = 1u << 3,       ///< every candidate axis, faint, through the pair
+    kLayerProjection = 1u << 4, ///< the current axis, both projection intervals on it and on a number line
+    kLayerExit = 1u << 5,       ///< the early exit: the separating line of a separating axis
+    kLayerBest = 1u << 6,       ///< the best (least overlap or latest entry) axis so far
+    kLayerMtv = 1u << 7,        ///< the minimum translation vector and B moved out by it
+    kLayerContacts = 1u << 8,   ///< contact points, reference face, incident edge, clipping planes
+    kLayerSwept = 1u << 9,      ///< velocities, swept intervals, entry and exit times on a time bar
+    kLayerGhost = 1u << 10,     ///< the moving shapes at the time of impact (and at the chosen time)
+    kLayerCaption = 1u << 11,   ///< the caption above the figure
 };
 
 /// Every layer.
@@ -48,11 +48,11 @@ LayerMask LayersFromNames(const std::vector<std::string>& names);
 /// What to picture: the camera, the layers, the trace step and the time.
 struct Figure
 {
-    View view;                          ///< camera and image size
-    LayerMask layers = kDefaultLayers;  ///< layers to draw
-    int step = 0;                       ///< trace step: 0 .. StepCount() - 1 (the last is the verdict)
-    double time = -1.0;                 ///< sweeps: also draw the bodies at this time in [0, 1]; -1: not drawn
-    std::string caption;                ///< caption text; empty: DescribeStep
+    View view;                         ///< camera and image size
+    LayerMask layers = kDefaultLayers; ///< layers to draw
+    int step = 0;                      ///< trace step: 0 .. StepCount() - 1 (the last is the verdict)
+    double time = -1.0;                ///< sweeps: also draw the bodies at this time in [0, 1]; -1: not drawn
+    std::string caption;               ///< caption text; empty: DescribeStep
 };
 
 /// Screen regions of a figure: the caption band on top, the number-line panel at the bottom, the scene between.

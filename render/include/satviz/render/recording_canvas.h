@@ -24,14 +24,14 @@ struct DrawCommand
         FillRect,
         Text,
     };
-    Kind kind = Kind::Segment;        ///< which Canvas call
-    std::string group;                ///< the group named by the last BeginGroup
-    std::vector<ScreenPoint> points;  ///< the points (circles: the centre; rectangles: min and max)
-    Color color = 0;                  ///< colour
-    float thickness = 0.0f;           ///< line thickness (circles: the radius is in `radius`)
-    float radius = 0.0f;              ///< circle radius
-    bool closed = false;              ///< polylines: closed
-    std::string text;                 ///< text calls: the text
+    Kind kind = Kind::Segment;          ///< which Canvas call
+    std::string group;                  ///< the group named by the last BeginGroup
+    std::vector<ScreenPoint> points;    ///< the points (circles: the centre; rectangles: min and max)
+    Color color = 0;                    ///< colour
+    float thickness = 0.0f;             ///< line thickness (circles: the radius is in `radius`)
+    float radius = 0.0f;                ///< circle radius
+    bool closed = false;                ///< polylines: closed
+    std::string text;                   ///< text calls: the text
     TextStyle style = TextStyle::Label; ///< text calls: the style
 };
 

@@ -13,9 +13,9 @@ namespace satviz
 /// swept test only when the view shows it (nothing is swept when nothing moves).
 struct PairStudy
 {
-    int bodyA = -1;          ///< index of body A in the scene
-    int bodyB = -1;          ///< index of body B in the scene
-    bool sweep = false;      ///< the figure shows the swept test (else the static test)
+    int bodyA = -1;     ///< index of body A in the scene
+    int bodyB = -1;     ///< index of body B in the scene
+    bool sweep = false; ///< the figure shows the swept test (else the static test)
     /// The pair moves but already overlaps at t = 0: there is no time of impact, so the static test is shown.
     bool startsOverlapping = false;
     Manifold manifold;       ///< Collide(A, B)

@@ -30,7 +30,10 @@ ScreenPoint ToScreen(const View& view, Vec2 world);
 Vec2 ToWorld(const View& view, ScreenPoint screen);
 
 /// A world length in pixels.
-inline float ToPixels(const View& view, double length) { return static_cast<float>(length * view.zoom); }
+inline float ToPixels(const View& view, double length)
+{
+    return static_cast<float>(length * view.zoom);
+}
 
 /// Zooms by `factor` about a fixed screen point (the pointer): the world point under it stays put.
 View ZoomAbout(const View& view, ScreenPoint fixed, double factor);
