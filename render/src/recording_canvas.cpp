@@ -4,82 +4,61 @@
 namespace satviz
 {
 
+DrawCommand& RecordingCanvas::Add(DrawCommand::Kind kind, Color color)
+{
+    DrawCommand& command = commands.emplace_back();
+    command.kind = kind;
+    command.group = group_;
+    command.color = color;
+    return command;
+}
+
 void RecordingCanvas::Segment(ScreenPoint a, ScreenPoint b, Color color, float thickness)
 {
-    DrawCommand command;
-    command.kind = DrawCommand::Kind::Segment;
-    command.group = group_;
+    DrawCommand& command = Add(DrawCommand::Kind::Segment, color);
     command.points = {a, b};
-    command.color = color;
     command.thickness = thickness;
-    commands.push_back(std::move(command));
 }
 
 void RecordingCanvas::Polyline(const ScreenPoint* points, int count, bool closed, Color color, float thickness)
 {
-    DrawCommand command;
-    command.kind = DrawCommand::Kind::Polyline;
-    command.group = group_;
+    DrawCommand& command = Add(DrawCommand::Kind::Polyline, color);
     command.points.assign(points, points + count);
     command.closed = closed;
-    command.color = color;
     command.thickness = thickness;
-    commands.push_back(std::move(command));
 }
 
 void RecordingCanvas::FillConvex(const ScreenPoint* points, int count, Color color)
 {
-    DrawCommand command;
-    command.kind = DrawCommand::Kind::FillConvex;
-    command.group = group_;
-    command.points.assign(points, points + count);
-    command.color = color;
-    commands.push_back(std::move(command));
+    Add(DrawCommand::Kind::FillConvex, color).points.assign(points, points + count);
 }
 
 void RecordingCanvas::Circle(ScreenPoint center, float radius, Color color, float thickness)
 {
-    DrawCommand command;
-    command.kind = DrawCommand::Kind::Circle;
-    command.group = group_;
+    DrawCommand& command = Add(DrawCommand::Kind::Circle, color);
     command.points = {center};
     command.radius = radius;
-    command.color = color;
     command.thickness = thickness;
-    commands.push_back(std::move(command));
 }
 
 void RecordingCanvas::FillCircle(ScreenPoint center, float radius, Color color)
 {
-    DrawCommand command;
-    command.kind = DrawCommand::Kind::FillCircle;
-    command.group = group_;
+    DrawCommand& command = Add(DrawCommand::Kind::FillCircle, color);
     command.points = {center};
     command.radius = radius;
-    command.color = color;
-    commands.push_back(std::move(command));
 }
 
 void RecordingCanvas::FillRect(ScreenPoint min, ScreenPoint max, Color color)
 {
-    DrawCommand command;
-    command.kind = DrawCommand::Kind::FillRect;
-    command.group = group_;
-    command.points = {min, max};
-    command.color = color;
-    commands.push_back(std::move(command));
+    Add(DrawCommand::Kind::FillRect, color).points = {min, max};
 }
 
 void RecordingCanvas::Text(ScreenPoint topLeft, std::string_view text, TextStyle style, Color color)
 {
-    DrawCommand command;
-    command.kind = DrawCommand::Kind::Text;
-    command.group = group_;
+    DrawCommand& command = Add(DrawCommand::Kind::Text, color);
     command.points = {topLeft};
     command.text = std::string(text);
     command.style = style;
-    command.color = color;
-    commands.push_back(std::move(command));
 }
 
 ScreenPoint RecordingCanvas::MeasureText(std::string_view text, TextStyle style)

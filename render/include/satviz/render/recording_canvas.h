@@ -57,6 +57,7 @@ class RecordingCanvas : public Canvas
     std::vector<std::string> Texts() const;
 
   private:
+    DrawCommand& Add(DrawCommand::Kind kind, Color color);
     std::string group_;
 };
 
