@@ -160,3 +160,74 @@ TEST_CASE("View block errors name the field", "[scene]")
           "s.json: view.centre: unknown field \"centre\" (did you mean \"center\"?)");
     CHECK(ErrorOf(two + R"([1, 2]})") == "s.json: view: expected an object, got an array");
 }
+
+TEST_CASE("A saved scene reads back as the same scene, bit for bit", "[scene]")
+{
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    {
+        const SceneResult original = LoadScene(entry.path().string());
+        REQUIRE(original.Ok());
+        const SceneResult again = ParseScene(SceneToJson(original.scene), "saved.json");
+        INFO(entry.path() << "\n" << again.error);
+        REQUIRE(again.Ok());
+        const Scene& a = original.scene;
+        const Scene& b = again.scene;
+        CHECK(a.description == b.description);
+        REQUIRE(a.bodies.size() == b.bodies.size());
+        for (size_t i = 0; i < a.bodies.size(); ++i)
+        {
+            const Body& x = a.bodies[i];
+            const Body& y = b.bodies[i];
+            CHECK(x.name == y.name);
+            CHECK(x.position == y.position);
+            CHECK(x.angle == y.angle);
+            CHECK(x.velocity == y.velocity);
+            REQUIRE(x.shape.type == y.shape.type);
+            if (x.shape.type == ShapeType::Polygon)
+            {
+                REQUIRE(x.shape.polygon.Count() == y.shape.polygon.Count());
+                for (int k = 0; k < x.shape.polygon.Count(); ++k)
+                {
+                    CHECK(x.shape.polygon.vertices[k] == y.shape.polygon.vertices[k]);
+                    CHECK(x.shape.polygon.normals[k] == y.shape.polygon.normals[k]);
+                }
+            }
+            else
+            {
+                CHECK(x.shape.circle.radius == y.shape.circle.radius);
+                CHECK(x.shape.circle.center == y.shape.circle.center);
+            }
+        }
+        CHECK(a.hasView == b.hasView);
+        CHECK(a.view.fit == b.view.fit);
+        CHECK(a.view.center == b.view.center);
+        CHECK(a.view.zoom == b.view.zoom);
+        CHECK(a.view.layers == b.view.layers);
+        CHECK(a.view.step == b.view.step);
+        CHECK(a.view.time == b.view.time);
+        CHECK(a.view.caption == b.view.caption);
+        ++scenes;
+    }
+    CHECK(scenes >= 8);
+}
+
+TEST_CASE("SaveScene replaces the file atomically and reports failures with the file name", "[scene]")
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "satviz-save-test";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const SceneResult loaded = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    REQUIRE(loaded.Ok());
+    std::string error;
+    const std::string file = (dir / "scene.json").string();
+    REQUIRE(SaveScene(loaded.scene, file, error));
+    REQUIRE(LoadScene(file).Ok());
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+    {
+        CHECK(entry.path().filename() == "scene.json"); // no temporary file left
+    }
+    CHECK(!SaveScene(loaded.scene, (dir / "missing" / "scene.json").string(), error));
+    CHECK(error.find((dir / "missing" / "scene.json").string() + ": cannot write") == 0);
+    std::filesystem::remove_all(dir);
+}

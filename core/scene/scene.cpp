@@ -13,6 +13,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <unistd.h>
 
 namespace satviz
 {
@@ -571,6 +572,155 @@ SceneResult LoadScene(const std::string& file)
         return result;
     }
     return ParseScene(text.str(), file);
+}
+
+namespace
+{
+
+nlohmann::ordered_json PointJson(Vec2 p)
+{
+    return nlohmann::ordered_json::array({p.x, p.y});
+}
+
+} // namespace
+
+std::string SceneToJson(const Scene& scene)
+{
+    using Ordered = nlohmann::ordered_json;
+    Ordered root = Ordered::object();
+    if (!scene.description.empty())
+    {
+        root["description"] = scene.description;
+    }
+    Ordered bodies = Ordered::array();
+    for (const Body& body : scene.bodies)
+    {
+        Ordered item = Ordered::object();
+        item["name"] = body.name;
+        if (body.shape.type == ShapeType::Polygon)
+        {
+            Ordered vertices = Ordered::array();
+            for (const Vec2& v : body.shape.polygon.vertices)
+            {
+                vertices.push_back(PointJson(v));
+            }
+            item["polygon"] = vertices;
+        }
+        else
+        {
+            Ordered circle = Ordered::object();
+            circle["radius"] = body.shape.circle.radius;
+            if (body.shape.circle.center != Vec2{})
+            {
+                circle["center"] = PointJson(body.shape.circle.center);
+            }
+            item["circle"] = circle;
+        }
+        item["position"] = PointJson(body.position);
+        if (body.angle != 0.0)
+        {
+            item["angle"] = body.angle;
+        }
+        if (body.velocity != Vec2{})
+        {
+            item["velocity"] = PointJson(body.velocity);
+        }
+        bodies.push_back(item);
+    }
+    root["bodies"] = bodies;
+    if (scene.hasView)
+    {
+        const SceneView& v = scene.view;
+        Ordered view = Ordered::object();
+        if (v.fit)
+        {
+            view["zoom"] = "fit";
+        }
+        else
+        {
+            view["center"] = PointJson(v.center);
+            view["zoom"] = v.zoom;
+        }
+        view["size"] = Ordered::array({v.width, v.height});
+        if (!v.layers.empty())
+        {
+            view["layers"] = v.layers;
+        }
+        if (!v.bodyA.empty() && !v.bodyB.empty())
+        {
+            view["pair"] = Ordered::array({v.bodyA, v.bodyB});
+        }
+        view["query"] = v.query == ViewQuery::Collide ? "collide" : (v.query == ViewQuery::Sweep ? "sweep" : "auto");
+        if (v.step >= 0)
+        {
+            view["step"] = v.step;
+        }
+        else
+        {
+            view["step"] = "last";
+        }
+        if (v.time >= 0.0)
+        {
+            view["time"] = v.time;
+        }
+        if (!v.caption.empty())
+        {
+            view["caption"] = v.caption;
+        }
+        root["view"] = view;
+    }
+    // One body per line keeps saved scenes readable and diffable.
+    std::string text = "{\n";
+    if (root.contains("description"))
+    {
+        text += "  \"description\": " + root["description"].dump() + ",\n";
+    }
+    text += "  \"bodies\": [\n";
+    for (size_t i = 0; i < bodies.size(); ++i)
+    {
+        text += "    " + bodies[i].dump() + (i + 1 < bodies.size() ? ",\n" : "\n");
+    }
+    text += "  ]";
+    if (root.contains("view"))
+    {
+        text += ",\n  \"view\": " + root["view"].dump();
+    }
+    text += "\n}\n";
+    return text;
+}
+
+bool SaveScene(const Scene& scene, const std::string& file, std::string& error)
+{
+    const std::string text = SceneToJson(scene);
+    const std::filesystem::path target(file);
+    const std::filesystem::path temporary =
+        target.parent_path() / ("." + target.filename().string() + ".tmp." + std::to_string(::getpid()));
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out)
+        {
+            error = file + ": cannot write: " + std::strerror(errno);
+            return false;
+        }
+        out << text;
+        out.flush();
+        if (!out)
+        {
+            error = file + ": write failed: " + std::strerror(errno);
+            out.close();
+            std::filesystem::remove(temporary);
+            return false;
+        }
+    }
+    std::error_code code;
+    std::filesystem::rename(temporary, target, code);
+    if (code)
+    {
+        error = file + ": cannot replace the file: " + code.message();
+        std::filesystem::remove(temporary, code);
+        return false;
+    }
+    return true;
 }
 
 } // namespace satviz

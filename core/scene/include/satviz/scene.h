@@ -92,4 +92,14 @@ SceneResult ParseScene(std::string_view text, const std::string& file);
 /// Reads and parses a scene file.
 SceneResult LoadScene(const std::string& file);
 
+/// The scene as JSON text that ParseScene reads back to the same scene: bodies with their polygon vertices (boxes
+/// and regular polygons are written as vertices), circles, positions, angles and velocities, every number printed
+/// so that it reads back as the same double; the view block when the scene has one.
+std::string SceneToJson(const Scene& scene);
+
+/// Writes the scene to `file` atomically: a temporary file in the same directory, then renamed
+/// over the target, so that a failed write never damages the existing file. Returns false with a one-line error
+/// naming the file.
+bool SaveScene(const Scene& scene, const std::string& file, std::string& error);
+
 } // namespace satviz
