@@ -47,8 +47,9 @@ bool AddFigureFonts(ImFontAtlas& atlas, FigureFonts& fonts, std::string& error)
     return true;
 }
 
-ImDrawListCanvas::ImDrawListCanvas(ImDrawList* list, ImDrawList* overflow, const FigureFonts& fonts, ImVec2 origin)
-    : list_(list), overflow_(overflow), fonts_(fonts), origin_(origin)
+ImDrawListCanvas::ImDrawListCanvas(ImDrawList* list, const FigureFonts& fonts, ImVec2 origin,
+                                   std::function<ImDrawList*()> more)
+    : list_(list), more_(std::move(more)), fonts_(fonts), origin_(origin)
 {
 }
 
@@ -59,11 +60,13 @@ ImDrawList* ImDrawListCanvas::Target(int vertices)
     {
         return list_;
     }
-    if (overflow_ != nullptr && overflow_->_VtxCurrentIdx + static_cast<unsigned>(vertices) < kLimit)
+    if (more_ && vertices < kLimit)
     {
-        list_ = overflow_;
-        overflow_ = nullptr;
-        return list_;
+        if (ImDrawList* next = more_())
+        {
+            list_ = next;
+            return list_;
+        }
     }
     ++dropped_;
     return nullptr;

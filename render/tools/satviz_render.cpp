@@ -4,6 +4,7 @@
 // and never libGL: the app, which draws in a window, is a separate executable.
 #include <satviz/render/describe.h>
 #include <satviz/render/figure.h>
+#include <satviz/render/figure_drawing.h>
 #include <satviz/render/imgui_canvas.h>
 #include <satviz/render/png_file.h>
 #include <satviz/scene.h>
@@ -86,7 +87,7 @@ class HeadlessRenderer
         return true;
     }
 
-    /// Paints one figure and reads it back as RGB rows, bottom row first.
+    /// Paints one figure and reads it back as RGB rows, bottom row first (the same drawing as the app's export).
     bool Render(const satviz::Scene& scene, const satviz::FigureSetup& setup, std::vector<unsigned char>& rgb,
                 std::string& error)
     {
@@ -101,19 +102,12 @@ class HeadlessRenderer
         io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
         ImGui_ImplOpenGL2_NewFrame();
         ImGui::NewFrame();
-        satviz::ImDrawListCanvas canvas(ImGui::GetBackgroundDrawList(), ImGui::GetForegroundDrawList(), fonts_);
-        satviz::PaintFigure(canvas, scene, setup.study, setup.figure);
+        satviz::FigureDrawing drawing(scene, setup.study, setup.figure, fonts_);
         ImGui::Render();
-        if (canvas.Dropped() > 0)
-        {
-            error = "the figure needs more than two draw lists of vertices (" + std::to_string(canvas.Dropped()) +
-                    " drawing calls dropped); draw fewer layers or simpler shapes";
-            return false;
-        }
         glViewport(0, 0, width, height);
         glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
-        ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+        ImGui_ImplOpenGL2_RenderDrawData(drawing.DrawData());
         glFinish();
         rgb.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);

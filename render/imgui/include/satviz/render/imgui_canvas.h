@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include <functional>
 #include <string>
 
 namespace satviz
@@ -29,13 +30,15 @@ struct FigureFonts
 /// when a font file is missing.
 bool AddFigureFonts(ImFontAtlas& atlas, FigureFonts& fonts, std::string& error);
 
-/// Draws on an ImGui draw list. With 16-bit indices a draw list holds at most 65 536 vertices, so when the first
-/// list fills up the canvas continues on `overflow` (drawn above it); what fits in neither is dropped and counted.
+/// Draws on an ImGui draw list. With 16-bit indices a draw list holds at most 65 536 vertices, so when a list
+/// fills up the canvas asks `more` for the next one (drawn above it); without one, what does not fit is dropped
+/// and counted.
 class ImDrawListCanvas : public Canvas
 {
   public:
     /// A canvas whose screen origin (0, 0) is at `origin` on the draw list.
-    ImDrawListCanvas(ImDrawList* list, ImDrawList* overflow, const FigureFonts& fonts, ImVec2 origin = {0, 0});
+    ImDrawListCanvas(ImDrawList* list, const FigureFonts& fonts, ImVec2 origin = {0, 0},
+                     std::function<ImDrawList*()> more = {});
 
     void Segment(ScreenPoint a, ScreenPoint b, Color color, float thickness) override;
     void Polyline(const ScreenPoint* points, int count, bool closed, Color color, float thickness) override;
@@ -55,7 +58,7 @@ class ImDrawListCanvas : public Canvas
     ImFont* FontOf(TextStyle style) const;
 
     ImDrawList* list_;
-    ImDrawList* overflow_;
+    std::function<ImDrawList*()> more_;
     FigureFonts fonts_;
     ImVec2 origin_;
     ImVector<ImVec2> scratch_;
