@@ -4,8 +4,7 @@
 namespace satviz
 {
 
-FigureDrawing::FigureDrawing(const Scene& scene, const PairStudy& study, const Figure& figure,
-                             const FigureFonts& fonts)
+FigureDrawing::FigureDrawing(const Scene& scene, const PairStudy& study, const Figure& figure, const FigureFonts& fonts)
     : width_(static_cast<float>(figure.view.width)), height_(static_cast<float>(figure.view.height))
 {
     ImDrawListCanvas canvas(NewList(), fonts, ImVec2(0.0f, 0.0f), [this]() { return NewList(); });

@@ -1,0 +1,1080 @@
+// SPDX-License-Identifier: MIT
+// satviz app: menus, the side panel, popups and the edit history. The canvas and its mouse handling are in
+// canvas.cpp.
+#include "app.h"
+
+#include <satviz/render/describe.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace satviz
+{
+
+namespace
+{
+
+constexpr float kPanelWidth = 380.0f;
+constexpr double kPlayInterval = 0.9; // seconds per step while playing
+
+bool Ctrl()
+{
+    return ImGui::GetIO().KeyCtrl;
+}
+
+bool Pressed(int key)
+{
+    return key >= 0 && ImGui::IsKeyPressed(key, false);
+}
+
+bool PressedNamed(ImGuiKey key)
+{
+    return Pressed(ImGui::GetKeyIndex(key));
+}
+
+std::vector<std::string> LayerNames(LayerMask mask)
+{
+    std::vector<std::string> names;
+    for (const std::string& name : ViewLayerNames())
+    {
+        if (mask & LayerFromName(name))
+        {
+            names.push_back(name);
+        }
+    }
+    return names;
+}
+
+std::string UniqueName(const Scene& scene, const std::string& stem)
+{
+    for (int i = 1;; ++i)
+    {
+        const std::string name = stem + std::to_string(i);
+        if (std::none_of(scene.bodies.begin(), scene.bodies.end(), [&](const Body& b) { return b.name == name; }))
+        {
+            return name;
+        }
+    }
+}
+
+void HelpMarker(const char* text)
+{
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered())
+    {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+        ImGui::TextUnformatted(text);
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
+}
+
+} // namespace
+
+App::App(const FigureFonts& fonts, AppOptions options) : fonts_(fonts), options_(std::move(options))
+{
+    LoadRecent();
+}
+
+bool App::Open(const std::string& path)
+{
+    SceneResult result = LoadScene(path);
+    if (!result.Ok())
+    {
+        SetStatus(result.error, true);
+        return false;
+    }
+    if (result.scene.bodies.size() < 2)
+    {
+        SetStatus(path + ": bodies: the app needs at least two bodies to test", true);
+        return false;
+    }
+    scene = std::move(result.scene);
+    file = path;
+    std::error_code code;
+    const auto canonical = std::filesystem::weakly_canonical(path, code);
+    const auto bundled = std::filesystem::weakly_canonical(options_.scenesDir, code);
+    readOnly = !options_.scenesDir.empty() && canonical.parent_path() == bundled;
+    dirty = false;
+    undo_.clear();
+    redo_.clear();
+    selected = -1;
+    drag = DragKind::None;
+    playing = false;
+    layers = scene.view.layers.empty() ? kDefaultLayers : LayersFromNames(scene.view.layers);
+    cameraFit = scene.view.fit;
+    if (!cameraFit)
+    {
+        camera.center = scene.view.center;
+        camera.zoom = scene.view.zoom;
+    }
+    step = scene.view.step;
+    Refresh();
+    Remember(path);
+    SetStatus("Opened " + path + (readOnly ? " (a bundled scene: Save asks for a new file)" : ""), false);
+    return true;
+}
+
+void App::SetStatus(const std::string& message, bool error)
+{
+    status = message;
+    statusIsError = error;
+}
+
+void App::Refresh()
+{
+    // The pair must still exist after edits (a deleted body, a renamed one).
+    auto exists = [&](const std::string& name) {
+        return std::any_of(scene.bodies.begin(), scene.bodies.end(), [&](const Body& b) { return b.name == name; });
+    };
+    if (!exists(scene.view.bodyA) || !exists(scene.view.bodyB) || scene.view.bodyA == scene.view.bodyB)
+    {
+        scene.view.bodyA.clear();
+        scene.view.bodyB.clear();
+    }
+    FigureOptions options;
+    options.width = canvasWidth;
+    options.height = canvasHeight;
+    options.setLayers = true;
+    options.layers = layers;
+    options.setStep = true;
+    options.step = -1;
+    Scene fitted = scene;
+    fitted.view.fit = true;
+    setup = SetUpFigure(fitted, options);
+    if (!setup.Ok())
+    {
+        SetStatus(setup.error, true);
+        return;
+    }
+    if (step < 0 || step >= setup.study.StepCount())
+    {
+        step = setup.study.VerdictStep();
+    }
+    setup.figure.step = step;
+    setup.figure.time = scene.view.time;
+    setup.figure.caption = scene.view.caption;
+    if (cameraFit)
+    {
+        camera = setup.figure.view;
+    }
+    camera.width = canvasWidth;
+    camera.height = canvasHeight;
+    setup.figure.view = camera;
+}
+
+Scene App::SceneForSaving() const
+{
+    Scene saved = scene;
+    saved.hasView = true;
+    SceneView& view = saved.view;
+    view.fit = cameraFit;
+    if (!cameraFit)
+    {
+        view.center = camera.center;
+        view.zoom = camera.zoom;
+    }
+    view.width = canvasWidth;
+    view.height = canvasHeight;
+    view.layers = LayerNames(layers);
+    if (setup.Ok())
+    {
+        view.bodyA = scene.bodies[static_cast<size_t>(setup.study.bodyA)].name;
+        view.bodyB = scene.bodies[static_cast<size_t>(setup.study.bodyB)].name;
+    }
+    view.step = step;
+    return saved;
+}
+
+FigureSetup App::ExportFigure() const
+{
+    return SetUpFigure(SceneForSaving(), {});
+}
+
+bool App::TakeExportRequest(std::string& path)
+{
+    if (!exportRequested_)
+    {
+        return false;
+    }
+    exportRequested_ = false;
+    path = exportPath_;
+    return true;
+}
+
+bool App::RequestQuit()
+{
+    if (!dirty || quitConfirmed_)
+    {
+        quitConfirmed_ = true;
+        return true;
+    }
+    askQuit_ = true;
+    return false;
+}
+
+void App::BeginEdit()
+{
+    editStart_ = scene;
+    editOpen_ = true;
+}
+
+void App::CommitEdit()
+{
+    if (!editOpen_)
+    {
+        return;
+    }
+    editOpen_ = false;
+    if (SceneToJson(editStart_) == SceneToJson(scene))
+    {
+        return; // a click without a change is not an edit
+    }
+    undo_.push_back(std::move(editStart_));
+    redo_.clear();
+    dirty = true;
+}
+
+void App::CancelEdit()
+{
+    if (editOpen_)
+    {
+        scene = editStart_;
+        editOpen_ = false;
+        Refresh();
+    }
+}
+
+bool App::Undo()
+{
+    if (undo_.empty() || editOpen_)
+    {
+        return false;
+    }
+    redo_.push_back(scene);
+    scene = std::move(undo_.back());
+    undo_.pop_back();
+    dirty = true;
+    selected = std::min(selected, static_cast<int>(scene.bodies.size()) - 1);
+    Refresh();
+    return true;
+}
+
+bool App::Redo()
+{
+    if (redo_.empty() || editOpen_)
+    {
+        return false;
+    }
+    undo_.push_back(scene);
+    scene = std::move(redo_.back());
+    redo_.pop_back();
+    dirty = true;
+    selected = std::min(selected, static_cast<int>(scene.bodies.size()) - 1);
+    Refresh();
+    return true;
+}
+
+void App::Save(const std::string& path)
+{
+    Scene saved = SceneForSaving();
+    std::string error;
+    if (!SaveScene(saved, path, error))
+    {
+        SetStatus(error, true);
+        return;
+    }
+    scene = std::move(saved);
+    file = path;
+    readOnly = false;
+    dirty = false;
+    Remember(path);
+    SetStatus("Saved " + path, false);
+}
+
+void App::AddBody(Shape shape, const std::string& stem)
+{
+    BeginEdit();
+    Body body;
+    body.name = UniqueName(scene, stem);
+    body.shape = std::move(shape);
+    body.position = camera.center;
+    scene.bodies.push_back(std::move(body));
+    selected = static_cast<int>(scene.bodies.size()) - 1;
+    CommitEdit();
+    Refresh();
+    SetStatus("Added " + scene.bodies.back().name + ": drag it into place", false);
+}
+
+void App::DeleteSelected()
+{
+    if (selected < 0 || selected >= static_cast<int>(scene.bodies.size()))
+    {
+        SetStatus("Select a body first (click it)", true);
+        return;
+    }
+    if (scene.bodies.size() <= 2)
+    {
+        SetStatus("The scene keeps at least two bodies: add one before deleting this one", true);
+        return;
+    }
+    BeginEdit();
+    const std::string name = scene.bodies[static_cast<size_t>(selected)].name;
+    scene.bodies.erase(scene.bodies.begin() + selected);
+    selected = -1;
+    CommitEdit();
+    Refresh();
+    SetStatus("Deleted " + name, false);
+}
+
+void App::Remember(const std::string& path)
+{
+    std::error_code code;
+    const std::string absolute = std::filesystem::absolute(path, code).string();
+    recent.erase(std::remove(recent.begin(), recent.end(), absolute), recent.end());
+    recent.insert(recent.begin(), absolute);
+    if (recent.size() > 8)
+    {
+        recent.resize(8);
+    }
+    SaveRecent();
+}
+
+void App::LoadRecent()
+{
+    if (options_.recentFile.empty())
+    {
+        return;
+    }
+    std::ifstream in(options_.recentFile);
+    for (std::string line; std::getline(in, line) && recent.size() < 8;)
+    {
+        if (!line.empty())
+        {
+            recent.push_back(line);
+        }
+    }
+}
+
+void App::SaveRecent() const
+{
+    if (options_.recentFile.empty())
+    {
+        return;
+    }
+    std::error_code code;
+    std::filesystem::create_directories(std::filesystem::path(options_.recentFile).parent_path(), code);
+    const std::string temporary = options_.recentFile + ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::trunc);
+        for (const std::string& path : recent)
+        {
+            out << path << '\n';
+        }
+        if (!out)
+        {
+            return;
+        }
+    }
+    std::filesystem::rename(temporary, options_.recentFile, code);
+}
+
+std::vector<std::string> App::BundledScenes() const
+{
+    std::vector<std::string> files;
+    std::error_code code;
+    for (const auto& entry : std::filesystem::directory_iterator(options_.scenesDir, code))
+    {
+        if (entry.path().extension() == ".json")
+        {
+            files.push_back(entry.path().string());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+void App::Frame()
+{
+    Shortcuts();
+    if (playing)
+    {
+        playClock_ += ImGui::GetIO().DeltaTime;
+        if (playClock_ >= kPlayInterval)
+        {
+            playClock_ = 0.0;
+            if (step < setup.study.VerdictStep())
+            {
+                ++step;
+                Refresh();
+            }
+            playing = step < setup.study.VerdictStep();
+        }
+    }
+    MenuBar();
+    CanvasWindow();
+    SidePanel();
+    StatusBar();
+    Popups();
+    if (showHelp)
+    {
+        HelpOverlay();
+    }
+}
+
+void App::Shortcuts()
+{
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput)
+    {
+        return;
+    }
+    const AppKeys& k = options_.keys;
+    if (Ctrl())
+    {
+        if (PressedNamed(ImGuiKey_Z))
+        {
+            if (!Undo())
+            {
+                SetStatus("Nothing to undo", false);
+            }
+        }
+        if (PressedNamed(ImGuiKey_Y))
+        {
+            if (!Redo())
+            {
+                SetStatus("Nothing to redo", false);
+            }
+        }
+        if (Pressed(k.s))
+        {
+            if (file.empty() || readOnly)
+            {
+                askSaveAs_ = true;
+            }
+            else
+            {
+                Save(file);
+            }
+        }
+        if (Pressed(k.o))
+        {
+            askOpen_ = true;
+        }
+        if (Pressed(k.e))
+        {
+            exportRequested_ = true;
+            std::filesystem::path target = options_.exportPath;
+            if (target.empty())
+            {
+                const std::filesystem::path base = file.empty() ? "satviz.json" : file;
+                target = base.parent_path() / (base.stem().string() + "-step" + std::to_string(step) + ".png");
+            }
+            exportPath_ = target.string();
+        }
+        if (Pressed(k.q))
+        {
+            RequestQuit();
+        }
+        return;
+    }
+    if (PressedNamed(ImGuiKey_Space))
+    {
+        playing = !playing;
+        playClock_ = 0.0;
+        if (playing && step >= setup.study.VerdictStep())
+        {
+            step = 0;
+            Refresh();
+        }
+    }
+    if (PressedNamed(ImGuiKey_RightArrow) && step < setup.study.VerdictStep())
+    {
+        ++step;
+        Refresh();
+    }
+    if (PressedNamed(ImGuiKey_LeftArrow) && step > 0)
+    {
+        --step;
+        Refresh();
+    }
+    if (PressedNamed(ImGuiKey_Delete))
+    {
+        DeleteSelected();
+    }
+    if (Pressed(k.f1))
+    {
+        showHelp = !showHelp;
+    }
+    if (Pressed(k.f))
+    {
+        cameraFit = true;
+        Refresh();
+    }
+    if (PressedNamed(ImGuiKey_Escape))
+    {
+        showHelp = false;
+    }
+}
+
+void App::MenuBar()
+{
+    if (!ImGui::BeginMainMenuBar())
+    {
+        return;
+    }
+    if (ImGui::BeginMenu("File"))
+    {
+        if (ImGui::MenuItem("Open...", "Ctrl+O"))
+        {
+            askOpen_ = true;
+        }
+        if (ImGui::BeginMenu("Bundled scenes"))
+        {
+            for (const std::string& path : BundledScenes())
+            {
+                if (ImGui::MenuItem(std::filesystem::path(path).stem().string().c_str()))
+                {
+                    Open(path);
+                }
+            }
+            ImGui::EndMenu();
+        }
+        if (ImGui::BeginMenu("Recent", !recent.empty()))
+        {
+            for (const std::string& path : std::vector<std::string>(recent))
+            {
+                if (ImGui::MenuItem(path.c_str()))
+                {
+                    Open(path);
+                }
+            }
+            ImGui::EndMenu();
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Save", "Ctrl+S"))
+        {
+            if (file.empty() || readOnly)
+            {
+                askSaveAs_ = true;
+            }
+            else
+            {
+                Save(file);
+            }
+        }
+        if (ImGui::MenuItem("Save as..."))
+        {
+            askSaveAs_ = true;
+        }
+        if (ImGui::MenuItem("Export PNG", "Ctrl+E"))
+        {
+            exportRequested_ = true;
+            const std::filesystem::path base = file.empty() ? "satviz.json" : file;
+            exportPath_ =
+                options_.exportPath.empty()
+                    ? (base.parent_path() / (base.stem().string() + "-step" + std::to_string(step) + ".png")).string()
+                    : options_.exportPath;
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit", "Ctrl+Q"))
+        {
+            RequestQuit();
+        }
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit"))
+    {
+        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, !undo_.empty()))
+        {
+            Undo();
+        }
+        if (ImGui::MenuItem("Redo", "Ctrl+Y", false, !redo_.empty()))
+        {
+            Redo();
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Add box"))
+        {
+            AddBody(MakeShape(MakeBox(0.5, 0.5).polygon), "box");
+        }
+        if (ImGui::MenuItem("Add triangle"))
+        {
+            AddBody(MakeShape(MakeRegularPolygon(3, 0.6).polygon), "triangle");
+        }
+        if (ImGui::MenuItem("Add hexagon"))
+        {
+            AddBody(MakeShape(MakeRegularPolygon(6, 0.6).polygon), "hexagon");
+        }
+        if (ImGui::MenuItem("Add circle"))
+        {
+            AddBody(MakeShape(Circle{{0.0, 0.0}, 0.5}), "circle");
+        }
+        if (ImGui::MenuItem("Delete selected", "Del", false, selected >= 0))
+        {
+            DeleteSelected();
+        }
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View"))
+    {
+        if (ImGui::MenuItem("Fit the pair", "F"))
+        {
+            cameraFit = true;
+            Refresh();
+        }
+        ImGui::Separator();
+        LayerToggles();
+        ImGui::Separator();
+        ImGui::MenuItem("Help", "F1", &showHelp);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Help"))
+    {
+        ImGui::MenuItem("Controls and conventions", "F1", &showHelp);
+        ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+}
+
+void App::LayerToggles()
+{
+    static const char* const kDescriptions[] = {
+        "the bodies, filled and outlined",
+        "body names, vertex and edge numbers",
+        "every outward edge normal",
+        "every candidate axis, faint",
+        "the current axis, both intervals, the number line",
+        "the separating line of an early exit",
+        "the best axis so far",
+        "the minimum translation vector",
+        "contact points, reference face, incident edge",
+        "velocities, swept intervals, the time bar",
+        "the moving bodies at the time of impact",
+        "the step's sentence above the figure",
+    };
+    const std::vector<std::string>& names = ViewLayerNames();
+    for (size_t i = 0; i < names.size(); ++i)
+    {
+        bool on = (layers & (1u << i)) != 0;
+        if (ImGui::Checkbox(names[i].c_str(), &on))
+        {
+            layers = on ? (layers | (1u << i)) : (layers & ~(1u << i));
+            Refresh();
+        }
+        if (ImGui::IsItemHovered())
+        {
+            ImGui::SetTooltip("%s", kDescriptions[i]);
+        }
+    }
+}
+
+void App::SidePanel()
+{
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const float top = ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x - kPanelWidth, viewport->Pos.y + top));
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, viewport->Size.y - 2.0f * top));
+    ImGui::Begin("##panel", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    const std::string title =
+        (file.empty() ? std::string("untitled") : std::filesystem::path(file).filename().string()) +
+        (dirty ? " (modified)" : "");
+    ImGui::TextUnformatted(title.c_str());
+    if (!scene.description.empty())
+    {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", scene.description.c_str());
+        ImGui::PopStyleColor();
+    }
+    ImGui::Separator();
+    if (setup.Ok())
+    {
+        StepControls();
+        Inspector();
+    }
+    if (ImGui::CollapsingHeader("Layers"))
+    {
+        LayerToggles();
+    }
+    ImGui::End();
+}
+
+void App::StepControls()
+{
+    const PairStudy& study = setup.study;
+    // The pair and the test.
+    const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
+    for (int s = 0; s < 2; ++s)
+    {
+        const int current = s == 0 ? study.bodyA : study.bodyB;
+        ImGui::SetNextItemWidth(half);
+        if (s == 1)
+        {
+            ImGui::SameLine();
+        }
+        const std::string label = s == 0 ? "##A" : "##B";
+        if (ImGui::BeginCombo(
+                label.c_str(),
+                (std::string(s == 0 ? "A: " : "B: ") + scene.bodies[static_cast<size_t>(current)].name).c_str()))
+        {
+            for (size_t i = 0; i < scene.bodies.size(); ++i)
+            {
+                const int other = s == 0 ? study.bodyB : study.bodyA;
+                if (static_cast<int>(i) == other)
+                {
+                    continue;
+                }
+                if (ImGui::Selectable(scene.bodies[i].name.c_str(), static_cast<int>(i) == current))
+                {
+                    scene.view.bodyA = scene.bodies[static_cast<size_t>(s == 0 ? static_cast<int>(i) : other)].name;
+                    scene.view.bodyB = scene.bodies[static_cast<size_t>(s == 0 ? other : static_cast<int>(i))].name;
+                    dirty = true;
+                    Refresh();
+                }
+            }
+            ImGui::EndCombo();
+        }
+    }
+    int query = static_cast<int>(scene.view.query);
+    const char* queries[] = {"automatic (sweep when moving)", "static test (Collide)", "swept test (Sweep)"};
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::Combo("##query", &query, queries, 3))
+    {
+        scene.view.query = static_cast<ViewQuery>(query);
+        dirty = true;
+        Refresh();
+    }
+
+    ImGui::Separator();
+    const int last = study.VerdictStep();
+    ImGui::BeginDisabled(step <= 0);
+    if (ImGui::ArrowButton("##previous", ImGuiDir_Left))
+    {
+        --step;
+        Refresh();
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(step >= last);
+    if (ImGui::ArrowButton("##next", ImGuiDir_Right))
+    {
+        ++step;
+        Refresh();
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button(playing ? "Pause" : "Play"))
+    {
+        playing = !playing;
+        playClock_ = 0.0;
+        if (playing && step >= last)
+        {
+            step = 0;
+            Refresh();
+        }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Verdict"))
+    {
+        step = last;
+        Refresh();
+    }
+    ImGui::SameLine();
+    ImGui::Text("step %d of %d", step + 1, study.StepCount());
+    ImGui::SetNextItemWidth(-1.0f);
+    int shown = step;
+    if (ImGui::SliderInt("##step", &shown, 0, last, step == last ? "verdict" : "axis %d") && shown != step)
+    {
+        step = shown;
+        Refresh();
+    }
+    ImGui::TextWrapped("%s", DescribeStep(scene, study, step).c_str());
+
+    ImGui::Separator();
+    ImGui::TextUnformatted(study.sweep ? "Axes tested (click one)" : "Axes tested (click one)");
+    HelpMarker("Each row is one step of the test: the axis, then the push that separates the shapes along it or "
+               "the gap between them. The test stops at the first axis with a gap (a separating axis).");
+    const float rows = std::min<float>(static_cast<float>(study.StepCount()), 9.0f);
+    if (ImGui::BeginChild("##axes", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 8.0f), true))
+    {
+        for (int k = 0; k < study.StepCount(); ++k)
+        {
+            if (ImGui::Selectable(StepTitle(scene, study, k).c_str(), k == step))
+            {
+                step = k;
+                Refresh();
+            }
+            if (k == step && ImGui::IsWindowAppearing())
+            {
+                ImGui::SetScrollHereY();
+            }
+        }
+    }
+    ImGui::EndChild();
+
+    if (study.sweep)
+    {
+        bool showTime = scene.view.time >= 0.0;
+        if (ImGui::Checkbox("bodies at time", &showTime))
+        {
+            scene.view.time = showTime ? 0.5 : -1.0;
+            Refresh();
+        }
+        ImGui::SameLine();
+        float t = static_cast<float>(std::max(scene.view.time, 0.0));
+        ImGui::SetNextItemWidth(-1.0f);
+        ImGui::BeginDisabled(!showTime);
+        if (ImGui::SliderFloat("##time", &t, 0.0f, 1.0f, "t = %.3f"))
+        {
+            scene.view.time = t;
+            Refresh();
+        }
+        ImGui::EndDisabled();
+    }
+}
+
+void App::Inspector()
+{
+    if (!ImGui::CollapsingHeader("Numbers", ImGuiTreeNodeFlags_DefaultOpen))
+    {
+        return;
+    }
+    const PairStudy& study = setup.study;
+    const Manifold& m = study.manifold;
+    ImGui::Text("overlap: %s", m.overlap ? "yes" : "no");
+    if (m.overlap)
+    {
+        ImGui::Text("depth: %.17g", m.depth);
+    }
+    else
+    {
+        ImGui::Text("gap on the separating axis: %.17g", m.gap);
+    }
+    ImGui::Text("normal (A to B): (%.6f, %.6f)", m.normal.x, m.normal.y);
+    for (int i = 0; i < m.contactCount; ++i)
+    {
+        ImGui::Text("contact %d: (%.6f, %.6f)", i + 1, m.contacts[i].point.x, m.contacts[i].point.y);
+    }
+    if (study.sweep)
+    {
+        const SweepResult& r = study.sweepResult;
+        if (r.status == SweepStatus::Hit)
+        {
+            ImGui::Text("time of impact: %.17g", r.toi);
+            ImGui::Text("normal at impact: (%.6f, %.6f)", r.normal.x, r.normal.y);
+        }
+        else
+        {
+            ImGui::TextUnformatted("time of impact: none (no hit in this step)");
+        }
+    }
+    else if (study.startsOverlapping)
+    {
+        ImGui::TextUnformatted("moving, but overlapping at t = 0: no time of impact");
+    }
+    if (selected >= 0 && selected < static_cast<int>(scene.bodies.size()))
+    {
+        Body& body = scene.bodies[static_cast<size_t>(selected)];
+        ImGui::Separator();
+        ImGui::Text("selected: %s", body.name.c_str());
+        bool changed = false;
+        changed |= ImGui::DragScalarN("position", ImGuiDataType_Double, &body.position.x, 2, 0.01f);
+        if (ImGui::IsItemActivated())
+        {
+            BeginEdit();
+        }
+        if (ImGui::IsItemDeactivated())
+        {
+            CommitEdit();
+        }
+        changed |= ImGui::DragScalar("angle", ImGuiDataType_Double, &body.angle, 0.01f);
+        if (ImGui::IsItemActivated())
+        {
+            BeginEdit();
+        }
+        if (ImGui::IsItemDeactivated())
+        {
+            CommitEdit();
+        }
+        changed |= ImGui::DragScalarN("velocity", ImGuiDataType_Double, &body.velocity.x, 2, 0.01f);
+        if (ImGui::IsItemActivated())
+        {
+            BeginEdit();
+        }
+        if (ImGui::IsItemDeactivated())
+        {
+            CommitEdit();
+        }
+        if (changed)
+        {
+            Refresh();
+        }
+    }
+}
+
+void App::StatusBar()
+{
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const float height = ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x, viewport->Pos.y + viewport->Size.y - height));
+    ImGui::SetNextWindowSize(ImVec2(viewport->Size.x, height));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8.0f, 3.0f));
+    ImGui::Begin("##status", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    if (statusIsError)
+    {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.2f, 0.05f, 1.0f));
+    }
+    ImGui::TextUnformatted(status.empty() ? "Drag a body to move it, shift-drag to turn it; arrows step through "
+                                            "the test; F1 for help"
+                                          : status.c_str());
+    if (statusIsError)
+    {
+        ImGui::PopStyleColor();
+    }
+    ImGui::End();
+    ImGui::PopStyleVar();
+}
+
+void App::Popups()
+{
+    if (askOpen_)
+    {
+        askOpen_ = false;
+        pathBuffer_[0] = '\0';
+        ImGui::OpenPopup("Open scene");
+    }
+    if (askSaveAs_)
+    {
+        askSaveAs_ = false;
+        const std::string suggestion =
+            file.empty() ? "scene.json" : (std::filesystem::path(file).stem().string() + "-edited.json");
+        std::snprintf(pathBuffer_, sizeof(pathBuffer_), "%s", suggestion.c_str());
+        ImGui::OpenPopup("Save scene as");
+    }
+    if (askQuit_)
+    {
+        askQuit_ = false;
+        ImGui::OpenPopup("Unsaved changes");
+    }
+    const ImVec2 center = ImGui::GetMainViewport()->GetCenter();
+    ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Open scene", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    {
+        ImGui::TextUnformatted("Scene file (JSON):");
+        ImGui::SetNextItemWidth(480.0f);
+        if (ImGui::IsWindowAppearing())
+        {
+            ImGui::SetKeyboardFocusHere();
+        }
+        const bool enter =
+            ImGui::InputText("##path", pathBuffer_, sizeof(pathBuffer_), ImGuiInputTextFlags_EnterReturnsTrue);
+        if (ImGui::Button("Open") || enter)
+        {
+            Open(pathBuffer_);
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel"))
+        {
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+    ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Save scene as", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    {
+        ImGui::TextUnformatted("Save to (JSON):");
+        ImGui::SetNextItemWidth(480.0f);
+        if (ImGui::IsWindowAppearing())
+        {
+            ImGui::SetKeyboardFocusHere();
+        }
+        const bool enter =
+            ImGui::InputText("##path", pathBuffer_, sizeof(pathBuffer_), ImGuiInputTextFlags_EnterReturnsTrue);
+        if (ImGui::Button("Save") || enter)
+        {
+            Save(pathBuffer_);
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel"))
+        {
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+    ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    {
+        ImGui::Text("%s has unsaved changes.", file.empty() ? "The scene" : file.c_str());
+        if (ImGui::Button("Save and quit"))
+        {
+            if (file.empty() || readOnly)
+            {
+                ImGui::CloseCurrentPopup();
+                askSaveAs_ = true;
+            }
+            else
+            {
+                Save(file);
+                quitConfirmed_ = !dirty;
+                ImGui::CloseCurrentPopup();
+            }
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Quit without saving"))
+        {
+            quitConfirmed_ = true;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel"))
+        {
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+}
+
+void App::HelpOverlay()
+{
+    const ImVec2 center = ImGui::GetMainViewport()->GetCenter();
+    ImGui::SetNextWindowPos(center, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(620.0f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.96f);
+    if (ImGui::Begin("Help (F1 or Esc closes)", &showHelp,
+                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoResize))
+    {
+        ImGui::TextWrapped("The Separating Axis Theorem: two convex shapes do not touch if and only if some axis "
+                           "exists on which their projections (intervals) do not overlap. For polygons it is "
+                           "enough to try the normals of their edges. The test projects both shapes on each axis "
+                           "in turn and stops at the first gap. When every axis overlaps, the axis needing the "
+                           "smallest push gives the minimum translation vector (MTV).");
+        ImGui::Separator();
+        ImGui::TextUnformatted("Mouse");
+        ImGui::BulletText("drag a body: move it;  shift-drag, or the round handle above it: turn it");
+        ImGui::BulletText("drag a vertex handle of the selected polygon: reshape it (it must stay convex)");
+        ImGui::BulletText("drag the arrow tip (or the small v handle): set the velocity over one step");
+        ImGui::BulletText("drag empty space, or with the right button: pan;  wheel: zoom about the pointer");
+        ImGui::TextUnformatted("Keys");
+        ImGui::BulletText("left / right: previous / next step;  space: play or pause");
+        ImGui::BulletText("ctrl+z / ctrl+y: undo / redo;  del: delete the selected body;  f: fit the pair");
+        ImGui::BulletText("ctrl+o: open;  ctrl+s: save;  ctrl+e: export a PNG;  ctrl+q: quit;  F1: this help");
+        ImGui::TextUnformatted("Conventions");
+        ImGui::BulletText("world y points up; angles are radians, counter-clockwise");
+        ImGui::BulletText("polygon vertices go counter-clockwise, the interior on their left");
+        ImGui::BulletText("the normal points from A to B: moving B by depth x normal separates the pair");
+        ImGui::BulletText("a velocity is the displacement over one step; t runs from 0 to 1");
+    }
+    ImGui::End();
+}
+
+} // namespace satviz

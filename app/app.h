@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: MIT
+// satviz app: the state and the user interface of the interactive tool, without any window system. main.cpp owns
+// the GLFW window and the OpenGL backend; everything here talks to Dear ImGui only, so tests drive it through
+// ImGui's input fields without a display.
+#pragma once
+
+#include <satviz/render/figure.h>
+#include <satviz/render/imgui_canvas.h>
+#include <satviz/scene.h>
+
+#include <string>
+#include <vector>
+
+namespace satviz
+{
+
+/// Key codes of the keys the app reads beyond ImGui's own key map (letters and function keys): the window system
+/// fills them in (GLFW key codes in main.cpp), tests pick their own.
+struct AppKeys
+{
+    int s = 'S';  ///< ctrl+s saves
+    int o = 'O';  ///< ctrl+o opens
+    int e = 'E';  ///< ctrl+e exports a PNG
+    int q = 'Q';  ///< ctrl+q quits
+    int f = 'F';  ///< f frames the pair
+    int f1 = 290; ///< F1 shows the help
+};
+
+/// Start-up choices of the app.
+struct AppOptions
+{
+    std::string scenesDir;  ///< folder of the bundled scenes (the File menu lists them)
+    std::string recentFile; ///< where the recent files are remembered; empty: not remembered
+    std::string exportPath; ///< where ctrl+e writes the PNG; empty: next to the scene, SCENE-stepN.png
+    AppKeys keys;           ///< key codes
+};
+
+/// What a drag on the canvas does, decided when the mouse button goes down.
+enum class DragKind
+{
+    None,     ///< no drag
+    Pan,      ///< moves the camera
+    Body,     ///< moves the selected body
+    Rotate,   ///< turns the selected body about its centre
+    Vertex,   ///< moves one vertex of the selected polygon (refused where it would break convexity)
+    Velocity, ///< sets the selected body's velocity (its displacement over one step)
+};
+
+/// The interactive app: a scene, the pair it studies, the step shown, the camera, the edit history.
+class App
+{
+  public:
+    /// An app that draws figures with `fonts` (already in ImGui's font atlas).
+    App(const FigureFonts& fonts, AppOptions options);
+
+    /// Opens a scene file. On failure the current scene stays and the error is shown in the app.
+    bool Open(const std::string& file);
+    /// Builds the whole user interface for one ImGui frame (between NewFrame and Render).
+    void Frame();
+    /// The user wants to close the window: true when the app may close now; with unsaved changes it asks first.
+    bool RequestQuit();
+    /// True once the user confirmed quitting (from the prompt or the menu).
+    bool QuitConfirmed() const { return quitConfirmed_; }
+    /// True, once, when the user asked for a PNG export; `path` receives the file to write.
+    bool TakeExportRequest(std::string& path);
+    /// The scene as it would be saved now: the bodies and a view block with the current camera (or "fit"), the
+    /// canvas size, the layers, the pair, the query, the step and the time.
+    Scene SceneForSaving() const;
+    /// The figure of the current view, exactly what satviz-render draws from SceneForSaving().
+    FigureSetup ExportFigure() const;
+    /// Shows a one-line message in the status bar (an export result, an error).
+    void SetStatus(const std::string& message, bool error);
+
+    // State, public for the tests and the window loop.
+    Scene scene;                       ///< the scene being edited
+    std::string file;                  ///< its file; empty for a new scene
+    bool readOnly = false;             ///< a bundled scene: saving asks for another file
+    bool dirty = false;                ///< unsaved changes
+    FigureSetup setup;                 ///< the pair's queries and the current figure
+    int step = 0;                      ///< the trace step shown
+    bool playing = false;              ///< stepping automatically
+    LayerMask layers = kDefaultLayers; ///< layers drawn
+    View camera;                       ///< the canvas camera
+    bool cameraFit = true;             ///< the camera follows FitFigure (until the user pans or zooms)
+    int selected = -1;                 ///< the selected body, -1 for none
+    DragKind drag = DragKind::None;    ///< the drag in progress
+    int dragVertex = -1;               ///< the vertex being dragged
+    float canvasX = 0.0f;              ///< canvas position in the window (pixels)
+    float canvasY = 0.0f;              ///< canvas position in the window (pixels)
+    int canvasWidth = 800;             ///< canvas size (pixels)
+    int canvasHeight = 600;            ///< canvas size (pixels)
+    bool showHelp = false;             ///< the help overlay is open
+    std::vector<std::string> recent;   ///< recently opened files, newest first
+    std::string status;                ///< the status line
+    bool statusIsError = false;        ///< the status line reports an error
+
+    /// Undoes the last edit; false when there is nothing to undo.
+    bool Undo();
+    /// Redoes the last undone edit; false when there is nothing to redo.
+    bool Redo();
+    /// Number of edits that can be undone.
+    size_t UndoDepth() const { return undo_.size(); }
+    /// Re-runs the queries after an edit, keeping the step where it still exists.
+    void Refresh();
+
+  private:
+    void BeginEdit();
+    void CommitEdit();
+    void CancelEdit();
+    void MenuBar();
+    void SidePanel();
+    void StepControls();
+    void Inspector();
+    void LayerToggles();
+    void CanvasWindow();
+    void CanvasInput(ImVec2 origin, bool hovered);
+    void Handles(ImDrawList* list, ImVec2 origin);
+    void Popups();
+    void HelpOverlay();
+    void Shortcuts();
+    void StatusBar();
+    void Save(const std::string& path);
+    void AddBody(Shape shape, const std::string& stem);
+    void DeleteSelected();
+    int BodyAt(Vec2 world) const;
+    void Remember(const std::string& path);
+    void LoadRecent();
+    void SaveRecent() const;
+    std::vector<std::string> BundledScenes() const;
+
+    FigureFonts fonts_;
+    AppOptions options_;
+    std::vector<Scene> undo_;
+    std::vector<Scene> redo_;
+    bool editOpen_ = false;
+    Scene editStart_;
+    ImVec2 dragStart_{};
+    Vec2 grabOffset_{};
+    double grabAngle_ = 0.0;
+    double playClock_ = 0.0;
+    bool quitConfirmed_ = false;
+    bool askQuit_ = false;
+    bool askOpen_ = false;
+    bool askSaveAs_ = false;
+    bool exportRequested_ = false;
+    std::string exportPath_;
+    char pathBuffer_[1024] = {};
+};
+
+} // namespace satviz

@@ -1,0 +1,304 @@
+// SPDX-License-Identifier: MIT
+// satviz app: the canvas, where the painter draws the figure and the mouse moves, turns, reshapes and launches
+// bodies (after the "Canvas" example of imgui_demo.cpp: an invisible button over a draw list).
+#include "app.h"
+
+#include <cmath>
+
+namespace satviz
+{
+
+namespace
+{
+
+constexpr float kPanelWidth = 380.0f;
+constexpr float kHandleRadius = 8.0f; // pick distance of the handles, pixels
+
+float Distance(ScreenPoint a, ScreenPoint b)
+{
+    return std::hypot(a.x - b.x, a.y - b.y);
+}
+
+// Largest distance of the shape from the body origin, in world units.
+double Extent(const Body& body)
+{
+    if (body.shape.type == ShapeType::Circle)
+    {
+        return Length(body.shape.circle.center) + body.shape.circle.radius;
+    }
+    double extent = 0.0;
+    for (const Vec2& v : body.shape.polygon.vertices)
+    {
+        extent = std::max(extent, Length(v));
+    }
+    return extent;
+}
+
+ScreenPoint RotateHandle(const View& view, const Body& body)
+{
+    const ScreenPoint origin = ToScreen(view, body.position);
+    return {origin.x, origin.y - static_cast<float>(Extent(body) * view.zoom) - 26.0f};
+}
+
+ScreenPoint VelocityHandle(const View& view, const Body& body)
+{
+    const ScreenPoint origin = ToScreen(view, body.position);
+    if (Length(body.velocity) * view.zoom >= 14.0)
+    {
+        return ToScreen(view, body.position + body.velocity);
+    }
+    return {origin.x + static_cast<float>(Extent(body) * view.zoom) + 22.0f, origin.y};
+}
+
+bool Contains(const Body& body, Vec2 world)
+{
+    const Vec2 local = InvTransformPoint(body.Xf(), world);
+    if (body.shape.type == ShapeType::Circle)
+    {
+        return Length(local - body.shape.circle.center) <= body.shape.circle.radius;
+    }
+    const auto& poly = body.shape.polygon;
+    for (int i = 0; i < poly.Count(); ++i)
+    {
+        if (Cross(poly.edges[i], local - poly.vertices[i]) < 0.0)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+int App::BodyAt(Vec2 world) const
+{
+    // The pair is drawn above the other bodies, B on top.
+    if (setup.Ok())
+    {
+        for (int index : {setup.study.bodyB, setup.study.bodyA})
+        {
+            if (Contains(scene.bodies[static_cast<size_t>(index)], world))
+            {
+                return index;
+            }
+        }
+    }
+    for (int i = static_cast<int>(scene.bodies.size()) - 1; i >= 0; --i)
+    {
+        if (Contains(scene.bodies[static_cast<size_t>(i)], world))
+        {
+            return i;
+        }
+    }
+    return -1;
+}
+
+void App::CanvasWindow()
+{
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const float top = ImGui::GetFrameHeight();
+    const ImVec2 position(viewport->Pos.x, viewport->Pos.y + top);
+    const ImVec2 size(std::max(64.0f, viewport->Size.x - kPanelWidth), std::max(64.0f, viewport->Size.y - 2.0f * top));
+    ImGui::SetNextWindowPos(position);
+    ImGui::SetNextWindowSize(size);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0.0f, 0.0f));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+    ImGui::Begin("##canvas", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    canvasX = origin.x;
+    canvasY = origin.y;
+    const int width = static_cast<int>(size.x);
+    const int height = static_cast<int>(size.y);
+    if (width != canvasWidth || height != canvasHeight)
+    {
+        canvasWidth = width;
+        canvasHeight = height;
+        Refresh();
+    }
+    ImGui::InvisibleButton("##surface", size,
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
+    CanvasInput(origin, ImGui::IsItemHovered());
+    if (setup.Ok())
+    {
+        ImDrawList* list = ImGui::GetWindowDrawList();
+        ImDrawListCanvas canvas(list, fonts_, origin);
+        setup.figure.view = camera;
+        setup.figure.step = step;
+        PaintFigure(canvas, scene, setup.study, setup.figure);
+        Handles(list, origin);
+    }
+    ImGui::End();
+    ImGui::PopStyleVar(2);
+}
+
+void App::CanvasInput(ImVec2 origin, bool hovered)
+{
+    const ImGuiIO& io = ImGui::GetIO();
+    const ScreenPoint mouse{io.MousePos.x - origin.x, io.MousePos.y - origin.y};
+    const Vec2 world = ToWorld(camera, mouse);
+    if (hovered && io.MouseWheel != 0.0f)
+    {
+        camera = ZoomAbout(camera, mouse, std::pow(1.15, static_cast<double>(io.MouseWheel)));
+        cameraFit = false;
+    }
+    if (drag == DragKind::None && hovered && (ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2)))
+    {
+        drag = DragKind::Pan;
+    }
+    if (drag == DragKind::None && hovered && ImGui::IsMouseClicked(0))
+    {
+        dragStart_ = io.MousePos;
+        if (selected >= 0 && selected < static_cast<int>(scene.bodies.size()))
+        {
+            const Body& body = scene.bodies[static_cast<size_t>(selected)];
+            if (body.shape.type == ShapeType::Polygon && body.shape.polygon.Count() <= 64)
+            {
+                const Transform xf = body.Xf();
+                for (int i = 0; i < body.shape.polygon.Count(); ++i)
+                {
+                    if (Distance(mouse, ToScreen(camera, TransformPoint(xf, body.shape.polygon.vertices[i]))) <=
+                        kHandleRadius)
+                    {
+                        drag = DragKind::Vertex;
+                        dragVertex = i;
+                        break;
+                    }
+                }
+            }
+            if (drag == DragKind::None && Distance(mouse, RotateHandle(camera, body)) <= kHandleRadius)
+            {
+                drag = DragKind::Rotate;
+            }
+            if (drag == DragKind::None && Distance(mouse, VelocityHandle(camera, body)) <= kHandleRadius)
+            {
+                drag = DragKind::Velocity;
+            }
+        }
+        if (drag == DragKind::None)
+        {
+            const int hit = BodyAt(world);
+            if (hit >= 0)
+            {
+                selected = hit;
+                drag = io.KeyShift ? DragKind::Rotate : DragKind::Body;
+            }
+            else
+            {
+                selected = -1;
+                drag = DragKind::Pan;
+            }
+        }
+        if (drag != DragKind::Pan)
+        {
+            const Body& body = scene.bodies[static_cast<size_t>(selected)];
+            grabOffset_ = world - body.position;
+            const Vec2 arm = world - body.position;
+            grabAngle_ = std::atan2(arm.y, arm.x) - body.angle;
+            BeginEdit();
+        }
+    }
+    if (drag == DragKind::None)
+    {
+        return;
+    }
+    const bool down = ImGui::IsMouseDown(0) || ImGui::IsMouseDown(1) || ImGui::IsMouseDown(2);
+    if (drag == DragKind::Pan)
+    {
+        if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)
+        {
+            camera = Pan(camera, io.MouseDelta.x, io.MouseDelta.y);
+            cameraFit = false;
+        }
+    }
+    else if (selected >= 0 && selected < static_cast<int>(scene.bodies.size()))
+    {
+        Body& body = scene.bodies[static_cast<size_t>(selected)];
+        switch (drag)
+        {
+        case DragKind::Body:
+            body.position = world - grabOffset_;
+            break;
+        case DragKind::Rotate:
+        {
+            const Vec2 arm = world - body.position;
+            if (Length(arm) > 0.0)
+            {
+                body.angle = std::atan2(arm.y, arm.x) - grabAngle_;
+            }
+            break;
+        }
+        case DragKind::Vertex:
+        {
+            std::vector<Vec2> vertices(body.shape.polygon.vertices.begin(), body.shape.polygon.vertices.end());
+            vertices[static_cast<size_t>(dragVertex)] = InvTransformPoint(body.Xf(), world);
+            PolygonResult result = MakePolygon(vertices);
+            if (result.Ok())
+            {
+                body.shape.polygon = std::move(result.polygon);
+                if (statusIsError)
+                {
+                    SetStatus("", false);
+                }
+            }
+            else
+            {
+                SetStatus("Vertex " + std::to_string(dragVertex) + " stays where it was: the " +
+                              DescribePolygonError(result.error, result.vertex),
+                          true);
+            }
+            break;
+        }
+        case DragKind::Velocity:
+            body.velocity = world - body.position;
+            break;
+        default:
+            break;
+        }
+        Refresh();
+    }
+    if (!down)
+    {
+        if (drag != DragKind::Pan)
+        {
+            CommitEdit();
+        }
+        drag = DragKind::None;
+        dragVertex = -1;
+    }
+}
+
+// The selected body's handles: its vertices, the turning handle above it, and its velocity arrow's tip.
+void App::Handles(ImDrawList* list, ImVec2 origin)
+{
+    if (selected < 0 || selected >= static_cast<int>(scene.bodies.size()))
+    {
+        return;
+    }
+    const Body& body = scene.bodies[static_cast<size_t>(selected)];
+    auto at = [&](ScreenPoint p) { return ImVec2(p.x + origin.x, p.y + origin.y); };
+    const ImU32 ink = IM_COL32(43, 43, 43, 255);
+    const ImU32 white = IM_COL32(255, 255, 255, 255);
+    if (body.shape.type == ShapeType::Polygon && body.shape.polygon.Count() <= 64)
+    {
+        const Transform xf = body.Xf();
+        for (const Vec2& v : body.shape.polygon.vertices)
+        {
+            const ImVec2 p = at(ToScreen(camera, TransformPoint(xf, v)));
+            list->AddRectFilled(ImVec2(p.x - 4.0f, p.y - 4.0f), ImVec2(p.x + 4.0f, p.y + 4.0f), white);
+            list->AddRect(ImVec2(p.x - 4.0f, p.y - 4.0f), ImVec2(p.x + 4.0f, p.y + 4.0f), ink, 0.0f, 0, 1.5f);
+        }
+    }
+    const ImVec2 center = at(ToScreen(camera, body.position));
+    const ImVec2 turn = at(RotateHandle(camera, body));
+    list->AddLine(center, turn, IM_COL32(43, 43, 43, 120), 1.0f);
+    list->AddCircleFilled(turn, 6.0f, white);
+    list->AddCircle(turn, 6.0f, ink, 0, 1.5f);
+    const ImVec2 velocity = at(VelocityHandle(camera, body));
+    list->AddCircleFilled(velocity, 5.0f, IM_COL32(213, 94, 0, 255));
+    list->AddText(ImVec2(velocity.x + 7.0f, velocity.y - 8.0f), ink, "v");
+}
+
+} // namespace satviz

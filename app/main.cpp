@@ -1,0 +1,224 @@
+// SPDX-License-Identifier: MIT
+// satviz: the interactive app. The only file that touches GLFW: it opens the window, feeds ImGui, runs the frame
+// loop, and turns the app's export requests into PNG files with the same drawing and OpenGL2 backend as
+// satviz-render. Links GLFW and libGL, never OSMesa.
+#include "app.h"
+
+#include <satviz/render/figure_drawing.h>
+#include <satviz/render/png_file.h>
+
+#include <CLI/CLI.hpp>
+#include <GLFW/glfw3.h>
+
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl2.h>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+
+namespace
+{
+
+std::string RecentFile()
+{
+    if (const char* config = std::getenv("XDG_CONFIG_HOME"); config != nullptr && *config != '\0')
+    {
+        return std::string(config) + "/satviz/recent.txt";
+    }
+    if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0')
+    {
+        return std::string(home) + "/.config/satviz/recent.txt";
+    }
+    return "";
+}
+
+// Draws the export figure into the back buffer's lower-left corner and writes it as a PNG.
+void Export(satviz::App& app, satviz::FigureDrawing& drawing, const satviz::FigureSetup& setup, const std::string& path,
+            int framebufferWidth, int framebufferHeight)
+{
+    const int width = setup.figure.view.width;
+    const int height = setup.figure.view.height;
+    if (width > framebufferWidth || height > framebufferHeight)
+    {
+        app.SetStatus(path + ": the window is smaller than the " + std::to_string(width) + "x" +
+                          std::to_string(height) + " figure; enlarge it to export",
+                      true);
+        return;
+    }
+    glViewport(0, 0, width, height);
+    glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL2_RenderDrawData(drawing.DrawData());
+    glFinish();
+    std::vector<unsigned char> rgb(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+    std::string error;
+    if (satviz::WritePngFile(path, rgb, width, height, true, error))
+    {
+        app.SetStatus("Exported " + path + " (" + std::to_string(width) + "x" + std::to_string(height) + ")", false);
+        std::printf("satviz: exported %s\n", path.c_str());
+        std::fflush(stdout);
+    }
+    else
+    {
+        app.SetStatus(error, true);
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    CLI::App cli{"satviz: step through the Separating Axis Theorem, axis by axis"};
+    std::string sceneFile;
+    std::string exportPath;
+    std::string size = "1280x800";
+    int measureFrames = 0;
+    cli.add_option("scene", sceneFile, "Scene file to open (default: a bundled example)");
+    cli.add_option("--export-to", exportPath,
+                   "Where ctrl+e writes the PNG (default: SCENE-stepN.png beside the scene)");
+    cli.add_option("--window", size, "Window size WxH in pixels");
+    cli.add_option("--measure-fps", measureFrames,
+                   "Run this many frames without waiting for the display, print the frame rate, and exit");
+    CLI11_PARSE(cli, argc, argv);
+    int windowWidth = 1280;
+    int windowHeight = 800;
+    if (std::sscanf(size.c_str(), "%dx%d", &windowWidth, &windowHeight) != 2 || windowWidth < 320 || windowHeight < 240)
+    {
+        std::fprintf(stderr, "satviz: --window: expected WxH of at least 320x240, got \"%s\"\n", size.c_str());
+        return 2;
+    }
+
+    if (!glfwInit())
+    {
+        std::fprintf(stderr, "satviz: cannot open a window (no display?); satviz-render draws figures without one\n");
+        return 1;
+    }
+    glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+    GLFWwindow* window = glfwCreateWindow(windowWidth, windowHeight, "satviz", nullptr, nullptr);
+    if (window == nullptr)
+    {
+        std::fprintf(stderr, "satviz: cannot create an OpenGL window\n");
+        glfwTerminate();
+        return 1;
+    }
+    glfwSetWindowPos(window, 0, 0);
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(measureFrames > 0 ? 0 : 1);
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    ImGui::StyleColorsLight();
+    ImGui::GetStyle().WindowRounding = 0.0f;
+    // The app's font atlas holds exactly the figure fonts, like satviz-render's: exported PNGs then match its
+    // figures byte for byte. The interface uses the figures' body font.
+    satviz::FigureFonts fonts;
+    std::string error;
+    if (!satviz::AddFigureFonts(*io.Fonts, fonts, error))
+    {
+        std::fprintf(stderr, "satviz: %s\n", error.c_str());
+        return 1;
+    }
+    io.FontDefault = fonts.body;
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL2_Init();
+
+    satviz::AppOptions options;
+    options.scenesDir = SATVIZ_SCENES_DIR;
+    options.recentFile = RecentFile();
+    options.exportPath = exportPath;
+    options.keys.s = GLFW_KEY_S;
+    options.keys.o = GLFW_KEY_O;
+    options.keys.e = GLFW_KEY_E;
+    options.keys.q = GLFW_KEY_Q;
+    options.keys.f = GLFW_KEY_F;
+    options.keys.f1 = GLFW_KEY_F1;
+    satviz::App app(fonts, options);
+    const std::string initial = sceneFile.empty() ? options.scenesDir + "/overlapping_boxes.json" : sceneFile;
+    if (!app.Open(initial))
+    {
+        std::fprintf(stderr, "satviz: %s\n", app.status.c_str());
+        return 1;
+    }
+
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point measureStart;
+    int frame = 0;
+    while (true)
+    {
+        glfwPollEvents();
+        if (glfwWindowShouldClose(window))
+        {
+            if (app.RequestQuit())
+            {
+                break;
+            }
+            glfwSetWindowShouldClose(window, GLFW_FALSE);
+        }
+        if (app.QuitConfirmed())
+        {
+            break;
+        }
+        ImGui_ImplOpenGL2_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        app.Frame();
+        std::string exportTo;
+        std::unique_ptr<satviz::FigureDrawing> drawing;
+        satviz::FigureSetup exportSetup;
+        if (app.TakeExportRequest(exportTo))
+        {
+            exportSetup = app.ExportFigure();
+            if (exportSetup.Ok())
+            {
+                drawing =
+                    std::make_unique<satviz::FigureDrawing>(app.scene, exportSetup.study, exportSetup.figure, fonts);
+            }
+            else
+            {
+                app.SetStatus(exportSetup.error, true);
+            }
+        }
+        ImGui::Render();
+        int framebufferWidth = 0;
+        int framebufferHeight = 0;
+        glfwGetFramebufferSize(window, &framebufferWidth, &framebufferHeight);
+        if (drawing)
+        {
+            Export(app, *drawing, exportSetup, exportTo, framebufferWidth, framebufferHeight);
+        }
+        glViewport(0, 0, framebufferWidth, framebufferHeight);
+        glClearColor(0.98f, 0.98f, 0.97f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+        glfwSwapBuffers(window);
+
+        if (measureFrames > 0)
+        {
+            ++frame;
+            if (frame == 10)
+            {
+                measureStart = Clock::now();
+            }
+            if (frame == 10 + measureFrames)
+            {
+                const double seconds = std::chrono::duration<double>(Clock::now() - measureStart).count();
+                std::printf("satviz: %d frames in %.3f s: %.1f frames per second (%zu bodies, %dx%d window)\n",
+                            measureFrames, seconds, measureFrames / seconds, app.scene.bodies.size(), framebufferWidth,
+                            framebufferHeight);
+                break;
+            }
+        }
+    }
+
+    ImGui_ImplOpenGL2_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return 0;
+}
