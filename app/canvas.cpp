@@ -193,6 +193,8 @@ void App::CanvasInput(ImVec2 origin, bool hovered)
         }
         if (drag != DragKind::Pan)
         {
+            // The camera holds still while the scene changes under the pointer.
+            cameraFit = false;
             const Body& body = scene.bodies[static_cast<size_t>(selected)];
             grabOffset_ = world - body.position;
             const Vec2 arm = world - body.position;

@@ -1,0 +1,339 @@
+// SPDX-License-Identifier: MIT
+// The app's logic without a window: ImGui frames with input set through its io fields, as the window system
+// would. Drags move bodies, keys step through the trace, undo restores, refused edits say why.
+#include "app.h"
+
+#include <satviz/collide.h>
+#include <satviz/render/describe.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <unistd.h>
+
+using namespace satviz;
+namespace fs = std::filesystem;
+
+namespace
+{
+
+enum KeySlot
+{
+    kLeft = 1,
+    kRight,
+    kSpace,
+    kDelete,
+    kZ,
+    kY,
+    kEscape,
+};
+
+fs::path ScratchCopy(const std::string& name)
+{
+    const fs::path dir = fs::temp_directory_path() / ("satviz-app-test-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path copy = dir / name;
+    fs::copy_file(fs::path(SATVIZ_SOURCE_DIR) / "tutorials" / "scenes" / name, copy,
+                  fs::copy_options::overwrite_existing);
+    return copy;
+}
+
+/// An ImGui context without a renderer or a window, and the app in it.
+struct Harness
+{
+    FigureFonts fonts;
+    std::unique_ptr<App> app;
+    ImGuiContext* context = nullptr;
+
+    explicit Harness(const std::string& scene)
+    {
+        context = ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;
+        io.DisplaySize = ImVec2(1280.0f, 800.0f);
+        io.DeltaTime = 1.0f / 60.0f;
+        std::string error;
+        REQUIRE(AddFigureFonts(*io.Fonts, fonts, error));
+        io.FontDefault = fonts.body;
+        unsigned char* pixels = nullptr;
+        int width = 0;
+        int height = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+        io.KeyMap[ImGuiKey_LeftArrow] = kLeft;
+        io.KeyMap[ImGuiKey_RightArrow] = kRight;
+        io.KeyMap[ImGuiKey_Space] = kSpace;
+        io.KeyMap[ImGuiKey_Delete] = kDelete;
+        io.KeyMap[ImGuiKey_Z] = kZ;
+        io.KeyMap[ImGuiKey_Y] = kY;
+        io.KeyMap[ImGuiKey_Escape] = kEscape;
+        AppOptions options;
+        options.scenesDir = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes";
+        app = std::make_unique<App>(fonts, options);
+        REQUIRE(app->Open(scene));
+        Frames(3);
+    }
+    ~Harness()
+    {
+        app.reset();
+        ImGui::DestroyContext(context);
+    }
+    void Frames(int count)
+    {
+        for (int i = 0; i < count; ++i)
+        {
+            ImGui::NewFrame();
+            app->Frame();
+            ImGui::Render();
+        }
+    }
+    // Screen position (in the window) of a world point on the canvas.
+    ImVec2 OnScreen(Vec2 world) const
+    {
+        const ScreenPoint p = ToScreen(app->camera, world);
+        return ImVec2(p.x + app->canvasX, p.y + app->canvasY);
+    }
+    void MoveTo(ImVec2 p)
+    {
+        ImGui::GetIO().MousePos = p;
+        Frames(1);
+    }
+    // Press at `from`, move in steps to `to`, release.
+    void Drag(ImVec2 from, ImVec2 to, int button = 0, bool shift = false)
+    {
+        ImGuiIO& io = ImGui::GetIO();
+        MoveTo(from);
+        io.KeyShift = shift;
+        io.MouseDown[button] = true;
+        Frames(1);
+        for (int i = 1; i <= 8; ++i)
+        {
+            io.MousePos = ImVec2(from.x + (to.x - from.x) * i / 8.0f, from.y + (to.y - from.y) * i / 8.0f);
+            Frames(1);
+        }
+        io.MouseDown[button] = false;
+        Frames(1);
+        io.KeyShift = false;
+    }
+    void Key(int slot, bool ctrl = false)
+    {
+        ImGuiIO& io = ImGui::GetIO();
+        io.KeyCtrl = ctrl;
+        io.KeysDown[slot] = true;
+        Frames(1);
+        io.KeysDown[slot] = false;
+        Frames(1);
+        io.KeyCtrl = false;
+    }
+    Body& BodyNamed(const std::string& name)
+    {
+        for (Body& body : app->scene.bodies)
+        {
+            if (body.name == name)
+            {
+                return body;
+            }
+        }
+        FAIL("no body " << name);
+        return app->scene.bodies.front();
+    }
+};
+
+Vec2 Centroid(const Body& body)
+{
+    return TransformPoint(body.Xf(), body.shape.type == ShapeType::Polygon ? body.shape.polygon.centroid
+                                                                           : body.shape.circle.center);
+}
+
+} // namespace
+
+TEST_CASE("Dragging a body moves it with the pointer; undo and redo restore each state", "[app]")
+{
+    Harness h(ScratchCopy("overlapping_boxes.json").string());
+    const Vec2 before = h.BodyNamed("B").position;
+    const double zoom = h.app->camera.zoom;
+    const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x + 40.0f, from.y - 20.0f));
+    const Vec2 after = h.BodyNamed("B").position;
+    CHECK(after.x - before.x == Approx(40.0 / zoom).epsilon(1e-5));
+    CHECK(after.y - before.y == Approx(20.0 / zoom).epsilon(1e-5));
+    CHECK(h.app->dirty);
+    CHECK(h.app->UndoDepth() == 1);
+    // The queries follow the edit.
+    const Manifold& m = h.app->setup.study.manifold;
+    const Body& a = h.BodyNamed("A");
+    const Body& b = h.BodyNamed("B");
+    const Manifold fresh = Collide(a.shape, a.Xf(), b.shape, b.Xf());
+    CHECK(m.depth == fresh.depth);
+
+    h.Key(kZ, true);
+    CHECK(h.BodyNamed("B").position == before);
+    h.Key(kY, true);
+    CHECK(h.BodyNamed("B").position == after);
+    // A click without a move is not an edit.
+    h.Drag(h.OnScreen(Centroid(h.BodyNamed("B"))), h.OnScreen(Centroid(h.BodyNamed("B"))));
+    CHECK(h.app->UndoDepth() == 1);
+}
+
+TEST_CASE("Arrow keys and space step through the trace; edits keep the step where it still exists", "[app]")
+{
+    Harness h(ScratchCopy("overlapping_boxes.json").string());
+    const int verdict = h.app->setup.study.VerdictStep();
+    CHECK(h.app->step == verdict);
+    h.Key(kLeft);
+    CHECK(h.app->step == verdict - 1);
+    h.Key(kLeft);
+    h.Key(kLeft);
+    CHECK(h.app->step == verdict - 3);
+    h.Key(kRight);
+    CHECK(h.app->step == verdict - 2);
+    const int kept = h.app->step;
+    CHECK(h.app->setup.figure.step == kept);
+    // Nudge a body: the pair still has as many steps, so the step stays.
+    const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x + 3.0f, from.y));
+    CHECK(h.app->step == kept);
+    // Space plays from the first step to the verdict.
+    h.Key(kSpace);
+    CHECK(h.app->playing);
+    h.Frames(60 * 20);
+    CHECK(!h.app->playing);
+    CHECK(h.app->step == verdict);
+}
+
+TEST_CASE("A vertex drag that would break convexity is refused and says why", "[app]")
+{
+    Harness h(ScratchCopy("overlapping_boxes.json").string());
+    Body& b = h.BodyNamed("B");
+    // Select B, then drag its vertex 0 to the far side of the diagonal through vertices 1 and 3.
+    h.Drag(h.OnScreen(Centroid(b)), h.OnScreen(Centroid(b)));
+    REQUIRE(h.app->selected >= 0);
+    const Vec2 v0 = TransformPoint(b.Xf(), b.shape.polygon.vertices[0]);
+    const Vec2 v2 = TransformPoint(b.Xf(), b.shape.polygon.vertices[2]);
+    const Vec2 beyond = v0 + 0.8 * (v2 - v0);
+    h.Drag(h.OnScreen(v0), h.OnScreen(beyond));
+    CHECK(h.app->statusIsError);
+    CHECK(h.app->status.find("convex") != std::string::npos);
+    const Body& kept = h.BodyNamed("B");
+    const Vec2 v0after = TransformPoint(kept.Xf(), kept.shape.polygon.vertices[0]);
+    CHECK(Length(v0after - beyond) > 0.1); // never accepted there
+    CHECK(MakePolygon(std::vector<Vec2>(kept.shape.polygon.vertices.begin(), kept.shape.polygon.vertices.end())).Ok());
+    // A small outward move is accepted.
+    const Vec2 outward = v0 + 0.1 * (v0 - v2);
+    h.Drag(h.OnScreen(v0after), h.OnScreen(outward));
+    const Body& moved = h.BodyNamed("B");
+    CHECK(Length(TransformPoint(moved.Xf(), moved.shape.polygon.vertices[0]) - outward) < 2.0 / h.app->camera.zoom);
+}
+
+TEST_CASE("The wheel zooms about the pointer and a drag on empty space pans", "[app]")
+{
+    Harness h(ScratchCopy("separated_triangle.json").string());
+    ImGuiIO& io = ImGui::GetIO();
+    const ImVec2 pointer(h.app->canvasX + 120.0f, h.app->canvasY + 140.0f);
+    h.MoveTo(pointer);
+    const Vec2 under = ToWorld(h.app->camera, {pointer.x - h.app->canvasX, pointer.y - h.app->canvasY});
+    const double zoom = h.app->camera.zoom;
+    io.MouseWheel = 2.0f;
+    h.Frames(1);
+    io.MouseWheel = 0.0f;
+    CHECK(h.app->camera.zoom == Approx(zoom * 1.15 * 1.15));
+    const Vec2 still = ToWorld(h.app->camera, {pointer.x - h.app->canvasX, pointer.y - h.app->canvasY});
+    CHECK(Length(still - under) < 1e-9);
+    CHECK(!h.app->cameraFit);
+    const Vec2 center = h.app->camera.center;
+    h.Drag(pointer, ImVec2(pointer.x + 50.0f, pointer.y + 30.0f), 1);
+    CHECK(h.app->camera.center.x == Approx(center.x - 50.0 / h.app->camera.zoom));
+    CHECK(h.app->camera.center.y == Approx(center.y + 30.0 / h.app->camera.zoom));
+}
+
+TEST_CASE("Shift-drag turns a body and the velocity handle sets its velocity", "[app]")
+{
+    Harness h(ScratchCopy("overlapping_boxes.json").string());
+    Body& b = h.BodyNamed("B");
+    const double angle = b.angle;
+    const ImVec2 grab = h.OnScreen(b.position + Vec2{0.3, 0.0});
+    // A quarter turn counter-clockwise around the body origin: from +x to +y.
+    h.Drag(grab, h.OnScreen(b.position + Vec2{0.0, 0.3}), 0, true);
+    CHECK(std::remainder(h.BodyNamed("B").angle - angle - 1.5707963267948966, 6.283185307179586) ==
+          Approx(0.0).margin(0.02));
+    // The velocity handle sits right of the selected body while it does not move.
+    const Body& turned = h.BodyNamed("B");
+    double extent = 0.0;
+    for (const Vec2& v : turned.shape.polygon.vertices)
+    {
+        extent = std::max(extent, Length(v));
+    }
+    const ScreenPoint origin = ToScreen(h.app->camera, turned.position);
+    const ImVec2 handle(origin.x + static_cast<float>(extent * h.app->camera.zoom) + 22.0f + h.app->canvasX,
+                        origin.y + h.app->canvasY);
+    const Vec2 target = turned.position + Vec2{-1.5, -0.25};
+    h.Drag(handle, h.OnScreen(target));
+    CHECK(Length(h.BodyNamed("B").velocity - Vec2{-1.5, -0.25}) < 2.0 / h.app->camera.zoom);
+    // The pair now moves but overlaps at t = 0: the swept test ran and handed over to the static one.
+    CHECK(h.app->setup.study.startsOverlapping);
+}
+
+TEST_CASE("Saving writes the view; the export figure is what satviz-render draws from the saved file", "[app]")
+{
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    Harness h(copy.string());
+    h.Key(kLeft);
+    h.Key(kLeft);
+    h.app->layers |= kLayerNormals;
+    h.app->Refresh();
+    h.Key('S', true);
+    CHECK(!h.app->dirty);
+    CHECK(h.app->status.find("Saved") == 0);
+    const SceneResult saved = LoadScene(copy.string());
+    REQUIRE(saved.Ok());
+    CHECK(saved.scene.view.step == h.app->step);
+    CHECK(saved.scene.view.width == h.app->canvasWidth);
+    CHECK(saved.scene.view.height == h.app->canvasHeight);
+    const FigureSetup fromFile = SetUpFigure(saved.scene, {});
+    const FigureSetup fromApp = h.app->ExportFigure();
+    REQUIRE(fromFile.Ok());
+    CHECK(fromFile.figure.step == fromApp.figure.step);
+    CHECK(fromFile.figure.layers == fromApp.figure.layers);
+    CHECK((fromFile.figure.layers & kLayerNormals) != 0);
+    CHECK(fromFile.figure.view.center == fromApp.figure.view.center);
+    CHECK(fromFile.figure.view.zoom == fromApp.figure.view.zoom);
+    CHECK(fromFile.figure.view.width == fromApp.figure.view.width);
+    // The canvas shows that same figure.
+    CHECK(fromApp.figure.view.center == h.app->camera.center);
+    CHECK(fromApp.figure.view.zoom == h.app->camera.zoom);
+}
+
+TEST_CASE("A scene that fails to load keeps the current one and shows the error", "[app]")
+{
+    Harness h(ScratchCopy("overlapping_boxes.json").string());
+    const std::string before = SceneToJson(h.app->scene);
+    const fs::path broken = fs::temp_directory_path() / "satviz-app-broken.json";
+    std::ofstream(broken) << R"({"bodies": [{"polygon": [[0, 0], [1, 0], [1, 1], [0.9, 0.2]]}, {"box": [1, 1]}]})";
+    CHECK(!h.app->Open(broken.string()));
+    CHECK(h.app->statusIsError);
+    CHECK(h.app->status.find("bodies[0].polygon") != std::string::npos);
+    CHECK(SceneToJson(h.app->scene) == before);
+    fs::remove(broken);
+}
+
+TEST_CASE("Quitting without changes needs no question", "[app]")
+{
+    Harness h(ScratchCopy("overlapping_boxes.json").string());
+    CHECK(h.app->RequestQuit());
+    CHECK(h.app->QuitConfirmed());
+}
+
+TEST_CASE("Quitting with unsaved changes asks first; deleting keeps two bodies", "[app]")
+{
+    Harness edited(ScratchCopy("overlapping_boxes.json").string());
+    const ImVec2 from = edited.OnScreen(Centroid(edited.BodyNamed("A")));
+    edited.Drag(from, ImVec2(from.x - 10.0f, from.y));
+    CHECK(!edited.app->RequestQuit());
+    CHECK(!edited.app->QuitConfirmed());
+    // Only two bodies: deleting one is refused.
+    edited.Key(kDelete);
+    CHECK(edited.app->scene.bodies.size() == 2);
+    CHECK(edited.app->statusIsError);
+}
