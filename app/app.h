@@ -139,6 +139,7 @@ class App
     double grabAngle_ = 0.0;
     double playClock_ = 0.0;
     bool quitConfirmed_ = false;
+    bool canvasAnnounced_ = false;
     bool askQuit_ = false;
     bool askOpen_ = false;
     bool askSaveAs_ = false;

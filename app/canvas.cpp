@@ -4,6 +4,7 @@
 #include "app.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace satviz
 {
@@ -116,6 +117,13 @@ void App::CanvasWindow()
         canvasWidth = width;
         canvasHeight = height;
         Refresh();
+    }
+    if (!canvasAnnounced_)
+    {
+        // One line for scripts that drive the window (the end-to-end test).
+        std::printf("satviz: canvas at %.0f,%.0f size %dx%d\n", origin.x, origin.y, canvasWidth, canvasHeight);
+        std::fflush(stdout);
+        canvasAnnounced_ = true;
     }
     ImGui::InvisibleButton("##surface", size,
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |

@@ -8,6 +8,7 @@
 #include <satviz/render/png_file.h>
 
 #include <CLI/CLI.hpp>
+#define GLFW_INCLUDE_GLEXT
 #include <GLFW/glfw3.h>
 
 #include <backends/imgui_impl_glfw.h>
@@ -33,17 +34,82 @@ std::string RecentFile()
     return "";
 }
 
-// Draws the export figure into the back buffer's lower-left corner and writes it as a PNG.
-void Export(satviz::App& app, satviz::FigureDrawing& drawing, const satviz::FigureSetup& setup, const std::string& path,
-            int framebufferWidth, int framebufferHeight)
+/// An offscreen RGBA8 colour buffer, the format of satviz-render's OSMesa buffer: the window's own buffer has
+/// another format, and blending into it rounds a few pixels differently.
+class OffscreenTarget
+{
+  public:
+    OffscreenTarget(int width, int height)
+    {
+        genFramebuffers_ = reinterpret_cast<PFNGLGENFRAMEBUFFERSPROC>(glfwGetProcAddress("glGenFramebuffers"));
+        bindFramebuffer_ = reinterpret_cast<PFNGLBINDFRAMEBUFFERPROC>(glfwGetProcAddress("glBindFramebuffer"));
+        deleteFramebuffers_ =
+            reinterpret_cast<PFNGLDELETEFRAMEBUFFERSPROC>(glfwGetProcAddress("glDeleteFramebuffers"));
+        genRenderbuffers_ = reinterpret_cast<PFNGLGENRENDERBUFFERSPROC>(glfwGetProcAddress("glGenRenderbuffers"));
+        bindRenderbuffer_ = reinterpret_cast<PFNGLBINDRENDERBUFFERPROC>(glfwGetProcAddress("glBindRenderbuffer"));
+        deleteRenderbuffers_ =
+            reinterpret_cast<PFNGLDELETERENDERBUFFERSPROC>(glfwGetProcAddress("glDeleteRenderbuffers"));
+        storage_ = reinterpret_cast<PFNGLRENDERBUFFERSTORAGEPROC>(glfwGetProcAddress("glRenderbufferStorage"));
+        attach_ =
+            reinterpret_cast<PFNGLFRAMEBUFFERRENDERBUFFERPROC>(glfwGetProcAddress("glFramebufferRenderbuffer"));
+        status_ = reinterpret_cast<PFNGLCHECKFRAMEBUFFERSTATUSPROC>(glfwGetProcAddress("glCheckFramebufferStatus"));
+        if (!genFramebuffers_ || !bindFramebuffer_ || !deleteFramebuffers_ || !genRenderbuffers_ ||
+            !bindRenderbuffer_ || !deleteRenderbuffers_ || !storage_ || !attach_ || !status_)
+        {
+            return;
+        }
+        genFramebuffers_(1, &framebuffer_);
+        genRenderbuffers_(1, &renderbuffer_);
+        bindRenderbuffer_(GL_RENDERBUFFER, renderbuffer_);
+        storage_(GL_RENDERBUFFER, GL_RGBA8, width, height);
+        bindFramebuffer_(GL_FRAMEBUFFER, framebuffer_);
+        attach_(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffer_);
+        ready_ = status_(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    }
+    ~OffscreenTarget()
+    {
+        if (bindFramebuffer_ != nullptr)
+        {
+            bindFramebuffer_(GL_FRAMEBUFFER, 0);
+        }
+        if (framebuffer_ != 0)
+        {
+            deleteFramebuffers_(1, &framebuffer_);
+        }
+        if (renderbuffer_ != 0)
+        {
+            deleteRenderbuffers_(1, &renderbuffer_);
+        }
+    }
+    OffscreenTarget(const OffscreenTarget&) = delete;
+    OffscreenTarget& operator=(const OffscreenTarget&) = delete;
+    /// True when the buffer is bound and complete.
+    bool Ready() const { return ready_; }
+
+  private:
+    PFNGLGENFRAMEBUFFERSPROC genFramebuffers_ = nullptr;
+    PFNGLBINDFRAMEBUFFERPROC bindFramebuffer_ = nullptr;
+    PFNGLDELETEFRAMEBUFFERSPROC deleteFramebuffers_ = nullptr;
+    PFNGLGENRENDERBUFFERSPROC genRenderbuffers_ = nullptr;
+    PFNGLBINDRENDERBUFFERPROC bindRenderbuffer_ = nullptr;
+    PFNGLDELETERENDERBUFFERSPROC deleteRenderbuffers_ = nullptr;
+    PFNGLRENDERBUFFERSTORAGEPROC storage_ = nullptr;
+    PFNGLFRAMEBUFFERRENDERBUFFERPROC attach_ = nullptr;
+    PFNGLCHECKFRAMEBUFFERSTATUSPROC status_ = nullptr;
+    GLuint framebuffer_ = 0;
+    GLuint renderbuffer_ = 0;
+    bool ready_ = false;
+};
+
+// Draws the export figure into an offscreen buffer and writes it as a PNG.
+void Export(satviz::App& app, satviz::FigureDrawing& drawing, const satviz::FigureSetup& setup, const std::string& path)
 {
     const int width = setup.figure.view.width;
     const int height = setup.figure.view.height;
-    if (width > framebufferWidth || height > framebufferHeight)
+    OffscreenTarget target(width, height);
+    if (!target.Ready())
     {
-        app.SetStatus(path + ": the window is smaller than the " + std::to_string(width) + "x" +
-                          std::to_string(height) + " figure; enlarge it to export",
-                      true);
+        app.SetStatus(path + ": this OpenGL has no offscreen buffers (framebuffer objects); cannot export", true);
         return;
     }
     glViewport(0, 0, width, height);
@@ -189,7 +255,7 @@ int main(int argc, char** argv)
         glfwGetFramebufferSize(window, &framebufferWidth, &framebufferHeight);
         if (drawing)
         {
-            Export(app, *drawing, exportSetup, exportTo, framebufferWidth, framebufferHeight);
+            Export(app, *drawing, exportSetup, exportTo);
         }
         glViewport(0, 0, framebufferWidth, framebufferHeight);
         glClearColor(0.98f, 0.98f, 0.97f, 1.0f);

@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# End-to-end test of the app in a real window under Xvfb, driven by xdotool: open a scene, drag body B, step
+# forward three times, save, export a PNG, quit; then satviz-render on the saved scene must give the same bytes.
+# Usage: e2e.sh SATVIZ SATVIZ_RENDER SCENE WORKDIR. Exits 77 (skipped) when Xvfb or xdotool is missing.
+set -euo pipefail
+app=$1 render=$2 scene=$3 work=$4
+for tool in xvfb-run xdotool; do
+  if ! command -v "$tool" > /dev/null; then
+    echo "SKIPPED: $tool is not installed (apt-get install xvfb xauth xdotool)"
+    exit 77
+  fi
+done
+if [ -z "${SATVIZ_E2E_DISPLAY:-}" ]; then
+  exec xvfb-run -a -s "-screen 0 1280x800x24" env SATVIZ_E2E_DISPLAY=1 bash "$0" "$@"
+fi
+
+# A key held for a few frames: ImGui 1.86 polls key state once per frame and would miss a faster tap.
+tap() {
+  xdotool keydown "$1"
+  sleep 0.08
+  xdotool keyup "$1"
+  sleep 0.15
+}
+
+rm -rf "$work"
+mkdir -p "$work"
+cp "$scene" "$work/scene.json"
+export XDG_CONFIG_HOME="$work/config"
+"$app" "$work/scene.json" --export-to "$work/export.png" > "$work/app.log" 2>&1 &
+pid=$!
+trap 'kill $pid 2> /dev/null || true' EXIT
+xdotool search --sync --onlyvisible --name '^satviz$' > /dev/null
+for _ in $(seq 50); do grep -q "canvas at" "$work/app.log" && break; sleep 0.1; done
+read -r cx cy cw ch < <(sed -n 's/^satviz: canvas at \([0-9]*\),\([0-9]*\) size \([0-9]*\)x\([0-9]*\)$/\1 \2 \3 \4/p' "$work/app.log")
+echo "canvas at $cx,$cy size ${cw}x$ch"
+
+# Body B's origin on screen, from the scene's fixed camera (centre (0.5, 0), 120 pixels per unit).
+bx=$(awk -v cx="$cx" -v cw="$cw" 'BEGIN { printf "%d", cx + cw / 2 + (1.3 - 0.5) * 120 }')
+by=$(awk -v cy="$cy" -v ch="$ch" 'BEGIN { printf "%d", cy + ch / 2 - 0.6 * 120 }')
+xdotool mousemove "$bx" "$by"
+sleep 0.3
+xdotool mousedown 1
+sleep 0.2
+for i in $(seq 1 6); do
+  xdotool mousemove $((bx + 5 * i)) $((by - 2 * i))
+  sleep 0.03
+done
+sleep 0.2
+xdotool mouseup 1
+sleep 0.3
+for _ in 1 2 3; do
+  tap Right
+done
+tap ctrl+s
+tap ctrl+e
+for _ in $(seq 50); do grep -q "exported" "$work/app.log" && break; sleep 0.1; done
+import -window root "$work/screenshot.png" 2> /dev/null || true
+tap ctrl+q
+for _ in $(seq 50); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
+trap - EXIT
+if kill -0 $pid 2> /dev/null; then
+  kill $pid
+  echo "FAILED: the app did not quit on ctrl+q"
+  exit 1
+fi
+cat "$work/app.log"
+
+grep -q '"step":3' "$work/scene.json" || { echo "FAILED: the saved scene is not at step 3:"; cat "$work/scene.json"; exit 1; }
+python3 - "$work/scene.json" << 'PY' || exit 1
+import json, sys
+body = json.load(open(sys.argv[1]))["bodies"][1]
+x, y = body["position"]
+# dragged by (30, -12) pixels at 120 pixels per unit: (+0.25, +0.1); the boxes still overlap, so step 3 exists
+if abs(x - 1.55) > 0.02 or abs(y - 0.7) > 0.02:
+    sys.exit(f"FAILED: body B is at {x}, {y}, expected about 1.55, 0.7 after the drag")
+PY
+[ -f "$work/export.png" ] || { echo "FAILED: no exported PNG"; exit 1; }
+"$render" -q "$work/scene.json" -o "$work/render.png"
+if ! cmp -s "$work/export.png" "$work/render.png"; then
+  echo "FAILED: $work/export.png (the app) differs from $work/render.png (satviz-render on the saved scene)"
+  exit 1
+fi
+echo "PASSED: the exported PNG equals satviz-render's figure of the saved scene, byte for byte"
