@@ -9,6 +9,8 @@
 
 #include <CLI/CLI.hpp>
 #define GLFW_INCLUDE_GLEXT
+#include <satviz/scene.h>
+
 #include <GLFW/glfw3.h>
 
 #include <backends/imgui_impl_glfw.h>
@@ -16,7 +18,11 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace
 {
@@ -43,15 +49,13 @@ class OffscreenTarget
     {
         genFramebuffers_ = reinterpret_cast<PFNGLGENFRAMEBUFFERSPROC>(glfwGetProcAddress("glGenFramebuffers"));
         bindFramebuffer_ = reinterpret_cast<PFNGLBINDFRAMEBUFFERPROC>(glfwGetProcAddress("glBindFramebuffer"));
-        deleteFramebuffers_ =
-            reinterpret_cast<PFNGLDELETEFRAMEBUFFERSPROC>(glfwGetProcAddress("glDeleteFramebuffers"));
+        deleteFramebuffers_ = reinterpret_cast<PFNGLDELETEFRAMEBUFFERSPROC>(glfwGetProcAddress("glDeleteFramebuffers"));
         genRenderbuffers_ = reinterpret_cast<PFNGLGENRENDERBUFFERSPROC>(glfwGetProcAddress("glGenRenderbuffers"));
         bindRenderbuffer_ = reinterpret_cast<PFNGLBINDRENDERBUFFERPROC>(glfwGetProcAddress("glBindRenderbuffer"));
         deleteRenderbuffers_ =
             reinterpret_cast<PFNGLDELETERENDERBUFFERSPROC>(glfwGetProcAddress("glDeleteRenderbuffers"));
         storage_ = reinterpret_cast<PFNGLRENDERBUFFERSTORAGEPROC>(glfwGetProcAddress("glRenderbufferStorage"));
-        attach_ =
-            reinterpret_cast<PFNGLFRAMEBUFFERRENDERBUFFERPROC>(glfwGetProcAddress("glFramebufferRenderbuffer"));
+        attach_ = reinterpret_cast<PFNGLFRAMEBUFFERRENDERBUFFERPROC>(glfwGetProcAddress("glFramebufferRenderbuffer"));
         status_ = reinterpret_cast<PFNGLCHECKFRAMEBUFFERSTATUSPROC>(glfwGetProcAddress("glCheckFramebufferStatus"));
         if (!genFramebuffers_ || !bindFramebuffer_ || !deleteFramebuffers_ || !genRenderbuffers_ ||
             !bindRenderbuffer_ || !deleteRenderbuffers_ || !storage_ || !attach_ || !status_)
@@ -101,8 +105,11 @@ class OffscreenTarget
     bool ready_ = false;
 };
 
-// Draws the export figure into an offscreen buffer and writes it as a PNG.
-void Export(satviz::App& app, satviz::FigureDrawing& drawing, const satviz::FigureSetup& setup, const std::string& path)
+// The fallback export without satviz-render: draws the figure into an offscreen buffer of this window's OpenGL
+// and writes it as a PNG. The pixels can differ from satviz-render's in a few anti-aliased edge pixels by one
+// level: the two OpenGL front ends of Mesa round a few fragments differently.
+void ExportWithWindowGl(satviz::App& app, satviz::FigureDrawing& drawing, const satviz::FigureSetup& setup,
+                        const std::string& path)
 {
     const int width = setup.figure.view.width;
     const int height = setup.figure.view.height;
@@ -131,6 +138,78 @@ void Export(satviz::App& app, satviz::FigureDrawing& drawing, const satviz::Figu
     {
         app.SetStatus(error, true);
     }
+}
+
+// Exports the figure the way satviz-render draws it, by running satviz-render on a snapshot of the scene: the
+// PNG is then byte-identical to satviz-render's figure of the saved scene, and this process never loads OSMesa.
+bool ExportWithRenderer(satviz::App& app, const std::string& renderer, const std::string& path)
+{
+    if (renderer.empty() || ::access(renderer.c_str(), X_OK) != 0)
+    {
+        return false;
+    }
+    const std::string snapshot =
+        (std::filesystem::temp_directory_path() / ("satviz-export-" + std::to_string(::getpid()) + ".json")).string();
+    std::string error;
+    if (!satviz::SaveScene(app.SceneForSaving(), snapshot, error))
+    {
+        app.SetStatus(error, true);
+        return true;
+    }
+    std::vector<std::string> arguments = {renderer, "-q", snapshot, "-o", path};
+    std::vector<char*> argv;
+    for (std::string& argument : arguments)
+    {
+        argv.push_back(argument.data());
+    }
+    argv.push_back(nullptr);
+    pid_t child = 0;
+    int status = 0;
+    const bool started = ::posix_spawn(&child, renderer.c_str(), nullptr, nullptr, argv.data(), environ) == 0;
+    const bool finished = started && ::waitpid(child, &status, 0) == child;
+    std::filesystem::remove(snapshot);
+    if (!finished || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    {
+        app.SetStatus(path + ": satviz-render failed (see the terminal)", true);
+        return true;
+    }
+    app.SetStatus("Exported " + path, false);
+    std::printf("satviz: exported %s\n", path.c_str());
+    std::fflush(stdout);
+    return true;
+}
+
+// satviz-render: beside this program in the build tree, or on the PATH.
+std::string FindRenderer()
+{
+    std::error_code code;
+    const std::filesystem::path self = std::filesystem::canonical("/proc/self/exe", code);
+    for (const std::filesystem::path& candidate :
+         {self.parent_path() / "satviz-render", self.parent_path().parent_path() / "render" / "satviz-render",
+          std::filesystem::path(SATVIZ_RENDER_EXE)})
+    {
+        if (::access(candidate.c_str(), X_OK) == 0)
+        {
+            return candidate.string();
+        }
+    }
+    if (const char* path = std::getenv("PATH"))
+    {
+        std::string dirs = path;
+        size_t start = 0;
+        while (start <= dirs.size())
+        {
+            const size_t end = std::min(dirs.find(':', start), dirs.size());
+            const std::filesystem::path candidate =
+                std::filesystem::path(dirs.substr(start, end - start)) / "satviz-render";
+            if (::access(candidate.c_str(), X_OK) == 0)
+            {
+                return candidate.string();
+            }
+            start = end + 1;
+        }
+    }
+    return "";
 }
 
 } // namespace
@@ -204,6 +283,7 @@ int main(int argc, char** argv)
     options.keys.f = GLFW_KEY_F;
     options.keys.f1 = GLFW_KEY_F1;
     satviz::App app(fonts, options);
+    const std::string renderer = FindRenderer();
     const std::string initial = sceneFile.empty() ? options.scenesDir + "/overlapping_boxes.json" : sceneFile;
     if (!app.Open(initial))
     {
@@ -239,7 +319,11 @@ int main(int argc, char** argv)
         if (app.TakeExportRequest(exportTo))
         {
             exportSetup = app.ExportFigure();
-            if (exportSetup.Ok())
+            if (exportSetup.Ok() && ExportWithRenderer(app, renderer, exportTo))
+            {
+                exportSetup = {};
+            }
+            else if (exportSetup.Ok())
             {
                 drawing =
                     std::make_unique<satviz::FigureDrawing>(app.scene, exportSetup.study, exportSetup.figure, fonts);
@@ -255,7 +339,7 @@ int main(int argc, char** argv)
         glfwGetFramebufferSize(window, &framebufferWidth, &framebufferHeight);
         if (drawing)
         {
-            Export(app, *drawing, exportSetup, exportTo);
+            ExportWithWindowGl(app, *drawing, exportSetup, exportTo);
         }
         glViewport(0, 0, framebufferWidth, framebufferHeight);
         glClearColor(0.98f, 0.98f, 0.97f, 1.0f);
