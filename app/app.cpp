@@ -789,7 +789,8 @@ void App::StepControls()
     ImGui::Text("step %d of %d", step + 1, study.StepCount());
     ImGui::SetNextItemWidth(-1.0f);
     int shown = step;
-    if (ImGui::SliderInt("##step", &shown, 0, last, step == last ? "verdict" : "axis %d") && shown != step)
+    const std::string sliderText = step == last ? "verdict" : "axis " + std::to_string(step + 1);
+    if (ImGui::SliderInt("##step", &shown, 0, last, sliderText.c_str()) && shown != step)
     {
         step = shown;
         Refresh();
@@ -797,7 +798,7 @@ void App::StepControls()
     ImGui::TextWrapped("%s", DescribeStep(scene, study, step).c_str());
 
     ImGui::Separator();
-    ImGui::TextUnformatted(study.sweep ? "Axes tested (click one)" : "Axes tested (click one)");
+    ImGui::TextUnformatted("Axes tested (click one)");
     HelpMarker("Each row is one step of the test: the axis, then the push that separates the shapes along it or "
                "the gap between them. The test stops at the first axis with a gap (a separating axis).");
     const float rows = std::min<float>(static_cast<float>(study.StepCount()), 9.0f);

@@ -266,7 +266,8 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
     if (study.sweep)
     {
         const SweepAxis& s = study.sweepTrace.axes[static_cast<size_t>(step)];
-        return title + ", entry " + FormatNumber(s.entry) + ", exit " + FormatNumber(s.exit);
+        return title + ", entry " + (std::isinf(s.entry) ? "never" : FormatNumber(s.entry)) + ", exit " +
+               (std::isinf(s.exit) ? "never" : FormatNumber(s.exit));
     }
     const AxisTest& test = study.trace.axes[static_cast<size_t>(step)];
     if (test.skipped)
