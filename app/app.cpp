@@ -846,16 +846,30 @@ void App::Inspector()
     {
         return;
     }
+    bool single = scene.view.singlePrecision;
+    if (ImGui::Checkbox("single precision (float)", &single))
+    {
+        scene.view.singlePrecision = single;
+        dirty = true;
+        Refresh();
+    }
+    HelpMarker("Runs the float instantiation of the queries on the shapes rounded to float: compare its numbers "
+               "with double's to see what the precision costs.");
     const PairStudy& study = setup.study;
+    if (single && !study.singlePrecision)
+    {
+        ImGui::TextWrapped("A polygon is not valid once rounded to float: the numbers are double.");
+    }
     const Manifold& m = study.manifold;
     ImGui::Text("overlap: %s", m.overlap ? "yes" : "no");
     if (m.overlap)
     {
-        ImGui::Text("depth: %.17g", m.depth);
+        ImGui::Text(study.singlePrecision ? "depth: %.9g" : "depth: %.17g", m.depth);
     }
     else
     {
-        ImGui::Text("gap on the separating axis: %.17g", m.gap);
+        ImGui::Text(study.singlePrecision ? "gap on the separating axis: %.9g" : "gap on the separating axis: %.17g",
+                    m.gap);
     }
     ImGui::Text("normal (A to B): (%.6f, %.6f)", m.normal.x, m.normal.y);
     for (int i = 0; i < m.contactCount; ++i)

@@ -159,6 +159,12 @@ TEST_CASE("View block errors name the field", "[scene]")
     CHECK(ErrorOf(two + R"({"zoom": 10, "centre": [0, 0]}})") ==
           "s.json: view.centre: unknown field \"centre\" (did you mean \"center\"?)");
     CHECK(ErrorOf(two + R"([1, 2]})") == "s.json: view: expected an object, got an array");
+    CHECK(ErrorOf(two + R"({"precision": "half"}})") ==
+          "s.json: view.precision: expected \"double\" or \"float\", got \"half\"");
+    const SceneResult single = ParseScene(two + R"({"precision": "float"}})", "s.json");
+    REQUIRE(single.Ok());
+    CHECK(single.scene.view.singlePrecision);
+    CHECK(ParseScene(SceneToJson(single.scene), "s.json").scene.view.singlePrecision);
 }
 
 TEST_CASE("A saved scene reads back as the same scene, bit for bit", "[scene]")
@@ -207,6 +213,7 @@ TEST_CASE("A saved scene reads back as the same scene, bit for bit", "[scene]")
         CHECK(a.view.step == b.view.step);
         CHECK(a.view.time == b.view.time);
         CHECK(a.view.caption == b.view.caption);
+        CHECK(a.view.singlePrecision == b.view.singlePrecision);
         ++scenes;
     }
     CHECK(scenes >= 8);

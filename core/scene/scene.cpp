@@ -322,7 +322,8 @@ SceneView ParseView(const Json& value, const Scene& scene)
     {
         Fail(path, "expected an object, got " + TypeName(value));
     }
-    CheckKeys(value, path, {"center", "zoom", "size", "layers", "pair", "query", "step", "time", "caption"});
+    CheckKeys(value, path,
+              {"center", "zoom", "size", "layers", "pair", "query", "step", "time", "caption", "precision"});
     SceneView view;
     if (value.contains("zoom"))
     {
@@ -428,6 +429,15 @@ SceneView ParseView(const Json& value, const Scene& scene)
     if (value.contains("caption"))
     {
         view.caption = String(value["caption"], path + ".caption");
+    }
+    if (value.contains("precision"))
+    {
+        const std::string precision = String(value["precision"], path + ".precision");
+        if (precision != "double" && precision != "float")
+        {
+            Fail(path + ".precision", "expected \"double\" or \"float\", got \"" + precision + "\"");
+        }
+        view.singlePrecision = precision == "float";
     }
     return view;
 }
@@ -666,6 +676,10 @@ std::string SceneToJson(const Scene& scene)
         if (!v.caption.empty())
         {
             view["caption"] = v.caption;
+        }
+        if (v.singlePrecision)
+        {
+            view["precision"] = "float";
         }
         root["view"] = view;
     }

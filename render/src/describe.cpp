@@ -120,11 +120,11 @@ std::string StaticVerdict(const Scene& scene, const PairStudy& study)
 std::string SweepAxisStep(const Scene& scene, const PairStudy& study, int step)
 {
     const SweepAxis& axis = study.sweepTrace.axes[static_cast<size_t>(step)];
-    std::string text = "Axis " + std::to_string(step + 1) + ": " + DescribeAxis(scene, study, axis.axis) +
-                       ". At t = 0 the intervals " +
-                       (axis.separation > 0.0 ? "are " + FormatNumber(axis.separation) + " apart"
-                                              : "overlap (a push of " + FormatNumber(-axis.separation) +
-                                                    " would separate them)");
+    std::string text =
+        "Axis " + std::to_string(step + 1) + ": " + DescribeAxis(scene, study, axis.axis) +
+        ". At t = 0 the intervals " +
+        (axis.separation > 0.0 ? "are " + FormatNumber(axis.separation) + " apart"
+                               : "overlap (a push of " + FormatNumber(-axis.separation) + " would separate them)");
     if (axis.rate == 0.0)
     {
         text += " and stay so (no motion along this axis).";

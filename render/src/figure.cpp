@@ -42,7 +42,7 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
         setup.error = "view.pair: names no pair of distinct bodies";
         return setup;
     }
-    setup.study = StudyPair(scene, a, b, view.query);
+    setup.study = StudyPair(scene, a, b, view.query, view.singlePrecision);
 
     Figure& figure = setup.figure;
     figure.layers =

@@ -55,6 +55,7 @@ struct SceneView
     int step = -1;                          ///< trace step to show; -1: the last step (the verdict)
     double time = -1.0;                     ///< sweeps: draw the moving shapes at this time in [0, 1]; -1: not drawn
     std::string caption;                    ///< text drawn above the figure; empty: the step's own description
+    bool singlePrecision = false;           ///< run the queries in float ("precision": "float") instead of double
 };
 
 /// Largest accepted image side of a view, in pixels.

@@ -18,6 +18,8 @@ struct PairStudy
     bool sweep = false; ///< the figure shows the swept test (else the static test)
     /// The pair moves but already overlaps at t = 0: there is no time of impact, so the static test is shown.
     bool startsOverlapping = false;
+    /// The queries ran in single precision (float), their results widened to double for drawing.
+    bool singlePrecision = false;
     Manifold manifold;       ///< Collide(A, B)
     Trace trace;             ///< its step trace
     SweepResult sweepResult; ///< Sweep(A, B), when sweep
@@ -33,7 +35,9 @@ struct PairStudy
 
 /// Runs the queries on bodies a and b of the scene (indices). `query` Automatic sweeps when the pair moves
 /// relative to each other. A sweep that finds the pair overlapping at t = 0 shows the static test instead.
-PairStudy StudyPair(const Scene& scene, int a, int b, ViewQuery query);
+/// With `singlePrecision`, the shapes are rounded to float and the float instantiation of the queries runs (a
+/// polygon that rounding makes invalid falls back to double, and singlePrecision stays false).
+PairStudy StudyPair(const Scene& scene, int a, int b, ViewQuery query, bool singlePrecision = false);
 
 /// The world transform of a body at time t of the step (its velocity is the displacement over the step).
 Transform BodyTransformAt(const Body& body, double t);
