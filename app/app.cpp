@@ -606,9 +606,14 @@ void App::MenuBar()
         {
             AddBody(MakeShape(MakeRegularPolygon(3, 0.6).polygon), "triangle");
         }
-        if (ImGui::MenuItem("Add hexagon"))
+        if (ImGui::MenuItem("Add regular polygon"))
         {
-            AddBody(MakeShape(MakeRegularPolygon(6, 0.6).polygon), "hexagon");
+            AddBody(MakeShape(MakeRegularPolygon(newSides_, 0.6).polygon), "polygon");
+        }
+        ImGui::SetNextItemWidth(120.0f);
+        if (ImGui::InputInt("sides", &newSides_))
+        {
+            newSides_ = std::clamp(newSides_, 3, 4096);
         }
         if (ImGui::MenuItem("Add circle"))
         {

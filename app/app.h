@@ -140,6 +140,7 @@ class App
     double playClock_ = 0.0;
     bool quitConfirmed_ = false;
     bool canvasAnnounced_ = false;
+    int newSides_ = 5;
     bool askQuit_ = false;
     bool askOpen_ = false;
     bool askSaveAs_ = false;
