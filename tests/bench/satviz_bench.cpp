@@ -61,6 +61,40 @@ struct BenchPair
 #endif
 };
 
+// What each library's queries read during timing, stored apart per library as an engine stores its own shapes:
+// a pass streams through one library's records only, not through every representation of every pair.
+struct SatvizRecord
+{
+    Shape sa, sb;
+    Transform xfA, xfB;
+    Vec2 velocity;
+};
+
+struct FloatRecord
+{
+    PolygonT<float> fa, fb;
+    TransformT<float> fxfA, fxfB;
+};
+
+#ifdef SATVIZ_HAVE_BOX2D
+struct Box2DRecord
+{
+    b2PolygonShape ba, bb;
+    b2Transform bxfA, bxfB;
+    Vec2 velocity;
+};
+#endif
+
+/// One slice of the timing pool, in each library's records; `apart` holds the pairs that start apart (sweeps).
+struct Slice
+{
+    std::vector<SatvizRecord> satviz, satvizApart;
+    std::vector<FloatRecord> single;
+#ifdef SATVIZ_HAVE_BOX2D
+    std::vector<Box2DRecord> box2d, box2dApart;
+#endif
+};
+
 TransformT<float> ToFloat(const Transform& xf)
 {
     return {ConvertVec<float>(xf.p), {static_cast<float>(xf.q.c), static_cast<float>(xf.q.s)}};
@@ -111,7 +145,8 @@ double Box2DDepth(const b2Manifold& manifold, const BenchPair& p)
 #ifdef SATVIZ_HAVE_BOX2D
 // A pure translation sweep, built per query as Box2D's own world does (its proxies point into the shapes): the
 // centre of mass at the body origin, the angle constant, B moving by the pair's velocity.
-const b2TOIInput& Box2DTOIInput(const BenchPair& p)
+template <typename Pair>
+const b2TOIInput& Box2DTOIInput(const Pair& p)
 {
     static b2TOIInput input;
     input.proxyA.Set(&p.ba, 0);
@@ -177,7 +212,11 @@ struct Query
     std::string name;
     bool box2d = false; // needs n <= 8
     bool sweep = false; // runs on the pairs that start apart (a time of impact needs a start)
-    std::function<double(const BenchPair&)> run;
+    std::function<double(const SatvizRecord&)> satviz;
+    std::function<double(const FloatRecord&)> single;
+#ifdef SATVIZ_HAVE_BOX2D
+    std::function<double(const Box2DRecord&)> box2dRun;
+#endif
 };
 
 volatile double g_sink = 0.0;
@@ -188,42 +227,73 @@ double Median(std::vector<double> values)
     return values[values.size() / 2];
 }
 
+Query SatvizQuery(const std::string& name, bool sweep, std::function<double(const SatvizRecord&)> run)
+{
+    Query q;
+    q.name = name;
+    q.sweep = sweep;
+    q.satviz = std::move(run);
+    return q;
+}
+
+Query FloatQuery(const std::string& name, std::function<double(const FloatRecord&)> run)
+{
+    Query q;
+    q.name = name;
+    q.single = std::move(run);
+    return q;
+}
+
 std::vector<Query> Queries()
 {
     static Trace trace;
     static SweepTrace sweepTrace;
     std::vector<Query> queries = {
-        {"satviz Overlap", false, false,
-         [](const BenchPair& p) { return Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB) ? 1.0 : 0.0; }},
-        {"satviz Overlap traced", false, false,
-         [](const BenchPair& p) { return Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace) ? 1.0 : 0.0; }},
-        {"satviz Overlap float", false, false,
-         [](const BenchPair& p) { return Overlap(p.fa, p.fxfA, p.fb, p.fxfB) ? 1.0 : 0.0; }},
-        {"satviz Collide", false, false,
-         [](const BenchPair& p) { return Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB).depth; }},
-        {"satviz Collide traced", false, false,
-         [](const BenchPair& p) { return Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace).depth; }},
-        {"satviz Collide float", false, false,
-         [](const BenchPair& p) { return static_cast<double>(Collide(p.fa, p.fxfA, p.fb, p.fxfB).depth); }},
-        {"satviz Sweep", false, true,
-         [](const BenchPair& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity).toi; }},
-        {"satviz Sweep traced", false, true,
-         [](const BenchPair& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity, &sweepTrace).toi; }},
+        SatvizQuery("satviz Overlap", false,
+                    [](const SatvizRecord& p) { return Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB) ? 1.0 : 0.0; }),
+        SatvizQuery("satviz Overlap traced", false,
+                    [](const SatvizRecord& p) {
+                        return Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace) ? 1.0 : 0.0;
+                    }),
+        FloatQuery("satviz Overlap float",
+                   [](const FloatRecord& p) { return Overlap(p.fa, p.fxfA, p.fb, p.fxfB) ? 1.0 : 0.0; }),
+        SatvizQuery("satviz Collide", false,
+                    [](const SatvizRecord& p) { return Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB).depth; }),
+        SatvizQuery("satviz Collide traced", false,
+                    [](const SatvizRecord& p) {
+                        return Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace).depth;
+                    }),
+        FloatQuery("satviz Collide float",
+                   [](const FloatRecord& p) { return static_cast<double>(Collide(p.fa, p.fxfA, p.fb, p.fxfB).depth); }),
+        SatvizQuery("satviz Sweep", true,
+                    [](const SatvizRecord& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity).toi; }),
+        SatvizQuery("satviz Sweep traced", true,
+                    [](const SatvizRecord& p) {
+                        return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity, &sweepTrace).toi;
+                    }),
     };
 #ifdef SATVIZ_HAVE_BOX2D
-    queries.push_back({"box2d b2TestOverlap", true, false, [](const BenchPair& p) {
-                           return b2TestOverlap(&p.ba, 0, &p.bb, 0, p.bxfA, p.bxfB) ? 1.0 : 0.0;
-                       }});
-    queries.push_back({"box2d b2CollidePolygons", true, false, [](const BenchPair& p) {
-                           b2Manifold manifold;
-                           b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
-                           return static_cast<double>(manifold.pointCount);
-                       }});
-    queries.push_back({"box2d b2TimeOfImpact", true, true, [](const BenchPair& p) {
-                           b2TOIOutput output;
-                           b2TimeOfImpact(&output, &Box2DTOIInput(p));
-                           return static_cast<double>(output.t);
-                       }});
+    auto box2d = [](const std::string& name, bool sweep, std::function<double(const Box2DRecord&)> run) {
+        Query q;
+        q.name = name;
+        q.box2d = true;
+        q.sweep = sweep;
+        q.box2dRun = std::move(run);
+        return q;
+    };
+    queries.push_back(box2d("box2d b2TestOverlap", false, [](const Box2DRecord& p) {
+        return b2TestOverlap(&p.ba, 0, &p.bb, 0, p.bxfA, p.bxfB) ? 1.0 : 0.0;
+    }));
+    queries.push_back(box2d("box2d b2CollidePolygons", false, [](const Box2DRecord& p) {
+        b2Manifold manifold;
+        b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
+        return static_cast<double>(manifold.pointCount);
+    }));
+    queries.push_back(box2d("box2d b2TimeOfImpact", true, [](const Box2DRecord& p) {
+        b2TOIOutput output;
+        b2TimeOfImpact(&output, &Box2DTOIInput(p));
+        return static_cast<double>(output.t);
+    }));
 #endif
     return queries;
 }
@@ -232,19 +302,30 @@ std::vector<Query> Queries()
 std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rng)
 {
     const int perSlice = n >= 1024 ? std::max(1, s.pairs / 10) : s.pairs;
-    std::vector<std::vector<BenchPair>> slices;
-    std::vector<std::vector<const BenchPair*>> all(static_cast<size_t>(s.slices));
-    std::vector<std::vector<const BenchPair*>> apart(static_cast<size_t>(s.slices));
-    for (int i = 0; i < s.slices; ++i)
+    std::vector<Slice> slices(static_cast<size_t>(s.slices));
+    for (Slice& slice : slices)
     {
-        slices.push_back(MakePool(rng, n, perSlice));
-        for (const BenchPair& p : slices.back())
+        for (const BenchPair& p : MakePool(rng, n, perSlice))
         {
-            all[static_cast<size_t>(i)].push_back(&p);
-            if (!Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB))
+            const bool apart = !Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
+            const SatvizRecord record{p.sa, p.sb, p.xfA, p.xfB, p.velocity};
+            slice.satviz.push_back(record);
+            slice.single.push_back({p.fa, p.fb, p.fxfA, p.fxfB});
+            if (apart)
             {
-                apart[static_cast<size_t>(i)].push_back(&p);
+                slice.satvizApart.push_back(record);
             }
+#ifdef SATVIZ_HAVE_BOX2D
+            if (n <= b2_maxPolygonVertices)
+            {
+                const Box2DRecord box{p.ba, p.bb, p.bxfA, p.bxfB, p.velocity};
+                slice.box2d.push_back(box);
+                if (apart)
+                {
+                    slice.box2dApart.push_back(box);
+                }
+            }
+#endif
         }
     }
     std::map<std::string, std::vector<double>> rounds;
@@ -258,18 +339,43 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
                 continue;
             }
             auto pass = [&]() {
-                const std::vector<const BenchPair*>& pool = (q.sweep ? apart : all)[static_cast<size_t>(slice)];
+                const Slice& data = slices[static_cast<size_t>(slice)];
                 slice = (slice + 1) % s.slices;
                 double sink = 0.0;
+                size_t count = 0;
                 const auto start = std::chrono::steady_clock::now();
-                for (const BenchPair* p : pool)
+                if (q.satviz)
                 {
-                    sink += q.run(*p);
+                    const std::vector<SatvizRecord>& records = q.sweep ? data.satvizApart : data.satviz;
+                    for (const SatvizRecord& p : records)
+                    {
+                        sink += q.satviz(p);
+                    }
+                    count = records.size();
                 }
+                else if (q.single)
+                {
+                    for (const FloatRecord& p : data.single)
+                    {
+                        sink += q.single(p);
+                    }
+                    count = data.single.size();
+                }
+#ifdef SATVIZ_HAVE_BOX2D
+                else
+                {
+                    const std::vector<Box2DRecord>& records = q.sweep ? data.box2dApart : data.box2d;
+                    for (const Box2DRecord& p : records)
+                    {
+                        sink += q.box2dRun(p);
+                    }
+                    count = records.size();
+                }
+#endif
                 const auto stop = std::chrono::steady_clock::now();
                 g_sink = g_sink + sink;
                 return std::chrono::duration<double, std::nano>(stop - start).count() /
-                       static_cast<double>(std::max<size_t>(1, pool.size()));
+                       static_cast<double>(std::max<size_t>(1, count));
             };
             for (int w = 0; w < s.slices; ++w)
             {
