@@ -238,3 +238,12 @@ TEST_CASE("SaveScene replaces the file atomically and reports failures with the 
     CHECK(error.find((dir / "missing" / "scene.json").string() + ": cannot write") == 0);
     std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("Errors stay on one line whatever the input holds", "[scene]")
+{
+    const std::string error = ErrorOf("{\"bodies\": [], \"vi\\nyew\": 1}");
+    CHECK(error.find('\n') == std::string::npos);
+    CHECK(error == "s.json: vi\\nyew: unknown field \"vi\\nyew\" (did you mean \"view\"?)");
+    CHECK(ErrorOf("{\"bodies\": [{\"name\": \"a\\tb\", \"box\": [1, 1]}, {\"name\": \"a\\tb\", \"box\": [1, 1]}]}")
+              .find('\t') == std::string::npos);
+}

@@ -29,6 +29,37 @@ struct SceneFault
     std::string message;
 };
 
+// Error messages are one line: control characters that came from the input (a key with a newline in it) are
+// written as escapes.
+std::string OneLine(const std::string& text)
+{
+    std::string out;
+    for (const char c : text)
+    {
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '\n')
+        {
+            out += "\\n";
+        }
+        else if (c == '\t')
+        {
+            out += "\\t";
+        }
+        else if (u < 0x20 || u == 0x7f)
+        {
+            static const char* const kHex = "0123456789abcdef";
+            out += "\\x";
+            out += kHex[u >> 4];
+            out += kHex[u & 15];
+        }
+        else
+        {
+            out += c;
+        }
+    }
+    return out;
+}
+
 [[noreturn]] void Fail(const std::string& path, const std::string& message)
 {
     throw SceneFault{path, message};
@@ -539,7 +570,7 @@ SceneResult ParseScene(std::string_view text, const std::string& file)
             const size_t at = text.find(what.substr(open + 1, close - open - 1));
             where = at == std::string_view::npos ? "" : ":" + Location(text, at);
         }
-        result.error = file + where + ": malformed JSON: " + what;
+        result.error = OneLine(file + where + ": malformed JSON: " + what);
         return result;
     }
     try
@@ -548,11 +579,11 @@ SceneResult ParseScene(std::string_view text, const std::string& file)
     }
     catch (const SceneFault& fault)
     {
-        result.error = file + ": " + fault.path + ": " + fault.message;
+        result.error = OneLine(file + ": " + fault.path + ": " + fault.message);
     }
     catch (const Json::exception& error)
     {
-        result.error = file + ": " + error.what();
+        result.error = OneLine(file + ": " + error.what());
     }
     return result;
 }
