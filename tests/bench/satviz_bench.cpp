@@ -11,6 +11,7 @@
 
 #include "support/random_shapes.h"
 #include "support/reference.h"
+#include "textbook_sat.h"
 
 #include <satviz/sat.h>
 
@@ -23,6 +24,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -267,6 +270,19 @@ std::vector<Query> Queries()
                    [](const FloatRecord& p) { return static_cast<double>(Collide(p.fa, p.fxfA, p.fb, p.fxfB).depth); }),
         SatvizQuery("satviz Sweep", true,
                     [](const SatvizRecord& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity).toi; }),
+        SatvizQuery("textbook Overlap", false,
+                    [](const SatvizRecord& p) {
+                        return bench::TextbookOverlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB) ? 1.0 : 0.0;
+                    }),
+        SatvizQuery("textbook MTV", false,
+                    [](const SatvizRecord& p) {
+                        Vec2 normal;
+                        return bench::TextbookMtv(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, normal);
+                    }),
+        SatvizQuery("textbook TOI", true,
+                    [](const SatvizRecord& p) {
+                        return bench::TextbookToi(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
+                    }),
         SatvizQuery("satviz Sweep traced", true,
                     [](const SatvizRecord& p) {
                         return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity, &sweepTrace).toi;
@@ -452,6 +468,11 @@ std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::ve
             Record(acc["satviz Collide"], m.overlap, ref, m.depth, true);
             const ManifoldT<float> mf = Collide(p.fa, p.fxfA, p.fb, p.fxfB);
             Record(acc["satviz Collide float"], mf.overlap, ref, mf.depth, true);
+            Record(acc["textbook Overlap"], bench::TextbookOverlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB), ref, 0.0,
+                   false);
+            Vec2 textbookNormal;
+            const double textbookDepth = bench::TextbookMtv(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, textbookNormal);
+            Record(acc["textbook MTV"], textbookDepth >= 0.0, ref, textbookDepth, true);
             // Times of impact against the Minkowski-difference cast (its hull of n * n points limits it to n <= 64).
             const bool sweepRef = n <= 64 && !Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
             SweepReference sr;
@@ -464,6 +485,8 @@ std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::ve
                 refT = sr.insideAtStart ? 0.0 : std::max(0.0, static_cast<double>(sr.enter));
                 const SweepResult sw = Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity);
                 RecordSweep(acc["satviz Sweep"], sw.status != SweepStatus::Miss, sw.toi, refHit, refT);
+                const double textbookT = bench::TextbookToi(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
+                RecordSweep(acc["textbook TOI"], textbookT >= 0.0, textbookT, refHit, refT);
             }
 #ifdef SATVIZ_HAVE_BOX2D
             if (n <= b2_maxPolygonVertices)
@@ -502,6 +525,8 @@ int main(int argc, char** argv)
     app.add_option("--rounds", s.rounds, "Rounds (the figure is their median)");
     app.add_option("--seed", s.seed, "Random seed");
     app.add_option("--counts", s.counts, "Vertex counts");
+    std::string csv;
+    app.add_option("--csv", csv, "Also write timing.csv and accuracy.csv into this directory (for the plots)");
     CLI11_PARSE(app, argc, argv);
     if (quick)
     {
@@ -576,6 +601,9 @@ int main(int argc, char** argv)
     ratioRow("Overlap float / Overlap double", "satviz Overlap float", "satviz Overlap");
     ratioRow("Collide float / Collide double", "satviz Collide float", "satviz Collide");
     ratioRow("Overlap / Collide", "satviz Overlap", "satviz Collide");
+    ratioRow("satviz Overlap / textbook Overlap", "satviz Overlap", "textbook Overlap");
+    ratioRow("satviz Collide / textbook MTV", "satviz Collide", "textbook MTV");
+    ratioRow("satviz Sweep / textbook TOI", "satviz Sweep", "textbook TOI");
 #ifdef SATVIZ_HAVE_BOX2D
     ratioRow("satviz Overlap / box2d b2TestOverlap", "satviz Overlap", "box2d b2TestOverlap");
     ratioRow("satviz Collide / box2d b2CollidePolygons", "satviz Collide", "box2d b2CollidePolygons");
@@ -612,6 +640,38 @@ int main(int argc, char** argv)
             std::printf("%-26s %7d %14s %12.1e %12.1e\n", name.c_str(), a.pairs, wrong.c_str(), Median(a.depthErrors),
                         *std::max_element(a.depthErrors.begin(), a.depthErrors.end()));
         }
+    }
+
+    if (!csv.empty())
+    {
+        std::filesystem::create_directories(csv);
+        std::ofstream timing(std::filesystem::path(csv) / "timing.csv");
+        timing << "query,n,ns\n";
+        for (const auto& [n, row] : ns)
+        {
+            for (const auto& [name, value] : row)
+            {
+                timing << name << ',' << n << ',' << value << '\n';
+            }
+        }
+        std::ofstream accuracy(std::filesystem::path(csv) / "accuracy.csv");
+        accuracy << "query,pairs,wrong,false_positives,false_negatives,error_median,error_max,ns_n8\n";
+        for (const auto& [name, a] : acc)
+        {
+            accuracy << name << ',' << a.pairs << ',' << a.wrong << ',' << a.falsePositives << ',' << a.falseNegatives
+                     << ',';
+            if (a.depthErrors.empty())
+            {
+                accuracy << ",";
+            }
+            else
+            {
+                accuracy << Median(a.depthErrors) << ','
+                         << *std::max_element(a.depthErrors.begin(), a.depthErrors.end());
+            }
+            accuracy << ',' << (ns.count(8) && ns[8].count(name) ? ns[8][name] : 0.0) << '\n';
+        }
+        std::printf("\nCSV files written to %s\n", csv.c_str());
     }
 
     std::printf("\ntargets (8-gons)\n");
