@@ -4,6 +4,7 @@
 
 #include "sat_impl.h"
 
+#include <satviz/cache.h>
 #include <satviz/collide.h>
 
 namespace satviz
@@ -66,6 +67,13 @@ bool Overlap(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& 
 {
     return WithTracer(trace, a, xfA, b, xfB,
                       [&](auto& tracer) { return detail::OverlapPolygons(a, xfA, b, xfB, tracer); });
+}
+
+template <typename S>
+bool Overlap(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b, const TransformT<S>& xfB,
+             SatCache& cache)
+{
+    return detail::OverlapPolygonsCached(a, xfA, b, xfB, cache.axis, cache.support);
 }
 
 template <typename S>
@@ -141,6 +149,8 @@ ManifoldT<S> Collide(const ShapeT<S>& a, const TransformT<S>& xfA, const ShapeT<
 }
 
 #define SATVIZ_INSTANTIATE(S)                                                                                          \
+    template bool Overlap(const PolygonT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&,          \
+                          SatCache&);                                                                                  \
     template bool Overlap(const PolygonT<S>&, const TransformT<S>&, const PolygonT<S>&, const TransformT<S>&,          \
                           TraceT<S>*);                                                                                 \
     template bool Overlap(const PolygonT<S>&, const TransformT<S>&, const CircleT<S>&, const TransformT<S>&,           \

@@ -394,6 +394,77 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
     return overlap;
 }
 
+/// The support vertex of `polygon` in direction `d` (polygon frame), climbing from `start`: forward while the next
+/// vertex is higher, then backward while the previous one is. One maximum on a convex outline, so this finds it;
+/// from the previous frame's support it takes a step or two. At most one lap (NaN input stops at once).
+template <typename S>
+int ClimbFrom(const PolygonT<S>& polygon, Vec2T<S> d, int start)
+{
+    const int n = polygon.Count();
+    int i = start;
+    for (int k = 0; k < n && Dot(d, polygon.edges[i]) > S(0); ++k)
+    {
+        i = Next(i, n);
+    }
+    for (int k = 0; k < n && Dot(d, polygon.edges[Prev(i, n)]) < S(0); ++k)
+    {
+        i = Prev(i, n);
+    }
+    return i;
+}
+
+/// Overlap with frame coherence (SatCache): the cached separating face alone first; if it no longer separates,
+/// the full query, remembering the face that separates this time (or nothing when the polygons overlap).
+///   1. Cached face i of polygon s, raw normal n (only the sign matters): the other polygon's support point in
+///      direction -n, climbed from the cached support (ClimbFrom), and its separation Dot(n, w - v_i) in s's
+///      frame. Positive: separated, done in O(1) steps when the pair moved a little.
+///   2. Otherwise the face queries of A, then B (OverlapPolygons), keeping the separating face they stop at and
+///      its support point.
+template <typename S>
+bool OverlapPolygonsCached(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b,
+                           const TransformT<S>& xfB, AxisRef& cached, int& cachedSupport)
+{
+    if (cached.kind == AxisKind::FaceNormal && (cached.shape == 0 || cached.shape == 1))
+    {
+        const PolygonT<S>& ref = cached.shape == 0 ? a : b;
+        const PolygonT<S>& inc = cached.shape == 0 ? b : a;
+        if (cached.index >= 0 && cached.index < ref.Count())
+        {
+            const TransformT<S> incInRef = cached.shape == 0 ? InvMulTransforms(xfA, xfB) : InvMulTransforms(xfB, xfA);
+            const Vec2T<S> normal = RightPerp(ref.edges[cached.index]);
+            const int start = cachedSupport >= 0 && cachedSupport < inc.Count() ? cachedSupport : 0;
+            const int support = ClimbFrom(inc, InvRotate(incInRef.q, -normal), start);
+            const S separation =
+                Dot(normal, TransformPoint(incInRef, inc.vertices[support]) - ref.vertices[cached.index]);
+            cachedSupport = support;
+            if (separation > S(0))
+            {
+                return false;
+            }
+        }
+    }
+    NullTracer tracer;
+    const IncidentPolygon<S> incB(b, InvMulTransforms(xfA, xfB));
+    FaceQuery<S> query = QueryFaces<false>(a, incB, 0, false, S(0), tracer);
+    if (query.separated)
+    {
+        cached = {AxisKind::FaceNormal, 0, query.face};
+        cachedSupport = query.support;
+        return false;
+    }
+    const IncidentPolygon<S> incA(a, InvMulTransforms(xfB, xfA));
+    query = QueryFaces<false>(b, incA, 1, true, S(0), tracer);
+    if (query.separated)
+    {
+        cached = {AxisKind::FaceNormal, 1, query.face};
+        cachedSupport = query.support;
+        return false;
+    }
+    cached = {};
+    cachedSupport = -1;
+    return true;
+}
+
 /// Keeps the part of segment [p0, p1] on the inner side of a plane, where Dot(normal, p - point) <= 0
 /// (Sutherland-Hodgman for one plane). Returns the number of points written to out (0 to 2).
 template <typename S>

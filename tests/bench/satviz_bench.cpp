@@ -24,9 +24,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <cstdio>
 #include <functional>
 #include <map>
 #include <string>
@@ -224,6 +224,9 @@ struct Query
 
 volatile double g_sink = 0.0;
 
+// Frames per moving-pair query: its time is divided by this to give ns per frame.
+constexpr int kFrames = 8;
+
 double Median(std::vector<double> values)
 {
     std::sort(values.begin(), values.end());
@@ -252,8 +255,9 @@ std::vector<Query> Queries()
     static Trace trace;
     static SweepTrace sweepTrace;
     std::vector<Query> queries = {
-        SatvizQuery("satviz Overlap", false,
-                    [](const SatvizRecord& p) { return Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB) ? 1.0 : 0.0; }),
+        SatvizQuery(
+            "satviz Overlap", false,
+            [](const SatvizRecord& p) { return Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB) ? 1.0 : 0.0; }),
         SatvizQuery("satviz Overlap traced", false,
                     [](const SatvizRecord& p) {
                         return Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace) ? 1.0 : 0.0;
@@ -262,14 +266,36 @@ std::vector<Query> Queries()
                    [](const FloatRecord& p) { return Overlap(p.fa, p.fxfA, p.fb, p.fxfB) ? 1.0 : 0.0; }),
         SatvizQuery("satviz Collide", false,
                     [](const SatvizRecord& p) { return Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB).depth; }),
-        SatvizQuery("satviz Collide traced", false,
-                    [](const SatvizRecord& p) {
-                        return Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace).depth;
-                    }),
+        SatvizQuery(
+            "satviz Collide traced", false,
+            [](const SatvizRecord& p) { return Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace).depth; }),
         FloatQuery("satviz Collide float",
                    [](const FloatRecord& p) { return static_cast<double>(Collide(p.fa, p.fxfA, p.fb, p.fxfB).depth); }),
         SatvizQuery("satviz Sweep", true,
                     [](const SatvizRecord& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity).toi; }),
+        // Frame coherence: pairs that start apart (most of what a broadphase hands over), B moving a little per
+        // frame for 8 frames, across the line between them; ns per frame, with and without a cache.
+        SatvizQuery("satviz Overlap, moving", true,
+                    [](const SatvizRecord& p) {
+                        double hits = 0.0;
+                        for (int frame = 0; frame < kFrames; ++frame)
+                        {
+                            const Transform xfB{p.xfB.p + (0.005 * frame) * LeftPerp(p.velocity), p.xfB.q};
+                            hits += Overlap(p.sa.polygon, p.xfA, p.sb.polygon, xfB) ? 1.0 : 0.0;
+                        }
+                        return hits;
+                    }),
+        SatvizQuery("satviz Overlap, moving, cached axis", true,
+                    [](const SatvizRecord& p) {
+                        SatCache cache;
+                        double hits = 0.0;
+                        for (int frame = 0; frame < kFrames; ++frame)
+                        {
+                            const Transform xfB{p.xfB.p + (0.005 * frame) * LeftPerp(p.velocity), p.xfB.q};
+                            hits += Overlap(p.sa.polygon, p.xfA, p.sb.polygon, xfB, cache) ? 1.0 : 0.0;
+                        }
+                        return hits;
+                    }),
         SatvizQuery("textbook Overlap", false,
                     [](const SatvizRecord& p) {
                         return bench::TextbookOverlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB) ? 1.0 : 0.0;
@@ -283,10 +309,9 @@ std::vector<Query> Queries()
                     [](const SatvizRecord& p) {
                         return bench::TextbookToi(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
                     }),
-        SatvizQuery("satviz Sweep traced", true,
-                    [](const SatvizRecord& p) {
-                        return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity, &sweepTrace).toi;
-                    }),
+        SatvizQuery(
+            "satviz Sweep traced", true,
+            [](const SatvizRecord& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity, &sweepTrace).toi; }),
     };
 #ifdef SATVIZ_HAVE_BOX2D
     auto box2d = [](const std::string& name, bool sweep, std::function<double(const Box2DRecord&)> run) {
@@ -408,7 +433,7 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
     std::map<std::string, double> out;
     for (auto& [name, values] : rounds)
     {
-        out[name] = Median(values);
+        out[name] = Median(values) / (name.find(", moving") != std::string::npos ? kFrames : 1);
     }
     return out;
 }
@@ -602,6 +627,7 @@ int main(int argc, char** argv)
     ratioRow("Collide float / Collide double", "satviz Collide float", "satviz Collide");
     ratioRow("Overlap / Collide", "satviz Overlap", "satviz Collide");
     ratioRow("satviz Overlap / textbook Overlap", "satviz Overlap", "textbook Overlap");
+    ratioRow("moving pairs: cached axis / no cache", "satviz Overlap, moving, cached axis", "satviz Overlap, moving");
     ratioRow("satviz Collide / textbook MTV", "satviz Collide", "textbook MTV");
     ratioRow("satviz Sweep / textbook TOI", "satviz Sweep", "textbook TOI");
 #ifdef SATVIZ_HAVE_BOX2D

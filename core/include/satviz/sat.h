@@ -19,6 +19,7 @@
 //   sweep.h     Sweep(A, xfA, vA, B, xfB, vB): time of impact of translating shapes, exact at any speed, with
 //               its own trace (entry and exit times per axis).
 //   slide.h     MoveAndSlide: move a shape through a step, stopping at surfaces and sliding along them.
+//   cache.h     SatCache: a pair's separating face from the previous frame, tested first by Overlap next frame.
 //
 // CONVENTIONS
 //   y points up; angles are radians, counter-clockwise. Polygon vertices are listed counter-clockwise in the body
@@ -46,6 +47,7 @@
 //   E. Catto, Contact Manifolds, GDC 2007.
 #pragma once
 
+#include <satviz/cache.h>
 #include <satviz/collide.h>
 #include <satviz/manifold.h>
 #include <satviz/math.h>
