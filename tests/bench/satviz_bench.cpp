@@ -22,6 +22,37 @@
 #include <box2d/box2d.h>
 #endif
 
+#ifdef SATVIZ_HAVE_CHIPMUNK
+#include <chipmunk/chipmunk.h>
+#include <chipmunk/chipmunk_structs.h>
+
+#include <cstdarg>
+#include <memory>
+
+// Debian builds Chipmunk without NDEBUG: its EPA prints "High EPA iterations" warnings from inside the timed
+// loops. This definition takes the place of the library's (symbol interposition), counts them, and still prints
+// real errors.
+namespace
+{
+long g_chipmunkWarnings = 0;
+}
+extern "C" void cpMessage(const char* condition, const char* file, int line, int isError, int isHardError,
+                          const char* message, ...)
+{
+    if (!isError)
+    {
+        ++g_chipmunkWarnings;
+        return;
+    }
+    std::va_list args;
+    va_start(args, message);
+    std::fprintf(stderr, "chipmunk %s (%s:%d, %s): ", isHardError ? "hard error" : "error", file, line, condition);
+    std::vfprintf(stderr, message, args);
+    std::fprintf(stderr, "\n");
+    va_end(args);
+}
+#endif
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -88,6 +119,59 @@ struct Box2DRecord
 };
 #endif
 
+#ifdef SATVIZ_HAVE_CHIPMUNK
+/// A Chipmunk pair: two polygon shapes built in place (their planes may point into the shape itself, so a record
+/// is never copied), radius 0, no body, world planes cached by cpShapeUpdate before timing.
+struct ChipmunkRecord
+{
+    cpPolyShape a{};
+    cpPolyShape b{};
+    bool ready = false;
+    ChipmunkRecord() = default;
+    ChipmunkRecord(const ChipmunkRecord&) = delete;
+    ChipmunkRecord& operator=(const ChipmunkRecord&) = delete;
+    ~ChipmunkRecord()
+    {
+        if (ready)
+        {
+            cpShapeDestroy(reinterpret_cast<cpShape*>(&a));
+            cpShapeDestroy(reinterpret_cast<cpShape*>(&b));
+        }
+    }
+    void Init(const Polygon& pa, const Transform& xfA, const Polygon& pb, const Transform& xfB)
+    {
+        auto build = [](cpPolyShape& shape, const Polygon& polygon, const Transform& xf) {
+            std::vector<cpVect> vertices;
+            for (const Vec2& v : polygon.vertices)
+            {
+                vertices.push_back(cpv(v.x, v.y));
+            }
+            cpPolyShapeInitRaw(&shape, nullptr, polygon.Count(), vertices.data(), 0.0);
+            cpTransform t = {xf.q.c, xf.q.s, -xf.q.s, xf.q.c, xf.p.x, xf.p.y};
+            cpShapeUpdate(reinterpret_cast<cpShape*>(&shape), t);
+        };
+        build(a, pa, xfA);
+        build(b, pb, xfB);
+        ready = true;
+    }
+};
+
+/// Chipmunk's answer for a pair: overlapping when it reports contacts; depth = minus the smallest contact
+/// distance.
+double ChipmunkDepth(const ChipmunkRecord& r, bool& overlap)
+{
+    const cpContactPointSet set =
+        cpShapesCollide(reinterpret_cast<const cpShape*>(&r.a), reinterpret_cast<const cpShape*>(&r.b));
+    overlap = set.count > 0;
+    double smallest = 0.0;
+    for (int i = 0; i < set.count; ++i)
+    {
+        smallest = i == 0 ? set.points[i].distance : std::min(smallest, set.points[i].distance);
+    }
+    return -smallest;
+}
+#endif
+
 /// One slice of the timing pool, in each library's records; `apart` holds the pairs that start apart (sweeps).
 struct Slice
 {
@@ -95,6 +179,10 @@ struct Slice
     std::vector<FloatRecord> single;
 #ifdef SATVIZ_HAVE_BOX2D
     std::vector<Box2DRecord> box2d, box2dApart;
+#endif
+#ifdef SATVIZ_HAVE_CHIPMUNK
+    std::unique_ptr<ChipmunkRecord[]> chipmunk;
+    size_t chipmunkCount = 0;
 #endif
 };
 
@@ -220,6 +308,9 @@ struct Query
 #ifdef SATVIZ_HAVE_BOX2D
     std::function<double(const Box2DRecord&)> box2dRun;
 #endif
+#ifdef SATVIZ_HAVE_CHIPMUNK
+    std::function<double(const ChipmunkRecord&)> chipmunkRun;
+#endif
 };
 
 volatile double g_sink = 0.0;
@@ -336,6 +427,24 @@ std::vector<Query> Queries()
         return static_cast<double>(output.t);
     }));
 #endif
+#ifdef SATVIZ_HAVE_CHIPMUNK
+    auto chipmunk = [](const std::string& name, std::function<double(const ChipmunkRecord&)> run) {
+        Query q;
+        q.name = name;
+        q.chipmunkRun = std::move(run);
+        return q;
+    };
+    queries.push_back(chipmunk("chipmunk cpShapesCollide count>0", [](const ChipmunkRecord& r) {
+        return cpShapesCollide(reinterpret_cast<const cpShape*>(&r.a), reinterpret_cast<const cpShape*>(&r.b)).count >
+                       0
+                   ? 1.0
+                   : 0.0;
+    }));
+    queries.push_back(chipmunk("chipmunk cpShapesCollide", [](const ChipmunkRecord& r) {
+        bool overlap = false;
+        return ChipmunkDepth(r, overlap);
+    }));
+#endif
     return queries;
 }
 
@@ -346,7 +455,16 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
     std::vector<Slice> slices(static_cast<size_t>(s.slices));
     for (Slice& slice : slices)
     {
-        for (const BenchPair& p : MakePool(rng, n, perSlice))
+        const std::vector<BenchPair> pool = MakePool(rng, n, perSlice);
+#ifdef SATVIZ_HAVE_CHIPMUNK
+        slice.chipmunk = std::make_unique<ChipmunkRecord[]>(pool.size());
+        slice.chipmunkCount = pool.size();
+        for (size_t i = 0; i < pool.size(); ++i)
+        {
+            slice.chipmunk[i].Init(pool[i].sa.polygon, pool[i].xfA, pool[i].sb.polygon, pool[i].xfB);
+        }
+#endif
+        for (const BenchPair& p : pool)
         {
             const bool apart = !Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
             const SatvizRecord record{p.sa, p.sb, p.xfA, p.xfB, p.velocity};
@@ -402,6 +520,16 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
                     }
                     count = data.single.size();
                 }
+#ifdef SATVIZ_HAVE_CHIPMUNK
+                else if (q.chipmunkRun)
+                {
+                    for (size_t i = 0; i < data.chipmunkCount; ++i)
+                    {
+                        sink += q.chipmunkRun(data.chipmunk[i]);
+                    }
+                    count = data.chipmunkCount;
+                }
+#endif
 #ifdef SATVIZ_HAVE_BOX2D
                 else
                 {
@@ -513,6 +641,15 @@ std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::ve
                 const double textbookT = bench::TextbookToi(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
                 RecordSweep(acc["textbook TOI"], textbookT >= 0.0, textbookT, refHit, refT);
             }
+#ifdef SATVIZ_HAVE_CHIPMUNK
+            {
+                ChipmunkRecord r;
+                r.Init(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
+                bool overlap = false;
+                const double depth = ChipmunkDepth(r, overlap);
+                Record(acc["chipmunk cpShapesCollide"], overlap, ref, depth, true);
+            }
+#endif
 #ifdef SATVIZ_HAVE_BOX2D
             if (n <= b2_maxPolygonVertices)
             {
@@ -635,6 +772,10 @@ int main(int argc, char** argv)
     ratioRow("satviz Collide / box2d b2CollidePolygons", "satviz Collide", "box2d b2CollidePolygons");
     ratioRow("satviz Sweep / box2d b2TimeOfImpact", "satviz Sweep", "box2d b2TimeOfImpact");
 #endif
+#ifdef SATVIZ_HAVE_CHIPMUNK
+    ratioRow("satviz Overlap / chipmunk count>0", "satviz Overlap", "chipmunk cpShapesCollide count>0");
+    ratioRow("satviz Collide / chipmunk cpShapesCollide", "satviz Collide", "chipmunk cpShapesCollide");
+#endif
 
     std::printf("\nscaling with the vertex count (time / time at n=8)\n");
     for (const char* name : {"satviz Overlap", "satviz Collide"})
@@ -700,6 +841,9 @@ int main(int argc, char** argv)
         std::printf("\nCSV files written to %s\n", csv.c_str());
     }
 
+#ifdef SATVIZ_HAVE_CHIPMUNK
+    std::printf("\nchipmunk: %ld warnings (\"High EPA iterations\") counted instead of printed\n", g_chipmunkWarnings);
+#endif
     std::printf("\ntargets (8-gons)\n");
     auto target = [&](const char* label, double value, double limit) {
         std::printf("  %-52s %10.3g  (target <= %g)  %s\n", label, value, limit, value <= limit ? "met" : "MISSED");
