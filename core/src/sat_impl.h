@@ -106,7 +106,7 @@ struct FaceQuery
 
 /// Polygons with at most this many vertices are scanned whole for each face instead of walked: for small
 /// counts a branch-free scan of a few projections beats the data-dependent branches of the walk.
-constexpr int kScanLimit = 16;
+constexpr int kScanLimit = AlgorithmChoices::kScanLimit;
 
 /// Smallest of the projections nx * x[j] + ny * y[j] over `count` entries, `count` a multiple of 4 (the caller
 /// pads by repeating a vertex).
@@ -166,8 +166,10 @@ struct IncidentPolygon
     alignas(16) S x[kCapacity];
     alignas(16) S y[kCapacity];
 
-    IncidentPolygon(const PolygonT<S>& p, const TransformT<S>& incInRef)
-        : polygon(p), xf(incInRef), scan(p.Count() <= kScanLimit), centroid(TransformPoint(incInRef, p.centroid))
+    /// `scanLimit` (at most kScanLimit) is the largest vertex count that is scanned.
+    IncidentPolygon(const PolygonT<S>& p, const TransformT<S>& incInRef, int scanLimit = kScanLimit)
+        : polygon(p), xf(incInRef), scan(p.Count() > 0 && p.Count() <= scanLimit),
+          centroid(TransformPoint(incInRef, p.centroid))
     {
         if (!scan)
         {
@@ -274,11 +276,12 @@ uint64_t AntiParallelFaces(const PolygonT<S>& a, const PolygonT<S>& b, const Rot
 ///      with them: find it for the first face by climbing, then walk it forward. The pass visits each vertex of
 ///      both polygons a bounded number of times: O(n + m).
 ///   4. A separation > 0 is a separating axis: stop there (early exit).
-///   5. Scan only, back-face pruning: separation_i <= Dot(n, c - v_i) for inc's centroid c, which lies inside inc.
-///      When that bound is not above `floor` (Overlap: 0, the face cannot separate) nor above the best face so
-///      far (Collide: the face cannot become the reference face), the face is not scanned: in exact arithmetic the
-///      answer is the same as without pruning. On random contact pairs of 8-gons, Overlap scans 3.6 of the 10
-///      faces it visits on average, Collide 5.4.
+///   5. Scan only, back-face pruning when Tracer::kPrune (off by default): separation_i <= Dot(n, c - v_i) for
+///      inc's centroid c, which lies inside inc. When that bound is not above `floor` (Overlap: 0, the face cannot
+///      separate) nor above the best face so far (Collide: the face cannot become the reference face), the face is
+///      not scanned; in exact arithmetic the answer is the same. It scans fewer faces (3.6 of 10 for Overlap of
+///      8-gons) but its branch is mispredicted so often that Overlap of 3- to 8-gons ran 1.2 to 1.35 times slower
+///      with it (satviz-bench, "with pruning").
 ///   6. Second pass only: a face of ref exactly anti-parallel to a face of inc repeats the test the first pass made
 ///      from that face, and is skipped (scan: the faces in `skip`; walk: inc's support edge is exactly
 ///      perpendicular to the direction).
@@ -296,8 +299,9 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
     // holds (NaN input).
     query.face = start;
     const int n = ref.Count();
-    const uint64_t skip =
-        second && inc.scan ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{})) : uint64_t(0);
+    const uint64_t skip = Tracer::kSkipParallel && second && inc.scan
+                              ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
+                              : uint64_t(0);
     int support = 0;
     int i = start;
     for (int k = 0; k < n; ++k, i = Next(i, n))
@@ -318,7 +322,7 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
             // A face whose bound cannot beat the floor (Overlap: 0; Collide: the best face so far, which only a
             // strictly larger separation replaces) changes nothing and is not scanned.
             const S bound = Dot(normal, inc.centroid - ref.vertices[i]);
-            if (bound <= std::max(floor, query.separation))
+            if (Tracer::kPrune && bound <= std::max(floor, query.separation))
             {
                 if constexpr (Tracer::kEnabled)
                 {
@@ -332,7 +336,7 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
         {
             const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
             support = k == 0 ? ClimbToSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
-            if (second && Dot(d, inc.polygon.edges[support]) == S(0))
+            if (Tracer::kSkipParallel && second && Dot(d, inc.polygon.edges[support]) == S(0))
             {
                 if constexpr (Tracer::kEnabled)
                 {
@@ -357,11 +361,17 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
         }
         if (separating)
         {
-            query.separation = separation;
-            query.face = i;
-            query.support = support;
+            if (!query.separated)
+            {
+                query.separation = separation;
+                query.face = i;
+                query.support = support;
+            }
             query.separated = true;
-            break;
+            if constexpr (Tracer::kEarlyExit)
+            {
+                break;
+            }
         }
     }
     return query;
@@ -377,13 +387,13 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
                      Tracer& tracer)
 {
     const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
-    const IncidentPolygon<S> incB(b, bInA);
+    const IncidentPolygon<S> incB(b, bInA, Tracer::kScanLimit);
     bool overlap = !QueryFaces<false>(a, incB, 0, false, S(0), tracer).separated;
-    if (overlap)
+    if (overlap || !Tracer::kEarlyExit)
     {
         const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
-        const IncidentPolygon<S> incA(a, aInB);
-        overlap = !QueryFaces<false>(b, incA, 1, true, S(0), tracer).separated;
+        const IncidentPolygon<S> incA(a, aInB, Tracer::kScanLimit);
+        overlap = !QueryFaces<false>(b, incA, 1, true, S(0), tracer).separated && overlap;
     }
     if constexpr (Tracer::kEnabled)
     {

@@ -24,7 +24,17 @@ struct ShapeRef
 };
 
 /// The tracer that records nothing.
-struct NullTracer
+/// The algorithm's choices, fixed at compile time: a tracer type inherits them, and the benchmark's variants
+/// override one to measure what it buys. Queries always use these defaults.
+struct AlgorithmChoices
+{
+    static constexpr bool kEarlyExit = true;    ///< stop at the first separating axis
+    static constexpr bool kSkipParallel = true; ///< skip faces of B anti-parallel to a face of A
+    static constexpr bool kPrune = false;       ///< back-face pruning with the centroid bound (scan only)
+    static constexpr int kScanLimit = 16;       ///< polygons up to this many vertices are scanned, larger walked
+};
+
+struct NullTracer : AlgorithmChoices
 {
     static constexpr bool kEnabled = false;
 };
@@ -52,7 +62,7 @@ void ProjectShape(ShapeRef<S> shape, const TransformT<S>& xf, Vec2T<S> direction
 
 /// The tracer that records every step into a TraceT.
 template <typename S>
-class TraceRecorder
+class TraceRecorder : public AlgorithmChoices
 {
   public:
     static constexpr bool kEnabled = true;

@@ -13,6 +13,9 @@
 #include "support/reference.h"
 #include "textbook_sat.h"
 
+// White-box: the benchmark instantiates the algorithm with some of its choices turned off (the variants).
+#include "sat_impl.h"
+
 #include <satviz/sat.h>
 
 #include <CLI/CLI.hpp>
@@ -315,6 +318,31 @@ struct Query
 
 volatile double g_sink = 0.0;
 
+// Variants of Overlap, each with one of the algorithm's choices turned off, to measure what the choice buys.
+struct NoEarlyExit : detail::NullTracer
+{
+    static constexpr bool kEarlyExit = false;
+};
+struct NoParallelSkip : detail::NullTracer
+{
+    static constexpr bool kSkipParallel = false;
+};
+struct WithPruning : detail::NullTracer
+{
+    static constexpr bool kPrune = true;
+};
+struct WalkOnly : detail::NullTracer
+{
+    static constexpr int kScanLimit = 0;
+};
+
+template <typename Variant>
+double OverlapVariant(const SatvizRecord& p)
+{
+    Variant variant;
+    return detail::OverlapPolygons(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, variant) ? 1.0 : 0.0;
+}
+
 // Frames per moving-pair query: its time is divided by this to give ns per frame.
 constexpr int kFrames = 8;
 
@@ -364,6 +392,11 @@ std::vector<Query> Queries()
                    [](const FloatRecord& p) { return static_cast<double>(Collide(p.fa, p.fxfA, p.fb, p.fxfB).depth); }),
         SatvizQuery("satviz Sweep", true,
                     [](const SatvizRecord& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity).toi; }),
+        SatvizQuery("satviz Overlap, as compiled here", false, OverlapVariant<detail::NullTracer>),
+        SatvizQuery("satviz Overlap, no early exit", false, OverlapVariant<NoEarlyExit>),
+        SatvizQuery("satviz Overlap, no parallel skip", false, OverlapVariant<NoParallelSkip>),
+        SatvizQuery("satviz Overlap, with pruning", false, OverlapVariant<WithPruning>),
+        SatvizQuery("satviz Overlap, walk only", false, OverlapVariant<WalkOnly>),
         // Frame coherence: pairs that start apart (most of what a broadphase hands over), B moving a little per
         // frame for 8 frames, across the line between them; ns per frame, with and without a cache.
         SatvizQuery("satviz Overlap, moving", true,
@@ -435,8 +468,7 @@ std::vector<Query> Queries()
         return q;
     };
     queries.push_back(chipmunk("chipmunk cpShapesCollide count>0", [](const ChipmunkRecord& r) {
-        return cpShapesCollide(reinterpret_cast<const cpShape*>(&r.a), reinterpret_cast<const cpShape*>(&r.b)).count >
-                       0
+        return cpShapesCollide(reinterpret_cast<const cpShape*>(&r.a), reinterpret_cast<const cpShape*>(&r.b)).count > 0
                    ? 1.0
                    : 0.0;
     }));
@@ -764,6 +796,15 @@ int main(int argc, char** argv)
     ratioRow("Collide float / Collide double", "satviz Collide float", "satviz Collide");
     ratioRow("Overlap / Collide", "satviz Overlap", "satviz Collide");
     ratioRow("satviz Overlap / textbook Overlap", "satviz Overlap", "textbook Overlap");
+    // The variants are instantiated in this file: they compare with the default compiled here too.
+    ratioRow("Overlap without early exit / Overlap", "satviz Overlap, no early exit",
+             "satviz Overlap, as compiled here");
+    ratioRow("Overlap without parallel skip / Overlap", "satviz Overlap, no parallel skip",
+             "satviz Overlap, as compiled here");
+    ratioRow("Overlap with back-face pruning / Overlap", "satviz Overlap, with pruning",
+             "satviz Overlap, as compiled here");
+    ratioRow("Overlap walking, not scanning / Overlap", "satviz Overlap, walk only",
+             "satviz Overlap, as compiled here");
     ratioRow("moving pairs: cached axis / no cache", "satviz Overlap, moving, cached axis", "satviz Overlap, moving");
     ratioRow("satviz Collide / textbook MTV", "satviz Collide", "textbook MTV");
     ratioRow("satviz Sweep / textbook TOI", "satviz Sweep", "textbook TOI");

@@ -27,7 +27,8 @@ struct AxisTestT
     /// The axis repeats one already tested (a face of B anti-parallel to a face of A): no work was done for it.
     bool skipped = false;
     int duplicateOf = -1; ///< with skipped: index in TraceT::axes of the test it repeats
-    /// The axis was not scanned (back-face pruning): the separation of the other polygon's centroid, `bound`, is an
+    /// The axis was not scanned (back-face pruning, an option of the algorithm that the queries leave off): the
+    /// separation of the other polygon's centroid, `bound`, is an
     /// upper bound of the separation and showed that this face could neither separate the shapes nor beat the best
     /// face so far. `separation` and the intervals are computed for the view only.
     bool pruned = false;
