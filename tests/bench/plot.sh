@@ -11,7 +11,7 @@ trap 'rm -rf "$work"' EXIT
 # One data file per query for the vertex-count plot: n ns.
 queries=()
 while IFS= read -r query; do queries+=("$query"); done < <(tail -n +2 "$csv/timing.csv" | cut -d, -f1 | sort -u |
-  grep -v -E "traced|float|Sweep|TOI|b2TimeOfImpact")
+  grep -v -E "traced|float|Sweep|TOI|b2TimeOfImpact|;")
 plots=""
 i=0
 for query in "${queries[@]}"; do

@@ -598,6 +598,13 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
     return out;
 }
 
+// A query name as a CSV field: its commas become semicolons.
+std::string CsvName(std::string name)
+{
+    std::replace(name.begin(), name.end(), ',', ';');
+    return name;
+}
+
 struct Accuracy
 {
     bool sweep = false; // errors are times of impact, not depths
@@ -859,14 +866,14 @@ int main(int argc, char** argv)
         {
             for (const auto& [name, value] : row)
             {
-                timing << name << ',' << n << ',' << value << '\n';
+                timing << CsvName(name) << ',' << n << ',' << value << '\n';
             }
         }
         std::ofstream accuracy(std::filesystem::path(csv) / "accuracy.csv");
         accuracy << "query,pairs,wrong,false_positives,false_negatives,error_median,error_max,ns_n8\n";
         for (const auto& [name, a] : acc)
         {
-            accuracy << name << ',' << a.pairs << ',' << a.wrong << ',' << a.falsePositives << ',' << a.falseNegatives
+            accuracy << CsvName(name) << ',' << a.pairs << ',' << a.wrong << ',' << a.falsePositives << ',' << a.falseNegatives
                      << ',';
             if (a.depthErrors.empty())
             {
