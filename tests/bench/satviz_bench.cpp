@@ -105,7 +105,16 @@ struct SatvizRecord
     Shape sa, sb;
     Transform xfA, xfB;
     Vec2 velocity;
+    Vec2 rayFrom, rayTo; // a segment cast at A: from behind B's centroid towards A's
 };
+
+// The segment cast of a pair: from B's centroid, moved back along its velocity, to A's centroid.
+void RaySegment(const Shape& sa, const Transform& xfA, const Shape& sb, const Transform& xfB, Vec2 velocity, Vec2& from,
+                Vec2& to)
+{
+    from = TransformPoint(xfB, sb.polygon.centroid) - 0.5 * velocity;
+    to = TransformPoint(xfA, sa.polygon.centroid);
+}
 
 struct FloatRecord
 {
@@ -119,6 +128,7 @@ struct Box2DRecord
     b2PolygonShape ba, bb;
     b2Transform bxfA, bxfB;
     Vec2 velocity;
+    b2RayCastInput ray;
 };
 #endif
 
@@ -433,6 +443,8 @@ std::vector<Query> Queries()
                     [](const SatvizRecord& p) {
                         return bench::TextbookToi(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
                     }),
+        SatvizQuery("satviz RayCast", false,
+                    [](const SatvizRecord& p) { return RayCast(p.sa.polygon, p.xfA, p.rayFrom, p.rayTo).fraction; }),
         SatvizQuery(
             "satviz Sweep traced", true,
             [](const SatvizRecord& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity, &sweepTrace).toi; }),
@@ -453,6 +465,10 @@ std::vector<Query> Queries()
         b2Manifold manifold;
         b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
         return static_cast<double>(manifold.pointCount);
+    }));
+    queries.push_back(box2d("box2d b2PolygonShape::RayCast", false, [](const Box2DRecord& p) {
+        b2RayCastOutput output;
+        return p.ba.RayCast(&output, p.ray, p.bxfA, 0) ? static_cast<double>(output.fraction) : 2.0;
     }));
     queries.push_back(box2d("box2d b2TimeOfImpact", true, [](const Box2DRecord& p) {
         b2TOIOutput output;
@@ -499,7 +515,8 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
         for (const BenchPair& p : pool)
         {
             const bool apart = !Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
-            const SatvizRecord record{p.sa, p.sb, p.xfA, p.xfB, p.velocity};
+            SatvizRecord record{p.sa, p.sb, p.xfA, p.xfB, p.velocity, {}, {}};
+            RaySegment(p.sa, p.xfA, p.sb, p.xfB, p.velocity, record.rayFrom, record.rayTo);
             slice.satviz.push_back(record);
             slice.single.push_back({p.fa, p.fb, p.fxfA, p.fxfB});
             if (apart)
@@ -509,7 +526,10 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
 #ifdef SATVIZ_HAVE_BOX2D
             if (n <= b2_maxPolygonVertices)
             {
-                const Box2DRecord box{p.ba, p.bb, p.bxfA, p.bxfB, p.velocity};
+                Box2DRecord box{p.ba, p.bb, p.bxfA, p.bxfB, p.velocity, {}};
+                box.ray.p1.Set(static_cast<float>(record.rayFrom.x), static_cast<float>(record.rayFrom.y));
+                box.ray.p2.Set(static_cast<float>(record.rayTo.x), static_cast<float>(record.rayTo.y));
+                box.ray.maxFraction = 1.0f;
                 slice.box2d.push_back(box);
                 if (apart)
                 {
@@ -819,6 +839,7 @@ int main(int argc, char** argv)
     ratioRow("satviz Overlap / box2d b2TestOverlap", "satviz Overlap", "box2d b2TestOverlap");
     ratioRow("satviz Collide / box2d b2CollidePolygons", "satviz Collide", "box2d b2CollidePolygons");
     ratioRow("satviz Sweep / box2d b2TimeOfImpact", "satviz Sweep", "box2d b2TimeOfImpact");
+    ratioRow("satviz RayCast / box2d RayCast", "satviz RayCast", "box2d b2PolygonShape::RayCast");
 #endif
 #ifdef SATVIZ_HAVE_CHIPMUNK
     ratioRow("satviz Overlap / chipmunk count>0", "satviz Overlap", "chipmunk cpShapesCollide count>0");
@@ -873,8 +894,8 @@ int main(int argc, char** argv)
         accuracy << "query,pairs,wrong,false_positives,false_negatives,error_median,error_max,ns_n8\n";
         for (const auto& [name, a] : acc)
         {
-            accuracy << CsvName(name) << ',' << a.pairs << ',' << a.wrong << ',' << a.falsePositives << ',' << a.falseNegatives
-                     << ',';
+            accuracy << CsvName(name) << ',' << a.pairs << ',' << a.wrong << ',' << a.falsePositives << ','
+                     << a.falseNegatives << ',';
             if (a.depthErrors.empty())
             {
                 accuracy << ",";

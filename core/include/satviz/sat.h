@@ -19,6 +19,7 @@
 //   sweep.h     Sweep(A, xfA, vA, B, xfB, vB): time of impact of translating shapes, exact at any speed, with
 //               its own trace (entry and exit times per axis).
 //   slide.h     MoveAndSlide: move a shape through a step, stopping at surfaces and sliding along them.
+//   raycast.h   RayCast(shape, xf, p1, p2): where a segment first meets a shape (bullets, picking).
 //   cache.h     SatCache: a pair's separating face from the previous frame, tested first by Overlap next frame.
 //
 // CONVENTIONS
@@ -52,6 +53,7 @@
 #include <satviz/manifold.h>
 #include <satviz/math.h>
 #include <satviz/polygon.h>
+#include <satviz/raycast.h>
 #include <satviz/shape.h>
 #include <satviz/slide.h>
 #include <satviz/sweep.h>
