@@ -2,7 +2,8 @@
 // Fuzz target for the core API: the bytes become two shapes (vertex lists through MakePolygon, ComputeHull or the
 // repair option, or circles), transforms and velocities, raw IEEE bit patterns included (NaN, infinities, huge
 // and subnormal values). Invalid input must come back as an error value; valid input must give consistent
-// answers: Overlap agrees with Collide, traced agrees with untraced, and nothing crashes or hangs.
+// answers: Overlap agrees with Collide, traced agrees with untraced, a segment cast stays within its segment, and
+// nothing crashes or hangs.
 #include <satviz/sat.h>
 
 #include <algorithm>
@@ -137,6 +138,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     const satviz::Obstacle obstacle{&b, xfB};
     const satviz::SlideResult slide = satviz::MoveAndSlide(a, xfA, vA, &obstacle, 1);
     if (slide.contactCount < 0 || slide.contactCount > satviz::kMaxSlideContacts)
+    {
+        std::abort();
+    }
+    const satviz::RayHit ray = satviz::RayCast(b, xfB, vA, vB);
+    if (ray.hit && !(ray.fraction >= 0.0 && ray.fraction <= 1.0))
     {
         std::abort();
     }
