@@ -59,6 +59,31 @@ std::string UniqueName(const Scene& scene, const std::string& stem)
     }
 }
 
+// A modal popup asking for a file path; true on the frame the user confirms it (button or Enter).
+bool PathPopup(const char* title, const char* prompt, const char* action, char* buffer, size_t size)
+{
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    {
+        return false;
+    }
+    ImGui::TextUnformatted(prompt);
+    ImGui::SetNextItemWidth(480.0f);
+    if (ImGui::IsWindowAppearing())
+    {
+        ImGui::SetKeyboardFocusHere();
+    }
+    const bool enter = ImGui::InputText("##path", buffer, size, ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool confirmed = ImGui::Button(action) || enter;
+    ImGui::SameLine();
+    if (confirmed || ImGui::Button("Cancel"))
+    {
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+    return confirmed;
+}
+
 void HelpMarker(const char* text)
 {
     ImGui::SameLine();
@@ -985,51 +1010,13 @@ void App::Popups()
         ImGui::OpenPopup("Unsaved changes");
     }
     const ImVec2 center = ImGui::GetMainViewport()->GetCenter();
-    ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal("Open scene", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    if (PathPopup("Open scene", "Scene file (JSON):", "Open", pathBuffer_, sizeof(pathBuffer_)))
     {
-        ImGui::TextUnformatted("Scene file (JSON):");
-        ImGui::SetNextItemWidth(480.0f);
-        if (ImGui::IsWindowAppearing())
-        {
-            ImGui::SetKeyboardFocusHere();
-        }
-        const bool enter =
-            ImGui::InputText("##path", pathBuffer_, sizeof(pathBuffer_), ImGuiInputTextFlags_EnterReturnsTrue);
-        if (ImGui::Button("Open") || enter)
-        {
-            Open(pathBuffer_);
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel"))
-        {
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::EndPopup();
+        Open(pathBuffer_);
     }
-    ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal("Save scene as", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    if (PathPopup("Save scene as", "Save to (JSON):", "Save", pathBuffer_, sizeof(pathBuffer_)))
     {
-        ImGui::TextUnformatted("Save to (JSON):");
-        ImGui::SetNextItemWidth(480.0f);
-        if (ImGui::IsWindowAppearing())
-        {
-            ImGui::SetKeyboardFocusHere();
-        }
-        const bool enter =
-            ImGui::InputText("##path", pathBuffer_, sizeof(pathBuffer_), ImGuiInputTextFlags_EnterReturnsTrue);
-        if (ImGui::Button("Save") || enter)
-        {
-            Save(pathBuffer_);
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel"))
-        {
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::EndPopup();
+        Save(pathBuffer_);
     }
     ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
