@@ -154,7 +154,8 @@ TEST_CASE("Parallel edges: aligned boxes test 2 axes, rotated boxes 4", "[cases]
     const Polygon a = Box(1.0, 1.0);
     const Polygon b = Box(0.5, 0.5);
     Trace trace;
-    CHECK(Overlap(a, At(0, 0), b, At(1.2, 0.3), &trace));
+    // Collide: Overlap would stop after A's faces, as a corner of B lies inside A.
+    CHECK(Collide(a, At(0, 0), b, At(1.2, 0.3), &trace).overlap);
     // Four faces of A (two axes, each tested from both sides), all four faces of B skipped as duplicates.
     CHECK(trace.axes.size() == 8);
     CHECK(TestedAxes(trace) == 4);
@@ -165,7 +166,7 @@ TEST_CASE("Parallel edges: aligned boxes test 2 axes, rotated boxes 4", "[cases]
         CHECK(trace.axes[trace.axes[i].duplicateOf].direction == -trace.axes[i].direction);
     }
 
-    CHECK(Overlap(a, At(0, 0), b, At(1.2, 0.3, 0.25), &trace));
+    CHECK(Collide(a, At(0, 0), b, At(1.2, 0.3, 0.25), &trace).overlap);
     CHECK(TestedAxes(trace) == 8); // four axes, each from both sides
     CHECK(trace.axes.size() == 8);
 

@@ -100,3 +100,70 @@ TEST_CASE("Trace invariants hold on random pairs", "[trace][properties]")
         }
     }
 }
+
+TEST_CASE("Overlap stops when a vertex of B lies inside A, and only then skips B's faces", "[trace][properties]")
+{
+    Rng rng(2024);
+    Trace trace;
+    int shortcuts = 0;
+    int overlapping = 0;
+    for (int i = 0; i < 20000; ++i)
+    {
+        const int n = rng.Int(3, 20);
+        const RandomPair pair = ContactPair(rng, n, static_cast<PairCategory>(rng.Int(0, 2)));
+        const Polygon& a = pair.a.polygon;
+        const Polygon& b = pair.b.polygon;
+        const bool overlap = Overlap(a, pair.xfA, b, pair.xfB, &trace);
+        INFO("pair " << i << ", " << n << " vertices");
+        REQUIRE(overlap == Collide(a, pair.xfA, b, pair.xfB).overlap);
+        // How far inside A each vertex of B lies (largest signed distance to A's face lines, in long double).
+        auto depthOutside = [&](int j) {
+            const Vec2 w = TransformPoint(pair.xfB, b.vertices[j]);
+            long double worst = -1e300L;
+            for (int k = 0; k < a.Count(); ++k)
+            {
+                const Vec2 v1 = TransformPoint(pair.xfA, a.vertices[k]);
+                const Vec2 v2 = TransformPoint(pair.xfA, a.vertices[(k + 1) % a.Count()]);
+                const long double ex = static_cast<long double>(v2.x) - v1.x;
+                const long double ey = static_cast<long double>(v2.y) - v1.y;
+                const long double cross =
+                    ex * (static_cast<long double>(w.y) - v1.y) - ey * (static_cast<long double>(w.x) - v1.x);
+                worst = std::max(worst, -cross / std::sqrt(ex * ex + ey * ey));
+            }
+            return worst;
+        };
+        if (!overlap)
+        {
+            REQUIRE(trace.exit == TraceExit::SeparatingAxis);
+            continue;
+        }
+        ++overlapping;
+        if (trace.exit == TraceExit::VertexInside)
+        {
+            ++shortcuts;
+            REQUIRE(trace.containedShape == 1);
+            REQUIRE(trace.containedVertex >= 0);
+            REQUIRE(trace.containedVertex < b.Count());
+            REQUIRE(depthOutside(trace.containedVertex) <= 1e-12L);
+            // Only A's faces were tested, none separating.
+            REQUIRE(trace.axes.size() == static_cast<size_t>(a.Count()));
+            for (const AxisTest& t : trace.axes)
+            {
+                REQUIRE(t.axis.shape == 0);
+                REQUIRE_FALSE(t.separating);
+            }
+        }
+        else
+        {
+            // The shortcut is not missed: no vertex of B lies clearly inside A (a scanned B: all of its vertices
+            // are candidates; a walked one offers a single candidate).
+            REQUIRE(trace.exit == TraceExit::AllAxesOverlap);
+            for (int j = 0; n <= 16 && j < b.Count(); ++j)
+            {
+                REQUIRE(depthOutside(j) > -1e-12L);
+            }
+        }
+    }
+    // Most overlapping contact pairs have a corner of B inside A.
+    CHECK(shortcuts > overlapping / 2);
+}

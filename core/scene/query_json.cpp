@@ -30,6 +30,8 @@ const char* ExitName(TraceExit exit)
         return "separating-axis";
     case TraceExit::AllAxesOverlap:
         return "all-axes-overlap";
+    case TraceExit::VertexInside:
+        return "vertex-inside";
     case TraceExit::None:
         break;
     }

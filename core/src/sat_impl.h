@@ -121,6 +121,27 @@ S MinProjection(const S* x, const S* y, int count, S nx, S ny)
     return low;
 }
 
+/// One face of a scan over N padded entries (N a multiple of 4, known at compile time so the loop unrolls): the
+/// separation min_j (nx x[j] + ny y[j]) - offset. With kInside it also keeps, per entry, the largest separation
+/// over the faces scanned so far: inside[j] = max(inside[j], nx x[j] + ny y[j] - offset). An entry whose largest
+/// separation over all faces is <= 0 lies inside the polygon. Rounding is monotonic, so subtracting the offset
+/// before or after taking the minimum gives the same separation to the bit.
+template <int N, bool kInside, typename S>
+S ScanFace(const S* x, const S* y, S nx, S ny, S offset, S* inside)
+{
+    S low = std::numeric_limits<S>::infinity();
+    for (int j = 0; j < N; ++j)
+    {
+        const S p = nx * x[j] + ny * y[j];
+        if constexpr (kInside)
+        {
+            inside[j] = std::max(inside[j], p - offset);
+        }
+        low = std::min(low, p);
+    }
+    return low - offset;
+}
+
 #if defined(__SSE2__)
 /// MinProjection with SSE2, two lanes: the same multiplications and additions as the scalar version, without
 /// contraction, and a minimum is exact, so the result is the same to the bit.
@@ -148,6 +169,47 @@ inline float MinProjection(const float* x, const float* y, int count, float nx, 
     }
     low = _mm_min_ps(low, _mm_movehl_ps(low, low));
     return _mm_cvtss_f32(_mm_min_ss(low, _mm_shuffle_ps(low, low, 1)));
+}
+
+/// ScanFace with SSE2, two lanes.
+template <int N, bool kInside>
+double ScanFace(const double* x, const double* y, double nx, double ny, double offset, double* inside)
+{
+    const __m128d vx = _mm_set1_pd(nx);
+    const __m128d vy = _mm_set1_pd(ny);
+    const __m128d off = _mm_set1_pd(offset);
+    __m128d low = _mm_set1_pd(std::numeric_limits<double>::infinity());
+    for (int j = 0; j < N; j += 2)
+    {
+        const __m128d p = _mm_add_pd(_mm_mul_pd(vx, _mm_load_pd(x + j)), _mm_mul_pd(vy, _mm_load_pd(y + j)));
+        if constexpr (kInside)
+        {
+            _mm_store_pd(inside + j, _mm_max_pd(_mm_load_pd(inside + j), _mm_sub_pd(p, off)));
+        }
+        low = _mm_min_pd(low, p);
+    }
+    return _mm_cvtsd_f64(_mm_min_sd(low, _mm_unpackhi_pd(low, low))) - offset;
+}
+
+/// ScanFace with SSE2, four lanes.
+template <int N, bool kInside>
+float ScanFace(const float* x, const float* y, float nx, float ny, float offset, float* inside)
+{
+    const __m128 vx = _mm_set1_ps(nx);
+    const __m128 vy = _mm_set1_ps(ny);
+    const __m128 off = _mm_set1_ps(offset);
+    __m128 low = _mm_set1_ps(std::numeric_limits<float>::infinity());
+    for (int j = 0; j < N; j += 4)
+    {
+        const __m128 p = _mm_add_ps(_mm_mul_ps(vx, _mm_load_ps(x + j)), _mm_mul_ps(vy, _mm_load_ps(y + j)));
+        if constexpr (kInside)
+        {
+            _mm_store_ps(inside + j, _mm_max_ps(_mm_load_ps(inside + j), _mm_sub_ps(p, off)));
+        }
+        low = _mm_min_ps(low, p);
+    }
+    low = _mm_min_ps(low, _mm_movehl_ps(low, low));
+    return _mm_cvtss_f32(_mm_min_ss(low, _mm_shuffle_ps(low, low, 1))) - offset;
 }
 #endif
 
@@ -287,30 +349,34 @@ uint64_t AntiParallelFaces(const PolygonT<S>& a, const PolygonT<S>& b, const Rot
 ///      perpendicular to the direction).
 /// kUnit selects unit normals (Collide: separations are distances, the best face is tracked) or raw edge normals
 /// (Overlap: only the sign matters, so no square root or division is needed).
-template <bool kUnit, typename S, typename Tracer>
-FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, S floor,
-                        Tracer& tracer)
+/// N is inc's padded vertex count when it is scanned (a multiple of 4), 0 when it is walked; QueryFaces picks it.
+/// kInside (scan only) also finds the vertices of inc that lie inside ref (ScanFace), in `inside`.
+template <bool kUnit, bool kInside, int N, typename S, typename Tracer>
+FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, S floor,
+                         Tracer& tracer, S* inside)
 {
     // A walked (large) incident polygon starts at the face towards its centroid, which saves walking round the
     // outline for separated pairs; a scanned one at face 0, as each face there costs less than that search.
-    const int start = inc.scan ? 0 : FaceTowards(ref, inc.centroid);
+    static_assert(N % 4 == 0 && N <= IncidentPolygon<S>::kCapacity, "scan of a padded count");
+    constexpr bool kScan = N > 0;
+    const int start = kScan ? 0 : FaceTowards(ref, inc.centroid);
     FaceQuery<S> query;
     // The best face so far starts as the first one tested, so that it is a valid index even when no comparison
     // holds (NaN input).
     query.face = start;
     const int n = ref.Count();
-    const uint64_t skip = Tracer::kSkipParallel && second && inc.scan
+    const uint64_t skip = Tracer::kSkipParallel && kScan && second
                               ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
                               : uint64_t(0);
     int support = 0;
-    int i = start;
-    for (int k = 0; k < n; ++k, i = Next(i, n))
+    for (int k = 0; k < n; ++k)
     {
+        const int i = kScan ? k : (start + k < n ? start + k : start + k - n);
         const Vec2T<S> normal = kUnit ? ref.normals[i] : RightPerp(ref.edges[i]);
         S separation;
-        if (inc.scan)
+        if constexpr (kScan)
         {
-            if (i < 64 && ((skip >> i) & 1u))
+            if (skip != 0 && i < 64 && ((skip >> i) & 1u))
             {
                 if constexpr (Tracer::kEnabled)
                 {
@@ -321,16 +387,19 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
             // Back-face pruning: inc's centroid lies inside inc, so its separation bounds the face's from above.
             // A face whose bound cannot beat the floor (Overlap: 0; Collide: the best face so far, which only a
             // strictly larger separation replaces) changes nothing and is not scanned.
-            const S bound = Dot(normal, inc.centroid - ref.vertices[i]);
-            if (Tracer::kPrune && bound <= std::max(floor, query.separation))
+            if constexpr (Tracer::kPrune)
             {
-                if constexpr (Tracer::kEnabled)
+                const S bound = Dot(normal, inc.centroid - ref.vertices[i]);
+                if (bound <= std::max(floor, query.separation))
                 {
-                    tracer.PrunedFace(side, i, normal, bound, inc.Support(normal));
+                    if constexpr (Tracer::kEnabled)
+                    {
+                        tracer.PrunedFace(side, i, normal, bound, inc.Support(normal));
+                    }
+                    continue;
                 }
-                continue;
             }
-            separation = inc.Separation(normal, ref.vertices[i]);
+            separation = ScanFace<N, kInside>(inc.x, inc.y, normal.x, normal.y, Dot(normal, ref.vertices[i]), inside);
         }
         else
         {
@@ -347,9 +416,10 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
             separation = inc.Separation(normal, ref.vertices[i], support);
         }
         const bool separating = separation > S(0);
-        if constexpr (kUnit)
+        if constexpr (kUnit || (kInside && !kScan))
         {
-            // Only Collide needs the best face; selecting without a branch keeps the loop free of mispredictions.
+            // Collide needs the best face, and a walked Overlap its support as the candidate inside vertex;
+            // selecting without a branch keeps the loop free of mispredictions.
             const bool better = separation > query.separation;
             query.face = Select(better, i, query.face);
             query.support = Select(better, support, query.support);
@@ -357,7 +427,7 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
         }
         if constexpr (Tracer::kEnabled)
         {
-            tracer.FaceAxis(side, i, normal, separation, inc.scan ? inc.Support(normal) : support, separating);
+            tracer.FaceAxis(side, i, normal, separation, kScan ? inc.Support(normal) : support, separating);
         }
         if (separating)
         {
@@ -377,18 +447,95 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
     return query;
 }
 
+/// The face query with inc's scan unrolled for its padded vertex count (QueryFacesN). `inside`, with kInside and
+/// a scanned inc, receives for each of inc's vertices its largest separation from ref's faces (filled with
+/// -infinity by the caller); it is not touched otherwise. With kInside and a walked inc, the query keeps the face
+/// of largest separation and its support (the vertex of inc most likely inside ref).
+template <bool kUnit, bool kInside = false, typename S, typename Tracer>
+FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, S floor,
+                        Tracer& tracer, S* inside = nullptr)
+{
+    static_assert(kScanLimit <= 16, "QueryFaces unrolls scans of up to 16 vertices");
+    switch (inc.scan ? inc.padded : 0)
+    {
+    case 4:
+        return QueryFacesN<kUnit, kInside, 4>(ref, inc, side, second, floor, tracer, inside);
+    case 8:
+        return QueryFacesN<kUnit, kInside, 8>(ref, inc, side, second, floor, tracer, inside);
+    case 12:
+        return QueryFacesN<kUnit, kInside, 12>(ref, inc, side, second, floor, tracer, inside);
+    case 16:
+        return QueryFacesN<kUnit, kInside, 16>(ref, inc, side, second, floor, tracer, inside);
+    default:
+        return QueryFacesN<kUnit, kInside, 0>(ref, inc, side, second, floor, tracer, inside);
+    }
+}
+
 // ---------------------------------------------------------------------------------------------------------------
 // Polygon against polygon
 // ---------------------------------------------------------------------------------------------------------------
 
-/// Overlap of two polygons: the face query of A, then of B, each stopping at the first separating face.
+/// Overlap of two polygons (Ericson 5.2.1; Gregorius).
+/// Outline:
+///   1. Face query of A's faces against B mapped into A's frame, stopping at the first separating face.
+///   2. A scanned B (kScanLimit vertices or fewer) also yields, per vertex of B, its largest separation from A's
+///      faces, from the same projections. A vertex of B whose largest separation is <= 0 lies inside A: the
+///      polygons share a point, so they overlap, and B's faces need no test. This is the usual way out for an
+///      overlapping pair (a corner of B pushed into A) and halves its cost. A walked B offers one candidate, the
+///      support point of A's face closest to separating, tested against A's faces in O(n).
+///   3. Otherwise the face query of B's faces against A, stopping at the first separating face; no separating face
+///      on either polygon means overlap.
 template <typename S, typename Tracer>
 bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b, const TransformT<S>& xfB,
                      Tracer& tracer)
 {
     const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
     const IncidentPolygon<S> incB(b, bInA, Tracer::kScanLimit);
-    bool overlap = !QueryFaces<false>(a, incB, 0, false, S(0), tracer).separated;
+    // Pruned faces would leave gaps in the vertices' largest separations, so pruning turns the shortcut off.
+    constexpr bool kInside = !Tracer::kPrune;
+    alignas(16) S inside[IncidentPolygon<S>::kCapacity];
+    if constexpr (kInside)
+    {
+        std::fill(inside, inside + incB.padded, -std::numeric_limits<S>::infinity());
+    }
+    const FaceQuery<S> queryA = QueryFaces<false, kInside>(a, incB, 0, false, S(0), tracer, inside);
+    bool overlap = !queryA.separated;
+    if (kInside && overlap)
+    {
+        int contained = -1;
+        if (incB.scan)
+        {
+            for (int j = b.Count() - 1; j >= 0; --j)
+            {
+                contained = Select(inside[j] <= S(0), j, contained);
+            }
+        }
+        else if (queryA.support >= 0)
+        {
+            // Walked: one candidate, the support point of the face closest to separating, tested on every face.
+            const Vec2T<S> w = TransformPoint(bInA, b.vertices[queryA.support]);
+            contained = queryA.support;
+            for (int i = 0; i < a.Count(); ++i)
+            {
+                if (Dot(RightPerp(a.edges[i]), w - a.vertices[i]) > S(0))
+                {
+                    contained = -1;
+                    break;
+                }
+            }
+        }
+        if (contained >= 0)
+        {
+            if constexpr (Tracer::kEnabled)
+            {
+                ManifoldT<S> result;
+                result.overlap = true;
+                tracer.ContainedVertex(1, contained);
+                tracer.Finish(TraceExit::VertexInside, result);
+            }
+            return true;
+        }
+    }
     if (overlap || !Tracer::kEarlyExit)
     {
         const TransformT<S> aInB = InvMulTransforms(xfB, xfA);

@@ -148,30 +148,93 @@ SweepResultT<S> Initial(const ManifoldT<S>& manifold)
     return result;
 }
 
-// Separation of each face of `ref` against `inc` at t = 0, face by face: scanned, or walked for large polygons.
+// What the face loops of a polygon sweep carry from axis to axis.
 template <typename S>
-class FaceSeparations
+struct SweepState
 {
-  public:
-    FaceSeparations(const PolygonT<S>& ref, const IncidentPolygon<S>& inc) : m_ref(ref), m_inc(inc) {}
-
-    S operator()(int i)
-    {
-        const Vec2T<S> normal = m_ref.normals[i];
-        if (m_inc.scan)
-        {
-            return m_inc.Separation(normal, m_ref.vertices[i]);
-        }
-        const Vec2T<S> d = InvRotate(m_inc.xf.q, -normal);
-        m_support = i == 0 ? ClimbToSupport(m_inc.polygon, d) : WalkToSupport(m_inc.polygon, d, m_support);
-        return m_inc.Separation(normal, m_ref.vertices[i], m_support);
-    }
-
-  private:
-    const PolygonT<S>& m_ref;
-    const IncidentPolygon<S>& m_inc;
-    int m_support = 0;
+    S first = S(0);        // latest entry so far
+    S last = kInfinity<S>; // earliest exit so far
+    int firstSide = 0;     // the axis of the latest entry: its polygon
+    int firstFace = 0;     // and its face
+    bool inside = true;    // every separation so far is < 0
+    SweepExit exit = SweepExit::AllAxesOverlap;
 };
+
+// The faces of `ref` (side 0 = A, 1 = B) against `inc` mapped into ref's frame; `velocity` is B's motion relative
+// to A in ref's frame, times -1 when ref is B (it is then A that moves towards ref). False when an axis ends the
+// test with a miss. N is inc's padded vertex count when scanned, 0 when walked (as in QueryFacesN).
+//   Per face: separation s at t = 0 (as in the static face query, but with unit normals) and its rate
+//   r = Dot(n, velocity). With q = s / -r: s >= 0 enters at q (r < 0) or never (r >= 0: the test ends); s < 0
+//   is overlapping from t = 0 and, when r > 0, exits at q. The bookkeeping is branch-free, as the signs of s and
+//   r follow the geometry and would be mispredicted; only the rare end of the test branches.
+template <int N, typename S, typename Tracer>
+bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
+                SweepState<S>& state, Tracer& tracer)
+{
+    constexpr bool kScan = N > 0;
+    int support = 0;
+    for (int i = 0; i < ref.Count(); ++i)
+    {
+        const Vec2T<S> normal = ref.normals[i];
+        S separation;
+        if constexpr (kScan)
+        {
+            separation = ScanFace<N, false>(inc.x, inc.y, normal.x, normal.y, Dot(normal, ref.vertices[i]), nullptr);
+        }
+        else
+        {
+            const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
+            support = i == 0 ? ClimbToSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
+            separation = inc.Separation(normal, ref.vertices[i], support);
+        }
+        const S rate = Dot(normal, velocity);
+        const bool apart = separation >= S(0);
+        const S q = separation / -rate;
+        const S entry = apart ? q : S(0);
+        const S leave = !apart && rate > S(0) ? q : kInfinity<S>;
+        const bool never = apart && rate >= S(0);
+        // A NaN separation does not count as apart, and a NaN entry does not replace the latest one.
+        state.inside = state.inside && !apart;
+        const bool later = entry > state.first;
+        state.firstSide = Select(later, side, state.firstSide);
+        state.firstFace = Select(later, i, state.firstFace);
+        state.first = later ? entry : state.first;
+        state.last = std::min(state.last, leave);
+        const bool ends = never || state.first > S(1) || state.first >= state.last;
+        if constexpr (Tracer::kEnabled)
+        {
+            tracer.Axis(side, i, separation, rate, never ? S(0) : entry, never ? kInfinity<S> : leave, ends);
+        }
+        if (ends)
+        {
+            state.exit = never                ? SweepExit::NeverCloses
+                         : state.first > S(1) ? SweepExit::EntryAfterStep
+                                              : SweepExit::EntryAfterExit;
+            return false;
+        }
+    }
+    return true;
+}
+
+// SweepFaces with inc's scan unrolled for its padded vertex count.
+template <typename S, typename Tracer>
+bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
+                SweepState<S>& state, Tracer& tracer)
+{
+    switch (inc.scan ? inc.padded : 0)
+    {
+    case 4:
+        return SweepFaces<4>(ref, inc, side, velocity, state, tracer);
+    case 8:
+        return SweepFaces<8>(ref, inc, side, velocity, state, tracer);
+    case 12:
+        return SweepFaces<12>(ref, inc, side, velocity, state, tracer);
+    case 16:
+        return SweepFaces<16>(ref, inc, side, velocity, state, tracer);
+    default:
+        return SweepFaces<0>(ref, inc, side, velocity, state, tracer);
+    }
+}
 
 /// Swept SAT for two translating polygons (Ericson 5.5.2).
 /// Outline:
@@ -193,76 +256,29 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     const Vec2T<S> velocityInA = InvRotate(xfA.q, velocity);
     const Vec2T<S> velocityInB = InvRotate(xfB.q, velocity);
 
-    S first = S(0);
-    S last = kInfinity<S>;
-    AxisRef firstAxis{AxisKind::FaceNormal, 0, 0};
-    bool inside = true;
-    SweepExit exit = SweepExit::AllAxesOverlap;
-    // Takes one axis; false when it ends the test with a miss.
-    auto take = [&](int side, int face, S separation, S rate) {
-        S entry;
-        S leave;
-        inside = inside && !(separation >= S(0)); // a NaN separation does not count as apart
-        bool ends = !AxisTimes(separation, rate, entry, leave);
-        if (ends)
-        {
-            exit = SweepExit::NeverCloses;
-        }
-        else
-        {
-            if (entry > first)
-            {
-                first = entry;
-                firstAxis = {AxisKind::FaceNormal, side, face};
-            }
-            last = std::min(last, leave);
-            if (first > S(1))
-            {
-                exit = SweepExit::EntryAfterStep;
-                ends = true;
-            }
-            else if (first >= last)
-            {
-                exit = SweepExit::EntryAfterExit;
-                ends = true;
-            }
-        }
-        if constexpr (Tracer::kEnabled)
-        {
-            tracer.Axis(side, face, separation, rate, entry, leave, ends);
-        }
-        return !ends;
-    };
-
-    bool going = true;
-    FaceSeparations<S> separationA(a, incB);
-    for (int i = 0; going && i < a.Count(); ++i)
-    {
-        going = take(0, i, separationA(i), Dot(a.normals[i], velocityInA));
-    }
+    SweepState<S> state;
+    bool going = SweepFaces(a, incB, 0, velocityInA, state, tracer);
     if (going)
     {
         // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
         const IncidentPolygon<S> incA(a, InvMulTransforms(xfB, xfA));
-        FaceSeparations<S> separationB(b, incA);
-        for (int j = 0; going && j < b.Count(); ++j)
-        {
-            going = take(1, j, separationB(j), -Dot(b.normals[j], velocityInB));
-        }
+        going = SweepFaces(b, incA, 1, -velocityInB, state, tracer);
     }
     if constexpr (Tracer::kEnabled)
     {
-        tracer.Finish(exit);
+        tracer.Finish(state.exit);
     }
     if (!going)
     {
         return {};
     }
-    if (inside)
+    if (state.inside)
     {
         return Initial(Collide(a, xfA, b, xfB));
     }
 
+    const S first = state.first;
+    const AxisRef firstAxis{AxisKind::FaceNormal, state.firstSide, state.firstFace};
     SweepResultT<S> result;
     result.status = SweepStatus::Hit;
     result.toi = first;

@@ -159,6 +159,13 @@ class TraceRecorder : public AlgorithmChoices
         Push(test);
     }
 
+    /// Vertex `vertex` of polygon `side` lies inside the other polygon (Overlap's shortcut).
+    void ContainedVertex(int side, int vertex)
+    {
+        m_trace.containedShape = side;
+        m_trace.containedVertex = vertex;
+    }
+
     /// The contact clipping, already in world space.
     void Clip(const ClipTraceT<S>& clip)
     {

@@ -70,6 +70,9 @@ enum class TraceExit
     None,           ///< nothing recorded yet
     SeparatingAxis, ///< an axis separated the shapes (the last entry of axes)
     AllAxesOverlap, ///< every axis overlapped: the shapes intersect
+    /// Overlap only: a vertex of one polygon lies inside the other (containedShape, containedVertex), so the shapes
+    /// intersect and the remaining axes were not tested.
+    VertexInside,
 };
 
 /// The complete record of one query: every axis in the order tested, the contact clipping, and the result.
@@ -81,6 +84,8 @@ struct TraceT
     bool hasClip = false;             ///< clip is filled (overlapping polygon pairs)
     ClipTraceT<S> clip{};             ///< contact clipping
     TraceExit exit = TraceExit::None; ///< why the test ended
+    int containedShape = -1;          ///< with VertexInside: the polygon (0 = A, 1 = B) whose vertex lies inside
+    int containedVertex = -1;         ///< with VertexInside: that vertex
     ManifoldT<S> result{};            ///< the query's result (for Overlap: only `overlap` is set)
     /// Empties the trace for reuse.
     void Clear() { *this = TraceT<S>(); }
