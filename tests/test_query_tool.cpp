@@ -9,9 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
+#include <unistd.h>
 
 using namespace satviz;
 
@@ -35,6 +37,30 @@ std::vector<std::string> Lines(const std::string& path)
     }
     return lines;
 }
+
+/// The files these tests write live in a directory of their own, removed at exit, never in the directory the tests
+/// were started from.
+struct ScratchDirectory
+{
+    std::filesystem::path start = std::filesystem::current_path();
+    std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("satviz-query-test-" + std::to_string(::getpid()));
+
+    ScratchDirectory()
+    {
+        std::filesystem::create_directories(dir);
+        std::filesystem::current_path(dir);
+    }
+
+    ~ScratchDirectory()
+    {
+        std::error_code ignored;
+        std::filesystem::current_path(start, ignored);
+        std::filesystem::remove_all(dir, ignored);
+    }
+};
+
+const ScratchDirectory kScratch;
 
 Run Query(const std::string& arguments)
 {
