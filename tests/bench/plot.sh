@@ -12,12 +12,22 @@ trap 'rm -rf "$work"' EXIT
 queries=()
 while IFS= read -r query; do queries+=("$query"); done < <(tail -n +2 "$csv/timing.csv" | cut -d, -f1 | sort -u |
   grep -v -E "traced|float|Sweep|TOI|b2TimeOfImpact|;")
+# A colour of its own for every query, and a dash pattern per library: solid satviz, dashed Box2D, dotted
+# Chipmunk, dash-dot textbook.
+palette=(e41a1c 377eb8 4daf4a 984ea3 ff7f00 a65628 f781bf 17becf 999999 000000 bcbd22 1f3a93)
 plots=""
 i=0
 for query in "${queries[@]}"; do
   i=$((i + 1))
   grep -F "$query," "$csv/timing.csv" | awk -F, -v q="$query" '$1 == q { print $2, $3 }' | sort -n > "$work/q$i.dat"
-  plots+="'$work/q$i.dat' using 1:2 with linespoints lw 2 pt 7 title '$query', "
+  case "$query" in
+    box2d*) dash=2 ;;
+    chipmunk*) dash=3 ;;
+    textbook*) dash=4 ;;
+    *) dash=1 ;;
+  esac
+  colour=${palette[$(((i - 1) % ${#palette[@]}))]}
+  plots+="'$work/q$i.dat' using 1:2 with linespoints lw 2 dt $dash pt 7 lc rgb '#$colour' title '$query', "
 done
 gnuplot << GNUPLOT
 set terminal pngcairo size 900,600 font "DejaVu Sans,11"
@@ -40,10 +50,11 @@ while IFS=, read -r query pairs wrong fp fn median worst ns8; do
   awk -v n="$ns8" 'BEGIN { exit !(n > 0) }' || continue
   j=$((j + 1))
   echo "$ns8 $([ "$wrong" = 0 ] && echo 0.5 || echo "$wrong")" > "$work/w$j.dat"
-  wrongs+="'$work/w$j.dat' using 1:2 with points pt $((4 + j % 8)) lc $j ps 2 lw 2 title '$query', "
+  colour=${palette[$(((j - 1) % ${#palette[@]}))]}
+  wrongs+="'$work/w$j.dat' using 1:2 with points pt $((4 + j % 8)) lc rgb '#$colour' ps 2 lw 2 title '$query', "
   if [ -n "$worst" ]; then
     echo "$ns8 $worst" > "$work/e$j.dat"
-    errors+="'$work/e$j.dat' using 1:2 with points pt $((4 + j % 8)) lc $j ps 2 lw 2 title '$query', "
+    errors+="'$work/e$j.dat' using 1:2 with points pt $((4 + j % 8)) lc rgb '#$colour' ps 2 lw 2 title '$query', "
   fi
 done < "$csv/accuracy.csv"
 gnuplot << GNUPLOT
