@@ -58,12 +58,13 @@ while IFS=, read -r query pairs wrong fp fn median worst ns8; do
   fi
 done < "$csv/accuracy.csv"
 gnuplot << GNUPLOT
-set terminal pngcairo size 1200,520 font "DejaVu Sans,11"
+set terminal pngcairo size 1200,640 font "DejaVu Sans,11"
 set output "$out/time-vs-error.png"
 set multiplot layout 1,2 title "Run time (8-gons) against error, against a quadruple-precision reference"
 set logscale xy
 set grid
-set key outside right top vertical font ",9"
+set key outside center bottom horizontal maxcols 3 font ",9"
+set xrange [10:1000]
 set xlabel "ns per query, n = 8"
 set ylabel "worst |depth error| or |t error|"
 set format y "10^{%L}"
