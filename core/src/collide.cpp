@@ -24,6 +24,16 @@ detail::ShapeRef<S> Ref(const CircleT<S>& circle)
     return {nullptr, &circle};
 }
 
+// Runs `query` with a recorder filling `trace`. Kept out of line and cold, so that the untraced path of the
+// caller carries neither the recorder's stack frame nor its code.
+template <typename S, typename A, typename B, typename Query>
+[[gnu::noinline, gnu::cold]] auto Traced(TraceT<S>& trace, const A& a, const TransformT<S>& xfA, const B& b,
+                                         const TransformT<S>& xfB, Query& query)
+{
+    detail::TraceRecorder<S> tracer(trace, Ref(a), xfA, Ref(b), xfB);
+    return query(tracer);
+}
+
 // Runs `query(tracer)` with the null tracer, or with a recorder filling `trace` when it is non-null.
 template <typename S, typename A, typename B, typename Query>
 auto WithTracer(TraceT<S>* trace, const A& a, const TransformT<S>& xfA, const B& b, const TransformT<S>& xfB,
@@ -34,8 +44,7 @@ auto WithTracer(TraceT<S>* trace, const A& a, const TransformT<S>& xfA, const B&
         detail::NullTracer tracer;
         return query(tracer);
     }
-    detail::TraceRecorder<S> tracer(*trace, Ref(a), xfA, Ref(b), xfB);
-    return query(tracer);
+    return Traced(*trace, a, xfA, b, xfB, query);
 }
 
 // Calls query(shapeA, shapeB) with the polygon or circle each shape holds.
