@@ -61,7 +61,6 @@ extern "C" void cpMessage(const char* condition, const char* file, int line, int
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -316,13 +315,13 @@ struct Query
     std::string name;
     bool box2d = false; // needs n <= 8
     bool sweep = false; // runs on the pairs that start apart (a time of impact needs a start)
-    std::function<double(const SatvizRecord&)> satviz;
-    std::function<double(const FloatRecord&)> single;
+    double (*satviz)(const SatvizRecord&) = nullptr;
+    double (*single)(const FloatRecord&) = nullptr;
 #ifdef SATVIZ_HAVE_BOX2D
-    std::function<double(const Box2DRecord&)> box2dRun;
+    double (*box2dRun)(const Box2DRecord&) = nullptr;
 #endif
 #ifdef SATVIZ_HAVE_CHIPMUNK
-    std::function<double(const ChipmunkRecord&)> chipmunkRun;
+    double (*chipmunkRun)(const ChipmunkRecord&) = nullptr;
 #endif
 };
 
@@ -362,20 +361,20 @@ double Median(std::vector<double> values)
     return values[values.size() / 2];
 }
 
-Query SatvizQuery(const std::string& name, bool sweep, std::function<double(const SatvizRecord&)> run)
+Query SatvizQuery(const std::string& name, bool sweep, double (*run)(const SatvizRecord&))
 {
     Query q;
     q.name = name;
     q.sweep = sweep;
-    q.satviz = std::move(run);
+    q.satviz = run;
     return q;
 }
 
-Query FloatQuery(const std::string& name, std::function<double(const FloatRecord&)> run)
+Query FloatQuery(const std::string& name, double (*run)(const FloatRecord&))
 {
     Query q;
     q.name = name;
-    q.single = std::move(run);
+    q.single = run;
     return q;
 }
 
@@ -450,12 +449,12 @@ std::vector<Query> Queries()
             [](const SatvizRecord& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity, &sweepTrace).toi; }),
     };
 #ifdef SATVIZ_HAVE_BOX2D
-    auto box2d = [](const std::string& name, bool sweep, std::function<double(const Box2DRecord&)> run) {
+    auto box2d = [](const std::string& name, bool sweep, double (*run)(const Box2DRecord&)) {
         Query q;
         q.name = name;
         q.box2d = true;
         q.sweep = sweep;
-        q.box2dRun = std::move(run);
+        q.box2dRun = run;
         return q;
     };
     queries.push_back(box2d("box2d b2TestOverlap", false, [](const Box2DRecord& p) {
@@ -477,10 +476,10 @@ std::vector<Query> Queries()
     }));
 #endif
 #ifdef SATVIZ_HAVE_CHIPMUNK
-    auto chipmunk = [](const std::string& name, std::function<double(const ChipmunkRecord&)> run) {
+    auto chipmunk = [](const std::string& name, double (*run)(const ChipmunkRecord&)) {
         Query q;
         q.name = name;
-        q.chipmunkRun = std::move(run);
+        q.chipmunkRun = run;
         return q;
     };
     queries.push_back(chipmunk("chipmunk cpShapesCollide count>0", [](const ChipmunkRecord& r) {
@@ -554,30 +553,37 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
                 slice = (slice + 1) % s.slices;
                 double sink = 0.0;
                 size_t count = 0;
+                // The query's function pointer is copied into a local before the loop: read from the Query object in
+                // every call, it is a load from a fixed address that the CPU may take as depending on the stack
+                // stores of the query before it (addresses equal modulo 4096), which made the times of one
+                // library swing by up to a factor of two with the stack's position.
                 const auto start = std::chrono::steady_clock::now();
                 if (q.satviz)
                 {
                     const std::vector<SatvizRecord>& records = q.sweep ? data.satvizApart : data.satviz;
+                    const auto run = q.satviz;
                     for (const SatvizRecord& p : records)
                     {
-                        sink += q.satviz(p);
+                        sink += run(p);
                     }
                     count = records.size();
                 }
                 else if (q.single)
                 {
+                    const auto run = q.single;
                     for (const FloatRecord& p : data.single)
                     {
-                        sink += q.single(p);
+                        sink += run(p);
                     }
                     count = data.single.size();
                 }
 #ifdef SATVIZ_HAVE_CHIPMUNK
                 else if (q.chipmunkRun)
                 {
+                    const auto run = q.chipmunkRun;
                     for (size_t i = 0; i < data.chipmunkCount; ++i)
                     {
-                        sink += q.chipmunkRun(data.chipmunk[i]);
+                        sink += run(data.chipmunk[i]);
                     }
                     count = data.chipmunkCount;
                 }
@@ -586,9 +592,10 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
                 else
                 {
                     const std::vector<Box2DRecord>& records = q.sweep ? data.box2dApart : data.box2d;
+                    const auto run = q.box2dRun;
                     for (const Box2DRecord& p : records)
                     {
-                        sink += q.box2dRun(p);
+                        sink += run(p);
                     }
                     count = records.size();
                 }
