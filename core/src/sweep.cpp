@@ -371,6 +371,19 @@ S CastRounded(const PolygonT<S>& polygon, Vec2T<S> p0, Vec2T<S> v, S r, Vec2T<S>
 } // namespace
 } // namespace detail
 
+namespace
+{
+// The untraced polygon sweep as one function: everything it calls is inlined into it, which keeps the fast path's
+// code together.
+template <typename S>
+[[gnu::flatten]] SweepResultT<S> SweepPolygonsUntraced(const PolygonT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
+                                                       const PolygonT<S>& b, const TransformT<S>& xfB, Vec2T<S> vB)
+{
+    detail::NullSweepTracer tracer;
+    return detail::SweepPolygons(a, xfA, vA, b, xfB, vB, tracer);
+}
+} // namespace
+
 template <typename S>
 SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const ShapeT<S>& b,
                       const TransformT<S>& xfB, Vec2T<S> vB, SweepTraceT<S>* trace)
@@ -395,8 +408,7 @@ SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
     {
         if (trace == nullptr)
         {
-            detail::NullSweepTracer tracer;
-            return detail::SweepPolygons(a.polygon, xfA, vA, b.polygon, xfB, vB, tracer);
+            return SweepPolygonsUntraced(a.polygon, xfA, vA, b.polygon, xfB, vB);
         }
         detail::SweepRecorder<S> tracer(*trace, {&a.polygon, nullptr}, xfA, {&b.polygon, nullptr}, xfB, velocity);
         return detail::SweepPolygons(a.polygon, xfA, vA, b.polygon, xfB, vB, tracer);

@@ -75,7 +75,7 @@ struct Settings
 {
     int slices = 4;
     int pairs = 1000;
-    int rounds = 5;
+    int rounds = 9;
     int reps = 7;
     int accuracyPairs = 3000;
     uint64_t seed = 20240601;
@@ -496,6 +496,20 @@ std::vector<Query> Queries()
 }
 
 // ns per query for each query, at one vertex count.
+// Runs `body` with the stack moved down by `shift` bytes. Where the stack lies modulo the 4096-byte page decides
+// which of its addresses the CPU takes as possibly aliasing the data a query reads (Mytkowicz et al., "Producing
+// Wrong Data Without Doing Anything Obviously Wrong!", ASPLOS 2009); on the machine of the committed results it
+// moved some queries' times by up to a factor of two. Each round runs at another shift, so the median over the
+// rounds rests on no single placement, lucky or unlucky, and every library meets the same placements.
+template <typename Body>
+[[gnu::noinline]] void AtStackShift(size_t shift, Body&& body)
+{
+    volatile char* pad = static_cast<volatile char*>(__builtin_alloca(shift + 64));
+    pad[0] = 0;
+    body();
+    pad[shift] = 0;
+}
+
 std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rng)
 {
     const int perSlice = n >= 1024 ? std::max(1, s.pairs / 10) : s.pairs;
@@ -542,80 +556,83 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
     int slice = 0;
     for (int round = 0; round < s.rounds; ++round)
     {
-        for (const Query& q : queries)
-        {
-            if (q.box2d && n > 8)
+        const size_t shift = static_cast<size_t>(round * 4096 / s.rounds) & ~size_t(63);
+        AtStackShift(shift, [&]() {
+            for (const Query& q : queries)
             {
-                continue;
-            }
-            auto pass = [&]() {
-                const Slice& data = slices[static_cast<size_t>(slice)];
-                slice = (slice + 1) % s.slices;
-                double sink = 0.0;
-                size_t count = 0;
-                // The query's function pointer is copied into a local before the loop: read from the Query object in
-                // every call, it is a load from a fixed address that the CPU may take as depending on the stack
-                // stores of the query before it (addresses equal modulo 4096), which made the times of one
-                // library swing by up to a factor of two with the stack's position.
-                const auto start = std::chrono::steady_clock::now();
-                if (q.satviz)
+                if (q.box2d && n > 8)
                 {
-                    const std::vector<SatvizRecord>& records = q.sweep ? data.satvizApart : data.satviz;
-                    const auto run = q.satviz;
-                    for (const SatvizRecord& p : records)
-                    {
-                        sink += run(p);
-                    }
-                    count = records.size();
+                    continue;
                 }
-                else if (q.single)
-                {
-                    const auto run = q.single;
-                    for (const FloatRecord& p : data.single)
+                auto pass = [&]() {
+                    const Slice& data = slices[static_cast<size_t>(slice)];
+                    slice = (slice + 1) % s.slices;
+                    double sink = 0.0;
+                    size_t count = 0;
+                    // The query's function pointer is copied into a local before the loop: read from the Query object
+                    // in every call, it is a load from a fixed address that the CPU may take as depending on the stack
+                    // stores of the query before it (addresses equal modulo 4096), which made the times of one
+                    // library swing by up to a factor of two with the stack's position.
+                    const auto start = std::chrono::steady_clock::now();
+                    if (q.satviz)
                     {
-                        sink += run(p);
+                        const std::vector<SatvizRecord>& records = q.sweep ? data.satvizApart : data.satviz;
+                        const auto run = q.satviz;
+                        for (const SatvizRecord& p : records)
+                        {
+                            sink += run(p);
+                        }
+                        count = records.size();
                     }
-                    count = data.single.size();
-                }
+                    else if (q.single)
+                    {
+                        const auto run = q.single;
+                        for (const FloatRecord& p : data.single)
+                        {
+                            sink += run(p);
+                        }
+                        count = data.single.size();
+                    }
 #ifdef SATVIZ_HAVE_CHIPMUNK
-                else if (q.chipmunkRun)
-                {
-                    const auto run = q.chipmunkRun;
-                    for (size_t i = 0; i < data.chipmunkCount; ++i)
+                    else if (q.chipmunkRun)
                     {
-                        sink += run(data.chipmunk[i]);
+                        const auto run = q.chipmunkRun;
+                        for (size_t i = 0; i < data.chipmunkCount; ++i)
+                        {
+                            sink += run(data.chipmunk[i]);
+                        }
+                        count = data.chipmunkCount;
                     }
-                    count = data.chipmunkCount;
-                }
 #endif
 #ifdef SATVIZ_HAVE_BOX2D
-                else
-                {
-                    const std::vector<Box2DRecord>& records = q.sweep ? data.box2dApart : data.box2d;
-                    const auto run = q.box2dRun;
-                    for (const Box2DRecord& p : records)
+                    else
                     {
-                        sink += run(p);
+                        const std::vector<Box2DRecord>& records = q.sweep ? data.box2dApart : data.box2d;
+                        const auto run = q.box2dRun;
+                        for (const Box2DRecord& p : records)
+                        {
+                            sink += run(p);
+                        }
+                        count = records.size();
                     }
-                    count = records.size();
-                }
 #endif
-                const auto stop = std::chrono::steady_clock::now();
-                g_sink = g_sink + sink;
-                return std::chrono::duration<double, std::nano>(stop - start).count() /
-                       static_cast<double>(std::max<size_t>(1, count));
-            };
-            for (int w = 0; w < s.slices; ++w)
-            {
-                pass();
+                    const auto stop = std::chrono::steady_clock::now();
+                    g_sink = g_sink + sink;
+                    return std::chrono::duration<double, std::nano>(stop - start).count() /
+                           static_cast<double>(std::max<size_t>(1, count));
+                };
+                for (int w = 0; w < s.slices; ++w)
+                {
+                    pass();
+                }
+                std::vector<double> passes;
+                for (int r = 0; r < s.reps; ++r)
+                {
+                    passes.push_back(pass());
+                }
+                rounds[q.name].push_back(Median(passes));
             }
-            std::vector<double> passes;
-            for (int r = 0; r < s.reps; ++r)
-            {
-                passes.push_back(pass());
-            }
-            rounds[q.name].push_back(Median(passes));
-        }
+        });
     }
     std::map<std::string, double> out;
     for (auto& [name, values] : rounds)

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// satviz (private): what the public entry points share: choosing the tracer once per call and dispatching shapes.
+#pragma once
+
+#include "tracer.h"
+
+#include <satviz/shape.h>
+#include <satviz/trace.h>
+
+namespace satviz::detail
+{
+
+template <typename S>
+ShapeRef<S> Ref(const PolygonT<S>& polygon)
+{
+    return {&polygon, nullptr};
+}
+
+template <typename S>
+ShapeRef<S> Ref(const CircleT<S>& circle)
+{
+    return {nullptr, &circle};
+}
+
+// Runs `query` with a recorder filling `trace`. Kept out of line and cold, so that the untraced path of the
+// caller carries neither the recorder's stack frame nor its code.
+template <typename S, typename A, typename B, typename Query>
+[[gnu::noinline, gnu::cold]] auto Traced(TraceT<S>& trace, const A& a, const TransformT<S>& xfA, const B& b,
+                                         const TransformT<S>& xfB, Query& query)
+{
+    TraceRecorder<S> tracer(trace, Ref(a), xfA, Ref(b), xfB);
+    return query(tracer);
+}
+
+// Runs `query(tracer)` with the null tracer, or with a recorder filling `trace` when it is non-null.
+template <typename S, typename A, typename B, typename Query>
+auto WithTracer(TraceT<S>* trace, const A& a, const TransformT<S>& xfA, const B& b, const TransformT<S>& xfB,
+                Query&& query)
+{
+    if (trace == nullptr)
+    {
+        NullTracer tracer;
+        return query(tracer);
+    }
+    return Traced(*trace, a, xfA, b, xfB, query);
+}
+
+// Calls query(shapeA, shapeB) with the polygon or circle each shape holds.
+template <typename S, typename Query>
+auto DispatchShapes(const ShapeT<S>& a, const ShapeT<S>& b, Query&& query)
+{
+    const bool polygonA = a.type == ShapeType::Polygon;
+    const bool polygonB = b.type == ShapeType::Polygon;
+    if (polygonA && polygonB)
+    {
+        return query(a.polygon, b.polygon);
+    }
+    if (polygonA)
+    {
+        return query(a.polygon, b.circle);
+    }
+    if (polygonB)
+    {
+        return query(a.circle, b.polygon);
+    }
+    return query(a.circle, b.circle);
+}
+
+} // namespace satviz::detail
