@@ -495,7 +495,6 @@ std::vector<Query> Queries()
     return queries;
 }
 
-// ns per query for each query, at one vertex count.
 // Runs `body` with the stack moved down by `shift` bytes. Where the stack lies modulo the 4096-byte page decides
 // which of its addresses the CPU takes as possibly aliasing the data a query reads (Mytkowicz et al., "Producing
 // Wrong Data Without Doing Anything Obviously Wrong!", ASPLOS 2009); on the machine of the committed results it
@@ -507,9 +506,25 @@ template <typename Body>
     volatile char* pad = static_cast<volatile char*>(__builtin_alloca(shift + 64));
     pad[0] = 0;
     body();
-    pad[shift] = 0;
+    pad[shift] = 0; // the pad is used after the call, so the call cannot become a jump that drops the pad
 }
 
+// One pass of a query over `count` records: the sum of its results. `run` arrives by value, so the loop calls it
+// from a register: read from the Query object in every call, it was a load from a fixed address that the CPU may
+// take as depending on the stack stores of the query before it (addresses equal modulo 4096), which made one
+// library's times swing by up to a factor of two with the stack's position.
+template <typename Record>
+double Stream(const Record* records, size_t count, double (*run)(const Record&))
+{
+    double sink = 0.0;
+    for (size_t i = 0; i < count; ++i)
+    {
+        sink += run(records[i]);
+    }
+    return sink;
+}
+
+// ns per query for each query, at one vertex count.
 std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rng)
 {
     const int perSlice = n >= 1024 ? std::max(1, s.pairs / 10) : s.pairs;
@@ -569,38 +584,22 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
                     slice = (slice + 1) % s.slices;
                     double sink = 0.0;
                     size_t count = 0;
-                    // The query's function pointer is copied into a local before the loop: read from the Query object
-                    // in every call, it is a load from a fixed address that the CPU may take as depending on the stack
-                    // stores of the query before it (addresses equal modulo 4096), which made the times of one
-                    // library swing by up to a factor of two with the stack's position.
                     const auto start = std::chrono::steady_clock::now();
                     if (q.satviz)
                     {
                         const std::vector<SatvizRecord>& records = q.sweep ? data.satvizApart : data.satviz;
-                        const auto run = q.satviz;
-                        for (const SatvizRecord& p : records)
-                        {
-                            sink += run(p);
-                        }
+                        sink = Stream(records.data(), records.size(), q.satviz);
                         count = records.size();
                     }
                     else if (q.single)
                     {
-                        const auto run = q.single;
-                        for (const FloatRecord& p : data.single)
-                        {
-                            sink += run(p);
-                        }
+                        sink = Stream(data.single.data(), data.single.size(), q.single);
                         count = data.single.size();
                     }
 #ifdef SATVIZ_HAVE_CHIPMUNK
                     else if (q.chipmunkRun)
                     {
-                        const auto run = q.chipmunkRun;
-                        for (size_t i = 0; i < data.chipmunkCount; ++i)
-                        {
-                            sink += run(data.chipmunk[i]);
-                        }
+                        sink = Stream(data.chipmunk.get(), data.chipmunkCount, q.chipmunkRun);
                         count = data.chipmunkCount;
                     }
 #endif
@@ -608,11 +607,7 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
                     else
                     {
                         const std::vector<Box2DRecord>& records = q.sweep ? data.box2dApart : data.box2d;
-                        const auto run = q.box2dRun;
-                        for (const Box2DRecord& p : records)
-                        {
-                            sink += run(p);
-                        }
+                        sink = Stream(records.data(), records.size(), q.box2dRun);
                         count = records.size();
                     }
 #endif
