@@ -2,6 +2,7 @@
 // satviz (private): what the public entry points share: choosing the tracer once per call and dispatching shapes.
 #pragma once
 
+#include "sat_impl.h"
 #include "tracer.h"
 
 #include <satviz/shape.h>
@@ -32,13 +33,31 @@ template <typename S, typename A, typename B, typename Query>
     return query(tracer);
 }
 
-// Runs `query(tracer)` with the null tracer, or with a recorder filling `trace` when it is non-null.
+#if SATVIZ_WIDE
+// Runs `query` with the null tracer of the wide scans, compiled for AVX2 as one function: everything it calls is
+// inlined into it, so the whole query is in the instruction set the scans need.
+template <typename Query>
+[[gnu::target("avx2"), gnu::flatten]] auto RunWide(Query& query)
+{
+    WideNullTracer tracer;
+    return query(tracer);
+}
+#endif
+
+// Runs `query(tracer)` with the null tracer (on the wide scans where the processor has them), or with a recorder
+// filling `trace` when it is non-null.
 template <typename S, typename A, typename B, typename Query>
 auto WithTracer(TraceT<S>* trace, const A& a, const TransformT<S>& xfA, const B& b, const TransformT<S>& xfB,
                 Query&& query)
 {
     if (trace == nullptr)
     {
+#if SATVIZ_WIDE
+        if (HasWideVectors())
+        {
+            return RunWide(query);
+        }
+#endif
         NullTracer tracer;
         return query(tracer);
     }

@@ -22,6 +22,15 @@
 #include <emmintrin.h>
 #endif
 
+// Wide scans: 256-bit vectors (AVX2) in code compiled for them with a target attribute, chosen at run time
+// (HasWideVectors), so the library itself keeps the baseline instruction set.
+#if defined(__x86_64__) && defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
+#define SATVIZ_WIDE 1
+#include <immintrin.h>
+#else
+#define SATVIZ_WIDE 0
+#endif
+
 namespace satviz::detail
 {
 
@@ -213,6 +222,136 @@ float ScanFace(const float* x, const float* y, float nx, float ny, float offset,
 }
 #endif
 
+/// Whether the untraced queries take the wide scans: set once from the processor (AVX2). Tests clear it to run
+/// the baseline instructions on any machine; both give the same bits.
+inline bool& WideVectorsEnabled()
+{
+#if SATVIZ_WIDE
+    static bool enabled = (__builtin_cpu_init(), __builtin_cpu_supports("avx2") != 0);
+#else
+    static bool enabled = false;
+#endif
+    return enabled;
+}
+
+#if SATVIZ_WIDE
+/// Whether the untraced queries take the wide scans now.
+inline bool HasWideVectors()
+{
+    return WideVectorsEnabled();
+}
+
+/// MinProjection with AVX2, four lanes of double.
+[[gnu::target("avx2")]] inline double MinProjectionWide(const double* x, const double* y, int count, double nx,
+                                                        double ny)
+{
+    const __m256d vx = _mm256_set1_pd(nx);
+    const __m256d vy = _mm256_set1_pd(ny);
+    __m256d low = _mm256_add_pd(_mm256_mul_pd(vx, _mm256_load_pd(x)), _mm256_mul_pd(vy, _mm256_load_pd(y)));
+    for (int j = 4; j < count; j += 4)
+    {
+        low = _mm256_min_pd(
+            low, _mm256_add_pd(_mm256_mul_pd(vx, _mm256_load_pd(x + j)), _mm256_mul_pd(vy, _mm256_load_pd(y + j))));
+    }
+    __m128d half = _mm_min_pd(_mm256_castpd256_pd128(low), _mm256_extractf128_pd(low, 1));
+    return _mm_cvtsd_f64(_mm_min_sd(half, _mm_unpackhi_pd(half, half)));
+}
+
+/// MinProjection with AVX2, eight lanes of float, then four.
+[[gnu::target("avx2")]] inline float MinProjectionWide(const float* x, const float* y, int count, float nx, float ny)
+{
+    if (count % 8 != 0)
+    {
+        return MinProjection(x, y, count, nx, ny);
+    }
+    const __m256 vx = _mm256_set1_ps(nx);
+    const __m256 vy = _mm256_set1_ps(ny);
+    __m256 low = _mm256_add_ps(_mm256_mul_ps(vx, _mm256_load_ps(x)), _mm256_mul_ps(vy, _mm256_load_ps(y)));
+    for (int j = 8; j < count; j += 8)
+    {
+        low = _mm256_min_ps(
+            low, _mm256_add_ps(_mm256_mul_ps(vx, _mm256_load_ps(x + j)), _mm256_mul_ps(vy, _mm256_load_ps(y + j))));
+    }
+    __m128 half = _mm_min_ps(_mm256_castps256_ps128(low), _mm256_extractf128_ps(low, 1));
+    half = _mm_min_ps(half, _mm_movehl_ps(half, half));
+    return _mm_cvtss_f32(_mm_min_ss(half, _mm_shuffle_ps(half, half, 1)));
+}
+
+/// ScanFace with AVX2, four lanes of double.
+template <int N, bool kInside>
+[[gnu::target("avx2")]] double ScanFaceWide(const double* x, const double* y, double nx, double ny, double offset,
+                                            double* inside)
+{
+    const __m256d vx = _mm256_set1_pd(nx);
+    const __m256d vy = _mm256_set1_pd(ny);
+    const __m256d off = _mm256_set1_pd(offset);
+    __m256d low = _mm256_set1_pd(std::numeric_limits<double>::infinity());
+    for (int j = 0; j < N; j += 4)
+    {
+        const __m256d p =
+            _mm256_add_pd(_mm256_mul_pd(vx, _mm256_load_pd(x + j)), _mm256_mul_pd(vy, _mm256_load_pd(y + j)));
+        if constexpr (kInside)
+        {
+            _mm256_store_pd(inside + j, _mm256_max_pd(_mm256_load_pd(inside + j), _mm256_sub_pd(p, off)));
+        }
+        low = _mm256_min_pd(low, p);
+    }
+    __m128d half = _mm_min_pd(_mm256_castpd256_pd128(low), _mm256_extractf128_pd(low, 1));
+    return _mm_cvtsd_f64(_mm_min_sd(half, _mm_unpackhi_pd(half, half))) - offset;
+}
+
+/// ScanFace with AVX2, eight lanes of float (and four for a remainder of four).
+template <int N, bool kInside>
+[[gnu::target("avx2")]] float ScanFaceWide(const float* x, const float* y, float nx, float ny, float offset,
+                                           float* inside)
+{
+    if constexpr (N % 8 != 0)
+    {
+        return ScanFace<N, kInside>(x, y, nx, ny, offset, inside);
+    }
+    else
+    {
+        const __m256 vx = _mm256_set1_ps(nx);
+        const __m256 vy = _mm256_set1_ps(ny);
+        const __m256 off = _mm256_set1_ps(offset);
+        __m256 low = _mm256_set1_ps(std::numeric_limits<float>::infinity());
+        for (int j = 0; j < N; j += 8)
+        {
+            const __m256 p =
+                _mm256_add_ps(_mm256_mul_ps(vx, _mm256_load_ps(x + j)), _mm256_mul_ps(vy, _mm256_load_ps(y + j)));
+            if constexpr (kInside)
+            {
+                _mm256_store_ps(inside + j, _mm256_max_ps(_mm256_load_ps(inside + j), _mm256_sub_ps(p, off)));
+            }
+            low = _mm256_min_ps(low, p);
+        }
+        __m128 half = _mm_min_ps(_mm256_castps256_ps128(low), _mm256_extractf128_ps(low, 1));
+        half = _mm_min_ps(half, _mm_movehl_ps(half, half));
+        return _mm_cvtss_f32(_mm_min_ss(half, _mm_shuffle_ps(half, half, 1))) - offset;
+    }
+}
+#else
+inline constexpr bool HasWideVectors()
+{
+    return false;
+}
+#endif
+
+/// The separation of one face over a scan of N padded entries (ScanFace), with the wide vectors when kWide. The
+/// smallest projection is the same number whatever the order the lanes combine it in, except for the sign of a
+/// zero; adding +0 makes a zero separation +0, so both kernels give the same bits.
+template <int N, bool kInside, bool kWide, typename S>
+S FaceSeparation(const S* x, const S* y, Vec2T<S> normal, S offset, S* inside)
+{
+#if SATVIZ_WIDE
+    if constexpr (kWide)
+    {
+        return ScanFaceWide<N, kInside>(x, y, normal.x, normal.y, offset, inside) + S(0);
+    }
+#endif
+    return ScanFace<N, kInside>(x, y, normal.x, normal.y, offset, inside) + S(0);
+}
+
 /// The incident polygon of a face query: the polygon, its transform into the reference frame, and, when it is
 /// small enough to scan, its vertices mapped into that frame as a structure of arrays on the stack (padded to a
 /// multiple of 4 entries by repeating the last vertex).
@@ -225,8 +364,8 @@ struct IncidentPolygon
     bool scan;                  ///< small: mapped below, scanned
     Vec2T<S> centroid;          ///< the polygon's centroid in the reference frame
     int padded = 0;             ///< entries filled in x and y
-    alignas(16) S x[kCapacity];
-    alignas(16) S y[kCapacity];
+    alignas(32) S x[kCapacity];
+    alignas(32) S y[kCapacity];
 
     /// `scanLimit` (at most kScanLimit) is the largest vertex count that is scanned.
     IncidentPolygon(const PolygonT<S>& p, const TransformT<S>& incInRef, int scanLimit = kScanLimit)
@@ -265,7 +404,8 @@ struct IncidentPolygon
     }
 
     /// The first vertex whose projection on `normal` (reference frame) is the smallest: the support point in
-    /// direction -normal.
+    /// direction -normal. kWide: the smallest projection with the wide vectors (the same number).
+    template <bool kWide = false>
     int Support(Vec2T<S> normal) const
     {
         if (!scan)
@@ -274,7 +414,17 @@ struct IncidentPolygon
         }
         // The smallest projection is known exactly (MinProjection rounds each projection the same way); mark the
         // vertices that reach it and take the first. No chain of dependent comparisons.
-        const S low = Min(normal);
+        S low;
+#if SATVIZ_WIDE
+        if constexpr (kWide)
+        {
+            low = MinProjectionWide(x, y, padded, normal.x, normal.y);
+        }
+        else
+#endif
+        {
+            low = Min(normal);
+        }
         uint32_t hits = 0;
         for (int j = 0; j < polygon.Count(); ++j)
         {
@@ -399,7 +549,8 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
                     continue;
                 }
             }
-            separation = ScanFace<N, kInside>(inc.x, inc.y, normal.x, normal.y, Dot(normal, ref.vertices[i]), inside);
+            separation =
+                FaceSeparation<N, kInside, Tracer::kWide>(inc.x, inc.y, normal, Dot(normal, ref.vertices[i]), inside);
         }
         else
         {
@@ -493,7 +644,7 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
     const IncidentPolygon<S> incB(b, bInA, Tracer::kScanLimit);
     // Pruned faces would leave gaps in the vertices' largest separations, so pruning turns the shortcut off.
     constexpr bool kInside = !Tracer::kPrune;
-    alignas(16) S inside[IncidentPolygon<S>::kCapacity];
+    alignas(32) S inside[IncidentPolygon<S>::kCapacity];
     if constexpr (kInside)
     {
         std::fill(inside, inside + incB.padded, -std::numeric_limits<S>::infinity());
@@ -672,7 +823,7 @@ struct ClipResult
 ///      is halfway between the kept point and the reference face.
 ///   4. If clipping keeps nothing (a rounding artefact at a vertex-vertex contact), use the deepest vertex.
 /// `support` is the incident support vertex if known, else -1.
-template <typename S>
+template <bool kWide = false, typename S>
 ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& inc, int support,
                                S keepBelow)
 {
@@ -683,7 +834,7 @@ ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentP
     const Vec2T<S> normal = ref.normals[face];
     const Vec2T<S> tangent = LeftPerp(normal);
 
-    const int s = support >= 0 ? support : inc.Support(normal);
+    const int s = support >= 0 ? support : inc.template Support<kWide>(normal);
     const int before = Prev(s, m);
     const S dotLeaving = Dot(normal, Rotate(inc.xf.q, inc.polygon.normals[s]));
     const S dotEntering = Dot(normal, Rotate(inc.xf.q, inc.polygon.normals[before]));
@@ -804,7 +955,8 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     const TransformT<S>& xfRef = flip ? xfB : xfA;
     const FaceQuery<S>& query = flip ? queryB : queryA;
 
-    const ClipResult<S> clip = ClipIncidentEdge(ref, query.face, inc, inc.scan ? -1 : query.support, S(0));
+    const ClipResult<S> clip =
+        ClipIncidentEdge<Tracer::kWide>(ref, query.face, inc, inc.scan ? -1 : query.support, S(0));
     for (int k = 0; k < clip.contactCount; ++k)
     {
         manifold.contacts[k].point = TransformPoint(xfRef, clip.contacts[k].point);

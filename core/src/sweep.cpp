@@ -2,6 +2,7 @@
 // satviz: the swept test for translating shapes (Ericson, Real-Time Collision Detection, 5.5.2 for polygons;
 // 5.3.2 and 5.5.7 for the ray against a sphere and the rounded shapes of circles).
 
+#include "lanes.h"
 #include "sat_impl.h"
 
 #include <satviz/collide.h>
@@ -9,6 +10,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace satviz
 {
@@ -23,6 +25,13 @@ constexpr S kInfinity = std::numeric_limits<S>::infinity();
 struct NullSweepTracer
 {
     static constexpr bool kEnabled = false;
+    static constexpr bool kWide = false;
+};
+
+// The null tracer of the sweep compiled for AVX2.
+struct WideNullSweepTracer : NullSweepTracer
+{
+    static constexpr bool kWide = true;
 };
 
 // Entry and exit times of one axis whose separation is `separation` at t = 0 and changes by `rate` per unit of
@@ -53,6 +62,7 @@ class SweepRecorder
 {
   public:
     static constexpr bool kEnabled = true;
+    static constexpr bool kWide = false;
 
     SweepRecorder(SweepTraceT<S>& trace, ShapeRef<S> a, const TransformT<S>& xfA, ShapeRef<S> b,
                   const TransformT<S>& xfB, Vec2T<S> relativeVelocity)
@@ -160,60 +170,136 @@ struct SweepState
     SweepExit exit = SweepExit::AllAxesOverlap;
 };
 
+// Entry, exit and whether the axis never closes, for four axes at once (the per-axis rule of AxisTimes, without
+// branches). With q = s / -r: s >= 0 enters at q (r < 0) or never (r >= 0); s < 0 is overlapping from t = 0 and,
+// when r > 0, exits at q.
+template <typename L>
+struct AxisLanes
+{
+    L entry;
+    L leave;
+    typename L::Mask apart;
+    typename L::Mask never;
+
+    AxisLanes(L separation, L rate)
+    {
+        const L zero = L::Fill(0);
+        apart = separation >= zero;
+        const L q = separation / -rate;
+        entry = Select(apart, q, zero);
+        leave = Select(~apart & (rate > zero), q, L::Fill(std::numeric_limits<decltype(q.Get(0))>::infinity()));
+        never = apart & (rate >= zero);
+    }
+};
+
 // The faces of `ref` (side 0 = A, 1 = B) against `inc` mapped into ref's frame; `velocity` is B's motion relative
 // to A in ref's frame, times -1 when ref is B (it is then A that moves towards ref). False when an axis ends the
 // test with a miss. N is inc's padded vertex count when scanned, 0 when walked (as in QueryFacesN).
 //   Per face: separation s at t = 0 (as in the static face query, but with unit normals) and its rate
-//   r = Dot(n, velocity). With q = s / -r: s >= 0 enters at q (r < 0) or never (r >= 0: the test ends); s < 0
-//   is overlapping from t = 0 and, when r > 0, exits at q. The bookkeeping is branch-free, as the signs of s and
-//   r follow the geometry and would be mispredicted; only the rare end of the test branches.
+//   r = Dot(n, velocity), then its entry and exit (AxisLanes). The faces are decided four at a time, in lanes:
+//   each lane keeps the latest entry it saw (and its face) and the earliest exit, so there is no branch per face,
+//   whose outcome follows the geometry and would be mispredicted. The last block repeats the last face, which
+//   changes no bound. A block that holds an axis that never closes, or an entry after t = 1, ends the test; the
+//   latest entry against the earliest exit is compared once per polygon. Both bounds only tighten from face to
+//   face, so this ends with the same verdict as stopping at the first face that fails, and the lanes combine to
+//   the first face of the latest entry, as a face-by-face loop finds it. The recorder replays the faces in order
+//   up to that first failing face, with the same numbers.
 template <int N, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
                 SweepState<S>& state, Tracer& tracer)
 {
+    using L = Lanes<S, Tracer::kWide && std::is_same_v<S, double>>;
     constexpr bool kScan = N > 0;
+    const int n = ref.Count();
+    // A face's place in the order A's faces, then B's, as a lane value (exact in float up to 2^24).
+    const S sideBase = S(side) * S(1 << 16);
+    L first = L::Fill(state.first);
+    L firstIndex = L::Fill(S(state.firstSide) * S(1 << 16) + S(state.firstFace));
+    L last = L::Fill(state.last);
+    typename L::Mask inside = L::Mask::Fill(true);
+    typename L::Mask ends = L::Mask::Fill(false);
+    SweepState<S> replay = state; // the recorder's face-by-face view
+    bool replayEnded = false;
     int support = 0;
-    for (int i = 0; i < ref.Count(); ++i)
+    for (int i0 = 0; i0 < n && !ends.Any(); i0 += 4)
     {
-        const Vec2T<S> normal = ref.normals[i];
-        S separation;
-        if constexpr (kScan)
+        S separation[4];
+        S rate[4];
+        for (int l = 0; l < 4; ++l)
         {
-            separation = ScanFace<N, false>(inc.x, inc.y, normal.x, normal.y, Dot(normal, ref.vertices[i]), nullptr);
+            const int i = std::min(i0 + l, n - 1);
+            const Vec2T<S> normal = ref.normals[i];
+            if constexpr (kScan)
+            {
+                separation[l] = FaceSeparation<N, false, Tracer::kWide>(
+                    inc.x, inc.y, normal, Dot(normal, ref.vertices[i]), static_cast<S*>(nullptr));
+            }
+            else
+            {
+                const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
+                support = i == 0 ? ClimbToSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
+                separation[l] = inc.Separation(normal, ref.vertices[i], support);
+            }
+            rate[l] = Dot(normal, velocity);
         }
-        else
-        {
-            const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
-            support = i == 0 ? ClimbToSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
-            separation = inc.Separation(normal, ref.vertices[i], support);
-        }
-        const S rate = Dot(normal, velocity);
-        const bool apart = separation >= S(0);
-        const S q = separation / -rate;
-        const S entry = apart ? q : S(0);
-        const S leave = !apart && rate > S(0) ? q : kInfinity<S>;
-        const bool never = apart && rate >= S(0);
+        const AxisLanes<L> axes(L::Set(separation[0], separation[1], separation[2], separation[3]),
+                                L::Set(rate[0], rate[1], rate[2], rate[3]));
+        const L index = L::Set(sideBase + S(i0), sideBase + S(std::min(i0 + 1, n - 1)),
+                               sideBase + S(std::min(i0 + 2, n - 1)), sideBase + S(std::min(i0 + 3, n - 1)));
         // A NaN separation does not count as apart, and a NaN entry does not replace the latest one.
-        state.inside = state.inside && !apart;
-        const bool later = entry > state.first;
-        state.firstSide = Select(later, side, state.firstSide);
-        state.firstFace = Select(later, i, state.firstFace);
-        state.first = later ? entry : state.first;
-        state.last = std::min(state.last, leave);
-        const bool ends = never || state.first > S(1) || state.first >= state.last;
+        inside = inside & ~axes.apart;
+        const typename L::Mask later = axes.entry > first;
+        first = Select(later, axes.entry, first);
+        firstIndex = Select(later, index, firstIndex);
+        last = Min(axes.leave, last);
+        ends = axes.never | (first > L::Fill(S(1)));
         if constexpr (Tracer::kEnabled)
         {
-            tracer.Axis(side, i, separation, rate, never ? S(0) : entry, never ? kInfinity<S> : leave, ends);
-        }
-        if (ends)
-        {
-            state.exit = never                ? SweepExit::NeverCloses
-                         : state.first > S(1) ? SweepExit::EntryAfterStep
-                                              : SweepExit::EntryAfterExit;
-            return false;
+            for (int l = 0; l < 4 && i0 + l < n && !replayEnded; ++l)
+            {
+                const S entry = axes.entry.Get(l);
+                const S leave = axes.leave.Get(l);
+                const bool never = axes.never.Get(l);
+                if (entry > replay.first)
+                {
+                    replay.first = entry;
+                    replay.firstSide = side;
+                    replay.firstFace = i0 + l;
+                }
+                replay.last = std::min(replay.last, leave);
+                replayEnded = never || replay.first > S(1) || replay.first >= replay.last;
+                tracer.Axis(side, i0 + l, separation[l], rate[l], never ? S(0) : entry, never ? kInfinity<S> : leave,
+                            replayEnded);
+                if (replayEnded)
+                {
+                    replay.exit = never                 ? SweepExit::NeverCloses
+                                  : replay.first > S(1) ? SweepExit::EntryAfterStep
+                                                        : SweepExit::EntryAfterExit;
+                }
+            }
         }
     }
-    return true;
+    // The lanes combined: the latest entry, at the first face that has it, and the earliest exit.
+    state.first = first.MaxLane();
+    const L candidates = Select(first == L::Fill(state.first), firstIndex, L::Fill(S(1 << 30)));
+    const int index = static_cast<int>(candidates.MinLane());
+    state.firstSide = index >> 16;
+    state.firstFace = index & 0xFFFF;
+    state.last = last.MinLane();
+    state.inside = state.inside && inside.All();
+    const bool never = (ends & ~(first > L::Fill(S(1)))).Any();
+    const bool going = !never && !(state.first > S(1)) && !(state.first >= state.last);
+    if (!going)
+    {
+        state.exit = never                ? SweepExit::NeverCloses
+                     : state.first > S(1) ? SweepExit::EntryAfterStep
+                                          : SweepExit::EntryAfterExit;
+    }
+    if constexpr (Tracer::kEnabled)
+    {
+        state.exit = replay.exit;
+    }
+    return going;
 }
 
 // SweepFaces with inc's scan unrolled for its padded vertex count.
@@ -291,13 +377,15 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.normals[firstAxis.index]);
     result.normal = flip ? -worldNormal : worldNormal;
     // At the time of impact the touching points are at zero distance up to rounding of either sign, which scales
-    // with the coordinates in the reference frame: the offset between the frames and the face's own size.
+    // with the coordinates in the reference frame: the offset between the frames and the face's own size (its
+    // largest coordinate extent, within a factor sqrt(2) of its length and without a square root).
     const Vec2T<S> offset = inc.xf.p;
     const Vec2T<S> face = ref.vertices[firstAxis.index];
+    const Vec2T<S> edge = ref.edges[firstAxis.index];
     const S scale = std::max({std::abs(offset.x), std::abs(offset.y), std::abs(face.x), std::abs(face.y),
-                              Length(ref.edges[firstAxis.index])});
+                              std::abs(edge.x), std::abs(edge.y)});
     const S slop = S(64) * std::numeric_limits<S>::epsilon() * scale;
-    const ClipResult<S> clip = ClipIncidentEdge(ref, firstAxis.index, inc, -1, slop);
+    const ClipResult<S> clip = ClipIncidentEdge<Tracer::kWide>(ref, firstAxis.index, inc, -1, slop);
     for (int k = 0; k < clip.contactCount; ++k)
     {
         result.contacts[k].point = TransformPoint(xfRef, clip.contacts[k].point);
@@ -382,6 +470,18 @@ template <typename S>
     detail::NullSweepTracer tracer;
     return detail::SweepPolygons(a, xfA, vA, b, xfB, vB, tracer);
 }
+
+#if SATVIZ_WIDE
+// The same, compiled for AVX2 with the wide scans.
+template <typename S>
+[[gnu::target("avx2"), gnu::flatten]] SweepResultT<S> SweepPolygonsWide(const PolygonT<S>& a, const TransformT<S>& xfA,
+                                                                        Vec2T<S> vA, const PolygonT<S>& b,
+                                                                        const TransformT<S>& xfB, Vec2T<S> vB)
+{
+    detail::WideNullSweepTracer tracer;
+    return detail::SweepPolygons(a, xfA, vA, b, xfB, vB, tracer);
+}
+#endif
 } // namespace
 
 template <typename S>
@@ -408,6 +508,12 @@ SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
     {
         if (trace == nullptr)
         {
+#if SATVIZ_WIDE
+            if (detail::HasWideVectors())
+            {
+                return SweepPolygonsWide(a.polygon, xfA, vA, b.polygon, xfB, vB);
+            }
+#endif
             return SweepPolygonsUntraced(a.polygon, xfA, vA, b.polygon, xfB, vB);
         }
         detail::SweepRecorder<S> tracer(*trace, {&a.polygon, nullptr}, xfA, {&b.polygon, nullptr}, xfB, velocity);

@@ -32,11 +32,18 @@ struct AlgorithmChoices
     static constexpr bool kSkipParallel = true; ///< skip faces of B anti-parallel to a face of A
     static constexpr bool kPrune = false;       ///< back-face pruning with the centroid bound (scan only)
     static constexpr int kScanLimit = 16;       ///< polygons up to this many vertices are scanned, larger walked
+    static constexpr bool kWide = false;        ///< scans with 256-bit vectors (AVX2; see HasWideVectors)
 };
 
 struct NullTracer : AlgorithmChoices
 {
     static constexpr bool kEnabled = false;
+};
+
+/// The null tracer of code compiled for AVX2 (RunWide): scans use 256-bit vectors.
+struct WideNullTracer : NullTracer
+{
+    static constexpr bool kWide = true;
 };
 
 /// Projection interval of a shape on a world direction.

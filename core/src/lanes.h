@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+// satviz (private): four lanes of a scalar, the unit in which the face loops decide: four faces at a time, without
+// a branch per face. Lanes<S, false> is portable (plain arrays); Lanes<double, true> holds one AVX2 register and is
+// used only in code compiled for AVX2 (RunWide). Every operation is the same IEEE operation lane by lane in both,
+// so they give the same bits.
+#pragma once
+
+#include <algorithm>
+#include <limits>
+
+#if defined(__x86_64__) && defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define SATVIZ_LANES_AVX2 1
+#else
+#define SATVIZ_LANES_AVX2 0
+#endif
+
+namespace satviz::detail
+{
+
+/// Four lanes of S; kWide selects the AVX2 register (double only).
+template <typename S, bool kWide>
+struct Lanes
+{
+    S v[4]; ///< the lanes
+
+    /// Lanes a, b, c, d.
+    static Lanes Set(S a, S b, S c, S d) { return {{a, b, c, d}}; }
+    /// Every lane x.
+    static Lanes Fill(S x) { return {{x, x, x, x}}; }
+    /// Lane i.
+    S Get(int i) const { return v[i]; }
+
+    /// A per-lane truth value.
+    struct Mask
+    {
+        bool m[4]; ///< the lanes
+        /// Every lane c.
+        static Mask Fill(bool c) { return {{c, c, c, c}}; }
+        /// Lane i.
+        bool Get(int i) const { return m[i]; }
+        /// Any lane set.
+        bool Any() const { return m[0] || m[1] || m[2] || m[3]; }
+        /// Every lane set.
+        bool All() const { return m[0] && m[1] && m[2] && m[3]; }
+        friend Mask operator&(Mask a, Mask b)
+        {
+            return Map(a, b, [](bool x, bool y) { return x && y; });
+        }
+        friend Mask operator|(Mask a, Mask b)
+        {
+            return Map(a, b, [](bool x, bool y) { return x || y; });
+        }
+        friend Mask operator~(Mask a)
+        {
+            return Map(a, a, [](bool x, bool) { return !x; });
+        }
+        template <typename F>
+        static Mask Map(Mask a, Mask b, F f)
+        {
+            return {{f(a.m[0], b.m[0]), f(a.m[1], b.m[1]), f(a.m[2], b.m[2]), f(a.m[3], b.m[3])}};
+        }
+    };
+
+    template <typename F>
+    static Lanes Map(Lanes a, Lanes b, F f)
+    {
+        return {{f(a.v[0], b.v[0]), f(a.v[1], b.v[1]), f(a.v[2], b.v[2]), f(a.v[3], b.v[3])}};
+    }
+    template <typename F>
+    static Mask Compare(Lanes a, Lanes b, F f)
+    {
+        return {{f(a.v[0], b.v[0]), f(a.v[1], b.v[1]), f(a.v[2], b.v[2]), f(a.v[3], b.v[3])}};
+    }
+
+    friend Lanes operator-(Lanes a)
+    {
+        return Map(a, a, [](S x, S) { return -x; });
+    }
+    friend Lanes operator/(Lanes a, Lanes b)
+    {
+        return Map(a, b, [](S x, S y) { return x / y; });
+    }
+    friend Mask operator>(Lanes a, Lanes b)
+    {
+        return Compare(a, b, [](S x, S y) { return x > y; });
+    }
+    friend Mask operator>=(Lanes a, Lanes b)
+    {
+        return Compare(a, b, [](S x, S y) { return x >= y; });
+    }
+    friend Mask operator==(Lanes a, Lanes b)
+    {
+        return Compare(a, b, [](S x, S y) { return x == y; });
+    }
+    /// Per lane: a where c holds, else b.
+    friend Lanes Select(Mask c, Lanes a, Lanes b)
+    {
+        return {
+            {c.m[0] ? a.v[0] : b.v[0], c.m[1] ? a.v[1] : b.v[1], c.m[2] ? a.v[2] : b.v[2], c.m[3] ? a.v[3] : b.v[3]}};
+    }
+    /// Per lane: a < b ? a : b (the second operand when either is NaN).
+    friend Lanes Min(Lanes a, Lanes b)
+    {
+        return Map(a, b, [](S x, S y) { return x < y ? x : y; });
+    }
+    /// Per lane: a > b ? a : b (the second operand when either is NaN).
+    friend Lanes Max(Lanes a, Lanes b)
+    {
+        return Map(a, b, [](S x, S y) { return x > y ? x : y; });
+    }
+    /// The largest lane (NaN lanes skipped when another is a number).
+    S MaxLane() const { return std::max(std::max(v[0], v[1]), std::max(v[2], v[3])); }
+    /// The smallest lane.
+    S MinLane() const { return std::min(std::min(v[0], v[1]), std::min(v[2], v[3])); }
+};
+
+#if SATVIZ_LANES_AVX2
+/// Four doubles in one AVX2 register. Only code compiled for AVX2 may use it.
+template <>
+struct Lanes<double, true>
+{
+    __m256d v; ///< the lanes
+
+    /// Lanes a, b, c, d.
+    [[gnu::target("avx2")]] static Lanes Set(double a, double b, double c, double d)
+    {
+        return {_mm256_setr_pd(a, b, c, d)};
+    }
+    /// Every lane x.
+    [[gnu::target("avx2")]] static Lanes Fill(double x) { return {_mm256_set1_pd(x)}; }
+    /// Lane i.
+    [[gnu::target("avx2")]] double Get(int i) const
+    {
+        alignas(32) double out[4];
+        _mm256_store_pd(out, v);
+        return out[i];
+    }
+
+    /// A per-lane truth value: all ones or all zeros.
+    struct Mask
+    {
+        __m256d m; ///< the lanes
+        /// Every lane c.
+        [[gnu::target("avx2")]] static Mask Fill(bool c)
+        {
+            return {_mm256_castsi256_pd(_mm256_set1_epi64x(c ? -1 : 0))};
+        }
+        /// Lane i.
+        [[gnu::target("avx2")]] bool Get(int i) const { return ((_mm256_movemask_pd(m) >> i) & 1) != 0; }
+        /// Any lane set.
+        [[gnu::target("avx2")]] bool Any() const { return _mm256_movemask_pd(m) != 0; }
+        /// Every lane set.
+        [[gnu::target("avx2")]] bool All() const { return _mm256_movemask_pd(m) == 0xF; }
+        [[gnu::target("avx2")]] friend Mask operator&(Mask a, Mask b) { return {_mm256_and_pd(a.m, b.m)}; }
+        [[gnu::target("avx2")]] friend Mask operator|(Mask a, Mask b) { return {_mm256_or_pd(a.m, b.m)}; }
+        [[gnu::target("avx2")]] friend Mask operator~(Mask a)
+        {
+            return {_mm256_xor_pd(a.m, _mm256_castsi256_pd(_mm256_set1_epi64x(-1)))};
+        }
+    };
+
+    [[gnu::target("avx2")]] friend Lanes operator-(Lanes a) { return {_mm256_xor_pd(a.v, _mm256_set1_pd(-0.0))}; }
+    [[gnu::target("avx2")]] friend Lanes operator/(Lanes a, Lanes b) { return {_mm256_div_pd(a.v, b.v)}; }
+    [[gnu::target("avx2")]] friend Mask operator>(Lanes a, Lanes b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_GT_OQ)}; }
+    [[gnu::target("avx2")]] friend Mask operator>=(Lanes a, Lanes b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_GE_OQ)}; }
+    [[gnu::target("avx2")]] friend Mask operator==(Lanes a, Lanes b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_EQ_OQ)}; }
+    /// Per lane: a where c holds, else b.
+    [[gnu::target("avx2")]] friend Lanes Select(Mask c, Lanes a, Lanes b) { return {_mm256_blendv_pd(b.v, a.v, c.m)}; }
+    /// Per lane: a < b ? a : b (the second operand when either is NaN).
+    [[gnu::target("avx2")]] friend Lanes Min(Lanes a, Lanes b) { return {_mm256_min_pd(a.v, b.v)}; }
+    /// Per lane: a > b ? a : b (the second operand when either is NaN).
+    [[gnu::target("avx2")]] friend Lanes Max(Lanes a, Lanes b) { return {_mm256_max_pd(a.v, b.v)}; }
+    /// The largest lane (NaN lanes skipped when another is a number).
+    [[gnu::target("avx2")]] double MaxLane() const
+    {
+        alignas(32) double out[4];
+        _mm256_store_pd(out, v);
+        return std::max(std::max(out[0], out[1]), std::max(out[2], out[3]));
+    }
+    /// The smallest lane.
+    [[gnu::target("avx2")]] double MinLane() const
+    {
+        alignas(32) double out[4];
+        _mm256_store_pd(out, v);
+        return std::min(std::min(out[0], out[1]), std::min(out[2], out[3]));
+    }
+};
+#endif
+
+} // namespace satviz::detail

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+// The wide scans (AVX2, chosen at run time) against the baseline instructions: the same bits for every query.
+
+#include "sat_impl.h"
+#include "support/random_shapes.h"
+
+#include <satviz/sat.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+using namespace satviz;
+using namespace satviz::testing;
+
+namespace
+{
+
+template <typename S>
+bool SameBits(S a, S b)
+{
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+template <typename S>
+bool SameBits(Vec2T<S> a, Vec2T<S> b)
+{
+    return SameBits(a.x, b.x) && SameBits(a.y, b.y);
+}
+
+template <typename S>
+bool SameBits(const ManifoldT<S>& a, const ManifoldT<S>& b)
+{
+    bool same = a.overlap == b.overlap && SameBits(a.depth, b.depth) && SameBits(a.gap, b.gap) &&
+                SameBits(a.normal, b.normal) && a.contactCount == b.contactCount && a.axis.kind == b.axis.kind &&
+                a.axis.shape == b.axis.shape && a.axis.index == b.axis.index && a.incidentEdge == b.incidentEdge;
+    for (int i = 0; same && i < a.contactCount; ++i)
+    {
+        same = SameBits(a.contacts[i].point, b.contacts[i].point) &&
+               SameBits(a.contacts[i].separation, b.contacts[i].separation);
+    }
+    return same;
+}
+
+template <typename S>
+bool SameBits(const SweepResultT<S>& a, const SweepResultT<S>& b)
+{
+    bool same = a.status == b.status && SameBits(a.toi, b.toi) && SameBits(a.normal, b.normal) &&
+                a.axis.kind == b.axis.kind && a.axis.shape == b.axis.shape && a.axis.index == b.axis.index &&
+                a.contactCount == b.contactCount && SameBits(a.initial, b.initial);
+    for (int i = 0; same && i < a.contactCount; ++i)
+    {
+        same = SameBits(a.contacts[i].point, b.contacts[i].point) &&
+               SameBits(a.contacts[i].separation, b.contacts[i].separation);
+    }
+    return same;
+}
+
+struct Answers
+{
+    bool overlap = false;
+    Manifold manifold;
+    SweepResult sweep;
+    bool floatOverlap = false;
+    ManifoldT<float> floatManifold;
+    SweepResultT<float> floatSweep;
+};
+
+Answers Ask(const RandomPair& pair, Vec2 velocity, const ShapeT<float>& fa, const ShapeT<float>& fb)
+{
+    Answers out;
+    out.overlap = Overlap(pair.a, pair.xfA, pair.b, pair.xfB);
+    out.manifold = Collide(pair.a, pair.xfA, pair.b, pair.xfB);
+    out.sweep = Sweep(pair.a, pair.xfA, Vec2{}, pair.b, pair.xfB, velocity);
+    const TransformT<float> xfA{ConvertVec<float>(pair.xfA.p),
+                                {static_cast<float>(pair.xfA.q.c), static_cast<float>(pair.xfA.q.s)}};
+    const TransformT<float> xfB{ConvertVec<float>(pair.xfB.p),
+                                {static_cast<float>(pair.xfB.q.c), static_cast<float>(pair.xfB.q.s)}};
+    out.floatOverlap = Overlap(fa, xfA, fb, xfB);
+    out.floatManifold = Collide(fa, xfA, fb, xfB);
+    out.floatSweep = Sweep(fa, xfA, Vec2T<float>{}, fb, xfB, ConvertVec<float>(velocity));
+    return out;
+}
+
+ShapeT<float> ToFloat(const Shape& shape)
+{
+    if (shape.type == ShapeType::Circle)
+    {
+        return MakeShape(
+            CircleT<float>{ConvertVec<float>(shape.circle.center), static_cast<float>(shape.circle.radius)});
+    }
+    const PolygonResultT<float> converted = ConvertPolygon<float>(shape.polygon);
+    return converted.Ok() ? MakeShape(converted.polygon) : ShapeT<float>{};
+}
+
+} // namespace
+
+TEST_CASE("Wide scans and baseline scans give the same bits", "[properties][wide]")
+{
+    bool& wide = detail::WideVectorsEnabled();
+    const bool available = wide;
+    Rng rng(20261123);
+    int pairs = 0;
+    for (int i = 0; i < 30000; ++i)
+    {
+        // Contact pairs of every scanned size and a few walked ones, and random shapes with circles.
+        const int counts[] = {3, 4, 5, 7, 8, 9, 12, 16, 17, 40};
+        const RandomPair pair =
+            i % 4 == 3 ? RandomShapePair(rng, 0.15)
+                       : ContactPair(rng, counts[rng.Int(0, 9)], static_cast<PairCategory>(rng.Int(0, 2)), 0.1);
+        const Vec2 toward = pair.xfA.p - pair.xfB.p;
+        const Vec2 velocity = rng.Uniform(0.2, 1.5) * toward + rng.Uniform(-0.5, 0.5) * LeftPerp(toward);
+        const ShapeT<float> fa = ToFloat(pair.a);
+        const ShapeT<float> fb = ToFloat(pair.b);
+        if ((fa.type == ShapeType::Polygon && fa.polygon.Count() == 0) ||
+            (fb.type == ShapeType::Polygon && fb.polygon.Count() == 0))
+        {
+            continue;
+        }
+        wide = available;
+        const Answers first = Ask(pair, velocity, fa, fb);
+        wide = false;
+        const Answers baseline = Ask(pair, velocity, fa, fb);
+        wide = available;
+        INFO("pair " << i);
+        REQUIRE(first.overlap == baseline.overlap);
+        REQUIRE(SameBits(first.manifold, baseline.manifold));
+        REQUIRE(SameBits(first.sweep, baseline.sweep));
+        REQUIRE(first.floatOverlap == baseline.floatOverlap);
+        REQUIRE(SameBits(first.floatManifold, baseline.floatManifold));
+        REQUIRE(SameBits(first.floatSweep, baseline.floatSweep));
+        ++pairs;
+    }
+    REQUIRE(pairs > 25000);
+}
