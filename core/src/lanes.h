@@ -152,25 +152,43 @@ struct Lanes<double, true>
         [[gnu::target("avx2")]] bool Any() const { return _mm256_movemask_pd(m) != 0; }
         /// Every lane set.
         [[gnu::target("avx2")]] bool All() const { return _mm256_movemask_pd(m) == 0xF; }
-        [[gnu::target("avx2")]] friend Mask operator&(Mask a, Mask b) { return {_mm256_and_pd(a.m, b.m)}; }
-        [[gnu::target("avx2")]] friend Mask operator|(Mask a, Mask b) { return {_mm256_or_pd(a.m, b.m)}; }
-        [[gnu::target("avx2")]] friend Mask operator~(Mask a)
+        [[gnu::target("avx2")]] friend Mask operator&(const Mask& a, const Mask& b)
+        {
+            return {_mm256_and_pd(a.m, b.m)};
+        }
+        [[gnu::target("avx2")]] friend Mask operator|(const Mask& a, const Mask& b) { return {_mm256_or_pd(a.m, b.m)}; }
+        [[gnu::target("avx2")]] friend Mask operator~(const Mask& a)
         {
             return {_mm256_xor_pd(a.m, _mm256_castsi256_pd(_mm256_set1_epi64x(-1)))};
         }
     };
 
-    [[gnu::target("avx2")]] friend Lanes operator-(Lanes a) { return {_mm256_xor_pd(a.v, _mm256_set1_pd(-0.0))}; }
-    [[gnu::target("avx2")]] friend Lanes operator/(Lanes a, Lanes b) { return {_mm256_div_pd(a.v, b.v)}; }
-    [[gnu::target("avx2")]] friend Mask operator>(Lanes a, Lanes b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_GT_OQ)}; }
-    [[gnu::target("avx2")]] friend Mask operator>=(Lanes a, Lanes b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_GE_OQ)}; }
-    [[gnu::target("avx2")]] friend Mask operator==(Lanes a, Lanes b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_EQ_OQ)}; }
+    [[gnu::target("avx2")]] friend Lanes operator-(const Lanes& a)
+    {
+        return {_mm256_xor_pd(a.v, _mm256_set1_pd(-0.0))};
+    }
+    [[gnu::target("avx2")]] friend Lanes operator/(const Lanes& a, const Lanes& b) { return {_mm256_div_pd(a.v, b.v)}; }
+    [[gnu::target("avx2")]] friend Mask operator>(const Lanes& a, const Lanes& b)
+    {
+        return {_mm256_cmp_pd(a.v, b.v, _CMP_GT_OQ)};
+    }
+    [[gnu::target("avx2")]] friend Mask operator>=(const Lanes& a, const Lanes& b)
+    {
+        return {_mm256_cmp_pd(a.v, b.v, _CMP_GE_OQ)};
+    }
+    [[gnu::target("avx2")]] friend Mask operator==(const Lanes& a, const Lanes& b)
+    {
+        return {_mm256_cmp_pd(a.v, b.v, _CMP_EQ_OQ)};
+    }
     /// Per lane: a where c holds, else b.
-    [[gnu::target("avx2")]] friend Lanes Select(Mask c, Lanes a, Lanes b) { return {_mm256_blendv_pd(b.v, a.v, c.m)}; }
+    [[gnu::target("avx2")]] friend Lanes Select(const Mask& c, const Lanes& a, const Lanes& b)
+    {
+        return {_mm256_blendv_pd(b.v, a.v, c.m)};
+    }
     /// Per lane: a < b ? a : b (the second operand when either is NaN).
-    [[gnu::target("avx2")]] friend Lanes Min(Lanes a, Lanes b) { return {_mm256_min_pd(a.v, b.v)}; }
+    [[gnu::target("avx2")]] friend Lanes Min(const Lanes& a, const Lanes& b) { return {_mm256_min_pd(a.v, b.v)}; }
     /// Per lane: a > b ? a : b (the second operand when either is NaN).
-    [[gnu::target("avx2")]] friend Lanes Max(Lanes a, Lanes b) { return {_mm256_max_pd(a.v, b.v)}; }
+    [[gnu::target("avx2")]] friend Lanes Max(const Lanes& a, const Lanes& b) { return {_mm256_max_pd(a.v, b.v)}; }
     /// The largest lane (NaN lanes skipped when another is a number).
     [[gnu::target("avx2")]] double MaxLane() const
     {

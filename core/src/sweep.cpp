@@ -181,7 +181,7 @@ struct AxisLanes
     typename L::Mask apart;
     typename L::Mask never;
 
-    AxisLanes(L separation, L rate)
+    AxisLanes(const L& separation, const L& rate)
     {
         const L zero = L::Fill(0);
         apart = separation >= zero;

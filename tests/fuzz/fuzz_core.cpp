@@ -120,10 +120,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     {
         std::abort();
     }
-    if (std::memcmp(&m.depth, &traced.depth, sizeof(double)) != 0 || m.overlap != traced.overlap ||
+    // Traced and untraced results are bit-identical. A NaN transform gives NaN on both sides, but which NaN (its
+    // sign) is not defined by IEEE 754 and follows the operand order each instruction sequence happens to use.
+    const bool bothNaN = std::isnan(m.depth) && std::isnan(traced.depth);
+    if ((!bothNaN && std::memcmp(&m.depth, &traced.depth, sizeof(double)) != 0) || m.overlap != traced.overlap ||
         m.contactCount != traced.contactCount)
     {
-        std::abort(); // traced and untraced results are bit-identical
+        std::abort();
     }
     if (m.contactCount < 0 || m.contactCount > 2)
     {
@@ -134,6 +137,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     if (sweep.status == satviz::SweepStatus::Hit && !(sweep.toi >= 0.0 && sweep.toi <= 1.0))
     {
         std::abort();
+    }
+    const satviz::SweepResult plainSweep = satviz::Sweep(a, xfA, vA, b, xfB, vB);
+    const bool bothNaNToi = std::isnan(sweep.toi) && std::isnan(plainSweep.toi);
+    if (plainSweep.status != sweep.status ||
+        (!bothNaNToi && std::memcmp(&plainSweep.toi, &sweep.toi, sizeof(double)) != 0))
+    {
+        std::abort(); // traced and untraced sweeps agree
     }
     const satviz::Obstacle obstacle{&b, xfB};
     const satviz::SlideResult slide = satviz::MoveAndSlide(a, xfA, vA, &obstacle, 1);
