@@ -44,16 +44,16 @@ template <typename Query>
 }
 #endif
 
-// Runs `query(tracer)` with the null tracer (on the wide scans where the processor has them), or with a recorder
-// filling `trace` when it is non-null.
-template <typename S, typename A, typename B, typename Query>
+// Runs `query(tracer)` with the null tracer (on the wide scans where the processor has them, unless kWide is
+// false), or with a recorder filling `trace` when it is non-null.
+template <bool kWide = true, typename S, typename A, typename B, typename Query>
 auto WithTracer(TraceT<S>* trace, const A& a, const TransformT<S>& xfA, const B& b, const TransformT<S>& xfB,
                 Query&& query)
 {
     if (trace == nullptr)
     {
 #if SATVIZ_WIDE
-        if (HasWideVectors())
+        if (kWide && HasWideVectors())
         {
             return RunWide(query);
         }

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
 // satviz (private): four lanes of a scalar, the unit in which the face loops decide: four faces at a time, without
-// a branch per face. Lanes<S, false> is portable (plain arrays); Lanes<double, true> holds one AVX2 register and is
-// used only in code compiled for AVX2 (RunWide). Every operation is the same IEEE operation lane by lane in both,
-// so they give the same bits.
+// a branch per face. Lanes<S, false> is portable (plain arrays; two SSE2 registers for double on x86-64);
+// Lanes<double, true> holds one AVX2 register and is used only in code compiled for AVX2 (RunWide). Every operation is
+// the same IEEE operation lane by lane in both, so they give the same bits.
 #pragma once
 
 #include <algorithm>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #if defined(__x86_64__) && defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 #define SATVIZ_LANES_AVX2 1
@@ -114,6 +117,102 @@ struct Lanes
     /// The smallest lane.
     S MinLane() const { return std::min(std::min(v[0], v[1]), std::min(v[2], v[3])); }
 };
+
+#if defined(__SSE2__)
+/// Four doubles in two SSE2 registers: what every x86-64 processor runs.
+template <>
+struct Lanes<double, false>
+{
+    __m128d lo; ///< lanes 0 and 1
+    __m128d hi; ///< lanes 2 and 3
+
+    /// Lanes a, b, c, d.
+    static Lanes Set(double a, double b, double c, double d) { return {_mm_setr_pd(a, b), _mm_setr_pd(c, d)}; }
+    /// Every lane x.
+    static Lanes Fill(double x) { return {_mm_set1_pd(x), _mm_set1_pd(x)}; }
+    /// Lane i.
+    double Get(int i) const
+    {
+        alignas(16) double out[4];
+        _mm_store_pd(out, lo);
+        _mm_store_pd(out + 2, hi);
+        return out[i];
+    }
+
+    /// A per-lane truth value: all ones or all zeros.
+    struct Mask
+    {
+        __m128d lo; ///< lanes 0 and 1
+        __m128d hi; ///< lanes 2 and 3
+        /// Every lane c.
+        static Mask Fill(bool c)
+        {
+            const __m128d m = _mm_castsi128_pd(_mm_set1_epi32(c ? -1 : 0));
+            return {m, m};
+        }
+        /// The lanes as four bits.
+        int Bits() const { return _mm_movemask_pd(lo) | (_mm_movemask_pd(hi) << 2); }
+        /// Lane i.
+        bool Get(int i) const { return ((Bits() >> i) & 1) != 0; }
+        /// Any lane set.
+        bool Any() const { return Bits() != 0; }
+        /// Every lane set.
+        bool All() const { return Bits() == 0xF; }
+        friend Mask operator&(const Mask& a, const Mask& b) { return {_mm_and_pd(a.lo, b.lo), _mm_and_pd(a.hi, b.hi)}; }
+        friend Mask operator|(const Mask& a, const Mask& b) { return {_mm_or_pd(a.lo, b.lo), _mm_or_pd(a.hi, b.hi)}; }
+        friend Mask operator~(const Mask& a)
+        {
+            const __m128d ones = _mm_castsi128_pd(_mm_set1_epi32(-1));
+            return {_mm_xor_pd(a.lo, ones), _mm_xor_pd(a.hi, ones)};
+        }
+    };
+
+    friend Lanes operator-(const Lanes& a)
+    {
+        const __m128d sign = _mm_set1_pd(-0.0);
+        return {_mm_xor_pd(a.lo, sign), _mm_xor_pd(a.hi, sign)};
+    }
+    friend Lanes operator/(const Lanes& a, const Lanes& b) { return {_mm_div_pd(a.lo, b.lo), _mm_div_pd(a.hi, b.hi)}; }
+    friend Mask operator>(const Lanes& a, const Lanes& b)
+    {
+        return {_mm_cmpgt_pd(a.lo, b.lo), _mm_cmpgt_pd(a.hi, b.hi)};
+    }
+    friend Mask operator>=(const Lanes& a, const Lanes& b)
+    {
+        return {_mm_cmpge_pd(a.lo, b.lo), _mm_cmpge_pd(a.hi, b.hi)};
+    }
+    friend Mask operator==(const Lanes& a, const Lanes& b)
+    {
+        return {_mm_cmpeq_pd(a.lo, b.lo), _mm_cmpeq_pd(a.hi, b.hi)};
+    }
+    /// Per lane: a where c holds, else b.
+    friend Lanes Select(const Mask& c, const Lanes& a, const Lanes& b)
+    {
+        return {_mm_or_pd(_mm_and_pd(c.lo, a.lo), _mm_andnot_pd(c.lo, b.lo)),
+                _mm_or_pd(_mm_and_pd(c.hi, a.hi), _mm_andnot_pd(c.hi, b.hi))};
+    }
+    /// Per lane: a < b ? a : b (the second operand when either is NaN).
+    friend Lanes Min(const Lanes& a, const Lanes& b) { return {_mm_min_pd(a.lo, b.lo), _mm_min_pd(a.hi, b.hi)}; }
+    /// Per lane: a > b ? a : b (the second operand when either is NaN).
+    friend Lanes Max(const Lanes& a, const Lanes& b) { return {_mm_max_pd(a.lo, b.lo), _mm_max_pd(a.hi, b.hi)}; }
+    /// The largest lane (NaN lanes skipped when another is a number).
+    double MaxLane() const
+    {
+        alignas(16) double out[4];
+        _mm_store_pd(out, lo);
+        _mm_store_pd(out + 2, hi);
+        return std::max(std::max(out[0], out[1]), std::max(out[2], out[3]));
+    }
+    /// The smallest lane.
+    double MinLane() const
+    {
+        alignas(16) double out[4];
+        _mm_store_pd(out, lo);
+        _mm_store_pd(out + 2, hi);
+        return std::min(std::min(out[0], out[1]), std::min(out[2], out[3]));
+    }
+};
+#endif
 
 #if SATVIZ_LANES_AVX2
 /// Four doubles in one AVX2 register. Only code compiled for AVX2 may use it.
