@@ -3,12 +3,11 @@
 
 #include "support/random_shapes.h"
 #include "support/reference.h"
+#include "support/same_bits.h"
 
 #include <satviz/sat.h>
 
 #include <catch2/catch.hpp>
-
-#include <cstring>
 
 using namespace satviz;
 using namespace satviz::testing;
@@ -30,26 +29,6 @@ double Scale(const RandomPair& pair)
 Transform Moved(const Transform& xf, Vec2 by)
 {
     return {xf.p + by, xf.q};
-}
-
-bool SameBits(double a, double b)
-{
-    return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
-bool SameBits(const Manifold& a, const Manifold& b)
-{
-    bool same = a.overlap == b.overlap && SameBits(a.depth, b.depth) && SameBits(a.gap, b.gap) &&
-                SameBits(a.normal.x, b.normal.x) && SameBits(a.normal.y, b.normal.y) &&
-                a.contactCount == b.contactCount && a.axis.kind == b.axis.kind && a.axis.shape == b.axis.shape &&
-                a.axis.index == b.axis.index && a.incidentEdge == b.incidentEdge;
-    for (int i = 0; same && i < a.contactCount; ++i)
-    {
-        same = SameBits(a.contacts[i].point.x, b.contacts[i].point.x) &&
-               SameBits(a.contacts[i].point.y, b.contacts[i].point.y) &&
-               SameBits(a.contacts[i].separation, b.contacts[i].separation);
-    }
-    return same;
 }
 
 // Distance from a world point to a shape's outline (quad precision).

@@ -3,58 +3,17 @@
 
 #include "sat_impl.h"
 #include "support/random_shapes.h"
+#include "support/same_bits.h"
 
 #include <satviz/sat.h>
 
 #include <catch2/catch.hpp>
-
-#include <cstring>
 
 using namespace satviz;
 using namespace satviz::testing;
 
 namespace
 {
-
-template <typename S>
-bool SameBits(S a, S b)
-{
-    return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
-template <typename S>
-bool SameBits(Vec2T<S> a, Vec2T<S> b)
-{
-    return SameBits(a.x, b.x) && SameBits(a.y, b.y);
-}
-
-template <typename S>
-bool SameBits(const ManifoldT<S>& a, const ManifoldT<S>& b)
-{
-    bool same = a.overlap == b.overlap && SameBits(a.depth, b.depth) && SameBits(a.gap, b.gap) &&
-                SameBits(a.normal, b.normal) && a.contactCount == b.contactCount && a.axis.kind == b.axis.kind &&
-                a.axis.shape == b.axis.shape && a.axis.index == b.axis.index && a.incidentEdge == b.incidentEdge;
-    for (int i = 0; same && i < a.contactCount; ++i)
-    {
-        same = SameBits(a.contacts[i].point, b.contacts[i].point) &&
-               SameBits(a.contacts[i].separation, b.contacts[i].separation);
-    }
-    return same;
-}
-
-template <typename S>
-bool SameBits(const SweepResultT<S>& a, const SweepResultT<S>& b)
-{
-    bool same = a.status == b.status && SameBits(a.toi, b.toi) && SameBits(a.normal, b.normal) &&
-                a.axis.kind == b.axis.kind && a.axis.shape == b.axis.shape && a.axis.index == b.axis.index &&
-                a.contactCount == b.contactCount && SameBits(a.initial, b.initial);
-    for (int i = 0; same && i < a.contactCount; ++i)
-    {
-        same = SameBits(a.contacts[i].point, b.contacts[i].point) &&
-               SameBits(a.contacts[i].separation, b.contacts[i].separation);
-    }
-    return same;
-}
 
 struct Answers
 {

@@ -107,11 +107,6 @@ struct Lanes
     {
         return Map(a, b, [](S x, S y) { return x < y ? x : y; });
     }
-    /// Per lane: a > b ? a : b (the second operand when either is NaN).
-    friend Lanes Max(Lanes a, Lanes b)
-    {
-        return Map(a, b, [](S x, S y) { return x > y ? x : y; });
-    }
     /// The largest lane (NaN lanes skipped when another is a number).
     S MaxLane() const { return std::max(std::max(v[0], v[1]), std::max(v[2], v[3])); }
     /// The smallest lane.
@@ -193,8 +188,6 @@ struct Lanes<double, false>
     }
     /// Per lane: a < b ? a : b (the second operand when either is NaN).
     friend Lanes Min(const Lanes& a, const Lanes& b) { return {_mm_min_pd(a.lo, b.lo), _mm_min_pd(a.hi, b.hi)}; }
-    /// Per lane: a > b ? a : b (the second operand when either is NaN).
-    friend Lanes Max(const Lanes& a, const Lanes& b) { return {_mm_max_pd(a.lo, b.lo), _mm_max_pd(a.hi, b.hi)}; }
     /// The largest lane (NaN lanes skipped when another is a number).
     double MaxLane() const
     {
@@ -286,8 +279,6 @@ struct Lanes<double, true>
     }
     /// Per lane: a < b ? a : b (the second operand when either is NaN).
     [[gnu::target("avx2")]] friend Lanes Min(const Lanes& a, const Lanes& b) { return {_mm256_min_pd(a.v, b.v)}; }
-    /// Per lane: a > b ? a : b (the second operand when either is NaN).
-    [[gnu::target("avx2")]] friend Lanes Max(const Lanes& a, const Lanes& b) { return {_mm256_max_pd(a.v, b.v)}; }
     /// The largest lane (NaN lanes skipped when another is a number).
     [[gnu::target("avx2")]] double MaxLane() const
     {

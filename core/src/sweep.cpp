@@ -212,9 +212,9 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     constexpr bool kScan = N > 0;
     const int n = ref.Count();
     // A face's place in the order A's faces, then B's, as a lane value (exact in float up to 2^24).
-    const S sideBase = S(side) * S(1 << 16);
+    constexpr int kSideStride = 1 << 16;
     L first = L::Fill(state.first);
-    L firstIndex = L::Fill(S(state.firstSide) * S(1 << 16) + S(state.firstFace));
+    L firstIndex = L::Fill(S(state.firstSide * kSideStride + state.firstFace));
     L last = L::Fill(state.last);
     typename L::Mask inside = L::Mask::Fill(true);
     typename L::Mask ends = L::Mask::Fill(false);
@@ -225,9 +225,11 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     {
         S separation[4];
         S rate[4];
+        S place[4];
         for (int l = 0; l < 4; ++l)
         {
             const int i = std::min(i0 + l, n - 1);
+            place[l] = S(side * kSideStride + i);
             const Vec2T<S> normal = ref.normals[i];
             if constexpr (kScan)
             {
@@ -244,13 +246,11 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
         }
         const AxisLanes<L> axes(L::Set(separation[0], separation[1], separation[2], separation[3]),
                                 L::Set(rate[0], rate[1], rate[2], rate[3]));
-        const L index = L::Set(sideBase + S(i0), sideBase + S(std::min(i0 + 1, n - 1)),
-                               sideBase + S(std::min(i0 + 2, n - 1)), sideBase + S(std::min(i0 + 3, n - 1)));
         // A NaN separation does not count as apart, and a NaN entry does not replace the latest one.
         inside = inside & ~axes.apart;
         const typename L::Mask later = axes.entry > first;
         first = Select(later, axes.entry, first);
-        firstIndex = Select(later, index, firstIndex);
+        firstIndex = Select(later, L::Set(place[0], place[1], place[2], place[3]), firstIndex);
         last = Min(axes.leave, last);
         ends = axes.never | (first > L::Fill(S(1)));
         if constexpr (Tracer::kEnabled)
@@ -283,23 +283,17 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     state.first = first.MaxLane();
     const L candidates = Select(first == L::Fill(state.first), firstIndex, L::Fill(S(1 << 30)));
     const int index = static_cast<int>(candidates.MinLane());
-    state.firstSide = index >> 16;
-    state.firstFace = index & 0xFFFF;
+    state.firstSide = index / kSideStride;
+    state.firstFace = index % kSideStride;
     state.last = last.MinLane();
     state.inside = state.inside && inside.All();
-    const bool never = (ends & ~(first > L::Fill(S(1)))).Any();
-    const bool going = !never && !(state.first > S(1)) && !(state.first >= state.last);
-    if (!going)
-    {
-        state.exit = never                ? SweepExit::NeverCloses
-                     : state.first > S(1) ? SweepExit::EntryAfterStep
-                                          : SweepExit::EntryAfterExit;
-    }
+    // A latest entry after t = 1 ended its own block (`ends`), so what is left to compare is the latest entry
+    // against the earliest exit. Why the test ended is for the trace only, which the replay has.
     if constexpr (Tracer::kEnabled)
     {
         state.exit = replay.exit;
     }
-    return going;
+    return !ends.Any() && !(state.first >= state.last);
 }
 
 // SweepFaces with inc's scan unrolled for its padded vertex count.

@@ -77,6 +77,13 @@ bool MakeShapeFrom(Bytes& in, satviz::Shape& shape)
     return true;
 }
 
+// The same bits, or NaN on both sides: a NaN input gives NaN on every path, but which NaN (its sign) IEEE 754 leaves
+// open, and it follows the operand order each instruction sequence happens to use.
+bool SameBitsOrBothNaN(double a, double b)
+{
+    return (std::isnan(a) && std::isnan(b)) || std::memcmp(&a, &b, sizeof a) == 0;
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
@@ -120,13 +127,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     {
         std::abort();
     }
-    // Traced and untraced results are bit-identical. A NaN transform gives NaN on both sides, but which NaN (its
-    // sign) is not defined by IEEE 754 and follows the operand order each instruction sequence happens to use.
-    const bool bothNaN = std::isnan(m.depth) && std::isnan(traced.depth);
-    if ((!bothNaN && std::memcmp(&m.depth, &traced.depth, sizeof(double)) != 0) || m.overlap != traced.overlap ||
+    if (!SameBitsOrBothNaN(m.depth, traced.depth) || m.overlap != traced.overlap ||
         m.contactCount != traced.contactCount)
     {
-        std::abort();
+        std::abort(); // traced and untraced results are bit-identical
     }
     if (m.contactCount < 0 || m.contactCount > 2)
     {
@@ -139,9 +143,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         std::abort();
     }
     const satviz::SweepResult plainSweep = satviz::Sweep(a, xfA, vA, b, xfB, vB);
-    const bool bothNaNToi = std::isnan(sweep.toi) && std::isnan(plainSweep.toi);
-    if (plainSweep.status != sweep.status ||
-        (!bothNaNToi && std::memcmp(&plainSweep.toi, &sweep.toi, sizeof(double)) != 0))
+    if (plainSweep.status != sweep.status || !SameBitsOrBothNaN(plainSweep.toi, sweep.toi))
     {
         std::abort(); // traced and untraced sweeps agree
     }
