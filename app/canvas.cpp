@@ -61,7 +61,7 @@ bool Contains(const Body& body, Vec2 world)
     const auto& poly = body.shape.polygon;
     for (int i = 0; i < poly.Count(); ++i)
     {
-        if (Cross(poly.edges[i], local - poly.vertices[i]) < 0.0)
+        if (Cross(poly.Edge(i), local - poly.vertices[i]) < 0.0)
         {
             return false;
         }

@@ -33,7 +33,8 @@ TEST_CASE("A valid convex polygon gets edges and unit outward normals", "[polygo
     REQUIRE(result.Ok());
     const Polygon& p = result.polygon;
     REQUIRE(p.Count() == 4);
-    CHECK(p.edges[0] == Vec2{2, 0});
+    CHECK(p.Edge(0) == Vec2{2, 0});
+    CHECK(p.Edge(3) == Vec2{0, -1});
     CHECK(p.normals[0] == Vec2{0, -1});
     CHECK(p.normals[1] == Vec2{1, 0});
     CHECK(p.normals[2] == Vec2{0, 1});

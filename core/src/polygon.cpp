@@ -172,15 +172,14 @@ PolygonResultT<S> MakePolygon(const std::vector<Vec2T<S>>& input, PolygonOptions
         return Fail<S>(PolygonError::SelfIntersecting, -1);
     }
 
-    // One block: vertices, then edges, then normals.
-    std::vector<Vec2T<S>> storage(3 * static_cast<size_t>(n));
+    // One block: the vertices, vertex 0 again (so that edges need no wrapped index), then the normals.
+    std::vector<Vec2T<S>> storage(2 * static_cast<size_t>(n) + 1);
     for (int i = 0; i < n; ++i)
     {
-        const Vec2T<S> edge = points[(i + 1) % n] - points[i];
         storage[i] = points[i];
-        storage[n + i] = edge;
-        storage[2 * n + i] = Normalize(RightPerp(edge));
+        storage[n + 1 + i] = Normalize(RightPerp(points[(i + 1) % n] - points[i]));
     }
+    storage[n] = points[0];
     // Area centroid as the area-weighted mean of the triangles fanned from vertex 0, relative to vertex 0.
     S area = S(0);
     Vec2T<S> moment{};

@@ -68,7 +68,7 @@ int WalkToSupport(const PolygonT<S>& polygon, Vec2T<S> d, int start)
 {
     const int n = polygon.Count();
     int j = start;
-    for (int steps = 0; steps < n && Dot(d, polygon.edges[j]) > S(0); ++steps)
+    for (int steps = 0; steps < n && Dot(d, polygon.Edge(j)) > S(0); ++steps)
     {
         j = Next(j, n);
     }
@@ -81,7 +81,7 @@ int WalkToSupport(const PolygonT<S>& polygon, Vec2T<S> d, int start)
 template <typename S>
 int ClimbToSupport(const PolygonT<S>& polygon, Vec2T<S> d)
 {
-    if (Dot(d, polygon.edges[0]) > S(0))
+    if (Dot(d, polygon.Edge(0)) > S(0))
     {
         return WalkToSupport(polygon, d, 0);
     }
@@ -90,7 +90,7 @@ int ClimbToSupport(const PolygonT<S>& polygon, Vec2T<S> d)
     for (int steps = 0; steps < n; ++steps)
     {
         const int p = Prev(j, n);
-        if (Dot(d, polygon.edges[p]) > S(0))
+        if (Dot(d, polygon.Edge(p)) > S(0))
         {
             break;
         }
@@ -522,7 +522,7 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
     for (int k = 0; k < n; ++k)
     {
         const int i = kScan ? k : (start + k < n ? start + k : start + k - n);
-        const Vec2T<S> normal = kUnit ? ref.normals[i] : RightPerp(ref.edges[i]);
+        const Vec2T<S> normal = kUnit ? ref.normals[i] : RightPerp(ref.Edge(i));
         S separation;
         if constexpr (kScan)
         {
@@ -556,7 +556,7 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
         {
             const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
             support = k == 0 ? ClimbToSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
-            if (Tracer::kSkipParallel && second && Dot(d, inc.polygon.edges[support]) == S(0))
+            if (Tracer::kSkipParallel && second && Dot(d, inc.polygon.Edge(support)) == S(0))
             {
                 if constexpr (Tracer::kEnabled)
                 {
@@ -668,7 +668,7 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
             contained = queryA.support;
             for (int i = 0; i < a.Count(); ++i)
             {
-                if (Dot(RightPerp(a.edges[i]), w - a.vertices[i]) > S(0))
+                if (Dot(RightPerp(a.Edge(i)), w - a.vertices[i]) > S(0))
                 {
                     contained = -1;
                     break;
@@ -710,11 +710,11 @@ int ClimbFrom(const PolygonT<S>& polygon, Vec2T<S> d, int start)
 {
     const int n = polygon.Count();
     int i = start;
-    for (int k = 0; k < n && Dot(d, polygon.edges[i]) > S(0); ++k)
+    for (int k = 0; k < n && Dot(d, polygon.Edge(i)) > S(0); ++k)
     {
         i = Next(i, n);
     }
-    for (int k = 0; k < n && Dot(d, polygon.edges[Prev(i, n)]) < S(0); ++k)
+    for (int k = 0; k < n && Dot(d, polygon.Edge(Prev(i, n))) < S(0); ++k)
     {
         i = Prev(i, n);
     }
@@ -739,7 +739,7 @@ bool OverlapPolygonsCached(const PolygonT<S>& a, const TransformT<S>& xfA, const
         if (cached.index >= 0 && cached.index < ref.Count())
         {
             const TransformT<S> incInRef = cached.shape == 0 ? InvMulTransforms(xfA, xfB) : InvMulTransforms(xfB, xfA);
-            const Vec2T<S> normal = RightPerp(ref.edges[cached.index]);
+            const Vec2T<S> normal = RightPerp(ref.Edge(cached.index));
             const int start = cachedSupport >= 0 && cachedSupport < inc.Count() ? cachedSupport : 0;
             const int support = ClimbFrom(inc, InvRotate(incInRef.q, -normal), start);
             const S separation =

@@ -375,7 +375,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     // largest coordinate extent, within a factor sqrt(2) of its length and without a square root).
     const Vec2T<S> offset = inc.xf.p;
     const Vec2T<S> face = ref.vertices[firstAxis.index];
-    const Vec2T<S> edge = ref.edges[firstAxis.index];
+    const Vec2T<S> edge = ref.Edge(firstAxis.index);
     const S scale = std::max({std::abs(offset.x), std::abs(offset.y), std::abs(face.x), std::abs(face.y),
                               std::abs(edge.x), std::abs(edge.y)});
     const S slop = S(64) * std::numeric_limits<S>::epsilon() * scale;
@@ -429,8 +429,8 @@ S CastRounded(const PolygonT<S>& polygon, Vec2T<S> p0, Vec2T<S> v, S r, Vec2T<S>
         }
         const S t = separation / -rate;
         const Vec2T<S> along = p0 + t * v - polygon.vertices[i];
-        const S u = Dot(along, polygon.edges[i]);
-        if (t < best && u >= S(0) && u <= LengthSquared(polygon.edges[i]))
+        const S u = Dot(along, polygon.Edge(i));
+        if (t < best && u >= S(0) && u <= LengthSquared(polygon.Edge(i)))
         {
             best = t;
             normal = n;

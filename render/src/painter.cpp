@@ -452,7 +452,7 @@ class Painter
             const auto& poly = body.shape.polygon;
             for (int i = 0; i < poly.Count(); ++i)
             {
-                const Vec2 mid = TransformPoint(xf, poly.vertices[i] + 0.5 * poly.edges[i]);
+                const Vec2 mid = TransformPoint(xf, poly.vertices[i] + 0.5 * poly.Edge(i));
                 const Vec2 n = Rotate(xf.q, poly.normals[i]);
                 const ScreenPoint a = At(mid);
                 Arrow(canvas_, a, {a.x + 22.0f * static_cast<float>(n.x), a.y - 22.0f * static_cast<float>(n.y)},
@@ -781,7 +781,7 @@ class Painter
                 }
                 for (int i = 0; edgeNumbers && i < poly.Count(); ++i)
                 {
-                    const Vec2 mid = TransformPoint(xf, poly.vertices[i] + 0.5 * poly.edges[i]);
+                    const Vec2 mid = TransformPoint(xf, poly.vertices[i] + 0.5 * poly.Edge(i));
                     const Vec2 n = Rotate(xf.q, poly.normals[i]);
                     labels_.Place(At(mid), "e" + std::to_string(i), TextStyle::Label, WithAlpha(InkOf(s), 0.75f),
                                   static_cast<float>(n.x), static_cast<float>(-n.y), 5.0f, true);

@@ -143,18 +143,18 @@ inline RandomPair ContactPair(Rng& rng, int n, PairCategory category, double sli
 
     // A boundary point of A, on an edge chosen by length.
     double perimeter = 0.0;
-    for (const Vec2& e : a.edges)
+    for (int i = 0; i < a.Count(); ++i)
     {
-        perimeter += Length(e);
+        perimeter += Length(a.Edge(i));
     }
     double pick = rng.Uniform(0.0, perimeter);
     int edge = 0;
-    while (edge + 1 < a.Count() && pick > Length(a.edges[edge]))
+    while (edge + 1 < a.Count() && pick > Length(a.Edge(edge)))
     {
-        pick -= Length(a.edges[edge]);
+        pick -= Length(a.Edge(edge));
         ++edge;
     }
-    const Vec2 point = a.vertices[edge] + rng.Uniform(0.1, 0.9) * a.edges[edge];
+    const Vec2 point = a.vertices[edge] + rng.Uniform(0.1, 0.9) * a.Edge(edge);
     const Vec2 normal = a.normals[edge];
 
     // B's rotation relative to A, and the vertex of B that touches the point.

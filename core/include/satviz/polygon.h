@@ -29,10 +29,11 @@ struct Vec2Span
 
 /// A convex polygon in its body frame: counter-clockwise vertices (interior to the left of each edge), y up.
 /// Any vertex count from 3 upwards; there is no fixed cap. Edge i runs from vertex i to vertex i + 1 (mod count).
-/// Vertices, edges and normals live in one block: inside the polygon itself up to kInlineVertices vertices, so a
-/// query on small polygons touches no other memory, and in one heap allocation beyond that.
+/// Vertices and normals live in one block: inside the polygon itself up to kInlineVertices vertices, so a query on
+/// small polygons touches no other memory, and in one heap allocation beyond that. Edges are not stored: Edge(i)
+/// subtracts two vertices, which costs less than the memory an edge array would take from every query.
 /// Build polygons with MakePolygon, ComputeHull, MakeBox or MakeRegularPolygon, which validate the outline and
-/// precompute the edges and normals consistently; a default-constructed polygon is empty.
+/// precompute the normals consistently; a default-constructed polygon is empty.
 template <typename S>
 class PolygonT
 {
@@ -41,8 +42,7 @@ class PolygonT
     static constexpr int kInlineVertices = 8;
 
     Vec2Span<S> vertices; ///< vertices in the body frame, counter-clockwise, strictly convex
-    Vec2Span<S> edges;    ///< edges[i] = vertices[i + 1] - vertices[i]
-    Vec2Span<S> normals;  ///< unit outward normal of edge i: RightPerp(edges[i]) / |edges[i]|
+    Vec2Span<S> normals;  ///< unit outward normal of edge i: RightPerp(Edge(i)) / |Edge(i)|
     Vec2T<S> centroid{};  ///< area centroid, body frame
 
     /// An empty polygon.
@@ -73,12 +73,16 @@ class PolygonT
     /// Number of vertices.
     int Count() const { return m_count; }
 
-    /// Takes validated data: `storage` holds the vertices, then the edges, then the normals (3 * count vectors).
-    /// Used by the builders; callers outside them would break the invariants.
+    /// Edge i (0 <= i < Count()): vertices[i + 1] - vertices[i], where vertex Count() is vertex 0. The block keeps
+    /// a copy of vertex 0 after the last vertex, so no index wraps.
+    Vec2T<S> Edge(int i) const { return vertices.data[i + 1] - vertices.data[i]; }
+
+    /// Takes validated data: `storage` holds the count vertices, vertex 0 again, then the count normals
+    /// (2 * count + 1 vectors). Used by the builders; callers outside them would break the invariants.
     static PolygonT FromStorage(std::vector<Vec2T<S>> storage, Vec2T<S> centroid)
     {
         PolygonT polygon;
-        polygon.m_count = static_cast<int>(storage.size() / 3);
+        polygon.m_count = static_cast<int>(storage.size() / 2);
         polygon.centroid = centroid;
         if (polygon.m_count <= kInlineVertices)
         {
@@ -97,7 +101,7 @@ class PolygonT
     {
         m_count = other.m_count;
         centroid = other.centroid;
-        std::copy(other.m_inline, other.m_inline + 3 * kInlineVertices, m_inline);
+        std::copy(other.m_inline, other.m_inline + kInlineStorage, m_inline);
         m_heap = other.m_heap;
         Bind();
     }
@@ -106,7 +110,7 @@ class PolygonT
     {
         m_count = other.m_count;
         centroid = other.centroid;
-        std::copy(other.m_inline, other.m_inline + 3 * kInlineVertices, m_inline);
+        std::copy(other.m_inline, other.m_inline + kInlineStorage, m_inline);
         m_heap = std::move(other.m_heap);
         Bind();
         other.m_count = other.m_count <= kInlineVertices ? other.m_count : 0;
@@ -118,12 +122,12 @@ class PolygonT
         const int n = m_count;
         const Vec2T<S>* base = n <= kInlineVertices ? m_inline : m_heap.data();
         vertices = {base, n};
-        edges = {base + n, n};
-        normals = {base + 2 * n, n};
+        normals = {base + n + 1, n};
     }
 
+    static constexpr int kInlineStorage = 2 * kInlineVertices + 1;
     int m_count = 0;
-    Vec2T<S> m_inline[3 * kInlineVertices]{};
+    Vec2T<S> m_inline[kInlineStorage]{};
     std::vector<Vec2T<S>> m_heap;
 };
 
