@@ -35,10 +35,10 @@ TEST_CASE("A valid convex polygon gets edges and unit outward normals", "[polygo
     REQUIRE(p.Count() == 4);
     CHECK(p.Edge(0) == Vec2{2, 0});
     CHECK(p.Edge(3) == Vec2{0, -1});
-    CHECK(p.normals[0] == Vec2{0, -1});
-    CHECK(p.normals[1] == Vec2{1, 0});
-    CHECK(p.normals[2] == Vec2{0, 1});
-    CHECK(p.normals[3] == Vec2{-1, 0});
+    CHECK(p.Normal(0) == Vec2{0, -1});
+    CHECK(p.Normal(1) == Vec2{1, 0});
+    CHECK(p.Normal(2) == Vec2{0, 1});
+    CHECK(p.Normal(3) == Vec2{-1, 0});
 }
 
 TEST_CASE("Invalid outlines are reported with the offending vertex", "[polygon]")
@@ -142,5 +142,5 @@ TEST_CASE("Regular polygons up to 4096 vertices, in double and float", "[polygon
     CHECK(MakeRegularPolygon(2, 1.0).error == PolygonError::TooFewVertices);
     const PolygonResultT<float> box = MakeBox(1.0f, 2.0f);
     REQUIRE(box.Ok());
-    CHECK(box.polygon.normals[1] == Vec2f{1.0f, 0.0f});
+    CHECK(box.polygon.Normal(1) == Vec2f{1.0f, 0.0f});
 }

@@ -196,7 +196,7 @@ TEST_CASE("A saved scene reads back as the same scene, bit for bit", "[scene]")
                 for (int k = 0; k < x.shape.polygon.Count(); ++k)
                 {
                     CHECK(x.shape.polygon.vertices[k] == y.shape.polygon.vertices[k]);
-                    CHECK(x.shape.polygon.normals[k] == y.shape.polygon.normals[k]);
+                    CHECK(x.shape.polygon.Normal(k) == y.shape.polygon.Normal(k));
                 }
             }
             else

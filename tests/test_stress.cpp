@@ -282,7 +282,7 @@ void NearlyCollinear()
             const Polygon hex = MakeRegularPolygon(6, 1.0, rng.Uniform(0.0, 1.0)).polygon;
             std::vector<Vec2> points(hex.vertices.begin(), hex.vertices.end());
             const Vec2 mid = 0.5 * (points[0] + points[1]);
-            points.insert(points.begin() + 1, mid + eps * hex.normals[0]);
+            points.insert(points.begin() + 1, mid + eps * hex.Normal(0));
             const PolygonResult result = MakePolygon(points);
             if (!result.Ok())
             {

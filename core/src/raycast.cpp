@@ -27,7 +27,7 @@ RayHitT<S> RayCast(const PolygonT<S>& polygon, const TransformT<S>& xf, Vec2T<S>
     bool inside = true;
     for (int i = 0; i < polygon.Count(); ++i)
     {
-        const Vec2T<S> n = polygon.normals[i];
+        const Vec2T<S> n = polygon.Normal(i);
         const S s = Dot(n, q - polygon.vertices[i]);
         const S e = Dot(n, d);
         inside = inside && s <= S(0);
@@ -73,7 +73,7 @@ RayHitT<S> RayCast(const PolygonT<S>& polygon, const TransformT<S>& xf, Vec2T<S>
     out.fraction = enter;
     out.edge = face;
     out.point = p1 + enter * (p2 - p1);
-    out.normal = Rotate(xf.q, polygon.normals[face]);
+    out.normal = Rotate(xf.q, polygon.Normal(face));
     return out;
 }
 

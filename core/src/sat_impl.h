@@ -441,10 +441,10 @@ template <typename S>
 int FaceTowards(const PolygonT<S>& polygon, Vec2T<S> point)
 {
     int best = 0;
-    S high = Dot(polygon.normals[0], point - polygon.vertices[0]);
+    S high = Dot(polygon.Normal(0), point - polygon.vertices[0]);
     for (int i = 1; i < polygon.Count(); ++i)
     {
-        const S d = Dot(polygon.normals[i], point - polygon.vertices[i]);
+        const S d = Dot(polygon.Normal(i), point - polygon.vertices[i]);
         best = Select(d > high, i, best);
         high = std::max(d, high);
     }
@@ -464,10 +464,10 @@ uint64_t AntiParallelFaces(const PolygonT<S>& a, const PolygonT<S>& b, const Rot
     }
     for (int j = 0; j < b.Count(); ++j)
     {
-        const Vec2T<S> nb = Rotate(bInA, b.normals[j]);
+        const Vec2T<S> nb = Rotate(bInA, b.Normal(j));
         for (int k = 0; k < a.Count(); ++k)
         {
-            if (Cross(nb, a.normals[k]) == S(0) && Dot(nb, a.normals[k]) < S(0))
+            if (Cross(nb, a.Normal(k)) == S(0) && Dot(nb, a.Normal(k)) < S(0))
             {
                 mask |= uint64_t(1) << j;
                 break;
@@ -522,7 +522,7 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
     for (int k = 0; k < n; ++k)
     {
         const int i = kScan ? k : (start + k < n ? start + k : start + k - n);
-        const Vec2T<S> normal = kUnit ? ref.normals[i] : RightPerp(ref.Edge(i));
+        const Vec2T<S> normal = kUnit ? ref.Normal(i) : RightPerp(ref.Edge(i));
         S separation;
         if constexpr (kScan)
         {
@@ -831,13 +831,13 @@ ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentP
     const int m = inc.polygon.Count();
     const Vec2T<S> v1 = ref.vertices[face];
     const Vec2T<S> v2 = ref.vertices[Next(face, ref.Count())];
-    const Vec2T<S> normal = ref.normals[face];
+    const Vec2T<S> normal = ref.Normal(face);
     const Vec2T<S> tangent = LeftPerp(normal);
 
     const int s = support >= 0 ? support : inc.template Support<kWide>(normal);
     const int before = Prev(s, m);
-    const S dotLeaving = Dot(normal, Rotate(inc.xf.q, inc.polygon.normals[s]));
-    const S dotEntering = Dot(normal, Rotate(inc.xf.q, inc.polygon.normals[before]));
+    const S dotLeaving = Dot(normal, Rotate(inc.xf.q, inc.polygon.Normal(s)));
+    const S dotEntering = Dot(normal, Rotate(inc.xf.q, inc.polygon.Normal(before)));
     out.incidentEdge = Select(dotEntering < dotLeaving, before, s);
     out.w1 = TransformPoint(inc.xf, inc.polygon.vertices[out.incidentEdge]);
     out.w2 = TransformPoint(inc.xf, inc.polygon.vertices[Next(out.incidentEdge, m)]);
@@ -885,7 +885,7 @@ ClipTraceT<S> ClipTraceOf(const ClipResult<S>& r, const AxisRef& reference, cons
     clip.reference = reference;
     clip.referenceV1 = TransformPoint(xfRef, ref.vertices[reference.index]);
     clip.referenceV2 = TransformPoint(xfRef, ref.vertices[Next(reference.index, ref.Count())]);
-    clip.referenceNormal = Rotate(xfRef.q, ref.normals[reference.index]);
+    clip.referenceNormal = Rotate(xfRef.q, ref.Normal(reference.index));
     clip.incidentShape = incidentShape;
     clip.incidentEdge = r.incidentEdge;
     clip.incidentV1 = TransformPoint(xfInc, inc.vertices[r.incidentEdge]);
@@ -925,7 +925,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     if (queryA.separated)
     {
         manifold.gap = queryA.separation;
-        manifold.normal = Rotate(xfA.q, a.normals[queryA.face]);
+        manifold.normal = Rotate(xfA.q, a.Normal(queryA.face));
         manifold.axis = {AxisKind::FaceNormal, 0, queryA.face};
         if constexpr (Tracer::kEnabled)
         {
@@ -939,7 +939,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     if (queryB.separated)
     {
         manifold.gap = queryB.separation;
-        manifold.normal = -Rotate(xfB.q, b.normals[queryB.face]);
+        manifold.normal = -Rotate(xfB.q, b.Normal(queryB.face));
         manifold.axis = {AxisKind::FaceNormal, 1, queryB.face};
         if constexpr (Tracer::kEnabled)
         {
@@ -965,7 +965,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     manifold.contactCount = clip.contactCount;
     manifold.overlap = true;
     manifold.depth = -query.separation;
-    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.normals[query.face]);
+    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(query.face));
     manifold.normal = flip ? -worldNormal : worldNormal;
     manifold.axis = {AxisKind::FaceNormal, flip ? 1 : 0, query.face};
     manifold.incidentEdge = clip.incidentEdge;
@@ -1009,7 +1009,7 @@ ManifoldT<S> CollidePolygonCircle(const PolygonT<S>& polygon, const TransformT<S
     int bestFace = 0;
     for (int i = 0; i < n; ++i)
     {
-        const S s = Dot(polygon.normals[i], c - polygon.vertices[i]);
+        const S s = Dot(polygon.Normal(i), c - polygon.vertices[i]);
         const bool separating = s > r;
         if (s > bestSeparation)
         {
@@ -1018,14 +1018,14 @@ ManifoldT<S> CollidePolygonCircle(const PolygonT<S>& polygon, const TransformT<S
         }
         if constexpr (Tracer::kEnabled)
         {
-            tracer.FaceAxis(polySide, i, polygon.normals[i], s - r, -1, separating);
+            tracer.FaceAxis(polySide, i, polygon.Normal(i), s - r, -1, separating);
         }
         if (separating)
         {
             if constexpr (kManifold)
             {
                 manifold.gap = s - r;
-                manifold.normal = orient * Rotate(xfP.q, polygon.normals[i]);
+                manifold.normal = orient * Rotate(xfP.q, polygon.Normal(i));
                 manifold.axis = {AxisKind::FaceNormal, polySide, i};
             }
             if constexpr (Tracer::kEnabled)
@@ -1092,7 +1092,7 @@ ManifoldT<S> CollidePolygonCircle(const PolygonT<S>& polygon, const TransformT<S
         manifold.overlap = true;
         if constexpr (kManifold)
         {
-            const Vec2T<S> normal = polygon.normals[bestFace];
+            const Vec2T<S> normal = polygon.Normal(bestFace);
             manifold.depth = r - bestSeparation;
             manifold.normal = orient * Rotate(xfP.q, normal);
             manifold.axis = {AxisKind::FaceNormal, polySide, bestFace};

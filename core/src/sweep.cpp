@@ -75,7 +75,7 @@ class SweepRecorder
     void Axis(int side, int face, S separation, S rate, S entry, S exit, bool endsTest)
     {
         const Vec2T<S> direction =
-            side == 0 ? Rotate(m_xfA.q, m_a.polygon->normals[face]) : -Rotate(m_xfB.q, m_b.polygon->normals[face]);
+            side == 0 ? Rotate(m_xfA.q, m_a.polygon->Normal(face)) : -Rotate(m_xfB.q, m_b.polygon->Normal(face));
         AxisWorld({AxisKind::FaceNormal, side, face}, direction, separation, rate, entry, exit, endsTest);
     }
 
@@ -230,7 +230,7 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
         {
             const int i = std::min(i0 + l, n - 1);
             place[l] = S(side * kSideStride + i);
-            const Vec2T<S> normal = ref.normals[i];
+            const Vec2T<S> normal = ref.Normal(i);
             if constexpr (kScan)
             {
                 separation[l] = FaceSeparation<N, false, Tracer::kWide>(
@@ -368,7 +368,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     const TransformT<S> xfRef = flip ? Moved(xfB, vB, first) : Moved(xfA, vA, first);
     const TransformT<S> xfInc = flip ? Moved(xfA, vA, first) : Moved(xfB, vB, first);
     const IncidentPolygon<S> inc(flip ? a : b, InvMulTransforms(xfRef, xfInc));
-    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.normals[firstAxis.index]);
+    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(firstAxis.index));
     result.normal = flip ? -worldNormal : worldNormal;
     // At the time of impact the touching points are at zero distance up to rounding of either sign, which scales
     // with the coordinates in the reference frame: the offset between the frames and the face's own size (its
@@ -420,7 +420,7 @@ S CastRounded(const PolygonT<S>& polygon, Vec2T<S> p0, Vec2T<S> v, S r, Vec2T<S>
     S best = kInfinity<S>;
     for (int i = 0; i < polygon.Count(); ++i)
     {
-        const Vec2T<S> n = polygon.normals[i];
+        const Vec2T<S> n = polygon.Normal(i);
         const S separation = Dot(n, p0 - polygon.vertices[i]) - r;
         const S rate = Dot(n, v);
         if (separation < S(0) || rate >= S(0))
@@ -565,7 +565,7 @@ SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
             for (int i = 0; i < other.polygon.Count(); ++i)
             {
                 tracer.AxisFromShapes({AxisKind::FaceNormal, otherSide, i},
-                                      orient * Rotate(xfOther.q, other.polygon.normals[i]));
+                                      orient * Rotate(xfOther.q, other.polygon.Normal(i)));
             }
         }
         else

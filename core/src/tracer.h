@@ -119,7 +119,7 @@ class TraceRecorder : public AlgorithmChoices
     {
         AxisTestT<S> test;
         test.axis = {AxisKind::FaceNormal, 1, face};
-        test.direction = Rotate(m_xfB.q, m_b.polygon->normals[face]);
+        test.direction = Rotate(m_xfB.q, m_b.polygon->Normal(face));
         test.skipped = true;
         S lowest = std::numeric_limits<S>::infinity();
         for (size_t i = 0; i < m_trace.axes.size(); ++i)

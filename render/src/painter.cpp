@@ -389,7 +389,7 @@ class Painter
             if (body.shape.type == ShapeType::Polygon && body.shape.polygon.Count() <= 64)
             {
                 const Rot q = body.Xf().q;
-                for (const Vec2& n : body.shape.polygon.normals)
+                for (const Vec2& n : body.shape.polygon.Normals())
                 {
                     line(Rotate(q, n));
                 }
@@ -453,7 +453,7 @@ class Painter
             for (int i = 0; i < poly.Count(); ++i)
             {
                 const Vec2 mid = TransformPoint(xf, poly.vertices[i] + 0.5 * poly.Edge(i));
-                const Vec2 n = Rotate(xf.q, poly.normals[i]);
+                const Vec2 n = Rotate(xf.q, poly.Normal(i));
                 const ScreenPoint a = At(mid);
                 Arrow(canvas_, a, {a.x + 22.0f * static_cast<float>(n.x), a.y - 22.0f * static_cast<float>(n.y)},
                       InkOf(s), 1.5f, 7.0f);
@@ -538,7 +538,7 @@ class Painter
             const Vec2 v2 = TransformPoint(xf, poly.vertices[(ref.index + 1) % poly.Count()]);
             canvas_.Segment(At(v1), At(v2), color, 4.0f);
             const ScreenPoint mid = At(0.5 * (v1 + v2));
-            const Vec2 n = Rotate(xf.q, poly.normals[ref.index]);
+            const Vec2 n = Rotate(xf.q, poly.Normal(ref.index));
             Arrow(canvas_, mid, {mid.x + 30.0f * static_cast<float>(n.x), mid.y - 30.0f * static_cast<float>(n.y)},
                   color, 2.0f, 9.0f);
         }
@@ -782,7 +782,7 @@ class Painter
                 for (int i = 0; edgeNumbers && i < poly.Count(); ++i)
                 {
                     const Vec2 mid = TransformPoint(xf, poly.vertices[i] + 0.5 * poly.Edge(i));
-                    const Vec2 n = Rotate(xf.q, poly.normals[i]);
+                    const Vec2 n = Rotate(xf.q, poly.Normal(i));
                     labels_.Place(At(mid), "e" + std::to_string(i), TextStyle::Label, WithAlpha(InkOf(s), 0.75f),
                                   static_cast<float>(n.x), static_cast<float>(-n.y), 5.0f, true);
                 }

@@ -214,7 +214,7 @@ b2PolygonShape ToBox2D(const Polygon& polygon)
     for (int i = 0; i < polygon.Count(); ++i)
     {
         shape.m_vertices[i].Set(static_cast<float>(polygon.vertices[i].x), static_cast<float>(polygon.vertices[i].y));
-        shape.m_normals[i].Set(static_cast<float>(polygon.normals[i].x), static_cast<float>(polygon.normals[i].y));
+        shape.m_normals[i].Set(static_cast<float>(polygon.Normal(i).x), static_cast<float>(polygon.Normal(i).y));
         centroid += shape.m_vertices[i];
     }
     shape.m_centroid = (1.0f / static_cast<float>(polygon.Count())) * centroid;

@@ -155,7 +155,7 @@ inline RandomPair ContactPair(Rng& rng, int n, PairCategory category, double sli
         ++edge;
     }
     const Vec2 point = a.vertices[edge] + rng.Uniform(0.1, 0.9) * a.Edge(edge);
-    const Vec2 normal = a.normals[edge];
+    const Vec2 normal = a.Normal(edge);
 
     // B's rotation relative to A, and the vertex of B that touches the point.
     double angleB = rng.Uniform(-kPi, kPi);
@@ -164,7 +164,7 @@ inline RandomPair ContactPair(Rng& rng, int n, PairCategory category, double sli
     {
         // Edge against edge: turn B so that its edge j faces A's edge.
         const int j = rng.Int(0, n - 1);
-        const Vec2 nb = b.normals[j];
+        const Vec2 nb = b.Normal(j);
         angleB = std::atan2(-normal.y, -normal.x) - std::atan2(nb.y, nb.x);
         touching = j;
     }

@@ -42,7 +42,6 @@ class PolygonT
     static constexpr int kInlineVertices = 8;
 
     Vec2Span<S> vertices; ///< vertices in the body frame, counter-clockwise, strictly convex
-    Vec2Span<S> normals;  ///< unit outward normal of edge i: RightPerp(Edge(i)) / |Edge(i)|
     Vec2T<S> centroid{};  ///< area centroid, body frame
 
     /// An empty polygon.
@@ -72,6 +71,12 @@ class PolygonT
 
     /// Number of vertices.
     int Count() const { return m_count; }
+
+    /// Unit outward normal of edge i (0 <= i < Count()): RightPerp(Edge(i)) / |Edge(i)|.
+    const Vec2T<S>& Normal(int i) const { return vertices.data[m_count + 1 + i]; }
+
+    /// The unit outward normals of all edges, in edge order.
+    Vec2Span<S> Normals() const { return {vertices.data + m_count + 1, m_count}; }
 
     /// Edge i (0 <= i < Count()): vertices[i + 1] - vertices[i], where vertex Count() is vertex 0. The block keeps
     /// a copy of vertex 0 after the last vertex, so no index wraps.
@@ -122,7 +127,6 @@ class PolygonT
         const int n = m_count;
         const Vec2T<S>* base = n <= kInlineVertices ? m_inline : m_heap.data();
         vertices = {base, n};
-        normals = {base + n + 1, n};
     }
 
     static constexpr int kInlineStorage = 2 * kInlineVertices + 1;
