@@ -80,6 +80,18 @@ struct Lanes
     {
         return Map(a, a, [](S x, S) { return -x; });
     }
+    friend Lanes operator+(Lanes a, Lanes b)
+    {
+        return Map(a, b, [](S x, S y) { return x + y; });
+    }
+    friend Lanes operator-(Lanes a, Lanes b)
+    {
+        return Map(a, b, [](S x, S y) { return x - y; });
+    }
+    friend Lanes operator*(Lanes a, Lanes b)
+    {
+        return Map(a, b, [](S x, S y) { return x * y; });
+    }
     friend Lanes operator/(Lanes a, Lanes b)
     {
         return Map(a, b, [](S x, S y) { return x / y; });
@@ -167,6 +179,9 @@ struct Lanes<double, false>
         const __m128d sign = _mm_set1_pd(-0.0);
         return {_mm_xor_pd(a.lo, sign), _mm_xor_pd(a.hi, sign)};
     }
+    friend Lanes operator+(const Lanes& a, const Lanes& b) { return {_mm_add_pd(a.lo, b.lo), _mm_add_pd(a.hi, b.hi)}; }
+    friend Lanes operator-(const Lanes& a, const Lanes& b) { return {_mm_sub_pd(a.lo, b.lo), _mm_sub_pd(a.hi, b.hi)}; }
+    friend Lanes operator*(const Lanes& a, const Lanes& b) { return {_mm_mul_pd(a.lo, b.lo), _mm_mul_pd(a.hi, b.hi)}; }
     friend Lanes operator/(const Lanes& a, const Lanes& b) { return {_mm_div_pd(a.lo, b.lo), _mm_div_pd(a.hi, b.hi)}; }
     friend Mask operator>(const Lanes& a, const Lanes& b)
     {
@@ -259,6 +274,9 @@ struct Lanes<double, true>
     {
         return {_mm256_xor_pd(a.v, _mm256_set1_pd(-0.0))};
     }
+    [[gnu::target("avx2")]] friend Lanes operator+(const Lanes& a, const Lanes& b) { return {_mm256_add_pd(a.v, b.v)}; }
+    [[gnu::target("avx2")]] friend Lanes operator-(const Lanes& a, const Lanes& b) { return {_mm256_sub_pd(a.v, b.v)}; }
+    [[gnu::target("avx2")]] friend Lanes operator*(const Lanes& a, const Lanes& b) { return {_mm256_mul_pd(a.v, b.v)}; }
     [[gnu::target("avx2")]] friend Lanes operator/(const Lanes& a, const Lanes& b) { return {_mm256_div_pd(a.v, b.v)}; }
     [[gnu::target("avx2")]] friend Mask operator>(const Lanes& a, const Lanes& b)
     {

@@ -223,34 +223,55 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     int support = 0;
     for (int i0 = 0; i0 < n && !ends.Any(); i0 += 4)
     {
-        S separation[4];
-        S rate[4];
-        S place[4];
-        for (int l = 0; l < 4; ++l)
+        // The block's faces; the last block repeats the last face.
+        const int i1 = std::min(i0 + 1, n - 1);
+        const int i2 = std::min(i0 + 2, n - 1);
+        const int i3 = std::min(i0 + 3, n - 1);
+        const Vec2T<S>& n0 = ref.Normal(i0);
+        const Vec2T<S>& n1 = ref.Normal(i1);
+        const Vec2T<S>& n2 = ref.Normal(i2);
+        const Vec2T<S>& n3 = ref.Normal(i3);
+        const L nx = L::Set(n0.x, n1.x, n2.x, n3.x);
+        const L ny = L::Set(n0.y, n1.y, n2.y, n3.y);
+        L separations;
+        if constexpr (kScan)
         {
-            const int i = std::min(i0 + l, n - 1);
-            place[l] = S(side * kSideStride + i);
-            const Vec2T<S> normal = ref.Normal(i);
-            if constexpr (kScan)
+            // The four faces side by side: each vertex of inc is projected on all four normals at once and the
+            // minimum kept per lane, so no minimum is taken across lanes. The same products, sums and minimum as
+            // FaceSeparation, so the same bits.
+            const Vec2T<S>& v0 = ref.vertices[i0];
+            const Vec2T<S>& v1 = ref.vertices[i1];
+            const Vec2T<S>& v2 = ref.vertices[i2];
+            const Vec2T<S>& v3 = ref.vertices[i3];
+            const L offset = nx * L::Set(v0.x, v1.x, v2.x, v3.x) + ny * L::Set(v0.y, v1.y, v2.y, v3.y);
+            L low = nx * L::Fill(inc.x[0]) + ny * L::Fill(inc.y[0]);
+            for (int j = 1; j < N; ++j)
             {
-                separation[l] = FaceSeparation<N, false, Tracer::kWide>(
-                    inc.x, inc.y, normal, Dot(normal, ref.vertices[i]), static_cast<S*>(nullptr));
+                low = Min(low, nx * L::Fill(inc.x[j]) + ny * L::Fill(inc.y[j]));
             }
-            else
+            separations = (low - offset) + L::Fill(S(0));
+        }
+        else
+        {
+            S separation[4];
+            for (int l = 0; l < 4; ++l)
             {
+                const int i = std::min(i0 + l, n - 1);
+                const Vec2T<S> normal = ref.Normal(i);
                 const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
                 support = i == 0 ? ClimbToSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
                 separation[l] = inc.Separation(normal, ref.vertices[i], support);
             }
-            rate[l] = Dot(normal, velocity);
+            separations = L::Set(separation[0], separation[1], separation[2], separation[3]);
         }
-        const AxisLanes<L> axes(L::Set(separation[0], separation[1], separation[2], separation[3]),
-                                L::Set(rate[0], rate[1], rate[2], rate[3]));
+        const L rates = nx * L::Fill(velocity.x) + ny * L::Fill(velocity.y);
+        const AxisLanes<L> axes(separations, rates);
         // A NaN separation does not count as apart, and a NaN entry does not replace the latest one.
         inside = inside & ~axes.apart;
         const typename L::Mask later = axes.entry > first;
         first = Select(later, axes.entry, first);
-        firstIndex = Select(later, L::Set(place[0], place[1], place[2], place[3]), firstIndex);
+        const S base = S(side * kSideStride);
+        firstIndex = Select(later, L::Set(base + S(i0), base + S(i1), base + S(i2), base + S(i3)), firstIndex);
         last = Min(axes.leave, last);
         ends = axes.never | (first > L::Fill(S(1)));
         if constexpr (Tracer::kEnabled)
@@ -268,8 +289,8 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
                 }
                 replay.last = std::min(replay.last, leave);
                 replayEnded = never || replay.first > S(1) || replay.first >= replay.last;
-                tracer.Axis(side, i0 + l, separation[l], rate[l], never ? S(0) : entry, never ? kInfinity<S> : leave,
-                            replayEnded);
+                tracer.Axis(side, i0 + l, separations.Get(l), rates.Get(l), never ? S(0) : entry,
+                            never ? kInfinity<S> : leave, replayEnded);
                 if (replayEnded)
                 {
                     replay.exit = never                 ? SweepExit::NeverCloses
