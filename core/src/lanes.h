@@ -31,6 +31,14 @@ struct Lanes
     static Lanes Set(S a, S b, S c, S d) { return {{a, b, c, d}}; }
     /// Every lane x.
     static Lanes Fill(S x) { return {{x, x, x, x}}; }
+    /// Lanes p[0] to p[3] (p aligned as the widest lanes need: 32 bytes).
+    static Lanes Load(const S* p) { return {{p[0], p[1], p[2], p[3]}}; }
+    /// Every lane the value of lane k.
+    template <int k>
+    Lanes Spread() const
+    {
+        return Fill(v[k]);
+    }
     /// Lane i.
     S Get(int i) const { return v[i]; }
 
@@ -137,6 +145,16 @@ struct Lanes<double, false>
     static Lanes Set(double a, double b, double c, double d) { return {_mm_setr_pd(a, b), _mm_setr_pd(c, d)}; }
     /// Every lane x.
     static Lanes Fill(double x) { return {_mm_set1_pd(x), _mm_set1_pd(x)}; }
+    /// Lanes p[0] to p[3] (p 16-byte aligned).
+    static Lanes Load(const double* p) { return {_mm_load_pd(p), _mm_load_pd(p + 2)}; }
+    /// Every lane the value of lane k.
+    template <int k>
+    Lanes Spread() const
+    {
+        const __m128d half = k < 2 ? lo : hi;
+        const __m128d x = k % 2 == 0 ? _mm_unpacklo_pd(half, half) : _mm_unpackhi_pd(half, half);
+        return {x, x};
+    }
     /// Lane i.
     double Get(int i) const
     {
@@ -236,6 +254,14 @@ struct Lanes<double, true>
     }
     /// Every lane x.
     [[gnu::target("avx2")]] static Lanes Fill(double x) { return {_mm256_set1_pd(x)}; }
+    /// Lanes p[0] to p[3] (p 32-byte aligned).
+    [[gnu::target("avx2")]] static Lanes Load(const double* p) { return {_mm256_load_pd(p)}; }
+    /// Every lane the value of lane k.
+    template <int k>
+    [[gnu::target("avx2")]] Lanes Spread() const
+    {
+        return {_mm256_permute4x64_pd(v, k * 0x55)};
+    }
     /// Lane i.
     [[gnu::target("avx2")]] double Get(int i) const
     {

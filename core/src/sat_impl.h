@@ -478,6 +478,26 @@ uint64_t AntiParallelFaces(const PolygonT<S>& a, const PolygonT<S>& b, const Rot
     return mask;
 }
 
+/// The smallest projection of a scanned inc's N padded vertices on four normals at once (nx, ny in lanes). Four
+/// vertices are loaded at a time and spread across the lanes from registers: a load of one value out of a wider
+/// store that is still in flight may have to wait for it to reach the cache.
+template <int N, typename S, typename L>
+L ProjectionMinimum(const IncidentPolygon<S>& inc, const L& nx, const L& ny)
+{
+    L low = L::Fill(S(0));
+    for (int j = 0; j < N; j += 4)
+    {
+        const L xs = L::Load(inc.x + j);
+        const L ys = L::Load(inc.y + j);
+        const L p0 = nx * xs.template Spread<0>() + ny * ys.template Spread<0>();
+        low = j == 0 ? p0 : Min(low, p0);
+        low = Min(low, nx * xs.template Spread<1>() + ny * ys.template Spread<1>());
+        low = Min(low, nx * xs.template Spread<2>() + ny * ys.template Spread<2>());
+        low = Min(low, nx * xs.template Spread<3>() + ny * ys.template Spread<3>());
+    }
+    return low;
+}
+
 /// The face query with unit normals against a scanned inc (N its padded vertex count), four faces at a time
 /// (Gregorius's face query; the lanes as in SweepFaces):
 ///   1. A block's four faces sit side by side in the lanes: each vertex of inc is projected on the four normals at
@@ -518,11 +538,7 @@ FaceQuery<S> QueryFacesLanes(const PolygonT<S>& ref, const IncidentPolygon<S>& i
         const Vec2T<S>& v2 = ref.vertices[i2];
         const Vec2T<S>& v3 = ref.vertices[i3];
         const L offset = nx * L::Set(v0.x, v1.x, v2.x, v3.x) + ny * L::Set(v0.y, v1.y, v2.y, v3.y);
-        L low = nx * L::Fill(inc.x[0]) + ny * L::Fill(inc.y[0]);
-        for (int j = 1; j < N; ++j)
-        {
-            low = Min(low, nx * L::Fill(inc.x[j]) + ny * L::Fill(inc.y[j]));
-        }
+        const L low = ProjectionMinimum<N>(inc, nx, ny);
         L separations = (low - offset) + L::Fill(S(0));
         auto skipped = [&](int i) { return i < 64 && ((skip >> i) & 1u) != 0; };
         if (skip != 0)

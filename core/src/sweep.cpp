@@ -244,11 +244,7 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
             const Vec2T<S>& v2 = ref.vertices[i2];
             const Vec2T<S>& v3 = ref.vertices[i3];
             const L offset = nx * L::Set(v0.x, v1.x, v2.x, v3.x) + ny * L::Set(v0.y, v1.y, v2.y, v3.y);
-            L low = nx * L::Fill(inc.x[0]) + ny * L::Fill(inc.y[0]);
-            for (int j = 1; j < N; ++j)
-            {
-                low = Min(low, nx * L::Fill(inc.x[j]) + ny * L::Fill(inc.y[j]));
-            }
+            const L low = ProjectionMinimum<N>(inc, nx, ny);
             separations = (low - offset) + L::Fill(S(0));
         }
         else
