@@ -9,7 +9,6 @@
 //   E. Catto, "Contact Manifolds", GDC 2007 (clipping the incident edge against the reference face's side planes).
 #pragma once
 
-#include "lanes.h"
 #include "tracer.h"
 
 #include <satviz/manifold.h>
@@ -498,101 +497,6 @@ L ProjectionMinimum(const IncidentPolygon<S>& inc, const L& nx, const L& ny)
     return low;
 }
 
-/// The face query with unit normals against a scanned inc (N its padded vertex count), four faces at a time
-/// (Gregorius's face query; the lanes as in SweepFaces):
-///   1. A block's four faces sit side by side in the lanes: each vertex of inc is projected on the four normals at
-///      once and the minimum kept per lane, so no minimum is taken across lanes. The same products, sums and
-///      minimum as FaceSeparation, so the same separations to the bit. The last block repeats the last face.
-///   2. Second pass: faces anti-parallel to one of inc's (AntiParallelFaces) get separation -infinity: they can
-///      neither separate nor become the best face, as if skipped.
-///   3. The first separating face in face order ends the query (early exit).
-///   4. Otherwise each lane keeps its largest separation and the first face that has it; the lanes combine to the
-///      largest separation and the first face with it, which is what a face-by-face loop keeps.
-/// The recorder replays each block's faces in order, with the same numbers.
-template <int N, typename S, typename Tracer>
-FaceQuery<S> QueryFacesLanes(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second,
-                             Tracer& tracer)
-{
-    using L = Lanes<S, Tracer::kWide && std::is_same_v<S, double>>;
-    constexpr S kInf = std::numeric_limits<S>::infinity();
-    const int n = ref.Count();
-    const uint64_t skip = Tracer::kSkipParallel && second
-                              ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
-                              : uint64_t(0);
-    L best = L::Fill(-kInf);
-    L bestFace = L::Fill(S(0));
-    FaceQuery<S> query;
-    for (int i0 = 0; i0 < n; i0 += 4)
-    {
-        const int i1 = std::min(i0 + 1, n - 1);
-        const int i2 = std::min(i0 + 2, n - 1);
-        const int i3 = std::min(i0 + 3, n - 1);
-        const Vec2T<S>& n0 = ref.Normal(i0);
-        const Vec2T<S>& n1 = ref.Normal(i1);
-        const Vec2T<S>& n2 = ref.Normal(i2);
-        const Vec2T<S>& n3 = ref.Normal(i3);
-        const L nx = L::Set(n0.x, n1.x, n2.x, n3.x);
-        const L ny = L::Set(n0.y, n1.y, n2.y, n3.y);
-        const Vec2T<S>& v0 = ref.vertices[i0];
-        const Vec2T<S>& v1 = ref.vertices[i1];
-        const Vec2T<S>& v2 = ref.vertices[i2];
-        const Vec2T<S>& v3 = ref.vertices[i3];
-        const L offset = nx * L::Set(v0.x, v1.x, v2.x, v3.x) + ny * L::Set(v0.y, v1.y, v2.y, v3.y);
-        const L low = ProjectionMinimum<N>(inc, nx, ny);
-        L separations = (low - offset) + L::Fill(S(0));
-        auto skipped = [&](int i) { return i < 64 && ((skip >> i) & 1u) != 0; };
-        if (skip != 0)
-        {
-            auto penalty = [&](int i) { return skipped(i) ? -kInf : S(0); };
-            separations = separations + L::Set(penalty(i0), penalty(i1), penalty(i2), penalty(i3));
-        }
-        const typename L::Mask separating = separations > L::Fill(S(0));
-        if constexpr (Tracer::kEnabled)
-        {
-            for (int l = 0; l < 4 && i0 + l < n; ++l)
-            {
-                const int i = i0 + l;
-                if (skipped(i))
-                {
-                    tracer.SkippedFace(i, -1);
-                    continue;
-                }
-                const Vec2T<S> normal = ref.Normal(i);
-                tracer.FaceAxis(side, i, normal, separations.Get(l), inc.Support(normal), separating.Get(l));
-                if (Tracer::kEarlyExit && separating.Get(l))
-                {
-                    break;
-                }
-            }
-        }
-        if (separating.Any())
-        {
-            query.separated = true;
-            if constexpr (Tracer::kEarlyExit)
-            {
-                int l = 0;
-                while (!separating.Get(l))
-                {
-                    ++l;
-                }
-                query.separation = separations.Get(l);
-                query.face = std::min(i0 + l, n - 1);
-                query.support = 0;
-                return query;
-            }
-        }
-        const typename L::Mask better = separations > best;
-        best = Select(best > separations, best, separations);
-        bestFace = Select(better, L::Set(S(i0), S(i1), S(i2), S(i3)), bestFace);
-    }
-    query.separation = best.MaxLane();
-    const int face = static_cast<int>(Select(best == L::Fill(query.separation), bestFace, L::Fill(S(n))).MinLane());
-    // No lane compares equal only with NaN separations; face 0 keeps the index valid.
-    query.face = face < n ? face : 0;
-    query.support = 0;
-    return query;
-}
-
 /// Face query of `ref` against `inc` (Gregorius): for each face i of ref, with outward normal n, the separation is
 /// the signed distance from the face to inc's support point in direction -n, taken in ref's frame:
 ///     separation_i = Dot(n, support(inc, -n) - v_i).
@@ -625,10 +529,6 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
     // outline for separated pairs; a scanned one at face 0, as each face there costs less than that search.
     static_assert(N % 4 == 0 && N <= IncidentPolygon<S>::kCapacity, "scan of a padded count");
     constexpr bool kScan = N > 0;
-    if constexpr (kUnit && kScan && !kInside && !Tracer::kPrune)
-    {
-        return QueryFacesLanes<N>(ref, inc, side, second, tracer);
-    }
     const int start = kScan ? 0 : FaceTowards(ref, inc.centroid);
     FaceQuery<S> query;
     // The best face so far starts as the first one tested, so that it is a valid index even when no comparison
