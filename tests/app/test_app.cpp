@@ -31,11 +31,24 @@ enum KeySlot
     kEscape,
 };
 
+/// The directory of this process's scene copies, removed when the tests end.
+struct ScratchDirectory
+{
+    fs::path dir = fs::temp_directory_path() / ("satviz-app-test-" + std::to_string(::getpid()));
+
+    ScratchDirectory() { fs::create_directories(dir); }
+    ~ScratchDirectory()
+    {
+        std::error_code ignored;
+        fs::remove_all(dir, ignored);
+    }
+};
+
+/// A copy of a bundled scene that a test may edit and save.
 fs::path ScratchCopy(const std::string& name)
 {
-    const fs::path dir = fs::temp_directory_path() / ("satviz-app-test-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const fs::path copy = dir / name;
+    static const ScratchDirectory scratch;
+    const fs::path copy = scratch.dir / name;
     fs::copy_file(fs::path(SATVIZ_SOURCE_DIR) / "tutorials" / "scenes" / name, copy,
                   fs::copy_options::overwrite_existing);
     return copy;
