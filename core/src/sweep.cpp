@@ -249,10 +249,11 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
         }
         else
         {
+            const int faces[4] = {i0, i1, i2, i3};
             S separation[4];
             for (int l = 0; l < 4; ++l)
             {
-                const int i = std::min(i0 + l, n - 1);
+                const int i = faces[l];
                 const Vec2T<S> normal = ref.Normal(i);
                 const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
                 support = i == 0 ? ClimbToSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
