@@ -256,7 +256,7 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
                 const int i = faces[l];
                 const Vec2T<S> normal = ref.Normal(i);
                 const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
-                support = i == 0 ? ClimbToSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
+                support = i == 0 ? BisectSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
                 separation[l] = inc.Separation(normal, ref.vertices[i], support);
             }
             separations = L::Set(separation[0], separation[1], separation[2], separation[3]);

@@ -31,8 +31,11 @@ struct AlgorithmChoices
     static constexpr bool kEarlyExit = true;    ///< stop at the first separating axis
     static constexpr bool kSkipParallel = true; ///< skip faces of B anti-parallel to a face of A
     static constexpr bool kPrune = false;       ///< back-face pruning with the centroid bound (scan only)
-    static constexpr int kScanLimit = 16;       ///< polygons up to this many vertices are scanned, larger walked
-    static constexpr bool kWide = false;        ///< scans with 256-bit vectors (AVX2; see HasWideVectors)
+    /// Walked faces whose separation a single point of the other polygon (the witness) bounds too low to matter
+    /// are not walked to: large polygons then walk only the faces near the contact.
+    static constexpr bool kPruneWalked = true;
+    static constexpr int kScanLimit = 16; ///< polygons up to this many vertices are scanned, larger walked
+    static constexpr bool kWide = false;  ///< scans with 256-bit vectors (AVX2; see HasWideVectors)
 };
 
 struct NullTracer : AlgorithmChoices
@@ -97,8 +100,9 @@ class TraceRecorder : public AlgorithmChoices
         Push(test);
     }
 
-    /// A face was not scanned: the separation `bound` of the other polygon's centroid showed it could neither
-    /// separate nor beat the best face so far. The separation shown is computed here, for the view only.
+    /// A face was pruned: the separation `bound` of one point of the other polygon showed it could neither
+    /// separate nor beat the best face so far. The separation shown is computed here, for the view only;
+    /// `support` is the other polygon's support vertex for the face.
     void PrunedFace(int side, int face, Vec2T<S> normal, S bound, int support)
     {
         const TransformT<S>& own = Frame(side);

@@ -91,7 +91,7 @@ std::string StaticAxisStep(const Scene& scene, const PairStudy& study, int step)
     }
     else if (test.pruned)
     {
-        text += " No scan was needed: the other shape's centroid alone shows this face cannot separate or win.";
+        text += " Pruned: a single point of the other shape shows this face cannot separate or win.";
     }
     return text;
 }

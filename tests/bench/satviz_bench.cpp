@@ -340,6 +340,10 @@ struct WithPruning : detail::NullTracer
 {
     static constexpr bool kPrune = true;
 };
+struct NoWalkedPruning : detail::NullTracer
+{
+    static constexpr bool kPruneWalked = false;
+};
 struct WalkOnly : detail::NullTracer
 {
     static constexpr int kScanLimit = 0;
@@ -406,6 +410,7 @@ std::vector<Query> Queries()
         SatvizQuery("satviz Overlap, no parallel skip", false, OverlapVariant<NoParallelSkip>),
         SatvizQuery("satviz Overlap, with pruning", false, OverlapVariant<WithPruning>),
         SatvizQuery("satviz Overlap, walk only", false, OverlapVariant<WalkOnly>),
+        SatvizQuery("satviz Overlap, walked unpruned", false, OverlapVariant<NoWalkedPruning>),
         // Frame coherence: pairs that start apart (most of what a broadphase hands over), B moving a little per
         // frame for 8 frames, across the line between them; ns per frame, with and without a cache.
         SatvizQuery("satviz Overlap, moving", true,
@@ -850,6 +855,8 @@ int main(int argc, char** argv)
     ratioRow("Overlap with back-face pruning / Overlap", "satviz Overlap, with pruning",
              "satviz Overlap, as compiled here");
     ratioRow("Overlap walking, not scanning / Overlap", "satviz Overlap, walk only",
+             "satviz Overlap, as compiled here");
+    ratioRow("Overlap walking every face / pruned walk", "satviz Overlap, walked unpruned",
              "satviz Overlap, as compiled here");
     ratioRow("moving pairs: cached axis / no cache", "satviz Overlap, moving, cached axis", "satviz Overlap, moving");
     ratioRow("satviz Collide / textbook MTV", "satviz Collide", "textbook MTV");
