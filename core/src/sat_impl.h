@@ -657,10 +657,9 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
     // Records the separation of face i; true when the query stops there.
     const auto record = [&](int i, Vec2T<S> normal, S separation, int support) {
         const bool separating = separation > S(0);
-        if constexpr (kUnit || (kInside && !kScan))
+        if constexpr (kUnit)
         {
-            // Collide needs the best face, and a walked Overlap its support as the candidate inside vertex;
-            // selecting without a branch keeps the loop free of mispredictions.
+            // Collide needs the best face; selecting without a branch keeps the loop free of mispredictions.
             const bool better = separation > query.separation;
             query.face = Select(better, i, query.face);
             query.support = Select(better, support, query.support);
@@ -739,7 +738,7 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
     query.face = start;
     const Vec2T<S> firstNormal = kUnit ? ref.Normal(start) : RightPerp(ref.Edge(start));
     query.witness = support;
-    const S firstSeparation = inc.Separation(firstNormal, ref.vertices[start], support);
+    const S firstSeparation = Dot(firstNormal, witness - ref.vertices[start]);
     query.witnessInside = firstSeparation <= S(0);
     if (record(start, firstNormal, firstSeparation, support))
     {
@@ -810,8 +809,8 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
 
 /// The face query with inc's scan unrolled for its padded vertex count (QueryFacesN). `inside`, with kInside and
 /// a scanned inc, receives for each of inc's vertices its largest separation from ref's faces (filled with
-/// -infinity by the caller); it is not touched otherwise. With kInside and a walked inc, the query keeps the face
-/// of largest separation and its support (the vertex of inc most likely inside ref).
+/// -infinity by the caller); it is not touched otherwise. A walked inc reports instead whether its witness lies
+/// inside ref (FaceQuery::witnessInside).
 template <bool kUnit, bool kInside = false, typename S, typename Tracer>
 FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, S floor,
                         Tracer& tracer, S* inside = nullptr)
