@@ -16,10 +16,8 @@ template <typename S>
 [[gnu::flatten]] ManifoldT<S> Collide(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b,
                                       const TransformT<S>& xfB, TraceT<S>* trace)
 {
-    // The baseline scans: with the wide ones this query measured slower (8-gons: 112 against 105 ns in
-    // satviz-bench), its cost being in the bookkeeping around the scans rather than in them.
-    return WithTracer<false>(trace, a, xfA, b, xfB,
-                             [&](auto& tracer) { return detail::CollidePolygons(a, xfA, b, xfB, tracer); });
+    return WithTracer(trace, a, xfA, b, xfB,
+                      [&](auto& tracer) { return detail::CollidePolygons(a, xfA, b, xfB, tracer); });
 }
 
 template <typename S>

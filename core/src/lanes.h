@@ -48,6 +48,8 @@ struct Lanes
         bool m[4]; ///< the lanes
         /// Every lane c.
         static Mask Fill(bool c) { return {{c, c, c, c}}; }
+        /// The lanes as four bits.
+        int Bits() const { return int(m[0]) | int(m[1]) << 1 | int(m[2]) << 2 | int(m[3]) << 3; }
         /// Lane i.
         bool Get(int i) const { return m[i]; }
         /// Any lane set.
@@ -126,6 +128,11 @@ struct Lanes
     friend Lanes Min(Lanes a, Lanes b)
     {
         return Map(a, b, [](S x, S y) { return x < y ? x : y; });
+    }
+    /// Per lane: a > b ? a : b (the second operand when either is NaN).
+    friend Lanes Max(Lanes a, Lanes b)
+    {
+        return Map(a, b, [](S x, S y) { return x > y ? x : y; });
     }
     /// The largest lane (NaN lanes skipped when another is a number).
     S MaxLane() const { return std::max(std::max(v[0], v[1]), std::max(v[2], v[3])); }
@@ -221,6 +228,8 @@ struct Lanes<double, false>
     }
     /// Per lane: a < b ? a : b (the second operand when either is NaN).
     friend Lanes Min(const Lanes& a, const Lanes& b) { return {_mm_min_pd(a.lo, b.lo), _mm_min_pd(a.hi, b.hi)}; }
+    /// Per lane: a > b ? a : b (the second operand when either is NaN).
+    friend Lanes Max(const Lanes& a, const Lanes& b) { return {_mm_max_pd(a.lo, b.lo), _mm_max_pd(a.hi, b.hi)}; }
     /// The largest lane (NaN lanes skipped when another is a number).
     double MaxLane() const
     {
@@ -235,6 +244,86 @@ struct Lanes<double, false>
         alignas(16) double out[4];
         _mm_store_pd(out, lo);
         _mm_store_pd(out + 2, hi);
+        return std::min(std::min(out[0], out[1]), std::min(out[2], out[3]));
+    }
+};
+#endif
+
+#if defined(__SSE2__)
+/// Four floats in one SSE register: what every x86-64 processor runs.
+template <>
+struct Lanes<float, false>
+{
+    __m128 v; ///< the lanes
+
+    /// Lanes a, b, c, d.
+    static Lanes Set(float a, float b, float c, float d) { return {_mm_setr_ps(a, b, c, d)}; }
+    /// Every lane x.
+    static Lanes Fill(float x) { return {_mm_set1_ps(x)}; }
+    /// Lanes p[0] to p[3] (p 16-byte aligned).
+    static Lanes Load(const float* p) { return {_mm_load_ps(p)}; }
+    /// Every lane the value of lane k.
+    template <int k>
+    Lanes Spread() const
+    {
+        return {_mm_shuffle_ps(v, v, k * 0x55)};
+    }
+    /// Lane i.
+    float Get(int i) const
+    {
+        alignas(16) float out[4];
+        _mm_store_ps(out, v);
+        return out[i];
+    }
+
+    /// A per-lane truth value: all ones or all zeros.
+    struct Mask
+    {
+        __m128 m; ///< the lanes
+        /// Every lane c.
+        static Mask Fill(bool c) { return {_mm_castsi128_ps(_mm_set1_epi32(c ? -1 : 0))}; }
+        /// The lanes as four bits.
+        int Bits() const { return _mm_movemask_ps(m); }
+        /// Lane i.
+        bool Get(int i) const { return ((Bits() >> i) & 1) != 0; }
+        /// Any lane set.
+        bool Any() const { return Bits() != 0; }
+        /// Every lane set.
+        bool All() const { return Bits() == 0xF; }
+        friend Mask operator&(const Mask& a, const Mask& b) { return {_mm_and_ps(a.m, b.m)}; }
+        friend Mask operator|(const Mask& a, const Mask& b) { return {_mm_or_ps(a.m, b.m)}; }
+        friend Mask operator~(const Mask& a) { return {_mm_xor_ps(a.m, _mm_castsi128_ps(_mm_set1_epi32(-1)))}; }
+    };
+
+    friend Lanes operator-(const Lanes& a) { return {_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))}; }
+    friend Lanes operator+(const Lanes& a, const Lanes& b) { return {_mm_add_ps(a.v, b.v)}; }
+    friend Lanes operator-(const Lanes& a, const Lanes& b) { return {_mm_sub_ps(a.v, b.v)}; }
+    friend Lanes operator*(const Lanes& a, const Lanes& b) { return {_mm_mul_ps(a.v, b.v)}; }
+    friend Lanes operator/(const Lanes& a, const Lanes& b) { return {_mm_div_ps(a.v, b.v)}; }
+    friend Mask operator>(const Lanes& a, const Lanes& b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
+    friend Mask operator>=(const Lanes& a, const Lanes& b) { return {_mm_cmpge_ps(a.v, b.v)}; }
+    friend Mask operator==(const Lanes& a, const Lanes& b) { return {_mm_cmpeq_ps(a.v, b.v)}; }
+    /// Per lane: a where c holds, else b.
+    friend Lanes Select(const Mask& c, const Lanes& a, const Lanes& b)
+    {
+        return {_mm_or_ps(_mm_and_ps(c.m, a.v), _mm_andnot_ps(c.m, b.v))};
+    }
+    /// Per lane: a < b ? a : b (the second operand when either is NaN).
+    friend Lanes Min(const Lanes& a, const Lanes& b) { return {_mm_min_ps(a.v, b.v)}; }
+    /// Per lane: a > b ? a : b (the second operand when either is NaN).
+    friend Lanes Max(const Lanes& a, const Lanes& b) { return {_mm_max_ps(a.v, b.v)}; }
+    /// The largest lane (NaN lanes skipped when another is a number).
+    float MaxLane() const
+    {
+        alignas(16) float out[4];
+        _mm_store_ps(out, v);
+        return std::max(std::max(out[0], out[1]), std::max(out[2], out[3]));
+    }
+    /// The smallest lane.
+    float MinLane() const
+    {
+        alignas(16) float out[4];
+        _mm_store_ps(out, v);
         return std::min(std::min(out[0], out[1]), std::min(out[2], out[3]));
     }
 };
@@ -279,6 +368,8 @@ struct Lanes<double, true>
         {
             return {_mm256_castsi256_pd(_mm256_set1_epi64x(c ? -1 : 0))};
         }
+        /// The lanes as four bits.
+        [[gnu::target("avx2")]] int Bits() const { return _mm256_movemask_pd(m); }
         /// Lane i.
         [[gnu::target("avx2")]] bool Get(int i) const { return ((_mm256_movemask_pd(m) >> i) & 1) != 0; }
         /// Any lane set.
@@ -323,6 +414,8 @@ struct Lanes<double, true>
     }
     /// Per lane: a < b ? a : b (the second operand when either is NaN).
     [[gnu::target("avx2")]] friend Lanes Min(const Lanes& a, const Lanes& b) { return {_mm256_min_pd(a.v, b.v)}; }
+    /// Per lane: a > b ? a : b (the second operand when either is NaN).
+    [[gnu::target("avx2")]] friend Lanes Max(const Lanes& a, const Lanes& b) { return {_mm256_max_pd(a.v, b.v)}; }
     /// The largest lane (NaN lanes skipped when another is a number).
     [[gnu::target("avx2")]] double MaxLane() const
     {
