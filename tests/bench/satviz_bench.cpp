@@ -2,11 +2,13 @@
 // satviz-bench: run time and error of the SAT queries on random contact pairs, beside Box2D 2.4.1 in the same
 // process on the same pairs. A benchmark program, not a test: it prints figures and ratios measured in this run.
 //
-// Method (after ../shared/research peer measurements): per vertex count, a pool of `slices` x `pairs` fresh pairs,
-// a random mix of overlapping, touching (within 1e-9) and separated pairs. A pass runs one query over every pair
-// of one slice in storage order; passes rotate over the slices so that no outcome sequence is learnt by the branch
-// predictor. Per round and query: a warm pass, then the median of `reps` passes; the figure is the median over
-// `rounds` rounds, which interleave all queries. Native shapes are built before timing.
+// Method: per vertex count, a pool of `slices` x `pairs` fresh pairs, a random mix of overlapping, touching (within
+// 1e-9) and separated pairs. A pass runs one query over every pair of one slice in storage order. Per round (each
+// at another stack placement, AtStackShift): a warm pass of every query over every slice, then `reps` sweeps, a
+// sweep being one pass of every query in turn on the next slice, so that consecutive passes of a query see other
+// slices and no outcome sequence is learnt by the branch predictor. A query's figure is the median of its passes;
+// a ratio is the median over the sweeps of the ratio of two passes of one sweep, taken moments apart, so that it
+// holds still while the machine's speed drifts. Native shapes are built before timing.
 // Accuracy: a separate pool, against the __float128 reference of tests/support/reference.h.
 
 #include "support/random_shapes.h"
@@ -183,6 +185,70 @@ double ChipmunkDepth(const ChipmunkRecord& r, bool& overlap)
     return -smallest;
 }
 #endif
+
+// Reading what a pass will read, before timing it, brings the pass's data into the caches without running the
+// query (so without teaching the branch predictor its outcomes). Every query then starts from the same cache
+// state: otherwise the first query of a sweep loads the slice from memory for the queries after it, which on a
+// shared host made it up to three times slower than the same query later in the sweep.
+volatile unsigned char g_touched = 0;
+
+void TouchBytes(const void* data, size_t bytes)
+{
+    const auto* p = static_cast<const unsigned char*>(data);
+    unsigned char sum = 0;
+    for (size_t i = 0; i < bytes; i += 64)
+    {
+        sum = static_cast<unsigned char>(sum + p[i]);
+    }
+    g_touched = static_cast<unsigned char>(g_touched + sum);
+}
+
+template <typename S>
+void TouchPolygon(const PolygonT<S>& polygon)
+{
+    TouchBytes(polygon.vertices.data, sizeof(Vec2T<S>) * static_cast<size_t>(2 * polygon.Count() + 1));
+}
+
+void TouchRecord(const SatvizRecord& r)
+{
+    TouchBytes(&r, sizeof r);
+    TouchPolygon(r.sa.polygon);
+    TouchPolygon(r.sb.polygon);
+}
+
+void TouchRecord(const FloatRecord& r)
+{
+    TouchBytes(&r, sizeof r);
+    TouchPolygon(r.fa);
+    TouchPolygon(r.fb);
+}
+
+#ifdef SATVIZ_HAVE_BOX2D
+void TouchRecord(const Box2DRecord& r)
+{
+    TouchBytes(&r, sizeof r);
+}
+#endif
+
+#ifdef SATVIZ_HAVE_CHIPMUNK
+void TouchRecord(const ChipmunkRecord& r)
+{
+    TouchBytes(&r, sizeof r);
+    for (const cpPolyShape* shape : {&r.a, &r.b})
+    {
+        TouchBytes(shape->planes, sizeof(cpSplittingPlane) * static_cast<size_t>(2 * shape->count));
+    }
+}
+#endif
+
+template <typename Record>
+void Touch(const Record* records, size_t count)
+{
+    for (size_t i = 0; i < count; ++i)
+    {
+        TouchRecord(records[i]);
+    }
+}
 
 /// One slice of the timing pool, in each library's records; `apart` holds the pairs that start apart (sweeps).
 struct Slice
@@ -529,8 +595,36 @@ double Stream(const Record* records, size_t count, double (*run)(const Record&))
     return sink;
 }
 
-// ns per query for each query, at one vertex count.
-std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rng)
+// Pass times of every query at one vertex count: passes[name][k] is ns per query in sweep k, and the sweeps run
+// one pass of every query in turn, so equal k are measured moments apart.
+struct Timing
+{
+    std::map<std::string, std::vector<double>> passes;
+
+    // ns per query: the median over the passes.
+    double Ns(const std::string& name) const
+    {
+        const double frames = name.find(", moving") != std::string::npos ? kFrames : 1;
+        return Median(passes.at(name)) / frames;
+    }
+    bool Has(const std::string& name) const { return passes.count(name) != 0; }
+    // The time of one query over another's: the median over the sweeps of the ratio of their passes in the sweep.
+    // Paired so, the ratio does not drift with the machine's speed, which on a shared host changes from second to
+    // second by more than the differences measured.
+    double Ratio(const std::string& numerator, const std::string& denominator) const
+    {
+        const std::vector<double>& a = passes.at(numerator);
+        const std::vector<double>& b = passes.at(denominator);
+        std::vector<double> ratios;
+        for (size_t k = 0; k < std::min(a.size(), b.size()); ++k)
+        {
+            ratios.push_back(a[k] / b[k]);
+        }
+        return Median(ratios);
+    }
+};
+
+Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rng)
 {
     const int perSlice = n >= 1024 ? std::max(1, s.pairs / 10) : s.pairs;
     std::vector<Slice> slices(static_cast<size_t>(s.slices));
@@ -572,74 +666,96 @@ std::map<std::string, double> Time(const Settings& s, int n, const std::vector<Q
 #endif
         }
     }
-    std::map<std::string, std::vector<double>> rounds;
-    int slice = 0;
+    Timing timing;
+    int sweep = 0;
     for (int round = 0; round < s.rounds; ++round)
     {
         const size_t shift = static_cast<size_t>(round * 4096 / s.rounds) & ~size_t(63);
         AtStackShift(shift, [&]() {
-            for (const Query& q : queries)
-            {
-                if (q.box2d && n > 8)
+            auto pass = [&](const Query& q, const Slice& data) {
+                double sink = 0.0;
+                size_t count = 0;
+                if (q.satviz)
                 {
-                    continue;
+                    const std::vector<SatvizRecord>& records = q.sweep ? data.satvizApart : data.satviz;
+                    Touch(records.data(), records.size());
                 }
-                auto pass = [&]() {
-                    const Slice& data = slices[static_cast<size_t>(slice)];
-                    slice = (slice + 1) % s.slices;
-                    double sink = 0.0;
-                    size_t count = 0;
-                    const auto start = std::chrono::steady_clock::now();
-                    if (q.satviz)
-                    {
-                        const std::vector<SatvizRecord>& records = q.sweep ? data.satvizApart : data.satviz;
-                        sink = Stream(records.data(), records.size(), q.satviz);
-                        count = records.size();
-                    }
-                    else if (q.single)
-                    {
-                        sink = Stream(data.single.data(), data.single.size(), q.single);
-                        count = data.single.size();
-                    }
+                else if (q.single)
+                {
+                    Touch(data.single.data(), data.single.size());
+                }
 #ifdef SATVIZ_HAVE_CHIPMUNK
-                    else if (q.chipmunkRun)
-                    {
-                        sink = Stream(data.chipmunk.get(), data.chipmunkCount, q.chipmunkRun);
-                        count = data.chipmunkCount;
-                    }
+                else if (q.chipmunkRun)
+                {
+                    Touch(data.chipmunk.get(), data.chipmunkCount);
+                }
 #endif
 #ifdef SATVIZ_HAVE_BOX2D
-                    else
-                    {
-                        const std::vector<Box2DRecord>& records = q.sweep ? data.box2dApart : data.box2d;
-                        sink = Stream(records.data(), records.size(), q.box2dRun);
-                        count = records.size();
-                    }
+                else
+                {
+                    const std::vector<Box2DRecord>& records = q.sweep ? data.box2dApart : data.box2d;
+                    Touch(records.data(), records.size());
+                }
 #endif
-                    const auto stop = std::chrono::steady_clock::now();
-                    g_sink = g_sink + sink;
-                    return std::chrono::duration<double, std::nano>(stop - start).count() /
-                           static_cast<double>(std::max<size_t>(1, count));
-                };
-                for (int w = 0; w < s.slices; ++w)
+                const auto start = std::chrono::steady_clock::now();
+                if (q.satviz)
                 {
-                    pass();
+                    const std::vector<SatvizRecord>& records = q.sweep ? data.satvizApart : data.satviz;
+                    sink = Stream(records.data(), records.size(), q.satviz);
+                    count = records.size();
                 }
-                std::vector<double> passes;
-                for (int r = 0; r < s.reps; ++r)
+                else if (q.single)
                 {
-                    passes.push_back(pass());
+                    sink = Stream(data.single.data(), data.single.size(), q.single);
+                    count = data.single.size();
                 }
-                rounds[q.name].push_back(Median(passes));
+#ifdef SATVIZ_HAVE_CHIPMUNK
+                else if (q.chipmunkRun)
+                {
+                    sink = Stream(data.chipmunk.get(), data.chipmunkCount, q.chipmunkRun);
+                    count = data.chipmunkCount;
+                }
+#endif
+#ifdef SATVIZ_HAVE_BOX2D
+                else
+                {
+                    const std::vector<Box2DRecord>& records = q.sweep ? data.box2dApart : data.box2d;
+                    sink = Stream(records.data(), records.size(), q.box2dRun);
+                    count = records.size();
+                }
+#endif
+                const auto stop = std::chrono::steady_clock::now();
+                g_sink = g_sink + sink;
+                return std::chrono::duration<double, std::nano>(stop - start).count() /
+                       static_cast<double>(std::max<size_t>(1, count));
+            };
+            const auto runs = [n](const Query& q) { return !(q.box2d && n > 8); };
+            // Warm: every query over every slice.
+            for (const Query& q : queries)
+            {
+                for (const Slice& data : slices)
+                {
+                    if (runs(q))
+                    {
+                        pass(q, data);
+                    }
+                }
+            }
+            // Sweeps: one pass of every query in turn, each sweep on the next slice.
+            for (int r = 0; r < s.reps; ++r, ++sweep)
+            {
+                const Slice& data = slices[static_cast<size_t>(sweep % s.slices)];
+                for (const Query& q : queries)
+                {
+                    if (runs(q))
+                    {
+                        timing.passes[q.name].push_back(pass(q, data));
+                    }
+                }
             }
         });
     }
-    std::map<std::string, double> out;
-    for (auto& [name, values] : rounds)
-    {
-        out[name] = Median(values) / (name.find(", moving") != std::string::npos ? kFrames : 1);
-    }
-    return out;
+    return timing;
 }
 
 // A query name as a CSV field: its commas become semicolons.
@@ -783,14 +899,20 @@ int main(int argc, char** argv)
 
     Rng rng(s.seed);
     const std::vector<Query> queries = Queries();
+    std::map<int, Timing> timings;
     std::map<int, std::map<std::string, double>> ns;
     for (int n : s.counts)
     {
-        ns[n] = Time(s, n, queries, rng);
+        timings[n] = Time(s, n, queries, rng);
+        for (const auto& [name, passes] : timings[n].passes)
+        {
+            ns[n][name] = timings[n].Ns(name);
+        }
     }
 
-    std::printf("satviz-bench: ns per query, median of %d rounds x median of %d passes over %d-pair slices\n", s.rounds,
-                s.reps, s.pairs);
+    std::printf("satviz-bench: ns per query, median of %d rounds x %d sweeps, a sweep being one pass of every query\n"
+                "over one %d-pair slice; ratios: median over the sweeps of the ratio of two passes of the sweep\n",
+                s.rounds, s.reps, s.pairs);
     std::printf("(mix of overlapping, touching within 1e-9 and separated pairs; both polygons have n vertices;\n"
                 " sweeps: the pairs that start apart, B moving roughly towards A, sometimes missing)\n\n");
     std::printf("%-26s", "query");
@@ -821,15 +943,13 @@ int main(int argc, char** argv)
         std::printf("%-44s", label);
         for (int n : s.counts)
         {
-            const auto num = ns[n].find(numerator);
-            const auto den = ns[n].find(denominator);
-            if (num == ns[n].end() || den == ns[n].end())
+            if (!timings[n].Has(numerator) || !timings[n].Has(denominator))
             {
                 std::printf(" %7s", "-");
             }
             else
             {
-                std::printf(" %7.2f", num->second / den->second);
+                std::printf(" %7.2f", timings[n].Ratio(numerator, denominator));
             }
         }
         std::printf("\n");
@@ -946,10 +1066,10 @@ int main(int argc, char** argv)
 #ifdef SATVIZ_HAVE_BOX2D
     if (ns.count(8) && ns[8].count("box2d b2TestOverlap"))
     {
-        target("satviz Overlap / box2d b2TestOverlap", ns[8]["satviz Overlap"] / ns[8]["box2d b2TestOverlap"], 0.25);
-        target("satviz Collide / box2d b2CollidePolygons", ns[8]["satviz Collide"] / ns[8]["box2d b2CollidePolygons"],
-               0.6);
-        target("satviz Sweep / box2d b2TimeOfImpact", ns[8]["satviz Sweep"] / ns[8]["box2d b2TimeOfImpact"], 0.25);
+        const Timing& t = timings[8];
+        target("satviz Overlap / box2d b2TestOverlap", t.Ratio("satviz Overlap", "box2d b2TestOverlap"), 0.25);
+        target("satviz Collide / box2d b2CollidePolygons", t.Ratio("satviz Collide", "box2d b2CollidePolygons"), 0.6);
+        target("satviz Sweep / box2d b2TimeOfImpact", t.Ratio("satviz Sweep", "box2d b2TimeOfImpact"), 0.25);
     }
 #else
     std::printf("  (built without Box2D: no peer ratios)\n");
