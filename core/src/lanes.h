@@ -33,6 +33,14 @@ struct Lanes
     static Lanes Fill(S x) { return {{x, x, x, x}}; }
     /// Lanes p[0] to p[3] (p aligned as the widest lanes need: 32 bytes).
     static Lanes Load(const S* p) { return {{p[0], p[1], p[2], p[3]}}; }
+    /// Four points stored as x, y pairs from p (any alignment): their x in xs, their y in ys.
+    static void LoadPoints(const S* p, Lanes& xs, Lanes& ys)
+    {
+        xs = {{p[0], p[2], p[4], p[6]}};
+        ys = {{p[1], p[3], p[5], p[7]}};
+    }
+    /// Stores the lanes at p[0] to p[3] (p aligned as Load needs).
+    void Store(S* p) const { std::copy(v, v + 4, p); }
     /// Every lane the value of lane k.
     template <int k>
     Lanes Spread() const
@@ -154,6 +162,22 @@ struct Lanes<double, false>
     static Lanes Fill(double x) { return {_mm_set1_pd(x), _mm_set1_pd(x)}; }
     /// Lanes p[0] to p[3] (p 16-byte aligned).
     static Lanes Load(const double* p) { return {_mm_load_pd(p), _mm_load_pd(p + 2)}; }
+    /// Four points stored as x, y pairs from p (any alignment): their x in xs, their y in ys.
+    static void LoadPoints(const double* p, Lanes& xs, Lanes& ys)
+    {
+        const __m128d a = _mm_loadu_pd(p);
+        const __m128d b = _mm_loadu_pd(p + 2);
+        const __m128d c = _mm_loadu_pd(p + 4);
+        const __m128d d = _mm_loadu_pd(p + 6);
+        xs = {_mm_unpacklo_pd(a, b), _mm_unpacklo_pd(c, d)};
+        ys = {_mm_unpackhi_pd(a, b), _mm_unpackhi_pd(c, d)};
+    }
+    /// Stores the lanes at p[0] to p[3] (p 16-byte aligned).
+    void Store(double* p) const
+    {
+        _mm_store_pd(p, lo);
+        _mm_store_pd(p + 2, hi);
+    }
     /// Every lane the value of lane k.
     template <int k>
     Lanes Spread() const
@@ -262,6 +286,16 @@ struct Lanes<float, false>
     static Lanes Fill(float x) { return {_mm_set1_ps(x)}; }
     /// Lanes p[0] to p[3] (p 16-byte aligned).
     static Lanes Load(const float* p) { return {_mm_load_ps(p)}; }
+    /// Four points stored as x, y pairs from p (any alignment): their x in xs, their y in ys.
+    static void LoadPoints(const float* p, Lanes& xs, Lanes& ys)
+    {
+        const __m128 a = _mm_loadu_ps(p);
+        const __m128 b = _mm_loadu_ps(p + 4);
+        xs = {_mm_shuffle_ps(a, b, _MM_SHUFFLE(2, 0, 2, 0))};
+        ys = {_mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 1, 3, 1))};
+    }
+    /// Stores the lanes at p[0] to p[3] (p 16-byte aligned).
+    void Store(float* p) const { _mm_store_ps(p, v); }
     /// Every lane the value of lane k.
     template <int k>
     Lanes Spread() const
@@ -345,6 +379,16 @@ struct Lanes<double, true>
     [[gnu::target("avx2")]] static Lanes Fill(double x) { return {_mm256_set1_pd(x)}; }
     /// Lanes p[0] to p[3] (p 32-byte aligned).
     [[gnu::target("avx2")]] static Lanes Load(const double* p) { return {_mm256_load_pd(p)}; }
+    /// Four points stored as x, y pairs from p (any alignment): their x in xs, their y in ys.
+    [[gnu::target("avx2")]] static void LoadPoints(const double* p, Lanes& xs, Lanes& ys)
+    {
+        const __m256d a = _mm256_loadu_pd(p);     // x0 y0 x1 y1
+        const __m256d b = _mm256_loadu_pd(p + 4); // x2 y2 x3 y3
+        xs = {_mm256_permute4x64_pd(_mm256_unpacklo_pd(a, b), 0xD8)};
+        ys = {_mm256_permute4x64_pd(_mm256_unpackhi_pd(a, b), 0xD8)};
+    }
+    /// Stores the lanes at p[0] to p[3] (p 32-byte aligned).
+    [[gnu::target("avx2")]] void Store(double* p) const { _mm256_store_pd(p, v); }
     /// Every lane the value of lane k.
     template <int k>
     [[gnu::target("avx2")]] Lanes Spread() const

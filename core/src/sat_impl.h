@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -411,8 +412,11 @@ struct IncidentPolygon
     alignas(32) S x[kCapacity];
     alignas(32) S y[kCapacity];
 
-    /// `scanLimit` (at most kScanLimit) is the largest vertex count that is scanned.
-    IncidentPolygon(const PolygonT<S>& p, const TransformT<S>& incInRef, int scanLimit = kScanLimit)
+    /// `scanLimit` (at most kScanLimit) is the largest vertex count that is scanned. kWide: mapped with the wide
+    /// vectors (the same bits), whose stores the wide scans then read whole.
+    template <bool kWide = false>
+    IncidentPolygon(const PolygonT<S>& p, const TransformT<S>& incInRef, int scanLimit = kScanLimit,
+                    std::bool_constant<kWide> = {})
         : polygon(p), xf(incInRef), scan(p.Count() > 0 && p.Count() <= scanLimit),
           centroid(TransformPoint(incInRef, p.centroid))
     {
@@ -422,11 +426,20 @@ struct IncidentPolygon
         }
         const int count = polygon.Count();
         padded = (count + 3) & ~3;
-        for (int j = 0; j < count; ++j)
+        // Four vertices at a time, with the operations of TransformPoint, so the same bits. The last block may read
+        // up to three points past the vertices: the polygon's block holds vertex 0 again and the normals there.
+        using L = Lanes<S, kWide && std::is_same_v<S, double>>;
+        const L c = L::Fill(xf.q.c);
+        const L s = L::Fill(xf.q.s);
+        const L px = L::Fill(xf.p.x);
+        const L py = L::Fill(xf.p.y);
+        for (int j = 0; j < count; j += 4)
         {
-            const Vec2T<S> w = TransformPoint(xf, polygon.vertices[j]);
-            x[j] = w.x;
-            y[j] = w.y;
+            L vx;
+            L vy;
+            L::LoadPoints(&polygon.vertices.data[j].x, vx, vy);
+            ((c * vx - s * vy) + px).Store(x + j);
+            ((s * vx + c * vy) + py).Store(y + j);
         }
         for (int j = count; j < padded; ++j)
         {
@@ -469,10 +482,14 @@ struct IncidentPolygon
         {
             low = Min(normal);
         }
+        // Padding repeats the last vertex, so a padded entry that reaches the minimum comes after a real one.
+        using L = Lanes<S, kWide && std::is_same_v<S, double>>;
+        const L nx = L::Fill(normal.x);
+        const L ny = L::Fill(normal.y);
         uint32_t hits = 0;
-        for (int j = 0; j < polygon.Count(); ++j)
+        for (int j = 0; j < padded; j += 4)
         {
-            hits |= static_cast<uint32_t>(normal.x * x[j] + normal.y * y[j] == low) << j;
+            hits |= static_cast<uint32_t>((nx * L::Load(x + j) + ny * L::Load(y + j) == L::Fill(low)).Bits()) << j;
         }
         return hits != 0 ? __builtin_ctz(hits) : 0; // no hit only for NaN input
     }
@@ -638,19 +655,29 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
     L bestFace = L::Fill(S(0));
     for (int i0 = 0; i0 < n; i0 += 4)
     {
-        const int faces[4] = {i0, std::min(i0 + 1, n - 1), std::min(i0 + 2, n - 1), std::min(i0 + 3, n - 1)};
-        const Vec2T<S>& n0 = ref.Normal(faces[0]);
-        const Vec2T<S>& n1 = ref.Normal(faces[1]);
-        const Vec2T<S>& n2 = ref.Normal(faces[2]);
-        const Vec2T<S>& n3 = ref.Normal(faces[3]);
-        const Vec2T<S>& v0 = ref.vertices[faces[0]];
-        const Vec2T<S>& v1 = ref.vertices[faces[1]];
-        const Vec2T<S>& v2 = ref.vertices[faces[2]];
-        const Vec2T<S>& v3 = ref.vertices[faces[3]];
-        const L nx = L::Set(n0.x, n1.x, n2.x, n3.x);
-        const L ny = L::Set(n0.y, n1.y, n2.y, n3.y);
+        const bool full = i0 + 4 <= n;
+        const int faces[4] = {i0, full ? i0 + 1 : std::min(i0 + 1, n - 1), full ? i0 + 2 : std::min(i0 + 2, n - 1),
+                              full ? i0 + 3 : std::min(i0 + 3, n - 1)};
+        L nx;
+        L ny;
+        L vx;
+        L vy;
+        if (full)
+        {
+            L::LoadPoints(&ref.Normal(i0).x, nx, ny);
+            L::LoadPoints(&ref.vertices.data[i0].x, vx, vy);
+        }
+        else
+        {
+            const Vec2T<S>* normals = &ref.Normal(0);
+            const Vec2T<S>* v = ref.vertices.data;
+            nx = L::Set(normals[faces[0]].x, normals[faces[1]].x, normals[faces[2]].x, normals[faces[3]].x);
+            ny = L::Set(normals[faces[0]].y, normals[faces[1]].y, normals[faces[2]].y, normals[faces[3]].y);
+            vx = L::Set(v[faces[0]].x, v[faces[1]].x, v[faces[2]].x, v[faces[3]].x);
+            vy = L::Set(v[faces[0]].y, v[faces[1]].y, v[faces[2]].y, v[faces[3]].y);
+        }
         // The same products, sums and minimum as FaceSeparation, so the same bits.
-        const L offset = nx * L::Set(v0.x, v1.x, v2.x, v3.x) + ny * L::Set(v0.y, v1.y, v2.y, v3.y);
+        const L offset = nx * vx + ny * vy;
         L separation = (ProjectionMinimum<N>(inc, nx, ny) - offset) + L::Fill(S(0));
         const int skipped = i0 < 64 ? static_cast<int>((skip >> i0) & 0xF) : 0;
         if (skipped != 0)
@@ -721,7 +748,8 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
 ///      it finds, which bounds the next faces more tightly. O(n + m) in the worst case; for the random pairs of
 ///      satviz-bench, a pass over a 1024-gon walks to 1 to 90 faces instead of 1024.
 ///   4. A separation > 0 is a separating axis: stop there (early exit).
-///   5. Overlap's scan only, back-face pruning when Tracer::kPrune (off by default): separation_i <= Dot(n, c - v_i) for
+///   5. Overlap's scan only, back-face pruning when Tracer::kPrune (off by default): separation_i <= Dot(n, c - v_i)
+///   for
 ///      inc's centroid c, which lies inside inc. When that bound is not above `floor` (Overlap: 0, the face cannot
 ///      separate) nor above the best face so far (Collide: the face cannot become the reference face), the face is
 ///      not scanned; in exact arithmetic the answer is the same. It scans fewer faces (3.6 of 10 for Overlap of
@@ -946,7 +974,7 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
                      Tracer& tracer)
 {
     const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
-    const IncidentPolygon<S> incB(b, bInA, Tracer::kScanLimit);
+    const IncidentPolygon<S> incB(b, bInA, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
     // Pruned faces would leave gaps in the vertices' largest separations, so pruning turns the shortcut off.
     constexpr bool kInside = !Tracer::kPrune;
     alignas(32) S inside[IncidentPolygon<S>::kCapacity];
@@ -986,7 +1014,7 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
     if (overlap || !Tracer::kEarlyExit)
     {
         const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
-        const IncidentPolygon<S> incA(a, aInB, Tracer::kScanLimit);
+        const IncidentPolygon<S> incA(a, aInB, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
         overlap = !QueryFaces<false>(b, incA, 1, true, S(0), tracer).separated && overlap;
     }
     if constexpr (Tracer::kEnabled)
@@ -1199,7 +1227,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
 {
     ManifoldT<S> manifold;
     const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
-    const IncidentPolygon<S> incB(b, bInA);
+    const IncidentPolygon<S> incB(b, bInA, kScanLimit, std::bool_constant<Tracer::kWide>{});
     const FaceQuery<S> queryA = QueryFaces<true>(a, incB, 0, false, -std::numeric_limits<S>::infinity(), tracer);
     if (queryA.separated)
     {
@@ -1213,7 +1241,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
         return manifold;
     }
     const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
-    const IncidentPolygon<S> incA(a, aInB);
+    const IncidentPolygon<S> incA(a, aInB, kScanLimit, std::bool_constant<Tracer::kWide>{});
     const FaceQuery<S> queryB = QueryFaces<true>(b, incA, 1, true, queryA.separation, tracer);
     if (queryB.separated)
     {

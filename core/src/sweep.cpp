@@ -350,7 +350,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
                               const TransformT<S>& xfB, Vec2T<S> vB, Tracer& tracer)
 {
     const Vec2T<S> velocity = vB - vA;
-    const IncidentPolygon<S> incB(b, InvMulTransforms(xfA, xfB));
+    const IncidentPolygon<S> incB(b, InvMulTransforms(xfA, xfB), kScanLimit, std::bool_constant<Tracer::kWide>{});
     const Vec2T<S> velocityInA = InvRotate(xfA.q, velocity);
     const Vec2T<S> velocityInB = InvRotate(xfB.q, velocity);
 
@@ -359,7 +359,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     if (going)
     {
         // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
-        const IncidentPolygon<S> incA(a, InvMulTransforms(xfB, xfA));
+        const IncidentPolygon<S> incA(a, InvMulTransforms(xfB, xfA), kScanLimit, std::bool_constant<Tracer::kWide>{});
         going = SweepFaces(b, incA, 1, -velocityInB, state, tracer);
     }
     if constexpr (Tracer::kEnabled)
@@ -385,7 +385,8 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     const PolygonT<S>& ref = flip ? b : a;
     const TransformT<S> xfRef = flip ? Moved(xfB, vB, first) : Moved(xfA, vA, first);
     const TransformT<S> xfInc = flip ? Moved(xfA, vA, first) : Moved(xfB, vB, first);
-    const IncidentPolygon<S> inc(flip ? a : b, InvMulTransforms(xfRef, xfInc));
+    const IncidentPolygon<S> inc(flip ? a : b, InvMulTransforms(xfRef, xfInc), kScanLimit,
+                                 std::bool_constant<Tracer::kWide>{});
     const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(firstAxis.index));
     result.normal = flip ? -worldNormal : worldNormal;
     // At the time of impact the touching points are at zero distance up to rounding of either sign, which scales
