@@ -560,26 +560,21 @@ int ClimbFaceTowards(const PolygonT<S>& polygon, Vec2T<S> point, int start)
     const int n = polygon.Count();
     int i = start;
     S here = FaceDistance(polygon, i, point);
-    for (int k = 0; k < n; ++k)
-    {
-        const S next = FaceDistance(polygon, Next(i, n), point);
-        if (!(next > here))
+    // Steps with `step` (Next or Prev) while the face there is farther.
+    const auto climb = [&](int (*step)(int, int)) {
+        for (int k = 0; k < n; ++k)
         {
-            break;
+            const S there = FaceDistance(polygon, step(i, n), point);
+            if (!(there > here))
+            {
+                break;
+            }
+            i = step(i, n);
+            here = there;
         }
-        i = Next(i, n);
-        here = next;
-    }
-    for (int k = 0; k < n; ++k)
-    {
-        const S previous = FaceDistance(polygon, Prev(i, n), point);
-        if (!(previous > here))
-        {
-            break;
-        }
-        i = Prev(i, n);
-        here = previous;
-    }
+    };
+    climb(Next);
+    climb(Prev);
     return i;
 }
 
@@ -630,6 +625,40 @@ L ProjectionMinimum(const IncidentPolygon<S>& inc, const L& nx, const L& ny)
     return low;
 }
 
+/// Four faces of `polygon` from face i0, the last face repeated past the end, as lanes: their indices, unit
+/// normals (nx, ny) and first vertices (vx, vy). A full block loads its normals and vertices whole.
+template <typename L, typename S>
+struct FaceBlock
+{
+    int faces[4]; ///< the faces' indices
+    L nx, ny;     ///< their unit normals
+    L vx, vy;     ///< their first vertices
+
+    FaceBlock(const PolygonT<S>& polygon, int i0)
+    {
+        const int n = polygon.Count();
+        for (int l = 0; l < 4; ++l)
+        {
+            faces[l] = std::min(i0 + l, n - 1);
+        }
+        if (i0 + 4 <= n)
+        {
+            L::LoadPoints(&polygon.Normal(i0).x, nx, ny);
+            L::LoadPoints(&polygon.vertices.data[i0].x, vx, vy);
+            return;
+        }
+        const Vec2T<S>* normals = &polygon.Normal(0);
+        const Vec2T<S>* v = polygon.vertices.data;
+        nx = L::Set(normals[faces[0]].x, normals[faces[1]].x, normals[faces[2]].x, normals[faces[3]].x);
+        ny = L::Set(normals[faces[0]].y, normals[faces[1]].y, normals[faces[2]].y, normals[faces[3]].y);
+        vx = L::Set(v[faces[0]].x, v[faces[1]].x, v[faces[2]].x, v[faces[3]].x);
+        vy = L::Set(v[faces[0]].y, v[faces[1]].y, v[faces[2]].y, v[faces[3]].y);
+    }
+
+    /// Dot(normal, first vertex) per face: the offset of each face's line.
+    L Offset() const { return nx * vx + ny * vy; }
+};
+
 /// The face query of Collide (unit normals) against a scanned inc, four faces of ref at a time in lanes (QueryFacesN,
 /// steps 2, 4 and 6). Each vertex of inc is projected on the four normals at once (ProjectionMinimum), so no minimum
 /// is taken across lanes, and a block of four faces costs one branch instead of one per face, whose outcome follows
@@ -655,30 +684,10 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
     L bestFace = L::Fill(S(0));
     for (int i0 = 0; i0 < n; i0 += 4)
     {
-        const bool full = i0 + 4 <= n;
-        const int faces[4] = {i0, full ? i0 + 1 : std::min(i0 + 1, n - 1), full ? i0 + 2 : std::min(i0 + 2, n - 1),
-                              full ? i0 + 3 : std::min(i0 + 3, n - 1)};
-        L nx;
-        L ny;
-        L vx;
-        L vy;
-        if (full)
-        {
-            L::LoadPoints(&ref.Normal(i0).x, nx, ny);
-            L::LoadPoints(&ref.vertices.data[i0].x, vx, vy);
-        }
-        else
-        {
-            const Vec2T<S>* normals = &ref.Normal(0);
-            const Vec2T<S>* v = ref.vertices.data;
-            nx = L::Set(normals[faces[0]].x, normals[faces[1]].x, normals[faces[2]].x, normals[faces[3]].x);
-            ny = L::Set(normals[faces[0]].y, normals[faces[1]].y, normals[faces[2]].y, normals[faces[3]].y);
-            vx = L::Set(v[faces[0]].x, v[faces[1]].x, v[faces[2]].x, v[faces[3]].x);
-            vy = L::Set(v[faces[0]].y, v[faces[1]].y, v[faces[2]].y, v[faces[3]].y);
-        }
+        const FaceBlock<L, S> block(ref, i0);
+        const int* faces = block.faces;
         // The same products, sums and minimum as FaceSeparation, so the same bits.
-        const L offset = nx * vx + ny * vy;
-        L separation = (ProjectionMinimum<N>(inc, nx, ny) - offset) + L::Fill(S(0));
+        L separation = (ProjectionMinimum<N>(inc, block.nx, block.ny) - block.Offset()) + L::Fill(S(0));
         const int skipped = i0 < 64 ? static_cast<int>((skip >> i0) & 0xF) : 0;
         if (skipped != 0)
         {
@@ -748,13 +757,12 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
 ///      it finds, which bounds the next faces more tightly. O(n + m) in the worst case; for the random pairs of
 ///      satviz-bench, a pass over a 1024-gon walks to 1 to 90 faces instead of 1024.
 ///   4. A separation > 0 is a separating axis: stop there (early exit).
-///   5. Overlap's scan only, back-face pruning when Tracer::kPrune (off by default): separation_i <= Dot(n, c - v_i)
-///   for
-///      inc's centroid c, which lies inside inc. When that bound is not above `floor` (Overlap: 0, the face cannot
-///      separate) nor above the best face so far (Collide: the face cannot become the reference face), the face is
-///      not scanned; in exact arithmetic the answer is the same. It scans fewer faces (3.6 of 10 for Overlap of
-///      8-gons) but its branch is mispredicted so often that Overlap of 3- to 8-gons ran 1.2 to 1.35 times slower
-///      with it (satviz-bench, "with pruning").
+///   5. Overlap's scan only, back-face pruning when Tracer::kPrune (off by default): separation_i <=
+///      Dot(n, c - v_i) for inc's centroid c, which lies inside inc. When that bound is not above `floor` (Overlap: 0,
+///      the face cannot separate) nor above the best face so far (Collide: the face cannot become the reference face),
+///      the face is not scanned; in exact arithmetic the answer is the same. It scans fewer faces (3.6 of 10 for
+///      Overlap of 8-gons) but its branch is mispredicted so often that Overlap of 3- to 8-gons ran 1.2 to 1.35 times
+///      slower with it (satviz-bench, "with pruning").
 ///   6. Second pass only: a face of ref exactly anti-parallel to a face of inc repeats the test the first pass made
 ///      from that face, and is skipped (scan: the faces in `skip`; walk: inc's support edge is exactly
 ///      perpendicular to the direction).

@@ -224,32 +224,25 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     for (int i0 = 0; i0 < n && !ends.Any(); i0 += 4)
     {
         // The block's faces; the last block repeats the last face.
-        const int i1 = std::min(i0 + 1, n - 1);
-        const int i2 = std::min(i0 + 2, n - 1);
-        const int i3 = std::min(i0 + 3, n - 1);
-        const Vec2T<S>& n0 = ref.Normal(i0);
-        const Vec2T<S>& n1 = ref.Normal(i1);
-        const Vec2T<S>& n2 = ref.Normal(i2);
-        const Vec2T<S>& n3 = ref.Normal(i3);
-        const L nx = L::Set(n0.x, n1.x, n2.x, n3.x);
-        const L ny = L::Set(n0.y, n1.y, n2.y, n3.y);
+        const FaceBlock<L, S> block(ref, i0);
+        const int i1 = block.faces[1];
+        const int i2 = block.faces[2];
+        const int i3 = block.faces[3];
+        const L& nx = block.nx;
+        const L& ny = block.ny;
         L separations;
         if constexpr (kScan)
         {
             // The four faces side by side: each vertex of inc is projected on all four normals at once and the
             // minimum kept per lane, so no minimum is taken across lanes. The same products, sums and minimum as
             // FaceSeparation, so the same bits.
-            const Vec2T<S>& v0 = ref.vertices[i0];
-            const Vec2T<S>& v1 = ref.vertices[i1];
-            const Vec2T<S>& v2 = ref.vertices[i2];
-            const Vec2T<S>& v3 = ref.vertices[i3];
-            const L offset = nx * L::Set(v0.x, v1.x, v2.x, v3.x) + ny * L::Set(v0.y, v1.y, v2.y, v3.y);
+            const L offset = block.Offset();
             const L low = ProjectionMinimum<N>(inc, nx, ny);
             separations = (low - offset) + L::Fill(S(0));
         }
         else
         {
-            const int faces[4] = {i0, i1, i2, i3};
+            const int* faces = block.faces;
             S separation[4];
             for (int l = 0; l < 4; ++l)
             {
