@@ -398,8 +398,9 @@ S FaceSeparation(const S* x, const S* y, Vec2T<S> normal, S offset, S* inside)
 }
 
 /// The incident polygon of a face query: the polygon, its transform into the reference frame, and, when it is
-/// small enough to scan, its vertices mapped into that frame as a structure of arrays on the stack (padded to a
-/// multiple of 4 entries by repeating the last vertex).
+/// small enough to scan, its vertices mapped into that frame as a structure of arrays on the stack, followed by
+/// vertex 0 again up to the next multiple of 4 entries past the last vertex: scans read whole blocks of 4, and
+/// entry `count` closes the outline, so edge j runs from entry j to entry j + 1.
 template <typename S>
 struct IncidentPolygon
 {
@@ -408,7 +409,7 @@ struct IncidentPolygon
     TransformT<S> xf;           ///< its frame relative to the reference polygon
     bool scan;                  ///< small: mapped below, scanned
     Vec2T<S> centroid;          ///< the polygon's centroid in the reference frame
-    int padded = 0;             ///< entries filled in x and y
+    int padded = 0; ///< entries a scan reads, a multiple of 4 (entries from the vertex count to this one hold vertex 0)
     alignas(32) S x[kCapacity];
     alignas(32) S y[kCapacity];
 
@@ -441,10 +442,10 @@ struct IncidentPolygon
             ((c * vx - s * vy) + px).Store(x + j);
             ((s * vx + c * vy) + py).Store(y + j);
         }
-        for (int j = count; j < padded; ++j)
+        for (int j = count; j <= padded; ++j)
         {
-            x[j] = x[count - 1];
-            y[j] = y[count - 1];
+            x[j] = x[0];
+            y[j] = y[0];
         }
     }
 
@@ -482,7 +483,7 @@ struct IncidentPolygon
         {
             low = Min(normal);
         }
-        // Padding repeats the last vertex, so a padded entry that reaches the minimum comes after a real one.
+        // Padding repeats vertex 0, so a padded entry that reaches the minimum comes after a real one.
         using L = Lanes<S, kWide && std::is_same_v<S, double>>;
         const L nx = L::Fill(normal.x);
         const L ny = L::Fill(normal.y);
@@ -494,6 +495,51 @@ struct IncidentPolygon
         return hits != 0 ? __builtin_ctz(hits) : 0; // no hit only for NaN input
     }
 };
+
+/// The incident edge of a scanned inc against a reference face of unit normal `normal` (reference frame): the edge
+/// whose outward normal is most anti-parallel to it, the first on a tie. Along a convex outline the normals turn
+/// one way, so the two closest in angle to -normal are those of the edges at the support vertex in direction
+/// -normal, and this is the better of those two. One scan of all the normals (in inc's frame, four per step) and
+/// no support point first: a shorter chain of dependent steps than finding the support vertex, then comparing.
+template <bool kWide = false, typename S>
+int ScannedIncidentEdge(const IncidentPolygon<S>& inc, Vec2T<S> normal)
+{
+    using L = Lanes<S, kWide && std::is_same_v<S, double>>;
+    const Vec2T<S> d = InvRotate(inc.xf.q, normal);
+    const L dx = L::Fill(d.x);
+    const L dy = L::Fill(d.y);
+    const int count = inc.polygon.Count();
+    const Vec2T<S>* normals = &inc.polygon.Normal(0);
+    alignas(32) S dots[IncidentPolygon<S>::kCapacity];
+    L low = L::Fill(std::numeric_limits<S>::infinity());
+    for (int j = 0; j < count; j += 4)
+    {
+        L nx;
+        L ny;
+        if (j + 4 <= count)
+        {
+            L::LoadPoints(&normals[j].x, nx, ny);
+        }
+        else
+        {
+            const int j1 = std::min(j + 1, count - 1);
+            const int j2 = std::min(j + 2, count - 1);
+            const int j3 = std::min(j + 3, count - 1);
+            nx = L::Set(normals[j].x, normals[j1].x, normals[j2].x, normals[j3].x);
+            ny = L::Set(normals[j].y, normals[j1].y, normals[j2].y, normals[j3].y);
+        }
+        const L dots4 = dx * nx + dy * ny;
+        dots4.Store(dots + j);
+        low = Min(low, dots4);
+    }
+    const L least = L::Fill(low.MinLane());
+    uint32_t hits = 0;
+    for (int j = 0; j < count; j += 4)
+    {
+        hits |= static_cast<uint32_t>((L::Load(dots + j) == least).Bits()) << j;
+    }
+    return hits != 0 ? __builtin_ctz(hits) : 0; // no hit only for NaN input
+}
 
 /// The signed distance of `point` (polygon frame) from the line of face i: Dot(Normal(i), point - v_i), > 0 outside.
 template <typename S>
@@ -660,15 +706,18 @@ struct FaceBlock
 };
 
 /// The face query of Collide (unit normals) against a scanned inc, four faces of ref at a time in lanes (QueryFacesN,
-/// steps 2, 4 and 6). Each vertex of inc is projected on the four normals at once (ProjectionMinimum), so no minimum
-/// is taken across lanes, and a block of four faces costs one branch instead of one per face, whose outcome follows
-/// the geometry and would be mispredicted. The last block repeats the last face, which changes no answer. Each lane
-/// keeps the largest separation it saw and its first face; the lanes combine into the first face of the largest
-/// separation, as a face-by-face loop finds it. A block that holds a separating face ends the query at the first
-/// such face. The recorder replays the block's faces in order, up to that face, with the same numbers.
+/// steps 2, 4 and 6). Each vertex of inc is projected on four normals at once, so no minimum is taken across lanes,
+/// and a block of four faces costs one branch instead of one per face, whose outcome follows the geometry and would
+/// be mispredicted. The last block repeats the last face, which changes no answer. Each lane keeps the largest
+/// separation it saw and its first face; the lanes combine into the first face of the largest separation, as a
+/// face-by-face loop finds it. A block that holds a separating face ends the query at the first such face. The
+/// recorder replays the block's faces in order, up to that face, with the same numbers.
+/// kBlocks > 0: ref has at most 4 kBlocks faces, all scanned in one pass over inc's vertices (each vertex loaded
+/// once for every block, the blocks' normals held in registers); 0: a pass per block. The minimum over the vertices
+/// is taken in the same order either way, so the same bits.
 /// Collide needs every face of an overlapping pair, so blocks pay; Overlap stops at its first separating face and
 /// reads which vertices lie inside, which a face at a time does faster (8-gons: 1.1 to 1.3 times, in lanes).
-template <int N, typename S, typename Tracer>
+template <int N, int kBlocks, typename S, typename Tracer>
 FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second,
                             Tracer& tracer)
 {
@@ -681,13 +730,9 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
     FaceQuery<S> query;
     query.face = 0;
     L best = L::Fill(-kInfinity);
-    L bestFace = L::Fill(S(0));
-    for (int i0 = 0; i0 < n; i0 += 4)
-    {
-        const FaceBlock<L, S> block(ref, i0);
-        const int* faces = block.faces;
-        // The same products, sums and minimum as FaceSeparation, so the same bits.
-        L separation = (ProjectionMinimum<N>(inc, block.nx, block.ny) - block.Offset()) + L::Fill(S(0));
+    L bestBlock = L::Fill(S(0));
+    // Takes the separations of the four faces from i0; true when the query stops there.
+    const auto take = [&](int i0, L separation) {
         const int skipped = i0 < 64 ? static_cast<int>((skip >> i0) & 0xF) : 0;
         if (skipped != 0)
         {
@@ -704,34 +749,82 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
             {
                 if ((skipped >> l) & 1)
                 {
-                    tracer.SkippedFace(faces[l], -1);
+                    tracer.SkippedFace(i0 + l, -1);
                     continue;
                 }
-                const Vec2T<S> normal = ref.Normal(faces[l]);
+                const Vec2T<S> normal = ref.Normal(i0 + l);
                 const S value = separation.Get(l);
-                tracer.FaceAxis(side, faces[l], normal, value, inc.Support(normal), value > S(0));
+                tracer.FaceAxis(side, i0 + l, normal, value, inc.Support(normal), value > S(0));
             }
         }
         if (separating != 0 && !query.separated)
         {
             query.separated = true;
-            query.face = faces[stop];
+            query.face = std::min(i0 + stop, n - 1);
             query.separation = separation.Get(stop);
             if constexpr (Tracer::kEarlyExit)
             {
-                return query;
+                return true;
             }
         }
         const typename L::Mask better = separation > best;
         best = Select(better, separation, best);
-        bestFace = Select(better, L::Set(S(faces[0]), S(faces[1]), S(faces[2]), S(faces[3])), bestFace);
+        bestBlock = Select(better, L::Fill(S(i0)), bestBlock);
+        return false;
+    };
+    if constexpr (kBlocks == 1)
+    {
+        const FaceBlock<L, S> block(ref, 0);
+        L low = L::Fill(S(0));
+        for (int j = 0; j < N; ++j)
+        {
+            const L projection = block.nx * L::Fill(inc.x[j]) + block.ny * L::Fill(inc.y[j]);
+            low = j == 0 ? projection : Min(low, projection);
+        }
+        // The same products, sums and minimum as FaceSeparation, so the same bits.
+        if (take(0, (low - block.Offset()) + L::Fill(S(0))))
+        {
+            return query;
+        }
+    }
+    else if constexpr (kBlocks == 2)
+    {
+        const FaceBlock<L, S> block0(ref, 0);
+        const FaceBlock<L, S> block1(ref, 4);
+        L low0 = L::Fill(S(0));
+        L low1 = L::Fill(S(0));
+        for (int j = 0; j < N; ++j)
+        {
+            const L x = L::Fill(inc.x[j]);
+            const L y = L::Fill(inc.y[j]);
+            const L projection0 = block0.nx * x + block0.ny * y;
+            const L projection1 = block1.nx * x + block1.ny * y;
+            low0 = j == 0 ? projection0 : Min(low0, projection0);
+            low1 = j == 0 ? projection1 : Min(low1, projection1);
+        }
+        if (take(0, (low0 - block0.Offset()) + L::Fill(S(0))) || take(4, (low1 - block1.Offset()) + L::Fill(S(0))))
+        {
+            return query;
+        }
+    }
+    else
+    {
+        for (int i0 = 0; i0 < n; i0 += 4)
+        {
+            const FaceBlock<L, S> block(ref, i0);
+            if (take(i0, (ProjectionMinimum<N>(inc, block.nx, block.ny) - block.Offset()) + L::Fill(S(0))))
+            {
+                return query;
+            }
+        }
     }
     if (!query.separated)
     {
         // The first face of the largest separation: the smallest face index among the lanes that hold it (none
-        // for NaN input: face 0).
+        // for NaN input: face 0). A lane past the last face repeats it and comes after it.
         const S largest = best.MaxLane();
-        const S face = Select(best == L::Fill(largest), bestFace, L::Fill(S(n))).MinLane();
+        const S face =
+            Select(best == L::Fill(largest), bestBlock + L::Set(S(0), S(1), S(2), S(3)), L::Fill(S(n))).MinLane();
         query.separation = largest;
         query.face = face < S(n) ? static_cast<int>(face) : 0;
     }
@@ -780,7 +873,15 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
     constexpr bool kScan = N > 0;
     if constexpr (kScan && kUnit)
     {
-        return ScanFaceBlocks<N>(ref, inc, side, second, tracer);
+        switch ((ref.Count() + 3) / 4)
+        {
+        case 1:
+            return ScanFaceBlocks<N, 1>(ref, inc, side, second, tracer);
+        case 2:
+            return ScanFaceBlocks<N, 2>(ref, inc, side, second, tracer);
+        default:
+            return ScanFaceBlocks<N, 0>(ref, inc, side, second, tracer);
+        }
     }
     const int n = ref.Count();
     FaceQuery<S> query;
@@ -1086,30 +1187,6 @@ bool OverlapPolygonsCached(const PolygonT<S>& a, const TransformT<S>& xfA, const
     return true;
 }
 
-/// Keeps the part of segment [p0, p1] on the inner side of a plane, where Dot(normal, p - point) <= 0
-/// (Sutherland-Hodgman for one plane). Returns the number of points written to out (0 to 2).
-template <typename S>
-int ClipSegmentToPlane(Vec2T<S> out[2], Vec2T<S> p0, Vec2T<S> p1, Vec2T<S> normal, Vec2T<S> point)
-{
-    const S d0 = Dot(normal, p0 - point);
-    const S d1 = Dot(normal, p1 - point);
-    int count = 0;
-    if (d0 <= S(0))
-    {
-        out[count++] = p0;
-    }
-    if (d1 <= S(0))
-    {
-        out[count++] = p1;
-    }
-    if ((d0 < S(0) && d1 > S(0)) || (d0 > S(0) && d1 < S(0)))
-    {
-        const S u = d0 / (d0 - d1);
-        out[count++] = p0 + u * (p1 - p0);
-    }
-    return count;
-}
-
 /// Contact points from clipping, in the reference polygon's frame, with what the trace shows of the clipping.
 /// The arrays are valid up to their counts and left uninitialised beyond: zeroing the whole struct cost a block
 /// store (rep stos) per manifold, about a tenth of Collide's time for 8-gons.
@@ -1130,13 +1207,16 @@ struct ClipResult
 };
 
 /// Contact points of a reference face (Catto; Gregorius):
-///   1. Incident edge: of the two edges of the incident polygon at its support vertex against the face, the one
-///      whose normal is most anti-parallel to the reference normal.
-///   2. Clip it against the two side planes of the reference face (Sutherland-Hodgman).
+///   1. Incident edge: the edge of the incident polygon whose normal is most anti-parallel to the reference normal.
+///      One of the two edges at the support vertex against the face: a scanned polygon compares all its normals
+///      (ScannedIncidentEdge) and reads the edge's ends from its mapped vertices; a walked one compares the two
+///      edges at `support`.
+///   2. Clip it against the two side planes of the reference face (Sutherland-Hodgman), without branches.
 ///   3. Keep the clipped points whose separation from the face is at most `keepBelow` (0 for resting contact; a
 ///      little more at a time of impact, where touching points carry rounding of either sign). The contact point
 ///      is halfway between the kept point and the reference face.
-///   4. If clipping keeps nothing (a rounding artefact at a vertex-vertex contact), use the deepest vertex.
+///   4. If clipping keeps nothing (a rounding artefact at a vertex-vertex contact), use the deepest vertex: the
+///      support vertex, or the deeper end of the incident edge, which is that vertex.
 /// `support` is the incident support vertex if known, else -1.
 template <bool kWide = false, typename S>
 ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& inc, int support,
@@ -1149,39 +1229,70 @@ ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentP
     const Vec2T<S> normal = ref.Normal(face);
     const Vec2T<S> tangent = LeftPerp(normal);
 
-    const int s = support >= 0 ? support : inc.template Support<kWide>(normal);
-    const int before = Prev(s, m);
-    const S dotLeaving = Dot(normal, Rotate(inc.xf.q, inc.polygon.Normal(s)));
-    const S dotEntering = Dot(normal, Rotate(inc.xf.q, inc.polygon.Normal(before)));
-    out.incidentEdge = Select(dotEntering < dotLeaving, before, s);
-    out.w1 = TransformPoint(inc.xf, inc.polygon.vertices[out.incidentEdge]);
-    out.w2 = TransformPoint(inc.xf, inc.polygon.vertices[Next(out.incidentEdge, m)]);
-
-    out.count1 = ClipSegmentToPlane(out.clip1, out.w1, out.w2, -tangent, v1);
-    if (out.count1 == 2)
+    int s = support;
+    if (inc.scan && support < 0)
     {
-        out.count2 = ClipSegmentToPlane(out.clip2, out.clip1[0], out.clip1[1], tangent, v2);
+        out.incidentEdge = ScannedIncidentEdge<kWide>(inc, normal);
+        out.w1 = {inc.x[out.incidentEdge], inc.y[out.incidentEdge]};
+        out.w2 = {inc.x[out.incidentEdge + 1], inc.y[out.incidentEdge + 1]};
     }
-    else if (out.count1 == 1 && Dot(tangent, out.clip1[0] - v2) <= S(0))
+    else
     {
-        // A single point survives the first plane only when the edge touches it; test it against the second.
-        out.clip2[out.count2++] = out.clip1[0];
+        s = support >= 0 ? support : inc.template Support<kWide>(normal);
+        const int before = Prev(s, m);
+        const S dotLeaving = Dot(normal, Rotate(inc.xf.q, inc.polygon.Normal(s)));
+        const S dotEntering = Dot(normal, Rotate(inc.xf.q, inc.polygon.Normal(before)));
+        out.incidentEdge = Select(dotEntering < dotLeaving, before, s);
+        out.w1 = TransformPoint(inc.xf, inc.polygon.vertices[out.incidentEdge]);
+        out.w2 = TransformPoint(inc.xf, inc.polygon.vertices[Next(out.incidentEdge, m)]);
     }
-    for (int k = 0; k < out.count2; ++k)
+    // Clipping: both side planes cut the incident edge w1 w2 itself, each crossing point taken from w1 and w2, so
+    // that the two divisions run side by side and every choice is a select, not a branch on where the edge lies.
+    // An end outside a plane moves to that plane's crossing when the other end lies strictly inside; an end on a
+    // plane stays, and an edge that only touches a plane keeps that one point.
+    const Vec2T<S> edge = out.w2 - out.w1;
+    const S a1 = Dot(-tangent, out.w1 - v1); // side plane 1: outward -tangent, through v1; > 0 outside
+    const S b1 = Dot(-tangent, out.w2 - v1);
+    const S a2 = Dot(tangent, out.w1 - v2); // side plane 2: outward tangent, through v2
+    const S b2 = Dot(tangent, out.w2 - v2);
+    const bool cross1 = (a1 < S(0) && b1 > S(0)) || (a1 > S(0) && b1 < S(0));
+    const bool cross2 = (a2 < S(0) && b2 > S(0)) || (a2 > S(0) && b2 < S(0));
+    const Vec2T<S> x1 = out.w1 + (a1 / (cross1 ? a1 - b1 : S(1))) * edge;
+    const Vec2T<S> x2 = out.w1 + (a2 / (cross2 ? a2 - b2 : S(1))) * edge;
+    // The first plane alone (the trace's first clip), then both.
+    const bool keepA1 = a1 <= S(0) || cross1;
+    const bool keepB1 = b1 <= S(0) || cross1;
+    const Vec2T<S> endA1 = a1 <= S(0) ? out.w1 : x1;
+    const Vec2T<S> endB1 = b1 <= S(0) ? out.w2 : x1;
+    const bool keepA = keepA1 && (a2 <= S(0) || (cross2 && b2 < S(0)));
+    const bool keepB = keepB1 && (b2 <= S(0) || (cross2 && a2 < S(0)));
+    const Vec2T<S> endA = a2 <= S(0) ? endA1 : x2;
+    const Vec2T<S> endB = b2 <= S(0) ? endB1 : x2;
+    out.count1 = int(keepA1) + int(keepB1);
+    out.clip1[0] = keepA1 ? endA1 : endB1;
+    out.clip1[1] = endB1;
+    out.count2 = int(keepA) + int(keepB);
+    out.clip2[0] = keepA ? endA : endB;
+    out.clip2[1] = endB;
+    for (int k = 0; k < 2; ++k)
     {
         out.separations[k] = Dot(normal, out.clip2[k] - v1);
-        out.kept[k] = out.separations[k] <= keepBelow;
-        if (out.kept[k])
-        {
-            ContactPointT<S>& contact = out.contacts[out.contactCount++];
-            contact.point = out.clip2[k] - (S(0.5) * out.separations[k]) * normal;
-            contact.separation = out.separations[k];
-        }
+        out.kept[k] = k < out.count2 && out.separations[k] <= keepBelow;
     }
+    const bool keep0 = out.kept[0];
+    out.contactCount = int(keep0) + int(out.kept[1]);
+    const S sep0 = keep0 ? out.separations[0] : out.separations[1];
+    const Vec2T<S> p0 = keep0 ? out.clip2[0] : out.clip2[1];
+    out.contacts[0].point = p0 - (S(0.5) * sep0) * normal;
+    out.contacts[0].separation = sep0;
+    out.contacts[1].point = out.clip2[1] - (S(0.5) * out.separations[1]) * normal;
+    out.contacts[1].separation = out.separations[1];
     out.fallback = out.contactCount == 0;
     if (out.fallback)
     {
-        const Vec2T<S> deepest = TransformPoint(inc.xf, inc.polygon.vertices[s]);
+        const Vec2T<S> deepest = s >= 0                                ? TransformPoint(inc.xf, inc.polygon.vertices[s])
+                                 : Dot(normal, out.w2 - out.w1) < S(0) ? out.w2
+                                                                       : out.w1;
         const S separation = Dot(normal, deepest - v1);
         out.contacts[0].point = deepest - (S(0.5) * separation) * normal;
         out.contacts[0].separation = separation;
