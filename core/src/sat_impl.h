@@ -732,7 +732,8 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
     L best = L::Fill(-kInfinity);
     L bestBlock = L::Fill(S(0));
     // Takes the separations of the four faces from i0; true when the query stops there.
-    const auto take = [&](int i0, L separation) {
+    const auto take = [&](int i0, const L& blockSeparation) {
+        L separation = blockSeparation;
         const int skipped = i0 < 64 ? static_cast<int>((skip >> i0) & 0xF) : 0;
         if (skipped != 0)
         {
@@ -1344,15 +1345,20 @@ template <typename S, typename Tracer>
 ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b,
                              const TransformT<S>& xfB, Tracer& tracer)
 {
-    ManifoldT<S> manifold;
     const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
     const IncidentPolygon<S> incB(b, bInA, kScanLimit, std::bool_constant<Tracer::kWide>{});
     const FaceQuery<S> queryA = QueryFaces<true>(a, incB, 0, false, -std::numeric_limits<S>::infinity(), tracer);
     if (queryA.separated)
     {
-        manifold.gap = queryA.separation;
-        manifold.normal = Rotate(xfA.q, a.Normal(queryA.face));
-        manifold.axis = {AxisKind::FaceNormal, 0, queryA.face};
+        // Every member written once, so the result is not first cleared whole.
+        const ManifoldT<S> manifold{false,
+                                    S(0),
+                                    queryA.separation,
+                                    Rotate(xfA.q, a.Normal(queryA.face)),
+                                    {},
+                                    0,
+                                    {AxisKind::FaceNormal, 0, queryA.face},
+                                    -1};
         if constexpr (Tracer::kEnabled)
         {
             tracer.Finish(TraceExit::SeparatingAxis, manifold);
@@ -1364,9 +1370,14 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     const FaceQuery<S> queryB = QueryFaces<true>(b, incA, 1, true, queryA.separation, tracer);
     if (queryB.separated)
     {
-        manifold.gap = queryB.separation;
-        manifold.normal = -Rotate(xfB.q, b.Normal(queryB.face));
-        manifold.axis = {AxisKind::FaceNormal, 1, queryB.face};
+        const ManifoldT<S> manifold{false,
+                                    S(0),
+                                    queryB.separation,
+                                    -Rotate(xfB.q, b.Normal(queryB.face)),
+                                    {},
+                                    0,
+                                    {AxisKind::FaceNormal, 1, queryB.face},
+                                    -1};
         if constexpr (Tracer::kEnabled)
         {
             tracer.Finish(TraceExit::SeparatingAxis, manifold);
@@ -1383,18 +1394,19 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
 
     const ClipResult<S> clip =
         ClipIncidentEdge<Tracer::kWide>(ref, query.face, inc, inc.scan ? -1 : query.support, S(0));
-    for (int k = 0; k < clip.contactCount; ++k)
-    {
-        manifold.contacts[k].point = TransformPoint(xfRef, clip.contacts[k].point);
-        manifold.contacts[k].separation = clip.contacts[k].separation;
-    }
-    manifold.contactCount = clip.contactCount;
-    manifold.overlap = true;
-    manifold.depth = -query.separation;
     const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(query.face));
-    manifold.normal = flip ? -worldNormal : worldNormal;
-    manifold.axis = {AxisKind::FaceNormal, flip ? 1 : 0, query.face};
-    manifold.incidentEdge = clip.incidentEdge;
+    const ManifoldT<S> manifold{
+        true,
+        -query.separation,
+        S(0),
+        flip ? -worldNormal : worldNormal,
+        {{TransformPoint(xfRef, clip.contacts[0].point), clip.contacts[0].separation},
+         clip.contactCount == 2
+             ? ContactPointT<S>{TransformPoint(xfRef, clip.contacts[1].point), clip.contacts[1].separation}
+             : ContactPointT<S>{}},
+        clip.contactCount,
+        {AxisKind::FaceNormal, flip ? 1 : 0, query.face},
+        clip.incidentEdge};
 
     if constexpr (Tracer::kEnabled)
     {
