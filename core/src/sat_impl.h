@@ -510,10 +510,8 @@ int ScannedIncidentEdge(const IncidentPolygon<S>& inc, Vec2T<S> normal)
     const L dy = L::Fill(d.y);
     const int count = inc.polygon.Count();
     const Vec2T<S>* normals = &inc.polygon.Normal(0);
-    alignas(32) S dots[IncidentPolygon<S>::kCapacity];
-    L low = L::Fill(std::numeric_limits<S>::infinity());
-    for (int j = 0; j < count; j += 4)
-    {
+    // Four normals from j as lanes, the last normal repeated past the end (which moves no first minimum).
+    const auto dots = [&](int j) {
         L nx;
         L ny;
         if (j + 4 <= count)
@@ -522,21 +520,39 @@ int ScannedIncidentEdge(const IncidentPolygon<S>& inc, Vec2T<S> normal)
         }
         else
         {
+            const int j0 = std::min(j, count - 1);
             const int j1 = std::min(j + 1, count - 1);
             const int j2 = std::min(j + 2, count - 1);
             const int j3 = std::min(j + 3, count - 1);
-            nx = L::Set(normals[j].x, normals[j1].x, normals[j2].x, normals[j3].x);
-            ny = L::Set(normals[j].y, normals[j1].y, normals[j2].y, normals[j3].y);
+            nx = L::Set(normals[j0].x, normals[j1].x, normals[j2].x, normals[j3].x);
+            ny = L::Set(normals[j0].y, normals[j1].y, normals[j2].y, normals[j3].y);
         }
-        const L dots4 = dx * nx + dy * ny;
-        dots4.Store(dots + j);
-        low = Min(low, dots4);
-    }
-    const L least = L::Fill(low.MinLane());
+        return dx * nx + dy * ny;
+    };
     uint32_t hits = 0;
-    for (int j = 0; j < count; j += 4)
+    if (count <= 8)
     {
-        hits |= static_cast<uint32_t>((L::Load(dots + j) == least).Bits()) << j;
+        // Up to eight normals, held in registers: the shortest chain from the face to the edge.
+        const L dots0 = dots(0);
+        const L dots1 = dots(4);
+        const L least = L::Fill(Min(dots0, dots1).MinLane());
+        hits = static_cast<uint32_t>((dots0 == least).Bits()) | static_cast<uint32_t>((dots1 == least).Bits()) << 4;
+    }
+    else
+    {
+        alignas(32) S stored[IncidentPolygon<S>::kCapacity];
+        L low = L::Fill(std::numeric_limits<S>::infinity());
+        for (int j = 0; j < count; j += 4)
+        {
+            const L block = dots(j);
+            block.Store(stored + j);
+            low = Min(low, block);
+        }
+        const L least = L::Fill(low.MinLane());
+        for (int j = 0; j < count; j += 4)
+        {
+            hits |= static_cast<uint32_t>((L::Load(stored + j) == least).Bits()) << j;
+        }
     }
     return hits != 0 ? __builtin_ctz(hits) : 0; // no hit only for NaN input
 }
@@ -705,6 +721,41 @@ struct FaceBlock
     L Offset() const { return nx * vx + ny * vy; }
 };
 
+/// The separations of the faces of a small ref (kBlocks blocks of four, 1 or 2: at most 8 faces) from a scanned inc
+/// of N padded vertices, per block in lanes, in one pass over inc's vertices: each vertex is loaded once, as lanes,
+/// for both blocks, whose normals stay in registers. The same products, sums and minimum as FaceSeparation, so the
+/// same bits. (Named members: arrays of lanes end up on the stack.)
+template <int N, int kBlocks, typename L>
+struct SmallRefSeparations
+{
+    static_assert(kBlocks == 1 || kBlocks == 2, "one or two blocks");
+    L block0; ///< faces 0 to 3
+    L block1; ///< faces 4 to 7 (kBlocks = 2)
+
+    template <typename S>
+    SmallRefSeparations(const PolygonT<S>& ref, const IncidentPolygon<S>& inc)
+    {
+        const FaceBlock<L, S> faces0(ref, 0);
+        const FaceBlock<L, S> faces1(ref, kBlocks == 2 ? 4 : 0);
+        L low0 = L::Fill(S(0));
+        L low1 = L::Fill(S(0));
+        for (int j = 0; j < N; ++j)
+        {
+            const L x = L::Fill(inc.x[j]);
+            const L y = L::Fill(inc.y[j]);
+            const L projection0 = faces0.nx * x + faces0.ny * y;
+            low0 = j == 0 ? projection0 : Min(low0, projection0);
+            if constexpr (kBlocks == 2)
+            {
+                const L projection1 = faces1.nx * x + faces1.ny * y;
+                low1 = j == 0 ? projection1 : Min(low1, projection1);
+            }
+        }
+        block0 = (low0 - faces0.Offset()) + L::Fill(S(0));
+        block1 = kBlocks == 2 ? (low1 - faces1.Offset()) + L::Fill(S(0)) : block0;
+    }
+};
+
 /// The face query of Collide (unit normals) against a scanned inc, four faces of ref at a time in lanes (QueryFacesN,
 /// steps 2, 4 and 6). Each vertex of inc is projected on four normals at once, so no minimum is taken across lanes,
 /// and a block of four faces costs one branch instead of one per face, whose outcome follows the geometry and would
@@ -773,37 +824,10 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
         bestBlock = Select(better, L::Fill(S(i0)), bestBlock);
         return false;
     };
-    if constexpr (kBlocks == 1)
+    if constexpr (kBlocks > 0)
     {
-        const FaceBlock<L, S> block(ref, 0);
-        L low = L::Fill(S(0));
-        for (int j = 0; j < N; ++j)
-        {
-            const L projection = block.nx * L::Fill(inc.x[j]) + block.ny * L::Fill(inc.y[j]);
-            low = j == 0 ? projection : Min(low, projection);
-        }
-        // The same products, sums and minimum as FaceSeparation, so the same bits.
-        if (take(0, (low - block.Offset()) + L::Fill(S(0))))
-        {
-            return query;
-        }
-    }
-    else if constexpr (kBlocks == 2)
-    {
-        const FaceBlock<L, S> block0(ref, 0);
-        const FaceBlock<L, S> block1(ref, 4);
-        L low0 = L::Fill(S(0));
-        L low1 = L::Fill(S(0));
-        for (int j = 0; j < N; ++j)
-        {
-            const L x = L::Fill(inc.x[j]);
-            const L y = L::Fill(inc.y[j]);
-            const L projection0 = block0.nx * x + block0.ny * y;
-            const L projection1 = block1.nx * x + block1.ny * y;
-            low0 = j == 0 ? projection0 : Min(low0, projection0);
-            low1 = j == 0 ? projection1 : Min(low1, projection1);
-        }
-        if (take(0, (low0 - block0.Offset()) + L::Fill(S(0))) || take(4, (low1 - block1.Offset()) + L::Fill(S(0))))
+        const SmallRefSeparations<N, kBlocks, L> separations(ref, inc);
+        if (take(0, separations.block0) || (kBlocks == 2 && take(4, separations.block1)))
         {
             return query;
         }
@@ -1218,10 +1242,11 @@ struct ClipResult
 ///      is halfway between the kept point and the reference face.
 ///   4. If clipping keeps nothing (a rounding artefact at a vertex-vertex contact), use the deepest vertex: the
 ///      support vertex, or the deeper end of the incident edge, which is that vertex.
-/// `support` is the incident support vertex if known, else -1.
+/// `support` is the incident support vertex if known, else -1. `shift`, if given, moves the incident polygon by that
+/// much (reference frame) before clipping: a sweep clips at the time of impact with the polygon mapped at t = 0.
 template <bool kWide = false, typename S>
 ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& inc, int support,
-                               S keepBelow)
+                               S keepBelow, const Vec2T<S>* shift = nullptr)
 {
     ClipResult<S> out;
     const int m = inc.polygon.Count();
@@ -1246,6 +1271,11 @@ ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentP
         out.incidentEdge = Select(dotEntering < dotLeaving, before, s);
         out.w1 = TransformPoint(inc.xf, inc.polygon.vertices[out.incidentEdge]);
         out.w2 = TransformPoint(inc.xf, inc.polygon.vertices[Next(out.incidentEdge, m)]);
+    }
+    if (shift != nullptr)
+    {
+        out.w1 = out.w1 + *shift;
+        out.w2 = out.w2 + *shift;
     }
     // Clipping: both side planes cut the incident edge w1 w2 itself, each crossing point taken from w1 and w2, so
     // that the two divisions run side by side and every choice is a select, not a branch on where the edge lies.
@@ -1291,15 +1321,30 @@ ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentP
     out.fallback = out.contactCount == 0;
     if (out.fallback)
     {
-        const Vec2T<S> deepest = s >= 0                                ? TransformPoint(inc.xf, inc.polygon.vertices[s])
-                                 : Dot(normal, out.w2 - out.w1) < S(0) ? out.w2
-                                                                       : out.w1;
+        // The support vertex; for a scanned inc, the deeper end of the incident edge, which is that vertex.
+        Vec2T<S> deepest = Dot(normal, out.w2 - out.w1) < S(0) ? out.w2 : out.w1;
+        if (s >= 0)
+        {
+            deepest = TransformPoint(inc.xf, inc.polygon.vertices[s]);
+            if (shift != nullptr)
+            {
+                deepest = deepest + *shift;
+            }
+        }
         const S separation = Dot(normal, deepest - v1);
         out.contacts[0].point = deepest - (S(0.5) * separation) * normal;
         out.contacts[0].separation = separation;
         out.contactCount = 1;
     }
     return out;
+}
+
+/// Contact k of a clipping in world space (`xfRef`: the reference polygon's transform), or zero past the count.
+template <typename S>
+ContactPointT<S> WorldContact(const ClipResult<S>& clip, int k, const TransformT<S>& xfRef)
+{
+    const ContactPointT<S> contact{TransformPoint(xfRef, clip.contacts[k].point), clip.contacts[k].separation};
+    return k < clip.contactCount ? contact : ContactPointT<S>{};
 }
 
 /// The trace's view of a clipping, in world space.
@@ -1395,18 +1440,14 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     const ClipResult<S> clip =
         ClipIncidentEdge<Tracer::kWide>(ref, query.face, inc, inc.scan ? -1 : query.support, S(0));
     const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(query.face));
-    const ManifoldT<S> manifold{
-        true,
-        -query.separation,
-        S(0),
-        flip ? -worldNormal : worldNormal,
-        {{TransformPoint(xfRef, clip.contacts[0].point), clip.contacts[0].separation},
-         clip.contactCount == 2
-             ? ContactPointT<S>{TransformPoint(xfRef, clip.contacts[1].point), clip.contacts[1].separation}
-             : ContactPointT<S>{}},
-        clip.contactCount,
-        {AxisKind::FaceNormal, flip ? 1 : 0, query.face},
-        clip.incidentEdge};
+    const ManifoldT<S> manifold{true,
+                                -query.separation,
+                                S(0),
+                                flip ? -worldNormal : worldNormal,
+                                {WorldContact(clip, 0, xfRef), WorldContact(clip, 1, xfRef)},
+                                clip.contactCount,
+                                {AxisKind::FaceNormal, flip ? 1 : 0, query.face},
+                                clip.incidentEdge};
 
     if constexpr (Tracer::kEnabled)
     {

@@ -204,12 +204,23 @@ struct AxisLanes
 //   face, so this ends with the same verdict as stopping at the first face that fails, and the lanes combine to
 //   the first face of the latest entry, as a face-by-face loop finds it. The recorder replays the faces in order
 //   up to that first failing face, with the same numbers.
-template <int N, typename S, typename Tracer>
+template <int N, int kBlocks, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
                 SweepState<S>& state, Tracer& tracer)
 {
     using L = Lanes<S, Tracer::kWide && std::is_same_v<S, double>>;
     constexpr bool kScan = N > 0;
+    // A small ref (kBlocks > 0) has the separations of all its faces from one pass over inc's vertices.
+    const auto small = [&]() {
+        if constexpr (kScan && kBlocks > 0)
+        {
+            return SmallRefSeparations<N, kBlocks, L>(ref, inc);
+        }
+        else
+        {
+            return 0;
+        }
+    }();
     const int n = ref.Count();
     // A face's place in the order A's faces, then B's, as a lane value (exact in float up to 2^24).
     constexpr int kSideStride = 1 << 16;
@@ -231,7 +242,11 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
         const L& nx = block.nx;
         const L& ny = block.ny;
         L separations;
-        if constexpr (kScan)
+        if constexpr (kScan && kBlocks > 0)
+        {
+            separations = i0 == 0 ? small.block0 : small.block1;
+        }
+        else if constexpr (kScan)
         {
             // The four faces side by side: each vertex of inc is projected on all four normals at once and the
             // minimum kept per lane, so no minimum is taken across lanes. The same products, sums and minimum as
@@ -307,7 +322,22 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     return !ends.Any() && !(state.first >= state.last);
 }
 
-// SweepFaces with inc's scan unrolled for its padded vertex count.
+// SweepFaces with inc's scan unrolled for its padded vertex count, and a ref of up to 8 faces in one pass.
+template <int N, typename S, typename Tracer>
+bool SweepFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
+                 SweepState<S>& state, Tracer& tracer)
+{
+    switch (N > 0 ? (ref.Count() + 3) / 4 : 0)
+    {
+    case 1:
+        return SweepFaces<N, 1>(ref, inc, side, velocity, state, tracer);
+    case 2:
+        return SweepFaces<N, 2>(ref, inc, side, velocity, state, tracer);
+    default:
+        return SweepFaces<N, 0>(ref, inc, side, velocity, state, tracer);
+    }
+}
+
 template <typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
                 SweepState<S>& state, Tracer& tracer)
@@ -315,15 +345,15 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     switch (inc.scan ? inc.padded : 0)
     {
     case 4:
-        return SweepFaces<4>(ref, inc, side, velocity, state, tracer);
+        return SweepFacesN<4>(ref, inc, side, velocity, state, tracer);
     case 8:
-        return SweepFaces<8>(ref, inc, side, velocity, state, tracer);
+        return SweepFacesN<8>(ref, inc, side, velocity, state, tracer);
     case 12:
-        return SweepFaces<12>(ref, inc, side, velocity, state, tracer);
+        return SweepFacesN<12>(ref, inc, side, velocity, state, tracer);
     case 16:
-        return SweepFaces<16>(ref, inc, side, velocity, state, tracer);
+        return SweepFacesN<16>(ref, inc, side, velocity, state, tracer);
     default:
-        return SweepFaces<0>(ref, inc, side, velocity, state, tracer);
+        return SweepFacesN<0>(ref, inc, side, velocity, state, tracer);
     }
 }
 
@@ -337,7 +367,8 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
 ///   3. First contact is the latest entry, valid while it is before the earliest exit (strictly: touching at one
 ///      instant is not a hit) and not after t = 1. Each bound only tightens, so the test ends as soon as it fails.
 ///   4. Every s0 < 0: the shapes interpenetrate at t = 0: the static manifold gives the MTV.
-///   5. A hit: contacts by clipping at the time of impact, the axis of the latest entry as reference face.
+///   5. A hit: contacts by clipping at the time of impact, the axis of the latest entry as reference face and the
+///      other polygon, as mapped for the face loops, moved by its relative motion up to that time.
 template <typename S, typename Tracer>
 SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const PolygonT<S>& b,
                               const TransformT<S>& xfB, Vec2T<S> vB, Tracer& tracer)
@@ -348,17 +379,21 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     const Vec2T<S> velocityInB = InvRotate(xfB.q, velocity);
 
     SweepState<S> state;
-    bool going = SweepFaces(a, incB, 0, velocityInA, state, tracer);
-    if (going)
+    const auto finish = [&]() {
+        if constexpr (Tracer::kEnabled)
+        {
+            tracer.Finish(state.exit);
+        }
+    };
+    if (!SweepFaces(a, incB, 0, velocityInA, state, tracer))
     {
-        // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
-        const IncidentPolygon<S> incA(a, InvMulTransforms(xfB, xfA), kScanLimit, std::bool_constant<Tracer::kWide>{});
-        going = SweepFaces(b, incA, 1, -velocityInB, state, tracer);
+        finish();
+        return {};
     }
-    if constexpr (Tracer::kEnabled)
-    {
-        tracer.Finish(state.exit);
-    }
+    // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
+    const IncidentPolygon<S> incA(a, InvMulTransforms(xfB, xfA), kScanLimit, std::bool_constant<Tracer::kWide>{});
+    const bool going = SweepFaces(b, incA, 1, -velocityInB, state, tracer);
+    finish();
     if (!going)
     {
         return {};
@@ -368,37 +403,34 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
         return Initial(Collide(a, xfA, b, xfB));
     }
 
+    // The incident polygon at the time of impact is its mapping at t = 0 moved by its motion relative to the
+    // reference polygon over [0, first], in the reference frame: no polygon is mapped again.
     const S first = state.first;
     const AxisRef firstAxis{AxisKind::FaceNormal, state.firstSide, state.firstFace};
-    SweepResultT<S> result;
-    result.status = SweepStatus::Hit;
-    result.toi = first;
-    result.axis = firstAxis;
     const bool flip = firstAxis.shape == 1;
     const PolygonT<S>& ref = flip ? b : a;
+    const IncidentPolygon<S>& inc = flip ? incA : incB;
+    const Vec2T<S> shift = first * (flip ? -velocityInB : velocityInA);
     const TransformT<S> xfRef = flip ? Moved(xfB, vB, first) : Moved(xfA, vA, first);
-    const TransformT<S> xfInc = flip ? Moved(xfA, vA, first) : Moved(xfB, vB, first);
-    const IncidentPolygon<S> inc(flip ? a : b, InvMulTransforms(xfRef, xfInc), kScanLimit,
-                                 std::bool_constant<Tracer::kWide>{});
     const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(firstAxis.index));
-    result.normal = flip ? -worldNormal : worldNormal;
     // At the time of impact the touching points are at zero distance up to rounding of either sign, which scales
     // with the coordinates in the reference frame: the offset between the frames and the face's own size (its
     // largest coordinate extent, within a factor sqrt(2) of its length and without a square root).
-    const Vec2T<S> offset = inc.xf.p;
+    const Vec2T<S> offset = inc.xf.p + shift;
     const Vec2T<S> face = ref.vertices[firstAxis.index];
     const Vec2T<S> edge = ref.Edge(firstAxis.index);
     const S scale = std::max({std::abs(offset.x), std::abs(offset.y), std::abs(face.x), std::abs(face.y),
                               std::abs(edge.x), std::abs(edge.y)});
     const S slop = S(64) * std::numeric_limits<S>::epsilon() * scale;
-    const ClipResult<S> clip = ClipIncidentEdge<Tracer::kWide>(ref, firstAxis.index, inc, -1, slop);
-    for (int k = 0; k < clip.contactCount; ++k)
-    {
-        result.contacts[k].point = TransformPoint(xfRef, clip.contacts[k].point);
-        result.contacts[k].separation = clip.contacts[k].separation;
-    }
-    result.contactCount = clip.contactCount;
-    return result;
+    const ClipResult<S> clip = ClipIncidentEdge<Tracer::kWide>(ref, firstAxis.index, inc, -1, slop, &shift);
+    // Every member written once, so the result is not first cleared whole.
+    return {SweepStatus::Hit,
+            first,
+            flip ? -worldNormal : worldNormal,
+            {WorldContact(clip, 0, xfRef), WorldContact(clip, 1, xfRef)},
+            clip.contactCount,
+            firstAxis,
+            {}};
 }
 
 // First time the point p0 + t v enters the disc of radius r around c, if it starts outside and crosses the
