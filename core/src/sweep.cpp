@@ -170,6 +170,33 @@ struct SweepState
     SweepExit exit = SweepExit::AllAxesOverlap;
 };
 
+// A face's place in the order A's faces, then B's, as a lane value (exact in float up to 2^24).
+constexpr int kSideStride = 1 << 16;
+
+// What the face loops carry from A's faces to B's, per lane: the latest entry (and its face) and the earliest exit
+// each lane saw, and whether every separation was < 0. The lanes are combined once, after both polygons (Combine),
+// so B's faces need not wait for A's to be combined.
+template <typename L, typename S>
+struct SweepLanes
+{
+    L first = L::Fill(S(0));                       // latest entry so far
+    L firstIndex = L::Fill(S(0));                  // its face: side * kSideStride + face
+    L last = L::Fill(kInfinity<S>);                // earliest exit so far
+    typename L::Mask inside = L::Mask::Fill(true); // every separation so far is < 0
+
+    // The latest entry, at the first face that has it, and the earliest exit.
+    void Combine(SweepState<S>& state) const
+    {
+        state.first = first.MaxLane();
+        const L candidates = Select(first == L::Fill(state.first), firstIndex, L::Fill(S(1 << 30)));
+        const int index = static_cast<int>(candidates.MinLane());
+        state.firstSide = index / kSideStride;
+        state.firstFace = index % kSideStride;
+        state.last = last.MinLane();
+        state.inside = inside.All();
+    }
+};
+
 // Entry, exit and whether the axis never closes, for four axes at once (the per-axis rule of AxisTimes, without
 // branches). With q = s / -r: s >= 0 enters at q (r < 0) or never (r >= 0); s < 0 is overlapping from t = 0 and,
 // when r > 0, exits at q.
@@ -204,11 +231,10 @@ struct AxisLanes
 //   face, so this ends with the same verdict as stopping at the first face that fails, and the lanes combine to
 //   the first face of the latest entry, as a face-by-face loop finds it. The recorder replays the faces in order
 //   up to that first failing face, with the same numbers.
-template <int N, int kBlocks, typename S, typename Tracer>
+template <int N, int kBlocks, typename L, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                SweepState<S>& state, Tracer& tracer)
+                SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
 {
-    using L = Lanes<S, Tracer::kWide && std::is_same_v<S, double>>;
     constexpr bool kScan = N > 0;
     // A small ref (kBlocks > 0) has the separations of all its faces from one pass over inc's vertices.
     const auto small = [&]() {
@@ -222,14 +248,11 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
         }
     }();
     const int n = ref.Count();
-    // A face's place in the order A's faces, then B's, as a lane value (exact in float up to 2^24).
-    constexpr int kSideStride = 1 << 16;
-    L first = L::Fill(state.first);
-    L firstIndex = L::Fill(S(state.firstSide * kSideStride + state.firstFace));
-    L last = L::Fill(state.last);
-    typename L::Mask inside = L::Mask::Fill(true);
+    L& first = lanes.first;
+    L& firstIndex = lanes.firstIndex;
+    L& last = lanes.last;
+    typename L::Mask& inside = lanes.inside;
     typename L::Mask ends = L::Mask::Fill(false);
-    SweepState<S> replay = state; // the recorder's face-by-face view
     bool replayEnded = false;
     int support = 0;
     for (int i0 = 0; i0 < n && !ends.Any(); i0 += 4)
@@ -305,55 +328,43 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
             }
         }
     }
-    // The lanes combined: the latest entry, at the first face that has it, and the earliest exit.
-    state.first = first.MaxLane();
-    const L candidates = Select(first == L::Fill(state.first), firstIndex, L::Fill(S(1 << 30)));
-    const int index = static_cast<int>(candidates.MinLane());
-    state.firstSide = index / kSideStride;
-    state.firstFace = index % kSideStride;
-    state.last = last.MinLane();
-    state.inside = state.inside && inside.All();
     // A latest entry after t = 1 ended its own block (`ends`), so what is left to compare is the latest entry
     // against the earliest exit. Why the test ended is for the trace only, which the replay has.
-    if constexpr (Tracer::kEnabled)
-    {
-        state.exit = replay.exit;
-    }
-    return !ends.Any() && !(state.first >= state.last);
+    return !ends.Any() && !(first.MaxLane() >= last.MinLane());
 }
 
 // SweepFaces with inc's scan unrolled for its padded vertex count, and a ref of up to 8 faces in one pass.
-template <int N, typename S, typename Tracer>
+template <int N, typename L, typename S, typename Tracer>
 bool SweepFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                 SweepState<S>& state, Tracer& tracer)
+                 SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
 {
     switch (N > 0 ? (ref.Count() + 3) / 4 : 0)
     {
     case 1:
-        return SweepFaces<N, 1>(ref, inc, side, velocity, state, tracer);
+        return SweepFaces<N, 1>(ref, inc, side, velocity, lanes, replay, tracer);
     case 2:
-        return SweepFaces<N, 2>(ref, inc, side, velocity, state, tracer);
+        return SweepFaces<N, 2>(ref, inc, side, velocity, lanes, replay, tracer);
     default:
-        return SweepFaces<N, 0>(ref, inc, side, velocity, state, tracer);
+        return SweepFaces<N, 0>(ref, inc, side, velocity, lanes, replay, tracer);
     }
 }
 
-template <typename S, typename Tracer>
+template <typename L, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                SweepState<S>& state, Tracer& tracer)
+                SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
 {
     switch (inc.scan ? inc.padded : 0)
     {
     case 4:
-        return SweepFacesN<4>(ref, inc, side, velocity, state, tracer);
+        return SweepFacesN<4>(ref, inc, side, velocity, lanes, replay, tracer);
     case 8:
-        return SweepFacesN<8>(ref, inc, side, velocity, state, tracer);
+        return SweepFacesN<8>(ref, inc, side, velocity, lanes, replay, tracer);
     case 12:
-        return SweepFacesN<12>(ref, inc, side, velocity, state, tracer);
+        return SweepFacesN<12>(ref, inc, side, velocity, lanes, replay, tracer);
     case 16:
-        return SweepFacesN<16>(ref, inc, side, velocity, state, tracer);
+        return SweepFacesN<16>(ref, inc, side, velocity, lanes, replay, tracer);
     default:
-        return SweepFacesN<0>(ref, inc, side, velocity, state, tracer);
+        return SweepFacesN<0>(ref, inc, side, velocity, lanes, replay, tracer);
     }
 }
 
@@ -378,26 +389,29 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     const Vec2T<S> velocityInA = InvRotate(xfA.q, velocity);
     const Vec2T<S> velocityInB = InvRotate(xfB.q, velocity);
 
-    SweepState<S> state;
+    SweepLanes<Lanes<S, Tracer::kWide && std::is_same_v<S, double>>, S> lanes;
+    SweepState<S> replay; // the recorder's face-by-face view
     const auto finish = [&]() {
         if constexpr (Tracer::kEnabled)
         {
-            tracer.Finish(state.exit);
+            tracer.Finish(replay.exit);
         }
     };
-    if (!SweepFaces(a, incB, 0, velocityInA, state, tracer))
+    if (!SweepFaces(a, incB, 0, velocityInA, lanes, replay, tracer))
     {
         finish();
         return {};
     }
     // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
     const IncidentPolygon<S> incA(a, InvMulTransforms(xfB, xfA), kScanLimit, std::bool_constant<Tracer::kWide>{});
-    const bool going = SweepFaces(b, incA, 1, -velocityInB, state, tracer);
+    const bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, replay, tracer);
     finish();
     if (!going)
     {
         return {};
     }
+    SweepState<S> state;
+    lanes.Combine(state);
     if (state.inside)
     {
         return Initial(Collide(a, xfA, b, xfB));
