@@ -259,9 +259,6 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     {
         // The block's faces; the last block repeats the last face.
         const FaceBlock<L, S> block(ref, i0);
-        const int i1 = block.faces[1];
-        const int i2 = block.faces[2];
-        const int i3 = block.faces[3];
         const L& nx = block.nx;
         const L& ny = block.ny;
         L separations;
@@ -299,7 +296,9 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
         const typename L::Mask later = axes.entry > first;
         first = Select(later, axes.entry, first);
         const S base = S(side * kSideStride);
-        firstIndex = Select(later, L::Set(base + S(i0), base + S(i1), base + S(i2), base + S(i3)), firstIndex);
+        // Lane l holds face i0 + l, past the last face too: a lane that repeats the last face ties with that face's
+        // own lane, whose smaller index Combine takes.
+        firstIndex = Select(later, L::Fill(base + S(i0)) + L::Set(S(0), S(1), S(2), S(3)), firstIndex);
         last = Min(axes.leave, last);
         ends = axes.never | (first > L::Fill(S(1)));
         if constexpr (Tracer::kEnabled)
