@@ -687,34 +687,36 @@ L ProjectionMinimum(const IncidentPolygon<S>& inc, const L& nx, const L& ny)
     return low;
 }
 
-/// Four faces of `polygon` from face i0, the last face repeated past the end, as lanes: their indices, unit
-/// normals (nx, ny) and first vertices (vx, vy). A full block loads its normals and vertices whole.
+/// Four faces of `polygon` from face i0, the last face repeated past the end, as lanes: their unit normals
+/// (nx, ny) and first vertices (vx, vy). A full block loads its normals and vertices whole.
 template <typename L, typename S>
 struct FaceBlock
 {
-    int faces[4]; ///< the faces' indices
-    L nx, ny;     ///< their unit normals
-    L vx, vy;     ///< their first vertices
+    L nx, ny; ///< the faces' unit normals
+    L vx, vy; ///< their first vertices
+
+    /// The face in lane l of the block from face i0, of a polygon of n faces.
+    static int Face(int n, int i0, int l) { return std::min(i0 + l, n - 1); }
 
     FaceBlock(const PolygonT<S>& polygon, int i0)
     {
         const int n = polygon.Count();
-        for (int l = 0; l < 4; ++l)
-        {
-            faces[l] = std::min(i0 + l, n - 1);
-        }
         if (i0 + 4 <= n)
         {
             L::LoadPoints(&polygon.Normal(i0).x, nx, ny);
             L::LoadPoints(&polygon.vertices.data[i0].x, vx, vy);
             return;
         }
+        const int f0 = Face(n, i0, 0);
+        const int f1 = Face(n, i0, 1);
+        const int f2 = Face(n, i0, 2);
+        const int f3 = Face(n, i0, 3);
         const Vec2T<S>* normals = &polygon.Normal(0);
         const Vec2T<S>* v = polygon.vertices.data;
-        nx = L::Set(normals[faces[0]].x, normals[faces[1]].x, normals[faces[2]].x, normals[faces[3]].x);
-        ny = L::Set(normals[faces[0]].y, normals[faces[1]].y, normals[faces[2]].y, normals[faces[3]].y);
-        vx = L::Set(v[faces[0]].x, v[faces[1]].x, v[faces[2]].x, v[faces[3]].x);
-        vy = L::Set(v[faces[0]].y, v[faces[1]].y, v[faces[2]].y, v[faces[3]].y);
+        nx = L::Set(normals[f0].x, normals[f1].x, normals[f2].x, normals[f3].x);
+        ny = L::Set(normals[f0].y, normals[f1].y, normals[f2].y, normals[f3].y);
+        vx = L::Set(v[f0].x, v[f1].x, v[f2].x, v[f3].x);
+        vy = L::Set(v[f0].y, v[f1].y, v[f2].y, v[f3].y);
     }
 
     /// Dot(normal, first vertex) per face: the offset of each face's line.
@@ -725,18 +727,18 @@ struct FaceBlock
 /// of N padded vertices, per block in lanes, in one pass over inc's vertices: each vertex is loaded once, as lanes,
 /// for both blocks, whose normals stay in registers. The same products, sums and minimum as FaceSeparation, so the
 /// same bits. (Named members: arrays of lanes end up on the stack.)
-template <int N, int kBlocks, typename L>
+template <int N, int kBlocks, typename L, typename S>
 struct SmallRefSeparations
 {
     static_assert(kBlocks == 1 || kBlocks == 2, "one or two blocks");
-    L block0; ///< faces 0 to 3
-    L block1; ///< faces 4 to 7 (kBlocks = 2)
+    FaceBlock<L, S> faces0; ///< faces 0 to 3
+    FaceBlock<L, S> faces1; ///< faces 4 to 7 (kBlocks = 2; else faces 0 to 3 again)
+    L block0;               ///< the separations of faces 0 to 3
+    L block1;               ///< of faces 4 to 7 (kBlocks = 2; else those of faces 0 to 3)
 
-    template <typename S>
     SmallRefSeparations(const PolygonT<S>& ref, const IncidentPolygon<S>& inc)
+        : faces0(ref, 0), faces1(kBlocks == 2 ? FaceBlock<L, S>(ref, 4) : faces0)
     {
-        const FaceBlock<L, S> faces0(ref, 0);
-        const FaceBlock<L, S> faces1(ref, kBlocks == 2 ? 4 : 0);
         L low0 = L::Fill(S(0));
         L low1 = L::Fill(S(0));
         for (int j = 0; j < N; ++j)
@@ -826,7 +828,7 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
     };
     if constexpr (kBlocks > 0)
     {
-        const SmallRefSeparations<N, kBlocks, L> separations(ref, inc);
+        const SmallRefSeparations<N, kBlocks, L, S> separations(ref, inc);
         if (take(0, separations.block0) || (kBlocks == 2 && take(4, separations.block1)))
         {
             return query;

@@ -236,11 +236,12 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
                 SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
 {
     constexpr bool kScan = N > 0;
-    // A small ref (kBlocks > 0) has the separations of all its faces from one pass over inc's vertices.
+    constexpr bool kSmall = kScan && kBlocks > 0;
+    // A small ref has the separations of all its faces, and its blocks, from one pass over inc's vertices.
     const auto small = [&]() {
-        if constexpr (kScan && kBlocks > 0)
+        if constexpr (kSmall)
         {
-            return SmallRefSeparations<N, kBlocks, L>(ref, inc);
+            return SmallRefSeparations<N, kBlocks, L, S>(ref, inc);
         }
         else
         {
@@ -248,6 +249,8 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
         }
     }();
     const int n = ref.Count();
+    // A small ref has exactly kBlocks blocks, so its loop unrolls.
+    const int blocksEnd = kSmall ? 4 * kBlocks : n;
     L& first = lanes.first;
     L& firstIndex = lanes.firstIndex;
     L& last = lanes.last;
@@ -255,39 +258,46 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     typename L::Mask ends = L::Mask::Fill(false);
     bool replayEnded = false;
     int support = 0;
-    for (int i0 = 0; i0 < n && !ends.Any(); i0 += 4)
+    for (int i0 = 0; i0 < blocksEnd && !ends.Any(); i0 += 4)
     {
-        // The block's faces; the last block repeats the last face.
-        const FaceBlock<L, S> block(ref, i0);
-        const L& nx = block.nx;
-        const L& ny = block.ny;
+        // The block's normals and separations; the last block repeats the last face.
+        L nx;
+        L ny;
         L separations;
-        if constexpr (kScan && kBlocks > 0)
+        if constexpr (kSmall)
         {
+            const FaceBlock<L, S>& block = i0 == 0 ? small.faces0 : small.faces1;
+            nx = block.nx;
+            ny = block.ny;
             separations = i0 == 0 ? small.block0 : small.block1;
-        }
-        else if constexpr (kScan)
-        {
-            // The four faces side by side: each vertex of inc is projected on all four normals at once and the
-            // minimum kept per lane, so no minimum is taken across lanes. The same products, sums and minimum as
-            // FaceSeparation, so the same bits.
-            const L offset = block.Offset();
-            const L low = ProjectionMinimum<N>(inc, nx, ny);
-            separations = (low - offset) + L::Fill(S(0));
         }
         else
         {
-            const int* faces = block.faces;
-            S separation[4];
-            for (int l = 0; l < 4; ++l)
+            const FaceBlock<L, S> block(ref, i0);
+            nx = block.nx;
+            ny = block.ny;
+            if constexpr (kScan)
             {
-                const int i = faces[l];
-                const Vec2T<S> normal = ref.Normal(i);
-                const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
-                support = i == 0 ? BisectSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
-                separation[l] = inc.Separation(normal, ref.vertices[i], support);
+                // The four faces side by side: each vertex of inc is projected on all four normals at once and
+                // the minimum kept per lane, so no minimum is taken across lanes. The same products, sums and
+                // minimum as FaceSeparation, so the same bits.
+                const L offset = block.Offset();
+                const L low = ProjectionMinimum<N>(inc, nx, ny);
+                separations = (low - offset) + L::Fill(S(0));
             }
-            separations = L::Set(separation[0], separation[1], separation[2], separation[3]);
+            else
+            {
+                S separation[4];
+                for (int l = 0; l < 4; ++l)
+                {
+                    const int i = FaceBlock<L, S>::Face(n, i0, l);
+                    const Vec2T<S> normal = ref.Normal(i);
+                    const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
+                    support = i == 0 ? BisectSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
+                    separation[l] = inc.Separation(normal, ref.vertices[i], support);
+                }
+                separations = L::Set(separation[0], separation[1], separation[2], separation[3]);
+            }
         }
         const L rates = nx * L::Fill(velocity.x) + ny * L::Fill(velocity.y);
         const AxisLanes<L> axes(separations, rates);
