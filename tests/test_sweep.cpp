@@ -230,6 +230,59 @@ TEST_CASE("Traced and untraced sweeps are bit-identical; the trace follows the e
     }
 }
 
+TEST_CASE("SweepTime answers as Sweep, bit for bit, without contact points", "[sweep][properties]")
+{
+    Rng rng(91);
+    SweepTrace full;
+    SweepTrace timeOnly;
+    int hits = 0;
+    for (int i = 0; i < 50000; ++i)
+    {
+        const RandomPair pair = RandomShapePair(rng, 0.2);
+        const Vec2 v =
+            rng.Uniform(0.2, 3.0) * (pair.xfA.p - pair.xfB.p) + rng.Uniform(-0.5, 0.5) * LeftPerp(pair.xfA.p);
+        const Vec2 vA = rng.Chance(0.5) ? Vec2{rng.Uniform(-1, 1), rng.Uniform(-1, 1)} : kStill;
+        const bool traced = rng.Chance(0.2);
+        const SweepResult sweep = Sweep(pair.a, pair.xfA, vA, pair.b, pair.xfB, vA + v, traced ? &full : nullptr);
+        const SweepResult time =
+            SweepTime(pair.a, pair.xfA, vA, pair.b, pair.xfB, vA + v, traced ? &timeOnly : nullptr);
+        INFO("pair " << i);
+        REQUIRE(time.status == sweep.status);
+        REQUIRE(std::memcmp(&time.toi, &sweep.toi, sizeof time.toi) == 0);
+        REQUIRE(std::memcmp(&time.normal, &sweep.normal, sizeof time.normal) == 0);
+        REQUIRE(time.axis.kind == sweep.axis.kind);
+        REQUIRE(time.axis.shape == sweep.axis.shape);
+        REQUIRE(time.axis.index == sweep.axis.index);
+        if (sweep.status == SweepStatus::Hit)
+        {
+            ++hits;
+            REQUIRE(sweep.contactCount > 0);
+            REQUIRE(time.contactCount == 0);
+        }
+        if (traced)
+        {
+            REQUIRE(timeOnly.exit == full.exit);
+            REQUIRE(timeOnly.axes.size() == full.axes.size());
+        }
+        // The float instantiation agrees with its own Sweep too.
+        const ShapeT<float> af = ToFloat(pair.a);
+        const ShapeT<float> bf = ToFloat(pair.b);
+        if ((af.type == ShapeType::Polygon && af.polygon.Count() == 0) ||
+            (bf.type == ShapeType::Polygon && bf.polygon.Count() == 0))
+        {
+            continue;
+        }
+        const Vec2T<float> vAf = ConvertVec<float>(vA);
+        const Vec2T<float> vBf = ConvertVec<float>(vA + v);
+        const SweepResultT<float> sweepF = Sweep(af, ToFloat(pair.xfA), vAf, bf, ToFloat(pair.xfB), vBf);
+        const SweepResultT<float> timeF = SweepTime(af, ToFloat(pair.xfA), vAf, bf, ToFloat(pair.xfB), vBf);
+        REQUIRE(timeF.status == sweepF.status);
+        REQUIRE(std::memcmp(&timeF.toi, &sweepF.toi, sizeof timeF.toi) == 0);
+        REQUIRE(std::memcmp(&timeF.normal, &sweepF.normal, sizeof timeF.normal) == 0);
+    }
+    CHECK(hits > 10000);
+}
+
 TEST_CASE("Circle sweeps are traced axis by axis", "[sweep][circle][trace]")
 {
     const Shape box = BoxShape(1.0, 1.0);

@@ -2,6 +2,7 @@
 // The wide scans (AVX2, chosen at run time) against the baseline instructions: the same bits for every query.
 
 #include "sat_impl.h"
+#include "support/builders.h"
 #include "support/random_shapes.h"
 #include "support/same_bits.h"
 
@@ -39,17 +40,6 @@ Answers Ask(const RandomPair& pair, Vec2 velocity, const ShapeT<float>& fa, cons
     out.floatManifold = Collide(fa, xfA, fb, xfB);
     out.floatSweep = Sweep(fa, xfA, Vec2T<float>{}, fb, xfB, ConvertVec<float>(velocity));
     return out;
-}
-
-ShapeT<float> ToFloat(const Shape& shape)
-{
-    if (shape.type == ShapeType::Circle)
-    {
-        return MakeShape(
-            CircleT<float>{ConvertVec<float>(shape.circle.center), static_cast<float>(shape.circle.radius)});
-    }
-    const PolygonResultT<float> converted = ConvertPolygon<float>(shape.polygon);
-    return converted.Ok() ? MakeShape(converted.polygon) : ShapeT<float>{};
 }
 
 } // namespace

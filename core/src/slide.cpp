@@ -65,7 +65,7 @@ SlideResultT<S> MoveAndSlide(const ShapeT<S>& mover, const TransformT<S>& xf, Ve
         for (int k = 0; k < obstacleCount; ++k)
         {
             const SweepResultT<S> sweep =
-                Sweep(mover, result.xf, remaining, *obstacles[k].shape, obstacles[k].xf, Vec2T<S>{});
+                SweepTime(mover, result.xf, remaining, *obstacles[k].shape, obstacles[k].xf, Vec2T<S>{});
             if (sweep.status == SweepStatus::Hit && sweep.toi < first)
             {
                 first = sweep.toi;

@@ -388,8 +388,9 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
 ///      instant is not a hit) and not after t = 1. Each bound only tightens, so the test ends as soon as it fails.
 ///   4. Every s0 < 0: the shapes interpenetrate at t = 0: the static manifold gives the MTV.
 ///   5. A hit: contacts by clipping at the time of impact, the axis of the latest entry as reference face and the
-///      other polygon, as mapped for the face loops, moved by its relative motion up to that time.
-template <typename S, typename Tracer>
+///      other polygon, as mapped for the face loops, moved by its relative motion up to that time (kContacts; else
+///      no contacts: the time, normal and axis alone).
+template <bool kContacts, typename S, typename Tracer>
 SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const PolygonT<S>& b,
                               const TransformT<S>& xfB, Vec2T<S> vB, Tracer& tracer)
 {
@@ -432,6 +433,12 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     const AxisRef firstAxis{AxisKind::FaceNormal, state.firstSide, state.firstFace};
     const bool flip = firstAxis.shape == 1;
     const PolygonT<S>& ref = flip ? b : a;
+    if constexpr (!kContacts)
+    {
+        // The same normal as below: translation leaves the reference polygon's rotation as it was.
+        const Vec2T<S> worldNormal = Rotate((flip ? xfB : xfA).q, ref.Normal(firstAxis.index));
+        return {SweepStatus::Hit, first, flip ? -worldNormal : worldNormal, {}, 0, firstAxis, {}};
+    }
     const IncidentPolygon<S>& inc = flip ? incA : incB;
     const Vec2T<S> shift = first * (flip ? -velocityInB : velocityInA);
     const TransformT<S> xfRef = flip ? Moved(xfB, vB, first) : Moved(xfA, vA, first);
@@ -524,30 +531,30 @@ namespace
 {
 // The untraced polygon sweep as one function: everything it calls is inlined into it, which keeps the fast path's
 // code together.
-template <typename S>
+template <bool kContacts, typename S>
 [[gnu::flatten]] SweepResultT<S> SweepPolygonsUntraced(const PolygonT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
                                                        const PolygonT<S>& b, const TransformT<S>& xfB, Vec2T<S> vB)
 {
     detail::NullSweepTracer tracer;
-    return detail::SweepPolygons(a, xfA, vA, b, xfB, vB, tracer);
+    return detail::SweepPolygons<kContacts>(a, xfA, vA, b, xfB, vB, tracer);
 }
 
 #if SATVIZ_WIDE
 // The same, compiled for AVX2 with the wide scans.
-template <typename S>
+template <bool kContacts, typename S>
 [[gnu::target("avx2"), gnu::flatten]] SweepResultT<S> SweepPolygonsWide(const PolygonT<S>& a, const TransformT<S>& xfA,
                                                                         Vec2T<S> vA, const PolygonT<S>& b,
                                                                         const TransformT<S>& xfB, Vec2T<S> vB)
 {
     detail::WideNullSweepTracer tracer;
-    return detail::SweepPolygons(a, xfA, vA, b, xfB, vB, tracer);
+    return detail::SweepPolygons<kContacts>(a, xfA, vA, b, xfB, vB, tracer);
 }
 #endif
-} // namespace
 
-template <typename S>
-SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const ShapeT<S>& b,
-                      const TransformT<S>& xfB, Vec2T<S> vB, SweepTraceT<S>* trace)
+// Sweep (kContacts) and SweepTime: one body, the contact points of a hit computed or not.
+template <bool kContacts, typename S>
+SweepResultT<S> SweepShapes(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const ShapeT<S>& b,
+                            const TransformT<S>& xfB, Vec2T<S> vB, SweepTraceT<S>* trace)
 {
     using detail::Initial;
     if (trace != nullptr)
@@ -572,13 +579,13 @@ SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
 #if SATVIZ_WIDE
             if (detail::HasWideVectors())
             {
-                return SweepPolygonsWide(a.polygon, xfA, vA, b.polygon, xfB, vB);
+                return SweepPolygonsWide<kContacts>(a.polygon, xfA, vA, b.polygon, xfB, vB);
             }
 #endif
-            return SweepPolygonsUntraced(a.polygon, xfA, vA, b.polygon, xfB, vB);
+            return SweepPolygonsUntraced<kContacts>(a.polygon, xfA, vA, b.polygon, xfB, vB);
         }
         detail::SweepRecorder<S> tracer(*trace, {&a.polygon, nullptr}, xfA, {&b.polygon, nullptr}, xfB, velocity);
-        return detail::SweepPolygons(a.polygon, xfA, vA, b.polygon, xfB, vB, tracer);
+        return detail::SweepPolygons<kContacts>(a.polygon, xfA, vA, b.polygon, xfB, vB, tracer);
     }
 
     // Circle pairs: the static test first (interpenetrating at t = 0), then the centre's path against the rounded
@@ -657,9 +664,28 @@ SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
     // The normal points out of the other shape towards the circle; from A to B it is reversed when A is the circle.
     const Vec2T<S> worldNormal = Rotate(xfOther.q, normal);
     result.normal = circleA ? -worldNormal : worldNormal;
-    result.contactCount = 1;
-    result.contacts[0].point = TransformPoint(detail::Moved(xfOther, vOther, t), p0 + t * v - circle.radius * normal);
+    if constexpr (kContacts)
+    {
+        result.contactCount = 1;
+        result.contacts[0].point =
+            TransformPoint(detail::Moved(xfOther, vOther, t), p0 + t * v - circle.radius * normal);
+    }
     return result;
+}
+} // namespace
+
+template <typename S>
+SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const ShapeT<S>& b,
+                      const TransformT<S>& xfB, Vec2T<S> vB, SweepTraceT<S>* trace)
+{
+    return SweepShapes<true>(a, xfA, vA, b, xfB, vB, trace);
+}
+
+template <typename S>
+SweepResultT<S> SweepTime(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const ShapeT<S>& b,
+                          const TransformT<S>& xfB, Vec2T<S> vB, SweepTraceT<S>* trace)
+{
+    return SweepShapes<false>(a, xfA, vA, b, xfB, vB, trace);
 }
 
 template SweepResultT<double> Sweep(const ShapeT<double>&, const TransformT<double>&, Vec2T<double>,
@@ -667,5 +693,11 @@ template SweepResultT<double> Sweep(const ShapeT<double>&, const TransformT<doub
                                     SweepTraceT<double>*);
 template SweepResultT<float> Sweep(const ShapeT<float>&, const TransformT<float>&, Vec2T<float>, const ShapeT<float>&,
                                    const TransformT<float>&, Vec2T<float>, SweepTraceT<float>*);
+template SweepResultT<double> SweepTime(const ShapeT<double>&, const TransformT<double>&, Vec2T<double>,
+                                        const ShapeT<double>&, const TransformT<double>&, Vec2T<double>,
+                                        SweepTraceT<double>*);
+template SweepResultT<float> SweepTime(const ShapeT<float>&, const TransformT<float>&, Vec2T<float>,
+                                       const ShapeT<float>&, const TransformT<float>&, Vec2T<float>,
+                                       SweepTraceT<float>*);
 
 } // namespace satviz

@@ -132,6 +132,7 @@ struct Box2DRecord
     b2Sweep bsweepA, bsweepB;
     Vec2 velocity;
     b2RayCastInput ray;
+    b2PolygonShape skinA, skinB; // ba, bb with Box2D's default skin (b2_polygonRadius), as its world uses them
 };
 #endif
 
@@ -318,11 +319,11 @@ double Box2DDepth(const b2Manifold& manifold, const BenchPair& p)
 // shapes and the sweeps the bodies store (the centre of mass at the body origin, the angle constant, B moving by
 // the pair's velocity; see Box2DSweeps).
 template <typename Pair>
-const b2TOIInput& Box2DTOIInput(const Pair& p)
+const b2TOIInput& Box2DTOIInput(const Pair& p, const b2PolygonShape& a, const b2PolygonShape& b)
 {
     static b2TOIInput input;
-    input.proxyA.Set(&p.ba, 0);
-    input.proxyB.Set(&p.bb, 0);
+    input.proxyA.Set(&a, 0);
+    input.proxyB.Set(&b, 0);
     input.sweepA = p.bsweepA;
     input.sweepB = p.bsweepB;
     input.tMax = 1.0f;
@@ -483,6 +484,8 @@ std::vector<Query> Queries()
                    [](const FloatRecord& p) { return static_cast<double>(Collide(p.fa, p.fxfA, p.fb, p.fxfB).depth); }),
         SatvizQuery("satviz Sweep", true,
                     [](const SatvizRecord& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity).toi; }),
+        SatvizQuery("satviz SweepTime", true,
+                    [](const SatvizRecord& p) { return SweepTime(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity).toi; }),
         SatvizQuery("satviz Overlap, as compiled here", false, OverlapVariant<detail::NullTracer>),
         SatvizQuery("satviz Overlap, no early exit", false, OverlapVariant<NoEarlyExit>),
         SatvizQuery("satviz Overlap, no parallel skip", false, OverlapVariant<NoParallelSkip>),
@@ -554,8 +557,27 @@ std::vector<Query> Queries()
     }));
     queries.push_back(box2d("box2d b2TimeOfImpact", true, [](const Box2DRecord& p) {
         b2TOIOutput output;
-        b2TimeOfImpact(&output, &Box2DTOIInput(p));
+        b2TimeOfImpact(&output, &Box2DTOIInput(p, p.ba, p.bb));
         return static_cast<double>(output.t);
+    }));
+    // What Box2D's world does to get the contact points of a time of impact: sweep the shapes with their skin
+    // (b2_polygonRadius; the sweep stops a little short of the skins touching), move both bodies to t and collide
+    // there, where the skins overlap and give the contact points. Like for like with satviz Sweep, which returns
+    // the contact points at t.
+    queries.push_back(box2d("box2d b2TimeOfImpact + b2CollidePolygons at t", true, [](const Box2DRecord& p) {
+        b2TOIOutput output;
+        b2TimeOfImpact(&output, &Box2DTOIInput(p, p.skinA, p.skinB));
+        if (output.state != b2TOIOutput::e_touching)
+        {
+            return static_cast<double>(output.t);
+        }
+        b2Transform xfA;
+        b2Transform xfB;
+        p.bsweepA.GetTransform(&xfA, output.t);
+        p.bsweepB.GetTransform(&xfB, output.t);
+        b2Manifold manifold;
+        b2CollidePolygons(&manifold, &p.skinA, xfA, &p.skinB, xfB);
+        return static_cast<double>(output.t) + manifold.pointCount;
     }));
 #endif
 #ifdef SATVIZ_HAVE_CHIPMUNK
@@ -665,10 +687,12 @@ Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rn
 #ifdef SATVIZ_HAVE_BOX2D
             if (n <= b2_maxPolygonVertices)
             {
-                Box2DRecord box{p.ba, p.bb, p.bxfA, p.bxfB, p.bsweepA, p.bsweepB, p.velocity, {}};
+                Box2DRecord box{p.ba, p.bb, p.bxfA, p.bxfB, p.bsweepA, p.bsweepB, p.velocity, {}, p.ba, p.bb};
                 box.ray.p1.Set(static_cast<float>(record.rayFrom.x), static_cast<float>(record.rayFrom.y));
                 box.ray.p2.Set(static_cast<float>(record.rayTo.x), static_cast<float>(record.rayTo.y));
                 box.ray.maxFraction = 1.0f;
+                box.skinA.m_radius = b2_polygonRadius;
+                box.skinB.m_radius = b2_polygonRadius;
                 slice.box2d.push_back(box);
                 if (apart)
                 {
@@ -872,7 +896,7 @@ std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::ve
                 if (sweepRef)
                 {
                     b2TOIOutput output;
-                    b2TimeOfImpact(&output, &Box2DTOIInput(p));
+                    b2TimeOfImpact(&output, &Box2DTOIInput(p, p.ba, p.bb));
                     const bool hit = output.state == b2TOIOutput::e_touching ||
                                      output.state == b2TOIOutput::e_overlapped || output.state == b2TOIOutput::e_failed;
                     RecordSweep(acc["box2d b2TimeOfImpact"], hit,
@@ -997,6 +1021,9 @@ int main(int argc, char** argv)
     ratioRow("satviz Overlap / box2d b2TestOverlap", "satviz Overlap", "box2d b2TestOverlap");
     ratioRow("satviz Collide / box2d b2CollidePolygons", "satviz Collide", "box2d b2CollidePolygons");
     ratioRow("satviz Sweep / box2d b2TimeOfImpact", "satviz Sweep", "box2d b2TimeOfImpact");
+    ratioRow("satviz SweepTime / box2d b2TimeOfImpact", "satviz SweepTime", "box2d b2TimeOfImpact");
+    ratioRow("satviz Sweep / box2d TOI + collide at t", "satviz Sweep",
+             "box2d b2TimeOfImpact + b2CollidePolygons at t");
     ratioRow("satviz RayCast / box2d RayCast", "satviz RayCast", "box2d b2PolygonShape::RayCast");
 #endif
 #ifdef SATVIZ_HAVE_CHIPMUNK
@@ -1081,7 +1108,15 @@ int main(int argc, char** argv)
         const Timing& t = timings[8];
         target("satviz Overlap / box2d b2TestOverlap", t.Ratio("satviz Overlap", "box2d b2TestOverlap"), 0.25);
         target("satviz Collide / box2d b2CollidePolygons", t.Ratio("satviz Collide", "box2d b2CollidePolygons"), 0.6);
-        target("satviz Sweep / box2d b2TimeOfImpact", t.Ratio("satviz Sweep", "box2d b2TimeOfImpact"), 0.25);
+        // b2TimeOfImpact returns the time alone; satviz Sweep the time, the normal and the contact points. The
+        // first line compares them as they are; the next two like for like: the time alone on both sides, then
+        // the contact points on both sides (Box2D colliding at the time of impact, as its world does).
+        target("satviz Sweep (contacts) / box2d b2TimeOfImpact (time)", t.Ratio("satviz Sweep", "box2d b2TimeOfImpact"),
+               0.25);
+        target("satviz SweepTime / box2d b2TimeOfImpact (both: time)",
+               t.Ratio("satviz SweepTime", "box2d b2TimeOfImpact"), 0.25);
+        target("satviz Sweep / box2d TOI + collide at t (both: contacts)",
+               t.Ratio("satviz Sweep", "box2d b2TimeOfImpact + b2CollidePolygons at t"), 0.25);
     }
 #else
     std::printf("  (built without Box2D: no peer ratios)\n");

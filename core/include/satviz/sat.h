@@ -17,7 +17,7 @@
 //   manifold.h  Manifold, ContactPoint, AxisRef (which shape, which edge or vertex).
 //   trace.h     Trace: the axes in test order with both projection intervals, then the contact clipping.
 //   sweep.h     Sweep(A, xfA, vA, B, xfB, vB): time of impact of translating shapes, exact at any speed, with
-//               its own trace (entry and exit times per axis).
+//               its own trace (entry and exit times per axis); SweepTime, the same without contact points.
 //   slide.h     MoveAndSlide: move a shape through a step, stopping at surfaces and sliding along them.
 //   raycast.h   RayCast(shape, xf, p1, p2): where a segment first meets a shape (bullets, picking).
 //   cache.h     SatCache: a pair's separating face from the previous frame, tested first by Overlap next frame.
