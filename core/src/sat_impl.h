@@ -442,10 +442,12 @@ struct IncidentPolygon
             ((c * vx - s * vy) + px).Store(x + j);
             ((s * vx + c * vy) + py).Store(y + j);
         }
-        for (int j = count; j <= padded; ++j)
+        // Vertex 0 again in the four entries after the last vertex (at most kScanLimit + 3 < kCapacity): those up to
+        // `padded`, which the scans read, and one more. A fixed count, so no loop and no branch.
+        for (int k = 0; k < 4; ++k)
         {
-            x[j] = x[0];
-            y[j] = y[0];
+            x[count + k] = x[0];
+            y[count + k] = y[0];
         }
     }
 
