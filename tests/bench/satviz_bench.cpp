@@ -175,11 +175,13 @@ struct ChipmunkRecord
 
 /// Chipmunk's answer for a pair: overlapping when it reports contacts; depth = minus the smallest contact
 /// distance.
-double ChipmunkDepth(const ChipmunkRecord& r, bool& overlap)
+double ChipmunkDepth(const ChipmunkRecord& r, bool& overlap, double normal[2])
 {
     const cpContactPointSet set =
         cpShapesCollide(reinterpret_cast<const cpShape*>(&r.a), reinterpret_cast<const cpShape*>(&r.b));
     overlap = set.count > 0;
+    normal[0] = set.normal.x;
+    normal[1] = set.normal.y;
     double smallest = 0.0;
     for (int i = 0; i < set.count; ++i)
     {
@@ -301,10 +303,12 @@ b2Transform ToBox2D(const Transform& xf)
 }
 
 // Penetration depth from a Box2D manifold: minus the smallest separation of its world points.
-double Box2DDepth(const b2Manifold& manifold, const BenchPair& p)
+double Box2DDepth(const b2Manifold& manifold, const BenchPair& p, double normal[2])
 {
     b2WorldManifold world;
     world.Initialize(&manifold, p.bxfA, 0.0f, p.bxfB, 0.0f);
+    normal[0] = world.normal.x;
+    normal[1] = world.normal.y;
     float smallest = 1e30f;
     for (int i = 0; i < manifold.pointCount; ++i)
     {
@@ -594,7 +598,8 @@ std::vector<Query> Queries()
     }));
     queries.push_back(chipmunk("chipmunk cpShapesCollide", [](const ChipmunkRecord& r) {
         bool overlap = false;
-        return ChipmunkDepth(r, overlap);
+        double normal[2];
+        return ChipmunkDepth(r, overlap, normal);
     }));
 #endif
     return queries;
@@ -801,6 +806,10 @@ std::string CsvName(std::string name)
     return name;
 }
 
+// Wrong answers within this distance of touching (reference separation) are counted apart: a band where the
+// rounding of the input itself may decide.
+constexpr double kBand = 1e-12;
+
 struct Accuracy
 {
     bool sweep = false; // errors are times of impact, not depths
@@ -808,20 +817,41 @@ struct Accuracy
     int wrong = 0;
     int falsePositives = 0;
     int falseNegatives = 0;
+    int wrongOutsideBand = 0; // wrong answers on pairs farther than kBand from touching
     std::vector<double> depthErrors;
+    std::vector<double> angleErrors;    // angle between the normal and the reference's, radians
+    std::vector<double> relativeErrors; // depth errors over the pair's coordinate scale, max(1, |position|)
 };
 
-void Record(Accuracy& acc, bool answer, const Reference& ref, double depth, bool withDepth)
+// The angle between two directions, in radians (0 to pi), from their cross and dot products.
+double AngleBetween(double ax, double ay, double bx, double by)
+{
+    return std::atan2(std::abs(ax * by - ay * bx), ax * bx + ay * by);
+}
+
+// One static answer: yes/no against the reference and, on pairs both call overlapping, the depth error and, when
+// `normal` is given, the angle of the normal (from A to B) to the reference normal.
+void Record(Accuracy& acc, bool answer, const Reference& ref, double depth, bool withDepth,
+            const double* normal = nullptr, double scale = 1.0)
 {
     acc.pairs += 1;
     if (answer != ref.overlap)
     {
         acc.wrong += 1;
         (answer ? acc.falsePositives : acc.falseNegatives) += 1;
+        if (std::abs(static_cast<double>(ref.separation)) >= kBand)
+        {
+            acc.wrongOutsideBand += 1;
+        }
     }
     if (withDepth && answer && ref.overlap)
     {
         acc.depthErrors.push_back(std::abs(depth + static_cast<double>(ref.separation)));
+        acc.relativeErrors.push_back(acc.depthErrors.back() / scale);
+        if (normal != nullptr)
+        {
+            acc.angleErrors.push_back(AngleBetween(normal[0], normal[1], ref.normalX, ref.normalY));
+        }
     }
 }
 
@@ -832,12 +862,80 @@ void RecordSweep(Accuracy& acc, bool hit, double t, bool refHit, double refT)
     if (hit != refHit)
     {
         acc.wrong += 1;
+        acc.wrongOutsideBand += 1;
         (hit ? acc.falsePositives : acc.falseNegatives) += 1;
     }
     else if (hit)
     {
         acc.depthErrors.push_back(std::abs(t - refT));
     }
+}
+
+// Every query's answer on one pair of n-gons, recorded against the reference.
+void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n)
+{
+    const Reference ref = ReferenceCollide(p.sa, p.xfA, p.sb, p.xfB);
+    Record(acc["satviz Overlap"], Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB), ref, 0.0, false);
+    Record(acc["satviz Overlap float"], Overlap(p.fa, p.fxfA, p.fb, p.fxfB), ref, 0.0, false);
+    const Manifold m = Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
+    // Far from the origin, float can only be as precise as its positions: errors relative to their magnitude.
+    const double scale =
+        std::max({1.0, std::abs(p.xfA.p.x), std::abs(p.xfA.p.y), std::abs(p.xfB.p.x), std::abs(p.xfB.p.y)});
+    const double normal[2] = {m.normal.x, m.normal.y};
+    Record(acc["satviz Collide"], m.overlap, ref, m.depth, true, normal, scale);
+    const ManifoldT<float> mf = Collide(p.fa, p.fxfA, p.fb, p.fxfB);
+    const double normalFloat[2] = {mf.normal.x, mf.normal.y};
+    Record(acc["satviz Collide float"], mf.overlap, ref, mf.depth, true, normalFloat, scale);
+    Record(acc["textbook Overlap"], bench::TextbookOverlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB), ref, 0.0, false);
+    Vec2 textbookNormal;
+    const double textbookDepth = bench::TextbookMtv(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, textbookNormal);
+    const double textbookNormalXY[2] = {textbookNormal.x, textbookNormal.y};
+    Record(acc["textbook MTV"], textbookDepth >= 0.0, ref, textbookDepth, true, textbookNormalXY);
+    // Times of impact against the Minkowski-difference cast (its hull of n * n points limits it to n <= 64).
+    const bool sweepRef = n <= 64 && !Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
+    SweepReference sr;
+    bool refHit = false;
+    double refT = 0.0;
+    if (sweepRef)
+    {
+        sr = ReferenceSweep(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
+        refHit = sr.insideAtStart || (sr.crosses && sr.enter <= 1 && sr.leave > 0);
+        refT = sr.insideAtStart ? 0.0 : std::max(0.0, static_cast<double>(sr.enter));
+        const SweepResult sw = Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity);
+        RecordSweep(acc["satviz Sweep"], sw.status != SweepStatus::Miss, sw.toi, refHit, refT);
+        const double textbookT = bench::TextbookToi(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
+        RecordSweep(acc["textbook TOI"], textbookT >= 0.0, textbookT, refHit, refT);
+    }
+#ifdef SATVIZ_HAVE_CHIPMUNK
+    {
+        ChipmunkRecord r;
+        r.Init(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
+        bool overlap = false;
+        double chipmunkNormal[2];
+        const double depth = ChipmunkDepth(r, overlap, chipmunkNormal);
+        Record(acc["chipmunk cpShapesCollide"], overlap, ref, depth, true, chipmunkNormal);
+    }
+#endif
+#ifdef SATVIZ_HAVE_BOX2D
+    if (n <= b2_maxPolygonVertices)
+    {
+        Record(acc["box2d b2TestOverlap"], b2TestOverlap(&p.ba, 0, &p.bb, 0, p.bxfA, p.bxfB), ref, 0.0, false);
+        b2Manifold manifold;
+        b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
+        double box2dNormal[2] = {0.0, 0.0};
+        const double box2dDepth = manifold.pointCount > 0 ? Box2DDepth(manifold, p, box2dNormal) : 0.0;
+        Record(acc["box2d b2CollidePolygons"], manifold.pointCount > 0, ref, box2dDepth, true, box2dNormal);
+        if (sweepRef)
+        {
+            b2TOIOutput output;
+            b2TimeOfImpact(&output, &Box2DTOIInput(p, p.ba, p.bb));
+            const bool hit = output.state == b2TOIOutput::e_touching || output.state == b2TOIOutput::e_overlapped ||
+                             output.state == b2TOIOutput::e_failed;
+            RecordSweep(acc["box2d b2TimeOfImpact"], hit,
+                        output.state == b2TOIOutput::e_overlapped ? 0.0 : static_cast<double>(output.t), refHit, refT);
+        }
+    }
+#endif
 }
 
 std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::vector<int>& counts, Rng& rng)
@@ -849,65 +947,55 @@ std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::ve
             n >= 1024 ? std::max(1, s.accuracyPairs / 300) : (n >= 64 ? s.accuracyPairs / 10 : s.accuracyPairs);
         for (const BenchPair& p : MakePool(rng, n, count))
         {
-            const Reference ref = ReferenceCollide(p.sa, p.xfA, p.sb, p.xfB);
-            Record(acc["satviz Overlap"], Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB), ref, 0.0, false);
-            Record(acc["satviz Overlap float"], Overlap(p.fa, p.fxfA, p.fb, p.fxfB), ref, 0.0, false);
-            const Manifold m = Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
-            Record(acc["satviz Collide"], m.overlap, ref, m.depth, true);
-            const ManifoldT<float> mf = Collide(p.fa, p.fxfA, p.fb, p.fxfB);
-            Record(acc["satviz Collide float"], mf.overlap, ref, mf.depth, true);
-            Record(acc["textbook Overlap"], bench::TextbookOverlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB), ref, 0.0,
-                   false);
-            Vec2 textbookNormal;
-            const double textbookDepth = bench::TextbookMtv(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, textbookNormal);
-            Record(acc["textbook MTV"], textbookDepth >= 0.0, ref, textbookDepth, true);
-            // Times of impact against the Minkowski-difference cast (its hull of n * n points limits it to n <= 64).
-            const bool sweepRef = n <= 64 && !Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
-            SweepReference sr;
-            bool refHit = false;
-            double refT = 0.0;
-            if (sweepRef)
-            {
-                sr = ReferenceSweep(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
-                refHit = sr.insideAtStart || (sr.crosses && sr.enter <= 1 && sr.leave > 0);
-                refT = sr.insideAtStart ? 0.0 : std::max(0.0, static_cast<double>(sr.enter));
-                const SweepResult sw = Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity);
-                RecordSweep(acc["satviz Sweep"], sw.status != SweepStatus::Miss, sw.toi, refHit, refT);
-                const double textbookT = bench::TextbookToi(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
-                RecordSweep(acc["textbook TOI"], textbookT >= 0.0, textbookT, refHit, refT);
-            }
-#ifdef SATVIZ_HAVE_CHIPMUNK
-            {
-                ChipmunkRecord r;
-                r.Init(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
-                bool overlap = false;
-                const double depth = ChipmunkDepth(r, overlap);
-                Record(acc["chipmunk cpShapesCollide"], overlap, ref, depth, true);
-            }
-#endif
-#ifdef SATVIZ_HAVE_BOX2D
-            if (n <= b2_maxPolygonVertices)
-            {
-                Record(acc["box2d b2TestOverlap"], b2TestOverlap(&p.ba, 0, &p.bb, 0, p.bxfA, p.bxfB), ref, 0.0, false);
-                b2Manifold manifold;
-                b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
-                Record(acc["box2d b2CollidePolygons"], manifold.pointCount > 0, ref,
-                       manifold.pointCount > 0 ? Box2DDepth(manifold, p) : 0.0, true);
-                if (sweepRef)
-                {
-                    b2TOIOutput output;
-                    b2TimeOfImpact(&output, &Box2DTOIInput(p, p.ba, p.bb));
-                    const bool hit = output.state == b2TOIOutput::e_touching ||
-                                     output.state == b2TOIOutput::e_overlapped || output.state == b2TOIOutput::e_failed;
-                    RecordSweep(acc["box2d b2TimeOfImpact"], hit,
-                                output.state == b2TOIOutput::e_overlapped ? 0.0 : static_cast<double>(output.t), refHit,
-                                refT);
-                }
-            }
-#endif
+            RecordPair(acc, p, n);
         }
     }
     return acc;
+}
+
+// The categories of the accuracy tables: the three placements, then one of them far from the origin, or with
+// slivers (aspect 1e-4 to 1e-2) among the polygons.
+const char* const kCategories[] = {"overlap", "touch (gap <= 1e-9)", "separated", "far (1e6)", "far (1e8)", "sliver"};
+
+// Pairs of one category: as MakePool, then moved far from the origin or built with slivers.
+std::vector<BenchPair> MakeCategoryPool(Rng& rng, int n, int count, int category)
+{
+    std::vector<BenchPair> pool;
+    for (int i = 0; i < count; ++i)
+    {
+        const PairCategory placement = static_cast<PairCategory>(category <= 2 ? category : rng.Int(0, 2));
+        RandomPair pair = ContactPair(rng, n, placement, category == 5 ? 1.0 : 0.0);
+        if (category == 3 || category == 4)
+        {
+            const double far = category == 3 ? 1e6 : 1e8;
+            const Vec2 offset{rng.Chance(0.5) ? far : -far, rng.Chance(0.5) ? far : -far};
+            pair.xfA.p = pair.xfA.p + offset;
+            pair.xfB.p = pair.xfB.p + offset;
+        }
+        BenchPair p = MakeBenchPair(pair, rng);
+        if (p.floatOk)
+        {
+            pool.push_back(std::move(p));
+        }
+    }
+    return pool;
+}
+
+// Accuracy per category, over the vertex counts up to 16 (Box2D: up to 8).
+std::vector<std::map<std::string, Accuracy>> MeasureByCategory(const Settings& s, Rng& rng)
+{
+    std::vector<std::map<std::string, Accuracy>> byCategory(std::size(kCategories));
+    for (size_t c = 0; c < byCategory.size(); ++c)
+    {
+        for (int n : {3, 4, 8, 16})
+        {
+            for (const BenchPair& p : MakeCategoryPool(rng, n, s.accuracyPairs / 6, static_cast<int>(c)))
+            {
+                RecordPair(byCategory[c], p, n);
+            }
+        }
+    }
+    return byCategory;
 }
 
 } // namespace
@@ -1063,9 +1151,61 @@ int main(int argc, char** argv)
         }
     }
 
+    const std::vector<std::map<std::string, Accuracy>> byCategory = MeasureByCategory(s, rng);
+    std::printf("\naccuracy per category (n = 3, 4, 8, 16; box2d: n <= 8; sweeps: pairs that start apart)\n");
+    std::printf(
+        "(wrong: all wrong yes/no answers, and those farther than %g from touching; error: |depth error|\n"
+        " or |t error|; angle: of the normal to the reference normal, radians, on pairs both call overlapping)\n",
+        kBand);
+    for (size_t c = 0; c < byCategory.size(); ++c)
+    {
+        std::printf("\n%s\n", kCategories[c]);
+        std::printf("%-26s %6s %7s %8s %10s %10s %10s %10s\n", "query", "pairs", "wrong", "outside", "error med",
+                    "error max", "angle med", "angle max");
+        for (const auto& [name, a] : byCategory[c])
+        {
+            // A figure of a list of errors, or "-" for none.
+            const auto figure = [](const std::vector<double>& v, bool largest) {
+                if (v.empty())
+                {
+                    return std::string("-");
+                }
+                char text[32];
+                std::snprintf(text, sizeof text, "%.1e", largest ? *std::max_element(v.begin(), v.end()) : Median(v));
+                return std::string(text);
+            };
+            std::printf("%-26s %6d %7d %8d %10s %10s %10s %10s\n", name.c_str(), a.pairs, a.wrong, a.wrongOutsideBand,
+                        figure(a.depthErrors, false).c_str(), figure(a.depthErrors, true).c_str(),
+                        figure(a.angleErrors, false).c_str(), figure(a.angleErrors, true).c_str());
+        }
+    }
+
     if (!csv.empty())
     {
         std::filesystem::create_directories(csv);
+        std::ofstream byCategoryCsv(std::filesystem::path(csv) / "accuracy_by_category.csv");
+        byCategoryCsv << "category,query,pairs,wrong,wrong_outside_band,error_median,error_max,angle_median,"
+                         "angle_max\n";
+        for (size_t c = 0; c < byCategory.size(); ++c)
+        {
+            for (const auto& [name, a] : byCategory[c])
+            {
+                byCategoryCsv << CsvName(kCategories[c]) << ',' << CsvName(name) << ',' << a.pairs << ',' << a.wrong
+                              << ',' << a.wrongOutsideBand << ',';
+                for (const std::vector<double>* v : {&a.depthErrors, &a.angleErrors})
+                {
+                    if (!v->empty())
+                    {
+                        byCategoryCsv << Median(*v) << ',' << *std::max_element(v->begin(), v->end());
+                    }
+                    else
+                    {
+                        byCategoryCsv << ',';
+                    }
+                    byCategoryCsv << (v == &a.depthErrors ? "," : "\n");
+                }
+            }
+        }
         std::ofstream timing(std::filesystem::path(csv) / "timing.csv");
         timing << "query,n,ns\n";
         for (const auto& [n, row] : ns)
@@ -1131,5 +1271,30 @@ int main(int argc, char** argv)
         const auto& e = acc.at("satviz Sweep").depthErrors;
         target("satviz Sweep |t error|, max (double)", *std::max_element(e.begin(), e.end()), 1e-12);
     }
+    // Every category, far from the origin included.
+    int wrongOutside = 0;
+    double depthWorst = 0.0;
+    double floatRelative = 0.0;
+    for (const auto& category : byCategory)
+    {
+        for (const char* name : {"satviz Overlap", "satviz Collide", "satviz Sweep"})
+        {
+            wrongOutside += category.count(name) ? category.at(name).wrongOutsideBand : 0;
+        }
+        for (const char* name : {"satviz Collide", "satviz Collide float"})
+        {
+            if (category.count(name) && !category.at(name).relativeErrors.empty())
+            {
+                // Shapes are of size 0.5 to 1.5 (slivers thinner), so near the origin the error is relative to a
+                // size of 1; far from it, to the magnitude of the positions.
+                const auto& e = category.at(name).relativeErrors;
+                double& worst = name == std::string("satviz Collide") ? depthWorst : floatRelative;
+                worst = std::max(worst, *std::max_element(e.begin(), e.end()));
+            }
+        }
+    }
+    target("wrong yes/no outside the band (double, every category)", wrongOutside, 0);
+    target("satviz Collide depth error, relative, every category (double)", depthWorst, 1e-14);
+    target("satviz Collide depth error, relative, every category (float)", floatRelative, 1e-5);
     return 0;
 }
