@@ -44,6 +44,61 @@ Answers Ask(const RandomPair& pair, Vec2 velocity, const ShapeT<float>& fa, cons
 
 } // namespace
 
+namespace
+{
+
+// The reductions the lanes promise: std::max(std::max(v0, v1), std::max(v2, v3)), and the same with std::min.
+double ScalarMax(const double* v)
+{
+    return std::max(std::max(v[0], v[1]), std::max(v[2], v[3]));
+}
+
+double ScalarMin(const double* v)
+{
+    return std::min(std::min(v[0], v[1]), std::min(v[2], v[3]));
+}
+
+#if SATVIZ_LANES_AVX2
+[[gnu::target("avx2"), gnu::noinline]] void WideReductions(const double* v, double& largest, double& smallest)
+{
+    const detail::Lanes<double, true> lanes = detail::Lanes<double, true>::Set(v[0], v[1], v[2], v[3]);
+    largest = lanes.MaxLane();
+    smallest = lanes.MinLane();
+}
+#endif
+
+} // namespace
+
+TEST_CASE("Lane reductions give the values of std::max and std::min, NaN and signed zeros included", "[wide]")
+{
+    const double kNaN = std::numeric_limits<double>::quiet_NaN();
+    const double kInf = std::numeric_limits<double>::infinity();
+    const double values[] = {0.0, -0.0, 1.0, -1.0, 0.5, kInf, -kInf, kNaN, 1e-300, -2.5};
+    Rng rng(5);
+    for (int i = 0; i < 20000; ++i)
+    {
+        double v[4];
+        for (double& x : v)
+        {
+            x = values[rng.Int(0, 9)];
+        }
+        INFO(v[0] << " " << v[1] << " " << v[2] << " " << v[3]);
+        const detail::Lanes<double, false> lanes = detail::Lanes<double, false>::Set(v[0], v[1], v[2], v[3]);
+        REQUIRE(SameBits(lanes.MaxLane(), ScalarMax(v)));
+        REQUIRE(SameBits(lanes.MinLane(), ScalarMin(v)));
+#if SATVIZ_LANES_AVX2
+        if (detail::HasWideVectors())
+        {
+            double largest = 0.0;
+            double smallest = 0.0;
+            WideReductions(v, largest, smallest);
+            REQUIRE(SameBits(largest, ScalarMax(v)));
+            REQUIRE(SameBits(smallest, ScalarMin(v)));
+        }
+#endif
+    }
+}
+
 TEST_CASE("Wide scans and baseline scans give the same bits", "[properties][wide]")
 {
     bool& wide = detail::WideVectorsEnabled();

@@ -254,21 +254,23 @@ struct Lanes<double, false>
     friend Lanes Min(const Lanes& a, const Lanes& b) { return {_mm_min_pd(a.lo, b.lo), _mm_min_pd(a.hi, b.hi)}; }
     /// Per lane: a > b ? a : b (the second operand when either is NaN).
     friend Lanes Max(const Lanes& a, const Lanes& b) { return {_mm_max_pd(a.lo, b.lo), _mm_max_pd(a.hi, b.hi)}; }
-    /// The largest lane (NaN lanes skipped when another is a number).
+    /// The largest lane, as std::max(std::max(v0, v1), std::max(v2, v3)) gives it, in registers: std::max(a, b) is
+    /// _mm_max_pd(b, a) (a unless a < b), so the same value for every input, NaN included.
     double MaxLane() const
     {
-        alignas(16) double out[4];
-        _mm_store_pd(out, lo);
-        _mm_store_pd(out + 2, hi);
-        return std::max(std::max(out[0], out[1]), std::max(out[2], out[3]));
+        const __m128d firsts = _mm_unpacklo_pd(lo, hi);  // v0 v2
+        const __m128d seconds = _mm_unpackhi_pd(lo, hi); // v1 v3
+        const __m128d pairs = _mm_max_pd(seconds, firsts);
+        return _mm_cvtsd_f64(_mm_max_sd(_mm_unpackhi_pd(pairs, pairs), pairs));
     }
-    /// The smallest lane.
+    /// The smallest lane, as std::min(std::min(v0, v1), std::min(v2, v3)) gives it, in registers: std::min(a, b)
+    /// is _mm_min_pd(b, a) (a unless b < a).
     double MinLane() const
     {
-        alignas(16) double out[4];
-        _mm_store_pd(out, lo);
-        _mm_store_pd(out + 2, hi);
-        return std::min(std::min(out[0], out[1]), std::min(out[2], out[3]));
+        const __m128d firsts = _mm_unpacklo_pd(lo, hi);
+        const __m128d seconds = _mm_unpackhi_pd(lo, hi);
+        const __m128d pairs = _mm_min_pd(seconds, firsts);
+        return _mm_cvtsd_f64(_mm_min_sd(_mm_unpackhi_pd(pairs, pairs), pairs));
     }
 };
 #endif
@@ -460,19 +462,27 @@ struct Lanes<double, true>
     [[gnu::target("avx2")]] friend Lanes Min(const Lanes& a, const Lanes& b) { return {_mm256_min_pd(a.v, b.v)}; }
     /// Per lane: a > b ? a : b (the second operand when either is NaN).
     [[gnu::target("avx2")]] friend Lanes Max(const Lanes& a, const Lanes& b) { return {_mm256_max_pd(a.v, b.v)}; }
-    /// The largest lane (NaN lanes skipped when another is a number).
+    /// The largest lane, as std::max(std::max(v0, v1), std::max(v2, v3)) gives it, in registers: std::max(a, b) is
+    /// _mm_max_pd(b, a) (a unless a < b), so the same value for every input, NaN included.
     [[gnu::target("avx2")]] double MaxLane() const
     {
-        alignas(32) double out[4];
-        _mm256_store_pd(out, v);
-        return std::max(std::max(out[0], out[1]), std::max(out[2], out[3]));
+        const __m128d lo = _mm256_castpd256_pd128(v);    // v0 v1
+        const __m128d hi = _mm256_extractf128_pd(v, 1);  // v2 v3
+        const __m128d firsts = _mm_unpacklo_pd(lo, hi);  // v0 v2
+        const __m128d seconds = _mm_unpackhi_pd(lo, hi); // v1 v3
+        const __m128d pairs = _mm_max_pd(seconds, firsts);
+        return _mm_cvtsd_f64(_mm_max_sd(_mm_unpackhi_pd(pairs, pairs), pairs));
     }
-    /// The smallest lane.
+    /// The smallest lane, as std::min(std::min(v0, v1), std::min(v2, v3)) gives it, in registers: std::min(a, b)
+    /// is _mm_min_pd(b, a) (a unless b < a).
     [[gnu::target("avx2")]] double MinLane() const
     {
-        alignas(32) double out[4];
-        _mm256_store_pd(out, v);
-        return std::min(std::min(out[0], out[1]), std::min(out[2], out[3]));
+        const __m128d lo = _mm256_castpd256_pd128(v);
+        const __m128d hi = _mm256_extractf128_pd(v, 1);
+        const __m128d firsts = _mm_unpacklo_pd(lo, hi);
+        const __m128d seconds = _mm_unpackhi_pd(lo, hi);
+        const __m128d pairs = _mm_min_pd(seconds, firsts);
+        return _mm_cvtsd_f64(_mm_min_sd(_mm_unpackhi_pd(pairs, pairs), pairs));
     }
 };
 #endif
