@@ -99,6 +99,32 @@ TEST_CASE("Lane reductions give the values of std::max and std::min, NaN and sig
     }
 }
 
+TEST_CASE("Select by mask returns one of its operands bit for bit, NaN, infinities and signed zeros included", "[wide]")
+{
+    const double kNaN = std::numeric_limits<double>::quiet_NaN();
+    const double kInf = std::numeric_limits<double>::infinity();
+    const double values[] = {0.0, -0.0, 1.0, -1.0, 0.5, kInf, -kInf, kNaN, -kNaN, 1e-310, -2.5, 1e300};
+    Rng rng(6);
+    for (int i = 0; i < 20000; ++i)
+    {
+        const double a = values[rng.Int(0, 11)];
+        const double b = i % 3 == 0 ? rng.Uniform(-1e6, 1e6) : values[rng.Int(0, 11)];
+        const bool c = rng.Int(0, 1) == 1;
+        INFO(c << " " << a << " " << b);
+        REQUIRE(SameBits(detail::Select(c, a, b), c ? a : b));
+        const float fa = static_cast<float>(a);
+        const float fb = static_cast<float>(b);
+        REQUIRE(SameBits(detail::Select(c, fa, fb), c ? fa : fb));
+        REQUIRE(SameBits(detail::SelectBits<uint64_t>(c, a, b), c ? a : b));
+        REQUIRE(SameBits(detail::SelectBits<uint32_t>(c, fa, fb), c ? fa : fb));
+        const Vec2 p{a, b};
+        const Vec2 q{b, -a};
+        const Vec2 chosen = detail::Select(c, p, q);
+        REQUIRE(SameBits(chosen.x, c ? p.x : q.x));
+        REQUIRE(SameBits(chosen.y, c ? p.y : q.y));
+    }
+}
+
 TEST_CASE("Wide scans and baseline scans give the same bits", "[properties][wide]")
 {
     bool& wide = detail::WideVectorsEnabled();

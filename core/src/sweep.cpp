@@ -395,7 +395,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
                               const TransformT<S>& xfB, Vec2T<S> vB, Tracer& tracer)
 {
     const Vec2T<S> velocity = vB - vA;
-    const IncidentPolygon<S> incB(b, InvMulTransforms(xfA, xfB), kScanLimit, std::bool_constant<Tracer::kWide>{});
+    const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, std::bool_constant<Tracer::kWide>{});
     const Vec2T<S> velocityInA = InvRotate(xfA.q, velocity);
     const Vec2T<S> velocityInB = InvRotate(xfB.q, velocity);
 
@@ -413,7 +413,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
         return {};
     }
     // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
-    const IncidentPolygon<S> incA(a, InvMulTransforms(xfB, xfA), kScanLimit, std::bool_constant<Tracer::kWide>{});
+    const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, std::bool_constant<Tracer::kWide>{});
     const bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, replay, tracer);
     finish();
     if (!going)
