@@ -64,6 +64,8 @@ extern "C" void cpMessage(const char* condition, const char* file, int line, int
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -81,7 +83,7 @@ struct Settings
     int reps = 7;
     int accuracyPairs = 3000;
     uint64_t seed = 20240601;
-    std::vector<int> counts = {3, 4, 8, 16, 64, 1024};
+    std::vector<int> counts = {3, 4, 8, 16, 64, 1024, 4096};
 };
 
 // A pair in every representation a query needs, built before timing.
@@ -120,8 +122,10 @@ void RaySegment(const Shape& sa, const Transform& xfA, const Shape& sb, const Tr
 
 struct FloatRecord
 {
-    PolygonT<float> fa, fb;
+    ShapeT<float> sa, sb; // the polygons, as shapes
     TransformT<float> fxfA, fxfB;
+    Vec2T<float> velocity;
+    Vec2T<float> rayFrom, rayTo;
 };
 
 #ifdef SATVIZ_HAVE_BOX2D
@@ -224,8 +228,8 @@ void TouchRecord(const SatvizRecord& r)
 void TouchRecord(const FloatRecord& r)
 {
     TouchBytes(&r, sizeof r);
-    TouchPolygon(r.fa);
-    TouchPolygon(r.fb);
+    TouchPolygon(r.sa.polygon);
+    TouchPolygon(r.sb.polygon);
 }
 
 #ifdef SATVIZ_HAVE_BOX2D
@@ -258,8 +262,18 @@ void Touch(const Record* records, size_t count)
 /// One slice of the timing pool, in each library's records; `apart` holds the pairs that start apart (sweeps).
 struct Slice
 {
+    /// Box2D's records (none above 8 vertices).
+    size_t box2dCount() const
+    {
+#ifdef SATVIZ_HAVE_BOX2D
+        return box2d.size();
+#else
+        return 0;
+#endif
+    }
+
     std::vector<SatvizRecord> satviz, satvizApart;
-    std::vector<FloatRecord> single;
+    std::vector<FloatRecord> single, singleApart;
 #ifdef SATVIZ_HAVE_BOX2D
     std::vector<Box2DRecord> box2d, box2dApart;
 #endif
@@ -376,6 +390,18 @@ BenchPair MakeBenchPair(const RandomPair& r, Rng& rng)
     return p;
 }
 
+// The pair with A and B swapped half of the time: ContactPair places B against a face of A, which would favour
+// a query that tests A's faces first.
+RandomPair EitherWay(RandomPair pair, Rng& rng)
+{
+    if (rng.Chance(0.5))
+    {
+        std::swap(pair.a, pair.b);
+        std::swap(pair.xfA, pair.xfB);
+    }
+    return pair;
+}
+
 std::vector<BenchPair> MakePool(Rng& rng, int n, int count)
 {
     std::vector<BenchPair> pool;
@@ -383,7 +409,7 @@ std::vector<BenchPair> MakePool(Rng& rng, int n, int count)
     for (int i = 0; i < count; ++i)
     {
         const PairCategory category = static_cast<PairCategory>(rng.Int(0, 2));
-        BenchPair p = MakeBenchPair(ContactPair(rng, n, category), rng);
+        BenchPair p = MakeBenchPair(EitherWay(ContactPair(rng, n, category), rng), rng);
         if (p.floatOk)
         {
             pool.push_back(std::move(p));
@@ -398,6 +424,11 @@ struct Query
     std::string name;
     bool box2d = false; // needs n <= 8
     bool sweep = false; // runs on the pairs that start apart (a time of impact needs a start)
+    // Visits the pairs in a new random order on every pass, so no branch history from earlier passes helps.
+    bool randomOrder = false;
+    // Runs up to this vertex count: the traced queries and the textbook loop cost O(n^2) and would take minutes
+    // at 4096 vertices.
+    int maxCount = 1 << 30;
     double (*satviz)(const SatvizRecord&) = nullptr;
     double (*single)(const FloatRecord&) = nullptr;
 #ifdef SATVIZ_HAVE_BOX2D
@@ -457,10 +488,19 @@ Query SatvizQuery(const std::string& name, bool sweep, double (*run)(const Satvi
     return q;
 }
 
-Query FloatQuery(const std::string& name, double (*run)(const FloatRecord&))
+// The same query over the pairs in a new random order on every pass.
+Query InRandomOrder(Query q)
+{
+    q.name += ", random order";
+    q.randomOrder = true;
+    return q;
+}
+
+Query FloatQuery(const std::string& name, bool sweep, double (*run)(const FloatRecord&))
 {
     Query q;
     q.name = name;
+    q.sweep = sweep;
     q.single = run;
     return q;
 }
@@ -477,19 +517,26 @@ std::vector<Query> Queries()
                     [](const SatvizRecord& p) {
                         return Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace) ? 1.0 : 0.0;
                     }),
-        FloatQuery("satviz Overlap float",
-                   [](const FloatRecord& p) { return Overlap(p.fa, p.fxfA, p.fb, p.fxfB) ? 1.0 : 0.0; }),
+        FloatQuery(
+            "satviz Overlap float", false,
+            [](const FloatRecord& p) { return Overlap(p.sa.polygon, p.fxfA, p.sb.polygon, p.fxfB) ? 1.0 : 0.0; }),
         SatvizQuery("satviz Collide", false,
                     [](const SatvizRecord& p) { return Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB).depth; }),
         SatvizQuery(
             "satviz Collide traced", false,
             [](const SatvizRecord& p) { return Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace).depth; }),
-        FloatQuery("satviz Collide float",
-                   [](const FloatRecord& p) { return static_cast<double>(Collide(p.fa, p.fxfA, p.fb, p.fxfB).depth); }),
+        FloatQuery("satviz Collide float", false,
+                   [](const FloatRecord& p) {
+                       return static_cast<double>(Collide(p.sa.polygon, p.fxfA, p.sb.polygon, p.fxfB).depth);
+                   }),
         SatvizQuery("satviz Sweep", true,
                     [](const SatvizRecord& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity).toi; }),
         SatvizQuery("satviz SweepTime", true,
                     [](const SatvizRecord& p) { return SweepTime(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity).toi; }),
+        FloatQuery("satviz Sweep float", true,
+                   [](const FloatRecord& p) {
+                       return static_cast<double>(Sweep(p.sa, p.fxfA, Vec2T<float>{}, p.sb, p.fxfB, p.velocity).toi);
+                   }),
         SatvizQuery("satviz Overlap, as compiled here", false, OverlapVariant<detail::NullTracer>),
         SatvizQuery("satviz Overlap, no early exit", false, OverlapVariant<NoEarlyExit>),
         SatvizQuery("satviz Overlap, no parallel skip", false, OverlapVariant<NoParallelSkip>),
@@ -534,10 +581,27 @@ std::vector<Query> Queries()
                     }),
         SatvizQuery("satviz RayCast", false,
                     [](const SatvizRecord& p) { return RayCast(p.sa.polygon, p.xfA, p.rayFrom, p.rayTo).fraction; }),
+        FloatQuery("satviz RayCast float", false,
+                   [](const FloatRecord& p) {
+                       return static_cast<double>(RayCast(p.sa.polygon, p.fxfA, p.rayFrom, p.rayTo).fraction);
+                   }),
         SatvizQuery(
             "satviz Sweep traced", true,
             [](const SatvizRecord& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity, &sweepTrace).toi; }),
     };
+    for (Query& q : queries)
+    {
+        if (q.name.find("traced") != std::string::npos || q.name.find("textbook") == 0)
+        {
+            q.maxCount = 1024;
+        }
+    }
+    // The query of this name in the list.
+    const auto named = [&queries](const char* name) {
+        return *std::find_if(queries.begin(), queries.end(), [name](const Query& q) { return q.name == name; });
+    };
+    queries.push_back(InRandomOrder(named("satviz Overlap")));
+    queries.push_back(InRandomOrder(named("satviz Collide")));
 #ifdef SATVIZ_HAVE_BOX2D
     auto box2d = [](const std::string& name, bool sweep, double (*run)(const Box2DRecord&)) {
         Query q;
@@ -555,6 +619,8 @@ std::vector<Query> Queries()
         b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
         return static_cast<double>(manifold.pointCount);
     }));
+    queries.push_back(InRandomOrder(named("box2d b2TestOverlap")));
+    queries.push_back(InRandomOrder(named("box2d b2CollidePolygons")));
     queries.push_back(box2d("box2d b2PolygonShape::RayCast", false, [](const Box2DRecord& p) {
         b2RayCastOutput output;
         return p.ba.RayCast(&output, p.ray, p.bxfA, 0) ? static_cast<double>(output.fraction) : 2.0;
@@ -634,6 +700,18 @@ double Stream(const Record* records, size_t count, double (*run)(const Record&))
     return sink;
 }
 
+// Stream over the records in the order `order` gives.
+template <typename Record>
+double StreamInOrder(const Record* records, const std::vector<uint32_t>& order, double (*run)(const Record&))
+{
+    double sink = 0.0;
+    for (const uint32_t i : order)
+    {
+        sink += run(records[i]);
+    }
+    return sink;
+}
+
 // Pass times of every query at one vertex count: passes[name][k] is ns per query in sweep k, and the sweeps run
 // one pass of every query in turn, so equal k are measured moments apart.
 struct Timing
@@ -684,10 +762,18 @@ Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rn
             SatvizRecord record{p.sa, p.sb, p.xfA, p.xfB, p.velocity, {}, {}};
             RaySegment(p.sa, p.xfA, p.sb, p.xfB, p.velocity, record.rayFrom, record.rayTo);
             slice.satviz.push_back(record);
-            slice.single.push_back({p.fa, p.fb, p.fxfA, p.fxfB});
+            const FloatRecord single{MakeShape(p.fa),
+                                     MakeShape(p.fb),
+                                     p.fxfA,
+                                     p.fxfB,
+                                     ConvertVec<float>(p.velocity),
+                                     ConvertVec<float>(record.rayFrom),
+                                     ConvertVec<float>(record.rayTo)};
+            slice.single.push_back(single);
             if (apart)
             {
                 slice.satvizApart.push_back(record);
+                slice.singleApart.push_back(single);
             }
 #ifdef SATVIZ_HAVE_BOX2D
             if (n <= b2_maxPolygonVertices)
@@ -709,6 +795,8 @@ Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rn
     }
     Timing timing;
     int sweep = 0;
+    std::vector<uint32_t> order;
+    std::mt19937 shuffler(static_cast<uint32_t>(s.seed + static_cast<uint64_t>(n)));
     for (int round = 0; round < s.rounds; ++round)
     {
         const size_t shift = static_cast<size_t>(round * 4096 / s.rounds) & ~size_t(63);
@@ -723,7 +811,8 @@ Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rn
                 }
                 else if (q.single)
                 {
-                    Touch(data.single.data(), data.single.size());
+                    const std::vector<FloatRecord>& records = q.sweep ? data.singleApart : data.single;
+                    Touch(records.data(), records.size());
                 }
 #ifdef SATVIZ_HAVE_CHIPMUNK
                 else if (q.chipmunkRun)
@@ -738,8 +827,21 @@ Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rn
                     Touch(records.data(), records.size());
                 }
 #endif
+                // A random order, drawn before the clock starts (the satviz and Box2D records are in the same
+                // order, one per pair, except that Box2D's stop at 8 vertices).
+                if (q.randomOrder)
+                {
+                    order.resize(q.satviz ? data.satviz.size() : data.box2dCount());
+                    std::iota(order.begin(), order.end(), uint32_t(0));
+                    std::shuffle(order.begin(), order.end(), shuffler);
+                }
                 const auto start = std::chrono::steady_clock::now();
-                if (q.satviz)
+                if (q.satviz && q.randomOrder)
+                {
+                    sink = StreamInOrder(data.satviz.data(), order, q.satviz);
+                    count = order.size();
+                }
+                else if (q.satviz)
                 {
                     const std::vector<SatvizRecord>& records = q.sweep ? data.satvizApart : data.satviz;
                     sink = Stream(records.data(), records.size(), q.satviz);
@@ -747,8 +849,9 @@ Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rn
                 }
                 else if (q.single)
                 {
-                    sink = Stream(data.single.data(), data.single.size(), q.single);
-                    count = data.single.size();
+                    const std::vector<FloatRecord>& records = q.sweep ? data.singleApart : data.single;
+                    sink = Stream(records.data(), records.size(), q.single);
+                    count = records.size();
                 }
 #ifdef SATVIZ_HAVE_CHIPMUNK
                 else if (q.chipmunkRun)
@@ -758,6 +861,11 @@ Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rn
                 }
 #endif
 #ifdef SATVIZ_HAVE_BOX2D
+                else if (q.randomOrder)
+                {
+                    sink = StreamInOrder(data.box2d.data(), order, q.box2dRun);
+                    count = order.size();
+                }
                 else
                 {
                     const std::vector<Box2DRecord>& records = q.sweep ? data.box2dApart : data.box2d;
@@ -770,7 +878,7 @@ Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rn
                 return std::chrono::duration<double, std::nano>(stop - start).count() /
                        static_cast<double>(std::max<size_t>(1, count));
             };
-            const auto runs = [n](const Query& q) { return !(q.box2d && n > 8); };
+            const auto runs = [n](const Query& q) { return !(q.box2d && n > 8) && n <= q.maxCount; };
             // Warm: every query over every slice.
             for (const Query& q : queries)
             {
@@ -903,6 +1011,9 @@ void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n)
         refT = sr.insideAtStart ? 0.0 : std::max(0.0, static_cast<double>(sr.enter));
         const SweepResult sw = Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity);
         RecordSweep(acc["satviz Sweep"], sw.status != SweepStatus::Miss, sw.toi, refHit, refT);
+        const SweepResultT<float> swFloat =
+            Sweep(MakeShape(p.fa), p.fxfA, Vec2T<float>{}, MakeShape(p.fb), p.fxfB, ConvertVec<float>(p.velocity));
+        RecordSweep(acc["satviz Sweep float"], swFloat.status != SweepStatus::Miss, swFloat.toi, refHit, refT);
         const double textbookT = bench::TextbookToi(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
         RecordSweep(acc["textbook TOI"], textbookT >= 0.0, textbookT, refHit, refT);
     }
@@ -972,7 +1083,7 @@ std::vector<BenchPair> MakeCategoryPool(Rng& rng, int n, int count, int category
             pair.xfA.p = pair.xfA.p + offset;
             pair.xfB.p = pair.xfB.p + offset;
         }
-        BenchPair p = MakeBenchPair(pair, rng);
+        BenchPair p = MakeBenchPair(EitherWay(pair, rng), rng);
         if (p.floatOk)
         {
             pool.push_back(std::move(p));
@@ -1089,6 +1200,9 @@ int main(int argc, char** argv)
     ratioRow("Sweep traced / Sweep", "satviz Sweep traced", "satviz Sweep");
     ratioRow("Overlap float / Overlap double", "satviz Overlap float", "satviz Overlap");
     ratioRow("Collide float / Collide double", "satviz Collide float", "satviz Collide");
+    ratioRow("Sweep float / Sweep double", "satviz Sweep float", "satviz Sweep");
+    ratioRow("RayCast float / RayCast double", "satviz RayCast float", "satviz RayCast");
+    ratioRow("Collide, random order / same order", "satviz Collide, random order", "satviz Collide");
     ratioRow("Overlap / Collide", "satviz Overlap", "satviz Collide");
     ratioRow("satviz Overlap / textbook Overlap", "satviz Overlap", "textbook Overlap");
     // The variants are instantiated in this file: they compare with the default compiled here too.
@@ -1108,6 +1222,10 @@ int main(int argc, char** argv)
 #ifdef SATVIZ_HAVE_BOX2D
     ratioRow("satviz Overlap / box2d b2TestOverlap", "satviz Overlap", "box2d b2TestOverlap");
     ratioRow("satviz Collide / box2d b2CollidePolygons", "satviz Collide", "box2d b2CollidePolygons");
+    ratioRow("the same, pairs in random order: Overlap", "satviz Overlap, random order",
+             "box2d b2TestOverlap, random order");
+    ratioRow("the same, pairs in random order: Collide", "satviz Collide, random order",
+             "box2d b2CollidePolygons, random order");
     ratioRow("satviz Sweep / box2d b2TimeOfImpact", "satviz Sweep", "box2d b2TimeOfImpact");
     ratioRow("satviz SweepTime / box2d b2TimeOfImpact", "satviz SweepTime", "box2d b2TimeOfImpact");
     ratioRow("satviz Sweep / box2d TOI + collide at t", "satviz Sweep",
