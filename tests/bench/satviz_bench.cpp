@@ -61,6 +61,7 @@ extern "C" void cpMessage(const char* condition, const char* file, int line, int
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -263,7 +264,7 @@ void Touch(const Record* records, size_t count)
 struct Slice
 {
     /// Box2D's records (none above 8 vertices).
-    size_t box2dCount() const
+    size_t Box2DCount() const
     {
 #ifdef SATVIZ_HAVE_BOX2D
         return box2d.size();
@@ -589,19 +590,23 @@ std::vector<Query> Queries()
             "satviz Sweep traced", true,
             [](const SatvizRecord& p) { return Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity, &sweepTrace).toi; }),
     };
-    for (Query& q : queries)
-    {
-        if (q.name.find("traced") != std::string::npos || q.name.find("textbook") == 0)
-        {
-            q.maxCount = 1024;
-        }
-    }
-    // The query of this name in the list.
+    // The query of this name in the list (the names are the literals above, so it is there).
     const auto named = [&queries](const char* name) {
-        return *std::find_if(queries.begin(), queries.end(), [name](const Query& q) { return q.name == name; });
+        const auto it = std::find_if(queries.begin(), queries.end(), [name](const Query& q) { return q.name == name; });
+        if (it == queries.end())
+        {
+            std::fprintf(stderr, "satviz-bench: no query named %s\n", name);
+            std::abort();
+        }
+        return it;
     };
-    queries.push_back(InRandomOrder(named("satviz Overlap")));
-    queries.push_back(InRandomOrder(named("satviz Collide")));
+    for (const char* name : {"satviz Overlap traced", "satviz Collide traced", "satviz Sweep traced",
+                             "textbook Overlap", "textbook MTV", "textbook TOI"})
+    {
+        named(name)->maxCount = 1024;
+    }
+    queries.push_back(InRandomOrder(*named("satviz Overlap")));
+    queries.push_back(InRandomOrder(*named("satviz Collide")));
 #ifdef SATVIZ_HAVE_BOX2D
     auto box2d = [](const std::string& name, bool sweep, double (*run)(const Box2DRecord&)) {
         Query q;
@@ -619,8 +624,8 @@ std::vector<Query> Queries()
         b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
         return static_cast<double>(manifold.pointCount);
     }));
-    queries.push_back(InRandomOrder(named("box2d b2TestOverlap")));
-    queries.push_back(InRandomOrder(named("box2d b2CollidePolygons")));
+    queries.push_back(InRandomOrder(*named("box2d b2TestOverlap")));
+    queries.push_back(InRandomOrder(*named("box2d b2CollidePolygons")));
     queries.push_back(box2d("box2d b2PolygonShape::RayCast", false, [](const Box2DRecord& p) {
         b2RayCastOutput output;
         return p.ba.RayCast(&output, p.ray, p.bxfA, 0) ? static_cast<double>(output.fraction) : 2.0;
@@ -831,7 +836,7 @@ Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rn
                 // order, one per pair, except that Box2D's stop at 8 vertices).
                 if (q.randomOrder)
                 {
-                    order.resize(q.satviz ? data.satviz.size() : data.box2dCount());
+                    order.resize(q.satviz ? data.satviz.size() : data.Box2DCount());
                     std::iota(order.begin(), order.end(), uint32_t(0));
                     std::shuffle(order.begin(), order.end(), shuffler);
                 }
