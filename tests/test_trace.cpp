@@ -101,7 +101,9 @@ TEST_CASE("Trace invariants hold on random pairs", "[trace][properties]")
     }
 }
 
-TEST_CASE("Overlap stops when a vertex of B lies inside A, and only then skips B's faces", "[trace][properties]")
+TEST_CASE("Overlap of polygons above 8 vertices stops when a vertex of B lies inside A, and only then skips B's faces; "
+          "smaller pairs test both polygons' faces in blocks",
+          "[trace][properties]")
 {
     Rng rng(2024);
     Trace trace;
@@ -135,6 +137,20 @@ TEST_CASE("Overlap stops when a vertex of B lies inside A, and only then skips B
         if (!overlap)
         {
             REQUIRE(trace.exit == TraceExit::SeparatingAxis);
+            continue;
+        }
+        if (n <= 8)
+        {
+            // Both polygons' faces in blocks, none separating (B's anti-parallel ones skipped), no shortcut.
+            REQUIRE(trace.exit == TraceExit::AllAxesOverlap);
+            size_t facesOfA = 0;
+            for (const AxisTest& t : trace.axes)
+            {
+                REQUIRE_FALSE(t.separating);
+                facesOfA += t.axis.shape == 0 ? 1 : 0;
+            }
+            REQUIRE(facesOfA == static_cast<size_t>(a.Count()));
+            REQUIRE(trace.axes.size() == static_cast<size_t>(a.Count() + b.Count()));
             continue;
         }
         ++overlapping;
