@@ -10,6 +10,7 @@
 #pragma once
 
 #include "lanes.h"
+#include "lanes2.h"
 #include "tracer.h"
 
 #include <satviz/manifold.h>
@@ -1537,49 +1538,72 @@ ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentP
         out.w1 = out.w1 + *shift;
         out.w2 = out.w2 + *shift;
     }
-    // Clipping: both side planes cut the incident edge w1 w2 itself, each crossing point taken from w1 and w2, so
-    // that the two divisions run side by side and every choice is a select, not a branch on where the edge lies.
-    // An end outside a plane moves to that plane's crossing when the other end lies strictly inside; an end on a
-    // plane stays, and an edge that only touches a plane keeps that one point.
-    const Vec2T<S> edge = out.w2 - out.w1;
-    const S a1 = Dot(-tangent, out.w1 - v1); // side plane 1: outward -tangent, through v1; > 0 outside
-    const S b1 = Dot(-tangent, out.w2 - v1);
-    const S a2 = Dot(tangent, out.w1 - v2); // side plane 2: outward tangent, through v2
-    const S b2 = Dot(tangent, out.w2 - v2);
-    // The logic is bitwise and the choices are masks (Select): where an edge lies against the side planes varies
-    // from pair to pair, and branches on it were mispredicted often enough to cost more than the clipping itself.
-    const bool cross1 = ((a1 < S(0)) & (b1 > S(0))) | ((a1 > S(0)) & (b1 < S(0)));
-    const bool cross2 = ((a2 < S(0)) & (b2 > S(0))) | ((a2 > S(0)) & (b2 < S(0)));
-    const Vec2T<S> x1 = out.w1 + (a1 / Select(cross1, a1 - b1, S(1))) * edge;
-    const Vec2T<S> x2 = out.w1 + (a2 / Select(cross2, a2 - b2, S(1))) * edge;
-    // The first plane alone (the trace's first clip), then both.
-    const bool keepA1 = (a1 <= S(0)) | cross1;
-    const bool keepB1 = (b1 <= S(0)) | cross1;
-    const Vec2T<S> endA1 = Select(a1 <= S(0), out.w1, x1);
-    const Vec2T<S> endB1 = Select(b1 <= S(0), out.w2, x1);
-    const bool keepA = keepA1 & ((a2 <= S(0)) | (cross2 & (b2 < S(0))));
-    const bool keepB = keepB1 & ((b2 <= S(0)) | (cross2 & (a2 < S(0))));
-    const Vec2T<S> endA = Select(a2 <= S(0), endA1, x2);
-    const Vec2T<S> endB = Select(b2 <= S(0), endB1, x2);
-    out.count1 = int(keepA1) + int(keepB1);
-    out.clip1[0] = Select(keepA1, endA1, endB1);
-    out.clip1[1] = endB1;
-    out.count2 = int(keepA) + int(keepB);
-    out.clip2[0] = Select(keepA, endA, endB);
-    out.clip2[1] = endB;
-    for (int k = 0; k < 2; ++k)
-    {
-        out.separations[k] = Dot(normal, out.clip2[k] - v1);
-        out.kept[k] = (k < out.count2) & (out.separations[k] <= keepBelow);
-    }
-    const bool keep0 = out.kept[0];
-    out.contactCount = int(keep0) + int(out.kept[1]);
-    const S sep0 = Select(keep0, out.separations[0], out.separations[1]);
-    const Vec2T<S> p0 = Select(keep0, out.clip2[0], out.clip2[1]);
-    out.contacts[0].point = p0 - (S(0.5) * sep0) * normal;
-    out.contacts[0].separation = sep0;
-    out.contacts[1].point = out.clip2[1] - (S(0.5) * out.separations[1]) * normal;
-    out.contacts[1].separation = out.separations[1];
+    // Clipping, both ends of the incident edge side by side in two lanes (lane 0: w1, lane 1: w2), so that each step
+    // is one operation for both ends and each choice a mask: where an edge lies against the side planes varies from
+    // pair to pair, and branches on it were mispredicted often enough to cost more than the clipping itself. An end
+    // outside a side plane moves to the plane's crossing when the other end lies strictly inside; an end on a plane
+    // stays, and an edge that only touches a plane keeps that one point.
+    using P = Lanes2<S>;
+    using M = typename P::Mask;
+    const P x = P::Set(out.w1.x, out.w2.x);
+    const P y = P::Set(out.w1.y, out.w2.y);
+    const P zero = P::Fill(S(0));
+    // How far each end lies outside side plane 1 (outward -tangent, through v1) and side plane 2 (outward tangent,
+    // through v2); > 0 outside.
+    const P d1 = P::Fill(-tangent.x) * (x - P::Fill(v1.x)) + P::Fill(-tangent.y) * (y - P::Fill(v1.y));
+    const P d2 = P::Fill(tangent.x) * (x - P::Fill(v2.x)) + P::Fill(tangent.y) * (y - P::Fill(v2.y));
+    // A plane is crossed strictly when one end lies inside it and the other outside (the same in both lanes).
+    const auto crossed = [zero](const P& d) {
+        const M below = d < zero;
+        const M above = d > zero;
+        return (below & above.Swap()) | (above & below.Swap());
+    };
+    const M cross1 = crossed(d1);
+    const M cross2 = crossed(d2);
+    const M inside1 = d1 <= zero;
+    const M inside2 = d2 <= zero;
+    // The crossing, from each end towards the other: at d / (d - d_other) of the way. Read only where the plane is
+    // crossed strictly, so d - d_other is not 0 there; elsewhere it may be anything and is not selected.
+    const P towardX = x.Swap() - x;
+    const P towardY = y.Swap() - y;
+    const P t1 = d1 / (d1 - d1.Swap());
+    const P t2 = d2 / (d2 - d2.Swap());
+    // The first plane alone (the trace's first clip), then both: an end moves when it lies outside either plane
+    // (they face opposite ways, so not both), to that plane's crossing.
+    const P x1 = Select(inside1, x, x + t1 * towardX);
+    const P y1 = Select(inside1, y, y + t1 * towardY);
+    const M moves = ~(inside1 & inside2);
+    const P t = Select(inside2, t1, t2);
+    const P x2 = Select(moves, x + t * towardX, x);
+    const P y2 = Select(moves, y + t * towardY, y);
+    const M keep1 = inside1 | cross1;
+    const M keep2 = keep1 & (inside2 | (cross2 & (d2 < zero).Swap()));
+    // Each clipped end's separation from the face, and whether it is kept as a contact.
+    const P separation = P::Fill(normal.x) * (x2 - P::Fill(v1.x)) + P::Fill(normal.y) * (y2 - P::Fill(v1.y));
+    const int valid = (keep2 & (separation <= P::Fill(keepBelow))).Bits();
+    // The contact points, halfway between the kept ends and the face; the first one is the first valid end.
+    const P half = P::Fill(S(0.5)) * separation;
+    const P cx = x2 - half * P::Fill(normal.x);
+    const P cy = y2 - half * P::Fill(normal.y);
+    const bool firstEnd = (valid & 1) != 0;
+    out.contactCount = (valid & 1) + (valid >> 1);
+    out.contacts[0].point = Select(firstEnd, Vec2T<S>{cx.Get(0), cy.Get(0)}, Vec2T<S>{cx.Get(1), cy.Get(1)});
+    out.contacts[0].separation = Select(firstEnd, separation.Get(0), separation.Get(1));
+    out.contacts[1].point = {cx.Get(1), cy.Get(1)};
+    out.contacts[1].separation = separation.Get(1);
+    // What the trace shows: the points after each plane, listed from w1's end, and which of the second are kept.
+    const int kept1 = keep1.Bits();
+    const int kept2 = keep2.Bits();
+    out.count1 = (kept1 & 1) + (kept1 >> 1);
+    out.clip1[0] = (kept1 & 1) != 0 ? Vec2T<S>{x1.Get(0), y1.Get(0)} : Vec2T<S>{x1.Get(1), y1.Get(1)};
+    out.clip1[1] = {x1.Get(1), y1.Get(1)};
+    out.count2 = (kept2 & 1) + (kept2 >> 1);
+    out.clip2[0] = (kept2 & 1) != 0 ? Vec2T<S>{x2.Get(0), y2.Get(0)} : Vec2T<S>{x2.Get(1), y2.Get(1)};
+    out.clip2[1] = {x2.Get(1), y2.Get(1)};
+    out.separations[0] = (kept2 & 1) != 0 ? separation.Get(0) : separation.Get(1);
+    out.separations[1] = separation.Get(1);
+    out.kept[0] = ((kept2 & 1) != 0 ? valid & 1 : valid >> 1) != 0;
+    out.kept[1] = (kept2 & 1) != 0 && (valid >> 1) != 0;
     out.fallback = out.contactCount == 0;
     if (out.fallback)
     {
