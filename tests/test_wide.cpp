@@ -125,10 +125,12 @@ TEST_CASE("Select by mask returns one of its operands bit for bit, NaN, infiniti
     }
 }
 
-TEST_CASE("Wide scans and baseline scans give the same bits", "[properties][wide]")
+TEST_CASE("Wide scans, 512-bit face loops and baseline scans give the same bits", "[properties][wide]")
 {
     bool& wide = detail::WideVectorsEnabled();
+    bool& wide512 = detail::Wide512Enabled();
     const bool available = wide;
+    const bool available512 = wide512;
     Rng rng(20261123);
     int pairs = 0;
     for (int i = 0; i < 30000; ++i)
@@ -147,18 +149,24 @@ TEST_CASE("Wide scans and baseline scans give the same bits", "[properties][wide
         {
             continue;
         }
-        wide = available;
-        const Answers first = Ask(pair, velocity, fa, fb);
         wide = false;
         const Answers baseline = Ask(pair, velocity, fa, fb);
+        // The widest the processor has (512-bit face loops where it has AVX-512), then 256-bit vectors alone.
+        for (const bool with512 : {true, false})
+        {
+            wide = available;
+            wide512 = available512 && with512;
+            const Answers first = Ask(pair, velocity, fa, fb);
+            INFO("pair " << i << (with512 ? ", widest vectors" : ", 256-bit vectors"));
+            REQUIRE(first.overlap == baseline.overlap);
+            REQUIRE(SameBits(first.manifold, baseline.manifold));
+            REQUIRE(SameBits(first.sweep, baseline.sweep));
+            REQUIRE(first.floatOverlap == baseline.floatOverlap);
+            REQUIRE(SameBits(first.floatManifold, baseline.floatManifold));
+            REQUIRE(SameBits(first.floatSweep, baseline.floatSweep));
+        }
         wide = available;
-        INFO("pair " << i);
-        REQUIRE(first.overlap == baseline.overlap);
-        REQUIRE(SameBits(first.manifold, baseline.manifold));
-        REQUIRE(SameBits(first.sweep, baseline.sweep));
-        REQUIRE(first.floatOverlap == baseline.floatOverlap);
-        REQUIRE(SameBits(first.floatManifold, baseline.floatManifold));
-        REQUIRE(SameBits(first.floatSweep, baseline.floatSweep));
+        wide512 = available512;
         ++pairs;
     }
     REQUIRE(pairs > 25000);

@@ -8,6 +8,8 @@
 #include <satviz/shape.h>
 #include <satviz/trace.h>
 
+#include <type_traits>
+
 namespace satviz::detail
 {
 
@@ -42,17 +44,30 @@ template <typename Query>
     WideNullTracer tracer;
     return query(tracer);
 }
+
+// RunWide for the queries whose face loops take 512-bit vectors, compiled for AVX-512 as well.
+template <typename Query>
+[[gnu::target("avx2,avx512f"), gnu::flatten]] auto RunWide512(Query& query)
+{
+    Wide512NullTracer tracer;
+    return query(tracer);
+}
 #endif
 
 // Runs `query(tracer)` with the null tracer (on the wide scans where the processor has them, unless kWide is
-// false), or with a recorder filling `trace` when it is non-null.
-template <bool kWide = true, typename S, typename A, typename B, typename Query>
+// false; for double, with 512-bit face loops where it has those too and kWide512 is set), or with a recorder
+// filling `trace` when it is non-null.
+template <bool kWide = true, bool kWide512 = false, typename S, typename A, typename B, typename Query>
 auto WithTracer(TraceT<S>* trace, const A& a, const TransformT<S>& xfA, const B& b, const TransformT<S>& xfB,
                 Query&& query)
 {
     if (trace == nullptr)
     {
 #if SATVIZ_WIDE
+        if (kWide512 && std::is_same_v<S, double> && HasWide512())
+        {
+            return RunWide512(query);
+        }
         if (kWide && HasWideVectors())
         {
             return RunWide(query);

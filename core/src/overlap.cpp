@@ -17,8 +17,8 @@ template <typename S>
 bool Overlap(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b, const TransformT<S>& xfB,
              TraceT<S>* trace)
 {
-    return WithTracer(trace, a, xfA, b, xfB,
-                      [&](auto& tracer) { return detail::OverlapPolygons(a, xfA, b, xfB, tracer); });
+    return WithTracer<true, true>(trace, a, xfA, b, xfB,
+                                  [&](auto& tracer) { return detail::OverlapPolygons(a, xfA, b, xfB, tracer); });
 }
 
 template <typename S>

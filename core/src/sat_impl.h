@@ -11,6 +11,7 @@
 
 #include "lanes.h"
 #include "lanes2.h"
+#include "lanes8.h"
 #include "tracer.h"
 
 #include <satviz/manifold.h>
@@ -326,11 +327,29 @@ inline bool& WideVectorsEnabled()
     return enabled;
 }
 
+/// Whether the queries that take them run the face loops of small polygons on 512-bit vectors (AVX-512F) on top of
+/// the wide scans: set once from the processor. Tests clear it to run the 256-bit loops; all give the same bits.
+inline bool& Wide512Enabled()
+{
+#if SATVIZ_WIDE
+    static bool enabled = (__builtin_cpu_init(), __builtin_cpu_supports("avx512f") != 0);
+#else
+    static bool enabled = false;
+#endif
+    return enabled;
+}
+
 #if SATVIZ_WIDE
 /// Whether the untraced queries take the wide scans now.
 inline bool HasWideVectors()
 {
     return WideVectorsEnabled();
+}
+
+/// Whether the untraced queries that take them run 512-bit face loops now.
+inline bool HasWide512()
+{
+    return WideVectorsEnabled() && Wide512Enabled();
 }
 
 /// MinProjection with AVX2, four lanes of double.
@@ -484,13 +503,23 @@ struct IncidentPolygon
         const L s = L::Fill(xf.q.s);
         const L px = L::Fill(xf.p.x);
         const L py = L::Fill(xf.p.y);
-        for (int j = 0; j < count; j += 4)
+        const auto map = [&](const Vec2T<S>* vertices) {
+            for (int j = 0; j < count; j += 4)
+            {
+                L vx;
+                L vy;
+                L::LoadPoints(&vertices[j].x, vx, vy);
+                ((c * vx - s * vy) + px).Store(x + j);
+                ((s * vx + c * vy) + py).Store(y + j);
+            }
+        };
+        if (count <= PolygonT<S>::kInlineVertices)
         {
-            L vx;
-            L vy;
-            L::LoadPoints(&polygon.vertices.data[j].x, vx, vy);
-            ((c * vx - s * vy) + px).Store(x + j);
-            ((s * vx + c * vy) + py).Store(y + j);
+            map(polygon.InlineBlock());
+        }
+        else
+        {
+            map(polygon.vertices.data);
         }
         // Vertex 0 again in the four entries after the last vertex (at most kScanLimit + 3 < kCapacity): those up to
         // `padded`, which the scans read, and one more. A fixed count, so no loop and no branch.
@@ -750,21 +779,23 @@ struct FaceBlock
     /// The face in lane l of the block from face i0, of a polygon of n faces.
     static int Face(int n, int i0, int l) { return std::min(i0 + l, n - 1); }
 
-    FaceBlock(const PolygonT<S>& polygon, int i0)
+    /// The block from face i0 of `polygon`, whose vertices and normals are at `data` (vertices.data, or the
+    /// InlineBlock of a polygon kept inline, which is read without waiting for the pointer).
+    FaceBlock(const PolygonT<S>& polygon, const Vec2T<S>* data, int i0)
     {
         const int n = polygon.Count();
+        const Vec2T<S>* normals = data + n + 1;
+        const Vec2T<S>* v = data;
         if (i0 + 4 <= n)
         {
-            L::LoadPoints(&polygon.Normal(i0).x, nx, ny);
-            L::LoadPoints(&polygon.vertices.data[i0].x, vx, vy);
+            L::LoadPoints(&normals[i0].x, nx, ny);
+            L::LoadPoints(&v[i0].x, vx, vy);
             return;
         }
         const int f0 = Face(n, i0, 0);
         const int f1 = Face(n, i0, 1);
         const int f2 = Face(n, i0, 2);
         const int f3 = Face(n, i0, 3);
-        const Vec2T<S>* normals = &polygon.Normal(0);
-        const Vec2T<S>* v = polygon.vertices.data;
         nx = L::Set(normals[f0].x, normals[f1].x, normals[f2].x, normals[f3].x);
         ny = L::Set(normals[f0].y, normals[f1].y, normals[f2].y, normals[f3].y);
         vx = L::Set(v[f0].x, v[f1].x, v[f2].x, v[f3].x);
@@ -789,7 +820,7 @@ struct SmallRefSeparations
     L block1;               ///< of faces 4 to 7 (kBlocks = 2; else those of faces 0 to 3)
 
     SmallRefSeparations(const PolygonT<S>& ref, const IncidentPolygon<S>& inc)
-        : faces0(ref, 0), faces1(kBlocks == 2 ? FaceBlock<L, S>(ref, 4) : faces0)
+        : faces0(ref, ref.InlineBlock(), 0), faces1(kBlocks == 2 ? FaceBlock<L, S>(ref, ref.InlineBlock(), 4) : faces0)
     {
         L low0 = L::Fill(S(0));
         L low1 = L::Fill(S(0));
@@ -830,12 +861,14 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
                               ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
                               : uint64_t(0);
     L n0x, n0y, v0x, v0y, n1x, n1y, v1x, v1y;
-    L::LoadPoints(&ref.Normal(0).x, n0x, n0y);
-    L::LoadPoints(&ref.vertices.data[0].x, v0x, v0y);
+    // At most 8 faces: the polygon is kept inline, and its block is read without waiting for vertices.data.
+    const Vec2T<S>* block = ref.InlineBlock();
+    L::LoadPoints(&block[n + 1].x, n0x, n0y);
+    L::LoadPoints(&block[0].x, v0x, v0y);
     if constexpr (kBlocks == 2)
     {
-        L::LoadPoints(&ref.Normal(4).x, n1x, n1y);
-        L::LoadPoints(&ref.vertices.data[4].x, v1x, v1y);
+        L::LoadPoints(&block[n + 5].x, n1x, n1y);
+        L::LoadPoints(&block[4].x, v1x, v1y);
     }
     L low0 = L::Fill(S(0));
     L low1 = L::Fill(S(0));
@@ -980,7 +1013,7 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
     };
     for (int i0 = 0; i0 < n; i0 += 4)
     {
-        const FaceBlock<L, S> block(ref, i0);
+        const FaceBlock<L, S> block(ref, ref.vertices.data, i0);
         if (take(i0, (ProjectionMinimum<N>(inc, block.nx, block.ny) - block.Offset()) + L::Fill(S(0))))
         {
             return query;
@@ -1232,8 +1265,9 @@ FaceQuery<S> QueryFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
 }
 
 /// Four faces of `polygon` from face i0 as lanes, with raw edge normals RightPerp(Edge(i)) (no square root, no
-/// division: Overlap needs only the sign of a separation) and the offsets Dot(normal, v_i) of their lines. Lanes
-/// past the last face read the polygon's block beyond vertex 0's copy and hold no face: the caller masks them.
+/// division: Overlap needs only the sign of a separation) and the offsets Dot(normal, v_i) of their lines. For a
+/// polygon of at most 8 vertices, kept inline, whose block is read without waiting for vertices.data. Lanes past
+/// the last face read that block beyond vertex 0's copy and hold no face: the caller masks them.
 template <typename L, typename S>
 struct EdgeNormalBlock
 {
@@ -1246,8 +1280,8 @@ struct EdgeNormalBlock
         L vy;
         L wx;
         L wy;
-        L::LoadPoints(&polygon.vertices.data[i0].x, vx, vy);
-        L::LoadPoints(&polygon.vertices.data[i0 + 1].x, wx, wy);
+        L::LoadPoints(&polygon.InlineBlock()[i0].x, vx, vy);
+        L::LoadPoints(&polygon.InlineBlock()[i0 + 1].x, wx, wy);
         nx = wy - vy;
         ny = vx - wx;
         offset = nx * vx + ny * vy;
@@ -1309,11 +1343,55 @@ bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
     return separating != 0;
 }
 
+#if SATVIZ_WIDE
+/// SmallFacesSeparate for a ref of 5 to 8 faces on AVX-512: all of its faces in one register of eight lanes, so that
+/// each vertex of inc costs one pair of products, a sum and a minimum where two blocks of four lanes need two of
+/// each. The same products, sums and minimum per face, in the same order, so the same bits. Lanes past the last
+/// face read the polygon's inline block (up to 8 vertices are kept inline) and are masked out, as are the `skip`ped
+/// faces.
+template <int N>
+[[gnu::target("avx512f")]] bool SmallFacesSeparate512(const PolygonT<double>& ref, const IncidentPolygon<double>& inc,
+                                                      uint64_t skip)
+{
+    Lanes8 vx;
+    Lanes8 vy;
+    Lanes8 wx;
+    Lanes8 wy;
+    Lanes8::LoadPoints(&ref.InlineBlock()[0].x, vx, vy);
+    Lanes8::LoadPoints(&ref.InlineBlock()[1].x, wx, wy);
+    const Lanes8 nx = wy - vy;
+    const Lanes8 ny = vx - wx;
+    const Lanes8 offset = nx * vx + ny * vy;
+    Lanes8 low = Lanes8::Fill(0.0);
+    for (int j = 0; j < N; ++j)
+    {
+        const Lanes8 projection = nx * Lanes8::Fill(inc.x[j]) + ny * Lanes8::Fill(inc.y[j]);
+        low = j == 0 ? projection : Min(low, projection);
+    }
+    const Lanes8 separation = (low - offset) + Lanes8::Fill(0.0);
+    const int live = static_cast<int>(((uint64_t(1) << ref.Count()) - 1) & ~skip);
+    return (separation.GreaterBits(Lanes8::Fill(0.0)) & live) != 0;
+}
+#endif
+
 /// SmallFacesSeparate for a ref of at most 8 faces and a scanned inc of at most 8 vertices, unrolled for both.
 template <typename S, typename Tracer>
 bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, Tracer& tracer)
 {
     const bool twoBlocks = ref.Count() > 4;
+#if SATVIZ_WIDE
+    if constexpr (Tracer::kWide512 && !Tracer::kEnabled && std::is_same_v<S, double>)
+    {
+        if (twoBlocks && (inc.padded == 4 || inc.padded == 8))
+        {
+            const uint64_t skip = Tracer::kSkipParallel && second
+                                      ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
+                                      : uint64_t(0);
+            return inc.padded == 4 ? SmallFacesSeparate512<4>(ref, inc, skip)
+                                   : SmallFacesSeparate512<8>(ref, inc, skip);
+        }
+    }
+#endif
     switch (inc.padded)
     {
     case 4:
@@ -1336,8 +1414,10 @@ bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
 ///   0. Both polygons of at most 8 vertices: A's faces against B mapped into A's frame, four faces at a time in
 ///      lanes (SmallFacesSeparate); a separating face ends the test; otherwise B's faces against A mapped into B's
 ///      frame, anti-parallel faces skipped. One branch per polygon instead of one per face: on random pairs this
-///      took 0.78 of the time of steps 1 to 3 for 8-gons (satviz-bench), vertex shortcut included. Larger
-///      polygons:
+///      took 0.78 of the time of steps 1 to 3 for 8-gons (satviz-bench), vertex shortcut included. With AVX-512
+///      (Tracer::kWide512) each polygon's faces fit one register and cost so little that both polygons are tested
+///      and decided by one branch: the branch between them, mispredicted on about half of the pairs, cost more
+///      than B's faces (8-gons without it: 0.87 to 0.94 of the time, on random contact pairs). Larger polygons:
 ///   1. Face query of A's faces against B mapped into A's frame, stopping at the first separating face.
 ///   2. A scanned B (kScanLimit vertices or fewer) also yields, per vertex of B, its largest separation from A's
 ///      faces, from the same projections. A vertex of B whose largest separation is <= 0 lies inside A: the
@@ -1357,7 +1437,12 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
         if (incB.scan && a.Count() <= 8 && b.Count() <= 8)
         {
             bool separated = SmallFacesSeparate(a, incB, 0, false, tracer);
-            if (!separated || !Tracer::kEarlyExit)
+            if constexpr (Tracer::kWide512)
+            {
+                const IncidentPolygon<S> incA(a, xfB, xfA, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
+                separated = SmallFacesSeparate(b, incA, 1, true, tracer) | separated;
+            }
+            else if (!separated || !Tracer::kEarlyExit)
             {
                 const IncidentPolygon<S> incA(a, xfB, xfA, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
                 separated = SmallFacesSeparate(b, incA, 1, true, tracer) || separated;

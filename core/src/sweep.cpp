@@ -273,7 +273,7 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
         }
         else
         {
-            const FaceBlock<L, S> block(ref, i0);
+            const FaceBlock<L, S> block(ref, ref.vertices.data, i0);
             nx = block.nx;
             ny = block.ny;
             if constexpr (kScan)

@@ -34,8 +34,9 @@ struct AlgorithmChoices
     /// Walked faces whose separation a single point of the other polygon (the witness) bounds too low to matter
     /// are not walked to: large polygons then walk only the faces near the contact.
     static constexpr bool kPruneWalked = true;
-    static constexpr int kScanLimit = 16; ///< polygons up to this many vertices are scanned, larger walked
-    static constexpr bool kWide = false;  ///< scans with 256-bit vectors (AVX2; see HasWideVectors)
+    static constexpr int kScanLimit = 16;   ///< polygons up to this many vertices are scanned, larger walked
+    static constexpr bool kWide = false;    ///< scans with 256-bit vectors (AVX2; see HasWideVectors)
+    static constexpr bool kWide512 = false; ///< and, where a query takes them, 512-bit ones (see HasWide512)
 };
 
 struct NullTracer : AlgorithmChoices
@@ -47,6 +48,13 @@ struct NullTracer : AlgorithmChoices
 struct WideNullTracer : NullTracer
 {
     static constexpr bool kWide = true;
+};
+
+/// The null tracer of code compiled for AVX-512 (RunWide512): the face loops that take them use 512-bit vectors,
+/// the rest 256-bit ones.
+struct Wide512NullTracer : WideNullTracer
+{
+    static constexpr bool kWide512 = true;
 };
 
 /// Projection interval of a shape on a world direction.

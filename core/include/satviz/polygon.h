@@ -72,6 +72,10 @@ class PolygonT
     /// Number of vertices.
     int Count() const { return m_count; }
 
+    /// The block of vertices (vertex 0 again after the last) and normals of a polygon kept inline (Count() at most
+    /// kInlineVertices): the same data as vertices.data, at an address known without reading that pointer, so that
+    /// a query's loads from it need not wait for another load.
+    const Vec2T<S>* InlineBlock() const { return m_inline; }
     /// Unit outward normal of edge i (0 <= i < Count()): RightPerp(Edge(i)) / |Edge(i)|.
     const Vec2T<S>& Normal(int i) const { return vertices.data[m_count + 1 + i]; }
 

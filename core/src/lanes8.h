@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+// satviz (private): eight lanes of double in one AVX-512 register, for the face loops of polygons of up to 8 faces:
+// all faces side by side, one operation where four lanes need two. Used only in code compiled for AVX-512
+// (RunWide512). Every operation is the same IEEE operation lane by lane as in Lanes, so they give the same bits.
+#pragma once
+
+#if defined(__x86_64__) && defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define SATVIZ_LANES_AVX512 1
+#else
+#define SATVIZ_LANES_AVX512 0
+#endif
+
+namespace satviz::detail
+{
+
+#if SATVIZ_LANES_AVX512
+/// Eight doubles in one AVX-512 register.
+struct Lanes8
+{
+    __m512d v; ///< the lanes
+
+    /// Every lane x.
+    [[gnu::target("avx512f")]] static Lanes8 Fill(double x) { return {_mm512_set1_pd(x)}; }
+    /// Eight points stored as x, y pairs from p (any alignment): their x in xs, their y in ys.
+    [[gnu::target("avx512f")]] static void LoadPoints(const double* p, Lanes8& xs, Lanes8& ys)
+    {
+        const __m512d a = _mm512_loadu_pd(p);     // x0 y0 x1 y1 x2 y2 x3 y3
+        const __m512d b = _mm512_loadu_pd(p + 8); // x4 y4 x5 y5 x6 y6 x7 y7
+        xs = {_mm512_permutex2var_pd(a, _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14), b)};
+        ys = {_mm512_permutex2var_pd(a, _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15), b)};
+    }
+    /// The lanes greater than b's, one bit each.
+    [[gnu::target("avx512f")]] int GreaterBits(const Lanes8& b) const
+    {
+        return static_cast<int>(_mm512_cmp_pd_mask(v, b.v, _CMP_GT_OQ));
+    }
+
+    [[gnu::target("avx512f")]] friend Lanes8 operator+(const Lanes8& a, const Lanes8& b)
+    {
+        return {_mm512_add_pd(a.v, b.v)};
+    }
+    [[gnu::target("avx512f")]] friend Lanes8 operator-(const Lanes8& a, const Lanes8& b)
+    {
+        return {_mm512_sub_pd(a.v, b.v)};
+    }
+    [[gnu::target("avx512f")]] friend Lanes8 operator*(const Lanes8& a, const Lanes8& b)
+    {
+        return {_mm512_mul_pd(a.v, b.v)};
+    }
+    /// Per lane: a < b ? a : b (the second operand when either is NaN), as Min of Lanes. (The masked form with
+    /// every lane set: GCC 12 warns that _mm512_min_pd's undefined pass-through may be used uninitialized.)
+    [[gnu::target("avx512f")]] friend Lanes8 Min(const Lanes8& a, const Lanes8& b)
+    {
+        return {_mm512_mask_min_pd(a.v, static_cast<__mmask8>(0xFF), a.v, b.v)};
+    }
+};
+#endif
+
+} // namespace satviz::detail
