@@ -30,6 +30,17 @@ struct Lanes8
         xs = {_mm512_permutex2var_pd(a, _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14), b)};
         ys = {_mm512_permutex2var_pd(a, _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15), b)};
     }
+    /// Every lane the value of lane k. (The masked permutation with every lane set: GCC 12 warns that the plain
+    /// one's undefined pass-through may be used uninitialized.)
+    [[gnu::target("avx512f")]] Lanes8 Spread(int k) const
+    {
+        return {_mm512_mask_permutexvar_pd(v, static_cast<__mmask8>(0xFF), _mm512_set1_epi64(k), v)};
+    }
+    /// These lanes, with lane 0's value in the lanes whose bit is set in `bits`.
+    [[gnu::target("avx512f")]] Lanes8 FillFromFirst(int bits) const
+    {
+        return {_mm512_mask_permutexvar_pd(v, static_cast<__mmask8>(bits), _mm512_set1_epi64(0), v)};
+    }
     /// The lanes greater than b's, one bit each.
     [[gnu::target("avx512f")]] int GreaterBits(const Lanes8& b) const
     {

@@ -1344,14 +1344,28 @@ bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
 }
 
 #if SATVIZ_WIDE
-/// SmallFacesSeparate for a ref of 5 to 8 faces on AVX-512: all of its faces in one register of eight lanes, so that
-/// each vertex of inc costs one pair of products, a sum and a minimum where two blocks of four lanes need two of
-/// each. The same products, sums and minimum per face, in the same order, so the same bits. Lanes past the last
-/// face read the polygon's inline block (up to 8 vertices are kept inline) and are masked out, as are the `skip`ped
-/// faces.
+/// The vertices of a polygon of at most 8 vertices mapped by `xf` (as IncidentPolygon maps them, the same bits), one
+/// per lane, held in registers: lanes past the last vertex hold vertex 0 again.
+[[gnu::target("avx512f")]] inline void MapVertices512(const PolygonT<double>& polygon, const TransformT<double>& xf,
+                                                      Lanes8& x, Lanes8& y)
+{
+    Lanes8 vx;
+    Lanes8 vy;
+    Lanes8::LoadPoints(&polygon.InlineBlock()[0].x, vx, vy);
+    const Lanes8 c = Lanes8::Fill(xf.q.c);
+    const Lanes8 s = Lanes8::Fill(xf.q.s);
+    const int past = 0xFF & ~((1 << polygon.Count()) - 1);
+    x = ((c * vx - s * vy) + Lanes8::Fill(xf.p.x)).FillFromFirst(past);
+    y = ((s * vx + c * vy) + Lanes8::Fill(xf.p.y)).FillFromFirst(past);
+}
+
+/// Whether a face of `ref` (at most 8 faces, raw edge normals, all in one register of eight lanes) separates it from
+/// the N vertices of the other polygon, mapped into ref's frame and held in registers (MapVertices512), less the
+/// `skip`ped faces. The same products, sums and minimum per face, in the same order, as SmallFacesSeparate, so the
+/// same separations to the bit; the vertices come from registers, not from an array on the stack.
 template <int N>
-[[gnu::target("avx512f")]] bool SmallFacesSeparate512(const PolygonT<double>& ref, const IncidentPolygon<double>& inc,
-                                                      uint64_t skip)
+[[gnu::target("avx512f")]] bool FacesSeparate512(const PolygonT<double>& ref, const Lanes8& x, const Lanes8& y,
+                                                 uint64_t skip)
 {
     Lanes8 vx;
     Lanes8 vy;
@@ -1365,12 +1379,33 @@ template <int N>
     Lanes8 low = Lanes8::Fill(0.0);
     for (int j = 0; j < N; ++j)
     {
-        const Lanes8 projection = nx * Lanes8::Fill(inc.x[j]) + ny * Lanes8::Fill(inc.y[j]);
+        const Lanes8 projection = nx * x.Spread(j) + ny * y.Spread(j);
         low = j == 0 ? projection : Min(low, projection);
     }
     const Lanes8 separation = (low - offset) + Lanes8::Fill(0.0);
     const int live = static_cast<int>(((uint64_t(1) << ref.Count()) - 1) & ~skip);
     return (separation.GreaterBits(Lanes8::Fill(0.0)) & live) != 0;
+}
+
+/// Overlap of two polygons of at most 8 vertices on AVX-512 (OverlapPolygons, step 0): each polygon's faces in one
+/// register against the other polygon's vertices mapped into its frame, held in registers, both decided at once.
+[[gnu::target("avx512f")]] inline bool SmallPolygonsOverlap512(const PolygonT<double>& a, const TransformT<double>& xfA,
+                                                               const PolygonT<double>& b, const TransformT<double>& xfB,
+                                                               bool skipParallel)
+{
+    const TransformT<double> bInA = InvMulTransforms(xfA, xfB);
+    const TransformT<double> aInB = InvMulTransforms(xfB, xfA);
+    Lanes8 bx;
+    Lanes8 by;
+    Lanes8 ax;
+    Lanes8 ay;
+    MapVertices512(b, bInA, bx, by);
+    MapVertices512(a, aInB, ax, ay);
+    const uint64_t skip = skipParallel ? AntiParallelFaces(a, b, InvMulRot(aInB.q, RotT<double>{})) : uint64_t(0);
+    const bool separatedA = b.Count() <= 4 ? FacesSeparate512<4>(a, bx, by, 0) : FacesSeparate512<8>(a, bx, by, 0);
+    const bool separatedB =
+        a.Count() <= 4 ? FacesSeparate512<4>(b, ax, ay, skip) : FacesSeparate512<8>(b, ax, ay, skip);
+    return !(separatedA | separatedB);
 }
 #endif
 
@@ -1379,19 +1414,6 @@ template <typename S, typename Tracer>
 bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, Tracer& tracer)
 {
     const bool twoBlocks = ref.Count() > 4;
-#if SATVIZ_WIDE
-    if constexpr (Tracer::kWide512 && !Tracer::kEnabled && std::is_same_v<S, double>)
-    {
-        if (twoBlocks && (inc.padded == 4 || inc.padded == 8))
-        {
-            const uint64_t skip = Tracer::kSkipParallel && second
-                                      ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
-                                      : uint64_t(0);
-            return inc.padded == 4 ? SmallFacesSeparate512<4>(ref, inc, skip)
-                                   : SmallFacesSeparate512<8>(ref, inc, skip);
-        }
-    }
-#endif
     switch (inc.padded)
     {
     case 4:
@@ -1415,9 +1437,10 @@ bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
 ///      lanes (SmallFacesSeparate); a separating face ends the test; otherwise B's faces against A mapped into B's
 ///      frame, anti-parallel faces skipped. One branch per polygon instead of one per face: on random pairs this
 ///      took 0.78 of the time of steps 1 to 3 for 8-gons (satviz-bench), vertex shortcut included. With AVX-512
-///      (Tracer::kWide512) each polygon's faces fit one register and cost so little that both polygons are tested
-///      and decided by one branch: the branch between them, mispredicted on about half of the pairs, cost more
-///      than B's faces (8-gons without it: 0.87 to 0.94 of the time, on random contact pairs). Larger polygons:
+///      (Tracer::kWide512, SmallPolygonsOverlap512) each polygon's faces fit one register and cost so little that
+///      both polygons are tested and decided by one branch: the branch between them, mispredicted on about half of
+///      the pairs, cost more than B's faces (8-gons without it: 0.87 to 0.94 of the time, on random contact pairs).
+///      Larger polygons:
 ///   1. Face query of A's faces against B mapped into A's frame, stopping at the first separating face.
 ///   2. A scanned B (kScanLimit vertices or fewer) also yields, per vertex of B, its largest separation from A's
 ///      faces, from the same projections. A vertex of B whose largest separation is <= 0 lies inside A: the
@@ -1431,18 +1454,23 @@ template <typename S, typename Tracer>
 bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b, const TransformT<S>& xfB,
                      Tracer& tracer)
 {
+#if SATVIZ_WIDE
+    if constexpr (Tracer::kWide512 && !Tracer::kEnabled && !Tracer::kPrune && Tracer::kScanLimit >= 8 &&
+                  std::is_same_v<S, double>)
+    {
+        if (a.Count() <= 8 && b.Count() <= 8)
+        {
+            return SmallPolygonsOverlap512(a, xfA, b, xfB, Tracer::kSkipParallel);
+        }
+    }
+#endif
     const IncidentPolygon<S> incB(b, xfA, xfB, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
     if constexpr (!Tracer::kPrune)
     {
         if (incB.scan && a.Count() <= 8 && b.Count() <= 8)
         {
             bool separated = SmallFacesSeparate(a, incB, 0, false, tracer);
-            if constexpr (Tracer::kWide512)
-            {
-                const IncidentPolygon<S> incA(a, xfB, xfA, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
-                separated = SmallFacesSeparate(b, incA, 1, true, tracer) | separated;
-            }
-            else if (!separated || !Tracer::kEarlyExit)
+            if (!separated || !Tracer::kEarlyExit)
             {
                 const IncidentPolygon<S> incA(a, xfB, xfA, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
                 separated = SmallFacesSeparate(b, incA, 1, true, tracer) || separated;
