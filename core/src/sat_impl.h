@@ -747,6 +747,14 @@ uint64_t AntiParallelFaces(const PolygonT<S>& a, const PolygonT<S>& b, const Rot
     return mask;
 }
 
+/// The faces of ref that the second pass of a face query skips (SkipParallel: anti-parallel to a face of inc, whose
+/// test the first pass made), as a bit mask; none in the first pass.
+template <bool kSkipParallel, typename S>
+uint64_t SecondPassSkips(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, bool second)
+{
+    return kSkipParallel && second ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{})) : uint64_t(0);
+}
+
 /// The smallest projection of a scanned inc's N padded vertices on four normals at once (nx, ny in lanes): each
 /// vertex is projected on all four and the minimum kept per lane, in the order FaceSeparation takes it. Four
 /// vertices are loaded at a time and spread across the lanes from registers, which measured 4 to 9% faster for the
@@ -806,6 +814,28 @@ struct FaceBlock
     L Offset() const { return nx * vx + ny * vy; }
 };
 
+/// The smallest projection of a scanned inc's N padded vertices on the normals of one or two blocks of faces
+/// (kBlocks), per lane: each vertex is loaded once for both blocks, and the minimum is taken in vertex order, with
+/// the same products and sums as FaceSeparation, so the same bits.
+template <int N, int kBlocks, typename L, typename S>
+void LowestProjections(const IncidentPolygon<S>& inc, const L& nx0, const L& ny0, const L& nx1, const L& ny1, L& low0,
+                       L& low1)
+{
+    static_assert(kBlocks == 1 || kBlocks == 2, "one or two blocks");
+    for (int j = 0; j < N; ++j)
+    {
+        const L x = L::Fill(inc.x[j]);
+        const L y = L::Fill(inc.y[j]);
+        const L projection0 = nx0 * x + ny0 * y;
+        low0 = j == 0 ? projection0 : Min(low0, projection0);
+        if constexpr (kBlocks == 2)
+        {
+            const L projection1 = nx1 * x + ny1 * y;
+            low1 = j == 0 ? projection1 : Min(low1, projection1);
+        }
+    }
+}
+
 /// The separations of the faces of a small ref (kBlocks blocks of four, 1 or 2: at most 8 faces) from a scanned inc
 /// of N padded vertices, per block in lanes, in one pass over inc's vertices: each vertex is loaded once, as lanes,
 /// for both blocks, whose normals stay in registers. The same products, sums and minimum as FaceSeparation, so the
@@ -824,18 +854,7 @@ struct SmallRefSeparations
     {
         L low0 = L::Fill(S(0));
         L low1 = L::Fill(S(0));
-        for (int j = 0; j < N; ++j)
-        {
-            const L x = L::Fill(inc.x[j]);
-            const L y = L::Fill(inc.y[j]);
-            const L projection0 = faces0.nx * x + faces0.ny * y;
-            low0 = j == 0 ? projection0 : Min(low0, projection0);
-            if constexpr (kBlocks == 2)
-            {
-                const L projection1 = faces1.nx * x + faces1.ny * y;
-                low1 = j == 0 ? projection1 : Min(low1, projection1);
-            }
-        }
+        LowestProjections<N, kBlocks>(inc, faces0.nx, faces0.ny, faces1.nx, faces1.ny, low0, low1);
         block0 = (low0 - faces0.Offset()) + L::Fill(S(0));
         block1 = kBlocks == 2 ? (low1 - faces1.Offset()) + L::Fill(S(0)) : block0;
     }
@@ -857,14 +876,17 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
     using L = Lanes<S, Tracer::kWide && std::is_same_v<S, double>>;
     constexpr S kInfinity = std::numeric_limits<S>::infinity();
     const int n = ref.Count();
-    const uint64_t skip = Tracer::kSkipParallel && second
-                              ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
-                              : uint64_t(0);
-    L n0x, n0y, v0x, v0y, n1x, n1y, v1x, v1y;
-    // At most 8 faces: the polygon is kept inline, and its block is read without waiting for vertices.data.
+    const uint64_t skip = SecondPassSkips<Tracer::kSkipParallel>(ref, inc, second);
+    // At most 8 faces: the polygon is kept inline, and its block is read without waiting for vertices.data. Faces
+    // 0 to 3, then 4 to 7 (kBlocks = 2; else 0 to 3 again): their normals and first vertices.
     const Vec2T<S>* block = ref.InlineBlock();
+    L n0x, n0y, v0x, v0y;
     L::LoadPoints(&block[n + 1].x, n0x, n0y);
     L::LoadPoints(&block[0].x, v0x, v0y);
+    L n1x = n0x;
+    L n1y = n0y;
+    L v1x = v0x;
+    L v1y = v0y;
     if constexpr (kBlocks == 2)
     {
         L::LoadPoints(&block[n + 5].x, n1x, n1y);
@@ -872,18 +894,7 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
     }
     L low0 = L::Fill(S(0));
     L low1 = L::Fill(S(0));
-    for (int j = 0; j < N; ++j)
-    {
-        const L x = L::Fill(inc.x[j]);
-        const L y = L::Fill(inc.y[j]);
-        const L projection0 = n0x * x + n0y * y;
-        low0 = j == 0 ? projection0 : Min(low0, projection0);
-        if constexpr (kBlocks == 2)
-        {
-            const L projection1 = n1x * x + n1y * y;
-            low1 = j == 0 ? projection1 : Min(low1, projection1);
-        }
-    }
+    LowestProjections<N, kBlocks>(inc, n0x, n0y, n1x, n1y, low0, low1);
     L block0 = (low0 - (n0x * v0x + n0y * v0y)) + L::Fill(S(0));
     L block1 = block0;
     if constexpr (kBlocks == 2)
@@ -962,9 +973,7 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
     using L = Lanes<S, Tracer::kWide && std::is_same_v<S, double>>;
     constexpr S kInfinity = std::numeric_limits<S>::infinity();
     const int n = ref.Count();
-    const uint64_t skip = Tracer::kSkipParallel && second
-                              ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
-                              : uint64_t(0);
+    const uint64_t skip = SecondPassSkips<Tracer::kSkipParallel>(ref, inc, second);
     FaceQuery<S> query;
     query.face = 0;
     L best = L::Fill(-kInfinity);
@@ -1121,9 +1130,7 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
         // The best face so far starts as the first one tested, so that it is a valid index even when no
         // comparison holds (NaN input).
         query.face = 0;
-        const uint64_t skip = Tracer::kSkipParallel && second
-                                  ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
-                                  : uint64_t(0);
+        const uint64_t skip = SecondPassSkips<Tracer::kSkipParallel>(ref, inc, second);
         for (int i = 0; i < n; ++i)
         {
             const Vec2T<S> normal = kUnit ? ref.Normal(i) : RightPerp(ref.Edge(i));
@@ -1300,25 +1307,12 @@ bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
 {
     using L = Lanes<S, Tracer::kWide && std::is_same_v<S, double>>;
     const int n = ref.Count();
-    const uint64_t skip = Tracer::kSkipParallel && second
-                              ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{}))
-                              : uint64_t(0);
+    const uint64_t skip = SecondPassSkips<Tracer::kSkipParallel>(ref, inc, second);
     const EdgeNormalBlock<L, S> faces0(ref, 0);
     const EdgeNormalBlock<L, S> faces1(ref, kBlocks == 2 ? 4 : 0);
     L low0 = L::Fill(S(0));
     L low1 = L::Fill(S(0));
-    for (int j = 0; j < N; ++j)
-    {
-        const L x = L::Fill(inc.x[j]);
-        const L y = L::Fill(inc.y[j]);
-        const L projection0 = faces0.nx * x + faces0.ny * y;
-        low0 = j == 0 ? projection0 : Min(low0, projection0);
-        if constexpr (kBlocks == 2)
-        {
-            const L projection1 = faces1.nx * x + faces1.ny * y;
-            low1 = j == 0 ? projection1 : Min(low1, projection1);
-        }
-    }
+    LowestProjections<N, kBlocks>(inc, faces0.nx, faces0.ny, faces1.nx, faces1.ny, low0, low1);
     const L separation0 = (low0 - faces0.offset) + L::Fill(S(0));
     const L separation1 = kBlocks == 2 ? (low1 - faces1.offset) + L::Fill(S(0)) : separation0;
     // Faces that take part, one bit each: the real ones, less the skipped.
