@@ -64,9 +64,12 @@ auto WithTracer(TraceT<S>* trace, const A& a, const TransformT<S>& xfA, const B&
     if (trace == nullptr)
     {
 #if SATVIZ_WIDE
-        if (kWide512 && std::is_same_v<S, double> && HasWide512())
+        if constexpr (kWide512 && std::is_same_v<S, double>)
         {
-            return RunWide512(query);
+            if (HasWide512())
+            {
+                return RunWide512(query);
+            }
         }
         if (kWide && HasWideVectors())
         {

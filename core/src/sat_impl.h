@@ -1050,7 +1050,8 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
 ///      centroid is outside ref, that is the farthest face), and go round once.
 ///   2. Small inc (kScanLimit vertices or fewer): inc's vertices are mapped into ref's frame once; each face takes
 ///      the smallest projection of all of them, without branches: O(n m) with a tiny constant. Overlap goes a face
-///      at a time; Collide four faces at a time in lanes (ScanFaceBlocks).
+///      at a time (polygons of up to 8 vertices: SmallFacesSeparate); Collide four faces at a time in lanes
+///      (ScanFaceBlocks; a ref of up to 8 faces: SmallRefFaceQuery).
 ///   3. Large inc: the support point for the first face by bisection (BisectSupport, O(log m)). That point, the
 ///      witness, lies in inc, so its distance from a face's line bounds the face's separation from above. A face
 ///      whose bound is not above `floor` (Overlap: 0) nor above the best face so far (Collide) cannot change the
@@ -1296,7 +1297,7 @@ struct EdgeNormalBlock
 };
 
 /// Overlap's face query of a ref of at most 8 faces against a scanned inc of N padded vertices, its faces four at a
-/// time in lanes (Gregorius's face query, as ScanFaceBlocks does for Collide, with raw edge normals): one pass over
+/// time in lanes (Gregorius's face query, as SmallRefFaceQuery does for Collide, with raw edge normals): one pass over
 /// inc's vertices, each projected on all of ref's normals at once, then one branch per block of four faces instead
 /// of one per face, whose outcome follows the geometry and is mispredicted. The same products, sums and minimum as
 /// FaceSeparation, so the same separations to the bit. A skipped face (second pass: anti-parallel to one of inc's
@@ -1438,8 +1439,8 @@ bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
 ///   1. Face query of A's faces against B mapped into A's frame, stopping at the first separating face.
 ///   2. A scanned B (kScanLimit vertices or fewer) also yields, per vertex of B, its largest separation from A's
 ///      faces, from the same projections. A vertex of B whose largest separation is <= 0 lies inside A: the
-///      polygons share a point, so they overlap, and B's faces need no test. This is the usual way out for an
-///      overlapping pair (a corner of B pushed into A) and halves its cost. A walked B offers one candidate, the
+///      polygons share a point, so they overlap, and B's faces need no test. For polygons above 8 vertices this is
+///      the usual way out of an overlapping pair (a corner of B pushed into A). A walked B offers one candidate, the
 ///      witness of A's face query (B's support point for its first face): it lies inside A when no face of A
 ///      was above 0 for it, which the query found out anyway while pruning.
 ///   3. Otherwise the face query of B's faces against A, stopping at the first separating face; no separating face
@@ -1452,7 +1453,7 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
     if constexpr (Tracer::kWide512 && !Tracer::kEnabled && !Tracer::kPrune && Tracer::kScanLimit >= 8 &&
                   std::is_same_v<S, double>)
     {
-        if (a.Count() <= 8 && b.Count() <= 8)
+        if (a.Count() > 0 && a.Count() <= 8 && b.Count() > 0 && b.Count() <= 8)
         {
             return SmallPolygonsOverlap512(a, xfA, b, xfB, Tracer::kSkipParallel);
         }
@@ -1669,12 +1670,14 @@ ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentP
     const M cross2 = crossed(d2);
     const M inside1 = d1 <= zero;
     const M inside2 = d2 <= zero;
-    // The crossing, from each end towards the other: at d / (d - d_other) of the way. Read only where the plane is
-    // crossed strictly, so d - d_other is not 0 there; elsewhere it may be anything and is not selected.
+    // The crossing, from each end towards the other: at d / (d - d_other) of the way where the plane is crossed
+    // strictly (so d - d_other is not 0); elsewhere the divisor is 1, so no infinity or NaN is ever formed, and the
+    // number, though computed, is kept only in entries past the counts.
     const P towardX = x.Swap() - x;
     const P towardY = y.Swap() - y;
-    const P t1 = d1 / (d1 - d1.Swap());
-    const P t2 = d2 / (d2 - d2.Swap());
+    const P one = P::Fill(S(1));
+    const P t1 = d1 / Select(cross1, d1 - d1.Swap(), one);
+    const P t2 = d2 / Select(cross2, d2 - d2.Swap(), one);
     // The first plane alone (the trace's first clip), then both: an end moves when it lies outside either plane
     // (they face opposite ways, so not both), to that plane's crossing.
     const P x1 = Select(inside1, x, x + t1 * towardX);
