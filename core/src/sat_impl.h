@@ -1298,7 +1298,7 @@ struct EdgeNormalBlock
 
 /// Overlap's face query of a ref of at most 8 faces against a scanned inc of N padded vertices, its faces four at a
 /// time in lanes (Gregorius's face query, as SmallRefFaceQuery does for Collide, with raw edge normals): one pass over
-/// inc's vertices, each projected on all of ref's normals at once, then one branch per block of four faces instead
+/// inc's vertices, each projected on all of ref's normals at once, then one branch for all of ref's faces instead
 /// of one per face, whose outcome follows the geometry and is mispredicted. The same products, sums and minimum as
 /// FaceSeparation, so the same separations to the bit. A skipped face (second pass: anti-parallel to one of inc's
 /// faces, already tested) and the lanes past the last face take no part. The recorder replays the faces in order,
