@@ -2,6 +2,7 @@
 // The step trace: complete, consistent with the result, and describing what the algorithm did.
 
 #include "support/random_shapes.h"
+#include "support/reference.h"
 
 #include <satviz/sat.h>
 
@@ -118,22 +119,8 @@ TEST_CASE("Overlap of polygons above 8 vertices stops when a vertex of B lies in
         const bool overlap = Overlap(a, pair.xfA, b, pair.xfB, &trace);
         INFO("pair " << i << ", " << n << " vertices");
         REQUIRE(overlap == Collide(a, pair.xfA, b, pair.xfB).overlap);
-        // How far inside A each vertex of B lies (largest signed distance to A's face lines, in long double).
-        auto depthOutside = [&](int j) {
-            const Vec2 w = TransformPoint(pair.xfB, b.vertices[j]);
-            long double worst = -1e300L;
-            for (int k = 0; k < a.Count(); ++k)
-            {
-                const Vec2 v1 = TransformPoint(pair.xfA, a.vertices[k]);
-                const Vec2 v2 = TransformPoint(pair.xfA, a.vertices[(k + 1) % a.Count()]);
-                const long double ex = static_cast<long double>(v2.x) - v1.x;
-                const long double ey = static_cast<long double>(v2.y) - v1.y;
-                const long double cross =
-                    ex * (static_cast<long double>(w.y) - v1.y) - ey * (static_cast<long double>(w.x) - v1.x);
-                worst = std::max(worst, -cross / std::sqrt(ex * ex + ey * ey));
-            }
-            return worst;
-        };
+        // How far outside A each vertex of B lies (<= 0 inside).
+        auto depthOutside = [&](int j) { return DepthOutside(a, pair.xfA, TransformPoint(pair.xfB, b.vertices[j])); };
         if (!overlap)
         {
             REQUIRE(trace.exit == TraceExit::SeparatingAxis);

@@ -200,8 +200,8 @@ struct FaceQuery
     int support = -1;                                   ///< walk only: the other polygon's support for that face
     bool separated = false;                             ///< stopped at a separating face
     /// Walk only: the vertex of the other polygon that bounded the faces' separations (the support point for the
-    /// first face), and whether it lay on or inside every face tested or pruned: then, if the query went round
-    /// all faces, that vertex lies inside this polygon.
+    /// first face), and whether it lay on or inside every face tested or pruned (Overlap: inside this polygon, by
+    /// the wedge that holds it): then, if the query went round all faces, that vertex lies inside this polygon.
     int witness = -1;
     bool witnessInside = true; ///< walk only: see witness
 };
@@ -721,6 +721,78 @@ int ClimbFaceTowards(const PolygonT<S>& polygon, Vec2T<S> point, int start)
     return i;
 }
 
+/// The wedge of `polygon` that holds `point` (polygon frame): the vertex i such that the point lies between the
+/// rays from the centroid through v_i (included) and v_{i+1}, searched from vertex `start` in O(log n) steps.
+/// Outline (point in a convex polygon by bisection over its fan, as in O'Rourke, Computational Geometry in C,
+/// 7.3, with the turn measured as in BisectSupport):
+///   1. Measure each ray's turn from the ray through v_0 (half-plane of the cross product, then the cross product
+///      within the half). Along a counter-clockwise outline the vertices' turns increase with the index, so
+///      "v_j's ray comes no later than the point's" holds for j = 0 .. i and fails after: i is the wedge.
+///   2. Gallop from `start` (steps 1, 2, 4, ...) towards the change, then bisect the bracket it found: a point near
+///      vertex `start` takes a few steps through data already in cache, any point O(log n).
+/// The triangle of wedge i and the centroid lies inside the polygon, so the point lies inside the polygon iff it
+/// lies on the inner side of face i. NaN input returns some valid vertex.
+template <typename S>
+int WedgeOf(const PolygonT<S>& polygon, Vec2T<S> point, int start)
+{
+    const int n = polygon.Count();
+    const Vec2T<S> r = polygon.vertices[0] - polygon.centroid;
+    const Vec2T<S> u = point - polygon.centroid;
+    const auto pastHalf = [r](Vec2T<S> v) {
+        const S c = Cross(r, v);
+        return c < S(0) || (c == S(0) && Dot(r, v) < S(0));
+    };
+    const bool uPastHalf = pastHalf(u);
+    // Whether the ray through v_j turns no farther from r than the point's: true for j = 0 .. wedge, false after.
+    const auto noLater = [&](int j) {
+        const Vec2T<S> v = polygon.vertices[j] - polygon.centroid;
+        const bool vPastHalf = pastHalf(v);
+        return vPastHalf != uPastHalf ? uPastHalf : Cross(v, u) >= S(0);
+    };
+    // Bracket [lo, hi): noLater(lo) holds (vertex 0 always does), and hi is n or a vertex where it fails.
+    int lo = 0;
+    int hi = n;
+    if (noLater(start))
+    {
+        lo = start;
+        for (int step = 1; lo + step < n; step *= 2)
+        {
+            if (!noLater(lo + step))
+            {
+                hi = lo + step;
+                break;
+            }
+            lo += step;
+        }
+    }
+    else
+    {
+        hi = start;
+        for (int step = 1; hi - step > 0; step *= 2)
+        {
+            if (noLater(hi - step))
+            {
+                lo = hi - step;
+                break;
+            }
+            hi -= step;
+        }
+    }
+    while (hi - lo > 1)
+    {
+        const int mid = lo + (hi - lo) / 2;
+        if (noLater(mid))
+        {
+            lo = mid;
+        }
+        else
+        {
+            hi = mid;
+        }
+    }
+    return lo;
+}
+
 /// Faces of b (at most 64) exactly anti-parallel to a face of a, as a bit mask. Rotated normals are exact only
 /// when the relative rotation is a multiple of a quarter turn (one of its components is zero), so other rotations
 /// are not searched: the search would cost as much as the axes it could save.
@@ -1185,6 +1257,88 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
     {
         return query;
     }
+    // Walks inc's support point on to face i and records the face; true when the query stops there. Collide then
+    // takes that support point as the witness: it bounds the next faces more tightly than the first one, as the
+    // support turns with the faces. (Overlap keeps one witness, whose bounds decide containment.)
+    const auto walkTo = [&](int i) {
+        const Vec2T<S> normal = kUnit ? ref.Normal(i) : RightPerp(ref.Edge(i));
+        const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
+        support = Tracer::kPruneWalked ? ClimbFrom(inc.polygon, d, support) : WalkToSupport(inc.polygon, d, support);
+        if (Tracer::kSkipParallel && second && Dot(d, inc.polygon.Edge(support)) == S(0))
+        {
+            if constexpr (Tracer::kEnabled)
+            {
+                tracer.SkippedFace(i, support);
+            }
+            return false;
+        }
+        const Vec2T<S> point = TransformPoint(inc.xf, inc.polygon.vertices[support]);
+        if (record(i, normal, Dot(normal, point - ref.vertices[i]), support))
+        {
+            return true;
+        }
+        if constexpr (kUnit)
+        {
+            witness = point;
+        }
+        return false;
+    };
+    // Traced: records face i as pruned by the witness (its support point is found for the view only).
+    const auto tracePruned = [&](int i) {
+        if constexpr (Tracer::kEnabled)
+        {
+            const Vec2T<S> normal = ref.Normal(i);
+            tracer.PrunedFace(side, i, normal, FaceDistance(ref, i, witness),
+                              ClimbFrom(inc.polygon, InvRotate(inc.xf.q, -normal), support));
+        }
+    };
+    if constexpr (!kUnit && Tracer::kPruneWalked)
+    {
+        // Overlap: only the faces that see the witness (witness outside their line) can separate, and they form
+        // one run of consecutive faces. The wedge of ref that holds the witness decides in O(log n) whether there
+        // are any: its face sees the witness iff the witness lies outside ref. The run then grows from that face.
+        const int wedge = WedgeOf(ref, witness, start);
+        const int kWedge = wedge >= start ? wedge - start : wedge - start + n;
+        const S wedgeDistance = FaceDistance(ref, wedge, witness);
+        const bool seen = wedgeDistance > S(0);
+        if (!seen || kWedge != 0)
+        {
+            // The faces tested: k in [first, last] (none when the witness lies inside).
+            int first = 1;
+            int last = 0;
+            if (seen)
+            {
+                first = kWedge;
+                last = kWedge;
+                while (first > 1 && FaceDistance(ref, faceAt(first - 1), witness) > S(0))
+                {
+                    --first;
+                }
+                while (last < n - 1 && FaceDistance(ref, faceAt(last + 1), witness) > S(0))
+                {
+                    ++last;
+                }
+            }
+            query.witnessInside = query.witnessInside && wedgeDistance <= S(0);
+            // Traced: every face in order, those outside the run recorded as pruned.
+            const int begin = Tracer::kEnabled ? 1 : first;
+            const int end = Tracer::kEnabled ? n - 1 : last;
+            for (int k = begin; k <= end; ++k)
+            {
+                if (k < first || k > last)
+                {
+                    tracePruned(faceAt(k));
+                }
+                else if (walkTo(faceAt(k)))
+                {
+                    break;
+                }
+            }
+            return query;
+        }
+        // The wedge's face is the first face, which did not see the witness by its own test: rounding disagrees
+        // about a witness on that face's line. The scan below settles it.
+    }
     for (int k = 1; k < n; ++k)
     {
         if constexpr (Tracer::kPruneWalked)
@@ -1196,15 +1350,9 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
             const int to = from < start ? start : n;
             const int next = FirstFaceAbove(ref, witness, threshold, from, to);
             const int jump = k + (next - from);
-            if constexpr (Tracer::kEnabled)
+            for (int j = k; Tracer::kEnabled && j < jump; ++j)
             {
-                for (int j = k; j < jump; ++j)
-                {
-                    const int i = faceAt(j);
-                    const Vec2T<S> normal = ref.Normal(i);
-                    tracer.PrunedFace(side, i, normal, FaceDistance(ref, i, witness),
-                                      ClimbFrom(inc.polygon, InvRotate(inc.xf.q, -normal), support));
-                }
+                tracePruned(faceAt(j));
             }
             k = jump;
             if (next == to)
@@ -1222,27 +1370,9 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
         // Pruned faces have the witness below a threshold that is at most 0 (the queries stop at a separation
         // above 0, and the floor is 0 or less), so this decides whether it lies inside every face.
         query.witnessInside = query.witnessInside && FaceDistance(ref, i, witness) <= S(0);
-        const Vec2T<S> normal = kUnit ? ref.Normal(i) : RightPerp(ref.Edge(i));
-        const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
-        support = Tracer::kPruneWalked ? ClimbFrom(inc.polygon, d, support) : WalkToSupport(inc.polygon, d, support);
-        if (Tracer::kSkipParallel && second && Dot(d, inc.polygon.Edge(support)) == S(0))
-        {
-            if constexpr (Tracer::kEnabled)
-            {
-                tracer.SkippedFace(i, support);
-            }
-            continue;
-        }
-        const Vec2T<S> point = TransformPoint(inc.xf, inc.polygon.vertices[support]);
-        if (record(i, normal, Dot(normal, point - ref.vertices[i]), support))
+        if (walkTo(i))
         {
             break;
-        }
-        if constexpr (kUnit)
-        {
-            // Collide: the support point just found bounds the next faces more tightly than the first one, as
-            // the support turns with the faces. (Overlap keeps one witness, whose bounds decide containment.)
-            witness = point;
         }
     }
     return query;
@@ -1436,13 +1566,16 @@ bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
 ///      both polygons are tested and decided by one branch: the branch between them, mispredicted on about half of
 ///      the pairs, cost more than B's faces (8-gons without it: 0.87 to 0.94 of the time, on random contact pairs).
 ///      Larger polygons:
-///   1. Face query of A's faces against B mapped into A's frame, stopping at the first separating face.
+///   1. Face query of A's faces against B mapped into A's frame, stopping at the first separating face. A walked A
+///      tests only the run of faces that see the witness (B's support point for A's first face): every other face
+///      has the witness on its inner side, so its separation is <= 0. The wedge of A's fan that holds the witness,
+///      found by bisection (WedgeOf), tells whether the run is empty and where it is: O(log n) plus the run,
+///      instead of a pass over every face.
 ///   2. A scanned B (kScanLimit vertices or fewer) also yields, per vertex of B, its largest separation from A's
 ///      faces, from the same projections. A vertex of B whose largest separation is <= 0 lies inside A: the
 ///      polygons share a point, so they overlap, and B's faces need no test. For polygons above 8 vertices this is
-///      the usual way out of an overlapping pair (a corner of B pushed into A). A walked B offers one candidate, the
-///      witness of A's face query (B's support point for its first face): it lies inside A when no face of A
-///      was above 0 for it, which the query found out anyway while pruning.
+///      the usual way out of an overlapping pair (a corner of B pushed into A). A walked B offers one candidate,
+///      the witness: it lies inside A when the run is empty (step 1 found that out anyway).
 ///   3. Otherwise the face query of B's faces against A, stopping at the first separating face; no separating face
 ///      on either polygon means overlap.
 template <typename S, typename Tracer>

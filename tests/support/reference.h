@@ -12,6 +12,7 @@
 #include <satviz/sat.h>
 
 #include <algorithm>
+#include <cmath>
 #include <quadmath.h>
 #include <vector>
 
@@ -99,6 +100,25 @@ inline bool ContainsPoint(const std::vector<QVec>& outline, QVec p)
         }
     }
     return true;
+}
+
+/// How far `point` lies outside a polygon (vertices mapped by `xf` in double, as the library maps them): the
+/// largest signed distance from the lines of its edges, in long double; <= 0 inside. Cheaper than SignedDistance
+/// (no quadruple-precision square root) where only the sign and a band around 0 matter.
+inline long double DepthOutside(const Polygon& polygon, const Transform& xf, Vec2 point)
+{
+    long double worst = -1e300L;
+    for (int k = 0; k < polygon.Count(); ++k)
+    {
+        const Vec2 v1 = TransformPoint(xf, polygon.vertices[k]);
+        const Vec2 v2 = TransformPoint(xf, polygon.vertices[(k + 1) % polygon.Count()]);
+        const long double ex = static_cast<long double>(v2.x) - v1.x;
+        const long double ey = static_cast<long double>(v2.y) - v1.y;
+        const long double cross =
+            ex * (static_cast<long double>(point.y) - v1.y) - ey * (static_cast<long double>(point.x) - v1.x);
+        worst = std::max(worst, -cross / std::sqrt(ex * ex + ey * ey));
+    }
+    return worst;
 }
 
 /// Yes/no by edge crossings and containment.

@@ -14,8 +14,9 @@ namespace satviz
 /// vertices: at the first polygon whose faces, tested four at a time, hold one; on processors with AVX-512, whose
 /// registers hold all 8 faces, both polygons are tested and decided at once, which costs less than the branch
 /// between them), uses unnormalised edge normals (no square root, no division), and skips the faces of B that are
-/// exactly anti-parallel to a face of A (their test is the same as that face's). Runs in O(n + m) by walking the
-/// support points. No heap allocation.
+/// exactly anti-parallel to a face of A (their test is the same as that face's). Polygons above 16 vertices test
+/// only the faces that see a point of the other polygon, found by bisection: O(log n + log m) plus those faces and
+/// the walk of the support points between them, at most O(n + m). No heap allocation.
 /// With a non-null `trace`, every step is recorded there; the answer is bit-identical either way.
 template <typename S>
 bool Overlap(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b, const TransformT<S>& xfB,

@@ -38,8 +38,9 @@
 //
 // COST
 //   Overlap and Collide run in O(n + m) for polygons of n and m vertices: the support point of one polygon turns
-//   with the normals of the other, so it is walked forward, not searched for each axis. No heap allocation per
-//   query. Faces of B exactly anti-parallel to a face of A repeat that face's test and are skipped (two aligned
+//   with the normals of the other, so it is walked forward, not searched for each axis. Overlap of large polygons
+//   tests only the faces that see one point of the other polygon (the others cannot separate): a bisection finds
+//   them, so a pair whose point lies inside costs O(log n + log m). No heap allocation per query. Faces of B exactly anti-parallel to a face of A repeat that face's test and are skipped (two aligned
 //   boxes test 2 axes, four faces of A; two rotated boxes 4 axes).
 //
 // REFERENCES
