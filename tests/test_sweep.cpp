@@ -307,3 +307,82 @@ TEST_CASE("Circle sweeps are traced axis by axis", "[sweep][circle][trace]")
     CHECK(trace.axes[0].axis.kind == AxisKind::CenterToCenter);
     CHECK_THAT(trace.axes[0].entry, WithinAbs(discs.toi, 1e-15));
 }
+
+TEST_CASE("Sweeps of large polygons walk only the faces that can decide, and decide as every face would",
+          "[sweep][properties]")
+{
+    // Above kScanLimit vertices the face loops walk only to the faces whose bounds leave them a say (the latest
+    // entry, an axis that never closes, an exit before the latest entry). The oracles: the trace, which replays
+    // every face in order with its exact separation, and for moderate sizes the Minkowski-difference cast.
+    Rng rng(5150);
+    SweepTrace trace;
+    int hits = 0;
+    int misses = 0;
+    int cast = 0;
+    for (int i = 0; i < 600; ++i)
+    {
+        const bool moderate = i % 2 == 0;
+        const int n = moderate ? rng.Int(17, 60) : rng.Int(17, 1500);
+        RandomPair pair = ContactPair(rng, n, static_cast<PairCategory>(rng.Int(0, 2)), 0.1);
+        if (rng.Chance(0.3))
+        {
+            pair.b = MakeShape(
+                RandomPolygon(rng, rng.Int(3, moderate ? 60 : 400), rng.Uniform(0.05, 1.5), rng.Uniform(0.35, 1.0)));
+        }
+        // B pulled back from A and sent towards it (sometimes past it) or in any direction, at speeds from a
+        // tenth of the gap to 1000 times it.
+        const Vec2 toward =
+            TransformPoint(pair.xfA, pair.a.polygon.centroid) - TransformPoint(pair.xfB, pair.b.polygon.centroid);
+        pair.xfB.p = pair.xfB.p - rng.Uniform(0.0, 2.0) * toward;
+        const double k = rng.Uniform(0.5, 3.0) * rng.LogUniform(-1.0, 3.0);
+        const double angle = rng.Uniform(-kPi, kPi);
+        const Vec2 v = rng.Chance(0.5) ? k * toward + (rng.Uniform(-0.5, 0.5) * k) * LeftPerp(toward)
+                                       : k * Length(toward) * Vec2{std::cos(angle), std::sin(angle)};
+        const SweepResult plain = Sweep(pair.a, pair.xfA, kStill, pair.b, pair.xfB, v);
+        const SweepResult traced = Sweep(pair.a, pair.xfA, kStill, pair.b, pair.xfB, v, &trace);
+        INFO("pair " << i << ": " << pair.a.polygon.Count() << " and " << pair.b.polygon.Count() << " vertices");
+        REQUIRE(plain.status == traced.status);
+        REQUIRE(std::memcmp(&plain.toi, &traced.toi, sizeof plain.toi) == 0);
+        REQUIRE(plain.normal == traced.normal);
+        REQUIRE(plain.contactCount == traced.contactCount);
+        if (plain.status == SweepStatus::Overlapping)
+        {
+            continue;
+        }
+        REQUIRE_FALSE(trace.axes.empty());
+        const SweepAxis& last = trace.axes.back();
+        if (plain.status == SweepStatus::Hit)
+        {
+            ++hits;
+            REQUIRE(trace.exit == SweepExit::AllAxesOverlap);
+            REQUIRE(trace.axes[last.latestEntry].entry == plain.toi);
+            REQUIRE(trace.axes[last.latestEntry].axis.shape == plain.axis.shape);
+            REQUIRE(trace.axes[last.latestEntry].axis.index == plain.axis.index);
+        }
+        else
+        {
+            ++misses;
+            REQUIRE(last.endsTest);
+        }
+        if (moderate)
+        {
+            const SweepReference ref = ReferenceSweep(pair.a.polygon, pair.xfA, pair.b.polygon, pair.xfB, v);
+            const double enter = static_cast<double>(ref.enter);
+            if (std::abs(static_cast<double>(ref.startSeparation)) < 1e-12 || std::abs(enter - 1.0) < 1e-12 ||
+                std::abs(static_cast<double>(ref.leave - ref.enter)) < 1e-12)
+            {
+                continue;
+            }
+            ++cast;
+            const bool hit = ref.crosses && ref.enter <= 1 && ref.leave > 0;
+            REQUIRE((plain.status == SweepStatus::Hit) == hit);
+            if (hit)
+            {
+                REQUIRE(std::abs(plain.toi - std::max(0.0, enter)) <= 1e-12);
+            }
+        }
+    }
+    CHECK(hits > 100);
+    CHECK(misses > 100);
+    CHECK(cast > 200);
+}

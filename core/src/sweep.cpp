@@ -173,30 +173,6 @@ struct SweepState
 // A face's place in the order A's faces, then B's, as a lane value (exact in float up to 2^24).
 constexpr int kSideStride = 1 << 16;
 
-// What the face loops carry from A's faces to B's, per lane: the latest entry (and its face) and the earliest exit
-// each lane saw, and whether every separation was < 0. The lanes are combined once, after both polygons (Combine),
-// so B's faces need not wait for A's to be combined.
-template <typename L, typename S>
-struct SweepLanes
-{
-    L first = L::Fill(S(0));                       // latest entry so far
-    L firstIndex = L::Fill(S(0));                  // its face: side * kSideStride + face
-    L last = L::Fill(kInfinity<S>);                // earliest exit so far
-    typename L::Mask inside = L::Mask::Fill(true); // every separation so far is < 0
-
-    // The latest entry, at the first face that has it, and the earliest exit.
-    void Combine(SweepState<S>& state) const
-    {
-        state.first = first.MaxLane();
-        const L candidates = Select(first == L::Fill(state.first), firstIndex, L::Fill(S(1 << 30)));
-        const int index = static_cast<int>(candidates.MinLane());
-        state.firstSide = index / kSideStride;
-        state.firstFace = index % kSideStride;
-        state.last = last.MinLane();
-        state.inside = inside.All();
-    }
-};
-
 // Entry, exit and whether the axis never closes, for four axes at once (the per-axis rule of AxisTimes, without
 // branches). With q = s / -r: s >= 0 enters at q (r < 0) or never (r >= 0); s < 0 is overlapping from t = 0 and,
 // when r > 0, exits at q.
@@ -219,9 +195,77 @@ struct AxisLanes
     }
 };
 
+// What the face loops carry from A's faces to B's, per lane: the latest entry (and its face) and the earliest exit
+// each lane saw, and whether every separation was < 0. The lanes are combined once, after both polygons (Combine),
+// so B's faces need not wait for A's to be combined.
+template <typename L, typename S>
+struct SweepLanes
+{
+    L first = L::Fill(S(0));                       // latest entry so far
+    L firstIndex = L::Fill(S(0));                  // its face: side * kSideStride + face
+    L last = L::Fill(kInfinity<S>);                // earliest exit so far
+    typename L::Mask inside = L::Mask::Fill(true); // every separation so far is < 0
+
+    // Takes in a block of four faces (face indices as lane values, side * kSideStride + face), in face order:
+    // each lane keeps the latest entry it saw and the first face that has it, and the earliest exit. Returns the
+    // lanes whose axis ends the test: it never closes, or the latest entry is after t = 1.
+    typename L::Mask Add(const AxisLanes<L>& axes, const L& faces)
+    {
+        // A NaN separation does not count as apart, and a NaN entry does not replace the latest one.
+        inside = inside & ~axes.apart;
+        const typename L::Mask later = axes.entry > first;
+        first = Select(later, axes.entry, first);
+        firstIndex = Select(later, faces, firstIndex);
+        last = Min(axes.leave, last);
+        return axes.never | (first > L::Fill(S(1)));
+    }
+
+    // The latest entry, at the first face that has it, and the earliest exit.
+    void Combine(SweepState<S>& state) const
+    {
+        state.first = first.MaxLane();
+        const L candidates = Select(first == L::Fill(state.first), firstIndex, L::Fill(S(1 << 30)));
+        const int index = static_cast<int>(candidates.MinLane());
+        state.firstSide = index / kSideStride;
+        state.firstFace = index % kSideStride;
+        state.last = last.MinLane();
+        state.inside = inside.All();
+    }
+};
+
+// The recorder's face-by-face view of a block of faces i0 .. i0 + 3 (those below n), with the block's own numbers:
+// the latest entry and earliest exit so far, and the first face that ends the test (then `replayEnded`).
+template <typename L, typename S, typename Tracer>
+void Replay(Tracer& tracer, SweepState<S>& replay, bool& replayEnded, int side, int i0, int n, const L& separations,
+            const L& rates, const AxisLanes<L>& axes)
+{
+    for (int l = 0; l < 4 && i0 + l < n && !replayEnded; ++l)
+    {
+        const S entry = axes.entry.Get(l);
+        const S leave = axes.leave.Get(l);
+        const bool never = axes.never.Get(l);
+        if (entry > replay.first)
+        {
+            replay.first = entry;
+            replay.firstSide = side;
+            replay.firstFace = i0 + l;
+        }
+        replay.last = std::min(replay.last, leave);
+        replayEnded = never || replay.first > S(1) || replay.first >= replay.last;
+        tracer.Axis(side, i0 + l, separations.Get(l), rates.Get(l), never ? S(0) : entry, never ? kInfinity<S> : leave,
+                    replayEnded);
+        if (replayEnded)
+        {
+            replay.exit = never                 ? SweepExit::NeverCloses
+                          : replay.first > S(1) ? SweepExit::EntryAfterStep
+                                                : SweepExit::EntryAfterExit;
+        }
+    }
+}
+
 // The faces of `ref` (side 0 = A, 1 = B) against `inc` mapped into ref's frame; `velocity` is B's motion relative
 // to A in ref's frame, times -1 when ref is B (it is then A that moves towards ref). False when an axis ends the
-// test with a miss. N is inc's padded vertex count when scanned, 0 when walked (as in QueryFacesN).
+// test with a miss. N is inc's padded vertex count (inc scanned; a walked inc goes to SweepWalkedFaces).
 //   Per face: separation s at t = 0 (as in the static face query, but with unit normals) and its rate
 //   r = Dot(n, velocity), then its entry and exit (AxisLanes). The faces are decided four at a time, in lanes:
 //   each lane keeps the latest entry it saw (and its face) and the earliest exit, so there is no branch per face,
@@ -235,8 +279,8 @@ template <int N, int kBlocks, typename L, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
                 SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
 {
-    constexpr bool kScan = N > 0;
-    constexpr bool kSmall = kScan && kBlocks > 0;
+    static_assert(N > 0, "a scanned inc");
+    constexpr bool kSmall = kBlocks > 0;
     // A small ref has the separations of all its faces, and its blocks, from one pass over inc's vertices.
     const auto small = [&]() {
         if constexpr (kSmall)
@@ -251,13 +295,8 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     const int n = ref.Count();
     // A small ref has exactly kBlocks blocks, so its loop unrolls.
     const int blocksEnd = kSmall ? 4 * kBlocks : n;
-    L& first = lanes.first;
-    L& firstIndex = lanes.firstIndex;
-    L& last = lanes.last;
-    typename L::Mask& inside = lanes.inside;
     typename L::Mask ends = L::Mask::Fill(false);
-    bool replayEnded = false;
-    int support = 0;
+    bool replayEnded = replay.exit != SweepExit::AllAxesOverlap;
     for (int i0 = 0; i0 < blocksEnd && !ends.Any(); i0 += 4)
     {
         // The block's normals and separations; the last block repeats the last face.
@@ -276,70 +315,225 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
             const FaceBlock<L, S> block(ref, ref.vertices.data, i0);
             nx = block.nx;
             ny = block.ny;
-            if constexpr (kScan)
-            {
-                // The four faces side by side: each vertex of inc is projected on all four normals at once and
-                // the minimum kept per lane, so no minimum is taken across lanes. The same products, sums and
-                // minimum as FaceSeparation, so the same bits.
-                const L offset = block.Offset();
-                const L low = ProjectionMinimum<N>(inc, nx, ny);
-                separations = (low - offset) + L::Fill(S(0));
-            }
-            else
-            {
-                S separation[4];
-                for (int l = 0; l < 4; ++l)
-                {
-                    const int i = FaceBlock<L, S>::Face(n, i0, l);
-                    const Vec2T<S> normal = ref.Normal(i);
-                    const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
-                    support = i == 0 ? BisectSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
-                    separation[l] = inc.Separation(normal, ref.vertices[i], support);
-                }
-                separations = L::Set(separation[0], separation[1], separation[2], separation[3]);
-            }
+            // The four faces side by side: each vertex of inc is projected on all four normals at once and the
+            // minimum kept per lane, so no minimum is taken across lanes. The same products, sums and minimum as
+            // FaceSeparation, so the same bits.
+            const L offset = block.Offset();
+            const L low = ProjectionMinimum<N>(inc, nx, ny);
+            separations = (low - offset) + L::Fill(S(0));
         }
         const L rates = nx * L::Fill(velocity.x) + ny * L::Fill(velocity.y);
         const AxisLanes<L> axes(separations, rates);
-        // A NaN separation does not count as apart, and a NaN entry does not replace the latest one.
-        inside = inside & ~axes.apart;
-        const typename L::Mask later = axes.entry > first;
-        first = Select(later, axes.entry, first);
-        const S base = S(side * kSideStride);
         // Lane l holds face i0 + l, past the last face too: a lane that repeats the last face ties with that face's
         // own lane, whose smaller index Combine takes.
-        firstIndex = Select(later, L::Fill(base + S(i0)) + L::Set(S(0), S(1), S(2), S(3)), firstIndex);
-        last = Min(axes.leave, last);
-        ends = axes.never | (first > L::Fill(S(1)));
+        ends = lanes.Add(axes, L::Fill(S(side * kSideStride + i0)) + L::Set(S(0), S(1), S(2), S(3)));
         if constexpr (Tracer::kEnabled)
         {
-            for (int l = 0; l < 4 && i0 + l < n && !replayEnded; ++l)
-            {
-                const S entry = axes.entry.Get(l);
-                const S leave = axes.leave.Get(l);
-                const bool never = axes.never.Get(l);
-                if (entry > replay.first)
-                {
-                    replay.first = entry;
-                    replay.firstSide = side;
-                    replay.firstFace = i0 + l;
-                }
-                replay.last = std::min(replay.last, leave);
-                replayEnded = never || replay.first > S(1) || replay.first >= replay.last;
-                tracer.Axis(side, i0 + l, separations.Get(l), rates.Get(l), never ? S(0) : entry,
-                            never ? kInfinity<S> : leave, replayEnded);
-                if (replayEnded)
-                {
-                    replay.exit = never                 ? SweepExit::NeverCloses
-                                  : replay.first > S(1) ? SweepExit::EntryAfterStep
-                                                        : SweepExit::EntryAfterExit;
-                }
-            }
+            Replay(tracer, replay, replayEnded, side, i0, n, separations, rates, axes);
         }
     }
     // A latest entry after t = 1 ended its own block (`ends`), so what is left to compare is the latest entry
     // against the earliest exit. Why the test ended is for the trace only, which the replay has.
-    return !ends.Any() && !(first.MaxLane() >= last.MinLane());
+    return !ends.Any() && !(lanes.first.MaxLane() >= lanes.last.MinLane());
+}
+
+// What the walked face loop of one polygon (SweepWalkedFaces) leaves for its second pass (SweepWalkedExits).
+template <typename S>
+struct WalkedSweep
+{
+    bool walked = false; // inc was walked: its exit-only faces wait for the second pass
+    Vec2T<S> witness{};  // the point of inc that bounds the separations of ref's faces
+};
+
+// The faces of a walked face loop that need their exact separation, evaluated in face order four at a time into
+// the lanes (SweepLanes::Add): inc's support point for each, climbed from the one before (found by bisection after
+// a gap), its separation, and the axis times. `known` rises to the latest entry seen.
+template <typename L, typename S>
+class WalkedEvaluation
+{
+  public:
+    WalkedEvaluation(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
+                     SweepLanes<L, S>& lanes, S& known)
+        : m_ref(ref), m_inc(inc), m_side(side), m_velocity(velocity), m_lanes(lanes), m_known(known)
+    {
+    }
+
+    // Evaluates face i (after the faces added before it); true when an axis ends the test.
+    bool Add(int i)
+    {
+        const Vec2T<S> normal = m_ref.Normal(i);
+        const Vec2T<S> d = InvRotate(m_inc.xf.q, -normal);
+        m_support = m_last < 0 || i - m_last > kClimbLimit ? BisectSupport(m_inc.polygon, d)
+                                                           : ClimbFrom(m_inc.polygon, d, m_support);
+        m_last = i;
+        m_faces[m_count] = i;
+        m_separations[m_count] = m_inc.Separation(normal, m_ref.vertices[i], m_support);
+        ++m_count;
+        return m_count == 4 && Flush();
+    }
+
+    // The support point of the last face evaluated (ref's frame), or `otherwise` before the first.
+    Vec2T<S> Witness(Vec2T<S> otherwise) const
+    {
+        return m_last < 0 ? otherwise : TransformPoint(m_inc.xf, m_inc.polygon.vertices[m_support]);
+    }
+
+    // Takes the pending faces into the lanes (the last one repeated in the lanes left); true when an axis ends the
+    // test.
+    bool Flush()
+    {
+        if (m_count == 0)
+        {
+            return false;
+        }
+        const auto at = [this](int l) { return std::min(l, m_count - 1); };
+        const Vec2T<S> n0 = m_ref.Normal(m_faces[at(0)]);
+        const Vec2T<S> n1 = m_ref.Normal(m_faces[at(1)]);
+        const Vec2T<S> n2 = m_ref.Normal(m_faces[at(2)]);
+        const Vec2T<S> n3 = m_ref.Normal(m_faces[at(3)]);
+        const L nx = L::Set(n0.x, n1.x, n2.x, n3.x);
+        const L ny = L::Set(n0.y, n1.y, n2.y, n3.y);
+        const L separations =
+            L::Set(m_separations[at(0)], m_separations[at(1)], m_separations[at(2)], m_separations[at(3)]);
+        const L rates = nx * L::Fill(m_velocity.x) + ny * L::Fill(m_velocity.y);
+        const S base = S(m_side * kSideStride);
+        const L faces = L::Set(base + S(m_faces[at(0)]), base + S(m_faces[at(1)]), base + S(m_faces[at(2)]),
+                               base + S(m_faces[at(3)]));
+        m_count = 0;
+        const bool ends = m_lanes.Add(AxisLanes<L>(separations, rates), faces).Any();
+        m_known = std::max(m_known, m_lanes.first.MaxLane());
+        return ends;
+    }
+
+  private:
+    // Faces skipped beyond which the support point is found by bisection rather than climbed to.
+    static constexpr int kClimbLimit = 16;
+    const PolygonT<S>& m_ref;
+    const IncidentPolygon<S>& m_inc;
+    int m_side;
+    Vec2T<S> m_velocity;
+    SweepLanes<L, S>& m_lanes;
+    S& m_known;
+    int m_support = 0;
+    int m_last = -1;
+    int m_count = 0;
+    int m_faces[4] = {};
+    S m_separations[4] = {};
+};
+
+// Visits the faces of ref in blocks of four with the bounds a witness w (a point of inc) gives: per face, its
+// distance d = Dot(n, w - v_i) bounds the separation s from above (s <= d), and r = Dot(n, velocity) is the rate.
+// `select(d, r)` returns the lanes to evaluate exactly, which `evaluation` takes in face order; the witness of each
+// block is the support point of the last face evaluated (it turns with the faces, so it bounds the next ones
+// tightly), or `witness` before the first. True when an axis ends the test.
+template <typename L, typename S, typename Select>
+bool VisitBounds(const PolygonT<S>& ref, Vec2T<S> witness, Vec2T<S> velocity, Select&& select,
+                 WalkedEvaluation<L, S>& evaluation)
+{
+    const int n = ref.Count();
+    const L vx = L::Fill(velocity.x);
+    const L vy = L::Fill(velocity.y);
+    for (int i0 = 0; i0 < n; i0 += 4)
+    {
+        const Vec2T<S> w = evaluation.Witness(witness);
+        const FaceBlock<L, S> block(ref, ref.vertices.data, i0);
+        const L distance = block.nx * (L::Fill(w.x) - block.vx) + block.ny * (L::Fill(w.y) - block.vy);
+        const L rate = block.nx * vx + block.ny * vy;
+        int lanes = select(distance, rate).Bits() & (n - i0 >= 4 ? 0xF : (1 << (n - i0)) - 1);
+        while (lanes != 0)
+        {
+            const int l = __builtin_ctz(static_cast<unsigned>(lanes));
+            lanes &= lanes - 1;
+            if (evaluation.Add(i0 + l))
+            {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+// The faces of `ref` against a walked `inc` (more than kScanLimit vertices): as SweepFaces, but only the faces that
+// can decide are walked to. A point w of inc bounds each face's separation from above (s <= d, VisitBounds): first
+// inc's support point for the face of ref that meets the motion most head-on (at ref's support point against the
+// velocity), whose entry, if it has one, starts `known`, a lower bound of the latest entry; then the support point of
+// the last face walked to. A face with d < 0 overlaps from t = 0 on (entry 0, and it keeps `inside`): its exit alone
+// can matter, and only if it comes before the latest entry, which is known after both polygons' faces: such faces
+// wait for the second pass (SweepWalkedExits), which walks to those whose exit bound -d / r (exit >= -d / r) is not
+// after the latest entry. A face that approaches (r < 0) with entry bound d / -r below `known` cannot hold the latest
+// entry, nor tie with it. Every other face (d >= 0 and r >= 0: it may never close; or its entry may be the latest)
+// is walked to, in face order. So the latest entry, its first face and the verdict are those of the full loop (up
+// to rounding where a bound and a separation tie). The recorder replays every face, walked for the view, in order.
+template <typename L, typename S, typename Tracer>
+bool SweepWalkedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
+                      SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known, WalkedSweep<S>& walk)
+{
+    const int n = ref.Count();
+    if constexpr (Tracer::kEnabled)
+    {
+        bool replayEnded = replay.exit != SweepExit::AllAxesOverlap;
+        int support = 0;
+        for (int i0 = 0; i0 < n && !replayEnded; i0 += 4)
+        {
+            const FaceBlock<L, S> block(ref, ref.vertices.data, i0);
+            S separation[4];
+            for (int l = 0; l < 4; ++l)
+            {
+                const int i = FaceBlock<L, S>::Face(n, i0, l);
+                const Vec2T<S> normal = ref.Normal(i);
+                const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
+                support = i == 0 ? BisectSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
+                separation[l] = inc.Separation(normal, ref.vertices[i], support);
+            }
+            const L separations = L::Set(separation[0], separation[1], separation[2], separation[3]);
+            const L rates = block.nx * L::Fill(velocity.x) + block.ny * L::Fill(velocity.y);
+            Replay(tracer, replay, replayEnded, side, i0, n, separations, rates, AxisLanes<L>(separations, rates));
+        }
+    }
+    const int top = BisectSupport(ref, -velocity);
+    const int before = Prev(top, n);
+    const int seed = Dot(ref.Normal(top), velocity) <= Dot(ref.Normal(before), velocity) ? top : before;
+    const Vec2T<S> seedNormal = ref.Normal(seed);
+    const int seedSupport = BisectSupport(inc.polygon, InvRotate(inc.xf.q, -seedNormal));
+    walk.walked = true;
+    walk.witness = TransformPoint(inc.xf, inc.polygon.vertices[seedSupport]);
+    const S seedSeparation = inc.Separation(seedNormal, ref.vertices[seed], seedSupport);
+    const S seedRate = seedNormal.x * velocity.x + seedNormal.y * velocity.y;
+    if (seedSeparation >= S(0) && seedRate < S(0))
+    {
+        known = std::max(known, seedSeparation / -seedRate);
+    }
+    WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
+    // Entry bound d / -r below known, without a division: d < known (1 - 4 eps) (-r) implies it after rounding.
+    const S shrink = S(1) - S(4) * std::numeric_limits<S>::epsilon();
+    const auto select = [&known, shrink](const L& distance, const L& rate) {
+        const L zero = L::Fill(S(0));
+        return ~((zero > distance) | ((zero > rate) & (L::Fill(known * shrink) * -rate > distance)));
+    };
+    const bool ends = VisitBounds<L>(ref, walk.witness, velocity, select, evaluation) || evaluation.Flush();
+    return !ends && !(lanes.first.MaxLane() >= lanes.last.MinLane());
+}
+
+// The second pass of a walked face loop, once the latest entry is known: the faces that overlap from t = 0 and
+// separate while the polygons move (d < 0, r > 0) and whose exit bound -d / r is not after the latest entry are
+// walked to. False when one exits no later than the latest entry: a miss.
+template <typename L, typename S>
+bool SweepWalkedExits(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
+                      SweepLanes<L, S>& lanes, const WalkedSweep<S>& walk)
+{
+    const S first = lanes.first.MaxLane();
+    S known = first;
+    WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
+    // Exit bound -d / r after the latest entry, without a division: -d > first (1 + 4 eps) r implies it after
+    // rounding.
+    const S grow = S(1) + S(4) * std::numeric_limits<S>::epsilon();
+    const auto select = [first, grow](const L& distance, const L& rate) {
+        const L zero = L::Fill(S(0));
+        return (zero > distance) & (rate > zero) & ~(-distance > L::Fill(first * grow) * rate);
+    };
+    VisitBounds<L>(ref, walk.witness, velocity, select, evaluation);
+    evaluation.Flush();
+    return !(first >= lanes.last.MinLane());
 }
 
 // SweepFaces with inc's scan unrolled for its padded vertex count, and a ref of up to 8 faces in one pass.
@@ -347,7 +541,7 @@ template <int N, typename L, typename S, typename Tracer>
 bool SweepFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
                  SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
 {
-    switch (N > 0 ? (ref.Count() + 3) / 4 : 0)
+    switch ((ref.Count() + 3) / 4)
     {
     case 1:
         return SweepFaces<N, 1>(ref, inc, side, velocity, lanes, replay, tracer);
@@ -360,7 +554,7 @@ bool SweepFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side
 
 template <typename L, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
+                SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known, WalkedSweep<S>& walk)
 {
     switch (inc.scan ? inc.padded : 0)
     {
@@ -373,7 +567,7 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     case 16:
         return SweepFacesN<16>(ref, inc, side, velocity, lanes, replay, tracer);
     default:
-        return SweepFacesN<0>(ref, inc, side, velocity, lanes, replay, tracer);
+        return SweepWalkedFaces(ref, inc, side, velocity, lanes, replay, tracer, known, walk);
     }
 }
 
@@ -386,6 +580,9 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
 ///      intervals overlap from entry = max(0, s0 / -rate) to exit = -s0 / rate (rate > 0) or forever.
 ///   3. First contact is the latest entry, valid while it is before the earliest exit (strictly: touching at one
 ///      instant is not a hit) and not after t = 1. Each bound only tightens, so the test ends as soon as it fails.
+///      Against a walked polygon (above kScanLimit vertices) a point of it bounds every face's separation, so only
+///      the faces that can hold the latest entry, never close, or exit before the latest entry are walked to
+///      (SweepWalkedFaces, then SweepWalkedExits once the latest entry is known): the same verdict and time.
 ///   4. Every s0 < 0: the shapes interpenetrate at t = 0: the static manifold gives the MTV.
 ///   5. A hit: contacts by clipping at the time of impact, the axis of the latest entry as reference face and the
 ///      other polygon, as mapped for the face loops, moved by its relative motion up to that time (kContacts; else
@@ -407,14 +604,21 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
             tracer.Finish(replay.exit);
         }
     };
-    if (!SweepFaces(a, incB, 0, velocityInA, lanes, replay, tracer))
+    // A lower bound of the latest entry, and what the walked face loops leave for their second pass.
+    S known = S(0);
+    WalkedSweep<S> walkA;
+    WalkedSweep<S> walkB;
+    if (!SweepFaces(a, incB, 0, velocityInA, lanes, replay, tracer, known, walkA))
     {
         finish();
         return {};
     }
     // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
     const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, std::bool_constant<Tracer::kWide>{});
-    const bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, replay, tracer);
+    bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, replay, tracer, known, walkB);
+    // Walked polygons: the exits their first pass left, now that the latest entry is known.
+    going = going && !(walkA.walked && !SweepWalkedExits(a, incB, 0, velocityInA, lanes, walkA));
+    going = going && !(walkB.walked && !SweepWalkedExits(b, incA, 1, -velocityInB, lanes, walkB));
     finish();
     if (!going)
     {
