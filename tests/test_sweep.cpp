@@ -318,16 +318,19 @@ TEST_CASE("Sweeps of large polygons walk only the faces that can decide, and dec
     SweepTrace trace;
     int hits = 0;
     int misses = 0;
-    int cast = 0;
-    for (int i = 0; i < 600; ++i)
+    int casts = 0;
+    // Mostly moderate sizes, where many pairs fit in the test's time: an exit that a witness hides from one pass
+    // but not the other shows up about once in 5000 pairs.
+    for (int i = 0; i < 20000; ++i)
     {
-        const bool moderate = i % 2 == 0;
-        const int n = moderate ? rng.Int(17, 60) : rng.Int(17, 1500);
+        const bool large = i % 40 == 0;
+        const bool cast = i % 20 == 1;
+        const int n = large ? rng.Int(17, 1500) : rng.Int(17, 48);
         RandomPair pair = ContactPair(rng, n, static_cast<PairCategory>(rng.Int(0, 2)), 0.1);
-        if (rng.Chance(0.3))
+        if (rng.Chance(0.5))
         {
-            pair.b = MakeShape(
-                RandomPolygon(rng, rng.Int(3, moderate ? 60 : 400), rng.Uniform(0.05, 1.5), rng.Uniform(0.35, 1.0)));
+            pair.b = MakeShape(RandomPolygon(rng, rng.Int(3, large ? 400 : 48), rng.Uniform(0.05, 1.5),
+                                             rng.Chance(0.2) ? 0.05 : rng.Uniform(0.35, 1.0)));
         }
         // B pulled back from A and sent towards it (sometimes past it) or in any direction, at speeds from a
         // tenth of the gap to 1000 times it.
@@ -336,7 +339,7 @@ TEST_CASE("Sweeps of large polygons walk only the faces that can decide, and dec
         pair.xfB.p = pair.xfB.p - rng.Uniform(0.0, 2.0) * toward;
         const double k = rng.Uniform(0.5, 3.0) * rng.LogUniform(-1.0, 3.0);
         const double angle = rng.Uniform(-kPi, kPi);
-        const Vec2 v = rng.Chance(0.5) ? k * toward + (rng.Uniform(-0.5, 0.5) * k) * LeftPerp(toward)
+        const Vec2 v = rng.Chance(0.3) ? k * toward + (rng.Uniform(-0.5, 0.5) * k) * LeftPerp(toward)
                                        : k * Length(toward) * Vec2{std::cos(angle), std::sin(angle)};
         const SweepResult plain = Sweep(pair.a, pair.xfA, kStill, pair.b, pair.xfB, v);
         const SweepResult traced = Sweep(pair.a, pair.xfA, kStill, pair.b, pair.xfB, v, &trace);
@@ -364,7 +367,7 @@ TEST_CASE("Sweeps of large polygons walk only the faces that can decide, and dec
             ++misses;
             REQUIRE(last.endsTest);
         }
-        if (moderate)
+        if (cast)
         {
             const SweepReference ref = ReferenceSweep(pair.a.polygon, pair.xfA, pair.b.polygon, pair.xfB, v);
             const double enter = static_cast<double>(ref.enter);
@@ -373,7 +376,7 @@ TEST_CASE("Sweeps of large polygons walk only the faces that can decide, and dec
             {
                 continue;
             }
-            ++cast;
+            ++casts;
             const bool hit = ref.crosses && ref.enter <= 1 && ref.leave > 0;
             REQUIRE((plain.status == SweepStatus::Hit) == hit);
             if (hit)
@@ -382,7 +385,7 @@ TEST_CASE("Sweeps of large polygons walk only the faces that can decide, and dec
             }
         }
     }
-    CHECK(hits > 100);
-    CHECK(misses > 100);
-    CHECK(cast > 200);
+    CHECK(hits > 2000);
+    CHECK(misses > 2000);
+    CHECK(casts > 500);
 }

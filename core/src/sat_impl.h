@@ -1127,11 +1127,13 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
 ///   3. Large inc: the support point for the first face by bisection (BisectSupport, O(log m)). That point, the
 ///      witness, lies in inc, so its distance from a face's line bounds the face's separation from above. A face
 ///      whose bound is not above `floor` (Overlap: 0) nor above the best face so far (Collide) cannot change the
-///      answer and is pruned: a vectorised search (FirstFaceAbove) jumps to the next face that can. Only those
-///      faces, near the contact, are walked to (ClimbFrom the last support). Overlap keeps one witness: if no
-///      face is above 0, it lies inside ref and the polygons overlap. Collide moves the witness to each support
-///      it finds, which bounds the next faces more tightly. O(n + m) in the worst case; for the random pairs of
-///      satviz-bench, a pass over a 1024-gon walks to 1 to 90 faces instead of 1024.
+///      answer and is pruned. Collide: a vectorised search (FirstFaceAbove) jumps to the next face that can, and
+///      the witness moves to each support found, which bounds the next faces more tightly. Overlap keeps one
+///      witness, and the faces above 0 for it are those that see it: one run of consecutive faces, found from the
+///      wedge of ref's fan that holds the witness (WedgeOf, O(log n)); none when it lies inside ref, and then the
+///      polygons overlap. Only the faces left, near the contact, are walked to (ClimbFrom the last support).
+///      O(n + m) in the worst case; for the random pairs of satviz-bench, a pass over a 1024-gon walks to 1 to 90
+///      faces instead of 1024.
 ///   4. A separation > 0 is a separating axis: stop there (early exit).
 ///   5. Overlap's scan only, back-face pruning when Tracer::kPrune (off by default): separation_i <=
 ///      Dot(n, c - v_i) for inc's centroid c, which lies inside inc. When that bound is not above `floor` (Overlap: 0,

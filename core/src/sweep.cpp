@@ -423,12 +423,13 @@ class WalkedEvaluation
 
 // Visits the faces of ref in blocks of four with the bounds a witness w (a point of inc) gives: per face, its
 // distance d = Dot(n, w - v_i) bounds the separation s from above (s <= d), and r = Dot(n, velocity) is the rate.
-// `select(d, r)` returns the lanes to evaluate exactly, which `evaluation` takes in face order; the witness of each
+// `select(d, r)` returns the lanes to evaluate exactly (face `always` is evaluated in any case), which `evaluation`
+// takes in face order; the witness of each
 // block is the support point of the last face evaluated (it turns with the faces, so it bounds the next ones
 // tightly), or `witness` before the first. True when an axis ends the test.
 template <typename L, typename S, typename Select>
 bool VisitBounds(const PolygonT<S>& ref, Vec2T<S> witness, Vec2T<S> velocity, Select&& select,
-                 WalkedEvaluation<L, S>& evaluation)
+                 WalkedEvaluation<L, S>& evaluation, int always = -1)
 {
     const int n = ref.Count();
     const L vx = L::Fill(velocity.x);
@@ -440,6 +441,7 @@ bool VisitBounds(const PolygonT<S>& ref, Vec2T<S> witness, Vec2T<S> velocity, Se
         const L distance = block.nx * (L::Fill(w.x) - block.vx) + block.ny * (L::Fill(w.y) - block.vy);
         const L rate = block.nx * vx + block.ny * vy;
         int lanes = select(distance, rate).Bits() & (n - i0 >= 4 ? 0xF : (1 << (n - i0)) - 1);
+        lanes |= always >= i0 && always < i0 + 4 ? 1 << (always - i0) : 0;
         while (lanes != 0)
         {
             const int l = __builtin_ctz(static_cast<unsigned>(lanes));
@@ -456,14 +458,15 @@ bool VisitBounds(const PolygonT<S>& ref, Vec2T<S> witness, Vec2T<S> velocity, Se
 // The faces of `ref` against a walked `inc` (more than kScanLimit vertices): as SweepFaces, but only the faces that
 // can decide are walked to. A point w of inc bounds each face's separation from above (s <= d, VisitBounds): first
 // inc's support point for the face of ref that meets the motion most head-on (at ref's support point against the
-// velocity), whose entry, if it has one, starts `known`, a lower bound of the latest entry; then the support point of
-// the last face walked to. A face with d < 0 overlaps from t = 0 on (entry 0, and it keeps `inside`): its exit alone
-// can matter, and only if it comes before the latest entry, which is known after both polygons' faces: such faces
-// wait for the second pass (SweepWalkedExits), which walks to those whose exit bound -d / r (exit >= -d / r) is not
-// after the latest entry. A face that approaches (r < 0) with entry bound d / -r below `known` cannot hold the latest
-// entry, nor tie with it. Every other face (d >= 0 and r >= 0: it may never close; or its entry may be the latest)
-// is walked to, in face order. So the latest entry, its first face and the verdict are those of the full loop (up
-// to rounding where a bound and a separation tie). The recorder replays every face, walked for the view, in order.
+// velocity), whose entry, if it has one, starts `known`, a lower bound of the latest entry (that face is always
+// walked to, so the lanes hold its entry too); then the support point of the last face walked to. A face with d < 0
+// overlaps from t = 0 on (entry 0, and it keeps `inside`): its exit alone can matter, and only if it comes before
+// the latest entry, which is known after both polygons' faces: the second pass (SweepWalkedExits) takes the exits
+// in. A face that approaches (r < 0) with entry bound d / -r below `known` cannot hold the latest entry, nor tie
+// with it. Every other face (d >= 0 and r >= 0: it may never close; or its entry may be the latest) is walked to,
+// in face order. So the latest entry, its first face and the verdict are those of the full loop, up to rounding
+// where a bound and a separation tie (two support points on an edge parallel to the face). The recorder replays
+// every face, walked for the view, in order.
 template <typename L, typename S, typename Tracer>
 bool SweepWalkedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
                       SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known, WalkedSweep<S>& walk)
@@ -504,19 +507,20 @@ bool SweepWalkedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int
         known = std::max(known, seedSeparation / -seedRate);
     }
     WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
-    // Entry bound d / -r below known, without a division: d < known (1 - 4 eps) (-r) implies it after rounding.
+    // Entry bound d / -r below known, without a division: d < known (1 - 4 eps) (-r) implies it despite the
+    // rounding of the product and the quotient (not that of d itself).
     const S shrink = S(1) - S(4) * std::numeric_limits<S>::epsilon();
     const auto select = [&known, shrink](const L& distance, const L& rate) {
         const L zero = L::Fill(S(0));
         return ~((zero > distance) | ((zero > rate) & (L::Fill(known * shrink) * -rate > distance)));
     };
-    const bool ends = VisitBounds<L>(ref, walk.witness, velocity, select, evaluation) || evaluation.Flush();
+    const bool ends = VisitBounds<L>(ref, walk.witness, velocity, select, evaluation, seed) || evaluation.Flush();
     return !ends && !(lanes.first.MaxLane() >= lanes.last.MinLane());
 }
 
-// The second pass of a walked face loop, once the latest entry is known: the faces that overlap from t = 0 and
-// separate while the polygons move (d < 0, r > 0) and whose exit bound -d / r is not after the latest entry are
-// walked to. False when one exits no later than the latest entry: a miss.
+// The second pass of a walked face loop, once the latest entry is known: every face that recedes (r > 0) and
+// whose exit bound -d / r does not clear the latest entry is walked to, so every exit that could come before the
+// latest entry is taken in. False when one exits no later than the latest entry (or an axis never closes): a miss.
 template <typename L, typename S>
 bool SweepWalkedExits(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
                       SweepLanes<L, S>& lanes, const WalkedSweep<S>& walk)
@@ -524,15 +528,18 @@ bool SweepWalkedExits(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int
     const S first = lanes.first.MaxLane();
     S known = first;
     WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
-    // Exit bound -d / r after the latest entry, without a division: -d > first (1 + 4 eps) r implies it after
-    // rounding.
+    // Exit bound -d / r after the latest entry, without a division: -d > first (1 + 4 eps) r implies it despite
+    // the rounding of the product and the quotient (not that of d itself).
     const S grow = S(1) + S(4) * std::numeric_limits<S>::epsilon();
+    // Every receding face whose exit bound does not clear the latest entry: its witness may differ from the one
+    // that sent the face here in the first pass, so the selection does not rest on that pass's choice.
     const auto select = [first, grow](const L& distance, const L& rate) {
-        const L zero = L::Fill(S(0));
-        return (zero > distance) & (rate > zero) & ~(-distance > L::Fill(first * grow) * rate);
+        return (rate > L::Fill(S(0))) & ~(-distance > L::Fill(first * grow) * rate);
     };
-    VisitBounds<L>(ref, walk.witness, velocity, select, evaluation);
-    evaluation.Flush();
+    if (VisitBounds<L>(ref, walk.witness, velocity, select, evaluation) || evaluation.Flush())
+    {
+        return false;
+    }
     return !(first >= lanes.last.MinLane());
 }
 
