@@ -123,6 +123,64 @@ TEST_CASE("RayCast against polygons agrees with a quad-precision clipping on 100
     CHECK(worst <= 1e-13);
 }
 
+TEST_CASE("RayCast against polygons above 32 vertices, whose crossing faces are found by bisection, agrees with the "
+          "quad-precision clipping",
+          "[raycast][properties]")
+{
+    Rng rng(1717);
+    int hits = 0;
+    int inside = 0;
+    int misses = 0;
+    // 40 segments for each of 100 polygons.
+    for (int i = 0; i < 4000; ++i)
+    {
+        static Polygon polygon;
+        static Transform xf;
+        if (i % 40 == 0)
+        {
+            polygon = RandomPolygon(rng, rng.Int(33, 1500), rng.Uniform(0.3, 2.0),
+                                    rng.Chance(0.1) ? 0.01 : rng.Uniform(0.3, 1.0));
+            const double offset = rng.Chance(0.2) ? rng.LogUniform(3.0, 8.0) : 0.0;
+            xf = MakeTransform(Vec2{offset + rng.Uniform(-1, 1), -offset + rng.Uniform(-1, 1)}, rng.Uniform(-kPi, kPi));
+        }
+        const int n = polygon.Count();
+        // From near or far (bullets), aimed at or past the polygon, short and long.
+        const double angle = rng.Uniform(0.0, 2.0 * kPi);
+        const double from = rng.Chance(0.2) ? rng.LogUniform(1.0, 4.0) : rng.Uniform(0.0, 5.0);
+        const Vec2 p1 = xf.p + Vec2{from * std::cos(angle), from * std::sin(angle)};
+        const Vec2 aim = xf.p + Vec2{rng.Uniform(-2.5, 2.5), rng.Uniform(-2.5, 2.5)};
+        const Vec2 p2 = p1 + rng.Uniform(0.2, 2.0) * (aim - p1);
+        const RayHit got = RayCast(polygon, xf, p1, p2);
+        const ReferenceRay ref = ReferencePolygonRay(polygon, xf, p1, p2);
+        const double scale = Scale(polygon) + Length(p1 - xf.p);
+        if (static_cast<double>(ref.margin) <= 1e-12 * (scale + Length(p2 - p1)))
+        {
+            continue;
+        }
+        INFO("segment " << i << ", " << n << " vertices");
+        REQUIRE(got.hit == ref.hit);
+        REQUIRE(got.startsInside == ref.inside);
+        if (got.hit && !got.startsInside)
+        {
+            REQUIRE(std::abs(got.fraction - static_cast<double>(ref.enter)) * Length(p2 - p1) <= 1e-12 * scale);
+            // The point lies on the edge reported (up to the rounding of world coordinates), whose normal points
+            // against the segment.
+            REQUIRE(got.edge >= 0);
+            REQUIRE(got.edge < n);
+            const Vec2 v1 = TransformPoint(xf, polygon.vertices[got.edge]);
+            const Vec2 v2 = TransformPoint(xf, polygon.vertices[(got.edge + 1) % n]);
+            REQUIRE(std::abs(Cross(Normalize(v2 - v1), got.point - v1)) <= 1e-12 * (scale + Length(xf.p)));
+            REQUIRE(Dot(got.normal, p2 - p1) < 0.0);
+            ++hits;
+        }
+        inside += got.startsInside ? 1 : 0;
+        misses += got.hit ? 0 : 1;
+    }
+    CHECK(hits > 800);
+    CHECK(inside > 200);
+    CHECK(misses > 800);
+}
+
 TEST_CASE("RayCast against circles agrees with the quad-precision quadratic", "[raycast]")
 {
     Rng rng(910);

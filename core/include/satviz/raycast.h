@@ -26,7 +26,8 @@ using RayHit = RayHitT<double>;
 /// the segment against the polygon's faces, in the polygon's frame (p1 - xf.p is formed before any rotation, so a
 /// cast far from the origin is as precise as near it): the segment enters through the face with the latest
 /// entry and leaves through the one with the earliest exit, and misses when it leaves before it enters. A segment
-/// that starts inside reports startsInside at fraction 0 (Box2D reports no hit there). O(n), no allocation.
+/// that starts inside reports startsInside at fraction 0 (Box2D reports no hit there). Polygons above 32 vertices
+/// find the two faces where the segment's line crosses the outline by bisection: O(log n). No allocation.
 template <typename S>
 RayHitT<S> RayCast(const PolygonT<S>& polygon, const TransformT<S>& xf, Vec2T<S> p1, Vec2T<S> p2);
 
