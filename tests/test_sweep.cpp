@@ -154,6 +154,7 @@ TEST_CASE("Sweep agrees with the Minkowski-difference cast on random moving pair
     int hits = 0;
     int compared = 0;
     double maxError = 0.0;
+    double maxContactOff = 0.0;
     for (int i = 0; i < 100000; ++i)
     {
         const RandomPair pair = RandomShapePair(rng, 0.0);
@@ -187,9 +188,27 @@ TEST_CASE("Sweep agrees with the Minkowski-difference cast on random moving pair
             const double expected = std::max(0.0, enter);
             maxError = std::max(maxError, std::abs(r.toi - expected));
             REQUIRE(std::abs(r.toi - expected) <= 1e-12);
+            // Every contact point lies on both outlines at the time of impact, up to the error of t times the
+            // speed, and the rounding of the coordinates.
+            REQUIRE(r.contactCount >= 1);
+            const Transform atA{pair.xfA.p + r.toi * vA, pair.xfA.q};
+            const Transform atB{pair.xfB.p + r.toi * (vA + v), pair.xfB.q};
+            const std::vector<QVec> outlineA = QWorld(pair.a.polygon, atA);
+            const std::vector<QVec> outlineB = QWorld(pair.b.polygon, atB);
+            const double tolerance = 1e-12 * (1.0 + Length(v) + Length(vA) + Length(pair.xfB.p - pair.xfA.p));
+            for (int c = 0; c < r.contactCount; ++c)
+            {
+                const QVec point{r.contacts[c].point.x, r.contacts[c].point.y};
+                const double offA = std::abs(static_cast<double>(SignedDistance(outlineA, point)));
+                const double offB = std::abs(static_cast<double>(SignedDistance(outlineB, point)));
+                maxContactOff = std::max({maxContactOff, offA / tolerance, offB / tolerance});
+                REQUIRE(offA <= tolerance);
+                REQUIRE(offB <= tolerance);
+            }
         }
     }
-    WARN("compared " << compared << " pairs, " << hits << " hits, max |t error| " << maxError);
+    WARN("compared " << compared << " pairs, " << hits << " hits, max |t error| " << maxError
+                     << ", contacts off the outlines by at most " << maxContactOff << " of the tolerance");
     CHECK(compared > 99000);
     CHECK(hits > 20000);
 }
