@@ -108,6 +108,31 @@ Vec2T<S> Select(bool c, Vec2T<S> a, Vec2T<S> b)
     return {Select(c, a.x, b.x), Select(c, a.y, b.y)};
 }
 
+/// Select for a rotation, member by member.
+template <typename S>
+RotT<S> Select(bool c, RotT<S> a, RotT<S> b)
+{
+    return {Select(c, a.c, b.c), Select(c, a.s, b.s)};
+}
+
+/// Select for a transform, member by member.
+template <typename S>
+TransformT<S> Select(bool c, const TransformT<S>& a, const TransformT<S>& b)
+{
+    return {Select(c, a.p, b.p), Select(c, a.q, b.q)};
+}
+
+/// Select between two objects by address, with a mask: a reference chosen by geometric data (which polygon holds
+/// the reference face) is as unpredictable as the data, and a branch the compiler makes of `c ? a : b` is then
+/// mispredicted about half of the time.
+template <typename T>
+const T& SelectRef(bool c, const T& a, const T& b)
+{
+    const uintptr_t mask = uintptr_t(0) - uintptr_t(c);
+    const uintptr_t address = (reinterpret_cast<uintptr_t>(&a) & mask) | (reinterpret_cast<uintptr_t>(&b) & ~mask);
+    return *reinterpret_cast<const T*>(address);
+}
+
 /// Walks forward from `start` to the support vertex of `polygon` in direction `d` (polygon frame): while edge j
 /// climbs along d, step to its end. Valid when the support lies ahead of `start` by less than half a turn, which
 /// holds when d rotates counter-clockwise from the direction whose support `start` was. Deciding on the sign of
@@ -1962,10 +1987,10 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
 
     // Reference face: B's only when strictly better, so ties (and skipped duplicates) keep A's face.
     const bool flip = queryB.separation > queryA.separation;
-    const PolygonT<S>& ref = flip ? b : a;
-    const IncidentPolygon<S>& inc = flip ? incA : incB;
-    const TransformT<S>& xfRef = flip ? xfB : xfA;
-    const FaceQuery<S>& query = flip ? queryB : queryA;
+    const PolygonT<S>& ref = SelectRef(flip, b, a);
+    const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
+    const TransformT<S>& xfRef = SelectRef(flip, xfB, xfA);
+    const FaceQuery<S>& query = SelectRef(flip, queryB, queryA);
 
     const ClipResult<S> clip =
         ClipIncidentEdge<Tracer::kWide>(ref, query.face, inc, inc.scan ? -1 : query.support, S(0));
@@ -1973,10 +1998,10 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     const ManifoldT<S> manifold{true,
                                 -query.separation,
                                 S(0),
-                                flip ? -worldNormal : worldNormal,
+                                Select(flip, -worldNormal, worldNormal),
                                 {WorldContact(clip, 0, xfRef), WorldContact(clip, 1, xfRef)},
                                 clip.contactCount,
-                                {AxisKind::FaceNormal, flip ? 1 : 0, query.face},
+                                {AxisKind::FaceNormal, Select(flip, 1, 0), query.face},
                                 clip.incidentEdge};
 
     if constexpr (Tracer::kEnabled)

@@ -643,16 +643,17 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     const S first = state.first;
     const AxisRef firstAxis{AxisKind::FaceNormal, state.firstSide, state.firstFace};
     const bool flip = firstAxis.shape == 1;
-    const PolygonT<S>& ref = flip ? b : a;
+    // Which polygon holds the reference face follows the geometry: every choice on it is a mask, not a branch.
+    const PolygonT<S>& ref = SelectRef(flip, b, a);
     if constexpr (!kContacts)
     {
         // The same normal as below: translation leaves the reference polygon's rotation as it was.
-        const Vec2T<S> worldNormal = Rotate((flip ? xfB : xfA).q, ref.Normal(firstAxis.index));
-        return {SweepStatus::Hit, first, flip ? -worldNormal : worldNormal, {}, 0, firstAxis, {}};
+        const Vec2T<S> worldNormal = Rotate(Select(flip, xfB.q, xfA.q), ref.Normal(firstAxis.index));
+        return {SweepStatus::Hit, first, Select(flip, -worldNormal, worldNormal), {}, 0, firstAxis, {}};
     }
-    const IncidentPolygon<S>& inc = flip ? incA : incB;
-    const Vec2T<S> shift = first * (flip ? -velocityInB : velocityInA);
-    const TransformT<S> xfRef = flip ? Moved(xfB, vB, first) : Moved(xfA, vA, first);
+    const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
+    const Vec2T<S> shift = first * Select(flip, -velocityInB, velocityInA);
+    const TransformT<S> xfRef = Moved(Select(flip, xfB, xfA), Select(flip, vB, vA), first);
     const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(firstAxis.index));
     // At the time of impact the touching points are at zero distance up to rounding of either sign, which scales
     // with the coordinates in the reference frame: the offset between the frames and the face's own size (its
@@ -667,7 +668,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     // Every member written once, so the result is not first cleared whole.
     return {SweepStatus::Hit,
             first,
-            flip ? -worldNormal : worldNormal,
+            Select(flip, -worldNormal, worldNormal),
             {WorldContact(clip, 0, xfRef), WorldContact(clip, 1, xfRef)},
             clip.contactCount,
             firstAxis,
