@@ -40,8 +40,10 @@
 //   Overlap and Collide run in O(n + m) for polygons of n and m vertices: the support point of one polygon turns
 //   with the normals of the other, so it is walked forward, not searched for each axis. Overlap of large polygons
 //   tests only the faces that see one point of the other polygon (the others cannot separate): a bisection finds
-//   them, so a pair whose point lies inside costs O(log n + log m). No heap allocation per query. Faces of B exactly anti-parallel to a face of A repeat that face's test and are skipped (two aligned
-//   boxes test 2 axes, four faces of A; two rotated boxes 4 axes).
+//   them, so a pair whose point lies inside costs O(log n + log m). No heap allocation per query. Faces of B
+//   exactly anti-parallel to a face of A lie on an axis already tested and are skipped; a face test is one side of
+//   an axis, so an axis is two face tests (two aligned boxes: 2 axes, the four faces of A; two rotated boxes:
+//   4 axes, all eight faces).
 //
 // REFERENCES
 //   C. Ericson, Real-Time Collision Detection, Morgan Kaufmann 2005, chapter 5.
