@@ -84,7 +84,6 @@ RayHitT<S> Finish(RayHitT<S> out, bool inside, S enter, S leave, int face, const
 ///      t = 0: a miss when that span is empty, behind the start (enter < 0) or beyond p2 (enter > 1).
 ///   4. Polygons above kRayScanLimit vertices: the line through the segment crosses the outline at most twice, and
 ///      where it does is found by bisection (CrossingFace) instead of a pass over every face: O(log n).
-
 template <typename S>
 RayHitT<S> RayCast(const PolygonT<S>& polygon, const TransformT<S>& xf, Vec2T<S> p1, Vec2T<S> p2)
 {

@@ -424,9 +424,8 @@ class WalkedEvaluation
 // Visits the faces of ref in blocks of four with the bounds a witness w (a point of inc) gives: per face, its
 // distance d = Dot(n, w - v_i) bounds the separation s from above (s <= d), and r = Dot(n, velocity) is the rate.
 // `select(d, r)` returns the lanes to evaluate exactly (face `always` is evaluated in any case), which `evaluation`
-// takes in face order; the witness of each
-// block is the support point of the last face evaluated (it turns with the faces, so it bounds the next ones
-// tightly), or `witness` before the first. True when an axis ends the test.
+// takes in face order; the witness of each block is the support point of the last face evaluated (it turns with the
+// faces, so it bounds the next ones tightly), or `witness` before the first. True when an axis ends the test.
 template <typename L, typename S, typename Select>
 bool VisitBounds(const PolygonT<S>& ref, Vec2T<S> witness, Vec2T<S> velocity, Select&& select,
                  WalkedEvaluation<L, S>& evaluation, int always = -1)
