@@ -720,25 +720,23 @@ class Painter
                 ClipPlanes(study_.trace.clip);
             }
         }
-        // Two contacts closer on screen than a label is wide share one label, placed between them.
-        const bool together = count == 2 && std::hypot(At(points[0].point).x - At(points[1].point).x,
-                                                       At(points[0].point).y - At(points[1].point).y) < 16.0f;
+        ScreenPoint screen[2] = {};
         for (int i = 0; i < count; ++i)
         {
-            const ScreenPoint p = At(points[i].point);
-            canvas_.FillCircle(p, 5.5f, palette::kResult);
-            canvas_.Circle(p, 5.5f, palette::kBackground, 1.5f);
-            if (!together)
-            {
-                labels_.Place(p, "c" + std::to_string(i + 1), TextStyle::Label, palette::kResult, 1.0f, -1.0f);
-            }
+            screen[i] = At(points[i].point);
+            canvas_.FillCircle(screen[i], 5.5f, palette::kResult);
+            canvas_.Circle(screen[i], 5.5f, palette::kBackground, 1.5f);
         }
-        if (together)
+        // Two contacts closer on screen than a label is wide share one label, placed between them.
+        if (count == 2 && std::hypot(screen[0].x - screen[1].x, screen[0].y - screen[1].y) < 16.0f)
         {
-            const ScreenPoint a = At(points[0].point);
-            const ScreenPoint b = At(points[1].point);
-            labels_.Place({0.5f * (a.x + b.x), 0.5f * (a.y + b.y)}, "c1, c2", TextStyle::Label, palette::kResult, 1.0f,
-                          -1.0f);
+            const ScreenPoint middle{0.5f * (screen[0].x + screen[1].x), 0.5f * (screen[0].y + screen[1].y)};
+            labels_.Place(middle, "c1, c2", TextStyle::Label, palette::kResult, 1.0f, -1.0f);
+            return;
+        }
+        for (int i = 0; i < count; ++i)
+        {
+            labels_.Place(screen[i], "c" + std::to_string(i + 1), TextStyle::Label, palette::kResult, 1.0f, -1.0f);
         }
     }
 
