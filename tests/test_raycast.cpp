@@ -3,6 +3,7 @@
 // quadratic in __float128 for circles.
 #include "support/random_shapes.h"
 #include "support/reference.h"
+#include "support/reference_ray.h"
 
 #include <satviz/sat.h>
 
@@ -15,59 +16,6 @@ using namespace satviz::testing;
 
 namespace
 {
-
-struct ReferenceRay
-{
-    bool inside = false; ///< p1 inside or on the shape
-    bool hit = false;    ///< the segment meets the shape
-    Quad enter = 0;      ///< entry fraction when hit and not inside
-    Quad margin = 0;     ///< how far from a change of answer (grazing, ending at the surface, starting on it)
-};
-
-ReferenceRay ReferencePolygonRay(const Polygon& polygon, const Transform& xf, Vec2 p1, Vec2 p2)
-{
-    const std::vector<QVec> w = QWorld(polygon, xf);
-    const QVec q{Quad(p1.x), Quad(p1.y)};
-    const QVec d{Quad(p2.x) - Quad(p1.x), Quad(p2.y) - Quad(p1.y)};
-    Quad enter = -1e300;
-    Quad leave = 1e300;
-    bool inside = true;
-    Quad nearest = 1e300; // smallest |s| / |n| over faces: how close p1 is to a face line
-    for (size_t i = 0; i < w.size(); ++i)
-    {
-        const QVec e = w[(i + 1) % w.size()] - w[i];
-        const QVec n{e.y, -e.x};
-        const Quad length = sqrtq(QDot(n, n));
-        const Quad s = QDot(n, q - w[i]) / length;
-        const Quad rate = QDot(n, d) / length;
-        inside = inside && s <= 0;
-        nearest = std::min(nearest, fabsq(s));
-        if (rate == 0)
-        {
-            if (s > 0)
-            {
-                enter = 1e300; // never enters
-            }
-            continue;
-        }
-        const Quad t = -s / rate;
-        if (rate < 0)
-        {
-            enter = std::max(enter, t);
-        }
-        else
-        {
-            leave = std::min(leave, t);
-        }
-    }
-    ReferenceRay out;
-    out.inside = inside;
-    out.hit = inside || (enter <= leave && enter <= 1 && enter >= 0);
-    out.enter = enter;
-    const Quad span = sqrtq(QDot(d, d));
-    out.margin = std::min({nearest, fabsq(leave - enter) * span, fabsq(1 - enter) * span});
-    return out;
-}
 
 double Scale(const Polygon& polygon)
 {

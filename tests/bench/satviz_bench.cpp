@@ -13,6 +13,7 @@
 
 #include "support/random_shapes.h"
 #include "support/reference.h"
+#include "support/reference_ray.h"
 #include "textbook_sat.h"
 
 // White-box: the benchmark instantiates the algorithm with some of its choices turned off (the variants).
@@ -68,6 +69,7 @@ extern "C" void cpMessage(const char* condition, const char* file, int line, int
 #include <numeric>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace satviz;
@@ -317,11 +319,12 @@ b2Transform ToBox2D(const Transform& xf)
     return out;
 }
 
-// Penetration depth from a Box2D manifold: minus the smallest separation of its world points.
-double Box2DDepth(const b2Manifold& manifold, const BenchPair& p, double normal[2])
+// Penetration depth from a Box2D manifold: minus the smallest separation of its world points (`radius`: the skin
+// of both polygons, which the separations include).
+double Box2DDepth(const b2Manifold& manifold, const BenchPair& p, double normal[2], float radius = 0.0f)
 {
     b2WorldManifold world;
-    world.Initialize(&manifold, p.bxfA, 0.0f, p.bxfB, 0.0f);
+    world.Initialize(&manifold, p.bxfA, radius, p.bxfB, radius);
     normal[0] = world.normal.x;
     normal[1] = world.normal.y;
     float smallest = 1e30f;
@@ -919,6 +922,19 @@ std::string CsvName(std::string name)
     return name;
 }
 
+// The median and the largest of a list of errors as two CSV fields, empty for none.
+void CsvFigures(std::ostream& out, const std::vector<double>& v)
+{
+    if (!v.empty())
+    {
+        out << Median(v) << ',' << *std::max_element(v.begin(), v.end());
+    }
+    else
+    {
+        out << ',';
+    }
+}
+
 // Wrong answers within this distance of touching (reference separation) are counted apart: a band where the
 // rounding of the input itself may decide.
 constexpr double kBand = 1e-12;
@@ -934,6 +950,8 @@ struct Accuracy
     std::vector<double> depthErrors;
     std::vector<double> angleErrors;    // angle between the normal and the reference's, radians
     std::vector<double> relativeErrors; // depth errors over the pair's coordinate scale, max(1, |position|)
+    std::vector<double> signedErrors;   // sweeps: t - reference t (Box2D stops short of contact: negative)
+    int failures = 0;                   // sweeps: the library's own failure state (b2TOIOutput::e_failed)
 };
 
 // The angle between two directions, in radians (0 to pi), from their cross and dot products.
@@ -968,7 +986,11 @@ void Record(Accuracy& acc, bool answer, const Reference& ref, double depth, bool
     }
 }
 
-void RecordSweep(Accuracy& acc, bool hit, double t, bool refHit, double refT)
+// One sweep answer against the reference. Besides |t error|, the relative error is the distance the error in t
+// moves the shapes along the contact normal (|t error| times the closing speed `rate` along it), over the pair's
+// scale: the backward error, which input rounding alone bounds, where |t error| itself grows without bound as the
+// motion turns parallel to the face.
+void RecordSweep(Accuracy& acc, bool hit, double t, bool refHit, double refT, double rate = 0.0, double scale = 1.0)
 {
     acc.sweep = true;
     acc.pairs += 1;
@@ -980,12 +1002,45 @@ void RecordSweep(Accuracy& acc, bool hit, double t, bool refHit, double refT)
     }
     else if (hit)
     {
+        acc.signedErrors.push_back(t - refT);
         acc.depthErrors.push_back(std::abs(t - refT));
+        acc.relativeErrors.push_back(acc.depthErrors.back() * std::abs(rate) / scale);
+    }
+}
+
+// One segment cast against the reference: hit or not (a wrong answer counts outside the band when the segment is
+// farther than kBand from grazing, ending on or starting on the outline), and on hits both call entering from
+// outside, the error of the entry point along the segment, and the normal's angle. The relative error is, as for
+// sweeps, the backward error: the entry point's error along the face normal (the error along the segment times
+// the cosine between segment and normal), over the pair's scale.
+void RecordRay(Accuracy& acc, bool hit, bool startsInside, double fraction, const double normal[2],
+               const ReferenceRay& ref, Vec2 segment, double scale)
+{
+    acc.pairs += 1;
+    if (hit != ref.hit || (hit && startsInside != ref.inside))
+    {
+        acc.wrong += 1;
+        (hit ? acc.falsePositives : acc.falseNegatives) += hit != ref.hit ? 1 : 0;
+        if (static_cast<double>(ref.margin) >= kBand)
+        {
+            acc.wrongOutsideBand += 1;
+        }
+        return;
+    }
+    if (hit && !startsInside)
+    {
+        const double error = std::abs(fraction - static_cast<double>(ref.enter));
+        acc.depthErrors.push_back(error * Length(segment));
+        const double closing =
+            static_cast<double>(ref.normal.x) * segment.x + static_cast<double>(ref.normal.y) * segment.y;
+        acc.relativeErrors.push_back(error * std::abs(closing) / scale);
+        acc.angleErrors.push_back(
+            AngleBetween(normal[0], normal[1], static_cast<double>(ref.normal.x), static_cast<double>(ref.normal.y)));
     }
 }
 
 // Every query's answer on one pair of n-gons, recorded against the reference.
-void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n)
+void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n, Rng& rng)
 {
     const Reference ref = ReferenceCollide(p.sa, p.xfA, p.sb, p.xfB);
     Record(acc["satviz Overlap"], Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB), ref, 0.0, false);
@@ -999,6 +1054,35 @@ void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n)
     const ManifoldT<float> mf = Collide(p.fa, p.fxfA, p.fb, p.fxfB);
     const double normalFloat[2] = {mf.normal.x, mf.normal.y};
     Record(acc["satviz Collide float"], mf.overlap, ref, mf.depth, true, normalFloat, scale);
+    // The variants, each with one of the algorithm's choices turned off: the same answers, or the cost of a choice
+    // in accuracy would show here.
+    const SatvizRecord record{p.sa, p.sb, p.xfA, p.xfB, p.velocity, {}, {}};
+    Record(acc["satviz Overlap, no early exit"], OverlapVariant<NoEarlyExit>(record) != 0.0, ref, 0.0, false);
+    Record(acc["satviz Overlap, no parallel skip"], OverlapVariant<NoParallelSkip>(record) != 0.0, ref, 0.0, false);
+    Record(acc["satviz Overlap, with pruning"], OverlapVariant<WithPruning>(record) != 0.0, ref, 0.0, false);
+    Record(acc["satviz Overlap, walk only"], OverlapVariant<WalkOnly>(record) != 0.0, ref, 0.0, false);
+    Record(acc["satviz Overlap, walked unpruned"], OverlapVariant<NoWalkedPruning>(record) != 0.0, ref, 0.0, false);
+    const auto collideVariant = [&](const char* name, auto variant) {
+        const Manifold mv = detail::CollidePolygons(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, variant);
+        const double normalV[2] = {mv.normal.x, mv.normal.y};
+        Record(acc[name], mv.overlap, ref, mv.depth, true, normalV, scale);
+    };
+    collideVariant("satviz Collide, no early exit", NoEarlyExit{});
+    collideVariant("satviz Collide, no parallel skip", NoParallelSkip{});
+    collideVariant("satviz Collide, walk only", WalkOnly{});
+    // The cached axis: the moving frames of the timed query, each against its own reference (small polygons: the
+    // reference costs O(n m) per frame).
+    if (n <= 64)
+    {
+        SatCache cache;
+        for (int frame = 0; frame < kFrames; ++frame)
+        {
+            const Transform xfB{p.xfB.p + (0.005 * frame) * LeftPerp(p.velocity), p.xfB.q};
+            const Reference moved = ReferenceCollide(p.sa, p.xfA, p.sb, xfB);
+            Record(acc["satviz Overlap, moving, cached axis"], Overlap(p.sa.polygon, p.xfA, p.sb.polygon, xfB, cache),
+                   moved, 0.0, false);
+        }
+    }
     Record(acc["textbook Overlap"], bench::TextbookOverlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB), ref, 0.0, false);
     Vec2 textbookNormal;
     const double textbookDepth = bench::TextbookMtv(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, textbookNormal);
@@ -1009,18 +1093,60 @@ void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n)
     SweepReference sr;
     bool refHit = false;
     double refT = 0.0;
+    double rate = 0.0;
     if (sweepRef)
     {
         sr = ReferenceSweep(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
         refHit = sr.insideAtStart || (sr.crosses && sr.enter <= 1 && sr.leave > 0);
         refT = sr.insideAtStart ? 0.0 : std::max(0.0, static_cast<double>(sr.enter));
         const SweepResult sw = Sweep(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity);
-        RecordSweep(acc["satviz Sweep"], sw.status != SweepStatus::Miss, sw.toi, refHit, refT);
+        // The closing speed along the contact normal, for the backward error (the double normal is exact to
+        // rounding).
+        rate = Dot(sw.normal, p.velocity);
+        RecordSweep(acc["satviz Sweep"], sw.status != SweepStatus::Miss, sw.toi, refHit, refT, rate, scale);
+        const SweepResult swTime = SweepTime(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity);
+        RecordSweep(acc["satviz SweepTime"], swTime.status != SweepStatus::Miss, swTime.toi, refHit, refT, rate, scale);
         const SweepResultT<float> swFloat =
             Sweep(MakeShape(p.fa), p.fxfA, Vec2T<float>{}, MakeShape(p.fb), p.fxfB, ConvertVec<float>(p.velocity));
-        RecordSweep(acc["satviz Sweep float"], swFloat.status != SweepStatus::Miss, swFloat.toi, refHit, refT);
+        RecordSweep(acc["satviz Sweep float"], swFloat.status != SweepStatus::Miss, swFloat.toi, refHit, refT, rate,
+                    scale);
         const double textbookT = bench::TextbookToi(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, p.velocity);
-        RecordSweep(acc["textbook TOI"], textbookT >= 0.0, textbookT, refHit, refT);
+        RecordSweep(acc["textbook TOI"], textbookT >= 0.0, textbookT, refHit, refT, rate, scale);
+    }
+    // Segment casts at A: the timed one (from behind B's centroid to A's), and one aimed past a vertex of A by up
+    // to a tenth of A's size either side, which grazes, hits near a corner or misses.
+    Vec2 rayFrom;
+    Vec2 rayTo;
+    RaySegment(p.sa, p.xfA, p.sb, p.xfB, p.velocity, rayFrom, rayTo);
+    const Vec2 corner = TransformPoint(p.xfA, p.sa.polygon.vertices[static_cast<size_t>(rng.Int(0, n - 1))]);
+    const Vec2 past = corner + (Radius(p.sa.polygon) * rng.Uniform(-0.1, 0.1)) * Normalize(LeftPerp(corner - rayFrom));
+    const Vec2 rays[2][2] = {{rayFrom, rayTo}, {rayFrom, rayFrom + 1.5 * (past - rayFrom)}};
+    for (const auto& ray : rays)
+    {
+        const ReferenceRay refRay = ReferencePolygonRay(p.sa.polygon, p.xfA, ray[0], ray[1]);
+        const Vec2 segment = ray[1] - ray[0];
+        const RayHit hit = RayCast(p.sa.polygon, p.xfA, ray[0], ray[1]);
+        const double hitNormal[2] = {hit.normal.x, hit.normal.y};
+        RecordRay(acc["satviz RayCast"], hit.hit, hit.startsInside, hit.fraction, hitNormal, refRay, segment, scale);
+        const RayHitT<float> hitFloat = RayCast(p.fa, p.fxfA, ConvertVec<float>(ray[0]), ConvertVec<float>(ray[1]));
+        const double floatNormal[2] = {hitFloat.normal.x, hitFloat.normal.y};
+        RecordRay(acc["satviz RayCast float"], hitFloat.hit, hitFloat.startsInside, hitFloat.fraction, floatNormal,
+                  refRay, segment, scale);
+#ifdef SATVIZ_HAVE_BOX2D
+        // Box2D reports no hit for a segment that starts inside: such segments are left out of its row.
+        if (n <= b2_maxPolygonVertices && !refRay.inside)
+        {
+            b2RayCastInput input;
+            input.p1.Set(static_cast<float>(ray[0].x), static_cast<float>(ray[0].y));
+            input.p2.Set(static_cast<float>(ray[1].x), static_cast<float>(ray[1].y));
+            input.maxFraction = 1.0f;
+            b2RayCastOutput output;
+            const bool box2dHit = p.ba.RayCast(&output, input, p.bxfA, 0);
+            const double box2dNormal[2] = {output.normal.x, output.normal.y};
+            RecordRay(acc["box2d b2PolygonShape::RayCast"], box2dHit, false, output.fraction, box2dNormal, refRay,
+                      segment, scale);
+        }
+#endif
     }
 #ifdef SATVIZ_HAVE_CHIPMUNK
     {
@@ -1040,16 +1166,39 @@ void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n)
         b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
         double box2dNormal[2] = {0.0, 0.0};
         const double box2dDepth = manifold.pointCount > 0 ? Box2DDepth(manifold, p, box2dNormal) : 0.0;
-        Record(acc["box2d b2CollidePolygons"], manifold.pointCount > 0, ref, box2dDepth, true, box2dNormal);
+        Record(acc["box2d b2CollidePolygons"], manifold.pointCount > 0, ref, box2dDepth, true, box2dNormal, scale);
         if (sweepRef)
         {
             b2TOIOutput output;
             b2TimeOfImpact(&output, &Box2DTOIInput(p, p.ba, p.bb));
             const bool hit = output.state == b2TOIOutput::e_touching || output.state == b2TOIOutput::e_overlapped ||
                              output.state == b2TOIOutput::e_failed;
-            RecordSweep(acc["box2d b2TimeOfImpact"], hit,
-                        output.state == b2TOIOutput::e_overlapped ? 0.0 : static_cast<double>(output.t), refHit, refT);
+            Accuracy& box2dToi = acc["box2d b2TimeOfImpact"];
+            RecordSweep(box2dToi, hit, output.state == b2TOIOutput::e_overlapped ? 0.0 : static_cast<double>(output.t),
+                        refHit, refT, rate, scale);
+            box2dToi.failures += output.state == b2TOIOutput::e_failed ? 1 : 0;
         }
+        // The quirks of peer-benchmark.md shown, not handled: Box2D's default skin (every pair closer than 0.02
+        // overlaps, depths 0.02 too large), and a floating origin (the pair moved in double so A's first vertex is
+        // at the origin before it becomes float).
+        b2PolygonShape skinA = p.ba;
+        b2PolygonShape skinB = p.bb;
+        skinA.m_radius = b2_polygonRadius;
+        skinB.m_radius = b2_polygonRadius;
+        Record(acc["box2d+skin b2TestOverlap"], b2TestOverlap(&skinA, 0, &skinB, 0, p.bxfA, p.bxfB), ref, 0.0, false);
+        b2CollidePolygons(&manifold, &skinA, p.bxfA, &skinB, p.bxfB);
+        const double skinDepth = manifold.pointCount > 0 ? Box2DDepth(manifold, p, box2dNormal, b2_polygonRadius) : 0.0;
+        Record(acc["box2d+skin b2CollidePolygons"], manifold.pointCount > 0, ref, skinDepth, true, box2dNormal, scale);
+        BenchPair recentred = p;
+        const Vec2 origin = TransformPoint(p.xfA, p.sa.polygon.vertices[0]);
+        recentred.bxfA = ToBox2D(Transform{p.xfA.p - origin, p.xfA.q});
+        recentred.bxfB = ToBox2D(Transform{p.xfB.p - origin, p.xfB.q});
+        Record(acc["box2d+recenter b2TestOverlap"], b2TestOverlap(&p.ba, 0, &p.bb, 0, recentred.bxfA, recentred.bxfB),
+               ref, 0.0, false);
+        b2CollidePolygons(&manifold, &p.ba, recentred.bxfA, &p.bb, recentred.bxfB);
+        const double recentredDepth = manifold.pointCount > 0 ? Box2DDepth(manifold, recentred, box2dNormal) : 0.0;
+        Record(acc["box2d+recenter b2CollidePolygons"], manifold.pointCount > 0, ref, recentredDepth, true, box2dNormal,
+               scale);
     }
 #endif
 }
@@ -1063,7 +1212,7 @@ std::map<std::string, Accuracy> MeasureAccuracy(const Settings& s, const std::ve
             n >= 1024 ? std::max(1, s.accuracyPairs / 300) : (n >= 64 ? s.accuracyPairs / 10 : s.accuracyPairs);
         for (const BenchPair& p : MakePool(rng, n, count))
         {
-            RecordPair(acc, p, n);
+            RecordPair(acc, p, n, rng);
         }
     }
     return acc;
@@ -1107,11 +1256,67 @@ std::vector<std::map<std::string, Accuracy>> MeasureByCategory(const Settings& s
         {
             for (const BenchPair& p : MakeCategoryPool(rng, n, s.accuracyPairs / 6, static_cast<int>(c)))
             {
-                RecordPair(byCategory[c], p, n);
+                RecordPair(byCategory[c], p, n, rng);
             }
         }
     }
     return byCategory;
+}
+
+// The machine, the build and the command line, so that a results file says where its figures come from.
+void PrintMachine(int argc, char** argv)
+{
+    std::string cpu = "unknown CPU";
+    std::string model;
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    for (std::string line; std::getline(cpuinfo, line);)
+    {
+        const auto field = [&line](const char* key) {
+            return line.rfind(key, 0) == 0 && line.find(':') != std::string::npos ? line.substr(line.find(':') + 2)
+                                                                                  : std::string();
+        };
+        if (const std::string name = field("model name"); !name.empty())
+        {
+            cpu = name;
+        }
+        if (const std::string family = field("cpu family"); !family.empty() && model.empty())
+        {
+            model = "family " + family;
+        }
+        if (const std::string number = field("model\t"); !number.empty() && model.find("model") == std::string::npos)
+        {
+            model += ", model " + number;
+        }
+        if (line.empty() && !model.empty())
+        {
+            break;
+        }
+    }
+    std::printf("machine: %s (%s), %u logical CPUs\n", cpu.c_str(), model.c_str(), std::thread::hardware_concurrency());
+    std::printf("build: GCC %s, %s; satviz %s\n", __VERSION__, SATVIZ_BENCH_FLAGS,
+#if SATVIZ_WIDE
+                "with its AVX2/AVX-512 paths chosen at run time"
+#else
+                "without wide paths"
+#endif
+    );
+#ifdef SATVIZ_HAVE_BOX2D
+    // The package's version (2.4.1 reports b2_version 2.4.0).
+    std::printf("peers: Box2D %s", SATVIZ_BOX2D_VERSION);
+#else
+    std::printf("peers: no Box2D");
+#endif
+#ifdef SATVIZ_HAVE_CHIPMUNK
+    std::printf(", Chipmunk %s\n", cpVersionString);
+#else
+    std::printf(", no Chipmunk\n");
+#endif
+    std::printf("command:");
+    for (int i = 0; i < argc; ++i)
+    {
+        std::printf(" %s", i == 0 ? "satviz-bench" : argv[i]);
+    }
+    std::printf("\n\n");
 }
 
 } // namespace
@@ -1137,6 +1342,7 @@ int main(int argc, char** argv)
         s.accuracyPairs = 300;
     }
 
+    PrintMachine(argc, argv);
     Rng rng(s.seed);
     const std::vector<Query> queries = Queries();
     std::map<int, Timing> timings;
@@ -1155,7 +1361,7 @@ int main(int argc, char** argv)
                 s.rounds, s.reps, s.pairs);
     std::printf("(mix of overlapping, touching within 1e-9 and separated pairs; both polygons have n vertices;\n"
                 " sweeps: the pairs that start apart, B moving roughly towards A, sometimes missing)\n\n");
-    std::printf("%-26s", "query");
+    std::printf("%-36s", "query");
     for (int n : s.counts)
     {
         std::printf(" %9s", ("n=" + std::to_string(n)).c_str());
@@ -1163,7 +1369,7 @@ int main(int argc, char** argv)
     std::printf("\n");
     for (const Query& q : queries)
     {
-        std::printf("%-26s", q.name.c_str());
+        std::printf("%-36s", q.name.c_str());
         for (int n : s.counts)
         {
             const auto it = ns[n].find(q.name);
@@ -1245,7 +1451,7 @@ int main(int argc, char** argv)
     std::printf("\nscaling with the vertex count (time / time at n=8)\n");
     for (const char* name : {"satviz Overlap", "satviz Collide", "satviz Sweep", "satviz SweepTime", "satviz RayCast"})
     {
-        std::printf("%-26s", name);
+        std::printf("%-36s", name);
         for (int n : s.counts)
         {
             const bool have = ns[n].count(name) && ns[8].count(name);
@@ -1258,33 +1464,46 @@ int main(int argc, char** argv)
     std::printf("\naccuracy against the __float128 reference (all vertex counts; box2d: n <= 8)\n");
     std::printf("(errors: |depth error| for the static queries, |t error| for the sweeps, on pairs both call a hit;\n"
                 " box2d b2TimeOfImpact stops 0.005 short of contact by design, so its t is early)\n");
-    std::printf("%-26s %7s %14s %12s %12s\n", "query", "pairs", "wrong (fp,fn)", "error med", "error max");
+    std::printf("%-36s %7s %14s %12s %12s\n", "query", "pairs", "wrong (fp,fn)", "error med", "error max");
     for (const auto& [name, a] : acc)
     {
         std::string wrong = std::to_string(a.wrong) + " (" + std::to_string(a.falsePositives) + "," +
                             std::to_string(a.falseNegatives) + ")";
         if (a.depthErrors.empty())
         {
-            std::printf("%-26s %7d %14s %12s %12s\n", name.c_str(), a.pairs, wrong.c_str(), "-", "-");
+            std::printf("%-36s %7d %14s %12s %12s\n", name.c_str(), a.pairs, wrong.c_str(), "-", "-");
         }
         else
         {
-            std::printf("%-26s %7d %14s %12.1e %12.1e\n", name.c_str(), a.pairs, wrong.c_str(), Median(a.depthErrors),
+            std::printf("%-36s %7d %14s %12.1e %12.1e\n", name.c_str(), a.pairs, wrong.c_str(), Median(a.depthErrors),
                         *std::max_element(a.depthErrors.begin(), a.depthErrors.end()));
+        }
+    }
+
+    std::printf("\nsweeps: signed t error (t - reference t) on pairs both call a hit, and failure states\n");
+    std::printf("%-36s %7s %12s %12s %9s\n", "query", "hits", "signed med", "signed min", "failures");
+    for (const auto& [name, a] : acc)
+    {
+        if (a.sweep && !a.signedErrors.empty())
+        {
+            std::printf("%-36s %7zu %12.1e %12.1e %9d\n", name.c_str(), a.signedErrors.size(), Median(a.signedErrors),
+                        *std::min_element(a.signedErrors.begin(), a.signedErrors.end()), a.failures);
         }
     }
 
     const std::vector<std::map<std::string, Accuracy>> byCategory = MeasureByCategory(s, rng);
     std::printf("\naccuracy per category (n = 3, 4, 8, 16; box2d: n <= 8; sweeps: pairs that start apart)\n");
     std::printf(
-        "(wrong: all wrong yes/no answers, and those farther than %g from touching; error: |depth error|\n"
-        " or |t error|; angle: of the normal to the reference normal, radians, on pairs both call overlapping)\n",
+        "(wrong: all wrong yes/no answers, and those farther than %g from touching; error: |depth error|,\n"
+        " |t error| or, for ray casts, the distance along the segment; rel. max: the largest error over the pair's\n"
+        " scale, max(1, |position|), for sweeps and ray casts the backward error (the error along the contact\n"
+        " normal); angle: of the normal to the reference normal, radians, on pairs both call overlapping or a hit)\n",
         kBand);
     for (size_t c = 0; c < byCategory.size(); ++c)
     {
         std::printf("\n%s\n", kCategories[c]);
-        std::printf("%-26s %6s %7s %8s %10s %10s %10s %10s\n", "query", "pairs", "wrong", "outside", "error med",
-                    "error max", "angle med", "angle max");
+        std::printf("%-36s %6s %7s %8s %10s %10s %10s %10s %10s\n", "query", "pairs", "wrong", "outside", "error med",
+                    "error max", "rel. max", "angle med", "angle max");
         for (const auto& [name, a] : byCategory[c])
         {
             // A figure of a list of errors, or "-" for none.
@@ -1297,9 +1516,10 @@ int main(int argc, char** argv)
                 std::snprintf(text, sizeof text, "%.1e", largest ? *std::max_element(v.begin(), v.end()) : Median(v));
                 return std::string(text);
             };
-            std::printf("%-26s %6d %7d %8d %10s %10s %10s %10s\n", name.c_str(), a.pairs, a.wrong, a.wrongOutsideBand,
-                        figure(a.depthErrors, false).c_str(), figure(a.depthErrors, true).c_str(),
-                        figure(a.angleErrors, false).c_str(), figure(a.angleErrors, true).c_str());
+            std::printf("%-36s %6d %7d %8d %10s %10s %10s %10s %10s\n", name.c_str(), a.pairs, a.wrong,
+                        a.wrongOutsideBand, figure(a.depthErrors, false).c_str(), figure(a.depthErrors, true).c_str(),
+                        figure(a.relativeErrors, true).c_str(), figure(a.angleErrors, false).c_str(),
+                        figure(a.angleErrors, true).c_str());
         }
     }
 
@@ -1307,26 +1527,23 @@ int main(int argc, char** argv)
     {
         std::filesystem::create_directories(csv);
         std::ofstream byCategoryCsv(std::filesystem::path(csv) / "accuracy_by_category.csv");
-        byCategoryCsv << "category,query,pairs,wrong,wrong_outside_band,error_median,error_max,angle_median,"
-                         "angle_max\n";
+        byCategoryCsv << "category,query,pairs,wrong,wrong_outside_band,error_median,error_max,relative_max,"
+                         "angle_median,angle_max\n";
         for (size_t c = 0; c < byCategory.size(); ++c)
         {
             for (const auto& [name, a] : byCategory[c])
             {
                 byCategoryCsv << CsvName(kCategories[c]) << ',' << CsvName(name) << ',' << a.pairs << ',' << a.wrong
                               << ',' << a.wrongOutsideBand << ',';
-                for (const std::vector<double>* v : {&a.depthErrors, &a.angleErrors})
+                CsvFigures(byCategoryCsv, a.depthErrors);
+                byCategoryCsv << ',';
+                if (!a.relativeErrors.empty())
                 {
-                    if (!v->empty())
-                    {
-                        byCategoryCsv << Median(*v) << ',' << *std::max_element(v->begin(), v->end());
-                    }
-                    else
-                    {
-                        byCategoryCsv << ',';
-                    }
-                    byCategoryCsv << (v == &a.depthErrors ? "," : "\n");
+                    byCategoryCsv << *std::max_element(a.relativeErrors.begin(), a.relativeErrors.end());
                 }
+                byCategoryCsv << ',';
+                CsvFigures(byCategoryCsv, a.angleErrors);
+                byCategoryCsv << '\n';
             }
         }
         std::ofstream timing(std::filesystem::path(csv) / "timing.csv");
@@ -1339,23 +1556,19 @@ int main(int argc, char** argv)
             }
         }
         std::ofstream accuracy(std::filesystem::path(csv) / "accuracy.csv");
-        accuracy << "query,pairs,wrong,false_positives,false_negatives,error_median,error_max,ns_n8\n";
+        accuracy << "query,pairs,wrong,false_positives,false_negatives,error_median,error_max,ns_n8,"
+                    "wrong_outside_band,angle_median,angle_max\n";
         for (const auto& [name, a] : acc)
         {
             accuracy << CsvName(name) << ',' << a.pairs << ',' << a.wrong << ',' << a.falsePositives << ','
                      << a.falseNegatives << ',';
-            if (a.depthErrors.empty())
-            {
-                accuracy << ",";
-            }
-            else
-            {
-                accuracy << Median(a.depthErrors) << ','
-                         << *std::max_element(a.depthErrors.begin(), a.depthErrors.end());
-            }
-            accuracy << ',' << (ns.count(8) && ns[8].count(name) ? ns[8][name] : 0.0) << '\n';
+            CsvFigures(accuracy, a.depthErrors);
+            accuracy << ',' << (ns.count(8) && ns[8].count(name) ? ns[8][name] : 0.0) << ',' << a.wrongOutsideBand
+                     << ',';
+            CsvFigures(accuracy, a.angleErrors);
+            accuracy << '\n';
         }
-        std::printf("\nCSV files written to %s\n", csv.c_str());
+        std::fprintf(stderr, "satviz-bench: CSV files written to %s\n", csv.c_str());
     }
 
 #ifdef SATVIZ_HAVE_CHIPMUNK
@@ -1384,7 +1597,7 @@ int main(int argc, char** argv)
 #else
     std::printf("  (built without Box2D: no peer ratios)\n");
 #endif
-    for (const char* name : {"satviz Overlap", "satviz Collide"})
+    for (const char* name : {"satviz Overlap", "satviz Collide", "satviz Sweep", "satviz SweepTime", "satviz RayCast"})
     {
         if (ns.count(8) && ns.count(1024) && ns[8].count(name) && ns[1024].count(name))
         {
@@ -1403,28 +1616,34 @@ int main(int argc, char** argv)
     }
     // Every category, far from the origin included.
     int wrongOutside = 0;
-    double depthWorst = 0.0;
-    double floatRelative = 0.0;
     for (const auto& category : byCategory)
     {
-        for (const char* name : {"satviz Overlap", "satviz Collide", "satviz Sweep"})
+        for (const char* name : {"satviz Overlap", "satviz Collide", "satviz Sweep", "satviz RayCast"})
         {
             wrongOutside += category.count(name) ? category.at(name).wrongOutsideBand : 0;
         }
-        for (const char* name : {"satviz Collide", "satviz Collide float"})
+    }
+    // The largest relative error of a query over every category. Shapes are of size 0.5 to 1.5 (slivers thinner),
+    // so near the origin the error is relative to a size of 1; far from it, to the magnitude of the positions.
+    const auto worstRelative = [&](const char* name) {
+        double worst = 0.0;
+        for (const auto& category : byCategory)
         {
             if (category.count(name) && !category.at(name).relativeErrors.empty())
             {
-                // Shapes are of size 0.5 to 1.5 (slivers thinner), so near the origin the error is relative to a
-                // size of 1; far from it, to the magnitude of the positions.
                 const auto& e = category.at(name).relativeErrors;
-                double& worst = name == std::string("satviz Collide") ? depthWorst : floatRelative;
                 worst = std::max(worst, *std::max_element(e.begin(), e.end()));
             }
         }
-    }
+        return worst;
+    };
     target("wrong yes/no outside the band (double, every category)", wrongOutside, 0);
-    target("satviz Collide depth error, relative, every category (double)", depthWorst, 1e-14);
-    target("satviz Collide depth error, relative, every category (float)", floatRelative, 1e-5);
+    target("satviz Collide depth error, relative, every category (double)", worstRelative("satviz Collide"), 1e-14);
+    target("satviz Collide depth error, relative, every category (float)", worstRelative("satviz Collide float"), 1e-5);
+    // Sweeps and casts: the backward error (along the contact normal), relative as above.
+    target("satviz Sweep error, relative, every category (float)", worstRelative("satviz Sweep float"), 1e-5);
+    target("satviz RayCast error, relative, every category (float)", worstRelative("satviz RayCast float"), 1e-5);
+    std::printf("  (double, the same measure: Sweep %.3g, RayCast %.3g)\n", worstRelative("satviz Sweep"),
+                worstRelative("satviz RayCast"));
     return 0;
 }
