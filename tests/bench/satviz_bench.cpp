@@ -474,6 +474,13 @@ double OverlapVariant(const SatvizRecord& p)
     return detail::OverlapPolygons(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, variant) ? 1.0 : 0.0;
 }
 
+template <typename Variant>
+double CollideVariant(const SatvizRecord& p)
+{
+    Variant variant;
+    return detail::CollidePolygons(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, variant).depth;
+}
+
 // Frames per moving-pair query: its time is divided by this to give ns per frame.
 constexpr int kFrames = 8;
 
@@ -547,6 +554,10 @@ std::vector<Query> Queries()
         SatvizQuery("satviz Overlap, with pruning", false, OverlapVariant<WithPruning>),
         SatvizQuery("satviz Overlap, walk only", false, OverlapVariant<WalkOnly>),
         SatvizQuery("satviz Overlap, walked unpruned", false, OverlapVariant<NoWalkedPruning>),
+        SatvizQuery("satviz Collide, as compiled here", false, CollideVariant<detail::NullTracer>),
+        SatvizQuery("satviz Collide, no early exit", false, CollideVariant<NoEarlyExit>),
+        SatvizQuery("satviz Collide, no parallel skip", false, CollideVariant<NoParallelSkip>),
+        SatvizQuery("satviz Collide, walk only", false, CollideVariant<WalkOnly>),
         // Frame coherence: pairs that start apart (most of what a broadphase hands over), B moving a little per
         // frame for 8 frames, across the line between them; ns per frame, with and without a cache.
         SatvizQuery("satviz Overlap, moving", true,
@@ -1427,6 +1438,12 @@ int main(int argc, char** argv)
              "satviz Overlap, as compiled here");
     ratioRow("Overlap walking every face / pruned walk", "satviz Overlap, walked unpruned",
              "satviz Overlap, as compiled here");
+    ratioRow("Collide without early exit / Collide", "satviz Collide, no early exit",
+             "satviz Collide, as compiled here");
+    ratioRow("Collide without parallel skip / Collide", "satviz Collide, no parallel skip",
+             "satviz Collide, as compiled here");
+    ratioRow("Collide walking, not scanning / Collide", "satviz Collide, walk only",
+             "satviz Collide, as compiled here");
     ratioRow("moving pairs: cached axis / no cache", "satviz Overlap, moving, cached axis", "satviz Overlap, moving");
     ratioRow("satviz Collide / textbook MTV", "satviz Collide", "textbook MTV");
     ratioRow("satviz Sweep / textbook TOI", "satviz Sweep", "textbook TOI");
