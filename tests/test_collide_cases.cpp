@@ -79,7 +79,7 @@ TEST_CASE("Overlapping boxes: depth, normal from A to B, two contacts", "[cases]
     CHECK(swapped.normal == Vec2{-1.0, 0.0});
 }
 
-TEST_CASE("Touching shapes overlap with depth zero; a hair apart they do not", "[cases]")
+TEST_CASE("Touching shapes overlap with depth zero, a hair apart they do not", "[cases]")
 {
     const Polygon a = Box(1.0, 1.0);
     const Polygon b = Box(1.0, 0.5);

@@ -97,7 +97,7 @@ TEST_CASE("Grazing a corner and sliding along a face are not hits", "[sweep]")
     CHECK(tangent.status == SweepStatus::Miss);
 }
 
-TEST_CASE("Without motion the static test decides; overlapping shapes report their MTV", "[sweep]")
+TEST_CASE("Without motion the static test decides, overlapping shapes report their MTV", "[sweep]")
 {
     const Shape a = BoxShape(1.0, 1.0);
     const Shape b = BoxShape(0.5, 0.5);
@@ -213,7 +213,7 @@ TEST_CASE("Sweep agrees with the Minkowski-difference cast on random moving pair
     CHECK(hits > 20000);
 }
 
-TEST_CASE("Traced and untraced sweeps are bit-identical; the trace follows the entries and exits", "[sweep][trace]")
+TEST_CASE("Traced and untraced sweeps are bit-identical, the trace follows the entries and exits", "[sweep][trace]")
 {
     Rng rng(77);
     SweepTrace trace;

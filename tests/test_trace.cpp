@@ -102,7 +102,7 @@ TEST_CASE("Trace invariants hold on random pairs", "[trace][properties]")
     }
 }
 
-TEST_CASE("Overlap of polygons above 8 vertices stops when a vertex of B lies inside A, and only then skips B's faces; "
+TEST_CASE("Overlap of polygons above 8 vertices stops when a vertex of B lies inside A, and only then skips B's faces, "
           "smaller pairs test both polygons' faces in blocks",
           "[trace][properties]")
 {

@@ -162,7 +162,7 @@ Vec2 Centroid(const Body& body)
 
 } // namespace
 
-TEST_CASE("Dragging a body moves it with the pointer; undo and redo restore each state", "[app]")
+TEST_CASE("Dragging a body moves it with the pointer, undo and redo restore each state", "[app]")
 {
     Harness h(ScratchCopy("overlapping_boxes.json").string());
     const Vec2 before = h.BodyNamed("B").position;
@@ -190,7 +190,7 @@ TEST_CASE("Dragging a body moves it with the pointer; undo and redo restore each
     CHECK(h.app->UndoDepth() == 1);
 }
 
-TEST_CASE("Arrow keys and space step through the trace; edits keep the step where it still exists", "[app]")
+TEST_CASE("Arrow keys and space step through the trace, edits keep the step where it still exists", "[app]")
 {
     Harness h(ScratchCopy("overlapping_boxes.json").string());
     const int verdict = h.app->setup.study.VerdictStep();
@@ -288,7 +288,7 @@ TEST_CASE("Shift-drag turns a body and the velocity handle sets its velocity", "
     CHECK(h.app->setup.study.startsOverlapping);
 }
 
-TEST_CASE("Saving writes the view; the export figure is what satviz-render draws from the saved file", "[app]")
+TEST_CASE("Saving writes the view, the export figure is what satviz-render draws from the saved file", "[app]")
 {
     const fs::path copy = ScratchCopy("overlapping_boxes.json");
     Harness h(copy.string());
@@ -338,7 +338,7 @@ TEST_CASE("Quitting without changes needs no question", "[app]")
     CHECK(h.app->QuitConfirmed());
 }
 
-TEST_CASE("Quitting with unsaved changes asks first; deleting keeps two bodies", "[app]")
+TEST_CASE("Quitting with unsaved changes asks first, deleting keeps two bodies", "[app]")
 {
     Harness edited(ScratchCopy("overlapping_boxes.json").string());
     const ImVec2 from = edited.OnScreen(Centroid(edited.BodyNamed("A")));
