@@ -100,8 +100,12 @@ class SweepRecorder
         axis.earliestExit = index;
         if (index > 0)
         {
+            // Only an axis apart at t = 0 (separation >= 0) has an entry; an overlapping one holds the latest entry
+            // only until an axis with an entry comes, as in the face loops.
             const SweepAxisT<S>& previous = m_trace.axes.back();
-            if (m_trace.axes[previous.latestEntry].entry >= entry)
+            const SweepAxisT<S>& latest = m_trace.axes[previous.latestEntry];
+            const bool latestEnters = latest.separation >= S(0);
+            if ((latestEnters && latest.entry >= entry) || (!latestEnters && !(separation >= S(0))))
             {
                 axis.latestEntry = previous.latestEntry;
             }
@@ -162,35 +166,54 @@ SweepResultT<S> Initial(const ManifoldT<S>& manifold)
 template <typename S>
 struct SweepState
 {
-    S first = S(0);        // latest entry so far
-    S last = kInfinity<S>; // earliest exit so far
-    int firstSide = 0;     // the axis of the latest entry: its polygon
-    int firstFace = 0;     // and its face
-    bool inside = true;    // every separation so far is < 0
+    S first = -kInfinity<S>; // latest entry so far (none yet)
+    S last = kInfinity<S>;   // earliest exit so far
+    int firstSide = 0;       // the axis of the latest entry: its polygon
+    int firstFace = 0;       // and its face
+    bool inside = true;      // every separation so far is < 0
     SweepExit exit = SweepExit::AllAxesOverlap;
 };
 
 // A face's place in the order A's faces, then B's, as a lane value (exact in float up to 2^24).
 constexpr int kSideStride = 1 << 16;
 
+// The rate below which the motion counts as parallel to a face: a few roundings of Dot(n, v) with |n| = 1.
+template <typename S>
+S StillRate(Vec2T<S> velocity)
+{
+    return S(8) * std::numeric_limits<S>::epsilon() * std::max(std::abs(velocity.x), std::abs(velocity.y));
+}
+
+// The rates, with those within `still` of 0 set to 0 (StillRate).
+template <typename L, typename S>
+L Moving(const L& rate, S still)
+{
+    return Select(Max(rate, -rate) > L::Fill(still), rate, L::Fill(S(0)));
+}
+
 // Entry, exit and whether the axis never closes, for four axes at once (the per-axis rule of AxisTimes, without
-// branches). With q = s / -r: s >= 0 enters at q (r < 0) or never (r >= 0); s < 0 is overlapping from t = 0 and,
-// when r > 0, exits at q.
+// branches). A rate within `still` of 0 is 0: the motion runs along the face as far as its rounding can tell, so
+// touching and sliding along a face is no hit. With q = s / -r: s >= 0 enters at q (r < 0) or never (r >= 0);
+// s < 0 is overlapping from t = 0 (no entry: -infinity, so that a face touching at t = 0, whose entry is 0, is the
+// latest entry rather than any overlapping face) and, when r > 0, exits at q.
 template <typename L>
 struct AxisLanes
 {
+    using S = std::decay_t<decltype(std::declval<L>().Get(0))>;
     L entry;
     L leave;
     typename L::Mask apart;
     typename L::Mask never;
 
-    AxisLanes(const L& separation, const L& rate)
+    AxisLanes(const L& separation, const L& rawRate, S still)
     {
         const L zero = L::Fill(0);
+        const L rate = Moving(rawRate, still);
         apart = separation >= zero;
         const L q = separation / -rate;
-        entry = Select(apart, q, zero);
-        leave = Select(~apart & (rate > zero), q, L::Fill(std::numeric_limits<decltype(q.Get(0))>::infinity()));
+        const L infinity = L::Fill(std::numeric_limits<S>::infinity());
+        entry = Select(apart, q, -infinity);
+        leave = Select(~apart & (rate > zero), q, infinity);
         never = apart & (rate >= zero);
     }
 };
@@ -201,7 +224,7 @@ struct AxisLanes
 template <typename L, typename S>
 struct SweepLanes
 {
-    L first = L::Fill(S(0));                       // latest entry so far
+    L first = L::Fill(-kInfinity<S>);              // latest entry so far (none yet)
     L firstIndex = L::Fill(S(0));                  // its face: side * kSideStride + face
     L last = L::Fill(kInfinity<S>);                // earliest exit so far
     typename L::Mask inside = L::Mask::Fill(true); // every separation so far is < 0
@@ -252,8 +275,9 @@ void Replay(Tracer& tracer, SweepState<S>& replay, bool& replayEnded, int side, 
         }
         replay.last = std::min(replay.last, leave);
         replayEnded = never || replay.first > S(1) || replay.first >= replay.last;
-        tracer.Axis(side, i0 + l, separations.Get(l), rates.Get(l), never ? S(0) : entry, never ? kInfinity<S> : leave,
-                    replayEnded);
+        // The trace shows an overlapping axis (no entry) as entering at 0, as its interval overlaps from t = 0.
+        tracer.Axis(side, i0 + l, separations.Get(l), rates.Get(l), never ? S(0) : std::max(entry, S(0)),
+                    never ? kInfinity<S> : leave, replayEnded);
         if (replayEnded)
         {
             replay.exit = never                 ? SweepExit::NeverCloses
@@ -323,7 +347,7 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
             separations = (low - offset) + L::Fill(S(0));
         }
         const L rates = nx * L::Fill(velocity.x) + ny * L::Fill(velocity.y);
-        const AxisLanes<L> axes(separations, rates);
+        const AxisLanes<L> axes(separations, rates, StillRate(velocity));
         // Lane l holds face i0 + l, past the last face too: a lane that repeats the last face ties with that face's
         // own lane, whose smaller index Combine takes.
         ends = lanes.Add(axes, L::Fill(S(side * kSideStride + i0)) + L::Set(S(0), S(1), S(2), S(3)));
@@ -400,7 +424,7 @@ class WalkedEvaluation
         const L faces = L::Set(base + S(m_faces[at(0)]), base + S(m_faces[at(1)]), base + S(m_faces[at(2)]),
                                base + S(m_faces[at(3)]));
         m_count = 0;
-        const bool ends = m_lanes.Add(AxisLanes<L>(separations, rates), faces).Any();
+        const bool ends = m_lanes.Add(AxisLanes<L>(separations, rates, StillRate(m_velocity)), faces).Any();
         m_known = std::max(m_known, m_lanes.first.MaxLane());
         return ends;
     }
@@ -438,7 +462,7 @@ bool VisitBounds(const PolygonT<S>& ref, Vec2T<S> witness, Vec2T<S> velocity, Se
         const Vec2T<S> w = evaluation.Witness(witness);
         const FaceBlock<L, S> block(ref, ref.vertices.data, i0);
         const L distance = block.nx * (L::Fill(w.x) - block.vx) + block.ny * (L::Fill(w.y) - block.vy);
-        const L rate = block.nx * vx + block.ny * vy;
+        const L rate = Moving(block.nx * vx + block.ny * vy, StillRate(velocity));
         int lanes = select(distance, rate).Bits() & (n - i0 >= 4 ? 0xF : (1 << (n - i0)) - 1);
         lanes |= always >= i0 && always < i0 + 4 ? 1 << (always - i0) : 0;
         while (lanes != 0)
@@ -489,7 +513,8 @@ bool SweepWalkedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int
             }
             const L separations = L::Set(separation[0], separation[1], separation[2], separation[3]);
             const L rates = block.nx * L::Fill(velocity.x) + block.ny * L::Fill(velocity.y);
-            Replay(tracer, replay, replayEnded, side, i0, n, separations, rates, AxisLanes<L>(separations, rates));
+            Replay(tracer, replay, replayEnded, side, i0, n, separations, rates,
+                   AxisLanes<L>(separations, rates, StillRate(velocity)));
         }
     }
     const int top = BisectSupport(ref, -velocity);
@@ -500,7 +525,8 @@ bool SweepWalkedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int
     walk.walked = true;
     walk.witness = TransformPoint(inc.xf, inc.polygon.vertices[seedSupport]);
     const S seedSeparation = inc.Separation(seedNormal, ref.vertices[seed], seedSupport);
-    const S seedRate = seedNormal.x * velocity.x + seedNormal.y * velocity.y;
+    const S rawSeedRate = seedNormal.x * velocity.x + seedNormal.y * velocity.y;
+    const S seedRate = std::abs(rawSeedRate) > StillRate(velocity) ? rawSeedRate : S(0);
     if (seedSeparation >= S(0) && seedRate < S(0))
     {
         known = std::max(known, seedSeparation / -seedRate);
@@ -639,7 +665,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
 
     // The incident polygon at the time of impact is its mapping at t = 0 moved by its motion relative to the
     // reference polygon over [0, first], in the reference frame: no polygon is mapped again.
-    const S first = state.first;
+    const S first = state.first + S(0); // a touching start enters at 0 or -0: +0
     const AxisRef firstAxis{AxisKind::FaceNormal, state.firstSide, state.firstFace};
     const bool flip = firstAxis.shape == 1;
     // Which polygon holds the reference face follows the geometry: every choice on it is a mask, not a branch.
@@ -674,20 +700,31 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
             {}};
 }
 
-// First time the point p0 + t v enters the disc of radius r around c, if it starts outside and crosses the
-// circle (a tangent path only touches it): the stable root of |p0 + t v - c|^2 = r^2 (Ericson 5.3.2).
+// First time the point p0 + t v enters the disc of radius r around c, if it crosses the circle (a tangent path
+// only touches it): the stable root of |p0 + t v - c|^2 = r^2 (Ericson 5.3.2). A point on the circle, or inside it
+// by rounding (the caller has ruled out a real overlap), that heads inwards enters at 0; heading along the circle
+// as far as the rounding of b = Dot(p0 - c, v) can tell (StillRate), or on a path tangent to it as far as the
+// rounding of the discriminant can tell (a circle sliding along a face passes over the vertex at its end so), it
+// does not enter.
 template <typename S>
 S EnterDisc(Vec2T<S> p0, Vec2T<S> v, Vec2T<S> c, S r)
 {
     const Vec2T<S> f = p0 - c;
     const S b = Dot(f, v);
     const S outside = Dot(f, f) - r * r;
-    if (outside < S(0) || b >= S(0))
+    const S scale = std::max({std::abs(f.x), std::abs(f.y), r});
+    if (b >= -scale * StillRate(v))
     {
         return kInfinity<S>;
     }
-    const S discriminant = b * b - Dot(v, v) * outside;
-    if (discriminant <= S(0))
+    if (outside <= S(0))
+    {
+        return S(0);
+    }
+    // A path tangent to the circle, as far as the rounding of the discriminant can tell, only touches it.
+    const S speed2 = Dot(v, v);
+    const S discriminant = b * b - speed2 * outside;
+    if (discriminant <= S(16) * std::numeric_limits<S>::epsilon() * (Dot(f, f) + r * r) * speed2)
     {
         return kInfinity<S>;
     }
@@ -703,16 +740,22 @@ template <typename S>
 S CastRounded(const PolygonT<S>& polygon, Vec2T<S> p0, Vec2T<S> v, S r, Vec2T<S>& normal, AxisRef& axis, int side)
 {
     S best = kInfinity<S>;
+    const S still = StillRate(v);
     for (int i = 0; i < polygon.Count(); ++i)
     {
         const Vec2T<S> n = polygon.Normal(i);
         const S separation = Dot(n, p0 - polygon.vertices[i]) - r;
         const S rate = Dot(n, v);
-        if (separation < S(0) || rate >= S(0))
+        // A centre behind the pushed-out face by no more than rounding (touching) that heads in crosses it at 0,
+        // if within the face's extent; one moving along the face (StillRate) never crosses it.
+        const S rounding = S(16) * std::numeric_limits<S>::epsilon() *
+                           std::max({std::abs(p0.x), std::abs(p0.y), std::abs(polygon.vertices[i].x),
+                                     std::abs(polygon.vertices[i].y), r});
+        if (separation < -rounding || rate >= -still)
         {
             continue;
         }
-        const S t = separation / -rate;
+        const S t = std::max(S(0), separation / -rate);
         const Vec2T<S> along = p0 + t * v - polygon.vertices[i];
         const S u = Dot(along, polygon.Edge(i));
         if (t < best && u >= S(0) && u <= LengthSquared(polygon.Edge(i)))
