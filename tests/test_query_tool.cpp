@@ -192,9 +192,43 @@ TEST_CASE("satviz-query reports times of impact for moving pairs", "[query][swee
     CHECK(pairs[0]["toi"].get<double>() == expected.toi);
     CHECK(pairs[0]["toi_normal"][0].get<double>() == expected.normal.x);
     CHECK(pairs[0]["toi_contacts"].size() == static_cast<size_t>(expected.contactCount));
-    // wall-away: moving apart, a miss; wall-still: nothing moves, no sweep fields at all.
+    CHECK(pairs[0]["toi_status"] == "hit");
+    // wall-away: moving apart, a miss, with a null normal and no contacts; wall-still: nothing moves, no sweep
+    // fields at all.
     CHECK(pairs[1]["b"] == "away");
     CHECK(pairs[1]["toi"].is_null());
+    CHECK(pairs[1]["toi_status"] == "miss");
+    CHECK(pairs[1]["toi_normal"].is_null());
+    CHECK(pairs[1]["toi_contacts"].empty());
     CHECK(pairs[2]["b"] == "still");
     CHECK_FALSE(pairs[2].contains("toi"));
+}
+
+TEST_CASE("satviz-query tells a pair that overlaps at the start from one that hits, for circles too", "[query][sweep]")
+{
+    // Two discs of radius 1 at x = 0 and x = 5, the second moving by -4: they touch when 5 - 4 t = 2, t = 3/4,
+    // at x = 1 on the line of centres. Two boxes 1 wide whose centres are 0.5 apart overlap by 0.5 at the start.
+    Write("circles.json", R"({"bodies": [
+        {"name": "P", "circle": {"radius": 1}},
+        {"name": "Q", "circle": {"radius": 1}, "position": [5, 0], "velocity": [-4, 0]}]})");
+    Write("overlapping.json", R"({"bodies": [
+        {"name": "A", "box": [1, 1]},
+        {"name": "B", "box": [1, 1], "position": [0.5, 0], "velocity": [1, 0]}]})");
+    const Run circles = Query("circles.json");
+    REQUIRE(circles.exitCode == 0);
+    const nlohmann::json hit = nlohmann::json::parse(circles.out[0])["pairs"][0];
+    CHECK(hit["toi_status"] == "hit");
+    CHECK(hit["toi"].get<double>() == Approx(0.75).margin(1e-15));
+    CHECK(hit["toi_normal"][0].get<double>() == Approx(1.0).margin(1e-15));
+    CHECK(hit["toi_normal"][1].get<double>() == Approx(0.0).margin(1e-15));
+    REQUIRE(hit["toi_contacts"].size() == 1);
+    CHECK(hit["toi_contacts"][0][0].get<double>() == Approx(1.0).margin(1e-14));
+    const Run overlapping = Query("overlapping.json");
+    REQUIRE(overlapping.exitCode == 0);
+    const nlohmann::json inside = nlohmann::json::parse(overlapping.out[0])["pairs"][0];
+    CHECK(inside["toi_status"] == "overlapping");
+    CHECK(inside["toi"].get<double>() == 0.0);
+    // The static MTV: out along +x (B is to the right of A), by 0.5.
+    CHECK(inside["toi_normal"][0].get<double>() == Approx(1.0).margin(1e-15));
+    CHECK(inside["depth"].get<double>() == Approx(0.5).margin(1e-15));
 }

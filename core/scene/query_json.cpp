@@ -61,7 +61,7 @@ Json ManifoldJson(const std::string& nameA, const std::string& nameB, const Mani
     Json pair = {{"a", nameA}, {"b", nameB}, {"overlap", manifold.overlap}};
     if (manifold.overlap)
     {
-        pair["depth"] = manifold.depth;
+        pair["depth"] = manifold.depth + 0.0; // touching: -0 prints as 0
     }
     else
     {
@@ -148,13 +148,18 @@ Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace)
             if (a.velocity != Vec2{} || b.velocity != Vec2{})
             {
                 const SweepResult sweep = Sweep(a.shape, a.Xf(), a.velocity, b.shape, b.Xf(), b.velocity);
+                pair["toi_status"] = sweep.status == SweepStatus::Miss  ? "miss"
+                                     : sweep.status == SweepStatus::Hit ? "hit"
+                                                                        : "overlapping";
                 if (sweep.status == SweepStatus::Miss)
                 {
                     pair["toi"] = nullptr;
+                    pair["toi_normal"] = nullptr;
+                    pair["toi_contacts"] = Json::array();
                 }
                 else
                 {
-                    pair["toi"] = sweep.toi;
+                    pair["toi"] = sweep.toi + 0.0; // -0 prints as 0
                     pair["toi_normal"] = Pair(sweep.normal);
                     Json contacts = Json::array();
                     const ContactPoint* points =
