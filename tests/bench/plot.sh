@@ -8,57 +8,71 @@ mkdir -p "$out"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# One data file per query for the vertex-count plot: n ns.
-queries=()
-while IFS= read -r query; do queries+=("$query"); done < <(tail -n +2 "$csv/timing.csv" | cut -d, -f1 | sort -u |
-  grep -v -E "traced|float|Sweep|TOI|b2TimeOfImpact|;")
-# A colour of its own for every query, and a dash pattern per library: solid satviz, dashed Box2D, dotted
-# Chipmunk, dash-dot textbook.
-palette=(e41a1c 377eb8 4daf4a 984ea3 ff7f00 a65628 f781bf 17becf 999999 000000 bcbd22 1f3a93)
-plots=""
-i=0
-for query in "${queries[@]}"; do
-  i=$((i + 1))
-  grep -F "$query," "$csv/timing.csv" | awk -F, -v q="$query" '$1 == q { print $2, $3 }' | sort -n > "$work/q$i.dat"
-  case "$query" in
-    box2d*) dash=2 ;;
-    chipmunk*) dash=3 ;;
-    textbook*) dash=4 ;;
-    *) dash=1 ;;
-  esac
-  colour=${palette[$(((i - 1) % ${#palette[@]}))]}
-  plots+="'$work/q$i.dat' using 1:2 with linespoints lw 2 dt $dash pt 7 lc rgb '#$colour' title '$query', "
-done
+# A colour of its own for every query of a panel, and a dash pattern per library: solid satviz, dashed Box2D,
+# dotted Chipmunk, dash-dot textbook.
+palette=(e41a1c 377eb8 4daf4a 984ea3 ff7f00 a65628 f781bf 17becf 999999 000000 bcbd22 1f3a93 8c564b 2ca02c)
+
+# The gnuplot plot list of one panel of the vertex-count plot: one line per query named in the arguments.
+panel() {
+  local prefix=$1 plots="" i=0 query
+  shift
+  for query in "$@"; do
+    i=$((i + 1))
+    awk -F, -v q="$query" '$1 == q { print $2, $3 }' "$csv/timing.csv" | sort -n > "$work/$prefix$i.dat"
+    [ -s "$work/$prefix$i.dat" ] || continue
+    case "$query" in
+      box2d*) dash=2 ;;
+      chipmunk*) dash=3 ;;
+      textbook*) dash=4 ;;
+      *) dash=1 ;;
+    esac
+    colour=${palette[$(((i - 1) % ${#palette[@]}))]}
+    plots+="'$work/$prefix$i.dat' using 1:2 with linespoints lw 2 dt $dash pt 7 ps 0.8 lc rgb '#$colour' title '$query', "
+  done
+  echo "${plots%, }"
+}
+static=$(panel s "satviz Overlap" "satviz Collide" "satviz Overlap float" "satviz Collide float" \
+  "textbook Overlap" "textbook MTV" "box2d b2TestOverlap" "box2d b2CollidePolygons" "chipmunk cpShapesCollide")
+moving=$(panel m "satviz Sweep" "satviz SweepTime" "satviz Sweep float" "satviz RayCast" "satviz RayCast float" \
+  "textbook TOI" "box2d b2TimeOfImpact" "box2d b2TimeOfImpact + b2CollidePolygons at t" \
+  "box2d b2PolygonShape::RayCast")
 gnuplot << GNUPLOT
-set terminal pngcairo size 900,600 font "DejaVu Sans,11"
+set terminal pngcairo size 1400,640 font "DejaVu Sans,11"
 set output "$out/time-vs-vertices.png"
-set title "Run time against vertex count (both polygons have n vertices)"
+set multiplot layout 1,2 title "Run time against vertex count (both polygons have n vertices; Box2D stops at 8)"
 set logscale xy
 set xlabel "vertices per polygon"
 set ylabel "ns per query"
-set key top left
+set key top left font ",9"
 set grid
-plot ${plots%, }
+set title "Overlap and contact queries"
+plot $static
+set title "Sweeps and segment casts"
+plot $moving
+unset multiplot
 GNUPLOT
 
-# Run time at n = 8 against the worst error and against the wrong answers: one point per query, in the legend.
+# Run time at n = 8 against the worst error and against the wrong answers: one point per query or variant, in the
+# legend. The columns are found by their names in the header.
 errors=""
 wrongs=""
 j=0
-while IFS=, read -r query pairs wrong fp fn median worst ns8; do
-  [ "$query" = query ] && continue
-  awk -v n="$ns8" 'BEGIN { exit !(n > 0) }' || continue
+while IFS="|" read -r query wrong worst ns8; do
   j=$((j + 1))
-  echo "$ns8 $([ "$wrong" = 0 ] && echo 0.5 || echo "$wrong")" > "$work/w$j.dat"
   colour=${palette[$(((j - 1) % ${#palette[@]}))]}
-  wrongs+="'$work/w$j.dat' using 1:2 with points pt $((4 + j % 8)) lc rgb '#$colour' ps 2 lw 2 title '$query', "
+  point=$((4 + j % 10))
+  echo "$ns8 $([ "$wrong" = 0 ] && echo 0.5 || echo "$wrong")" > "$work/w$j.dat"
+  wrongs+="'$work/w$j.dat' using 1:2 with points pt $point lc rgb '#$colour' ps 2 lw 2 title '$query', "
   if [ -n "$worst" ]; then
     echo "$ns8 $worst" > "$work/e$j.dat"
-    errors+="'$work/e$j.dat' using 1:2 with points pt $((4 + j % 8)) lc rgb '#$colour' ps 2 lw 2 title '$query', "
+    errors+="'$work/e$j.dat' using 1:2 with points pt $point lc rgb '#$colour' ps 2 lw 2 title '$query', "
   fi
-done < "$csv/accuracy.csv"
+done < <(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+  $col["ns_n8"] > 0 && $1 !~ /traced/ {
+    gsub(/;/, ",", $1); printf "%s|%s|%s|%s\n", $1, $col["wrong"], $col["error_max"], $col["ns_n8"] }' \
+  "$csv/accuracy.csv")
 gnuplot << GNUPLOT
-set terminal pngcairo size 1200,640 font "DejaVu Sans,11"
+set terminal pngcairo size 1400,820 font "DejaVu Sans,11"
 set output "$out/time-vs-error.png"
 set multiplot layout 1,2 title "Run time (8-gons) against error, against a quadruple-precision reference"
 set logscale xy
@@ -66,10 +80,10 @@ set grid
 set key outside center bottom horizontal maxcols 3 font ",9"
 set xrange [10:1000]
 set xlabel "ns per query, n = 8"
-set ylabel "worst |depth error| or |t error|"
+set ylabel "worst |depth error|, |t error| or ray-cast distance error"
 set format y "10^{%L}"
 plot ${errors%, }
-set ylabel "wrong yes/no answers (none drawn at 0.5)"
+set ylabel "wrong yes/no answers, touching pairs included (none drawn at 0.5)"
 set format y "%g"
 set yrange [0.3:*]
 plot ${wrongs%, }
