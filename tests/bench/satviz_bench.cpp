@@ -992,7 +992,13 @@ void Record(Accuracy& acc, bool answer, const Reference& ref, double depth, bool
         acc.relativeErrors.push_back(acc.depthErrors.back() / scale);
         if (normal != nullptr)
         {
-            acc.angleErrors.push_back(AngleBetween(normal[0], normal[1], ref.normalX, ref.normalY));
+            // To the nearest co-minimal axis of the reference (any of them is a right answer), else its normal.
+            double angle = AngleBetween(normal[0], normal[1], ref.normalX, ref.normalY);
+            for (const Vec2& tie : ref.ties)
+            {
+                angle = std::min(angle, AngleBetween(normal[0], normal[1], tie.x, tie.y));
+            }
+            acc.angleErrors.push_back(angle);
         }
     }
 }

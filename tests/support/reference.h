@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cmath>
 #include <quadmath.h>
+#include <utility>
 #include <vector>
 
 namespace satviz::testing
@@ -92,7 +93,13 @@ struct Reference
     /// the penetration depth.
     Quad separation = 0;
     double normalX = 0, normalY = 0; ///< unit normal from A to B on the deciding axis
+    /// Polygons: the unit normals (from A to B) of every axis whose separation is within kTieBand of the best,
+    /// the deciding one included: co-minimal axes, any of which is a right answer.
+    std::vector<Vec2> ties;
 };
+
+/// Axes whose separations differ by less than this are co-minimal (Reference::ties).
+constexpr double kTieBand = 1e-9;
 
 /// The unit roundoff of quad precision, 2^-113: a rounded operation is within this fraction of its exact result.
 constexpr Quad kQuadRoundoff = FLT128_EPSILON / 2;
@@ -472,6 +479,7 @@ inline bool PolygonCircleOverlap(const std::vector<WorldPoint>& outline, const W
 /// Separation by projection intervals on every unit edge normal of both polygons.
 inline void ReferenceDepth(const std::vector<QVec>& a, const std::vector<QVec>& b, Reference& out)
 {
+    std::vector<std::pair<Quad, Vec2>> candidates;
     Quad best = -1e300Q;
     bool first = true;
     for (int side = 0; side < 2; ++side)
@@ -499,17 +507,27 @@ inline void ReferenceDepth(const std::vector<QVec>& a, const std::vector<QVec>& 
             const Quad forward = minB - maxA;
             const Quad backward = minA - maxB;
             const Quad separation = forward > backward ? forward : backward;
+            const double sign = forward > backward ? 1.0 : -1.0;
+            const Vec2 normal{sign * static_cast<double>(axis.x), sign * static_cast<double>(axis.y)};
+            candidates.push_back({separation, normal});
             if (first || separation > best)
             {
                 first = false;
                 best = separation;
-                const double sign = forward > backward ? 1.0 : -1.0;
-                out.normalX = sign * static_cast<double>(axis.x);
-                out.normalY = sign * static_cast<double>(axis.y);
+                out.normalX = normal.x;
+                out.normalY = normal.y;
             }
         }
     }
     out.separation = best;
+    out.ties.clear();
+    for (const auto& [separation, normal] : candidates)
+    {
+        if (best - separation < kTieBand)
+        {
+            out.ties.push_back(normal);
+        }
+    }
 }
 
 /// Distance from a point to a segment.
