@@ -45,7 +45,10 @@ SlideResultT<S> MoveAndSlide(const ShapeT<S>& mover, const TransformT<S>& xf, Ve
     };
     const S gap = skin >= S(0) ? skin : DefaultSkin(mover, xf);
 
-    // Out of anything the mover starts inside.
+    // Out of anything the mover starts inside (a contact), and up to the skin from anything it starts touching or
+    // closer than the skin to (no contact: it is where the last step left it, or placed there). A sweep from
+    // zero distance would stop at once against a surface that is flush with the one it rests on only up to
+    // rounding (the next tile of a floor).
     for (int k = 0; k < obstacleCount && result.contactCount < budget; ++k)
     {
         const ManifoldT<S> m = Collide(mover, result.xf, *obstacles[k].shape, obstacles[k].xf);
@@ -53,6 +56,10 @@ SlideResultT<S> MoveAndSlide(const ShapeT<S>& mover, const TransformT<S>& xf, Ve
         {
             result.xf.p = result.xf.p - (m.depth + gap) * m.normal;
             record(m.normal, k);
+        }
+        else if (m.overlap || m.gap < gap)
+        {
+            result.xf.p = result.xf.p - ((m.overlap ? S(0) : -m.gap) + gap) * m.normal;
         }
     }
 
@@ -84,6 +91,12 @@ SlideResultT<S> MoveAndSlide(const ShapeT<S>& mover, const TransformT<S>& xf, Ve
         const S closing = Dot(remaining, normal);
         const S stop = closing > S(0) ? std::max(S(0), first - gap / closing) : S(0);
         result.xf.p = result.xf.p + stop * remaining;
+        // A hit closer than the skin (stop clamped at 0): back off along the normal to the skin.
+        const S shortfall = closing > S(0) ? gap - (first - stop) * closing : S(0);
+        if (shortfall > S(0))
+        {
+            result.xf.p = result.xf.p - shortfall * normal;
+        }
         Vec2T<S> rest = (S(1) - stop) * remaining;
         const S into = Dot(rest, normal);
         if (into > S(0))

@@ -43,11 +43,13 @@ S DefaultSkin(const ShapeT<S>& mover, const TransformT<S>& xf);
 /// Moves `mover` from `xf` by `displacement` through still obstacles (collide and slide):
 ///   1. Sweep the rest of the displacement against every obstacle; take the earliest hit.
 ///   2. Move to the time of impact, stopped `skin` short of the surface along its normal, so the next sweep from
-///      there does not start touching (which would report t = 0 and stick).
+///      there does not start touching (which would report t = 0 and stick); a hit already closer than `skin`
+///      backs off along the normal to `skin`.
 ///   3. Remove the part of the remaining displacement that points into the surface; continue along it.
 ///   4. Stop when nothing is hit, or after `maxContacts` contacts (at most kMaxSlideContacts).
 /// A mover that starts interpenetrating an obstacle is first pushed out along the minimum translation vector,
-/// `skin` beyond touching. `skin` < 0 selects DefaultSkin. The mover keeps its orientation.
+/// `skin` beyond touching (a contact); one that starts touching an obstacle, or closer to it than `skin`, is lifted
+/// to `skin` from it (no contact). `skin` < 0 selects DefaultSkin. The mover keeps its orientation.
 template <typename S>
 SlideResultT<S> MoveAndSlide(const ShapeT<S>& mover, const TransformT<S>& xf, Vec2T<S> displacement,
                              const ObstacleT<S>* obstacles, int obstacleCount, S skin = S(-1), int maxContacts = 4);
