@@ -462,7 +462,7 @@ bool VisitBounds(const PolygonT<S>& ref, Vec2T<S> witness, Vec2T<S> velocity, Se
         const Vec2T<S> w = evaluation.Witness(witness);
         const FaceBlock<L, S> block(ref, ref.vertices.data, i0);
         const L distance = block.nx * (L::Fill(w.x) - block.vx) + block.ny * (L::Fill(w.y) - block.vy);
-        const L rate = Moving(block.nx * vx + block.ny * vy, StillRate(velocity));
+        const L rate = block.nx * vx + block.ny * vy;
         int lanes = select(distance, rate).Bits() & (n - i0 >= 4 ? 0xF : (1 << (n - i0)) - 1);
         lanes |= always >= i0 && always < i0 + 4 ? 1 << (always - i0) : 0;
         while (lanes != 0)
@@ -533,11 +533,13 @@ bool SweepWalkedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int
     }
     WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
     // Entry bound d / -r below known, without a division: d < known (1 - 4 eps) (-r) implies it despite the
-    // rounding of the product and the quotient (not that of d itself).
+    // rounding of the product and the quotient (not that of d itself). A face whose rate is within StillRate of 0
+    // counts as parallel to the motion (AxisLanes): it is walked to, as it may never close.
     const S shrink = S(1) - S(4) * std::numeric_limits<S>::epsilon();
-    const auto select = [&known, shrink](const L& distance, const L& rate) {
+    const S still = StillRate(velocity);
+    const auto select = [&known, shrink, still](const L& distance, const L& rate) {
         const L zero = L::Fill(S(0));
-        return ~((zero > distance) | ((zero > rate) & (L::Fill(known * shrink) * -rate > distance)));
+        return ~((zero > distance) | ((L::Fill(-still) > rate) & (L::Fill(known * shrink) * -rate > distance)));
     };
     const bool ends = VisitBounds<L>(ref, walk.witness, velocity, select, evaluation, seed) || evaluation.Flush();
     return !ends && !(lanes.first.MaxLane() >= lanes.last.MinLane());
@@ -558,8 +560,10 @@ bool SweepWalkedExits(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int
     const S grow = S(1) + S(4) * std::numeric_limits<S>::epsilon();
     // Every receding face whose exit bound does not clear the latest entry: its witness may differ from the one
     // that sent the face here in the first pass, so the selection does not rest on that pass's choice.
-    const auto select = [first, grow](const L& distance, const L& rate) {
-        return (rate > L::Fill(S(0))) & ~(-distance > L::Fill(first * grow) * rate);
+    // A rate within StillRate of 0 counts as 0 (AxisLanes): that face never exits.
+    const S still = StillRate(velocity);
+    const auto select = [first, grow, still](const L& distance, const L& rate) {
+        return (rate > L::Fill(still)) & ~(-distance > L::Fill(first * grow) * rate);
     };
     if (VisitBounds<L>(ref, walk.witness, velocity, select, evaluation) || evaluation.Flush())
     {
