@@ -894,10 +894,14 @@ class Painter
     }
 
     // t from 0 to 1: this axis's entry and exit, and the window (latest entry, earliest exit) so far.
-    void TimeBar(float y, float left, float right)
+    void TimeBar(float y, float barLeft, float right)
     {
         canvas_.BeginGroup("timebar");
         canvas_.Text({24.0f, y - 8.0f}, "time", TextStyle::Heading, palette::kMuted);
+        // The bar and its marker labels keep clear of the heading (short body names leave the rows above a narrow
+        // margin), even for a time at or before 0.
+        const float labelsFrom = 24.0f + canvas_.MeasureText("time", TextStyle::Heading).x + 8.0f;
+        const float left = std::max(barLeft, labelsFrom + 16.0f);
         auto x = [&](double t) { return static_cast<float>(left + std::clamp(t, -0.04, 1.04) * (right - left)); };
         canvas_.Segment({x(0.0), y}, {x(1.0), y}, palette::kMuted, 2.0f);
         for (double t : {0.0, 0.5, 1.0})
@@ -947,7 +951,8 @@ class Painter
                 text += t < 0.0 ? " (before)" : " (after)";
             }
             const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
-            const float tx = std::clamp(px - 0.5f * size.x, left - 40.0f, Width() - size.x - 4.0f);
+            const float tx =
+                std::clamp(px - 0.5f * size.x, std::max(left - 40.0f, labelsFrom), Width() - size.x - 4.0f);
             canvas_.Text({tx, up ? y - 10.0f - size.y : y + 22.0f}, text, TextStyle::Label, palette::kInk);
         };
         if (!std::isinf(axis_.entry) || axis_.separation > 0.0)
