@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <vector>
 
 using namespace satviz;
@@ -281,6 +283,19 @@ void RunAlongFloor(const ShapeT<S>& floor, const TransformT<S>& xfFloor, const S
     RunAlongFloor(obstacles, 1, S(21), mover, xf, up, along, displacement, steps, stats);
 }
 
+// What a failing run reports: its number, the mover's kind (0 box, 1 polygon, 2 circle), the floor and the motion.
+std::string DescribeRun(int run, int kind, const OnFloor& start, Vec2 displacement)
+{
+    std::ostringstream text;
+    text << "run " << run
+         << (kind == 0   ? ", box"
+             : kind == 1 ? ", polygon"
+                         : ", circle")
+         << ", floor at " << start.xfFloor.p.x << ", " << start.xfFloor.p.y << " turned " << start.xfFloor.q.c << ", "
+         << start.xfFloor.q.s << ", displacement " << displacement.x << ", " << displacement.y;
+    return text.str();
+}
+
 } // namespace
 
 TEST_CASE("Starting on a tilted floor or against a wall, sliding along and pushing into it neither sticks nor sinks",
@@ -302,13 +317,7 @@ TEST_CASE("Starting on a tilted floor or against a wall, sliding along and pushi
             u < 0.3 ? 0.0 : (u < 0.8 ? rng.Uniform(0.1, 2.0) : -rng.Uniform(0.0, 0.5)) * std::abs(length);
         const bool straightIn = rng.Chance(0.1);
         const Vec2 displacement = straightIn ? -std::abs(length) * start.up : length * start.along - into * start.up;
-        INFO("run " << i
-                    << (kind == 0   ? ", box"
-                        : kind == 1 ? ", polygon"
-                                    : ", circle")
-                    << ", floor at " << start.xfFloor.p.x << ", " << start.xfFloor.p.y << " turned "
-                    << start.xfFloor.q.c << ", " << start.xfFloor.q.s << ", displacement " << displacement.x << ", "
-                    << displacement.y);
+        INFO(DescribeRun(i, kind, start, displacement));
         RunAlongFloor(start.floor, start.xfFloor, start.mover, start.xf, start.up, start.along, displacement, 200,
                       stats);
     }
@@ -333,11 +342,7 @@ TEST_CASE("Starting on a tilted floor, sliding in float neither sticks nor sinks
         const double length = rng.Uniform(0.005, 0.05) * (rng.Chance(0.5) ? 1.0 : -1.0);
         const double into = rng.Chance(0.3) ? 0.0 : rng.Uniform(0.1, 2.0) * std::abs(length);
         const Vec2 displacement = length * start.along - into * start.up;
-        INFO("run " << i
-                    << (kind == 0   ? ", box"
-                        : kind == 1 ? ", polygon"
-                                    : ", circle")
-                    << ", displacement " << displacement.x << ", " << displacement.y);
+        INFO(DescribeRun(i, kind, start, displacement));
         RunAlongFloor(ToFloat(start.floor), ToFloat(start.xfFloor), mover, ToFloat(start.xf),
                       ConvertVec<float>(start.up), ConvertVec<float>(start.along), ConvertVec<float>(displacement), 200,
                       stats);
@@ -412,13 +417,7 @@ TEST_CASE("Starting on a tilted floor of tiles, sliding along it does not catch 
         const double length = rng.Uniform(0.005, 0.05) * (rng.Chance(0.5) ? 1.0 : -1.0);
         const double into = rng.Chance(0.3) ? 0.0 : rng.Uniform(0.1, 2.0) * std::abs(length);
         const Vec2 displacement = length * start.along - into * start.up;
-        INFO("run " << i
-                    << (kind == 0   ? ", box"
-                        : kind == 1 ? ", polygon"
-                                    : ", circle")
-                    << ", floor at " << start.xfFloor.p.x << ", " << start.xfFloor.p.y << " turned "
-                    << start.xfFloor.q.c << ", " << start.xfFloor.q.s << ", displacement " << displacement.x << ", "
-                    << displacement.y);
+        INFO(DescribeRun(i, kind, start, displacement));
         RunAlongFloor(tiles.data(), static_cast<int>(tiles.size()), 21.0, start.mover, start.xf, start.up, start.along,
                       displacement, 200, stats);
     }
