@@ -734,6 +734,72 @@ TEST_CASE("Axis-aligned boxes that start touching and move in hit at once from e
     }
 }
 
+TEST_CASE("A polygon landing on a face touches it at its lowest vertex or along the overlap of its lowest edge",
+          "[sweep]")
+{
+    // B placed on a face of A by its lowest vertex or by an edge turned anti-parallel to the face (OnFace), then set
+    // back along a motion into the face (head on to 80 degrees off, speeds 1e-3 to 1e3, either shape moving) so
+    // that it lands there at t = tau. The oracle, from the placement itself: B's vertices on the face's line (one,
+    // or the two ends of an edge: the edge-to-edge pairs, and boxes at right angles by a vertex), and the overlap of
+    // that edge with the face along it. Either of two parallel faces may be the reference: the contacts are the same.
+    Rng rng(6331);
+    int flat = 0;
+    for (int i = 0; i < 20000; ++i)
+    {
+        const bool faceToFace = rng.Chance(0.5);
+        const Polygon a = TouchPolygon(rng);
+        const Touching pair = OnFace(rng, a, MakeShape(TouchPolygon(rng)), faceToFace);
+        const Polygon& b = pair.b.polygon;
+        const Vec2 v = IntoContact(rng, pair, rng.LogUniform(-3.0, 3.0));
+        const Vec2 vA = OwnMotion(rng, v);
+        const Vec2 vB = vA + v;
+        const double tau = rng.Uniform(0.1, 0.9);
+        const Transform startA{pair.xfA.p - tau * vA, pair.xfA.q};
+        const Transform startB{pair.xfB.p - tau * vB, pair.xfB.q};
+        const double scale = PairScale(pair) + Length(v);
+        INFO("pair " << i << (faceToFace ? ", edge to edge" : ", vertex on face") << ", v " << v.x << ", " << v.y);
+        const SweepResult r = Sweep(pair.a, startA, vA, pair.b, startB, vB);
+        REQUIRE(r.status == SweepStatus::Hit);
+        REQUIRE(std::abs(r.toi - tau) <= 1e-12 * scale / Length(v));
+        // The face from its first vertex, and B's vertices on its line at the placement, along it.
+        const Vec2 start = TransformPoint(pair.xfA, a.vertices[pair.face]);
+        const auto along = [&](Vec2 world) { return Dot(world - start, pair.tangent); };
+        const double faceEnd = along(TransformPoint(pair.xfA, a.vertices[(pair.face + 1) % a.Count()]));
+        double low = faceEnd;
+        double high = 0.0;
+        int onLine = 0;
+        for (int k = 0; k < b.Count(); ++k)
+        {
+            const Vec2 w = TransformPoint(pair.xfB, b.vertices[k]);
+            if (Dot(w - start, pair.normal) <= 1e-12 * scale)
+            {
+                ++onLine;
+                low = std::min(low, along(w));
+                high = std::max(high, along(w));
+            }
+        }
+        REQUIRE((onLine == 1 || onLine == 2));
+        // The contacts, moved back to the placement (A moved by (toi - tau) vA), on the face's line.
+        double contactAlong[2];
+        for (int k = 0; k < r.contactCount; ++k)
+        {
+            const Vec2 point = r.contacts[k].point - (r.toi - tau) * vA;
+            REQUIRE(std::abs(Dot(point - start, pair.normal)) <= 1e-12 * scale);
+            contactAlong[k] = along(point);
+        }
+        REQUIRE(r.contactCount == onLine);
+        if (onLine == 1)
+        {
+            CHECK_THAT(contactAlong[0], WithinAbs(low, 1e-12 * scale));
+            continue;
+        }
+        ++flat;
+        CHECK_THAT(std::min(contactAlong[0], contactAlong[1]), WithinAbs(std::max(low, 0.0), 1e-12 * scale));
+        CHECK_THAT(std::max(contactAlong[0], contactAlong[1]), WithinAbs(std::min(high, faceEnd), 1e-12 * scale));
+    }
+    CHECK(flat > 8000);
+}
+
 TEST_CASE("Circles that start touching and move in hit at once, never tunnel", "[sweep][circle]")
 {
     // Circle against circle, circle on a polygon's face and on a polygon's vertex (rotated boxes and random

@@ -607,6 +607,69 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     }
 }
 
+// The contact points of a swept hit against a scanned incident polygon, in world space (Catto's clipping, reduced to
+// what a time of impact leaves). At the time of impact the polygons touch on the line of the reference face and
+// nowhere else, so the incident vertices within `slop` of that line are the contact: one vertex (its support point
+// against the face), or two, the ends of an edge that lies along the face, which is then cut to the face's extent.
+//   1. Every vertex's separation from the face at the time of impact, four at a time: the vertices within `slop`
+//      as bits. No support point is searched for first (no minimum across lanes), and nothing branches on where
+//      the polygons touch. Rounding can leave no vertex within `slop` (a shape far from the frame's origin, moving
+//      fast): then the support vertex alone.
+//   2. One vertex P: P, placed in the world as it was at t = 0 moved by its own velocity up to the time of impact,
+//      so that no transform waits for that time.
+//   3. An edge P Q: the span of P and Q along the face, cut to the face's ends, as points of the face (which moves
+//      with the reference polygon's velocity). The edge is within `slop` of the face, so these are on both outlines.
+//   `face` is the reference face of `ref`; `inc` holds the incident polygon's vertices in ref's frame at t = 0;
+//   `shift` is inc's motion relative to ref up to `toi` (ref's frame); `xfRef` is ref's transform at t = 0, `vRef`
+//   and `vInc` the world velocities. At the time of impact the separation is zero: the contacts carry 0.
+template <bool kWide, typename S>
+int SweptContacts(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& inc, Vec2T<S> shift, S slop,
+                  const TransformT<S>& xfRef, Vec2T<S> vRef, Vec2T<S> vInc, S toi, ContactPointT<S> (&contacts)[2])
+{
+    using L = Lanes<S, kWide && std::is_same_v<S, double>>;
+    const Vec2T<S> normal = ref.Normal(face);
+    const Vec2T<S> tangent = LeftPerp(normal); // along the face, from v1 towards v2
+    const Vec2T<S> v1 = ref.vertices[face];
+    const S length = Dot(tangent, ref.vertices[Next(face, ref.Count())] - v1);
+    // Separation at toi: Dot(n, p + shift - v1) <= slop, as Dot(n, p) <= slop + Dot(n, v1 - shift).
+    const L nx = L::Fill(normal.x);
+    const L ny = L::Fill(normal.y);
+    const L limit = L::Fill(slop + Dot(normal, v1 - shift));
+    uint32_t near = 0;
+    for (int j = 0; j < inc.padded; j += 4)
+    {
+        near |= static_cast<uint32_t>((limit >= nx * L::Load(inc.x + j) + ny * L::Load(inc.y + j)).Bits()) << j;
+    }
+    near &= (uint32_t(1) << inc.polygon.Count()) - 1;
+    int first;
+    int last;
+    if (near != 0) [[likely]]
+    {
+        first = __builtin_ctz(near);
+        last = 31 - __builtin_clz(near);
+    }
+    else
+    {
+        first = last = inc.template Support<kWide>(normal);
+    }
+    const Vec2T<S> p{inc.x[first], inc.y[first]};
+    const Vec2T<S> q{inc.x[last], inc.y[last]};
+    // The span of the edge along the face, cut to the face's ends; an edge past the face's end (rounding at a
+    // corner) leaves P alone.
+    const S alongP = Dot(tangent, p + shift - v1);
+    const S alongQ = Dot(tangent, q + shift - v1);
+    const S low = std::max(S(0), std::min(alongP, alongQ));
+    const S high = std::min(length, std::max(alongP, alongQ));
+    const bool edge = first != last && low < high;
+    // The point in ref's frame at t = 0 and its velocity: P moves with inc, the face's points with ref.
+    const Vec2T<S> at0 = Select(edge, v1 + low * tangent, p);
+    const Vec2T<S> at1 = v1 + high * tangent;
+    const Vec2T<S> velocity0 = Select(edge, vRef, vInc);
+    contacts[0] = {TransformPoint(xfRef, at0) + toi * velocity0, S(0)};
+    contacts[1] = {Select(edge, TransformPoint(xfRef, at1) + toi * vRef, Vec2T<S>{}), S(0)};
+    return edge ? 2 : 1;
+}
+
 /// Swept SAT for two translating polygons (Ericson 5.5.2).
 /// Outline:
 ///   1. B's motion relative to A is v = vB - vA. On the unit normal n of a face of A, the face's separation (as in
@@ -620,9 +683,10 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
 ///      the faces that can hold the latest entry, never close, or exit before the latest entry are walked to
 ///      (SweepWalkedFaces, then SweepWalkedExits once the latest entry is known): the same verdict and time.
 ///   4. Every s0 < 0: the shapes interpenetrate at t = 0: the static manifold gives the MTV.
-///   5. A hit: contacts by clipping at the time of impact, the axis of the latest entry as reference face and the
-///      other polygon, as mapped for the face loops, moved by its relative motion up to that time (kContacts; else
-///      no contacts: the time, normal and axis alone).
+///   5. A hit: the contact points at the time of impact (kContacts; else none: the time, normal and axis alone),
+///      the axis of the latest entry as reference face and the other polygon, as mapped for the face loops, moved
+///      by its relative motion up to that time: its vertices on the face's line, an edge among them cut to the
+///      face's extent (SweptContacts); a walked polygon's incident edge clipped as in Collide (Catto).
 template <bool kContacts, typename S, typename Tracer>
 SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const PolygonT<S>& b,
                               const TransformT<S>& xfB, Vec2T<S> vB, Tracer& tracer)
@@ -682,26 +746,35 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     }
     const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
     const Vec2T<S> shift = first * Select(flip, -velocityInB, velocityInA);
-    const TransformT<S> xfRef = Moved(Select(flip, xfB, xfA), Select(flip, vB, vA), first);
-    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(firstAxis.index));
+    const TransformT<S>& xfRef0 = SelectRef(flip, xfB, xfA);
+    const Vec2T<S> worldNormal = Rotate(xfRef0.q, ref.Normal(firstAxis.index));
     // At the time of impact the touching points are at zero distance up to rounding of either sign, which scales
-    // with the coordinates in the reference frame: the offset between the frames and the face's own size (its
-    // largest coordinate extent, within a factor sqrt(2) of its length and without a square root).
+    // with the coordinates in the reference frame: the offset between the frames at t = 0 and at the time of
+    // impact, the motion between them, and the face's own size (its largest coordinate extent, within a factor
+    // sqrt(2) of its length and without a square root). A fast shape's vertices are placed at the time of impact
+    // only to within the rounding of its motion.
     const Vec2T<S> offset = inc.xf.p + shift;
     const Vec2T<S> face = ref.vertices[firstAxis.index];
     const Vec2T<S> edge = ref.Edge(firstAxis.index);
-    const S scale = std::max({std::abs(offset.x), std::abs(offset.y), std::abs(face.x), std::abs(face.y),
+    const S scale = std::max({std::abs(offset.x), std::abs(offset.y), std::abs(inc.xf.p.x), std::abs(inc.xf.p.y),
+                              std::abs(shift.x), std::abs(shift.y), std::abs(face.x), std::abs(face.y),
                               std::abs(edge.x), std::abs(edge.y)});
     const S slop = S(64) * std::numeric_limits<S>::epsilon() * scale;
+    SweepResultT<S> result{SweepStatus::Hit, first, Select(flip, -worldNormal, worldNormal), {}, 0, firstAxis, {}};
+    if (inc.scan)
+    {
+        result.contactCount = SweptContacts<Tracer::kWide>(ref, firstAxis.index, inc, shift, slop, xfRef0,
+                                                           Select(flip, vB, vA), Select(flip, vA, vB), first,
+                                                           result.contacts);
+        return result;
+    }
+    const TransformT<S> xfRef = Moved(xfRef0, Select(flip, vB, vA), first);
     const ClipResult<S> clip = ClipIncidentEdge<Tracer::kWide>(ref, firstAxis.index, inc, -1, slop, &shift);
-    // Every member written once, so the result is not first cleared whole.
-    return {SweepStatus::Hit,
-            first,
-            Select(flip, -worldNormal, worldNormal),
-            {WorldContact(clip, 0, xfRef), WorldContact(clip, 1, xfRef)},
-            clip.contactCount,
-            firstAxis,
-            {}};
+    // At the time of impact the surfaces touch: the separation is 0, as SweptContacts gives it.
+    result.contacts[0] = {WorldContact(clip, 0, xfRef).point, S(0)};
+    result.contacts[1] = {WorldContact(clip, 1, xfRef).point, S(0)};
+    result.contactCount = clip.contactCount;
+    return result;
 }
 
 // First time the point p0 + t v enters the disc of radius r around c, if it crosses the circle (a tangent path

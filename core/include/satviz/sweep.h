@@ -75,7 +75,9 @@ struct SweepResultT
     S toi{};                                ///< time of impact in [0, 1] (Hit), 0 (Overlapping)
     /// Hit: unit contact normal from A to B at the time of impact. Overlapping: the MTV direction.
     Vec2T<S> normal{};
-    ContactPointT<S> contacts[2]{}; ///< Hit: contact points at the time of impact (world, shapes moved)
+    /// Hit: the contact points at the time of impact (world, shapes moved; separation 0): where the incident
+    /// polygon touches the reference face, a vertex or the part of an edge along the face over the face's extent.
+    ContactPointT<S> contacts[2]{};
     int contactCount = 0;           ///< number of contact points
     AxisRef axis{};                 ///< the deciding axis: for a hit, the axis with the latest entry
     ManifoldT<S> initial{};         ///< Overlapping: the static manifold at t = 0 (depth and MTV)
