@@ -745,21 +745,20 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
         return {SweepStatus::Hit, first, Select(flip, -worldNormal, worldNormal), {}, 0, firstAxis, {}};
     }
     const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
-    const Vec2T<S> shift = first * Select(flip, -velocityInB, velocityInA);
     const TransformT<S>& xfRef0 = SelectRef(flip, xfB, xfA);
     const Vec2T<S> worldNormal = Rotate(xfRef0.q, ref.Normal(firstAxis.index));
     // At the time of impact the touching points are at zero distance up to rounding of either sign, which scales
-    // with the coordinates in the reference frame: the offset between the frames at t = 0 and at the time of
-    // impact, the motion between them, and the face's own size (its largest coordinate extent, within a factor
-    // sqrt(2) of its length and without a square root). A fast shape's vertices are placed at the time of impact
-    // only to within the rounding of its motion.
-    const Vec2T<S> offset = inc.xf.p + shift;
+    // with the coordinates in the reference frame: the incident polygon's offset at t = 0, its motion over the step
+    // (together they bound its offset at any time in the step, and a fast shape is placed at the time of impact
+    // only to within the rounding of its motion), and the face's own size (its largest coordinate extent, within
+    // a factor sqrt(2) of its length and without a square root). None of these waits for the time of impact.
+    const Vec2T<S> motion = Select(flip, -velocityInB, velocityInA);
     const Vec2T<S> face = ref.vertices[firstAxis.index];
     const Vec2T<S> edge = ref.Edge(firstAxis.index);
-    const S scale = std::max({std::abs(offset.x), std::abs(offset.y), std::abs(inc.xf.p.x), std::abs(inc.xf.p.y),
-                              std::abs(shift.x), std::abs(shift.y), std::abs(face.x), std::abs(face.y),
-                              std::abs(edge.x), std::abs(edge.y)});
+    const S scale = std::max({std::abs(inc.xf.p.x), std::abs(inc.xf.p.y), std::abs(motion.x), std::abs(motion.y),
+                              std::abs(face.x), std::abs(face.y), std::abs(edge.x), std::abs(edge.y)});
     const S slop = S(64) * std::numeric_limits<S>::epsilon() * scale;
+    const Vec2T<S> shift = first * motion;
     SweepResultT<S> result{SweepStatus::Hit, first, Select(flip, -worldNormal, worldNormal), {}, 0, firstAxis, {}};
     if (inc.scan)
     {
