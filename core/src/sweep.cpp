@@ -175,7 +175,8 @@ struct SweepState
 };
 
 // A face's place in the order A's faces, then B's, as a lane value (exact in float up to 2^24).
-constexpr int kSideStride = 1 << 16;
+constexpr int kSideShift = 16;
+constexpr int kSideStride = 1 << kSideShift;
 
 // The rate below which the motion counts as parallel to a face: a few roundings of Dot(n, v) with |n| = 1.
 template <typename S>
@@ -249,8 +250,9 @@ struct SweepLanes
         state.first = first.MaxLane();
         const L candidates = Select(first == L::Fill(state.first), firstIndex, L::Fill(S(1 << 30)));
         const int index = static_cast<int>(candidates.MinLane());
-        state.firstSide = index / kSideStride;
-        state.firstFace = index % kSideStride;
+        // The index is not negative: a shift and a mask, not a signed division.
+        state.firstSide = index >> kSideShift;
+        state.firstFace = index & (kSideStride - 1);
         state.last = last.MinLane();
         state.inside = inside.All();
     }
@@ -660,7 +662,8 @@ int SweptContacts(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& in
     const S alongQ = Dot(tangent, q + shift - v1);
     const S low = std::max(S(0), std::min(alongP, alongQ));
     const S high = std::min(length, std::max(alongP, alongQ));
-    const bool edge = first != last && low < high;
+    // Bitwise: with && the compiler branched on the second test, whose outcome follows the geometry.
+    const bool edge = (first != last) & (low < high);
     // The point in ref's frame at t = 0 and its velocity: P moves with inc, the face's points with ref.
     const Vec2T<S> at0 = Select(edge, v1 + low * tangent, p);
     const Vec2T<S> at1 = v1 + high * tangent;
