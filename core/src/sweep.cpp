@@ -613,14 +613,16 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
 // what a time of impact leaves). At the time of impact the polygons touch on the line of the reference face and
 // nowhere else, so the incident vertices within `slop` of that line are the contact: one vertex (its support point
 // against the face), or two, the ends of an edge that lies along the face, which is then cut to the face's extent.
-//   1. Every vertex's separation from the face at the time of impact, four at a time: the vertices within `slop`
-//      as bits. No support point is searched for first (no minimum across lanes), and nothing branches on where
-//      the polygons touch. Rounding can leave no vertex within `slop` (a shape far from the frame's origin, moving
+//   1. Every vertex, four at a time: whether its separation from the face at the time of impact is within `slop`,
+//      its place along the face, and its place in the world at t = 0. The lanes of the vertices within `slop`
+//      give the span along the face (least and greatest) and, when there is one such vertex, its place in the
+//      world: no support point is searched for, no vertex is read back by index, and nothing branches on where the
+//      polygons touch. Rounding can leave no vertex within `slop` (a shape far from the frame's origin, moving
 //      fast): then the support vertex alone.
-//   2. One vertex P: P, placed in the world as it was at t = 0 moved by its own velocity up to the time of impact,
-//      so that no transform waits for that time.
-//   3. An edge P Q: the span of P and Q along the face, cut to the face's ends, as points of the face (which moves
-//      with the reference polygon's velocity). The edge is within `slop` of the face, so these are on both outlines.
+//   2. One vertex P: P in the world at t = 0, moved by its own velocity up to the time of impact.
+//   3. More (an edge along the face): their span along the face, cut to the face's ends, as points of the face
+//      (which moves with the reference polygon's velocity). They are within `slop` of the face, so these points are
+//      on both outlines.
 //   `face` is the reference face of `ref`; `inc` holds the incident polygon's vertices in ref's frame at t = 0;
 //   `shift` is inc's motion relative to ref up to `toi` (ref's frame); `xfRef` is ref's transform at t = 0, `vRef`
 //   and `vInc` the world velocities. At the time of impact the separation is zero: the contacts carry 0.
@@ -633,43 +635,55 @@ int SweptContacts(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& in
     const Vec2T<S> tangent = LeftPerp(normal); // along the face, from v1 towards v2
     const Vec2T<S> v1 = ref.vertices[face];
     const S length = Dot(tangent, ref.vertices[Next(face, ref.Count())] - v1);
-    // Separation at toi: Dot(n, p + shift - v1) <= slop, as Dot(n, p) <= slop + Dot(n, v1 - shift).
+    // Separation at toi: Dot(n, p + shift - v1) <= slop, as Dot(n, p) <= slop + Dot(n, v1 - shift). Along the face
+    // at toi: Dot(t, p) + Dot(t, shift - v1). The padding repeats vertex 0, which moves no least or greatest.
     const L nx = L::Fill(normal.x);
     const L ny = L::Fill(normal.y);
+    const L tx = L::Fill(tangent.x);
+    const L ty = L::Fill(tangent.y);
     const L limit = L::Fill(slop + Dot(normal, v1 - shift));
+    const L alongShift = L::Fill(Dot(tangent, shift - v1));
+    const L c = L::Fill(xfRef.q.c);
+    const L s = L::Fill(xfRef.q.s);
+    const L px = L::Fill(xfRef.p.x);
+    const L py = L::Fill(xfRef.p.y);
+    const L infinity = L::Fill(std::numeric_limits<S>::infinity());
+    L least = infinity;
+    L greatest = -infinity;
+    L worldX = -infinity;
+    L worldY = -infinity;
     uint32_t near = 0;
     for (int j = 0; j < inc.padded; j += 4)
     {
-        near |= static_cast<uint32_t>((limit >= nx * L::Load(inc.x + j) + ny * L::Load(inc.y + j)).Bits()) << j;
+        const L x = L::Load(inc.x + j);
+        const L y = L::Load(inc.y + j);
+        const typename L::Mask onLine = limit >= nx * x + ny * y;
+        near |= static_cast<uint32_t>(onLine.Bits()) << j;
+        const L along = (tx * x + ty * y) + alongShift;
+        least = Min(least, Select(onLine, along, infinity));
+        greatest = Max(greatest, Select(onLine, along, -infinity));
+        worldX = Max(worldX, Select(onLine, (c * x - s * y) + px, -infinity));
+        worldY = Max(worldY, Select(onLine, (s * x + c * y) + py, -infinity));
     }
     near &= (uint32_t(1) << inc.polygon.Count()) - 1;
-    int first;
-    int last;
-    if (near != 0) [[likely]]
+    Vec2T<S> vertex{worldX.MaxLane(), worldY.MaxLane()};
+    S low = std::max(S(0), least.MinLane());
+    S high = std::min(length, greatest.MaxLane());
+    if (near == 0) [[unlikely]]
     {
-        first = __builtin_ctz(near);
-        last = 31 - __builtin_clz(near);
+        const int support = inc.template Support<kWide>(normal);
+        const Vec2T<S> p{inc.x[support], inc.y[support]};
+        vertex = TransformPoint(xfRef, p);
+        low = high = Dot(tangent, p + shift - v1);
     }
-    else
-    {
-        first = last = inc.template Support<kWide>(normal);
-    }
-    const Vec2T<S> p{inc.x[first], inc.y[first]};
-    const Vec2T<S> q{inc.x[last], inc.y[last]};
-    // The span of the edge along the face, cut to the face's ends; an edge past the face's end (rounding at a
-    // corner) leaves P alone.
-    const S alongP = Dot(tangent, p + shift - v1);
-    const S alongQ = Dot(tangent, q + shift - v1);
-    const S low = std::max(S(0), std::min(alongP, alongQ));
-    const S high = std::min(length, std::max(alongP, alongQ));
-    // Bitwise: with && the compiler branched on the second test, whose outcome follows the geometry.
-    const bool edge = (first != last) & (low < high);
-    // The point in ref's frame at t = 0 and its velocity: P moves with inc, the face's points with ref.
-    const Vec2T<S> at0 = Select(edge, v1 + low * tangent, p);
-    const Vec2T<S> at1 = v1 + high * tangent;
-    const Vec2T<S> velocity0 = Select(edge, vRef, vInc);
-    contacts[0] = {TransformPoint(xfRef, at0) + toi * velocity0, S(0)};
-    contacts[1] = {Select(edge, TransformPoint(xfRef, at1) + toi * vRef, Vec2T<S>{}), S(0)};
+    // Two vertices or more, spanning part of the face: an edge along it. (Bitwise: && became a branch on the
+    // geometry.) An edge past the face's end (rounding at a corner) leaves the vertex alone.
+    const bool edge = ((near & (near - 1)) != 0) & (low < high);
+    // The face in the world at t = 0 from its first vertex along its direction, and moved by ref's velocity.
+    const Vec2T<S> faceStart = TransformPoint(xfRef, v1) + toi * vRef;
+    const Vec2T<S> faceDirection = Rotate(xfRef.q, tangent);
+    contacts[0] = {Select(edge, faceStart + low * faceDirection, vertex + toi * vInc), S(0)};
+    contacts[1] = {Select(edge, faceStart + high * faceDirection, Vec2T<S>{}), S(0)};
     return edge ? 2 : 1;
 }
 
