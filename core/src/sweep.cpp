@@ -779,9 +779,9 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     SweepResultT<S> result{SweepStatus::Hit, first, Select(flip, -worldNormal, worldNormal), {}, 0, firstAxis, {}};
     if (inc.scan)
     {
-        result.contactCount = SweptContacts<Tracer::kWide>(ref, firstAxis.index, inc, shift, slop, xfRef0,
-                                                           Select(flip, vB, vA), Select(flip, vA, vB), first,
-                                                           result.contacts);
+        result.contactCount =
+            SweptContacts<Tracer::kWide>(ref, firstAxis.index, inc, shift, slop, xfRef0, Select(flip, vB, vA),
+                                         Select(flip, vA, vB), first, result.contacts);
         return result;
     }
     const TransformT<S> xfRef = Moved(xfRef0, Select(flip, vB, vA), first);

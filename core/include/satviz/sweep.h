@@ -78,9 +78,9 @@ struct SweepResultT
     /// Hit: the contact points at the time of impact (world, shapes moved; separation 0): where the incident
     /// polygon touches the reference face, a vertex or the part of an edge along the face over the face's extent.
     ContactPointT<S> contacts[2]{};
-    int contactCount = 0;           ///< number of contact points
-    AxisRef axis{};                 ///< the deciding axis: for a hit, the axis with the latest entry
-    ManifoldT<S> initial{};         ///< Overlapping: the static manifold at t = 0 (depth and MTV)
+    int contactCount = 0;   ///< number of contact points
+    AxisRef axis{};         ///< the deciding axis: for a hit, the axis with the latest entry
+    ManifoldT<S> initial{}; ///< Overlapping: the static manifold at t = 0 (depth and MTV)
 };
 
 /// Double-precision sweep result.
