@@ -103,8 +103,8 @@ SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
 /// Sweep without the contact points: the same status, time of impact, normal and axis, bit for bit, and a hit
 /// with no contacts (contactCount 0). For callers that need when and along which normal, not where: continuous
 /// collision that runs Collide at the time of impact anyway, and MoveAndSlide. Skips the contact points at the
-/// time of impact, about a third of a polygon sweep of 8-gons. Shapes overlapping at t = 0 still carry the static
-/// manifold.
+/// time of impact, about a quarter of a polygon sweep of 8-gons. Shapes overlapping at t = 0 still carry the
+/// static manifold.
 /// With a non-null `trace`, the same trace as Sweep's.
 template <typename S>
 SweepResultT<S> SweepTime(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const ShapeT<S>& b,
