@@ -666,19 +666,18 @@ int SweptContacts(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& in
         worldY = Max(worldY, Select(onLine, (s * x + c * y) + py, -infinity));
     }
     near &= (uint32_t(1) << inc.polygon.Count()) - 1;
-    Vec2T<S> vertex{worldX.MaxLane(), worldY.MaxLane()};
-    S low = std::max(S(0), least.MinLane());
-    S high = std::min(length, greatest.MaxLane());
-    if (near == 0) [[unlikely]]
-    {
-        const int support = inc.template Support<kWide>(normal);
-        const Vec2T<S> p{inc.x[support], inc.y[support]};
-        vertex = TransformPoint(xfRef, p);
-        low = high = Dot(tangent, p + shift - v1);
-    }
+    const S low = std::max(S(0), least.MinLane());
+    const S high = std::min(length, greatest.MaxLane());
     // Two vertices or more, spanning part of the face: an edge along it. (Bitwise: && became a branch on the
     // geometry.) An edge past the face's end (rounding at a corner) leaves the vertex alone.
     const bool edge = ((near & (near - 1)) != 0) & (low < high);
+    Vec2T<S> vertex{worldX.MaxLane(), worldY.MaxLane()};
+    if (near == 0) [[unlikely]]
+    {
+        // No vertex within `slop`: no edge either, and the support vertex alone.
+        const int support = inc.template Support<kWide>(normal);
+        vertex = TransformPoint(xfRef, Vec2T<S>{inc.x[support], inc.y[support]});
+    }
     // The face in the world at t = 0 from its first vertex along its direction, and moved by ref's velocity.
     const Vec2T<S> faceStart = TransformPoint(xfRef, v1) + toi * vRef;
     const Vec2T<S> faceDirection = Rotate(xfRef.q, tangent);
@@ -776,15 +775,15 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
                               std::abs(face.x), std::abs(face.y), std::abs(edge.x), std::abs(edge.y)});
     const S slop = S(64) * std::numeric_limits<S>::epsilon() * scale;
     const Vec2T<S> shift = first * motion;
+    const Vec2T<S> vRef = Select(flip, vB, vA);
     SweepResultT<S> result{SweepStatus::Hit, first, Select(flip, -worldNormal, worldNormal), {}, 0, firstAxis, {}};
     if (inc.scan)
     {
-        result.contactCount =
-            SweptContacts<Tracer::kWide>(ref, firstAxis.index, inc, shift, slop, xfRef0, Select(flip, vB, vA),
-                                         Select(flip, vA, vB), first, result.contacts);
+        result.contactCount = SweptContacts<Tracer::kWide>(ref, firstAxis.index, inc, shift, slop, xfRef0, vRef,
+                                                           Select(flip, vA, vB), first, result.contacts);
         return result;
     }
-    const TransformT<S> xfRef = Moved(xfRef0, Select(flip, vB, vA), first);
+    const TransformT<S> xfRef = Moved(xfRef0, vRef, first);
     const ClipResult<S> clip = ClipIncidentEdge<Tracer::kWide>(ref, firstAxis.index, inc, -1, slop, &shift);
     // At the time of impact the surfaces touch: the separation is 0, as SweptContacts gives it.
     result.contacts[0] = {WorldContact(clip, 0, xfRef).point, S(0)};
