@@ -8,9 +8,11 @@
 #include <satviz/collide.h>
 #include <satviz/sweep.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 namespace satviz
 {
@@ -363,45 +365,72 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     return !ends.Any() && !(lanes.first.MaxLane() >= lanes.last.MinLane());
 }
 
-// What the walked face loop of one polygon (SweepWalkedFaces) leaves for its second pass (SweepWalkedExits).
-template <typename S>
-struct WalkedSweep
+// The faces (or vertices) of a polygon along a counter-clockwise chain from `from`, by their offset k from it.
+struct Chain
 {
-    bool walked = false; // inc was walked: its exit-only faces wait for the second pass
-    Vec2T<S> witness{};  // the point of inc that bounds the separations of ref's faces
+    int from;
+    int n;
+    int At(int k) const { return from + k < n ? from + k : from + k - n; }
 };
 
-// The faces of a walked face loop that need their exact separation, evaluated in face order four at a time into
-// the lanes (SweepLanes::Add): inc's support point for each, climbed from the one before (found by bisection after
-// a gap), its separation, and the axis times. `known` rises to the latest entry seen.
+// The first offset in [0, count) at which `past` holds, or `count`: `past` fails up to some offset and holds from
+// there on, so bisection finds it.
+template <typename Past>
+int FirstPast(int count, Past&& past)
+{
+    int lo = 0;
+    int hi = count;
+    while (lo < hi)
+    {
+        const int mid = lo + (hi - lo) / 2;
+        if (past(mid))
+        {
+            hi = mid;
+        }
+        else
+        {
+            lo = mid + 1;
+        }
+    }
+    return lo;
+}
+
+// The support vertex of `polygon` in direction `d` (its frame), known to lie on the chain from vertex `lo` to vertex
+// `hi` (counter-clockwise, less than half a turn): the first vertex there whose edge no longer climbs along d, by
+// bisection, settled by ClimbFrom as in BisectSupport. O(log) of the chain's length.
+template <typename S>
+int BracketedSupport(const PolygonT<S>& polygon, Vec2T<S> d, int lo, int hi)
+{
+    const int n = polygon.Count();
+    const Chain chain{lo, n};
+    const int k = FirstPast(hi >= lo ? hi - lo : hi - lo + n,
+                            [&](int j) { return !(Dot(d, polygon.Edge(chain.At(j))) > S(0)); });
+    return ClimbFrom(polygon, d, chain.At(k));
+}
+
+// The faces of a walked face loop that need their exact separation, evaluated in increasing face order four at a
+// time into the lanes (SweepLanes::Add): inc's support point for each, searched for between two support points
+// that bracket it, its separation, and the axis times.
 template <typename L, typename S>
 class WalkedEvaluation
 {
   public:
     WalkedEvaluation(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                     SweepLanes<L, S>& lanes, S& known)
-        : m_ref(ref), m_inc(inc), m_side(side), m_velocity(velocity), m_lanes(lanes), m_known(known)
+                     SweepLanes<L, S>& lanes)
+        : m_ref(ref), m_inc(inc), m_side(side), m_velocity(velocity), m_lanes(lanes)
     {
     }
 
-    // Evaluates face i (after the faces added before it); true when an axis ends the test.
-    bool Add(int i)
+    // Evaluates face i, whose support point lies on inc's chain from `lo` to `hi` (BracketedSupport; or near
+    // them), after the faces added before it; true when an axis ends the test.
+    bool Add(int i, int lo, int hi)
     {
         const Vec2T<S> normal = m_ref.Normal(i);
-        const Vec2T<S> d = InvRotate(m_inc.xf.q, -normal);
-        m_support = m_last < 0 || i - m_last > kClimbLimit ? BisectSupport(m_inc.polygon, d)
-                                                           : ClimbFrom(m_inc.polygon, d, m_support);
-        m_last = i;
+        const int support = BracketedSupport(m_inc.polygon, InvRotate(m_inc.xf.q, -normal), lo, hi);
         m_faces[m_count] = i;
-        m_separations[m_count] = m_inc.Separation(normal, m_ref.vertices[i], m_support);
+        m_separations[m_count] = m_inc.Separation(normal, m_ref.vertices[i], support);
         ++m_count;
         return m_count == 4 && Flush();
-    }
-
-    // The support point of the last face evaluated (ref's frame), or `otherwise` before the first.
-    Vec2T<S> Witness(Vec2T<S> otherwise) const
-    {
-        return m_last < 0 ? otherwise : TransformPoint(m_inc.xf, m_inc.polygon.vertices[m_support]);
     }
 
     // Takes the pending faces into the lanes (the last one repeated in the lanes left); true when an axis ends the
@@ -426,75 +455,68 @@ class WalkedEvaluation
         const L faces = L::Set(base + S(m_faces[at(0)]), base + S(m_faces[at(1)]), base + S(m_faces[at(2)]),
                                base + S(m_faces[at(3)]));
         m_count = 0;
-        const bool ends = m_lanes.Add(AxisLanes<L>(separations, rates, StillRate(m_velocity)), faces).Any();
-        m_known = std::max(m_known, m_lanes.first.MaxLane());
-        return ends;
+        return m_lanes.Add(AxisLanes<L>(separations, rates, StillRate(m_velocity)), faces).Any();
     }
 
   private:
-    // Faces skipped beyond which the support point is found by bisection rather than climbed to.
-    static constexpr int kClimbLimit = 16;
     const PolygonT<S>& m_ref;
     const IncidentPolygon<S>& m_inc;
     int m_side;
     Vec2T<S> m_velocity;
     SweepLanes<L, S>& m_lanes;
-    S& m_known;
-    int m_support = 0;
-    int m_last = -1;
     int m_count = 0;
     int m_faces[4] = {};
     S m_separations[4] = {};
 };
 
-// Visits the faces of ref in blocks of four with the bounds a witness w (a point of inc) gives: per face, its
-// distance d = Dot(n, w - v_i) bounds the separation s from above (s <= d), and r = Dot(n, velocity) is the rate.
-// `select(d, r)` returns the lanes to evaluate exactly (face `always` is evaluated in any case), which `evaluation`
-// takes in face order; the witness of each block is the support point of the last face evaluated (it turns with the
-// faces, so it bounds the next ones tightly), or `witness` before the first. True when an axis ends the test.
-template <typename L, typename S, typename Select>
-bool VisitBounds(const PolygonT<S>& ref, Vec2T<S> witness, Vec2T<S> velocity, Select&& select,
-                 WalkedEvaluation<L, S>& evaluation, int always = -1)
+// A run of `count` faces of ref (counter-clockwise from run.from) that all face against the motion (`facing`) or
+// all along it, and where the line of the motion crosses the faces the run builds on the Minkowski difference
+// M = ref - inc (ref's frame, inc moving by `velocity`): the offset of the first face whose end on M lies past the
+// line, or `count`. Face i of ref builds the face of M from v_i - w to v_(i+1) - w, with w inc's support point
+// against its normal. Along a run facing the motion these ends cross the line t velocity once, from its right to
+// its left (Cross(end, velocity) rises); along a run facing away, from left to right. The run's faces are bisected
+// on that side, each support point searched for between `supportLo` and `supportHi`, inc's support points for the
+// run's first and last faces on entry, then for the faces bisected on either side (a run's support points turn
+// with its normals, less than half a turn in all). On return they bracket the support points of the faces beside
+// the crossing. O(log^2 n) at most, about O(log n) for polygons of similar sizes.
+template <typename S>
+int CrossingFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, Vec2T<S> velocity, Chain run, int count,
+                 bool facing, int& supportLo, int& supportHi)
 {
     const int n = ref.Count();
-    const L vx = L::Fill(velocity.x);
-    const L vy = L::Fill(velocity.y);
-    for (int i0 = 0; i0 < n; i0 += 4)
-    {
-        const Vec2T<S> w = evaluation.Witness(witness);
-        const FaceBlock<L, S> block(ref, ref.vertices.data, i0);
-        const L distance = block.nx * (L::Fill(w.x) - block.vx) + block.ny * (L::Fill(w.y) - block.vy);
-        const L rate = block.nx * vx + block.ny * vy;
-        int lanes = select(distance, rate).Bits() & (n - i0 >= 4 ? 0xF : (1 << (n - i0)) - 1);
-        lanes |= always >= i0 && always < i0 + 4 ? 1 << (always - i0) : 0;
-        while (lanes != 0)
-        {
-            const int l = __builtin_ctz(static_cast<unsigned>(lanes));
-            lanes &= lanes - 1;
-            if (evaluation.Add(i0 + l))
-            {
-                return true;
-            }
-        }
-    }
-    return false;
+    const auto past = [&](int k) {
+        const int face = run.At(k);
+        const int support =
+            BracketedSupport(inc.polygon, InvRotate(inc.xf.q, -ref.Normal(face)), supportLo, supportHi);
+        const Vec2T<S> end = ref.vertices[Next(face, n)] - TransformPoint(inc.xf, inc.polygon.vertices[support]);
+        const S side = Cross(end, velocity);
+        const bool beyond = facing ? side >= S(0) : side <= S(0);
+        (beyond ? supportHi : supportLo) = support;
+        return beyond;
+    };
+    return FirstPast(count, past);
 }
 
 // The faces of `ref` against a walked `inc` (more than kScanLimit vertices): as SweepFaces, but only the faces that
-// can decide are walked to. A point w of inc bounds each face's separation from above (s <= d, VisitBounds): first
-// inc's support point for the face of ref that meets the motion most head-on (at ref's support point against the
-// velocity), whose entry, if it has one, starts `known`, a lower bound of the latest entry (that face is always
-// walked to, so the lanes hold its entry too); then the support point of the last face walked to. A face with d < 0
-// overlaps from t = 0 on (entry 0, and it keeps `inside`): its exit alone can matter, and only if it comes before
-// the latest entry, which is known after both polygons' faces: the second pass (SweepWalkedExits) takes the exits
-// in. A face that approaches (r < 0) with entry bound d / -r below `known` cannot hold the latest entry, nor tie
-// with it. Every other face (d >= 0 and r >= 0: it may never close; or its entry may be the latest) is walked to,
-// in face order. So the latest entry, its first face and the verdict are those of the full loop, up to rounding
-// where a bound and a separation tie (two support points on an edge parallel to the face). The recorder replays
-// every face, walked for the view, in order.
+// can decide are evaluated, found by bisection: O(log^2 n) at most, never every face (Ericson 5.5.2 on the
+// Minkowski difference M, as a ray cast in Cyrus-Beck form, with the bisection of a ray against a convex outline).
+//   1. The rate r = Dot(n, velocity) changes sign at ref's support points across the motion: from there, face by
+//      face, a run of faces facing the motion (r < -still) and a run facing away (r > still), with the faces
+//      between them (|r| <= still, as AxisLanes rounds r; usually none).
+//   2. The faces that face the motion are faces of M's outline on the side the motion enters: a face's entry time
+//      s / -r is where the line of the motion crosses its line, and along the run those times rise up to the face
+//      of M the line crosses and fall after it (a convex outline). So the latest entry among ref's faces is at one
+//      of the two faces of ref beside that crossing (CrossingFace). Likewise the run facing away: its exit times
+//      -s / r fall to the face of M the line leaves through, then rise, and a face that never closes (s >= 0,
+//      r > 0) has the earliest exit time of all (<= 0), so it is one of the two faces there.
+//   3. Those faces, a face more on each side against rounding, the first and last face of each run and the faces
+//      between the runs (an axis along the motion that never closes) are evaluated exactly, in face order
+//      (WalkedEvaluation): the lanes take their entries, exits and ends as the full loop does, so the latest entry,
+//      its first face and the verdict are those of every face, up to rounding where two faces' times tie.
+//   The recorder replays every face, walked for the view, in order.
 template <typename L, typename S, typename Tracer>
 bool SweepWalkedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                      SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known, WalkedSweep<S>& walk)
+                      SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
 {
     const int n = ref.Count();
     if constexpr (Tracer::kEnabled)
@@ -519,59 +541,103 @@ bool SweepWalkedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int
                    AxisLanes<L>(separations, rates, StillRate(velocity)));
         }
     }
-    const int top = BisectSupport(ref, -velocity);
-    const int before = Prev(top, n);
-    const int seed = Dot(ref.Normal(top), velocity) <= Dot(ref.Normal(before), velocity) ? top : before;
-    const Vec2T<S> seedNormal = ref.Normal(seed);
-    const int seedSupport = BisectSupport(inc.polygon, InvRotate(inc.xf.q, -seedNormal));
-    walk.walked = true;
-    walk.witness = TransformPoint(inc.xf, inc.polygon.vertices[seedSupport]);
-    const S seedSeparation = inc.Separation(seedNormal, ref.vertices[seed], seedSupport);
-    const S rawSeedRate = seedNormal.x * velocity.x + seedNormal.y * velocity.y;
-    const S seedRate = std::abs(rawSeedRate) > StillRate(velocity) ? rawSeedRate : S(0);
-    if (seedSeparation >= S(0) && seedRate < S(0))
-    {
-        known = std::max(known, seedSeparation / -seedRate);
-    }
-    WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
-    // Entry bound d / -r below known, without a division: d < known (1 - 4 eps) (-r) implies it despite the
-    // rounding of the product and the quotient (not that of d itself). A face whose rate is within StillRate of 0
-    // counts as parallel to the motion (AxisLanes): it is walked to, as it may never close.
-    const S shrink = S(1) - S(4) * std::numeric_limits<S>::epsilon();
     const S still = StillRate(velocity);
-    const auto select = [&known, shrink, still](const L& distance, const L& rate) {
-        const L zero = L::Fill(S(0));
-        return ~((zero > distance) | ((L::Fill(-still) > rate) & (L::Fill(known * shrink) * -rate > distance)));
+    const auto facing = [&](int i) { return Dot(ref.Normal(i), velocity) < -still; };
+    const auto away = [&](int i) { return Dot(ref.Normal(i), velocity) > still; };
+    const auto direction = [&](int i) { return InvRotate(inc.xf.q, -ref.Normal(i)); };
+    // A run's first face: the first in the run from `vertex` on, then back while the face before is in the run too.
+    const auto first = [n](int vertex, const auto& inRun) {
+        int f = vertex;
+        for (int k = 0; k < n && !inRun(f); ++k)
+        {
+            f = Next(f, n);
+        }
+        for (int k = 0; k < n && inRun(Prev(f, n)); ++k)
+        {
+            f = Prev(f, n);
+        }
+        return f;
     };
-    const bool ends = VisitBounds<L>(ref, walk.witness, velocity, select, evaluation, seed) || evaluation.Flush();
-    return !ends && !(lanes.first.MaxLane() >= lanes.last.MinLane());
-}
-
-// The second pass of a walked face loop, once the latest entry is known: every face that recedes (r > 0) and
-// whose exit bound -d / r does not clear the latest entry is walked to, so every exit that could come before the
-// latest entry is taken in. False when one exits no later than the latest entry (or an axis never closes): a miss.
-template <typename L, typename S>
-bool SweepWalkedExits(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                      SweepLanes<L, S>& lanes, const WalkedSweep<S>& walk)
-{
-    const S first = lanes.first.MaxLane();
-    S known = first;
-    WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
-    // Exit bound -d / r after the latest entry, without a division: -d > first (1 + 4 eps) r implies it despite
-    // the rounding of the product and the quotient (not that of d itself).
-    const S grow = S(1) + S(4) * std::numeric_limits<S>::epsilon();
-    // Every receding face whose exit bound does not clear the latest entry: its witness may differ from the one
-    // that sent the face here in the first pass, so the selection does not rest on that pass's choice.
-    // A rate within StillRate of 0 counts as 0 (AxisLanes): that face never exits.
-    const S still = StillRate(velocity);
-    const auto select = [first, grow, still](const L& distance, const L& rate) {
-        return (rate > L::Fill(still)) & ~(-distance > L::Fill(first * grow) * rate);
+    // A run's last face: the last in the run before `next`, the first face of the other run.
+    const auto last = [n](int next, const auto& inRun) {
+        int f = Prev(next, n);
+        for (int k = 0; k < n && !inRun(f); ++k)
+        {
+            f = Prev(f, n);
+        }
+        return f;
     };
-    if (VisitBounds<L>(ref, walk.witness, velocity, select, evaluation) || evaluation.Flush())
+    // Looking along the motion, the faces turn to face it at ref's leftmost point, and away at its rightmost.
+    const Vec2T<S> left = LeftPerp(velocity);
+    const int frontFirst = first(BisectSupport(ref, left), facing);
+    const int backFirst = first(BisectSupport(ref, -left), away);
+    const int frontLast = last(backFirst, facing);
+    const int backLast = last(frontFirst, away);
+    // inc's support points for the runs' ends: two bisections, then climbs to the faces beside them.
+    const int frontFirstSupport = BisectSupport(inc.polygon, direction(frontFirst));
+    const int backFirstSupport = BisectSupport(inc.polygon, direction(backFirst));
+    const int frontLastSupport = ClimbFrom(inc.polygon, direction(frontLast), backFirstSupport);
+    const int backLastSupport = ClimbFrom(inc.polygon, direction(backLast), frontFirstSupport);
+    // The faces to evaluate, with the support points that bracket theirs: three beside each crossing, and the runs'
+    // ends.
+    struct Candidate
     {
-        return false;
+        int face;
+        int lo;
+        int hi;
+    };
+    Candidate candidates[10];
+    int count = 0;
+    const auto around = [&](int runFirst, int runLast, int lo, int hi, bool towards) {
+        const Chain run{runFirst, n};
+        const int runCount = (runLast >= runFirst ? runLast - runFirst : runLast - runFirst + n) + 1;
+        const int k = CrossingFace(ref, inc, velocity, run, runCount, towards, lo, hi);
+        for (int j = std::max(0, k - 1); j <= std::min(runCount - 1, k + 1); ++j)
+        {
+            candidates[count++] = {run.At(j), lo, hi};
+        }
+    };
+    around(frontFirst, frontLast, frontFirstSupport, frontLastSupport, true);
+    around(backFirst, backLast, backFirstSupport, backLastSupport, false);
+    candidates[count++] = {frontFirst, frontFirstSupport, frontFirstSupport};
+    candidates[count++] = {frontLast, frontLastSupport, frontLastSupport};
+    candidates[count++] = {backFirst, backFirstSupport, backFirstSupport};
+    candidates[count++] = {backLast, backLastSupport, backLastSupport};
+    // In face order, once each: equal entries then keep the first face, as in the full loop.
+    for (int c = 1; c < count; ++c)
+    {
+        for (int j = c; j > 0 && candidates[j - 1].face > candidates[j].face; --j)
+        {
+            std::swap(candidates[j - 1], candidates[j]);
+        }
     }
-    return !(first >= lanes.last.MinLane());
+    WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes);
+    for (int c = 0; c < count; ++c)
+    {
+        const Candidate& candidate = candidates[c];
+        if ((c == 0 || candidate.face != candidates[c - 1].face) &&
+            evaluation.Add(candidate.face, candidate.lo, candidate.hi))
+        {
+            return false;
+        }
+    }
+    // The faces between the runs: their rate counts as 0, so they have no entry and no exit (in any order), and end
+    // the test when they never close.
+    for (int f = Next(frontLast, n), k = 0; f != backFirst && k < n; f = Next(f, n), ++k)
+    {
+        if (evaluation.Add(f, frontLastSupport, frontLastSupport))
+        {
+            return false;
+        }
+    }
+    for (int f = Next(backLast, n), k = 0; f != frontFirst && k < n; f = Next(f, n), ++k)
+    {
+        if (evaluation.Add(f, backLastSupport, backLastSupport))
+        {
+            return false;
+        }
+    }
+    return !evaluation.Flush() && !(lanes.first.MaxLane() >= lanes.last.MinLane());
 }
 
 // SweepFaces with inc's scan unrolled for its padded vertex count, and a ref of up to 8 faces in one pass.
@@ -592,7 +658,7 @@ bool SweepFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side
 
 template <typename L, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known, WalkedSweep<S>& walk)
+                SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
 {
     switch (inc.scan ? inc.padded : 0)
     {
@@ -605,7 +671,7 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     case 16:
         return SweepFacesN<16>(ref, inc, side, velocity, lanes, replay, tracer);
     default:
-        return SweepWalkedFaces(ref, inc, side, velocity, lanes, replay, tracer, known, walk);
+        return SweepWalkedFaces(ref, inc, side, velocity, lanes, replay, tracer);
     }
 }
 
@@ -695,9 +761,9 @@ int SweptContacts(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& in
 ///      intervals overlap from entry = max(0, s0 / -rate) to exit = -s0 / rate (rate > 0) or forever.
 ///   3. First contact is the latest entry, valid while it is before the earliest exit (strictly: touching at one
 ///      instant is not a hit) and not after t = 1. Each bound only tightens, so the test ends as soon as it fails.
-///      Against a walked polygon (above kScanLimit vertices) a point of it bounds every face's separation, so only
-///      the faces that can hold the latest entry, never close, or exit before the latest entry are walked to
-///      (SweepWalkedFaces, then SweepWalkedExits once the latest entry is known): the same verdict and time.
+///      Against a walked polygon (above kScanLimit vertices) only the faces beside the two places where the line of
+///      the motion crosses the Minkowski difference, and those along the motion, can decide: they are found by
+///      bisection and evaluated alone (SweepWalkedFaces): the same verdict and time, never a pass over every face.
 ///   4. Every s0 < 0: the shapes interpenetrate at t = 0: the static manifold gives the MTV.
 ///   5. A hit: the contact points at the time of impact (kContacts; else none: the time, normal and axis alone),
 ///      the axis of the latest entry as reference face and the other polygon, as mapped for the face loops, moved
@@ -720,21 +786,14 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
             tracer.Finish(replay.exit);
         }
     };
-    // A lower bound of the latest entry, and what the walked face loops leave for their second pass.
-    S known = S(0);
-    WalkedSweep<S> walkA;
-    WalkedSweep<S> walkB;
-    if (!SweepFaces(a, incB, 0, velocityInA, lanes, replay, tracer, known, walkA))
+    if (!SweepFaces(a, incB, 0, velocityInA, lanes, replay, tracer))
     {
         finish();
         return {};
     }
     // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
     const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, std::bool_constant<Tracer::kWide>{});
-    bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, replay, tracer, known, walkB);
-    // Walked polygons: the exits their first pass left, now that the latest entry is known.
-    going = going && !(walkA.walked && !SweepWalkedExits(a, incB, 0, velocityInA, lanes, walkA));
-    going = going && !(walkB.walked && !SweepWalkedExits(b, incA, 1, -velocityInB, lanes, walkB));
+    const bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, replay, tracer);
     finish();
     if (!going)
     {
