@@ -365,6 +365,34 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     return !ends.Any() && !(lanes.first.MaxLane() >= lanes.last.MinLane());
 }
 
+// The recorder's view of the faces of `ref` against a walked `inc`: every face in order, its support point walked
+// to from the one before, with its exact separation, up to the first face that ends the test (Replay).
+template <typename L, typename S, typename Tracer>
+void ReplayWalked(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
+                  SweepState<S>& replay, Tracer& tracer)
+{
+    const int n = ref.Count();
+    bool replayEnded = replay.exit != SweepExit::AllAxesOverlap;
+    int support = 0;
+    for (int i0 = 0; i0 < n && !replayEnded; i0 += 4)
+    {
+        const FaceBlock<L, S> block(ref, ref.vertices.data, i0);
+        S separation[4];
+        for (int l = 0; l < 4; ++l)
+        {
+            const int i = FaceBlock<L, S>::Face(n, i0, l);
+            const Vec2T<S> normal = ref.Normal(i);
+            const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
+            support = i == 0 ? BisectSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
+            separation[l] = inc.Separation(normal, ref.vertices[i], support);
+        }
+        const L separations = L::Set(separation[0], separation[1], separation[2], separation[3]);
+        const L rates = block.nx * L::Fill(velocity.x) + block.ny * L::Fill(velocity.y);
+        Replay(tracer, replay, replayEnded, side, i0, n, separations, rates,
+               AxisLanes<L>(separations, rates, StillRate(velocity)));
+    }
+}
+
 // The faces (or vertices) of a polygon along a counter-clockwise chain from `from`, by their offset k from it.
 struct Chain
 {
@@ -379,18 +407,13 @@ template <typename Past>
 int FirstPast(int count, Past&& past)
 {
     int lo = 0;
-    int hi = count;
-    while (lo < hi)
+    int left = count; // offsets from lo still in question
+    while (left > 0)
     {
-        const int mid = lo + (hi - lo) / 2;
-        if (past(mid))
-        {
-            hi = mid;
-        }
-        else
-        {
-            lo = mid + 1;
-        }
+        const int half = left / 2;
+        const bool beyond = past(lo + half);
+        lo = beyond ? lo : lo + half + 1;
+        left = beyond ? half : left - half - 1;
     }
     return lo;
 }
@@ -408,17 +431,40 @@ int BracketedSupport(const PolygonT<S>& polygon, Vec2T<S> d, int lo, int hi)
     return ClimbFrom(polygon, d, chain.At(k));
 }
 
+// What the walked face loop of one polygon (SweepWalkedFaces) leaves for its second pass (SweepWalkedExits).
+template <typename S>
+struct WalkedSweep
+{
+    bool walked = false; // inc was walked: its exit-only faces wait for the second pass
+    Vec2T<S> witness{};  // the point of inc that bounds the separations of ref's faces
+};
+
 // The faces of a walked face loop that need their exact separation, evaluated in increasing face order four at a
-// time into the lanes (SweepLanes::Add): inc's support point for each, searched for between two support points
-// that bracket it, its separation, and the axis times.
+// time into the lanes (SweepLanes::Add): inc's support point for each (climbed from the one before, found by
+// bisection after a gap, or searched for between two that bracket it), its separation, and the axis times. `known`
+// rises to the latest entry seen.
 template <typename L, typename S>
 class WalkedEvaluation
 {
   public:
     WalkedEvaluation(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                     SweepLanes<L, S>& lanes)
-        : m_ref(ref), m_inc(inc), m_side(side), m_velocity(velocity), m_lanes(lanes)
+                     SweepLanes<L, S>& lanes, S& known)
+        : m_ref(ref), m_inc(inc), m_side(side), m_velocity(velocity), m_lanes(lanes), m_known(known)
     {
+    }
+
+    // Evaluates face i (after the faces added before it); true when an axis ends the test.
+    bool Add(int i)
+    {
+        const Vec2T<S> normal = m_ref.Normal(i);
+        const Vec2T<S> d = InvRotate(m_inc.xf.q, -normal);
+        m_support = m_last < 0 || i - m_last > kClimbLimit ? BisectSupport(m_inc.polygon, d)
+                                                           : ClimbFrom(m_inc.polygon, d, m_support);
+        m_last = i;
+        m_faces[m_count] = i;
+        m_separations[m_count] = m_inc.Separation(normal, m_ref.vertices[i], m_support);
+        ++m_count;
+        return m_count == 4 && Flush();
     }
 
     // Evaluates face i, whose support point lies on inc's chain from `lo` to `hi` (BracketedSupport; or near
@@ -426,11 +472,18 @@ class WalkedEvaluation
     bool Add(int i, int lo, int hi)
     {
         const Vec2T<S> normal = m_ref.Normal(i);
-        const int support = BracketedSupport(m_inc.polygon, InvRotate(m_inc.xf.q, -normal), lo, hi);
+        m_support = BracketedSupport(m_inc.polygon, InvRotate(m_inc.xf.q, -normal), lo, hi);
+        m_last = i;
         m_faces[m_count] = i;
-        m_separations[m_count] = m_inc.Separation(normal, m_ref.vertices[i], support);
+        m_separations[m_count] = m_inc.Separation(normal, m_ref.vertices[i], m_support);
         ++m_count;
         return m_count == 4 && Flush();
+    }
+
+    // The support point of the last face evaluated (ref's frame), or `otherwise` before the first.
+    Vec2T<S> Witness(Vec2T<S> otherwise) const
+    {
+        return m_last < 0 ? otherwise : TransformPoint(m_inc.xf, m_inc.polygon.vertices[m_support]);
     }
 
     // Takes the pending faces into the lanes (the last one repeated in the lanes left); true when an axis ends the
@@ -455,19 +508,135 @@ class WalkedEvaluation
         const L faces = L::Set(base + S(m_faces[at(0)]), base + S(m_faces[at(1)]), base + S(m_faces[at(2)]),
                                base + S(m_faces[at(3)]));
         m_count = 0;
-        return m_lanes.Add(AxisLanes<L>(separations, rates, StillRate(m_velocity)), faces).Any();
+        const bool ends = m_lanes.Add(AxisLanes<L>(separations, rates, StillRate(m_velocity)), faces).Any();
+        m_known = std::max(m_known, m_lanes.first.MaxLane());
+        return ends;
     }
 
   private:
+    // Faces skipped beyond which the support point is found by bisection rather than climbed to.
+    static constexpr int kClimbLimit = 16;
     const PolygonT<S>& m_ref;
     const IncidentPolygon<S>& m_inc;
     int m_side;
     Vec2T<S> m_velocity;
     SweepLanes<L, S>& m_lanes;
+    S& m_known;
+    int m_support = 0;
+    int m_last = -1;
     int m_count = 0;
     int m_faces[4] = {};
     S m_separations[4] = {};
 };
+
+// Visits the faces of ref in blocks of four with the bounds a witness w (a point of inc) gives: per face, its
+// distance d = Dot(n, w - v_i) bounds the separation s from above (s <= d), and r = Dot(n, velocity) is the rate.
+// `select(d, r)` returns the lanes to evaluate exactly (face `always` is evaluated in any case), which `evaluation`
+// takes in face order; the witness of each block is the support point of the last face evaluated (it turns with the
+// faces, so it bounds the next ones tightly), or `witness` before the first. True when an axis ends the test.
+template <typename L, typename S, typename Select>
+bool VisitBounds(const PolygonT<S>& ref, Vec2T<S> witness, Vec2T<S> velocity, Select&& select,
+                 WalkedEvaluation<L, S>& evaluation, int always = -1)
+{
+    const int n = ref.Count();
+    const L vx = L::Fill(velocity.x);
+    const L vy = L::Fill(velocity.y);
+    for (int i0 = 0; i0 < n; i0 += 4)
+    {
+        const Vec2T<S> w = evaluation.Witness(witness);
+        const FaceBlock<L, S> block(ref, ref.vertices.data, i0);
+        const L distance = block.nx * (L::Fill(w.x) - block.vx) + block.ny * (L::Fill(w.y) - block.vy);
+        const L rate = block.nx * vx + block.ny * vy;
+        int lanes = select(distance, rate).Bits() & (n - i0 >= 4 ? 0xF : (1 << (n - i0)) - 1);
+        lanes |= always >= i0 && always < i0 + 4 ? 1 << (always - i0) : 0;
+        while (lanes != 0)
+        {
+            const int l = __builtin_ctz(static_cast<unsigned>(lanes));
+            lanes &= lanes - 1;
+            if (evaluation.Add(i0 + l))
+            {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+// The faces of `ref` against a walked `inc` (more than kScanLimit vertices): as SweepFaces, but only the faces that
+// can decide are walked to. A point w of inc bounds each face's separation from above (s <= d, VisitBounds): first
+// inc's support point for the face of ref that meets the motion most head-on (at ref's support point against the
+// velocity), whose entry, if it has one, starts `known`, a lower bound of the latest entry (that face is always
+// walked to, so the lanes hold its entry too); then the support point of the last face walked to. A face with d < 0
+// overlaps from t = 0 on (entry 0, and it keeps `inside`): its exit alone can matter, and only if it comes before
+// the latest entry, which is known after both polygons' faces: the second pass (SweepBoundedExits) takes the exits
+// in. A face that approaches (r < 0) with entry bound d / -r below `known` cannot hold the latest entry, nor tie
+// with it. Every other face (d >= 0 and r >= 0: it may never close; or its entry may be the latest) is walked to,
+// in face order. So the latest entry, its first face and the verdict are those of the full loop, up to rounding
+// where a bound and a separation tie (two support points on an edge parallel to the face). The recorder replays
+// every face, walked for the view, in order.
+template <typename L, typename S, typename Tracer>
+bool SweepBoundedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
+                       SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known, WalkedSweep<S>& walk)
+{
+    const int n = ref.Count();
+    if constexpr (Tracer::kEnabled)
+    {
+        ReplayWalked<L>(ref, inc, side, velocity, replay, tracer);
+    }
+    const int top = BisectSupport(ref, -velocity);
+    const int before = Prev(top, n);
+    const int seed = Dot(ref.Normal(top), velocity) <= Dot(ref.Normal(before), velocity) ? top : before;
+    const Vec2T<S> seedNormal = ref.Normal(seed);
+    const int seedSupport = BisectSupport(inc.polygon, InvRotate(inc.xf.q, -seedNormal));
+    walk.walked = true;
+    walk.witness = TransformPoint(inc.xf, inc.polygon.vertices[seedSupport]);
+    const S seedSeparation = inc.Separation(seedNormal, ref.vertices[seed], seedSupport);
+    const S rawSeedRate = seedNormal.x * velocity.x + seedNormal.y * velocity.y;
+    const S seedRate = std::abs(rawSeedRate) > StillRate(velocity) ? rawSeedRate : S(0);
+    if (seedSeparation >= S(0) && seedRate < S(0))
+    {
+        known = std::max(known, seedSeparation / -seedRate);
+    }
+    WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
+    // Entry bound d / -r below known, without a division: d < known (1 - 4 eps) (-r) implies it despite the
+    // rounding of the product and the quotient (not that of d itself). A face whose rate is within StillRate of 0
+    // counts as parallel to the motion (AxisLanes): it is walked to, as it may never close.
+    const S shrink = S(1) - S(4) * std::numeric_limits<S>::epsilon();
+    const S still = StillRate(velocity);
+    const auto select = [&known, shrink, still](const L& distance, const L& rate) {
+        const L zero = L::Fill(S(0));
+        return ~((zero > distance) | ((L::Fill(-still) > rate) & (L::Fill(known * shrink) * -rate > distance)));
+    };
+    const bool ends = VisitBounds<L>(ref, walk.witness, velocity, select, evaluation, seed) || evaluation.Flush();
+    return !ends && !(lanes.first.MaxLane() >= lanes.last.MinLane());
+}
+
+// The second pass of a walked face loop, once the latest entry is known: every face that recedes (r > 0) and
+// whose exit bound -d / r does not clear the latest entry is walked to, so every exit that could come before the
+// latest entry is taken in. False when one exits no later than the latest entry (or an axis never closes): a miss.
+template <typename L, typename S>
+bool SweepBoundedExits(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
+                       SweepLanes<L, S>& lanes, const WalkedSweep<S>& walk)
+{
+    const S first = lanes.first.MaxLane();
+    S known = first;
+    WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
+    // Exit bound -d / r after the latest entry, without a division: -d > first (1 + 4 eps) r implies it despite
+    // the rounding of the product and the quotient (not that of d itself).
+    const S grow = S(1) + S(4) * std::numeric_limits<S>::epsilon();
+    // Every receding face whose exit bound does not clear the latest entry: its witness may differ from the one
+    // that sent the face here in the first pass, so the selection does not rest on that pass's choice.
+    // A rate within StillRate of 0 counts as 0 (AxisLanes): that face never exits.
+    const S still = StillRate(velocity);
+    const auto select = [first, grow, still](const L& distance, const L& rate) {
+        return (rate > L::Fill(still)) & ~(-distance > L::Fill(first * grow) * rate);
+    };
+    if (VisitBounds<L>(ref, walk.witness, velocity, select, evaluation) || evaluation.Flush())
+    {
+        return false;
+    }
+    return !(first >= lanes.last.MinLane());
+}
 
 // A run of `count` faces of ref (counter-clockwise from run.from) that all face against the motion (`facing`) or
 // all along it, and where the line of the motion crosses the faces the run builds on the Minkowski difference
@@ -515,31 +684,13 @@ int CrossingFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, Vec2T<S>
 //      its first face and the verdict are those of every face, up to rounding where two faces' times tie.
 //   The recorder replays every face, walked for the view, in order.
 template <typename L, typename S, typename Tracer>
-bool SweepWalkedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                      SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
+bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
+                        SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known)
 {
     const int n = ref.Count();
     if constexpr (Tracer::kEnabled)
     {
-        bool replayEnded = replay.exit != SweepExit::AllAxesOverlap;
-        int support = 0;
-        for (int i0 = 0; i0 < n && !replayEnded; i0 += 4)
-        {
-            const FaceBlock<L, S> block(ref, ref.vertices.data, i0);
-            S separation[4];
-            for (int l = 0; l < 4; ++l)
-            {
-                const int i = FaceBlock<L, S>::Face(n, i0, l);
-                const Vec2T<S> normal = ref.Normal(i);
-                const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
-                support = i == 0 ? BisectSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
-                separation[l] = inc.Separation(normal, ref.vertices[i], support);
-            }
-            const L separations = L::Set(separation[0], separation[1], separation[2], separation[3]);
-            const L rates = block.nx * L::Fill(velocity.x) + block.ny * L::Fill(velocity.y);
-            Replay(tracer, replay, replayEnded, side, i0, n, separations, rates,
-                   AxisLanes<L>(separations, rates, StillRate(velocity)));
-        }
+        ReplayWalked<L>(ref, inc, side, velocity, replay, tracer);
     }
     const S still = StillRate(velocity);
     const auto facing = [&](int i) { return Dot(ref.Normal(i), velocity) < -still; };
@@ -611,7 +762,7 @@ bool SweepWalkedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int
             std::swap(candidates[j - 1], candidates[j]);
         }
     }
-    WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes);
+    WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
     for (int c = 0; c < count; ++c)
     {
         const Candidate& candidate = candidates[c];
@@ -656,10 +807,20 @@ bool SweepFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side
     }
 }
 
+// Polygons with more faces than this have them bisected (SweepBisectedFaces) rather than bounded face by face
+// (SweepBoundedFaces) or scanned. A bisection's reads and branches depend on each other, so each waits for the one
+// before, while a pass over the faces reads ahead: on polygons in the cache the bisection is the faster above about
+// 128 faces, on polygons that come from memory above about 512 (SweepTime of same-sized pairs).
+constexpr int kBisectFaces = 256;
+
 template <typename L, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
+                SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known, WalkedSweep<S>& walk)
 {
+    if (ref.Count() > kBisectFaces)
+    {
+        return SweepBisectedFaces(ref, inc, side, velocity, lanes, replay, tracer, known);
+    }
     switch (inc.scan ? inc.padded : 0)
     {
     case 4:
@@ -671,7 +832,7 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     case 16:
         return SweepFacesN<16>(ref, inc, side, velocity, lanes, replay, tracer);
     default:
-        return SweepWalkedFaces(ref, inc, side, velocity, lanes, replay, tracer);
+        return SweepBoundedFaces(ref, inc, side, velocity, lanes, replay, tracer, known, walk);
     }
 }
 
@@ -786,14 +947,21 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
             tracer.Finish(replay.exit);
         }
     };
-    if (!SweepFaces(a, incB, 0, velocityInA, lanes, replay, tracer))
+    // A lower bound of the latest entry, and what the bounded face loops leave for their second pass.
+    S known = S(0);
+    WalkedSweep<S> walkA;
+    WalkedSweep<S> walkB;
+    if (!SweepFaces(a, incB, 0, velocityInA, lanes, replay, tracer, known, walkA))
     {
         finish();
         return {};
     }
     // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
     const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, std::bool_constant<Tracer::kWide>{});
-    const bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, replay, tracer);
+    bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, replay, tracer, known, walkB);
+    // Bounded face loops: the exits their first pass left, now that the latest entry is known.
+    going = going && !(walkA.walked && !SweepBoundedExits(a, incB, 0, velocityInA, lanes, walkA));
+    going = going && !(walkB.walked && !SweepBoundedExits(b, incA, 1, -velocityInB, lanes, walkB));
     finish();
     if (!going)
     {
