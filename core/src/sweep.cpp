@@ -684,9 +684,8 @@ int CrossingFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, Vec2T<S>
 //      its first face and the verdict are those of every face, up to rounding where two faces' times tie.
 //   The recorder replays every face, walked for the view, in order.
 template <typename L, typename S, typename Tracer>
-[[gnu::noinline]] bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
-                                          Vec2T<S> velocity, SweepLanes<L, S>& lanes, SweepState<S>& replay,
-                                          Tracer& tracer, S& known)
+bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
+                        SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known)
 {
     const int n = ref.Count();
     if constexpr (Tracer::kEnabled)
