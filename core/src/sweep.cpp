@@ -791,17 +791,10 @@ bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
     return !evaluation.Flush() && !(lanes.first.MaxLane() >= lanes.last.MinLane());
 }
 
-// Polygons with more faces than this have them bisected (SweepBisectedFaces) rather than bounded face by face
-// (SweepBoundedFaces) or scanned. A bisection's reads and branches depend on each other, so each waits for the one
-// before, while a pass over the faces reads ahead: on polygons in the cache the bisection is the faster above about
-// 128 faces, on polygons that come from memory above about 512 (SweepTime of same-sized pairs).
-constexpr int kBisectFaces = 256;
-
-// SweepFaces with inc's scan unrolled for its padded vertex count, and a ref of up to 8 faces in one pass; a ref
-// above kBisectFaces bisected.
+// SweepFaces with inc's scan unrolled for its padded vertex count, and a ref of up to 8 faces in one pass.
 template <int N, typename L, typename S, typename Tracer>
 bool SweepFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                 SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known)
+                 SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
 {
     switch ((ref.Count() + 3) / 4)
     {
@@ -810,29 +803,36 @@ bool SweepFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side
     case 2:
         return SweepFaces<N, 2>(ref, inc, side, velocity, lanes, replay, tracer);
     default:
-        return ref.Count() > kBisectFaces ? SweepBisectedFaces(ref, inc, side, velocity, lanes, replay, tracer, known)
-                                          : SweepFaces<N, 0>(ref, inc, side, velocity, lanes, replay, tracer);
+        return SweepFaces<N, 0>(ref, inc, side, velocity, lanes, replay, tracer);
     }
 }
+
+// Polygons with more faces than this have them bisected (SweepBisectedFaces) rather than bounded face by face
+// (SweepBoundedFaces) or scanned. A bisection's reads and branches depend on each other, so each waits for the one
+// before, while a pass over the faces reads ahead: on polygons in the cache the bisection is the faster above about
+// 128 faces, on polygons that come from memory above about 512 (SweepTime of same-sized pairs).
+constexpr int kBisectFaces = 256;
 
 template <typename L, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
                 SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known, WalkedSweep<S>& walk)
 {
+    if (ref.Count() > kBisectFaces) [[unlikely]]
+    {
+        return SweepBisectedFaces(ref, inc, side, velocity, lanes, replay, tracer, known);
+    }
     switch (inc.scan ? inc.padded : 0)
     {
     case 4:
-        return SweepFacesN<4>(ref, inc, side, velocity, lanes, replay, tracer, known);
+        return SweepFacesN<4>(ref, inc, side, velocity, lanes, replay, tracer);
     case 8:
-        return SweepFacesN<8>(ref, inc, side, velocity, lanes, replay, tracer, known);
+        return SweepFacesN<8>(ref, inc, side, velocity, lanes, replay, tracer);
     case 12:
-        return SweepFacesN<12>(ref, inc, side, velocity, lanes, replay, tracer, known);
+        return SweepFacesN<12>(ref, inc, side, velocity, lanes, replay, tracer);
     case 16:
-        return SweepFacesN<16>(ref, inc, side, velocity, lanes, replay, tracer, known);
+        return SweepFacesN<16>(ref, inc, side, velocity, lanes, replay, tracer);
     default:
-        return ref.Count() > kBisectFaces
-                   ? SweepBisectedFaces(ref, inc, side, velocity, lanes, replay, tracer, known)
-                   : SweepBoundedFaces(ref, inc, side, velocity, lanes, replay, tracer, known, walk);
+        return SweepBoundedFaces(ref, inc, side, velocity, lanes, replay, tracer, known, walk);
     }
 }
 
