@@ -293,7 +293,8 @@ void Replay(Tracer& tracer, SweepState<S>& replay, bool& replayEnded, int side, 
 
 // The faces of `ref` (side 0 = A, 1 = B) against `inc` mapped into ref's frame; `velocity` is B's motion relative
 // to A in ref's frame, times -1 when ref is B (it is then A that moves towards ref). False when an axis ends the
-// test with a miss. N is inc's padded vertex count (inc scanned; a walked inc goes to SweepWalkedFaces).
+// test with a miss. N is inc's padded vertex count (inc scanned; a walked inc goes to SweepBoundedFaces, a ref above
+// kBisectFaces faces to SweepBisectedFaces).
 //   Per face: separation s at t = 0 (as in the static face query, but with unit normals) and its rate
 //   r = Dot(n, velocity), then its entry and exit (AxisLanes). The faces are decided four at a time, in lanes:
 //   each lane keeps the latest entry it saw (and its face) and the earliest exit, so there is no branch per face,
@@ -431,7 +432,7 @@ int BracketedSupport(const PolygonT<S>& polygon, Vec2T<S> d, int lo, int hi)
     return ClimbFrom(polygon, d, chain.At(k));
 }
 
-// What the walked face loop of one polygon (SweepWalkedFaces) leaves for its second pass (SweepWalkedExits).
+// What the bounded face loop of one polygon (SweepBoundedFaces) leaves for its second pass (SweepBoundedExits).
 template <typename S>
 struct WalkedSweep
 {
@@ -642,12 +643,12 @@ bool SweepBoundedExits(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
 // all along it, and where the line of the motion crosses the faces the run builds on the Minkowski difference
 // M = ref - inc (ref's frame, inc moving by `velocity`): the offset of the first face whose end on M lies past the
 // line, or `count`. Face i of ref builds the face of M from v_i - w to v_(i+1) - w, with w inc's support point
-// against its normal. Along a run facing the motion these ends cross the line t velocity once, from its right to
-// its left (Cross(end, velocity) rises); along a run facing away, from left to right. The run's faces are bisected
-// on that side, each support point searched for between `supportLo` and `supportHi`, inc's support points for the
-// run's first and last faces on entry, then for the faces bisected on either side (a run's support points turn
-// with its normals, less than half a turn in all). On return they bracket the support points of the faces beside
-// the crossing. O(log^2 n) at most, about O(log n) for polygons of similar sizes.
+// against its normal. Along a run facing the motion these ends cross the line t velocity once, from its left to
+// its right, looking along the motion (Cross(end, velocity) rises); along a run facing away, from right to left. The
+// run's faces are bisected on that side, each support point searched for between `supportLo` and `supportHi`, inc's
+// support points for the run's first and last faces on entry, then for the faces bisected on either side (a run's
+// support points turn with its normals, less than half a turn in all). On return they bracket the support points of the
+// faces beside the crossing. O(log n log m) for a run of n faces and an inc of m vertices.
 template <typename S>
 int CrossingFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, Vec2T<S> velocity, Chain run, int count,
                  bool facing, int& supportLo, int& supportHi)
@@ -666,9 +667,10 @@ int CrossingFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, Vec2T<S>
     return FirstPast(count, past);
 }
 
-// The faces of `ref` against a walked `inc` (more than kScanLimit vertices): as SweepFaces, but only the faces that
-// can decide are evaluated, found by bisection: O(log^2 n) at most, never every face (Ericson 5.5.2 on the
-// Minkowski difference M, as a ray cast in Cyrus-Beck form, with the bisection of a ray against a convex outline).
+// The faces of a `ref` of more than kBisectFaces faces against `inc` (walked or scanned): as SweepFaces, but only the
+// faces that can decide are evaluated, found by bisection, never every face: O(log n log m) steps for ref's n faces
+// and inc's m vertices, plus one per face of either polygon parallel to the motion (Ericson 5.5.2 on the Minkowski
+// difference M, as a ray cast in Cyrus-Beck form, with the bisection of a ray against a convex outline).
 //   1. The rate r = Dot(n, velocity) changes sign at ref's support points across the motion: from there, face by
 //      face, a run of faces facing the motion (r < -still) and a run facing away (r > still), with the faces
 //      between them (|r| <= still, as AxisLanes rounds r; usually none).
@@ -678,10 +680,14 @@ int CrossingFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, Vec2T<S>
 //      of the two faces of ref beside that crossing (CrossingFace). Likewise the run facing away: its exit times
 //      -s / r fall to the face of M the line leaves through, then rise, and a face that never closes (s >= 0,
 //      r > 0) has the earliest exit time of all (<= 0), so it is one of the two faces there.
-//   3. Those faces, a face more on each side against rounding, the first and last face of each run and the faces
-//      between the runs (an axis along the motion that never closes) are evaluated exactly, in face order
+//   3. Those faces, the face after them (two faces whose times tie where the line passes through their common end
+//      on M), the first and last face of each run and the faces between the runs (an axis along the motion that
+//      never closes) are evaluated exactly, in face order
 //      (WalkedEvaluation): the lanes take their entries, exits and ends as the full loop does, so the latest entry,
-//      its first face and the verdict are those of every face, up to rounding where two faces' times tie.
+//      its first face and the verdict are those of every face, up to rounding where two faces' times tie, and up to
+//      a face that rounding alone takes for parallel to the motion inside a run (nearly collinear faces). A NaN
+//      velocity leaves no face in either run: the faces evaluated then decide alone, a miss unless the shapes
+//      interpenetrate, as with every face.
 //   The recorder replays every face, walked for the view, in order.
 template <typename L, typename S, typename Tracer>
 bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
@@ -739,13 +745,20 @@ bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
     };
     Candidate candidates[10];
     int count = 0;
+    // On return from CrossingFace, lo and hi bracket the support points of faces k - 1 and k; that of face k + 1
+    // lies between hi and the run's last.
     const auto around = [&](int runFirst, int runLast, int lo, int hi, bool towards) {
         const Chain run{runFirst, n};
         const int runCount = (runLast >= runFirst ? runLast - runFirst : runLast - runFirst + n) + 1;
+        const int runLastSupport = hi;
         const int k = CrossingFace(ref, inc, velocity, run, runCount, towards, lo, hi);
-        for (int j = std::max(0, k - 1); j <= std::min(runCount - 1, k + 1); ++j)
+        for (int j = std::max(0, k - 1); j <= std::min(runCount - 1, k); ++j)
         {
             candidates[count++] = {run.At(j), lo, hi};
+        }
+        if (k + 1 < runCount)
+        {
+            candidates[count++] = {run.At(k + 1), hi, runLastSupport};
         }
     };
     around(frontFirst, frontLast, frontFirstSupport, frontLastSupport, true);
@@ -922,9 +935,12 @@ int SweptContacts(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& in
 ///      intervals overlap from entry = max(0, s0 / -rate) to exit = -s0 / rate (rate > 0) or forever.
 ///   3. First contact is the latest entry, valid while it is before the earliest exit (strictly: touching at one
 ///      instant is not a hit) and not after t = 1. Each bound only tightens, so the test ends as soon as it fails.
-///      Against a walked polygon (above kScanLimit vertices) only the faces beside the two places where the line of
-///      the motion crosses the Minkowski difference, and those along the motion, can decide: they are found by
-///      bisection and evaluated alone (SweepWalkedFaces): the same verdict and time, never a pass over every face.
+///      Against a walked polygon (above kScanLimit vertices) a point of it bounds every face's separation, so only
+///      the faces that can hold the latest entry, never close, or exit before the latest entry are walked to
+///      (SweepBoundedFaces, then SweepBoundedExits once the latest entry is known). A polygon above kBisectFaces
+///      faces is not passed over: only its faces beside the two places where the line of the motion crosses the
+///      Minkowski difference, and those along the motion, can decide; they are found by bisection and evaluated
+///      alone (SweepBisectedFaces). Either way the same verdict and time.
 ///   4. Every s0 < 0: the shapes interpenetrate at t = 0: the static manifold gives the MTV.
 ///   5. A hit: the contact points at the time of impact (kContacts; else none: the time, normal and axis alone),
 ///      the axis of the latest entry as reference face and the other polygon, as mapped for the face loops, moved

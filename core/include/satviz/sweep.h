@@ -97,7 +97,8 @@ using SweepResult = SweepResultT<double>;
 /// Cost: polygons of up to 16 vertices are scanned whole; against a larger one each face's separation is bounded by
 /// one point of it and only the faces that can decide are walked to; the faces of a polygon above 256 faces are not
 /// visited one by one: only those beside the places where the line of the motion enters and leaves the Minkowski
-/// difference (found by bisection) are evaluated, O(log^2 n) at most.
+/// difference (found by bisection) are evaluated, O(log n log m) for n faces against m vertices
+/// (plus one step per face parallel to the motion).
 /// With a non-null `trace`, every axis is recorded (circle pairs: the polygon's faces or the line of centres, then
 /// the vertex axis of a hit on a rounded corner); the result is bit-identical either way.
 template <typename S>
