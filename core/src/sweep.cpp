@@ -459,13 +459,9 @@ class WalkedEvaluation
     {
         const Vec2T<S> normal = m_ref.Normal(i);
         const Vec2T<S> d = InvRotate(m_inc.xf.q, -normal);
-        m_support = m_last < 0 || i - m_last > kClimbLimit ? BisectSupport(m_inc.polygon, d)
-                                                           : ClimbFrom(m_inc.polygon, d, m_support);
-        m_last = i;
-        m_faces[m_count] = i;
-        m_separations[m_count] = m_inc.Separation(normal, m_ref.vertices[i], m_support);
-        ++m_count;
-        return m_count == 4 && Flush();
+        return Take(i, normal,
+                    m_last < 0 || i - m_last > kClimbLimit ? BisectSupport(m_inc.polygon, d)
+                                                           : ClimbFrom(m_inc.polygon, d, m_support));
     }
 
     // Evaluates face i, whose support point lies on inc's chain from `lo` to `hi` (BracketedSupport; or near
@@ -473,12 +469,7 @@ class WalkedEvaluation
     bool Add(int i, int lo, int hi)
     {
         const Vec2T<S> normal = m_ref.Normal(i);
-        m_support = BracketedSupport(m_inc.polygon, InvRotate(m_inc.xf.q, -normal), lo, hi);
-        m_last = i;
-        m_faces[m_count] = i;
-        m_separations[m_count] = m_inc.Separation(normal, m_ref.vertices[i], m_support);
-        ++m_count;
-        return m_count == 4 && Flush();
+        return Take(i, normal, BracketedSupport(m_inc.polygon, InvRotate(m_inc.xf.q, -normal), lo, hi));
     }
 
     // The support point of the last face evaluated (ref's frame), or `otherwise` before the first.
@@ -515,6 +506,18 @@ class WalkedEvaluation
     }
 
   private:
+    // Face i, its unit normal and inc's support point for it, into the pending faces; true when an axis ends the
+    // test.
+    bool Take(int i, Vec2T<S> normal, int support)
+    {
+        m_support = support;
+        m_last = i;
+        m_faces[m_count] = i;
+        m_separations[m_count] = m_inc.Separation(normal, m_ref.vertices[i], support);
+        ++m_count;
+        return m_count == 4 && Flush();
+    }
+
     // Faces skipped beyond which the support point is found by bisection rather than climbed to.
     static constexpr int kClimbLimit = 16;
     const PolygonT<S>& m_ref;
@@ -682,12 +685,11 @@ int CrossingFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, Vec2T<S>
 //      r > 0) has the earliest exit time of all (<= 0), so it is one of the two faces there.
 //   3. Those faces, the face after them (two faces whose times tie where the line passes through their common end
 //      on M), the first and last face of each run and the faces between the runs (an axis along the motion that
-//      never closes) are evaluated exactly, in face order
-//      (WalkedEvaluation): the lanes take their entries, exits and ends as the full loop does, so the latest entry,
-//      its first face and the verdict are those of every face, up to rounding where two faces' times tie, and up to
-//      a face that rounding alone takes for parallel to the motion inside a run (nearly collinear faces). A NaN
-//      velocity leaves no face in either run: the faces evaluated then decide alone, a miss unless the shapes
-//      interpenetrate, as with every face.
+//      never closes) are evaluated exactly, in face order (WalkedEvaluation): the lanes take their entries, exits
+//      and ends as the full loop does, so the latest entry, its first face and the verdict are those of every face,
+//      up to rounding where two faces' times tie, and up to a face that rounding alone takes for parallel to the
+//      motion inside a run (nearly collinear faces). A NaN velocity leaves no face in either run: the faces
+//      evaluated then decide alone, a miss unless the shapes interpenetrate, as with every face.
 //   The recorder replays every face, walked for the view, in order.
 template <typename L, typename S, typename Tracer>
 bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
