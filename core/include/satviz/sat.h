@@ -21,6 +21,8 @@
 //   slide.h     MoveAndSlide: move a shape through a step, stopping at surfaces and sliding along them.
 //   raycast.h   RayCast(shape, xf, p1, p2): where a segment first meets a shape (bullets, picking).
 //   cache.h     SatCache: a pair's separating face from the previous frame, tested first by Overlap next frame.
+//   textbook.h  TextbookCollide and TextbookSweep: the test as textbooks teach it (intervals on each distinct
+//               axis), for reading and for the teaching views; the queries above answer the same, faster.
 //
 // CONVENTIONS
 //   y points up; angles are radians, counter-clockwise. Polygon vertices are listed counter-clockwise in the body
@@ -60,4 +62,5 @@
 #include <satviz/shape.h>
 #include <satviz/slide.h>
 #include <satviz/sweep.h>
+#include <satviz/textbook.h>
 #include <satviz/trace.h>
