@@ -497,7 +497,7 @@ void App::Shortcuts()
             if (target.empty())
             {
                 const std::filesystem::path base = file.empty() ? "satviz.json" : file;
-                target = base.parent_path() / (base.stem().string() + "-step" + std::to_string(step) + ".png");
+                target = base.parent_path() / (base.stem().string() + "-step" + std::to_string(step + 1) + ".png");
             }
             exportPath_ = target.string();
         }
@@ -602,7 +602,8 @@ void App::MenuBar()
             const std::filesystem::path base = file.empty() ? "satviz.json" : file;
             exportPath_ =
                 options_.exportPath.empty()
-                    ? (base.parent_path() / (base.stem().string() + "-step" + std::to_string(step) + ".png")).string()
+                    ? (base.parent_path() / (base.stem().string() + "-step" + std::to_string(step + 1) + ".png"))
+                          .string()
                     : options_.exportPath;
         }
         ImGui::Separator();
@@ -780,6 +781,21 @@ void App::StepControls()
         dirty = true;
         Refresh();
     }
+    int steps = scene.view.steps == StepView::Faces ? 1 : 0;
+    const char* views[] = {"textbook SAT: both intervals per axis", "face tests, as the fast path runs them"};
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::Combo("##steps", &steps, views, 2))
+    {
+        scene.view.steps = steps == 1 ? StepView::Faces : StepView::Textbook;
+        dirty = true;
+        Refresh();
+    }
+    if (ImGui::IsItemHovered())
+    {
+        ImGui::SetTooltip("The textbook test projects both shapes on each distinct axis and compares the intervals.\n"
+                          "The fast queries test faces instead: does the other shape lie wholly beyond this face?\n"
+                          "Each axis is two face tests, one per side; both give the same verdict and MTV.");
+    }
 
     ImGui::Separator();
     const int last = study.VerdictStep();
@@ -828,9 +844,12 @@ void App::StepControls()
     ImGui::TextWrapped("%s", DescribeStep(scene, study, step).c_str());
 
     ImGui::Separator();
-    ImGui::TextUnformatted("Axes tested (click one)");
-    HelpMarker("Each row is one step of the test: the axis, then the push that separates the shapes along it or "
-               "the gap between them. The test stops at the first axis with a gap (a separating axis).");
+    ImGui::TextUnformatted(study.Textbook() ? "Axes tested (click one)" : "Face tests run (click one)");
+    HelpMarker(study.Textbook()
+                   ? "Each row is one axis: the overlap of the two intervals on it (the shorter push that separates "
+                     "them) or the gap between them. The test stops at the first axis with a gap (a separating axis)."
+                   : "Each row is one face test: how far the other shape reaches behind the face, or how far beyond "
+                     "it it lies. The test stops at the first face with the other shape wholly beyond it.");
     const float rows = std::min<float>(static_cast<float>(study.StepCount()), 9.0f);
     if (ImGui::BeginChild("##axes", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 8.0f), true))
     {

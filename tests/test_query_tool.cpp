@@ -8,6 +8,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -112,12 +114,30 @@ TEST_CASE("satviz-query answers every pair, in the documented form", "[query]")
     CHECK(pair["axis"]["edge"] == m.axis.index);
     CHECK(!pair.contains("trace"));
 
+    // The default trace is the textbook test's: its view says so, and its MTV is Collide's.
     const Run traced = Query("--trace " + scene);
     REQUIRE(traced.exitCode == 0);
-    const nlohmann::json withTrace = nlohmann::json::parse(traced.out[0])["pairs"][0];
+    const nlohmann::json textbook = nlohmann::json::parse(traced.out[0])["pairs"][0]["trace"];
+    CHECK(textbook["view"] == "textbook");
+    REQUIRE(textbook["axes"].size() >= 2);
+    CHECK(textbook["result"]["overlap"] == m.overlap);
+    CHECK(std::abs(textbook["result"]["depth"].get<double>() - m.depth) <= 1e-12);
+    for (const auto& axis : textbook["axes"])
+    {
+        const double minA = axis["interval_a"][0], maxA = axis["interval_a"][1];
+        const double minB = axis["interval_b"][0], maxB = axis["interval_b"][1];
+        REQUIRE(axis.contains("overlap"));
+        CHECK(axis["overlap"].get<double>() == std::min(maxA - minB, maxB - minA));
+    }
+
+    const Run faces = Query("--trace --view faces " + scene);
+    REQUIRE(faces.exitCode == 0);
+    const nlohmann::json withTrace = nlohmann::json::parse(faces.out[0])["pairs"][0];
+    CHECK(withTrace["trace"]["view"] == "faces");
     CHECK(withTrace["trace"]["axes"].size() >= 4);
     CHECK(withTrace["trace"]["exit"] == "all-axes-overlap");
     CHECK(withTrace["trace"].contains("clip"));
+    CHECK(Query("--trace --view edges " + scene).exitCode != 0);
 }
 
 TEST_CASE("satviz-query: bad files get one error line each, the others are answered", "[query]")

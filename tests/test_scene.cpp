@@ -111,7 +111,8 @@ TEST_CASE("A view block sets the camera, size, layers, pair, query, step, time a
     const SceneResult result = ParseScene(R"({"bodies": [{"name": "P", "box": [1, 1]}, {"name": "Q", "box": [1, 1]},
         {"name": "R", "circle": {"radius": 1}}],
         "view": {"center": [1.5, -2], "zoom": 80, "size": [640, 480], "layers": ["shapes", "mtv"],
-                 "pair": ["R", "P"], "query": "sweep", "step": 2, "time": 0.25, "caption": "Hello"}})",
+                 "pair": ["R", "P"], "query": "sweep", "steps": "faces", "step": 3, "time": 0.25,
+                 "caption": "Hello"}})",
                                           "s.json");
     INFO(result.error);
     REQUIRE(result.Ok());
@@ -126,9 +127,27 @@ TEST_CASE("A view block sets the camera, size, layers, pair, query, step, time a
     CHECK(scene.view.bodyA == "R");
     CHECK(scene.view.bodyB == "P");
     CHECK(scene.view.query == ViewQuery::Sweep);
+    // A file counts steps from 1, as every view does; the scene holds the index from 0.
     CHECK(scene.view.step == 2);
+    CHECK(scene.view.steps == StepView::Faces);
     CHECK(scene.view.time == 0.25);
     CHECK(scene.view.caption == "Hello");
+
+    // The step numbering round trip: written back as 3, read again as index 2; 0 from older files is the first.
+    const SceneResult again = ParseScene(SceneToJson(scene), "again.json");
+    REQUIRE(again.Ok());
+    CHECK(again.scene.view.step == 2);
+    CHECK(again.scene.view.steps == StepView::Faces);
+    CHECK(SceneToJson(scene).find("\"step\":3") != std::string::npos);
+    const SceneResult legacy = ParseScene(R"({"bodies": [], "view": {"step": 0}})", "old.json");
+    REQUIRE(legacy.Ok());
+    CHECK(legacy.scene.view.step == 0);
+    const SceneResult first = ParseScene(R"({"bodies": [], "view": {"step": 1}})", "new.json");
+    REQUIRE(first.Ok());
+    CHECK(first.scene.view.step == 0);
+    CHECK(first.scene.view.steps == StepView::Textbook);
+    CHECK(ErrorOf(R"({"bodies": [], "view": {"steps": "edges"}})") ==
+          "s.json: view.steps: expected \"textbook\" or \"faces\", got \"edges\"");
 
     const SceneResult defaults = ParseScene(R"({"bodies": [], "view": {"zoom": "fit", "step": "last"}})", "s.json");
     REQUIRE(defaults.Ok());

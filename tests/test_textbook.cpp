@@ -62,7 +62,8 @@ bool SameAxisRef(const AxisRef& a, const AxisRef& b)
 
 } // namespace
 
-TEST_CASE("The textbook test gives Overlap's verdict and Collide's depth; its MTV separates", "[textbook][properties]")
+TEST_CASE("The textbook test gives Overlap's verdict and Collide's depth, and its MTV separates",
+          "[textbook][properties]")
 {
     Rng rng(20261125);
     int decided = 0;
@@ -166,7 +167,8 @@ TEST_CASE("Textbook traces are bit-identical to the untraced test and hold check
     }
 }
 
-TEST_CASE("Two boxes have two axes when aligned, four when turned; a gap on the first axis ends the test", "[textbook]")
+TEST_CASE("Two boxes have two axes when aligned, four when turned, and a gap on the first axis ends the test",
+          "[textbook]")
 {
     const Shape floor = MakeShape(MakeBox(2.0, 0.25).polygon);
     const Shape box = MakeShape(MakeBox(0.3, 0.3).polygon);

@@ -5,6 +5,8 @@
 #include <satviz/query_json.h>
 #include <satviz/sweep.h>
 
+#include <cmath>
+
 namespace satviz
 {
 namespace
@@ -14,7 +16,7 @@ using Json = nlohmann::ordered_json;
 
 Json Pair(Vec2 v)
 {
-    return Json::array({v.x, v.y});
+    return Json::array({v.x + 0.0, v.y + 0.0}); // -0 prints as 0
 }
 
 const char* ShapeLetter(int shape)
@@ -104,7 +106,7 @@ Json TraceJson(const Trace& trace)
         }
         axes.push_back(entry);
     }
-    Json out = {{"axes", axes}, {"exit", ExitName(trace.exit)}};
+    Json out = {{"view", "faces"}, {"axes", axes}, {"exit", ExitName(trace.exit)}};
     if (trace.hasClip)
     {
         const ClipTrace& clip = trace.clip;
@@ -132,7 +134,101 @@ Json TraceJson(const Trace& trace)
     return out;
 }
 
-Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace)
+namespace
+{
+
+Json FacesJson(const AxisRef* faces, int count)
+{
+    Json out = Json::array();
+    for (int f = 0; f < count; ++f)
+    {
+        out.push_back(AxisJson(faces[f]));
+    }
+    return out;
+}
+
+// A time that may be infinite (JSON has no infinity): "never" and "always" in words, NaN as null.
+Json TimeJson(double t)
+{
+    if (std::isnan(t))
+    {
+        return nullptr;
+    }
+    if (std::isinf(t))
+    {
+        return t > 0 ? "never" : "always";
+    }
+    return t + 0.0;
+}
+
+} // namespace
+
+Json TextbookTraceJson(const TextbookTrace& trace)
+{
+    Json axes = Json::array();
+    for (const TextbookAxis& t : trace.axes)
+    {
+        Json entry = {{"faces", FacesJson(t.faces, t.faceCount)},
+                      {"direction", Pair(t.direction)},
+                      {"interval_a", Json::array({t.minA, t.maxA})},
+                      {"interval_b", Json::array({t.minB, t.maxB})},
+                      {"separating", t.separating}};
+        if (t.separating)
+        {
+            entry["gap"] = t.gap;
+        }
+        else
+        {
+            entry["overlap"] = t.overlap;
+            entry["push"] = t.pushSign > 0 ? "along" : "against";
+        }
+        entry["best"] = t.best;
+        axes.push_back(entry);
+    }
+    const TextbookResult& r = trace.result;
+    Json result = {{"overlap", r.overlap}};
+    if (r.overlap)
+    {
+        result["depth"] = r.depth;
+    }
+    else
+    {
+        result["gap"] = r.gap;
+    }
+    result["normal"] = Pair(r.normal);
+    result["axis"] = r.axis;
+    result["axes_tested"] = r.axesTested;
+    result["axis_count"] = r.axisCount;
+    return {{"view", "textbook"}, {"axes", axes}, {"result", result}};
+}
+
+Json TextbookSweepTraceJson(const TextbookSweepTrace& trace)
+{
+    Json axes = Json::array();
+    for (const TextbookSweepAxis& t : trace.axes)
+    {
+        axes.push_back({{"faces", FacesJson(t.faces, t.faceCount)},
+                        {"direction", Pair(t.direction)},
+                        {"interval_a", Json::array({t.minA, t.maxA})},
+                        {"interval_b", Json::array({t.minB, t.maxB})},
+                        {"rate", t.rate + 0.0},
+                        {"entry", TimeJson(t.entry)},
+                        {"exit", TimeJson(t.exit)},
+                        {"never", t.never},
+                        {"latest_entry", t.latestEntry},
+                        {"earliest_exit", t.earliestExit},
+                        {"ends_test", t.endsTest}});
+    }
+    const TextbookSweepResult& r = trace.result;
+    return {{"view", "textbook"},
+            {"axes", axes},
+            {"status", r.status == SweepStatus::Miss  ? "miss"
+                       : r.status == SweepStatus::Hit ? "hit"
+                                                      : "overlapping"},
+            {"toi", r.status == SweepStatus::Hit ? Json(r.toi + 0.0) : Json(nullptr)}};
+}
+
+Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace, StepView view)
 {
     Json pairs = Json::array();
     Trace trace;
@@ -173,9 +269,21 @@ Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace)
                     pair["toi_contacts"] = contacts;
                 }
             }
-            if (withTrace)
+            if (withTrace && view == StepView::Faces)
             {
                 pair["trace"] = TraceJson(trace);
+            }
+            else if (withTrace)
+            {
+                TextbookTrace textbook;
+                TextbookCollide(a.shape, a.Xf(), b.shape, b.Xf(), &textbook);
+                pair["trace"] = TextbookTraceJson(textbook);
+                if (a.velocity != Vec2{} || b.velocity != Vec2{})
+                {
+                    TextbookSweepTrace sweep;
+                    TextbookSweep(a.shape, a.Xf(), a.velocity, b.shape, b.Xf(), b.velocity, &sweep);
+                    pair["sweep_trace"] = TextbookSweepTraceJson(sweep);
+                }
             }
             pairs.push_back(pair);
         }

@@ -354,7 +354,7 @@ SceneView ParseView(const Json& value, const Scene& scene)
         Fail(path, "expected an object, got " + TypeName(value));
     }
     CheckKeys(value, path,
-              {"center", "zoom", "size", "layers", "pair", "query", "step", "time", "caption", "precision"});
+              {"center", "zoom", "size", "layers", "pair", "query", "steps", "step", "time", "caption", "precision"});
     SceneView view;
     if (value.contains("zoom"))
     {
@@ -441,12 +441,21 @@ SceneView ParseView(const Json& value, const Scene& scene)
             Fail(path + ".query", "expected \"collide\", \"sweep\" or \"auto\", got \"" + query + "\"");
         }
     }
+    if (value.contains("steps"))
+    {
+        const std::string steps = String(value["steps"], path + ".steps");
+        if (steps != "textbook" && steps != "faces")
+        {
+            Fail(path + ".steps", "expected \"textbook\" or \"faces\", got \"" + steps + "\"");
+        }
+        view.steps = steps == "faces" ? StepView::Faces : StepView::Textbook;
+    }
     if (value.contains("step"))
     {
         const Json& step = value["step"];
         if (!(step.is_string() && step.get<std::string>() == "last"))
         {
-            view.step = WholeNumber(step, path + ".step", 0, 1000000);
+            view.step = std::max(0, WholeNumber(step, path + ".step", 0, 1000000) - 1);
         }
     }
     if (value.contains("time"))
@@ -692,9 +701,13 @@ std::string SceneToJson(const Scene& scene)
             view["pair"] = Ordered::array({v.bodyA, v.bodyB});
         }
         view["query"] = v.query == ViewQuery::Collide ? "collide" : (v.query == ViewQuery::Sweep ? "sweep" : "auto");
+        if (v.steps == StepView::Faces)
+        {
+            view["steps"] = "faces";
+        }
         if (v.step >= 0)
         {
-            view["step"] = v.step;
+            view["step"] = v.step + 1;
         }
         else
         {

@@ -17,8 +17,16 @@ int main(int argc, char** argv)
     std::vector<std::string> files;
     bool withTrace = false;
     app.add_option("files", files, "Scene files (JSON)")->required();
-    app.add_flag("--trace", withTrace, "Add the step trace of each pair: axes, intervals, clipping");
+    std::string view = "textbook";
+    app.add_flag("--trace", withTrace,
+                 "Add the step trace of each pair (its \"view\" field says which): by default the textbook test's "
+                 "axes and intervals");
+    app.add_option("--view", view,
+                   "The trace to print: textbook (both intervals on each distinct axis, the MTV) or faces (the face "
+                   "tests as the fast queries run them, with the contact clipping)")
+        ->check(CLI::IsMember({"textbook", "faces"}));
     CLI11_PARSE(app, argc, argv);
+    const satviz::StepView steps = view == "faces" ? satviz::StepView::Faces : satviz::StepView::Textbook;
 
     int failures = 0;
     for (const std::string& file : files)
@@ -32,7 +40,8 @@ int main(int argc, char** argv)
             ++failures;
             continue;
         }
-        std::cout << satviz::QuerySceneJson(loaded.scene, file, withTrace).dump(-1, ' ', false, kReplace) << "\n";
+        std::cout << satviz::QuerySceneJson(loaded.scene, file, withTrace, steps).dump(-1, ' ', false, kReplace)
+                  << "\n";
     }
     std::cout.flush();
     return failures == 0 ? 0 : 1;

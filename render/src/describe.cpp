@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace satviz
 {
@@ -30,7 +31,7 @@ std::string Interval(double low, double high)
     return "[" + FormatNumber(low) + ", " + FormatNumber(high) + "]";
 }
 
-// Number of axes the full test could try: every face normal of a polygon, one axis per circle pair.
+// Number of face tests the fast test could run: every face of a polygon, one axis per circle pair.
 int CandidateCount(const Scene& scene, const PairStudy& study)
 {
     const Shape& a = scene.bodies[static_cast<size_t>(study.bodyA)].shape;
@@ -40,15 +41,26 @@ int CandidateCount(const Scene& scene, const PairStudy& study)
     return (a.type == ShapeType::Circle || b.type == ShapeType::Circle) ? faces + 1 : faces;
 }
 
-std::string OverlapOrGap(double separation)
+// A value as the figures print it, rounded to what they show, so that differences of shown numbers add up.
+double Shown(double value)
 {
-    return separation > 0.0 ? "are " + FormatNumber(separation) + " apart"
-                            : "overlap: a push of " + FormatNumber(-separation) + " along this axis separates them";
+    const std::string text = FormatNumber(value);
+    return std::strtod(text.c_str(), nullptr);
+}
+
+// hi - lo, computed from the numbers as shown: a learner subtracting the printed ends gets the printed result.
+std::string Difference(double hi, double lo)
+{
+    const double a = Shown(hi);
+    const double b = Shown(lo);
+    const bool sameBand = std::isfinite(a) && std::isfinite(b) && std::fabs(hi) >= 0.01 && std::fabs(hi) < 1e5 &&
+                          std::fabs(lo) >= 0.01 && std::fabs(lo) < 1e5 && std::fabs(hi - lo) >= 0.01;
+    return FormatNumber(sameBand ? a - b : hi - lo);
 }
 
 std::string Time(double t)
 {
-    return std::isinf(t) ? "never" : "t = " + FormatNumber(t);
+    return std::isinf(t) ? (t > 0 ? "never" : "always") : "t = " + FormatNumber(t);
 }
 
 std::string SweepExitReason(SweepExit exit)
@@ -58,7 +70,7 @@ std::string SweepExitReason(SweepExit exit)
     case SweepExit::NotMoving:
         return "nothing moves, so the static test decides";
     case SweepExit::NeverCloses:
-        return "on this axis the gap never closes, so the shapes cannot meet";
+        return "on this axis the intervals never overlap during the step, so the shapes cannot meet";
     case SweepExit::EntryAfterStep:
         return "the intervals would only meet after the step ends";
     case SweepExit::EntryAfterExit:
@@ -73,69 +85,258 @@ std::string SweepExitReason(SweepExit exit)
     return "the test ended";
 }
 
-std::string StaticAxisStep(const Scene& scene, const PairStudy& study, int step)
+// "the normal of floor's edge 0 (with floor's edge 2 and box's edges 0, 2 on the same line)".
+std::string DescribeFaces(const Scene& scene, const PairStudy& study, const AxisRef* faces, int count)
 {
-    const AxisTest& test = study.trace.axes[static_cast<size_t>(step)];
-    std::string text = "Axis " + std::to_string(step + 1) + " of " + std::to_string(CandidateCount(scene, study)) +
-                       ": " + DescribeAxis(scene, study, test.axis) + ".";
-    if (test.skipped)
+    std::string text = DescribeAxis(scene, study, faces[0]);
+    if (count <= 1)
     {
-        return text + " It is parallel to axis " + std::to_string(test.duplicateOf + 1) +
-               ", already tested, so it is skipped.";
+        return text;
     }
-    text += " Intervals " + Interval(test.minA, test.maxA) + " and " + Interval(test.minB, test.maxB) + " " +
-            OverlapOrGap(test.separation) + ".";
-    if (test.separating)
+    std::string others;
+    for (int f = 1; f < count; ++f)
     {
-        text += " A separating axis: the shapes do not collide, and the test stops here.";
+        others += (f == 1           ? ""
+                   : f + 1 == count ? " and "
+                                    : ", ") +
+                  (faces[f].kind == AxisKind::FaceNormal
+                       ? Possessive(NameOf(scene, study, faces[f].shape)) + " edge " + std::to_string(faces[f].index)
+                       : DescribeAxis(scene, study, faces[f]));
     }
-    else if (test.pruned)
-    {
-        text += " Pruned: a single point of the other shape shows this face cannot separate or win.";
-    }
-    return text;
+    return text + " (" + others + (count == 2 ? " lies" : " lie") + " on the same line)";
 }
 
-std::string StaticVerdict(const Scene& scene, const PairStudy& study)
+std::string TextbookAxisStep(const Scene& scene, const PairStudy& study, int step)
 {
-    const Manifold& m = study.manifold;
+    const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(step)];
+    const std::string& nameA = NameOf(scene, study, 0);
     const std::string& nameB = NameOf(scene, study, 1);
-    const int tested = static_cast<int>(study.trace.axes.size());
-    if (!m.overlap)
+    std::string text = "Axis " + std::to_string(step + 1) + " of " + std::to_string(study.textbookResult.axisCount) +
+                       ": " + DescribeFaces(scene, study, t.faces, t.faceCount) + ". " + nameA + " projects to " +
+                       Interval(t.minA, t.maxA) + ", " + nameB + " to " + Interval(t.minB, t.maxB) + ". ";
+    if (t.separating)
     {
-        return "Verdict: " + DescribeAxis(scene, study, m.axis) + " separates the shapes by " + FormatNumber(m.gap) +
-               ", so they do not collide. The test stopped after " + std::to_string(tested) + " of " +
-               std::to_string(CandidateCount(scene, study)) + " axes.";
+        const bool beyond = t.minB - t.maxA > 0.0;
+        return text + "Gap " + (beyond ? Difference(t.minB, t.maxA) : Difference(t.minA, t.maxB)) +
+               " between them: this axis separates the shapes, so they do not collide and the test stops here.";
+    }
+    const std::string along = Difference(t.maxA, t.minB);
+    const std::string against = Difference(t.maxB, t.minA);
+    return text + "They overlap: " + nameB + " would have to move " + along + " along the axis or " + against +
+           " against it to clear " + nameA + "; the overlap is the smaller, " + (t.pushSign > 0 ? along : against) +
+           ".";
+}
+
+std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
+{
+    const TextbookResult& r = study.textbookResult;
+    const std::string& nameB = NameOf(scene, study, 1);
+    if (r.axis < 0)
+    {
+        return "Verdict: no axis could be tested.";
+    }
+    const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(r.axis)];
+    const std::string where =
+        "axis " + std::to_string(r.axis + 1) + " (" + DescribeAxis(scene, study, t.faces[0]) + ")";
+    if (!r.overlap)
+    {
+        return "Verdict: " + where + " separates the shapes with a gap of " + FormatNumber(r.gap) +
+               ", so they do not collide. The test stopped after " + std::to_string(r.axesTested) + " of " +
+               std::to_string(r.axisCount) + " axes.";
     }
     std::string text = study.startsOverlapping ? "The shapes already overlap at t = 0, so there is no time of "
                                                  "impact. "
                                                : "";
-    text += "Verdict: every axis overlaps, so the shapes collide. The smallest push is along " +
-            DescribeAxis(scene, study, m.axis) + ": moving " + nameB + " by " + FormatNumber(m.depth) + " along " +
-            Pair(m.normal.x, m.normal.y) + " separates them (the MTV).";
+    const std::string way = t.pushSign > 0 ? "along" : "against";
+    text += "Verdict: all " + std::to_string(r.axisCount) + " axes overlap, so the shapes collide. The smallest " +
+            "overlap is " + FormatNumber(r.depth) + ", on " + where + ": moving " + nameB + " " +
+            FormatNumber(r.depth) + " " + way + " that normal, direction " + Pair(r.normal.x, r.normal.y) +
+            ", separates them. That is the minimum translation vector (MTV).";
+    const int contacts = study.manifold.contactCount;
+    text += contacts == 1 ? " 1 contact point." : " " + std::to_string(contacts) + " contact points.";
+    return text;
+}
+
+std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, int step)
+{
+    const TextbookSweepAxis& t = study.textbookSweep.axes[static_cast<size_t>(step)];
+    const std::string& nameA = NameOf(scene, study, 0);
+    const std::string& nameB = NameOf(scene, study, 1);
+    std::string text = "Axis " + std::to_string(step + 1) + ": " + DescribeFaces(scene, study, t.faces, t.faceCount) +
+                       ". At t = 0 " + nameA + " projects to " + Interval(t.minA, t.maxA) + ", " + nameB + " to " +
+                       Interval(t.minB, t.maxB) + "; ";
+    if (t.never)
+    {
+        text += nameB + "'s interval does not move along this axis and never overlaps " + nameA + "'s.";
+    }
+    else if (t.rate == 0.0)
+    {
+        text += nameB + "'s interval does not move along this axis and overlaps " + nameA + "'s throughout.";
+    }
+    else
+    {
+        text += nameB + "'s interval moves " + FormatNumber(std::fabs(t.rate)) + " per step " +
+                (t.rate > 0.0 ? "along" : "against") + " the axis, so they overlap ";
+        if (t.entry < 0.0 && t.exit > 0.0)
+        {
+            text += "from the start until " + Time(t.exit) + ".";
+        }
+        else
+        {
+            text += "from " + Time(t.entry) + " until " + Time(t.exit) + ".";
+        }
+    }
+    if (t.endsTest)
+    {
+        return text + " This ends the test: " + SweepExitReason(study.textbookSweep.exit) + ".";
+    }
+    if (t.latestEntry >= 0 && t.earliestExit >= 0)
+    {
+        const TextbookSweepAxis& entry = study.textbookSweep.axes[static_cast<size_t>(t.latestEntry)];
+        const TextbookSweepAxis& exit = study.textbookSweep.axes[static_cast<size_t>(t.earliestExit)];
+        text += " So far every axis overlaps from " +
+                (std::isinf(entry.entry) ? std::string("the start") : Time(entry.entry)) + " until " +
+                (std::isinf(exit.exit) ? std::string("the end") : Time(exit.exit)) + ".";
+    }
+    return text;
+}
+
+std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
+{
+    const TextbookSweepResult& r = study.textbookSweepResult;
+    if (study.textbookSweep.exit == SweepExit::RoundedOutline)
+    {
+        const std::string fixed = study.textbookSweep.axes.empty()
+                                      ? "Two circles have no fixed axis: the line of centres turns as they move, so "
+                                      : "No fixed axis rules out a hit, but a circle's own axis turns as it moves, so ";
+        if (r.status == SweepStatus::Hit)
+        {
+            std::string where;
+            if (r.corner.kind == AxisKind::VertexToCenter)
+            {
+                where = " on the rounded corner at " + Possessive(NameOf(scene, study, r.corner.shape)) + " vertex " +
+                        std::to_string(r.corner.index) + " (later than every fixed axis's entry: a corner delays it)";
+            }
+            else if (r.axis >= 0)
+            {
+                where = " on a face, axis " + std::to_string(r.axis + 1) + ", whose entry it is";
+            }
+            return "Verdict: " + fixed +
+                   "the centre's path is cast against the rounded outline: first contact at t = " +
+                   FormatNumber(r.toi) + where + ", normal " + Pair(r.normal.x, r.normal.y) + ".";
+        }
+        return "Verdict: " + fixed + "the centre's path is cast against the rounded outline: " +
+               (r.status == SweepStatus::Overlapping ? "the shapes already overlap at t = 0."
+                                                     : "it misses, so there is no hit during the step.");
+    }
+    if (r.status == SweepStatus::Hit)
+    {
+        const TextbookSweepAxis& last = study.textbookSweep.axes.back();
+        const TextbookSweepAxis& exit = study.textbookSweep.axes[static_cast<size_t>(last.earliestExit)];
+        return "Verdict: every axis overlaps from t = " + FormatNumber(r.toi) + " (the latest entry, axis " +
+               std::to_string(r.axis + 1) + ") until " +
+               (std::isinf(exit.exit) ? std::string("the end") : Time(exit.exit)) +
+               " (the earliest exit): first contact at t = " + FormatNumber(r.toi) + ", normal " +
+               Pair(r.normal.x, r.normal.y) + ".";
+    }
+    if (r.status == SweepStatus::Overlapping)
+    {
+        return "Verdict: every axis overlaps already at t = 0: the shapes start interpenetrating.";
+    }
+    return "Verdict: no hit during the step: " + SweepExitReason(study.textbookSweep.exit) + ".";
+}
+
+std::string FaceTestStep(const Scene& scene, const PairStudy& study, int step)
+{
+    const AxisTest& test = study.trace.axes[static_cast<size_t>(step)];
+    std::string text =
+        "Face test " + std::to_string(step + 1) + " of " + std::to_string(CandidateCount(scene, study)) + ": ";
+    const bool face = test.axis.kind == AxisKind::FaceNormal;
+    const int owner = face ? test.axis.shape : 0;
+    const std::string& own = NameOf(scene, study, owner);
+    const std::string& other = NameOf(scene, study, 1 - owner);
+    if (face)
+    {
+        text += "does " + other + " lie wholly beyond " + Possessive(own) + " edge " + std::to_string(test.axis.index) +
+                "?";
+    }
+    else
+    {
+        text += DescribeAxis(scene, study, test.axis) + ": are the shapes apart along it?";
+    }
+    if (test.skipped)
+    {
+        return text + " This face is anti-parallel to face test " + std::to_string(test.duplicateOf + 1) +
+               "'s face: the same axis, already decided, so it is skipped.";
+    }
+    if (test.separation > 0.0)
+    {
+        text += " Yes: " + FormatNumber(test.separation) + " beyond it, so this face's normal is a separating axis " +
+                "and the test stops here.";
+    }
+    else
+    {
+        text += " No: " + (face ? Possessive(other) + " deepest point is " : std::string("they overlap by ")) +
+                FormatNumber(-test.separation) + (face ? " behind it." : ".");
+    }
+    if (test.pruned)
+    {
+        text += " Pruned: a single point of the other shape showed this face cannot separate or be the shallowest.";
+    }
+    if (step == 0)
+    {
+        text += " (Each axis is two face tests, one per side; the face normals of both shapes are enough, since the "
+                "MTV lies along one of them.)";
+    }
+    return text;
+}
+
+std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
+{
+    const Manifold& m = study.manifold;
+    const std::string& nameB = NameOf(scene, study, 1);
+    const int tested = static_cast<int>(study.trace.axes.size());
+    std::string text = study.textbookTooLarge ? "(The textbook test would project every vertex on every axis, too "
+                                                "many for a view of this pair: the face tests are shown.) "
+                                              : "";
+    if (!m.overlap)
+    {
+        return text + "Verdict: " + DescribeAxis(scene, study, m.axis) + " separates the shapes by " +
+               FormatNumber(m.gap) + ", so they do not collide. The test stopped after " + std::to_string(tested) +
+               " of " + std::to_string(CandidateCount(scene, study)) + " face tests.";
+    }
+    if (study.startsOverlapping)
+    {
+        text += "The shapes already overlap at t = 0, so there is no time of impact. ";
+    }
+    const bool face = m.axis.kind == AxisKind::FaceNormal;
+    const std::string way = face && m.axis.shape == 1 ? "against" : "along";
+    text += "Verdict: no face separates, so the shapes collide. The shallowest is " +
+            DescribeAxis(scene, study, m.axis) + ": moving " + nameB + " by " + FormatNumber(m.depth) + " " + way +
+            " it, direction " + Pair(m.normal.x, m.normal.y) + ", separates them (the MTV).";
     text += m.contactCount == 1 ? " 1 contact point." : " " + std::to_string(m.contactCount) + " contact points.";
     return text;
 }
 
-std::string SweepAxisStep(const Scene& scene, const PairStudy& study, int step)
+std::string FaceSweepStep(const Scene& scene, const PairStudy& study, int step)
 {
     const SweepAxis& axis = study.sweepTrace.axes[static_cast<size_t>(step)];
-    std::string text =
-        "Axis " + std::to_string(step + 1) + ": " + DescribeAxis(scene, study, axis.axis) +
-        ". At t = 0 the intervals " +
-        (axis.separation > 0.0 ? "are " + FormatNumber(axis.separation) + " apart"
-                               : "overlap (a push of " + FormatNumber(-axis.separation) + " would separate them)");
+    std::string text = "Face test " + std::to_string(step + 1) + ": " + DescribeAxis(scene, study, axis.axis) +
+                       ". At t = 0 the other shape is " +
+                       (axis.separation > 0.0 ? FormatNumber(axis.separation) + " beyond this face"
+                                              : FormatNumber(-axis.separation) + " behind this face");
     if (axis.rate == 0.0)
     {
-        text += " and stay so (no motion along this axis).";
+        text += " and stays so (no motion along its normal).";
     }
     else if (axis.separation > 0.0 && axis.rate > 0.0)
     {
-        text += " and move apart.";
+        text += " and moves away.";
     }
     else
     {
-        text += "; they meet at " + Time(axis.entry) + " and part at " + Time(axis.exit) + ".";
+        text += "; it is behind from " + (std::isinf(axis.entry) ? std::string("the start") : Time(axis.entry)) +
+                " until " + (std::isinf(axis.exit) ? std::string("the end") : Time(axis.exit)) + ".";
     }
     if (axis.endsTest)
     {
@@ -150,7 +351,7 @@ std::string SweepAxisStep(const Scene& scene, const PairStudy& study, int step)
     return text;
 }
 
-std::string SweepVerdict(const Scene& scene, const PairStudy& study)
+std::string FaceSweepVerdict(const Scene& scene, const PairStudy& study)
 {
     const SweepResult& r = study.sweepResult;
     switch (r.status)
@@ -197,7 +398,8 @@ std::string FormatNumber(double value)
     {
         std::snprintf(buffer, sizeof(buffer), "%.3g", value);
     }
-    return buffer;
+    const std::string text = buffer;
+    return text == "-0.00" ? "0.00" : text;
 }
 
 std::string DescribeAxis(const Scene& scene, const PairStudy& study, const AxisRef& axis)
@@ -223,11 +425,19 @@ std::string DescribeStep(const Scene& scene, const PairStudy& study, int step)
     {
         return "";
     }
+    if (study.Textbook())
+    {
+        if (step == study.VerdictStep())
+        {
+            return study.sweep ? TextbookSweepVerdict(scene, study) : TextbookVerdict(scene, study);
+        }
+        return study.sweep ? TextbookSweepAxisStep(scene, study, step) : TextbookAxisStep(scene, study, step);
+    }
     if (step == study.VerdictStep())
     {
-        return study.sweep ? SweepVerdict(scene, study) : StaticVerdict(scene, study);
+        return study.sweep ? FaceSweepVerdict(scene, study) : FaceTestVerdict(scene, study);
     }
-    return study.sweep ? SweepAxisStep(scene, study, step) : StaticAxisStep(scene, study, step);
+    return study.sweep ? FaceSweepStep(scene, study, step) : FaceTestStep(scene, study, step);
 }
 
 std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
@@ -240,16 +450,30 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
     {
         if (study.sweep)
         {
-            const SweepResult& r = study.sweepResult;
-            return r.status == SweepStatus::Hit           ? "verdict: hit at t = " + FormatNumber(r.toi)
-                   : r.status == SweepStatus::Overlapping ? "verdict: overlapping at t = 0"
-                                                          : "verdict: no hit";
+            const SweepStatus status = study.Textbook() ? study.textbookSweepResult.status : study.sweepResult.status;
+            const double toi = study.Textbook() ? study.textbookSweepResult.toi : study.sweepResult.toi;
+            return status == SweepStatus::Hit           ? "verdict: hit at t = " + FormatNumber(toi)
+                   : status == SweepStatus::Overlapping ? "verdict: overlapping at t = 0"
+                                                        : "verdict: no hit";
         }
-        return study.manifold.overlap ? "verdict: collide, depth " + FormatNumber(study.manifold.depth)
+        if (study.Textbook())
+        {
+            return study.textbookResult.overlap ? "verdict: collide, MTV " + FormatNumber(study.textbookResult.depth)
+                                                : "verdict: apart, gap " + FormatNumber(study.textbookResult.gap);
+        }
+        return study.manifold.overlap ? "verdict: collide, MTV " + FormatNumber(study.manifold.depth)
                                       : "verdict: apart, gap " + FormatNumber(study.manifold.gap);
     }
-    const AxisRef axis = study.sweep ? study.sweepTrace.axes[static_cast<size_t>(step)].axis
-                                     : study.trace.axes[static_cast<size_t>(step)].axis;
+    const size_t k = static_cast<size_t>(step);
+    AxisRef axis;
+    if (study.Textbook())
+    {
+        axis = study.sweep ? study.textbookSweep.axes[k].faces[0] : study.textbook.axes[k].faces[0];
+    }
+    else
+    {
+        axis = study.sweep ? study.sweepTrace.axes[k].axis : study.trace.axes[k].axis;
+    }
     std::string title = std::to_string(step + 1) + ": ";
     switch (axis.kind)
     {
@@ -263,19 +487,34 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
         title += "centres";
         break;
     }
+    auto times = [](double entry, double exit) {
+        return ", overlap from " + (std::isinf(entry) ? std::string("the start") : FormatNumber(entry)) + " to " +
+               (std::isinf(exit) ? std::string("the end") : FormatNumber(exit));
+    };
+    if (study.Textbook())
+    {
+        if (study.sweep)
+        {
+            const TextbookSweepAxis& s = study.textbookSweep.axes[k];
+            return s.never ? title + ", never overlap" : title + times(s.entry, s.exit);
+        }
+        const TextbookAxis& t = study.textbook.axes[k];
+        return t.separating ? title + ", gap " + FormatNumber(t.gap) + " (separates)"
+                            : title + ", overlap " + FormatNumber(t.overlap);
+    }
     if (study.sweep)
     {
-        const SweepAxis& s = study.sweepTrace.axes[static_cast<size_t>(step)];
-        return title + ", entry " + (std::isinf(s.entry) ? "never" : FormatNumber(s.entry)) + ", exit " +
-               (std::isinf(s.exit) ? "never" : FormatNumber(s.exit));
+        const SweepAxis& s = study.sweepTrace.axes[k];
+        return title + ", behind from " + (std::isinf(s.entry) ? std::string("the start") : FormatNumber(s.entry)) +
+               " to " + (std::isinf(s.exit) ? std::string("the end") : FormatNumber(s.exit));
     }
-    const AxisTest& test = study.trace.axes[static_cast<size_t>(step)];
+    const AxisTest& test = study.trace.axes[k];
     if (test.skipped)
     {
-        return title + ", skipped (parallel)";
+        return title + ", skipped (anti-parallel)";
     }
-    title +=
-        test.separation > 0.0 ? ", gap " + FormatNumber(test.separation) : ", push " + FormatNumber(-test.separation);
+    title += test.separation > 0.0 ? ", " + FormatNumber(test.separation) + " beyond"
+                                   : ", " + FormatNumber(-test.separation) + " behind";
     return test.separating ? title + " (separates)" : title;
 }
 

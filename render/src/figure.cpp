@@ -42,7 +42,8 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
         setup.error = "view.pair: names no pair of distinct bodies";
         return setup;
     }
-    setup.study = StudyPair(scene, a, b, view.query, view.singlePrecision);
+    setup.study =
+        StudyPair(scene, a, b, view.query, view.singlePrecision, options.setSteps ? options.steps : view.steps);
 
     Figure& figure = setup.figure;
     figure.layers =
@@ -63,8 +64,8 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
     const int step = options.setStep ? options.step : view.step;
     if (step >= setup.study.StepCount())
     {
-        setup.error = std::string(options.setStep ? "--step" : "view.step") + ": step " + std::to_string(step) +
-                      " does not exist: this pair's trace has steps 0 to " + std::to_string(setup.study.VerdictStep()) +
+        setup.error = std::string(options.setStep ? "--step" : "view.step") + ": step " + std::to_string(step + 1) +
+                      " does not exist: this pair's trace has steps 1 to " + std::to_string(setup.study.StepCount()) +
                       " (the last is the verdict)";
         return setup;
     }

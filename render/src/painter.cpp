@@ -150,26 +150,36 @@ void Extremes(const Shape& shape, const Transform& xf, Vec2 d, Vec2& low, Vec2& 
 // One axis as the painter shows it, whichever test produced it.
 struct ShownAxis
 {
-    AxisRef ref{};
+    AxisRef faces[kMaxFacesPerAxis]{}; // the faces (or vertex, or centres) on the axis; faces[0] gave its direction
+    int faceCount = 0;
     Vec2 direction{};
     double minA = 0.0, maxA = 0.0, minB = 0.0, maxB = 0.0;
     double separation = 0.0;
+    bool textbook = false; // an axis of the textbook test: a two-sided interval comparison, not a face test
     bool swept = false;
     double sweptMinB = 0.0, sweptMaxB = 0.0;
     double entry = 0.0, exit = 0.0;
+    bool never = false;                         // the intervals never overlap (textbook sweeps)
     double windowEntry = 0.0, windowExit = 0.0; // latest entry and earliest exit so far
     bool separating = false;
     bool skipped = false;
     int index = 0;
-    // The signed separation is measured from the leading shape's face (the shape whose axis it is, or A) to the
-    // other shape's trailing end: separation = otherMin - leadMax. Negative, its size is the push along the axis
-    // that separates the pair, which can exceed the intervals' intersection when the other shape lies behind.
+    // The band between the bars runs from leadMax to otherMin, separation = otherMin - leadMax: a gap when
+    // positive, else an overlap of -separation. A face test measures it from the face's shape (the shape whose
+    // axis it is, or A) to the other shape's trailing end, which can exceed the intervals' intersection when the
+    // other shape lies behind; the textbook test takes the shorter of the two ways.
     double leadMax = 0.0;
     double otherMin = 0.0;
+    const AxisRef& Ref() const { return faces[0]; }
     void SetLead(bool fromB)
     {
         leadMax = fromB ? maxB : maxA;
         otherMin = fromB ? minA : minB;
+    }
+    void SetSource(const AxisRef& ref)
+    {
+        faces[0] = ref;
+        faceCount = 1;
     }
 };
 
@@ -177,7 +187,7 @@ ShownAxis FromStatic(const PairStudy& study, int index)
 {
     const AxisTest& t = study.trace.axes[static_cast<size_t>(index)];
     ShownAxis s;
-    s.ref = t.axis;
+    s.SetSource(t.axis);
     s.direction = t.direction;
     s.minA = t.minA;
     s.maxA = t.maxA;
@@ -191,11 +201,38 @@ ShownAxis FromStatic(const PairStudy& study, int index)
     return s;
 }
 
+template <typename Axis>
+void CopyIntervals(const Axis& t, ShownAxis& s)
+{
+    std::copy(t.faces, t.faces + kMaxFacesPerAxis, s.faces);
+    s.faceCount = t.faceCount;
+    s.direction = t.direction;
+    s.minA = t.minA;
+    s.maxA = t.maxA;
+    s.minB = t.minB;
+    s.maxB = t.maxB;
+    s.textbook = true;
+}
+
+ShownAxis FromTextbook(const PairStudy& study, int index)
+{
+    const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(index)];
+    ShownAxis s;
+    CopyIntervals(t, s);
+    s.separation = t.separating ? t.gap : -t.overlap;
+    s.separating = t.separating;
+    s.index = index;
+    // The gap lies on the side where B's interval is beyond A's; the overlap on the side of the shorter push.
+    const bool bAhead = t.separating ? t.minB - t.maxA > 0.0 : t.pushSign > 0;
+    s.SetLead(!bAhead);
+    return s;
+}
+
 ShownAxis FromSweep(const PairStudy& study, int index)
 {
     const SweepAxis& t = study.sweepTrace.axes[static_cast<size_t>(index)];
     ShownAxis s;
-    s.ref = t.axis;
+    s.SetSource(t.axis);
     s.direction = t.direction;
     s.minA = t.minA;
     s.maxA = t.maxA;
@@ -223,12 +260,82 @@ ShownAxis FromSweep(const PairStudy& study, int index)
     return s;
 }
 
+ShownAxis FromTextbookSweep(const PairStudy& study, int index)
+{
+    const TextbookSweepAxis& t = study.textbookSweep.axes[static_cast<size_t>(index)];
+    ShownAxis s;
+    CopyIntervals(t, s);
+    const double along = t.minB - t.maxA;
+    const double against = t.minA - t.maxB;
+    if (along > 0.0 || against > 0.0)
+    {
+        s.separation = std::max(along, against);
+        s.SetLead(!(along > 0.0));
+    }
+    else
+    {
+        s.separation = -std::min(-along, -against);
+        s.SetLead(!(-along <= -against));
+    }
+    s.swept = true;
+    s.sweptMinB = std::min(t.minB, t.minB + t.rate);
+    s.sweptMaxB = std::max(t.maxB, t.maxB + t.rate);
+    s.entry = t.entry;
+    s.exit = t.exit;
+    s.never = t.never;
+    s.separating = t.endsTest;
+    s.index = index;
+    if (t.latestEntry >= 0 && t.earliestExit >= 0)
+    {
+        s.windowEntry = study.textbookSweep.axes[static_cast<size_t>(t.latestEntry)].entry;
+        s.windowExit = study.textbookSweep.axes[static_cast<size_t>(t.earliestExit)].exit;
+    }
+    else
+    {
+        s.windowEntry = t.entry;
+        s.windowExit = t.exit;
+    }
+    return s;
+}
+
+ShownAxis ShowAxis(const PairStudy& study, int index)
+{
+    if (study.Textbook())
+    {
+        return study.sweep ? FromTextbookSweep(study, index) : FromTextbook(study, index);
+    }
+    return study.sweep ? FromSweep(study, index) : FromStatic(study, index);
+}
+
+// The label of the band between the bars: a two-sided overlap or gap, or how far the other shape lies behind or
+// beyond a face.
+std::string BandLabel(const ShownAxis& axis)
+{
+    if (axis.textbook)
+    {
+        return axis.separation > 0.0 ? "gap " + FormatNumber(axis.separation)
+                                     : "overlap " + FormatNumber(-axis.separation);
+    }
+    return axis.separation > 0.0 ? FormatNumber(axis.separation) + " beyond"
+                                 : FormatNumber(-axis.separation) + " behind";
+}
+
 // The axis the verdict step shows: the separating axis, the axis of the smallest push, or the latest entry.
 int DecidingAxis(const PairStudy& study)
 {
     if (study.AxisCount() == 0)
     {
         return -1;
+    }
+    if (study.Textbook())
+    {
+        const int last = study.AxisCount() - 1;
+        if (study.sweep)
+        {
+            const TextbookSweepResult& r = study.textbookSweepResult;
+            return r.status == SweepStatus::Hit && r.axis >= 0 ? r.axis : last;
+        }
+        return study.textbookResult.axis >= 0 ? study.textbookResult.axis : last;
     }
     if (study.sweep)
     {
@@ -259,7 +366,7 @@ class Painter
         axisIndex_ = verdict_ ? DecidingAxis(study) : figure.step;
         if (axisIndex_ >= 0 && axisIndex_ < study.AxisCount())
         {
-            axis_ = study.sweep ? FromSweep(study, axisIndex_) : FromStatic(study, axisIndex_);
+            axis_ = ShowAxis(study, axisIndex_);
             hasAxis_ = true;
         }
     }
@@ -395,7 +502,17 @@ class Painter
                 }
             }
         }
-        if (!study_.sweep)
+        if (!study_.sweep && study_.Textbook())
+        {
+            for (const TextbookAxis& t : study_.textbook.axes)
+            {
+                if (t.faces[0].kind != AxisKind::FaceNormal)
+                {
+                    line(t.direction);
+                }
+            }
+        }
+        else if (!study_.sweep)
         {
             for (const AxisTest& t : study_.trace.axes)
             {
@@ -578,9 +695,13 @@ class Painter
             hi = std::max(hi, axis_.sweptMaxB);
         }
         const double pad = kLinePad / view_.zoom;
-        AxisSource(axis_.ref, palette::kInk);
+        for (int f = 0; f < axis_.faceCount; ++f)
+        {
+            AxisSource(axis_.faces[f], palette::kInk);
+        }
         Arrow(canvas_, At(Along(base, d, lo - pad)), At(Along(base, d, hi + pad)), palette::kMuted, 1.5f, 11.0f);
-        labels_.Place(At(Along(base, d, hi + pad)), "axis " + std::to_string(axis_.index + 1), TextStyle::Label,
+        labels_.Place(At(Along(base, d, hi + pad)),
+                      (axis_.textbook ? "axis " : "face test ") + std::to_string(axis_.index + 1), TextStyle::Label,
                       palette::kMuted, static_cast<float>(d.x), static_cast<float>(-d.y));
 
         // Projectors: from each shape's extreme points down to the axis line.
@@ -621,8 +742,7 @@ class Painter
         bar(axis_.minB, axis_.maxB, -5.0f, palette::kShapeB, kBar);
 
         const ScreenPoint middle = At(Along(base, d, 0.5 * (from + to)));
-        const std::string text =
-            overlap ? "push " + FormatNumber(-axis_.separation) : "gap " + FormatNumber(axis_.separation);
+        const std::string text = BandLabel(axis_);
         labels_.Place({middle.x - ox * 14.0f, middle.y - oy * 14.0f}, text, TextStyle::Label,
                       overlap ? 0x8E3F6CFFu : 0x006E50FFu, -ox, -oy, 4.0f);
     }
@@ -646,32 +766,41 @@ class Painter
     // The best axis so far (the smallest push; for sweeps, the latest entry), when it is not the current one.
     void BestSoFar()
     {
+        const size_t k = static_cast<size_t>(axisIndex_);
         int best = -1;
-        if (study_.sweep)
+        if (study_.Textbook())
         {
-            best = study_.sweepTrace.axes[static_cast<size_t>(axisIndex_)].latestEntry;
+            best = study_.sweep ? study_.textbookSweep.axes[k].latestEntry : study_.textbook.axes[k].best;
         }
         else
         {
-            best = study_.trace.axes[static_cast<size_t>(axisIndex_)].best;
+            best = study_.sweep ? study_.sweepTrace.axes[k].latestEntry : study_.trace.axes[k].best;
         }
         if (best < 0 || best == axisIndex_)
         {
             return;
         }
         canvas_.BeginGroup("best");
-        const AxisRef ref = study_.sweep ? study_.sweepTrace.axes[static_cast<size_t>(best)].axis
-                                         : study_.trace.axes[static_cast<size_t>(best)].axis;
-        AxisSource(ref, palette::kBest);
+        const ShownAxis shown = ShowAxis(study_, best);
+        for (int f = 0; f < shown.faceCount; ++f)
+        {
+            AxisSource(shown.faces[f], palette::kBest);
+        }
     }
 
     void Mtv()
     {
-        const Manifold& m = study_.sweep ? study_.sweepResult.initial : study_.manifold;
+        Manifold m = study_.sweep ? study_.sweepResult.initial : study_.manifold;
         const bool overlapping = study_.sweep ? study_.sweepResult.status == SweepStatus::Overlapping : m.overlap;
         if (!overlapping)
         {
             return;
+        }
+        if (study_.Textbook() && !study_.sweep)
+        {
+            // The MTV the textbook test found: its smallest overlap, pushed the shorter way.
+            m.depth = study_.textbookResult.depth;
+            m.normal = study_.textbookResult.normal;
         }
         canvas_.BeginGroup("mtv");
         const Vec2 shift = m.depth * m.normal;
@@ -824,9 +953,9 @@ class Painter
                                 14.0f;
         const float lineLeft = left + nameWidth;
         const float lineRight = Width() - 28.0f;
-        std::string title = verdict_ ? "deciding axis " : "axis ";
-        title += std::to_string(axis_.index + 1) + ": projections on " + DescribeAxis(scene_, study_, axis_.ref) +
-                 " (number line)";
+        std::string title = verdict_ ? "deciding " : "";
+        title += (axis_.textbook ? "axis " : "face test ") + std::to_string(axis_.index + 1) + ": projections on " +
+                 DescribeAxis(scene_, study_, axis_.Ref()) + " (number line)";
         canvas_.Text({left, top + 8.0f}, title, TextStyle::Label, palette::kMuted);
         if (axis_.skipped)
         {
@@ -856,8 +985,7 @@ class Painter
         const float bandHi = std::max(x(std::max(axis_.leadMax, axis_.otherMin)), bandLo + 1.0f);
         canvas_.FillRect({bandLo, rowA - 12.0f}, {bandHi, rowB + 12.0f},
                          WithAlpha(overlap ? palette::kOverlap : palette::kGap, 0.28f));
-        const std::string amount =
-            overlap ? "push " + FormatNumber(-axis_.separation) : "gap " + FormatNumber(axis_.separation);
+        const std::string amount = BandLabel(axis_);
         const ScreenPoint amountSize = canvas_.MeasureText(amount, TextStyle::Label);
         const float amountX =
             std::clamp(0.5f * (bandLo + bandHi) - 0.5f * amountSize.x, lineLeft, lineRight - amountSize.x);
@@ -932,9 +1060,11 @@ class Painter
                          TextStyle::Label, 0xA04000FFu);
         }
         auto marker = [&](double t, const std::string& name, bool up) {
-            if (std::isinf(t))
+            if (std::isinf(t) || std::isnan(t))
             {
-                const std::string text = name + " never";
+                const std::string text = std::isnan(t) ? name + ": never overlap"
+                                         : t < 0.0     ? name + ": overlapping from the start"
+                                                       : name + ": they never part";
                 const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
                 canvas_.Text({right - size.x, up ? y - 10.0f - size.y : y + 22.0f}, text, TextStyle::Label,
                              palette::kInk);
@@ -955,13 +1085,13 @@ class Painter
                 std::clamp(px - 0.5f * size.x, std::max(left - 40.0f, labelsFrom), Width() - size.x - 4.0f);
             canvas_.Text({tx, up ? y - 10.0f - size.y : y + 22.0f}, text, TextStyle::Label, palette::kInk);
         };
-        if (!std::isinf(axis_.entry) || axis_.separation > 0.0)
+        if (!std::isinf(axis_.entry) || axis_.separation > 0.0 || axis_.never)
         {
             marker(axis_.entry, "entry", true);
         }
         const bool noCommonTime =
             !(w0 <= w1 && axis_.windowEntry <= 1.0) && axis_.windowExit < axis_.windowEntry && axis_.windowExit <= 1.0;
-        if (!(noCommonTime && std::isinf(axis_.exit)))
+        if (!(noCommonTime && std::isinf(axis_.exit)) && !axis_.never)
         {
             marker(axis_.exit, "exit", false);
         }
@@ -1105,7 +1235,7 @@ View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int
     {
         for (int i = 0; i < study.AxisCount(); ++i)
         {
-            ShownAxis axis = study.sweep ? FromSweep(study, i) : FromStatic(study, i);
+            ShownAxis axis = ShowAxis(study, i);
             if (axis.skipped)
             {
                 continue;

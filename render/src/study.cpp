@@ -2,6 +2,8 @@
 #include <satviz/collide.h>
 #include <satviz/render/study.h>
 
+#include <algorithm>
+
 namespace satviz
 {
 
@@ -132,6 +134,89 @@ SweepResultT<T> Widen(const SweepResultT<S>& r)
     return out;
 }
 
+template <typename T, typename S, typename Axis>
+void WidenAxis(const Axis& a, T& b)
+{
+    std::copy(a.faces, a.faces + kMaxFacesPerAxis, b.faces);
+    b.faceCount = a.faceCount;
+    b.direction = ConvertVec<double>(a.direction);
+    b.minA = a.minA;
+    b.maxA = a.maxA;
+    b.minB = a.minB;
+    b.maxB = a.maxB;
+}
+
+TextbookResult Widen(const TextbookResultT<float>& r)
+{
+    TextbookResult out;
+    out.overlap = r.overlap;
+    out.depth = r.depth;
+    out.gap = r.gap;
+    out.normal = ConvertVec<double>(r.normal);
+    out.axis = r.axis;
+    out.axesTested = r.axesTested;
+    out.axisCount = r.axisCount;
+    return out;
+}
+
+TextbookTrace Widen(const TextbookTraceT<float>& trace)
+{
+    TextbookTrace out;
+    for (const TextbookAxisT<float>& a : trace.axes)
+    {
+        TextbookAxis b;
+        WidenAxis<TextbookAxis, float>(a, b);
+        b.separating = a.separating;
+        b.gap = a.gap;
+        b.overlap = a.overlap;
+        b.pushSign = a.pushSign;
+        b.best = a.best;
+        out.axes.push_back(b);
+    }
+    out.result = Widen(trace.result);
+    return out;
+}
+
+TextbookSweepResult Widen(const TextbookSweepResultT<float>& r)
+{
+    TextbookSweepResult out;
+    out.status = r.status;
+    out.toi = r.toi;
+    out.normal = ConvertVec<double>(r.normal);
+    out.axis = r.axis;
+    out.corner = r.corner;
+    return out;
+}
+
+TextbookSweepTrace Widen(const TextbookSweepTraceT<float>& trace)
+{
+    TextbookSweepTrace out;
+    for (const TextbookSweepAxisT<float>& a : trace.axes)
+    {
+        TextbookSweepAxis b;
+        WidenAxis<TextbookSweepAxis, float>(a, b);
+        b.rate = a.rate;
+        b.entry = a.entry;
+        b.exit = a.exit;
+        b.never = a.never;
+        b.latestEntry = a.latestEntry;
+        b.earliestExit = a.earliestExit;
+        b.endsTest = a.endsTest;
+        out.axes.push_back(b);
+    }
+    out.exit = trace.exit;
+    out.result = Widen(trace.result);
+    return out;
+}
+
+// The textbook test's work for a pair: every vertex projected on every axis.
+long long TextbookWork(const Shape& a, const Shape& b)
+{
+    auto count = [](const Shape& s) { return s.type == ShapeType::Polygon ? s.polygon.Count() : 1LL; };
+    const long long n = count(a) + count(b);
+    return n * n;
+}
+
 // The shape rounded to float; false when rounding breaks the polygon.
 bool ToFloat(const Shape& shape, ShapeT<float>& out)
 {
@@ -164,19 +249,32 @@ bool StudyInFloat(const Body& bodyA, const Body& bodyB, PairStudy& study)
     TraceT<float> trace;
     study.manifold = Widen<double>(Collide(a, xfA, b, xfB, &trace));
     study.trace = Widen<double>(trace);
+    const Vec2T<float> vA = ConvertVec<float>(bodyA.velocity);
+    const Vec2T<float> vB = ConvertVec<float>(bodyB.velocity);
     if (study.sweep)
     {
         SweepTraceT<float> sweepTrace;
-        study.sweepResult = Widen<double>(
-            Sweep(a, xfA, ConvertVec<float>(bodyA.velocity), b, xfB, ConvertVec<float>(bodyB.velocity), &sweepTrace));
+        study.sweepResult = Widen<double>(Sweep(a, xfA, vA, b, xfB, vB, &sweepTrace));
         study.sweepTrace = Widen<double>(sweepTrace);
+    }
+    if (study.Textbook())
+    {
+        TextbookTraceT<float> textbook;
+        study.textbookResult = Widen(TextbookCollide(a, xfA, b, xfB, &textbook));
+        study.textbook = Widen(textbook);
+        if (study.sweep)
+        {
+            TextbookSweepTraceT<float> textbookSweep;
+            study.textbookSweepResult = Widen(TextbookSweep(a, xfA, vA, b, xfB, vB, &textbookSweep));
+            study.textbookSweep = Widen(textbookSweep);
+        }
     }
     return true;
 }
 
 } // namespace
 
-PairStudy StudyPair(const Scene& scene, int a, int b, ViewQuery query, bool singlePrecision)
+PairStudy StudyPair(const Scene& scene, int a, int b, ViewQuery query, bool singlePrecision, StepView steps)
 {
     PairStudy study;
     study.bodyA = a;
@@ -187,6 +285,12 @@ PairStudy StudyPair(const Scene& scene, int a, int b, ViewQuery query, bool sing
     const Transform xfB = bodyB.Xf();
     const bool moving = bodyA.velocity != bodyB.velocity;
     study.sweep = query == ViewQuery::Sweep || (query == ViewQuery::Automatic && moving);
+    study.steps = steps;
+    if (steps == StepView::Textbook && TextbookWork(bodyA.shape, bodyB.shape) > kTextbookBudget)
+    {
+        study.steps = StepView::Faces;
+        study.textbookTooLarge = true;
+    }
     study.singlePrecision = singlePrecision && StudyInFloat(bodyA, bodyB, study);
     if (!study.singlePrecision)
     {
@@ -195,6 +299,15 @@ PairStudy StudyPair(const Scene& scene, int a, int b, ViewQuery query, bool sing
         {
             study.sweepResult =
                 Sweep(bodyA.shape, xfA, bodyA.velocity, bodyB.shape, xfB, bodyB.velocity, &study.sweepTrace);
+        }
+        if (study.Textbook())
+        {
+            study.textbookResult = TextbookCollide(bodyA.shape, xfA, bodyB.shape, xfB, &study.textbook);
+            if (study.sweep)
+            {
+                study.textbookSweepResult = TextbookSweep(bodyA.shape, xfA, bodyA.velocity, bodyB.shape, xfB,
+                                                          bodyB.velocity, &study.textbookSweep);
+            }
         }
     }
     if (study.sweep)

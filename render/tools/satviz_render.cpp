@@ -208,10 +208,14 @@ int main(int argc, char** argv)
     app.add_option("scenes", scenes, "Scene files (JSON)")->required();
     app.add_option("-o,--output", output,
                    "Output: a .png file for a single figure, else a directory (created if missing) that receives "
-                   "SCENE.png, or SCENE-stepN.png with --all-steps")
+                   "SCENE.png, or SCENE-stepN.png (N from 1) with --all-steps")
         ->required();
-    auto* stepOption = app.add_option("--step", step, "Trace step to draw (0 = first axis; the last is the verdict)")
-                           ->check(CLI::NonNegativeNumber);
+    std::string viewName;
+    auto* stepOption = app.add_option(
+        "--step", step, "Trace step to draw, counted from 1 (1 = the first axis; the last is the verdict)");
+    app.add_option("--view", viewName,
+                   "Which algorithm the steps show: textbook (both intervals on each distinct axis, the default) or "
+                   "faces (the face tests as the fast queries run them); default: the scene's");
     app.add_flag("--all-steps", allSteps, "One figure per trace step")->excludes(stepOption);
     app.add_option("--size", size, "Image size WxH in pixels (default: the scene's, else 800x600)");
     app.add_option("--layers", layers,
@@ -221,6 +225,21 @@ int main(int argc, char** argv)
     CLI11_PARSE(app, argc, argv);
 
     satviz::FigureOptions options;
+    if (stepOption->count() > 0 && step < 1)
+    {
+        std::fprintf(stderr, "satviz-render: --step: steps count from 1 (1 = the first axis), got %d\n", step);
+        return 2;
+    }
+    if (!viewName.empty())
+    {
+        if (viewName != "textbook" && viewName != "faces")
+        {
+            std::fprintf(stderr, "satviz-render: --view: expected textbook or faces, got \"%s\"\n", viewName.c_str());
+            return 2;
+        }
+        options.setSteps = true;
+        options.steps = viewName == "faces" ? satviz::StepView::Faces : satviz::StepView::Textbook;
+    }
     if (!size.empty() && !ParseSize(size, options.width, options.height))
     {
         std::fprintf(stderr, "satviz-render: --size: expected WxH with sides from 16 to %d, got \"%s\"\n",
@@ -287,10 +306,10 @@ int main(int argc, char** argv)
             continue;
         }
         satviz::FigureOptions first = options;
-        if (step >= 0)
+        if (step >= 1)
         {
             first.setStep = true;
-            first.step = step;
+            first.step = step - 1;
         }
         satviz::FigureSetup setup = satviz::SetUpFigure(loaded.scene, first);
         if (!setup.Ok())
@@ -316,11 +335,11 @@ int main(int argc, char** argv)
         for (int k : steps)
         {
             setup.figure.step = k;
-            const std::string path = singleFile
-                                         ? output
-                                         : (std::filesystem::path(output) /
-                                            (allSteps ? stem + "-step" + std::to_string(k) + ".png" : stem + ".png"))
-                                               .string();
+            const std::string path =
+                singleFile ? output
+                           : (std::filesystem::path(output) /
+                              (allSteps ? stem + "-step" + std::to_string(k + 1) + ".png" : stem + ".png"))
+                                 .string();
             const auto t0 = Clock::now();
             if (!renderer.Render(loaded.scene, setup, rgb, error))
             {

@@ -65,12 +65,12 @@ if kill -0 $pid 2> /dev/null; then
 fi
 cat "$work/app.log"
 
-grep -q '"step":3' "$work/scene.json" || { echo "FAILED: the saved scene is not at step 3:"; cat "$work/scene.json"; exit 1; }
+grep -q '"step":4' "$work/scene.json" || { echo "FAILED: the saved scene is not at step 4 (three steps on from the first, counted from 1):"; cat "$work/scene.json"; exit 1; }
 python3 - "$work/scene.json" << 'PY' || exit 1
 import json, sys
 body = json.load(open(sys.argv[1]))["bodies"][1]
 x, y = body["position"]
-# dragged by (30, -12) pixels at 120 pixels per unit: (+0.25, +0.1); the boxes still overlap, so step 3 exists
+# dragged by (30, -12) pixels at 120 pixels per unit: (+0.25, +0.1); the boxes still overlap, so step 4 exists
 if abs(x - 1.55) > 0.02 or abs(y - 0.7) > 0.02:
     sys.exit(f"FAILED: body B is at {x}, {y}, expected about 1.55, 0.7 after the drag")
 PY

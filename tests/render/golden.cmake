@@ -1,10 +1,14 @@
 # Golden-image test: renders one scene with satviz-render and compares every image, pixel for pixel, with the
-# committed figure of the same name. Variables: RENDER, DIFF (executables), SCENE, EXPECTED_DIR, OUT_DIR, ALL_STEPS.
+# committed figure of the same name. Variables: RENDER, DIFF (executables), SCENE, EXPECTED_DIR, OUT_DIR, ALL_STEPS,
+# VIEW (the steps' view, textbook when unset).
 file(REMOVE_RECURSE ${OUT_DIR})
 file(MAKE_DIRECTORY ${OUT_DIR})
 set(extra)
 if(ALL_STEPS)
   set(extra --all-steps)
+endif()
+if(VIEW)
+  list(APPEND extra --view ${VIEW})
 endif()
 execute_process(COMMAND ${RENDER} -q ${extra} ${SCENE} -o ${OUT_DIR} RESULT_VARIABLE status ERROR_VARIABLE errors)
 if(NOT status EQUAL 0)

@@ -102,6 +102,64 @@ std::set<std::string> Groups(const RecordingCanvas& canvas)
     return groups;
 }
 
+// Both views of the steps: the textbook test and the face tests.
+const StepView kViews[] = {StepView::Textbook, StepView::Faces};
+
+FigureSetup SetUpView(const Scene& scene, StepView view)
+{
+    FigureOptions options;
+    options.setSteps = true;
+    options.steps = view;
+    return SetUpFigure(scene, options);
+}
+
+// A step's axis as its trace holds it, whichever view and test recorded it.
+struct StepAxis
+{
+    Vec2 direction{};
+    double minA = 0.0, maxA = 0.0, minB = 0.0, maxB = 0.0;
+    bool separating = false;
+    bool skipped = false;
+    double entry = 0.0; // sweeps
+};
+
+StepAxis AxisOfStep(const PairStudy& study, int step)
+{
+    const size_t k = static_cast<size_t>(step);
+    StepAxis out;
+    auto copy = [&](const auto& t) {
+        out.direction = t.direction;
+        out.minA = t.minA;
+        out.maxA = t.maxA;
+        out.minB = t.minB;
+        out.maxB = t.maxB;
+    };
+    if (study.Textbook() && study.sweep)
+    {
+        copy(study.textbookSweep.axes[k]);
+        out.separating = study.textbookSweep.axes[k].endsTest;
+        out.entry = study.textbookSweep.axes[k].entry;
+    }
+    else if (study.Textbook())
+    {
+        copy(study.textbook.axes[k]);
+        out.separating = study.textbook.axes[k].separating;
+    }
+    else if (study.sweep)
+    {
+        copy(study.sweepTrace.axes[k]);
+        out.separating = study.sweepTrace.axes[k].endsTest;
+        out.entry = study.sweepTrace.axes[k].entry;
+    }
+    else
+    {
+        copy(study.trace.axes[k]);
+        out.separating = study.trace.axes[k].separating;
+        out.skipped = study.trace.axes[k].skipped;
+    }
+    return out;
+}
+
 } // namespace
 
 TEST_CASE("Each axis step draws its axis and both projection intervals where the shapes project", "[painter]")
@@ -109,79 +167,97 @@ TEST_CASE("Each axis step draws its axis and both projection intervals where the
     int checked = 0;
     for (const std::string& file : TutorialScenes())
     {
-        const Scene scene = Load(file);
-        FigureSetup setup = SetUpFigure(scene, {});
-        REQUIRE(setup.Ok());
-        const Body& a = scene.bodies[static_cast<size_t>(setup.study.bodyA)];
-        const Body& b = scene.bodies[static_cast<size_t>(setup.study.bodyB)];
-        for (int step = 0; step < setup.study.AxisCount(); ++step)
+        for (StepView view : kViews)
         {
-            const bool sweep = setup.study.sweep;
-            const Vec2 d = sweep ? setup.study.sweepTrace.axes[static_cast<size_t>(step)].direction
-                                 : setup.study.trace.axes[static_cast<size_t>(step)].direction;
-            if (!sweep && setup.study.trace.axes[static_cast<size_t>(step)].skipped)
+            const Scene scene = Load(file);
+            FigureSetup setup = SetUpView(scene, view);
+            REQUIRE(setup.Ok());
+            const Body& a = scene.bodies[static_cast<size_t>(setup.study.bodyA)];
+            const Body& b = scene.bodies[static_cast<size_t>(setup.study.bodyB)];
+            for (int step = 0; step < setup.study.AxisCount(); ++step)
             {
-                continue;
+                const StepAxis shown = AxisOfStep(setup.study, step);
+                const Vec2 d = shown.direction;
+                if (shown.skipped)
+                {
+                    continue;
+                }
+                INFO(file << " step " << step << (view == StepView::Faces ? " (faces)" : " (textbook)"));
+                const RecordingCanvas canvas = Paint(scene, setup, step, kLayerProjection);
+                const double pixel = 1.0 / setup.figure.view.zoom;
+                const DrawCommand* barA = FindBar(canvas, palette::kShapeA);
+                const DrawCommand* barB = FindBar(canvas, palette::kShapeB);
+                REQUIRE(barA != nullptr);
+                REQUIRE(barB != nullptr);
+                const auto [loA, hiA] = Project(a, d);
+                const auto [loB, hiB] = Project(b, d);
+                const auto [barLoA, barHiA] = BarValues(setup.figure.view, *barA, d);
+                const auto [barLoB, barHiB] = BarValues(setup.figure.view, *barB, d);
+                // Screen coordinates are floats: a bar end may be a fraction of a pixel off.
+                CHECK(std::abs(barLoA - loA) < 0.5 * pixel);
+                CHECK(std::abs(barHiA - hiA) < 0.5 * pixel);
+                CHECK(std::abs(barLoB - loB) < 0.5 * pixel);
+                CHECK(std::abs(barHiB - hiB) < 0.5 * pixel);
+                // Both bars lie on one line parallel to the axis.
+                const Vec2 along =
+                    ToWorld(setup.figure.view, barA->points[1]) - ToWorld(setup.figure.view, barA->points[0]);
+                CHECK(std::abs(Cross(Normalize(along), d)) < 1e-3);
+                ++checked;
             }
-            INFO(file << " step " << step);
-            const RecordingCanvas canvas = Paint(scene, setup, step, kLayerProjection);
-            const double pixel = 1.0 / setup.figure.view.zoom;
-            const DrawCommand* barA = FindBar(canvas, palette::kShapeA);
-            const DrawCommand* barB = FindBar(canvas, palette::kShapeB);
-            REQUIRE(barA != nullptr);
-            REQUIRE(barB != nullptr);
-            const auto [loA, hiA] = Project(a, d);
-            const auto [loB, hiB] = Project(b, d);
-            const auto [barLoA, barHiA] = BarValues(setup.figure.view, *barA, d);
-            const auto [barLoB, barHiB] = BarValues(setup.figure.view, *barB, d);
-            // Screen coordinates are floats: a bar end may be a fraction of a pixel off.
-            CHECK(std::abs(barLoA - loA) < 0.5 * pixel);
-            CHECK(std::abs(barHiA - hiA) < 0.5 * pixel);
-            CHECK(std::abs(barLoB - loB) < 0.5 * pixel);
-            CHECK(std::abs(barHiB - hiB) < 0.5 * pixel);
-            // Both bars lie on one line parallel to the axis.
-            const Vec2 along =
-                ToWorld(setup.figure.view, barA->points[1]) - ToWorld(setup.figure.view, barA->points[0]);
-            CHECK(std::abs(Cross(Normalize(along), d)) < 1e-3);
-            ++checked;
         }
     }
-    CHECK(checked >= 20);
+    CHECK(checked >= 40);
 }
 
 TEST_CASE("The caption of a step states the trace's numbers", "[painter]")
 {
     for (const std::string& file : TutorialScenes())
     {
-        const Scene scene = Load(file);
-        FigureSetup setup = SetUpFigure(scene, {});
-        REQUIRE(setup.Ok());
-        setup.figure.caption.clear();
-        for (int step = 0; step < setup.study.StepCount(); ++step)
+        for (StepView view : kViews)
         {
-            INFO(file << " step " << step);
-            const RecordingCanvas canvas = Paint(scene, setup, step, kLayerCaption);
-            std::string drawn;
-            for (const std::string& line : canvas.Texts())
+            const Scene scene = Load(file);
+            FigureSetup setup = SetUpView(scene, view);
+            REQUIRE(setup.Ok());
+            setup.figure.caption.clear();
+            for (int step = 0; step < setup.study.StepCount(); ++step)
             {
-                drawn += (drawn.empty() ? "" : " ") + line;
-            }
-            const std::string expected = DescribeStep(scene, setup.study, step);
-            CHECK(drawn == expected);
-            if (!setup.study.sweep && step < setup.study.AxisCount())
-            {
-                const AxisTest& t = setup.study.trace.axes[static_cast<size_t>(step)];
-                if (!t.skipped)
+                INFO(file << " step " << step << (view == StepView::Faces ? " (faces)" : " (textbook)"));
+                const RecordingCanvas canvas = Paint(scene, setup, step, kLayerCaption);
+                std::string drawn;
+                for (const std::string& line : canvas.Texts())
                 {
-                    for (double value : {t.minA, t.maxA, t.minB, t.maxB, std::abs(t.separation)})
+                    drawn += (drawn.empty() ? "" : " ") + line;
+                }
+                const std::string expected = DescribeStep(scene, setup.study, step);
+                CHECK(drawn == expected);
+                if (!setup.study.sweep && step < setup.study.AxisCount() && setup.study.Textbook())
+                {
+                    // The textbook step names both intervals and, from them, the gap or both pushes.
+                    const TextbookAxis& t = setup.study.textbook.axes[static_cast<size_t>(step)];
+                    for (double value : {t.minA, t.maxA, t.minB, t.maxB})
                     {
                         CHECK(expected.find(FormatNumber(value)) != std::string::npos);
                     }
-                    CHECK((expected.find("separating axis") != std::string::npos) == t.separating);
+                    CHECK((expected.find("separates the shapes") != std::string::npos) == t.separating);
+                    CHECK((expected.find("the overlap is the smaller") != std::string::npos) == !t.separating);
+                    CHECK(expected.find("push") == std::string::npos);
                 }
-                else
+                else if (!setup.study.sweep && step < setup.study.AxisCount())
                 {
-                    CHECK(expected.find("skipped") != std::string::npos);
+                    const AxisTest& t = setup.study.trace.axes[static_cast<size_t>(step)];
+                    CHECK(expected.rfind("Face test ", 0) == 0);
+                    if (!t.skipped)
+                    {
+                        for (double value : {std::abs(t.separation)})
+                        {
+                            CHECK(expected.find(FormatNumber(value)) != std::string::npos);
+                        }
+                        CHECK((expected.find("separating axis") != std::string::npos) == t.separating);
+                    }
+                    else
+                    {
+                        CHECK(expected.find("skipped") != std::string::npos);
+                    }
                 }
             }
         }
@@ -239,36 +315,40 @@ TEST_CASE("The separating line of an early exit lies in the gap, across the axis
     int checked = 0;
     for (const std::string& file : TutorialScenes())
     {
-        const Scene scene = Load(file);
-        FigureSetup setup = SetUpFigure(scene, {});
-        if (setup.study.sweep)
+        for (StepView view : kViews)
         {
-            continue;
-        }
-        for (int step = 0; step < setup.study.AxisCount(); ++step)
-        {
-            const AxisTest& t = setup.study.trace.axes[static_cast<size_t>(step)];
-            const RecordingCanvas canvas = Paint(scene, setup, step, kLayerExit);
-            const std::vector<const DrawCommand*> exit = canvas.InGroup("exit");
-            CHECK(exit.empty() == !t.separating);
-            const double gapLo = std::min(t.maxA, t.maxB);
-            const double gapHi = std::max(t.minA, t.minB);
-            const double pixel = 1.0 / setup.figure.view.zoom;
-            for (const DrawCommand* c : exit)
+            const Scene scene = Load(file);
+            FigureSetup setup = SetUpView(scene, view);
+            if (setup.study.sweep)
             {
-                for (const ScreenPoint& p : c->points)
+                continue;
+            }
+            for (int step = 0; step < setup.study.AxisCount(); ++step)
+            {
+                const StepAxis t = AxisOfStep(setup.study, step);
+                const RecordingCanvas canvas = Paint(scene, setup, step, kLayerExit);
+                const std::vector<const DrawCommand*> exit = canvas.InGroup("exit");
+                CHECK(exit.empty() == !t.separating);
+                const double gapLo = std::min(t.maxA, t.maxB);
+                const double gapHi = std::max(t.minA, t.minB);
+                const double pixel = 1.0 / setup.figure.view.zoom;
+                for (const DrawCommand* c : exit)
                 {
-                    const double s = Dot(ToWorld(setup.figure.view, p), t.direction);
-                    CHECK(s > gapLo - pixel);
-                    CHECK(s < gapHi + pixel);
+                    for (const ScreenPoint& p : c->points)
+                    {
+                        const double s = Dot(ToWorld(setup.figure.view, p), t.direction);
+                        CHECK(s > gapLo - pixel);
+                        CHECK(s < gapHi + pixel);
+                    }
+                    const Vec2 along =
+                        ToWorld(setup.figure.view, c->points[1]) - ToWorld(setup.figure.view, c->points[0]);
+                    CHECK(std::abs(Dot(Normalize(along), t.direction)) < 1e-3);
+                    ++checked;
                 }
-                const Vec2 along = ToWorld(setup.figure.view, c->points[1]) - ToWorld(setup.figure.view, c->points[0]);
-                CHECK(std::abs(Dot(Normalize(along), t.direction)) < 1e-3);
-                ++checked;
             }
         }
     }
-    CHECK(checked > 0);
+    CHECK(checked > 1);
 }
 
 TEST_CASE("The verdict draws the MTV arrow to B moved out, and a dot on every contact point", "[painter]")
@@ -329,44 +409,47 @@ TEST_CASE("The time bar marks each sweep axis's entry time", "[painter]")
     int checked = 0;
     for (const std::string& file : TutorialScenes())
     {
-        const Scene scene = Load(file);
-        FigureSetup setup = SetUpFigure(scene, {});
-        if (!setup.study.sweep)
+        for (StepView view : kViews)
         {
-            continue;
-        }
-        for (int step = 0; step < setup.study.AxisCount(); ++step)
-        {
-            const SweepAxis& axis = setup.study.sweepTrace.axes[static_cast<size_t>(step)];
-            const RecordingCanvas canvas = Paint(scene, setup, step, kLayerSwept);
-            // The bar runs from t = 0 to t = 1: its ticks are the first three short segments.
-            std::vector<const DrawCommand*> segments;
-            std::vector<const DrawCommand*> markers;
-            for (const DrawCommand* c : canvas.InGroup("timebar"))
+            const Scene scene = Load(file);
+            FigureSetup setup = SetUpView(scene, view);
+            if (!setup.study.sweep)
             {
-                if (c->kind == DrawCommand::Kind::Segment)
-                {
-                    segments.push_back(c);
-                }
-                if (c->kind == DrawCommand::Kind::FillConvex && c->points.size() == 3)
-                {
-                    markers.push_back(c);
-                }
+                continue;
             }
-            REQUIRE(segments.size() >= 1);
-            const float x0 = segments[0]->points[0].x;
-            const float x1 = segments[0]->points[1].x;
-            if (std::isfinite(axis.entry) && axis.entry >= 0.0 && axis.entry <= 1.0)
+            for (int step = 0; step < setup.study.AxisCount(); ++step)
             {
-                REQUIRE(!markers.empty());
-                const double t = (markers[0]->points[0].x - x0) / (x1 - x0);
-                INFO(file << " step " << step << " entry " << axis.entry);
-                CHECK(std::abs(t - axis.entry) < 1e-4);
-                ++checked;
+                const StepAxis axis = AxisOfStep(setup.study, step);
+                const RecordingCanvas canvas = Paint(scene, setup, step, kLayerSwept);
+                // The bar runs from t = 0 to t = 1: its ticks are the first three short segments.
+                std::vector<const DrawCommand*> segments;
+                std::vector<const DrawCommand*> markers;
+                for (const DrawCommand* c : canvas.InGroup("timebar"))
+                {
+                    if (c->kind == DrawCommand::Kind::Segment)
+                    {
+                        segments.push_back(c);
+                    }
+                    if (c->kind == DrawCommand::Kind::FillConvex && c->points.size() == 3)
+                    {
+                        markers.push_back(c);
+                    }
+                }
+                REQUIRE(segments.size() >= 1);
+                const float x0 = segments[0]->points[0].x;
+                const float x1 = segments[0]->points[1].x;
+                if (std::isfinite(axis.entry) && axis.entry >= 0.0 && axis.entry <= 1.0)
+                {
+                    REQUIRE(!markers.empty());
+                    const double t = (markers[0]->points[0].x - x0) / (x1 - x0);
+                    INFO(file << " step " << step << " entry " << axis.entry);
+                    CHECK(std::abs(t - axis.entry) < 1e-4);
+                    ++checked;
+                }
             }
         }
     }
-    CHECK(checked >= 3);
+    CHECK(checked >= 6);
 }
 
 TEST_CASE("Labels of the example figures do not cover each other", "[painter]")

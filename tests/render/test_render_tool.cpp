@@ -103,15 +103,30 @@ TEST_CASE("satviz-render: one figure per step, and a step that does not exist is
     const fs::path dir = FreshDirectory("render-steps");
     const Run run = Render(Scene("separated_triangle.json") + " --all-steps -q -o " + dir.string());
     CHECK(run.exitCode == 0);
-    CHECK(fs::exists(dir / "separated_triangle-step0.png"));
+    // Steps count from 1 in file names, as in every view: the first axis separates, then the verdict.
+    CHECK(!fs::exists(dir / "separated_triangle-step0.png"));
     CHECK(fs::exists(dir / "separated_triangle-step1.png"));
-    CHECK(!fs::exists(dir / "separated_triangle-step2.png"));
+    CHECK(fs::exists(dir / "separated_triangle-step2.png"));
+    CHECK(!fs::exists(dir / "separated_triangle-step3.png"));
 
     const Run beyond = Render(Scene("separated_triangle.json") + " --step 7 -o " + (dir / "x.png").string());
     CHECK(beyond.exitCode == 1);
     REQUIRE(!beyond.errLines.empty());
     CHECK(beyond.errLines[0].find("--step") != std::string::npos);
-    CHECK(beyond.errLines[0].find("0 to 1") != std::string::npos);
+    CHECK(beyond.errLines[0].find("1 to 2") != std::string::npos);
+    CHECK(!fs::exists(dir / "x.png"));
+
+    for (const char* step : {"0", "-1"})
+    {
+        const Run below =
+            Render(Scene("separated_triangle.json") + " --step " + step + " -o " + (dir / "x.png").string());
+        INFO("--step " << step);
+        CHECK(below.exitCode == 2);
+        REQUIRE(below.errLines.size() == 1);
+        CHECK(below.errLines[0].find("--step: steps count from 1") != std::string::npos);
+    }
+    const Run badView = Render(Scene("separated_triangle.json") + " --view edges -o " + (dir / "x.png").string());
+    CHECK(badView.exitCode == 2);
     CHECK(!fs::exists(dir / "x.png"));
 }
 

@@ -4,6 +4,7 @@
 
 #include <satviz/collide.h>
 #include <satviz/scene.h>
+#include <satviz/textbook.h>
 
 #include <nlohmann/json.hpp>
 
@@ -19,12 +20,22 @@ nlohmann::ordered_json AxisJson(const AxisRef& axis);
 /// One pair's result: {"a", "b", "overlap", "depth" or "gap", "normal", "contacts", "axis"}.
 nlohmann::ordered_json ManifoldJson(const std::string& nameA, const std::string& nameB, const Manifold& manifold);
 
-/// A step trace: the axes in test order with their intervals, the contact clipping and why the test ended.
+/// A step trace of the face tests: {"view": "faces"}, the axes in test order with their intervals, the contact
+/// clipping and why the test ended.
 nlohmann::ordered_json TraceJson(const Trace& trace);
+
+/// A step trace of the textbook test: {"view": "textbook"}, each distinct axis with the faces on it, both
+/// intervals, the gap or the overlap and the way of the shorter push, then the result (the MTV).
+nlohmann::ordered_json TextbookTraceJson(const TextbookTrace& trace);
+
+/// A step trace of the textbook swept test: each axis with its intervals at t = 0, the rate, entry and exit.
+nlohmann::ordered_json TextbookSweepTraceJson(const TextbookSweepTrace& trace);
 
 /// Every pair of bodies of a scene, in file order: {"scene": file, "pairs": [...]}. Pairs where a body moves also
 /// carry "toi" (the time of impact in [0, 1], 0 when overlapping at the start, null for a miss), "toi_normal" and
-/// "toi_contacts". With `withTrace`, each pair also carries its "trace".
-nlohmann::ordered_json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace);
+/// "toi_contacts". With `withTrace`, each pair also carries its "trace" in the chosen view (and, in the textbook
+/// view, moving pairs their "sweep_trace").
+nlohmann::ordered_json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace,
+                                      StepView view = StepView::Textbook);
 
 } // namespace satviz

@@ -31,6 +31,13 @@ enum class ViewQuery
     Sweep,     ///< the swept test: time of impact
 };
 
+/// Which algorithm a view's steps show.
+enum class StepView
+{
+    Textbook, ///< the textbook test: both projection intervals on each distinct axis (TextbookCollide, TextbookSweep)
+    Faces,    ///< the face tests as the fast queries run them (Collide, Sweep): one side of an axis per step
+};
+
 /// Names of the drawing layers a view can switch on, in drawing order (see render/README.md).
 inline const std::vector<std::string>& ViewLayerNames()
 {
@@ -52,10 +59,13 @@ struct SceneView
     std::string bodyA;                      ///< first body of the pair; empty: the first body
     std::string bodyB;                      ///< second body of the pair; empty: the second body
     ViewQuery query = ViewQuery::Automatic; ///< which test to show
-    int step = -1;                          ///< trace step to show; -1: the last step (the verdict)
-    double time = -1.0;                     ///< sweeps: draw the moving shapes at this time in [0, 1]; -1: not drawn
-    std::string caption;                    ///< text drawn above the figure; empty: the step's own description
-    bool singlePrecision = false;           ///< run the queries in float ("precision": "float") instead of double
+    StepView steps = StepView::Textbook;    ///< which algorithm the steps show ("steps": "textbook" or "faces")
+    /// Trace step to show, from 0 here; -1: the last step (the verdict). A scene file counts from 1 ("step": 1 is
+    /// the first axis, as every view numbers it); 0 from older files also means the first.
+    int step = -1;
+    double time = -1.0;           ///< sweeps: draw the moving shapes at this time in [0, 1]; -1: not drawn
+    std::string caption;          ///< text drawn above the figure; empty: the step's own description
+    bool singlePrecision = false; ///< run the queries in float ("precision": "float") instead of double
 };
 
 /// Largest accepted image side of a view, in pixels.

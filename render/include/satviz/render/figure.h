@@ -14,12 +14,14 @@ namespace satviz
 /// scene's choice.
 struct FigureOptions
 {
-    int width = 0;          ///< image width; 0: the scene's (default 800)
-    int height = 0;         ///< image height; 0: the scene's (default 600)
-    bool setStep = false;   ///< use `step` instead of the scene's
-    int step = -1;          ///< trace step; -1: the verdict
-    bool setLayers = false; ///< use `layers` instead of the scene's
-    LayerMask layers = 0;   ///< layers to draw
+    int width = 0;                       ///< image width; 0: the scene's (default 800)
+    int height = 0;                      ///< image height; 0: the scene's (default 600)
+    bool setStep = false;                ///< use `step` instead of the scene's
+    int step = -1;                       ///< trace step, from 0 (a user's step N is N - 1); -1: the verdict
+    bool setSteps = false;               ///< use `steps` instead of the scene's
+    StepView steps = StepView::Textbook; ///< which algorithm the steps show
+    bool setLayers = false;              ///< use `layers` instead of the scene's
+    LayerMask layers = 0;                ///< layers to draw
 };
 
 /// A figure ready to paint, or why it cannot be made.

@@ -4,13 +4,19 @@
 
 #include <satviz/scene.h>
 #include <satviz/sweep.h>
+#include <satviz/textbook.h>
 #include <satviz/trace.h>
 
 namespace satviz
 {
 
+/// Largest (n + m)^2 for which the textbook test is run for a view (it projects every vertex on every axis); a
+/// larger pair shows the face tests, and its caption says why.
+constexpr long long kTextbookBudget = 4000000;
+
 /// The pictured pair of a scene and what the SAT queries recorded for it. The static test is always run; the
-/// swept test only when the view shows it (nothing is swept when nothing moves).
+/// swept test only when the view shows it (nothing is swept when nothing moves). The fast queries always run (the
+/// contact points come from them); the textbook test too when the view shows its steps.
 struct PairStudy
 {
     int bodyA = -1;     ///< index of body A in the scene
@@ -20,13 +26,31 @@ struct PairStudy
     bool startsOverlapping = false;
     /// The queries ran in single precision (float), their results widened to double for drawing.
     bool singlePrecision = false;
-    Manifold manifold;       ///< Collide(A, B)
-    Trace trace;             ///< its step trace
-    SweepResult sweepResult; ///< Sweep(A, B), when sweep
-    SweepTrace sweepTrace;   ///< its step trace, when sweep
+    /// Which algorithm the steps show: the textbook test, or the face tests of the fast queries.
+    StepView steps = StepView::Textbook;
+    /// The textbook view was asked for, but the pair has too many vertices for it (kTextbookBudget): the face
+    /// tests are shown instead.
+    bool textbookTooLarge = false;
+    Manifold manifold;                       ///< Collide(A, B)
+    Trace trace;                             ///< its step trace
+    SweepResult sweepResult;                 ///< Sweep(A, B), when sweep
+    SweepTrace sweepTrace;                   ///< its step trace, when sweep
+    TextbookResult textbookResult;           ///< TextbookCollide(A, B), in the textbook view
+    TextbookTrace textbook;                  ///< its trace
+    TextbookSweepResult textbookSweepResult; ///< TextbookSweep(A, B), in the textbook view when sweep
+    TextbookSweepTrace textbookSweep;        ///< its trace
 
+    /// The steps are those of the textbook test.
+    bool Textbook() const { return steps == StepView::Textbook; }
     /// Number of axis steps of the shown test.
-    int AxisCount() const { return static_cast<int>(sweep ? sweepTrace.axes.size() : trace.axes.size()); }
+    int AxisCount() const
+    {
+        if (Textbook())
+        {
+            return static_cast<int>(sweep ? textbookSweep.axes.size() : textbook.axes.size());
+        }
+        return static_cast<int>(sweep ? sweepTrace.axes.size() : trace.axes.size());
+    }
     /// Number of steps: one per axis, then the verdict.
     int StepCount() const { return AxisCount() + 1; }
     /// The step that shows the verdict.
@@ -37,7 +61,9 @@ struct PairStudy
 /// relative to each other. A sweep that finds the pair overlapping at t = 0 shows the static test instead.
 /// With `singlePrecision`, the shapes are rounded to float and the float instantiation of the queries runs (a
 /// polygon that rounding makes invalid falls back to double, and singlePrecision stays false).
-PairStudy StudyPair(const Scene& scene, int a, int b, ViewQuery query, bool singlePrecision = false);
+/// `steps` chooses the algorithm whose steps are recorded for the view (the textbook test by default).
+PairStudy StudyPair(const Scene& scene, int a, int b, ViewQuery query, bool singlePrecision = false,
+                    StepView steps = StepView::Textbook);
 
 /// The world transform of a body at time t of the step (its velocity is the displacement over the step).
 Transform BodyTransformAt(const Body& body, double t);
