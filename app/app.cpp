@@ -358,6 +358,10 @@ void App::DeleteSelected()
 
 void App::Remember(const std::string& path)
 {
+    if (!options_.updateRecent)
+    {
+        return;
+    }
     std::error_code code;
     const std::string absolute = std::filesystem::absolute(path, code).string();
     recent.erase(std::remove(recent.begin(), recent.end(), absolute), recent.end());

@@ -29,10 +29,11 @@ struct AppKeys
 /// Start-up choices of the app.
 struct AppOptions
 {
-    std::string scenesDir;  ///< folder of the bundled scenes (the File menu lists them)
-    std::string recentFile; ///< where the recent files are remembered; empty: not remembered
-    std::string exportPath; ///< where ctrl+e writes the PNG; empty: next to the scene, SCENE-stepN.png
-    AppKeys keys;           ///< key codes
+    std::string scenesDir;    ///< folder of the bundled scenes (the File menu lists them)
+    std::string recentFile;   ///< where the recent files are remembered; empty: not remembered
+    bool updateRecent = true; ///< files opened or saved join the recent list; false: it is shown but left as it is
+    std::string exportPath;   ///< where ctrl+e writes the PNG; empty: next to the scene, SCENE-stepN.png
+    AppKeys keys;             ///< key codes
 };
 
 /// What a drag on the canvas does, decided when the mouse button goes down.

@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <memory>
 #include <spawn.h>
+#include <string>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -217,6 +218,7 @@ std::string FindRenderer()
 int main(int argc, char** argv)
 {
     CLI::App cli{"satviz: step through the Separating Axis Theorem, axis by axis"};
+    cli.set_version_flag("--version", std::string("satviz ") + SATVIZ_VERSION);
     std::string sceneFile;
     std::string exportPath;
     std::string size = "1280x800";
@@ -225,9 +227,18 @@ int main(int argc, char** argv)
     cli.add_option("--export-to", exportPath,
                    "Where ctrl+e writes the PNG (default: SCENE-stepN.png beside the scene)");
     cli.add_option("--window", size, "Window size WxH in pixels");
-    cli.add_option("--measure-fps", measureFrames,
-                   "Run this many frames without waiting for the display, print the frame rate, and exit");
+    const CLI::Option* measureOption =
+        cli.add_option("--measure-fps", measureFrames,
+                       "Run this many frames (at least 1) without waiting for the display, print the frame rate, "
+                       "and exit; the scene is not added to the Recent list");
     CLI11_PARSE(cli, argc, argv);
+    const bool measuring = measureOption->count() > 0;
+    if (measuring && measureFrames < 1)
+    {
+        std::fprintf(stderr, "satviz: --measure-fps: expected a number of frames of at least 1, got %d\n",
+                     measureFrames);
+        return 2;
+    }
     int windowWidth = 1280;
     int windowHeight = 800;
     if (std::sscanf(size.c_str(), "%dx%d", &windowWidth, &windowHeight) != 2 || windowWidth < 320 || windowHeight < 240)
@@ -251,7 +262,7 @@ int main(int argc, char** argv)
     }
     glfwSetWindowPos(window, 0, 0);
     glfwMakeContextCurrent(window);
-    glfwSwapInterval(measureFrames > 0 ? 0 : 1);
+    glfwSwapInterval(measuring ? 0 : 1);
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -275,6 +286,7 @@ int main(int argc, char** argv)
     satviz::AppOptions options;
     options.scenesDir = SATVIZ_SCENES_DIR;
     options.recentFile = RecentFile();
+    options.updateRecent = !measuring;
     options.exportPath = exportPath;
     options.keys.s = GLFW_KEY_S;
     options.keys.o = GLFW_KEY_O;
@@ -347,7 +359,7 @@ int main(int argc, char** argv)
         ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
         glfwSwapBuffers(window);
 
-        if (measureFrames > 0)
+        if (measuring)
         {
             ++frame;
             if (frame == 10)

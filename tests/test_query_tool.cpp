@@ -191,6 +191,15 @@ TEST_CASE("satviz-query without files explains its usage and fails", "[query]")
     CHECK(run.err.find("files") != std::string::npos);
 }
 
+TEST_CASE("satviz-query --version prints its name and the project version", "[query]")
+{
+    const Run run = Query("--version");
+    CHECK(run.exitCode == 0);
+    REQUIRE(run.out.size() == 1);
+    CHECK(run.out[0] == std::string("satviz-query ") + SATVIZ_VERSION);
+    CHECK(run.err.empty());
+}
+
 TEST_CASE("satviz-query reports times of impact for moving pairs", "[query][sweep]")
 {
     Write("moving.json", R"({"bodies": [

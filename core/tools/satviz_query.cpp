@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <string>
 
 // Names and messages quote the input, which may hold bytes that are not UTF-8: print them replaced, never throw.
 constexpr auto kReplace = nlohmann::ordered_json::error_handler_t::replace;
@@ -14,6 +15,7 @@ constexpr auto kReplace = nlohmann::ordered_json::error_handler_t::replace;
 int main(int argc, char** argv)
 {
     CLI::App app{"Collide every pair of bodies of each scene file; print one JSON line per file."};
+    app.set_version_flag("--version", std::string("satviz-query ") + SATVIZ_VERSION);
     std::vector<std::string> files;
     bool withTrace = false;
     app.add_option("files", files, "Scene files (JSON)")->required();

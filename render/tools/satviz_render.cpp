@@ -13,10 +13,13 @@
 #include <GL/osmesa.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <backends/imgui_impl_opengl2.h>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -193,11 +196,40 @@ bool ParseLayers(const std::string& text, satviz::LayerMask& mask, std::string& 
     return true;
 }
 
+/// True when `output` names one PNG file rather than a directory: its extension is .png in any case (.PNG too).
+bool IsPngFile(const std::string& output)
+{
+    std::string extension = std::filesystem::path(output).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension == ".png";
+}
+
+/// Figures in a directory are named after their scene file: two scenes of one file name (a/x.json and b/x.json,
+/// or one file given twice) would write the same figures. Returns a one-line reason naming both, or "".
+std::string SameFigureNames(const std::vector<std::string>& scenes, const std::string& output, bool allSteps)
+{
+    std::map<std::string, std::string> byStem;
+    for (const std::string& file : scenes)
+    {
+        const std::string stem = std::filesystem::path(file).stem().string();
+        const auto [first, inserted] = byStem.emplace(stem, file);
+        if (!inserted)
+        {
+            return first->second + " and " + file + " would both write " +
+                   (allSteps ? stem + "-stepN.png" : stem + ".png") + " in " + output +
+                   "; figures are named after the scene file: render them to separate directories";
+        }
+    }
+    return "";
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
     CLI::App app{"satviz-render: draws scene files and each step of their SAT trace to PNG, without a display"};
+    app.set_version_flag("--version", std::string("satviz-render ") + SATVIZ_VERSION);
     std::vector<std::string> scenes;
     std::string output;
     int step = -1;
@@ -207,8 +239,10 @@ int main(int argc, char** argv)
     bool quiet = false;
     app.add_option("scenes", scenes, "Scene files (JSON)")->required();
     app.add_option("-o,--output", output,
-                   "Output: a .png file for a single figure, else a directory (created if missing) that receives "
-                   "SCENE.png, or SCENE-stepN.png (N from 1) with --all-steps")
+                   "Output: a .png file (any case: .PNG too) for a single figure, else a directory (created if "
+                   "missing) that receives SCENE.png, or SCENE-stepN.png (N from 1) with --all-steps, named after "
+                   "each scene file without its extension; two scenes of the same file name (a/x.json, b/x.json) are "
+                   "refused")
         ->required();
     std::string viewName;
     auto* stepOption = app.add_option(
@@ -256,13 +290,18 @@ int main(int argc, char** argv)
         }
         options.setLayers = true;
     }
-    const bool singleFile = std::filesystem::path(output).extension() == ".png";
+    const bool singleFile = IsPngFile(output);
     if (singleFile && (scenes.size() != 1 || allSteps))
     {
         std::fprintf(stderr,
                      "satviz-render: -o %s: a .png output takes exactly one figure; give a directory for "
                      "several scenes or --all-steps\n",
                      output.c_str());
+        return 2;
+    }
+    if (const std::string clash = singleFile ? "" : SameFigureNames(scenes, output, allSteps); !clash.empty())
+    {
+        std::fprintf(stderr, "satviz-render: %s\n", clash.c_str());
         return 2;
     }
     {

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <sstream>
 #include <unistd.h>
 
 using namespace satviz;
@@ -61,7 +62,8 @@ struct Harness
     std::unique_ptr<App> app;
     ImGuiContext* context = nullptr;
 
-    explicit Harness(const std::string& scene)
+    /// The app with `scene` open; `options` as given, with the bundled scenes' folder.
+    explicit Harness(const std::string& scene, AppOptions options = {})
     {
         context = ImGui::CreateContext();
         ImGuiIO& io = ImGui::GetIO();
@@ -82,7 +84,6 @@ struct Harness
         io.KeyMap[ImGuiKey_Z] = kZ;
         io.KeyMap[ImGuiKey_Y] = kY;
         io.KeyMap[ImGuiKey_Escape] = kEscape;
-        AppOptions options;
         options.scenesDir = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes";
         app = std::make_unique<App>(fonts, options);
         REQUIRE(app->Open(scene));
@@ -349,4 +350,33 @@ TEST_CASE("Quitting with unsaved changes asks first, deleting keeps two bodies",
     edited.Key(kDelete);
     CHECK(edited.app->scene.bodies.size() == 2);
     CHECK(edited.app->statusIsError);
+}
+
+TEST_CASE("Opening a scene adds it to the recent file, unless the recent list is not to be updated", "[app]")
+{
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    const fs::path recentFile = copy.parent_path() / "config" / "recent.txt";
+    fs::create_directories(recentFile.parent_path());
+    std::ofstream(recentFile) << "/elsewhere/old.json\n";
+    const auto contents = [&recentFile]() {
+        std::ifstream in(recentFile);
+        std::ostringstream text;
+        text << in.rdbuf();
+        return text.str();
+    };
+    AppOptions options;
+    options.recentFile = recentFile.string();
+    {
+        // As for a --measure-fps run: the list is shown, but neither it nor its file changes.
+        options.updateRecent = false;
+        Harness h(copy.string(), options);
+        CHECK(h.app->recent == std::vector<std::string>{"/elsewhere/old.json"});
+        CHECK(contents() == "/elsewhere/old.json\n");
+    }
+    {
+        options.updateRecent = true;
+        Harness h(copy.string(), options);
+        CHECK(h.app->recent == std::vector<std::string>{fs::absolute(copy).string(), "/elsewhere/old.json"});
+        CHECK(contents() == fs::absolute(copy).string() + "\n/elsewhere/old.json\n");
+    }
 }

@@ -60,9 +60,11 @@ extern "C" void cpMessage(const char* condition, const char* file, int line, int
 #endif
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -70,6 +72,7 @@ extern "C" void cpMessage(const char* condition, const char* file, int line, int
 #include <random>
 #include <string>
 #include <thread>
+#include <unistd.h>
 #include <vector>
 
 using namespace satviz;
@@ -1336,21 +1339,121 @@ void PrintMachine(int argc, char** argv)
     std::printf("\n\n");
 }
 
+// The settings' own mistakes, found before anything runs: a one-line reason naming the option, or "" when the
+// settings can be run. A polygon of fewer than 3 vertices is never made (the pool would be drawn for ever), and no
+// pairs or no rounds would leave no pass to take a median of.
+std::string CheckSettings(const Settings& s)
+{
+    if (s.counts.empty())
+    {
+        return "--counts: give at least one vertex count";
+    }
+    for (int n : s.counts)
+    {
+        if (n < 3)
+        {
+            return "--counts: a polygon has at least 3 vertices, got " + std::to_string(n);
+        }
+    }
+    if (s.pairs < 1)
+    {
+        return "--pairs: at least 1 pair per slice, got " + std::to_string(s.pairs);
+    }
+    if (s.rounds < 1)
+    {
+        return "--rounds: at least 1 round, got " + std::to_string(s.rounds);
+    }
+    return "";
+}
+
+// Makes sure the results can be written to `directory` (creating it if missing) before the run, which takes
+// minutes; a file is created there and removed to prove it. Returns a one-line reason, or "" when it can.
+std::string CheckCsvDirectory(const std::string& directory)
+{
+    const std::filesystem::path path(directory);
+    std::error_code code;
+    std::filesystem::create_directories(path, code);
+    if (code)
+    {
+        return "--csv " + directory + ": cannot create the directory (" + code.message() + ")";
+    }
+    if (!std::filesystem::is_directory(path, code))
+    {
+        return "--csv " + directory + ": not a directory";
+    }
+    const std::filesystem::path probe = path / (".satviz-bench-probe-" + std::to_string(::getpid()));
+    std::FILE* file = std::fopen(probe.c_str(), "w");
+    if (file == nullptr)
+    {
+        return "--csv " + directory + ": cannot write there (" + std::strerror(errno) + ")";
+    }
+    std::fclose(file);
+    std::filesystem::remove(probe, code);
+    return "";
+}
+
+// Printed by --quick, with the figures: they come from tiny pools and one round.
+constexpr const char* kQuickNotice =
+    "--quick: tiny pools and one round: these figures only show that the benchmark runs; they are not measurements";
+
+// What --help says the benchmark compares satviz with; the last line tells which peers this build has.
+std::string PeersHelp()
+{
+    std::string text =
+        "Compared, on the same random pairs in this process:\n"
+        "  Box2D (libbox2d-dev, up to 8 vertices): b2TestOverlap, b2CollidePolygons,\n"
+        "    b2PolygonShape::RayCast, b2TimeOfImpact, b2TimeOfImpact + b2CollidePolygons at t\n"
+        "  Chipmunk (libchipmunk-dev): cpShapesCollide (as a yes/no and with its contacts)\n"
+        "  the textbook SAT loop (tests/bench/textbook_sat.h, up to 1024 vertices): Overlap, MTV, TOI\n"
+        "  satviz itself with some of its choices turned off (early exit, parallel skip, pruning, walk)\n"
+        "Accuracy: against a __float128 reference (tests/support/reference.h).\n"
+        "This build: ";
+#ifdef SATVIZ_HAVE_BOX2D
+    text += std::string("Box2D ") + SATVIZ_BOX2D_VERSION;
+#else
+    text += "no Box2D";
+#endif
+#ifdef SATVIZ_HAVE_CHIPMUNK
+    text += std::string(", Chipmunk ") + cpVersionString;
+#else
+    text += ", no Chipmunk";
+#endif
+    return text + ".";
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
     Settings s;
     bool quick = false;
-    CLI::App app{"satviz-bench: ns per query and error against a quad-precision reference, beside Box2D."};
+    CLI::App app{"satviz-bench: ns per query and error against a quad-precision reference, beside Box2D, "
+                 "Chipmunk and the textbook SAT loop."};
+    app.set_version_flag("--version", std::string("satviz-bench ") + SATVIZ_VERSION);
+    app.footer(PeersHelp());
     app.add_flag("--quick", quick, "Tiny pools and few rounds: checks that the benchmark runs, measures nothing");
-    app.add_option("--pairs", s.pairs, "Pairs per slice");
-    app.add_option("--rounds", s.rounds, "Rounds (the figure is their median)");
+    app.add_option("--pairs", s.pairs, "Pairs per slice (at least 1)");
+    app.add_option("--rounds", s.rounds, "Rounds (the figure is their median; at least 1)");
     app.add_option("--seed", s.seed, "Random seed");
-    app.add_option("--counts", s.counts, "Vertex counts");
+    app.add_option("--counts", s.counts, "Vertex counts (each at least 3)");
     std::string csv;
-    app.add_option("--csv", csv, "Also write timing.csv and accuracy.csv into this directory (for the plots)");
+    app.add_option("--csv", csv,
+                   "Also write timing.csv, accuracy.csv and accuracy_by_category.csv into this directory (for the "
+                   "plots); created if missing, checked before the run");
     CLI11_PARSE(app, argc, argv);
+    if (const std::string error = CheckSettings(s); !error.empty())
+    {
+        std::fprintf(stderr, "satviz-bench: %s\n", error.c_str());
+        return 2;
+    }
+    if (!csv.empty())
+    {
+        if (const std::string error = CheckCsvDirectory(csv); !error.empty())
+        {
+            std::fprintf(stderr, "satviz-bench: %s\n", error.c_str());
+            return 2;
+        }
+    }
     if (quick)
     {
         s.pairs = 20;
@@ -1360,6 +1463,10 @@ int main(int argc, char** argv)
     }
 
     PrintMachine(argc, argv);
+    if (quick)
+    {
+        std::printf("%s\n\n", kQuickNotice);
+    }
     Rng rng(s.seed);
     const std::vector<Query> queries = Queries();
     std::map<int, Timing> timings;
@@ -1546,9 +1653,9 @@ int main(int argc, char** argv)
         }
     }
 
+    bool csvFailed = false;
     if (!csv.empty())
     {
-        std::filesystem::create_directories(csv);
         std::ofstream byCategoryCsv(std::filesystem::path(csv) / "accuracy_by_category.csv");
         byCategoryCsv << "category,query,pairs,wrong,wrong_outside_band,error_median,error_max,relative_max,"
                          "angle_median,angle_max\n";
@@ -1591,13 +1698,28 @@ int main(int argc, char** argv)
             CsvFigures(accuracy, a.angleErrors);
             accuracy << '\n';
         }
-        std::fprintf(stderr, "satviz-bench: CSV files written to %s\n", csv.c_str());
+        byCategoryCsv.close();
+        timing.close();
+        accuracy.close();
+        if (byCategoryCsv && timing && accuracy)
+        {
+            std::fprintf(stderr, "satviz-bench: CSV files written to %s\n", csv.c_str());
+        }
+        else
+        {
+            std::fprintf(stderr, "satviz-bench: --csv %s: writing the CSV files failed\n", csv.c_str());
+            csvFailed = true;
+        }
     }
 
 #ifdef SATVIZ_HAVE_CHIPMUNK
     std::printf("\nchipmunk: %ld warnings (\"High EPA iterations\") counted instead of printed\n", g_chipmunkWarnings);
 #endif
     std::printf("\ntargets (8-gons unless said)\n");
+    if (quick)
+    {
+        std::printf("  %s\n", kQuickNotice);
+    }
     auto target = [&](const char* label, double value, double limit) {
         std::printf("  %-52s %10.3g  (target <= %g)  %s\n", label, value, limit, value <= limit ? "met" : "MISSED");
     };
@@ -1668,5 +1790,5 @@ int main(int argc, char** argv)
     target("satviz RayCast error, relative, every category (float)", worstRelative("satviz RayCast float"), 1e-5);
     std::printf("  (double, the same measure: Sweep %.3g, RayCast %.3g)\n", worstRelative("satviz Sweep"),
                 worstRelative("satviz RayCast"));
-    return 0;
+    return csvFailed ? 1 : 0;
 }

@@ -20,24 +20,35 @@ namespace
 struct Run
 {
     int exitCode = -1;
+    std::vector<std::string> outLines;
     std::vector<std::string> errLines;
 };
+
+/// The lines of a file, which is then removed.
+std::vector<std::string> TakeLines(const std::string& path)
+{
+    std::vector<std::string> lines;
+    std::ifstream in(path);
+    for (std::string line; std::getline(in, line);)
+    {
+        lines.push_back(line);
+    }
+    in.close();
+    std::remove(path.c_str());
+    return lines;
+}
 
 Run Render(const std::string& arguments)
 {
     // ctest may run the cases of this file in parallel: each process keeps its own output files.
+    const std::string out = "render-" + std::to_string(::getpid()) + ".out";
     const std::string err = "render-" + std::to_string(::getpid()) + ".err";
-    const std::string command = std::string(SATVIZ_RENDER_EXE) + " " + arguments + " > /dev/null 2> " + err;
+    const std::string command = std::string(SATVIZ_RENDER_EXE) + " " + arguments + " > " + out + " 2> " + err;
     const int status = std::system(command.c_str());
     Run run;
     run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(err);
-    for (std::string line; std::getline(in, line);)
-    {
-        run.errLines.push_back(line);
-    }
-    in.close();
-    std::remove(err.c_str());
+    run.outLines = TakeLines(out);
+    run.errLines = TakeLines(err);
     return run;
 }
 
@@ -188,4 +199,69 @@ TEST_CASE("satviz-render: the same scene gives byte-identical PNGs, alone or in 
     CHECK(alone.size() > 1000);
     CHECK(alone == Bytes(dir / "batch" / "circle_and_polygon.png"));
     CHECK(alone.substr(1, 3) == "PNG");
+}
+
+TEST_CASE("satviz-render: two scenes of one file name are refused, naming both, before any figure", "[render-tool]")
+{
+    const fs::path dir = FreshDirectory("render-same-name");
+    fs::create_directories(dir / "a");
+    fs::create_directories(dir / "b");
+    fs::copy_file(Scene("two_circles.json"), dir / "a" / "x.json");
+    fs::copy_file(Scene("overlapping_boxes.json"), dir / "b" / "x.json");
+    const std::string a = (dir / "a" / "x.json").string();
+    const std::string b = (dir / "b" / "x.json").string();
+
+    const Run run = Render(Scene("fly_by.json") + " " + a + " " + b + " -q -o " + (dir / "out").string());
+    CHECK(run.exitCode == 2);
+    REQUIRE(run.errLines.size() == 1);
+    CHECK(run.errLines[0].find("satviz-render: ") == 0);
+    CHECK(run.errLines[0].find(a) != std::string::npos);
+    CHECK(run.errLines[0].find(b) != std::string::npos);
+    CHECK(run.errLines[0].find("x.png") != std::string::npos);
+    CHECK(!fs::exists(dir / "out" / "x.png"));
+    CHECK(!fs::exists(dir / "out" / "fly_by.png"));
+
+    // The same with one figure per step, and with one file given twice.
+    const Run steps = Render(a + " " + b + " --all-steps -q -o " + (dir / "out").string());
+    CHECK(steps.exitCode == 2);
+    REQUIRE(steps.errLines.size() == 1);
+    CHECK(steps.errLines[0].find("x-stepN.png") != std::string::npos);
+    const Run twice = Render(a + " " + a + " -q -o " + (dir / "out").string());
+    CHECK(twice.exitCode == 2);
+    REQUIRE(twice.errLines.size() == 1);
+    CHECK(twice.errLines[0].find(a + " and " + a) != std::string::npos);
+
+    // Scenes of different file names in one batch are still fine.
+    const Run distinct = Render(a + " " + Scene("fly_by.json") + " -q -o " + (dir / "out").string());
+    CHECK(distinct.exitCode == 0);
+    CHECK(fs::exists(dir / "out" / "x.png"));
+    CHECK(fs::exists(dir / "out" / "fly_by.png"));
+}
+
+TEST_CASE("satviz-render: -o with .png in any case is a file, not a directory", "[render-tool]")
+{
+    const fs::path dir = FreshDirectory("render-png-case");
+    for (const char* name : {"Figure.PNG", "figure.Png"})
+    {
+        INFO(name);
+        const Run run = Render(Scene("two_circles.json") + " -q -o " + (dir / name).string());
+        CHECK(run.exitCode == 0);
+        CHECK(fs::is_regular_file(dir / name));
+        CHECK(Bytes(dir / name).substr(1, 3) == "PNG");
+    }
+    const Run two =
+        Render(Scene("two_circles.json") + " " + Scene("fly_by.json") + " -o " + (dir / "two.PNG").string());
+    CHECK(two.exitCode == 2);
+    REQUIRE(two.errLines.size() == 1);
+    CHECK(two.errLines[0].find(".png output takes exactly one figure") != std::string::npos);
+    CHECK(!fs::exists(dir / "two.PNG"));
+}
+
+TEST_CASE("satviz-render --version prints its name and the project version", "[render-tool]")
+{
+    const Run run = Render("--version");
+    CHECK(run.exitCode == 0);
+    REQUIRE(run.outLines.size() == 1);
+    CHECK(run.outLines[0] == std::string("satviz-render ") + SATVIZ_VERSION);
+    CHECK(run.errLines.empty());
 }

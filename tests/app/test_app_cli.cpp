@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: MIT
+// The app's command line, checked before any window opens: --version, --measure-fps refused below 1 frame, and the
+// options as README.md lists them. Runs the real program without a display, so a check that came too late would
+// fail at the window instead.
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+
+struct Run
+{
+    int exitCode = -1;
+    std::string out;
+    std::vector<std::string> errLines;
+};
+
+/// Runs satviz with `arguments` and no display, found on the PATH as `satviz` (so that its usage line names it
+/// so); its output goes to files of this process, read and removed.
+Run App(const std::string& arguments)
+{
+    const fs::path out = fs::temp_directory_path() / ("satviz-app-cli-" + std::to_string(::getpid()) + ".out");
+    const fs::path err = fs::temp_directory_path() / ("satviz-app-cli-" + std::to_string(::getpid()) + ".err");
+    const std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY PATH=\"" +
+                                fs::path(SATVIZ_APP_EXE).parent_path().string() + ":$PATH\" satviz " + arguments +
+                                " > " + out.string() + " 2> " + err.string();
+    const int status = std::system(command.c_str());
+    Run run;
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    {
+        std::ifstream outFile(out);
+        std::ostringstream text;
+        text << outFile.rdbuf();
+        run.out = text.str();
+        std::ifstream errFile(err);
+        for (std::string line; std::getline(errFile, line);)
+        {
+            run.errLines.push_back(line);
+        }
+    }
+    fs::remove(out);
+    fs::remove(err);
+    return run;
+}
+
+} // namespace
+
+TEST_CASE("satviz --version prints its name and the project version", "[app-cli]")
+{
+    const Run run = App("--version");
+    CHECK(run.exitCode == 0);
+    CHECK(run.out == std::string("satviz ") + SATVIZ_VERSION + "\n");
+    CHECK(run.errLines.empty());
+}
+
+TEST_CASE("satviz refuses --measure-fps below 1 frame with one line, before opening a window", "[app-cli]")
+{
+    for (const char* frames : {"0", "-1", "-250"})
+    {
+        INFO("--measure-fps " << frames);
+        const Run run = App(std::string("--measure-fps ") + frames);
+        CHECK(run.exitCode == 2);
+        CHECK(run.out.empty());
+        REQUIRE(run.errLines.size() == 1);
+        CHECK(run.errLines[0] ==
+              std::string("satviz: --measure-fps: expected a number of frames of at least 1, got ") + frames);
+    }
+}
+
+TEST_CASE("README.md lists the app's options as satviz --help prints them", "[app-cli]")
+{
+    const Run run = App("--help");
+    CHECK(run.exitCode == 0);
+    std::ifstream in(std::string(SATVIZ_SOURCE_DIR) + "/README.md");
+    std::ostringstream text;
+    text << in.rdbuf();
+    const std::string readme = text.str();
+    const std::string start = "```text\nsatviz: ";
+    const size_t begin = readme.find(start);
+    REQUIRE(begin != std::string::npos);
+    const size_t end = readme.find("```\n", begin + start.size());
+    REQUIRE(end != std::string::npos);
+    // CLI11 ends its help with an empty line, which the README leaves out.
+    CHECK(readme.substr(begin + 8, end - begin - 8) + "\n" == run.out);
+}

@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+// satviz-bench as a program: settings it cannot run and a --csv directory it cannot write are refused with one line
+// before the run starts, --quick says that its figures are not measurements, --help names the peers.
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+
+struct Run
+{
+    int exitCode = -1;
+    std::string out;
+    std::vector<std::string> errLines;
+};
+
+/// The files of these tests live in a directory of their own, removed at exit.
+struct ScratchDirectory
+{
+    fs::path dir = fs::temp_directory_path() / ("satviz-bench-test-" + std::to_string(::getpid()));
+
+    ScratchDirectory() { fs::create_directories(dir); }
+    ~ScratchDirectory()
+    {
+        std::error_code ignored;
+        fs::remove_all(dir, ignored);
+    }
+};
+
+const ScratchDirectory kScratch;
+
+Run Bench(const std::string& arguments)
+{
+    const fs::path out = kScratch.dir / "bench.out";
+    const fs::path err = kScratch.dir / "bench.err";
+    const std::string command =
+        std::string(SATVIZ_BENCH_EXE) + " " + arguments + " > " + out.string() + " 2> " + err.string();
+    const int status = std::system(command.c_str());
+    Run run;
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream outFile(out);
+    std::ostringstream text;
+    text << outFile.rdbuf();
+    run.out = text.str();
+    std::ifstream errFile(err);
+    for (std::string line; std::getline(errFile, line);)
+    {
+        run.errLines.push_back(line);
+    }
+    return run;
+}
+
+/// A refused run: exit code 2, one line on stderr that holds every one of `words`, and nothing run (no output).
+void CheckRefused(const std::string& arguments, const std::vector<std::string>& words)
+{
+    INFO("satviz-bench " << arguments);
+    const Run run = Bench(arguments);
+    CHECK(run.exitCode == 2);
+    CHECK(run.out.empty());
+    REQUIRE(run.errLines.size() == 1);
+    INFO(run.errLines[0]);
+    CHECK(run.errLines[0].find("satviz-bench: ") == 0);
+    for (const std::string& word : words)
+    {
+        CHECK(run.errLines[0].find(word) != std::string::npos);
+    }
+}
+
+} // namespace
+
+// The timeout of this file's tests (CMakeLists.txt) catches the hang these runs used to be.
+TEST_CASE("satviz-bench refuses vertex counts below 3, no pairs and no rounds", "[bench-tool]")
+{
+    CheckRefused("--counts 2", {"--counts", "at least 3 vertices", "got 2"});
+    CheckRefused("--counts 8 0", {"--counts", "got 0"});
+    CheckRefused("--counts -4", {"--counts", "got -4"});
+    CheckRefused("--pairs 0", {"--pairs", "got 0"});
+    CheckRefused("--pairs -3", {"--pairs", "got -3"});
+    CheckRefused("--rounds 0", {"--rounds", "got 0"});
+    // Checked before --quick sets its own pool sizes.
+    CheckRefused("--quick --pairs 0", {"--pairs", "got 0"});
+}
+
+TEST_CASE("satviz-bench checks the --csv directory before the run", "[bench-tool]")
+{
+    // Under a regular file no directory can be made (root too); without the quick flag, a run would take minutes.
+    const fs::path file = kScratch.dir / "a-file";
+    std::ofstream(file) << "not a directory";
+    CheckRefused("--csv " + (file / "results").string(), {"--csv", (file / "results").string(), "cannot create"});
+    CheckRefused("--csv " + file.string(), {"--csv", file.string()});
+    CHECK(!fs::exists(file / "results"));
+}
+
+TEST_CASE("satviz-bench --quick says its figures are not measurements, and writes the CSV files", "[bench-tool]")
+{
+    const fs::path csv = kScratch.dir / "new" / "csv";
+    const Run run = Bench("--quick --counts 3 8 --csv " + csv.string());
+    CHECK(run.exitCode == 0);
+    CHECK(run.out.find("--quick: tiny pools and one round: these figures only show that the benchmark runs; they are "
+                       "not measurements\n") != std::string::npos);
+    CHECK(fs::is_regular_file(csv / "timing.csv"));
+    CHECK(fs::is_regular_file(csv / "accuracy.csv"));
+    CHECK(fs::is_regular_file(csv / "accuracy_by_category.csv"));
+    // The probe file of the check before the run is gone.
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(csv))
+    {
+        CHECK(entry.path().filename().string().find("probe") == std::string::npos);
+        ++files;
+    }
+    CHECK(files == 3);
+}
+
+TEST_CASE("satviz-bench --help names every peer it compares with", "[bench-tool]")
+{
+    const Run run = Bench("--help");
+    CHECK(run.exitCode == 0);
+    for (const char* peer :
+         {"Box2D", "b2TestOverlap", "b2CollidePolygons", "b2PolygonShape::RayCast", "b2TimeOfImpact",
+          "b2TimeOfImpact + b2CollidePolygons at t", "Chipmunk", "cpShapesCollide", "textbook SAT loop", "__float128"})
+    {
+        INFO(peer);
+        CHECK(run.out.find(peer) != std::string::npos);
+    }
+    CHECK(run.out.find("This build: ") != std::string::npos);
+}
+
+TEST_CASE("satviz-bench --version prints its name and the project version", "[bench-tool]")
+{
+    const Run run = Bench("--version");
+    CHECK(run.exitCode == 0);
+    CHECK(run.out == std::string("satviz-bench ") + SATVIZ_VERSION + "\n");
+    CHECK(run.errLines.empty());
+}
