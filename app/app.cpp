@@ -200,8 +200,11 @@ Scene App::SceneForSaving() const
     view.fit = cameraFit;
     if (!cameraFit)
     {
-        view.center = camera.center;
-        view.zoom = camera.zoom;
+        // Within what a scene file accepts, so that the saved file opens again (a fit to a huge or tiny pair can
+        // leave the camera beyond them).
+        view.center = {std::clamp(camera.center.x, -kMaxSceneValue, kMaxSceneValue),
+                       std::clamp(camera.center.y, -kMaxSceneValue, kMaxSceneValue)};
+        view.zoom = std::clamp(camera.zoom, kMinViewZoom, kMaxViewZoom);
     }
     view.width = canvasWidth;
     view.height = canvasHeight;

@@ -151,6 +151,13 @@ TEST_CASE("View block errors name the field", "[scene]")
     CHECK(ErrorOf(two + R"({"time": 1.5}})") ==
           "s.json: view.time: expected a time in [0, 1] (a fraction of the step)");
     CHECK(ErrorOf(two + R"({"zoom": -3}})") == "s.json: view.zoom: must be greater than 0");
+    CHECK(ErrorOf(two + R"({"zoom": 1e-300}})") ==
+          "s.json: view.zoom: expected pixels per world unit from 1e-9 to 1e12, or \"fit\"");
+    CHECK(ErrorOf(two + R"({"zoom": 2e12}})") ==
+          "s.json: view.zoom: expected pixels per world unit from 1e-9 to 1e12, or \"fit\"");
+    CHECK(ErrorOf(two + R"({"zoom": "far"}})") == "s.json: view.zoom: expected a number, got a string");
+    CHECK(ParseScene(two + R"({"zoom": 1e-9}})", "s.json").Ok());
+    CHECK(ParseScene(two + R"({"zoom": 1e12}})", "s.json").Ok());
     CHECK(ErrorOf(two + R"({"center": [0, 0]}})") ==
           "s.json: view.center: needs a \"zoom\" (pixels per unit) beside it");
     CHECK(ErrorOf(two + R"({"query": "raycast"}})") ==
@@ -246,4 +253,16 @@ TEST_CASE("Errors stay on one line whatever the input holds", "[scene]")
     CHECK(error == "s.json: vi\\nyew: unknown field \"vi\\nyew\" (did you mean \"view\"?)");
     CHECK(ErrorOf("{\"bodies\": [{\"name\": \"a\\tb\", \"box\": [1, 1]}, {\"name\": \"a\\tb\", \"box\": [1, 1]}]}")
               .find('\t') == std::string::npos);
+}
+
+TEST_CASE("Zoom and center beyond the accepted range are refused with the field named", "[scene]")
+{
+    const std::string two = R"({"bodies": [{"name": "P", "box": [1, 1]}, {"name": "Q", "box": [1, 1]}], "view": )";
+    CHECK(ErrorOf(two + R"({"zoom": 0}})") == "s.json: view.zoom: must be greater than 0");
+    CHECK(ErrorOf(two + R"({"zoom": 5e-10, "center": [0, 0]}})") ==
+          "s.json: view.zoom: expected pixels per world unit from 1e-9 to 1e12, or \"fit\"");
+    CHECK(ErrorOf(two + R"({"zoom": 10, "center": [0, -2e12]}})") == "s.json: view.center[1]: magnitude exceeds 1e+12");
+    const SceneResult edge = ParseScene(two + R"({"zoom": 1e-9, "center": [1e12, 0]}})", "s.json");
+    REQUIRE(edge.Ok());
+    CHECK(edge.scene.view.zoom == kMinViewZoom);
 }

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <unistd.h>
@@ -178,9 +179,9 @@ Vec2 Point(const Json& value, const std::string& path)
     return {Number(value[0], path + "[0]"), Number(value[1], path + "[1]")};
 }
 
-double PositiveNumber(const Json& value, const std::string& path)
+double PositiveNumber(const Json& value, const std::string& path, double limit = kMaxSceneValue)
 {
-    const double number = Number(value, path);
+    const double number = Number(value, path, limit);
     if (number <= 0.0)
     {
         Fail(path, "must be greater than 0");
@@ -365,7 +366,11 @@ SceneView ParseView(const Json& value, const Scene& scene)
         }
         else
         {
-            view.zoom = PositiveNumber(zoom, path + ".zoom");
+            view.zoom = PositiveNumber(zoom, path + ".zoom", std::numeric_limits<double>::max());
+            if (view.zoom < kMinViewZoom || view.zoom > kMaxViewZoom)
+            {
+                Fail(path + ".zoom", "expected pixels per world unit from 1e-9 to 1e12, or \"fit\"");
+            }
             view.fit = false;
         }
     }

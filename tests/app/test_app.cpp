@@ -350,3 +350,28 @@ TEST_CASE("Quitting with unsaved changes asks first, deleting keeps two bodies",
     CHECK(edited.app->scene.bodies.size() == 2);
     CHECK(edited.app->statusIsError);
 }
+
+TEST_CASE("A camera beyond what a scene file accepts is saved within it, so the file opens again", "[app]")
+{
+    const fs::path copy = ScratchCopy("separated_triangle.json");
+    Harness h(copy.string());
+    h.app->cameraFit = false;
+    h.app->camera.zoom = 1e15;
+    h.app->dirty = true;
+    h.Key('S', true);
+    CHECK(h.app->status.find("Saved") == 0);
+    SceneResult saved = LoadScene(copy.string());
+    INFO(saved.error);
+    REQUIRE(saved.Ok());
+    CHECK(saved.scene.view.zoom == kMaxViewZoom);
+
+    h.app->camera.zoom = 1e-12;
+    h.app->camera.center = {-5e12, 3.0};
+    h.app->dirty = true;
+    h.Key('S', true);
+    saved = LoadScene(copy.string());
+    INFO(saved.error);
+    REQUIRE(saved.Ok());
+    CHECK(saved.scene.view.zoom == kMinViewZoom);
+    CHECK(saved.scene.view.center == Vec2{-kMaxSceneValue, 3.0});
+}

@@ -61,6 +61,12 @@ struct SceneView
 /// Largest accepted image side of a view, in pixels.
 constexpr int kMaxViewSize = 8192;
 
+/// Smallest accepted view zoom, in pixels per world unit: a 1e12-wide world still fits in a few pixels.
+constexpr double kMinViewZoom = 1e-9;
+
+/// Largest accepted view zoom, in pixels per world unit (the app's wheel zoom stops at the same bounds).
+constexpr double kMaxViewZoom = 1e12;
+
 /// A scene: bodies in the world.
 struct Scene
 {
