@@ -7,6 +7,7 @@
 #include <satviz/render/describe.h>
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -374,4 +375,24 @@ TEST_CASE("A camera beyond what a scene file accepts is saved within it, so the 
     REQUIRE(saved.Ok());
     CHECK(saved.scene.view.zoom == kMinViewZoom);
     CHECK(saved.scene.view.center == Vec2{-kMaxSceneValue, 3.0});
+}
+
+TEST_CASE("Saving after an edit keeps the file's $schema, its box shorthand and its key order", "[app]")
+{
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    Harness h(copy.string());
+    const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x + 30.0f, from.y));
+    REQUIRE(h.app->dirty);
+    h.Key('S', true);
+    REQUIRE(!h.app->dirty);
+    std::ifstream in(copy);
+    const nlohmann::ordered_json saved = nlohmann::ordered_json::parse(in);
+    CHECK(saved.begin().key() == "$schema");
+    CHECK(saved["$schema"] == "../../core/scene/scene.schema.json");
+    CHECK(saved["bodies"][0].dump() == R"({"name":"A","box":[2.0,1.0],"position":[0.0,0.0]})");
+    const nlohmann::ordered_json& b = saved["bodies"][1];
+    CHECK(b["polygon"].dump() == "[[-0.5,-0.5],[0.5,-0.5],[0.5,0.5],[-0.5,0.5]]");
+    CHECK(b["position"][0].get<double>() == h.BodyNamed("B").position.x);
+    CHECK(saved.contains("view"));
 }
