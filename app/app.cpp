@@ -234,6 +234,17 @@ bool App::TakeExportRequest(std::string& path)
     return true;
 }
 
+bool App::RequestOpen(const std::string& path)
+{
+    if (!dirty)
+    {
+        return Open(path);
+    }
+    pendingOpen_ = path;
+    askOpenUnsaved_ = true;
+    return false;
+}
+
 bool App::RequestQuit()
 {
     if (!dirty || quitConfirmed_)
@@ -567,7 +578,7 @@ void App::MenuBar()
             {
                 if (ImGui::MenuItem(std::filesystem::path(path).stem().string().c_str()))
                 {
-                    Open(path);
+                    RequestOpen(path);
                 }
             }
             ImGui::EndMenu();
@@ -578,7 +589,7 @@ void App::MenuBar()
             {
                 if (ImGui::MenuItem(path.c_str()))
                 {
-                    Open(path);
+                    RequestOpen(path);
                 }
             }
             ImGui::EndMenu();
@@ -1012,14 +1023,29 @@ void App::Popups()
         askQuit_ = false;
         ImGui::OpenPopup("Unsaved changes");
     }
+    if (askOpenUnsaved_)
+    {
+        askOpenUnsaved_ = false;
+        ImGui::OpenPopup("Unsaved changes before opening");
+    }
     const ImVec2 center = ImGui::GetMainViewport()->GetCenter();
     if (PathPopup("Open scene", "Scene file (JSON):", "Open", pathBuffer_, sizeof(pathBuffer_)))
     {
-        Open(pathBuffer_);
+        RequestOpen(pathBuffer_);
     }
+    const bool saveAsOpen = ImGui::IsPopupOpen("Save scene as");
     if (PathPopup("Save scene as", "Save to (JSON):", "Save", pathBuffer_, sizeof(pathBuffer_)))
     {
         Save(pathBuffer_);
+        if (openAfterSaveAs_ && !dirty)
+        {
+            Open(pendingOpen_);
+        }
+        openAfterSaveAs_ = false;
+    }
+    else if (saveAsOpen && !ImGui::IsPopupOpen("Save scene as"))
+    {
+        openAfterSaveAs_ = false; // cancelled: the scene stays, nothing is opened
     }
     ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
@@ -1044,6 +1070,41 @@ void App::Popups()
         {
             quitConfirmed_ = true;
             ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel"))
+        {
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+    ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Unsaved changes before opening", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    {
+        ImGui::Text("%s has unsaved changes.", file.empty() ? "The scene" : file.c_str());
+        ImGui::Text("Open %s?", pendingOpen_.c_str());
+        if (ImGui::Button("Save and open"))
+        {
+            ImGui::CloseCurrentPopup();
+            if (file.empty() || readOnly)
+            {
+                openAfterSaveAs_ = true;
+                askSaveAs_ = true;
+            }
+            else
+            {
+                Save(file);
+                if (!dirty)
+                {
+                    Open(pendingOpen_);
+                }
+            }
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Open without saving"))
+        {
+            ImGui::CloseCurrentPopup();
+            Open(pendingOpen_);
         }
         ImGui::SameLine();
         if (ImGui::Button("Cancel"))

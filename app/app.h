@@ -55,6 +55,9 @@ class App
 
     /// Opens a scene file. On failure the current scene stays and the error is shown in the app.
     bool Open(const std::string& file);
+    /// The user wants to open `file` (ctrl+o, the Bundled scenes or Recent menu): opens it now when nothing is
+    /// unsaved, else asks first (save and open, open without saving, cancel) and returns false.
+    bool RequestOpen(const std::string& file);
     /// Builds the whole user interface for one ImGui frame (between NewFrame and Render).
     void Frame();
     /// The user wants to close the window: true when the app may close now; with unsaved changes it asks first.
@@ -143,6 +146,10 @@ class App
     int newSides_ = 5;
     bool askQuit_ = false;
     bool askOpen_ = false;
+    bool askOpenUnsaved_ = false;
+    std::string pendingOpen_;      // the file to open once the unsaved changes are dealt with
+    bool openAfterSaveAs_ = false; // the Save as popup was opened by "Save and open"
+
     bool askSaveAs_ = false;
     bool exportRequested_ = false;
     std::string exportPath_;

@@ -7,6 +7,7 @@
 #include <satviz/render/describe.h>
 
 #include <catch2/catch.hpp>
+#include <imgui_internal.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -30,6 +31,7 @@ enum KeySlot
     kZ,
     kY,
     kEscape,
+    kEnter,
 };
 
 /// The directory of this process's scene copies, removed when the tests end.
@@ -83,6 +85,7 @@ struct Harness
         io.KeyMap[ImGuiKey_Z] = kZ;
         io.KeyMap[ImGuiKey_Y] = kY;
         io.KeyMap[ImGuiKey_Escape] = kEscape;
+        io.KeyMap[ImGuiKey_Enter] = kEnter;
         AppOptions options;
         options.scenesDir = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes";
         app = std::make_unique<App>(fonts, options);
@@ -140,6 +143,51 @@ struct Harness
         io.KeysDown[slot] = false;
         Frames(1);
         io.KeyCtrl = false;
+    }
+    // Types into the text field that has the keyboard focus, then presses Enter.
+    void TypeAndEnter(const std::string& text)
+    {
+        Frames(1);
+        ImGui::GetIO().AddInputCharactersUTF8(text.c_str());
+        Frames(1);
+        Key(kEnter);
+    }
+    // True while the window (or popup) of that name is shown.
+    static bool Showing(const char* window)
+    {
+        const ImGuiWindow* w = ImGui::FindWindowByName(window);
+        return w != nullptr && w->Active;
+    }
+    // Clicks the button of that label in the window of that name: finds it by moving the pointer over the window
+    // until ImGui reports the button hovered. False when the window or the button is not shown.
+    bool ClickButton(const char* window, const char* label)
+    {
+        Frames(2); // a popup that just appeared is sized on its second frame
+        ImGuiWindow* w = ImGui::FindWindowByName(window);
+        if (w == nullptr || !w->Active)
+        {
+            return false;
+        }
+        const ImGuiID id = w->GetID(label);
+        const ImVec2 low = w->Pos;
+        const ImVec2 high(w->Pos.x + w->Size.x, w->Pos.y + w->Size.y);
+        for (float y = low.y + 2.0f; y < high.y; y += 4.0f)
+        {
+            for (float x = low.x + 2.0f; x < high.x; x += 8.0f)
+            {
+                MoveTo(ImVec2(x, y));
+                if (ImGui::GetCurrentContext()->HoveredId == id)
+                {
+                    ImGuiIO& io = ImGui::GetIO();
+                    io.MouseDown[0] = true;
+                    Frames(1);
+                    io.MouseDown[0] = false;
+                    Frames(2);
+                    return true;
+                }
+            }
+        }
+        return false;
     }
     Body& BodyNamed(const std::string& name)
     {
@@ -395,4 +443,77 @@ TEST_CASE("Saving after an edit keeps the file's $schema, its box shorthand and 
     CHECK(b["polygon"].dump() == "[[-0.5,-0.5],[0.5,-0.5],[0.5,0.5],[-0.5,0.5]]");
     CHECK(b["position"][0].get<double>() == h.BodyNamed("B").position.x);
     CHECK(saved.contains("view"));
+}
+
+TEST_CASE("Opening another scene with unsaved changes asks first: cancel keeps them, or open without saving", "[app]")
+{
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    const fs::path other = ScratchCopy("separated_triangle.json");
+    Harness h(copy.string());
+    // Without changes, another scene opens at once.
+    CHECK(h.app->RequestOpen(other.string()));
+    CHECK(h.app->file == other.string());
+    REQUIRE(h.app->Open(copy.string()));
+    h.Frames(2);
+
+    const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x + 30.0f, from.y));
+    REQUIRE(h.app->dirty);
+    const Vec2 moved = h.BodyNamed("B").position;
+
+    // ctrl+o, a path, Enter: the question comes before anything is opened.
+    h.Key('O', true);
+    REQUIRE(Harness::Showing("Open scene"));
+    h.TypeAndEnter(other.string());
+    CHECK(Harness::Showing("Unsaved changes before opening"));
+    CHECK(h.app->file == copy.string());
+    REQUIRE(h.ClickButton("Unsaved changes before opening", "Cancel"));
+    CHECK(!Harness::Showing("Unsaved changes before opening"));
+    CHECK(h.app->file == copy.string());
+    CHECK(h.app->dirty);
+    CHECK(h.BodyNamed("B").position == moved);
+
+    // The menus ask the same way; "Open without saving" opens the other scene and leaves the file as it was.
+    CHECK(!h.app->RequestOpen(other.string()));
+    REQUIRE(h.ClickButton("Unsaved changes before opening", "Open without saving"));
+    CHECK(h.app->file == other.string());
+    CHECK(!h.app->dirty);
+    const SceneResult onDisk = LoadScene(copy.string());
+    REQUIRE(onDisk.Ok());
+    CHECK(onDisk.scene.bodies[1].position != moved);
+}
+
+TEST_CASE("Save and open saves the changes, then opens the other scene", "[app]")
+{
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    const fs::path other = ScratchCopy("separated_triangle.json");
+    Harness h(copy.string());
+    const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x - 25.0f, from.y + 10.0f));
+    REQUIRE(h.app->dirty);
+    const Vec2 moved = h.BodyNamed("B").position;
+    CHECK(!h.app->RequestOpen(other.string()));
+    REQUIRE(h.ClickButton("Unsaved changes before opening", "Save and open"));
+    CHECK(h.app->file == other.string());
+    CHECK(!h.app->dirty);
+    const SceneResult saved = LoadScene(copy.string());
+    REQUIRE(saved.Ok());
+    CHECK(saved.scene.bodies[1].position == moved);
+}
+
+TEST_CASE("Save and open on a bundled scene asks where to save, and opens nothing when that is cancelled", "[app]")
+{
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    REQUIRE(h.app->readOnly);
+    const std::string bundled = h.app->file;
+    const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x + 15.0f, from.y));
+    REQUIRE(h.app->dirty);
+    CHECK(!h.app->RequestOpen(ScratchCopy("separated_triangle.json").string()));
+    REQUIRE(h.ClickButton("Unsaved changes before opening", "Save and open"));
+    REQUIRE(Harness::Showing("Save scene as"));
+    REQUIRE(h.ClickButton("Save scene as", "Cancel"));
+    CHECK(!Harness::Showing("Save scene as"));
+    CHECK(h.app->file == bundled);
+    CHECK(h.app->dirty);
 }
