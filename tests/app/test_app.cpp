@@ -10,10 +10,12 @@
 #include <imgui_internal.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <thread>
 #include <unistd.h>
 
 using namespace satviz;
@@ -64,7 +66,7 @@ struct Harness
     std::unique_ptr<App> app;
     ImGuiContext* context = nullptr;
 
-    explicit Harness(const std::string& scene)
+    explicit Harness(const std::string& scene, int backgroundVertices = AppOptions{}.backgroundVertices)
     {
         context = ImGui::CreateContext();
         ImGuiIO& io = ImGui::GetIO();
@@ -88,6 +90,7 @@ struct Harness
         io.KeyMap[ImGuiKey_Enter] = kEnter;
         AppOptions options;
         options.scenesDir = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes";
+        options.backgroundVertices = backgroundVertices;
         app = std::make_unique<App>(fonts, options);
         REQUIRE(app->Open(scene));
         Frames(3);
@@ -188,6 +191,16 @@ struct Harness
             }
         }
         return false;
+    }
+    // Runs frames until the background test of the pair is taken in; false after 30 s.
+    bool AwaitStudy()
+    {
+        for (int i = 0; i < 3000 && app->Studying(); ++i)
+        {
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            Frames(1);
+        }
+        return !app->Studying();
     }
     Body& BodyNamed(const std::string& name)
     {
@@ -516,4 +529,44 @@ TEST_CASE("Save and open on a bundled scene asks where to save, and opens nothin
     CHECK(!Harness::Showing("Save scene as"));
     CHECK(h.app->file == bundled);
     CHECK(h.app->dirty);
+}
+
+TEST_CASE("A large pair is tested on a worker thread while frames go on, and the figure follows", "[app]")
+{
+    // many_sides is a 64-gon and a triangle: over a limit of 8 vertices, it counts as large.
+    Harness h(ScratchCopy("many_sides.json").string(), 8);
+    REQUIRE(h.AwaitStudy());
+    REQUIRE(h.app->setup.Ok());
+    const Body& disc = h.BodyNamed("disc");
+    const Body& triangle = h.BodyNamed("triangle");
+    CHECK(h.app->setup.study.manifold.depth == Collide(disc.shape, disc.Xf(), triangle.shape, triangle.Xf()).depth);
+    CHECK(h.app->setup.study.StepCount() == 64 + 3 + 1);
+    CHECK(h.app->step == h.app->setup.study.VerdictStep());
+
+    // An edit starts another test; the interface keeps the figure it has, and says why, until it is taken in.
+    const Vec2 before = triangle.position;
+    const ImVec2 from = h.OnScreen(Centroid(triangle));
+    h.Drag(from, ImVec2(from.x + 40.0f, from.y));
+    const Vec2 after = h.BodyNamed("triangle").position;
+    REQUIRE(after != before);
+    REQUIRE(h.AwaitStudy());
+    CHECK(h.app->Studied().bodies[1].position == after);
+    const Body& moved = h.BodyNamed("triangle");
+    CHECK(h.app->setup.study.manifold.depth == Collide(disc.shape, disc.Xf(), moved.shape, moved.Xf()).depth);
+
+    // Stepping does not test again: it only picks another step of the same trace.
+    h.Key(kLeft);
+    CHECK(!h.app->Studying());
+    CHECK(h.app->step == h.app->setup.study.VerdictStep() - 1);
+    CHECK(h.app->setup.figure.step == h.app->step);
+
+    // Opening another scene drops the figure of the one before until its own test is in.
+    REQUIRE(h.app->Open(ScratchCopy("many_sides.json").string()));
+    CHECK(!h.app->setup.Ok());
+    h.Frames(1);
+    CHECK(h.app->Studying());
+    CHECK(h.app->status.find("worker thread") == std::string::npos); // the status line shows it, not `status`
+    REQUIRE(h.AwaitStudy());
+    CHECK(h.app->setup.Ok());
+    CHECK(h.app->Studied().bodies[1].position == before);
 }
