@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 namespace satviz
 {
@@ -138,6 +139,11 @@ bool App::Open(const std::string& path)
         camera.zoom = scene.view.zoom;
     }
     step = scene.view.step;
+    // The figure of the scene before is no longer shown, nor a test of it still running taken in.
+    setup = FigureSetup{};
+    setup.error = "testing the pair";
+    job_.reset();
+    rerun_ = false;
     Refresh();
     Remember(path);
     SetStatus("Opened " + path + (readOnly ? " (a bundled scene: Save asks for a new file)" : ""), false);
@@ -148,6 +154,26 @@ void App::SetStatus(const std::string& message, bool error)
 {
     status = message;
     statusIsError = error;
+}
+
+int App::PairVertices() const
+{
+    auto count = [&](const std::string& name, size_t fallback) {
+        for (const Body& body : scene.bodies)
+        {
+            if (body.name == name)
+            {
+                return body.shape.type == ShapeType::Polygon ? body.shape.polygon.Count() : 1;
+            }
+        }
+        if (!name.empty() || fallback >= scene.bodies.size())
+        {
+            return 0;
+        }
+        const Body& body = scene.bodies[fallback];
+        return body.shape.type == ShapeType::Polygon ? body.shape.polygon.Count() : 1;
+    };
+    return count(scene.view.bodyA, 0) + count(scene.view.bodyB, 1);
 }
 
 void App::Refresh()
@@ -170,10 +196,80 @@ void App::Refresh()
     options.step = -1;
     Scene fitted = scene;
     fitted.view.fit = true;
-    setup = SetUpFigure(fitted, options);
+    if (PairVertices() <= options_.backgroundVertices)
+    {
+        FigureSetup fresh = SetUpFigure(fitted, options);
+        Adopt(std::move(fresh), std::move(fitted));
+        return;
+    }
+    // The traced queries and the fit grow with the square of the vertex count (about 30 s for 100 000
+    // vertices): they run on a worker thread while the interface goes on with the figure it has.
+    if (!canvasSized_)
+    {
+        return; // the canvas's first frame gives its size, then the test starts
+    }
+    if (job_ != nullptr)
+    {
+        rerun_ = true; // one worker at a time; the latest scene runs when it ends
+        return;
+    }
+    job_ = std::make_shared<StudyJob>();
+    job_->scene = std::move(fitted);
+    job_->options = options;
+    std::thread([job = job_] {
+        job->result = SetUpFigure(job->scene, job->options);
+        job->done.store(true, std::memory_order_release);
+    }).detach();
+}
+
+bool App::Studying() const
+{
+    return job_ != nullptr;
+}
+
+void App::PollStudy()
+{
+    if (job_ == nullptr || !job_->done.load(std::memory_order_acquire))
+    {
+        return;
+    }
+    const std::shared_ptr<StudyJob> finished = std::move(job_);
+    job_.reset();
+    Adopt(std::move(finished->result), std::move(finished->scene));
+    if (rerun_)
+    {
+        rerun_ = false;
+        Refresh();
+    }
+    else if (!statusIsError)
+    {
+        SetStatus("Tested the pair (" + std::to_string(PairVertices()) + " vertices) in the background", false);
+    }
+}
+
+void App::Adopt(FigureSetup fresh, Scene studied)
+{
+    setup = std::move(fresh);
+    studied_ = std::move(studied);
     if (!setup.Ok())
     {
         SetStatus(setup.error, true);
+        return;
+    }
+    ShowStep();
+    if (cameraFit)
+    {
+        camera = setup.figure.view;
+    }
+    camera.width = canvasWidth;
+    camera.height = canvasHeight;
+    setup.figure.view = camera;
+}
+
+void App::ShowStep()
+{
+    if (!setup.Ok())
+    {
         return;
     }
     if (step < 0 || step >= setup.study.StepCount())
@@ -183,13 +279,6 @@ void App::Refresh()
     setup.figure.step = step;
     setup.figure.time = scene.view.time;
     setup.figure.caption = scene.view.caption;
-    if (cameraFit)
-    {
-        camera = setup.figure.view;
-    }
-    camera.width = canvasWidth;
-    camera.height = canvasHeight;
-    setup.figure.view = camera;
 }
 
 Scene App::SceneForSaving() const
@@ -200,16 +289,26 @@ Scene App::SceneForSaving() const
     view.fit = cameraFit;
     if (!cameraFit)
     {
-        view.center = camera.center;
-        view.zoom = camera.zoom;
+        // Within what a scene file accepts, so that the saved file opens again (a fit to a huge or tiny pair can
+        // leave the camera beyond them).
+        view.center = {std::clamp(camera.center.x, -kMaxSceneValue, kMaxSceneValue),
+                       std::clamp(camera.center.y, -kMaxSceneValue, kMaxSceneValue)};
+        view.zoom = std::clamp(camera.zoom, kMinViewZoom, kMaxViewZoom);
     }
     view.width = canvasWidth;
     view.height = canvasHeight;
     view.layers = LayerNames(layers);
     if (setup.Ok())
     {
-        view.bodyA = scene.bodies[static_cast<size_t>(setup.study.bodyA)].name;
-        view.bodyB = scene.bodies[static_cast<size_t>(setup.study.bodyB)].name;
+        view.bodyA = studied_.bodies[static_cast<size_t>(setup.study.bodyA)].name;
+        view.bodyB = studied_.bodies[static_cast<size_t>(setup.study.bodyB)].name;
+        if (std::none_of(saved.bodies.begin(), saved.bodies.end(),
+                         [&](const Body& b) { return b.name == view.bodyA; }) ||
+            std::none_of(saved.bodies.begin(), saved.bodies.end(), [&](const Body& b) { return b.name == view.bodyB; }))
+        {
+            view.bodyA.clear(); // deleted while its test ran in the background
+            view.bodyB.clear();
+        }
     }
     view.step = step;
     return saved;
@@ -229,6 +328,17 @@ bool App::TakeExportRequest(std::string& path)
     exportRequested_ = false;
     path = exportPath_;
     return true;
+}
+
+bool App::RequestOpen(const std::string& path)
+{
+    if (!dirty)
+    {
+        return Open(path);
+    }
+    pendingOpen_ = path;
+    askOpenUnsaved_ = true;
+    return false;
 }
 
 bool App::RequestQuit()
@@ -429,6 +539,7 @@ std::vector<std::string> App::BundledScenes() const
 
 void App::Frame()
 {
+    PollStudy();
     Shortcuts();
     if (playing)
     {
@@ -439,7 +550,7 @@ void App::Frame()
             if (step < setup.study.VerdictStep())
             {
                 ++step;
-                Refresh();
+                ShowStep();
             }
             playing = step < setup.study.VerdictStep();
         }
@@ -518,18 +629,18 @@ void App::Shortcuts()
         if (playing && step >= setup.study.VerdictStep())
         {
             step = 0;
-            Refresh();
+            ShowStep();
         }
     }
     if (PressedNamed(ImGuiKey_RightArrow) && step < setup.study.VerdictStep())
     {
         ++step;
-        Refresh();
+        ShowStep();
     }
     if (PressedNamed(ImGuiKey_LeftArrow) && step > 0)
     {
         --step;
-        Refresh();
+        ShowStep();
     }
     if (PressedNamed(ImGuiKey_Delete))
     {
@@ -568,7 +679,7 @@ void App::MenuBar()
             {
                 if (ImGui::MenuItem(std::filesystem::path(path).stem().string().c_str()))
                 {
-                    Open(path);
+                    RequestOpen(path);
                 }
             }
             ImGui::EndMenu();
@@ -579,7 +690,7 @@ void App::MenuBar()
             {
                 if (ImGui::MenuItem(path.c_str()))
                 {
-                    Open(path);
+                    RequestOpen(path);
                 }
             }
             ImGui::EndMenu();
@@ -743,7 +854,8 @@ void App::SidePanel()
 void App::StepControls()
 {
     const PairStudy& study = setup.study;
-    // The pair and the test.
+    // The pair and the test, named as in the scene that was tested (the current one, unless a test still runs
+    // in the background).
     const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
     for (int s = 0; s < 2; ++s)
     {
@@ -756,19 +868,19 @@ void App::StepControls()
         const std::string label = s == 0 ? "##A" : "##B";
         if (ImGui::BeginCombo(
                 label.c_str(),
-                (std::string(s == 0 ? "A: " : "B: ") + scene.bodies[static_cast<size_t>(current)].name).c_str()))
+                (std::string(s == 0 ? "A: " : "B: ") + studied_.bodies[static_cast<size_t>(current)].name).c_str()))
         {
-            for (size_t i = 0; i < scene.bodies.size(); ++i)
+            for (size_t i = 0; i < studied_.bodies.size(); ++i)
             {
                 const int other = s == 0 ? study.bodyB : study.bodyA;
                 if (static_cast<int>(i) == other)
                 {
                     continue;
                 }
-                if (ImGui::Selectable(scene.bodies[i].name.c_str(), static_cast<int>(i) == current))
+                if (ImGui::Selectable(studied_.bodies[i].name.c_str(), static_cast<int>(i) == current))
                 {
-                    scene.view.bodyA = scene.bodies[static_cast<size_t>(s == 0 ? static_cast<int>(i) : other)].name;
-                    scene.view.bodyB = scene.bodies[static_cast<size_t>(s == 0 ? other : static_cast<int>(i))].name;
+                    scene.view.bodyA = studied_.bodies[static_cast<size_t>(s == 0 ? static_cast<int>(i) : other)].name;
+                    scene.view.bodyB = studied_.bodies[static_cast<size_t>(s == 0 ? other : static_cast<int>(i))].name;
                     dirty = true;
                     Refresh();
                 }
@@ -807,7 +919,7 @@ void App::StepControls()
     if (ImGui::ArrowButton("##previous", ImGuiDir_Left))
     {
         --step;
-        Refresh();
+        ShowStep();
     }
     ImGui::EndDisabled();
     ImGui::SameLine();
@@ -815,7 +927,7 @@ void App::StepControls()
     if (ImGui::ArrowButton("##next", ImGuiDir_Right))
     {
         ++step;
-        Refresh();
+        ShowStep();
     }
     ImGui::EndDisabled();
     ImGui::SameLine();
@@ -826,14 +938,14 @@ void App::StepControls()
         if (playing && step >= last)
         {
             step = 0;
-            Refresh();
+            ShowStep();
         }
     }
     ImGui::SameLine();
     if (ImGui::Button("Verdict"))
     {
         step = last;
-        Refresh();
+        ShowStep();
     }
     ImGui::SameLine();
     ImGui::Text("step %d of %d", step + 1, study.StepCount());
@@ -843,9 +955,9 @@ void App::StepControls()
     if (ImGui::SliderInt("##step", &shown, 0, last, sliderText.c_str()) && shown != step)
     {
         step = shown;
-        Refresh();
+        ShowStep();
     }
-    ImGui::TextWrapped("%s", DescribeStep(scene, study, step).c_str());
+    ImGui::TextWrapped("%s", DescribeStep(studied_, study, step).c_str());
 
     ImGui::Separator();
     ImGui::TextUnformatted(study.Textbook() ? "Axes tested (click one)" : "Face tests run (click one)");
@@ -857,16 +969,23 @@ void App::StepControls()
     const float rows = std::min<float>(static_cast<float>(study.StepCount()), 9.0f);
     if (ImGui::BeginChild("##axes", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 8.0f), true))
     {
-        for (int k = 0; k < study.StepCount(); ++k)
+        // Only the rows in sight are built: a polygon of 100 000 vertices has as many steps.
+        const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
+        if (ImGui::IsWindowAppearing())
         {
-            if (ImGui::Selectable(StepTitle(scene, study, k).c_str(), k == step))
+            ImGui::SetScrollY(std::max(0.0f, (static_cast<float>(step) - 4.0f) * rowHeight));
+        }
+        ImGuiListClipper clipper;
+        clipper.Begin(study.StepCount(), rowHeight);
+        while (clipper.Step())
+        {
+            for (int k = clipper.DisplayStart; k < clipper.DisplayEnd; ++k)
             {
-                step = k;
-                Refresh();
-            }
-            if (k == step && ImGui::IsWindowAppearing())
-            {
-                ImGui::SetScrollHereY();
+                if (ImGui::Selectable(StepTitle(studied_, study, k).c_str(), k == step))
+                {
+                    step = k;
+                    ShowStep();
+                }
             }
         }
     }
@@ -878,7 +997,7 @@ void App::StepControls()
         if (ImGui::Checkbox("bodies at time", &showTime))
         {
             scene.view.time = showTime ? 0.5 : -1.0;
-            Refresh();
+            ShowStep();
         }
         ImGui::SameLine();
         float t = static_cast<float>(std::max(scene.view.time, 0.0));
@@ -887,7 +1006,7 @@ void App::StepControls()
         if (ImGui::SliderFloat("##time", &t, 0.0f, 1.0f, "t = %.3f"))
         {
             scene.view.time = t;
-            Refresh();
+            ShowStep();
         }
         ImGui::EndDisabled();
     }
@@ -1000,9 +1119,13 @@ void App::StatusBar()
     {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.2f, 0.05f, 1.0f));
     }
-    ImGui::TextUnformatted(status.empty() ? "Drag a body to move it, shift-drag to turn it; arrows step through "
-                                            "the test; F1 for help"
-                                          : status.c_str());
+    const std::string studying =
+        "Testing the pair (" + std::to_string(PairVertices()) +
+        " vertices) on a worker thread: its traced queries take long at this size; the figure follows when done";
+    ImGui::TextUnformatted(Studying()       ? studying.c_str()
+                           : status.empty() ? "Drag a body to move it, shift-drag to turn it; arrows step through "
+                                              "the test; F1 for help"
+                                            : status.c_str());
     if (statusIsError)
     {
         ImGui::PopStyleColor();
@@ -1032,14 +1155,29 @@ void App::Popups()
         askQuit_ = false;
         ImGui::OpenPopup("Unsaved changes");
     }
+    if (askOpenUnsaved_)
+    {
+        askOpenUnsaved_ = false;
+        ImGui::OpenPopup("Unsaved changes before opening");
+    }
     const ImVec2 center = ImGui::GetMainViewport()->GetCenter();
     if (PathPopup("Open scene", "Scene file (JSON):", "Open", pathBuffer_, sizeof(pathBuffer_)))
     {
-        Open(pathBuffer_);
+        RequestOpen(pathBuffer_);
     }
+    const bool saveAsOpen = ImGui::IsPopupOpen("Save scene as");
     if (PathPopup("Save scene as", "Save to (JSON):", "Save", pathBuffer_, sizeof(pathBuffer_)))
     {
         Save(pathBuffer_);
+        if (openAfterSaveAs_ && !dirty)
+        {
+            Open(pendingOpen_);
+        }
+        openAfterSaveAs_ = false;
+    }
+    else if (saveAsOpen && !ImGui::IsPopupOpen("Save scene as"))
+    {
+        openAfterSaveAs_ = false; // cancelled: the scene stays, nothing is opened
     }
     ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
@@ -1064,6 +1202,41 @@ void App::Popups()
         {
             quitConfirmed_ = true;
             ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel"))
+        {
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+    ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Unsaved changes before opening", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    {
+        ImGui::Text("%s has unsaved changes.", file.empty() ? "The scene" : file.c_str());
+        ImGui::Text("Open %s?", pendingOpen_.c_str());
+        if (ImGui::Button("Save and open"))
+        {
+            ImGui::CloseCurrentPopup();
+            if (file.empty() || readOnly)
+            {
+                openAfterSaveAs_ = true;
+                askSaveAs_ = true;
+            }
+            else
+            {
+                Save(file);
+                if (!dirty)
+                {
+                    Open(pendingOpen_);
+                }
+            }
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Open without saving"))
+        {
+            ImGui::CloseCurrentPopup();
+            Open(pendingOpen_);
         }
         ImGui::SameLine();
         if (ImGui::Button("Cancel"))

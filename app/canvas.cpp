@@ -78,7 +78,8 @@ int App::BodyAt(Vec2 world) const
     {
         for (int index : {setup.study.bodyB, setup.study.bodyA})
         {
-            if (Contains(scene.bodies[static_cast<size_t>(index)], world))
+            if (index < static_cast<int>(scene.bodies.size()) &&
+                Contains(scene.bodies[static_cast<size_t>(index)], world))
             {
                 return index;
             }
@@ -112,10 +113,11 @@ void App::CanvasWindow()
     canvasY = origin.y;
     const int width = static_cast<int>(size.x);
     const int height = static_cast<int>(size.y);
-    if (width != canvasWidth || height != canvasHeight)
+    if (!canvasSized_ || width != canvasWidth || height != canvasHeight)
     {
         canvasWidth = width;
         canvasHeight = height;
+        canvasSized_ = true;
         Refresh();
     }
     if (!canvasAnnounced_)
@@ -135,7 +137,7 @@ void App::CanvasWindow()
         ImDrawListCanvas canvas(list, fonts_, origin);
         setup.figure.view = camera;
         setup.figure.step = step;
-        PaintFigure(canvas, scene, setup.study, setup.figure);
+        PaintFigure(canvas, studied_, setup.study, setup.figure);
         Handles(list, origin);
     }
     ImGui::End();

@@ -4,8 +4,10 @@
 #include <satviz/scene.h>
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <fstream>
 
 using namespace satviz;
 
@@ -170,6 +172,13 @@ TEST_CASE("View block errors name the field", "[scene]")
     CHECK(ErrorOf(two + R"({"time": 1.5}})") ==
           "s.json: view.time: expected a time in [0, 1] (a fraction of the step)");
     CHECK(ErrorOf(two + R"({"zoom": -3}})") == "s.json: view.zoom: must be greater than 0");
+    CHECK(ErrorOf(two + R"({"zoom": 1e-300}})") ==
+          "s.json: view.zoom: expected pixels per world unit from 1e-9 to 1e12, or \"fit\"");
+    CHECK(ErrorOf(two + R"({"zoom": 2e12}})") ==
+          "s.json: view.zoom: expected pixels per world unit from 1e-9 to 1e12, or \"fit\"");
+    CHECK(ErrorOf(two + R"({"zoom": "far"}})") == "s.json: view.zoom: expected a number, got a string");
+    CHECK(ParseScene(two + R"({"zoom": 1e-9}})", "s.json").Ok());
+    CHECK(ParseScene(two + R"({"zoom": 1e12}})", "s.json").Ok());
     CHECK(ErrorOf(two + R"({"center": [0, 0]}})") ==
           "s.json: view.center: needs a \"zoom\" (pixels per unit) beside it");
     CHECK(ErrorOf(two + R"({"query": "raycast"}})") ==
@@ -265,4 +274,133 @@ TEST_CASE("Errors stay on one line whatever the input holds", "[scene]")
     CHECK(error == "s.json: vi\\nyew: unknown field \"vi\\nyew\" (did you mean \"view\"?)");
     CHECK(ErrorOf("{\"bodies\": [{\"name\": \"a\\tb\", \"box\": [1, 1]}, {\"name\": \"a\\tb\", \"box\": [1, 1]}]}")
               .find('\t') == std::string::npos);
+}
+
+TEST_CASE("Zoom and center beyond the accepted range are refused with the field named", "[scene]")
+{
+    const std::string two = R"({"bodies": [{"name": "P", "box": [1, 1]}, {"name": "Q", "box": [1, 1]}], "view": )";
+    CHECK(ErrorOf(two + R"({"zoom": 0}})") == "s.json: view.zoom: must be greater than 0");
+    CHECK(ErrorOf(two + R"({"zoom": 5e-10, "center": [0, 0]}})") ==
+          "s.json: view.zoom: expected pixels per world unit from 1e-9 to 1e12, or \"fit\"");
+    CHECK(ErrorOf(two + R"({"zoom": 10, "center": [0, -2e12]}})") == "s.json: view.center[1]: magnitude exceeds 1e+12");
+    const SceneResult edge = ParseScene(two + R"({"zoom": 1e-9, "center": [1e12, 0]}})", "s.json");
+    REQUIRE(edge.Ok());
+    CHECK(edge.scene.view.zoom == kMinViewZoom);
+}
+
+TEST_CASE("Saving a loaded scene keeps the file's form: $schema, shorthands, key order, numbers", "[scene]")
+{
+    const std::string file = R"({
+  "bodies": [
+    {"box": [2, 1], "name": "A", "tool:color": "red"},
+    {"name": "B", "regular": {"radius": 0.5, "sides": 7, "tool:note": 1}, "angle": 0, "position": [1.5, 0]},
+    {"polygon": [[0, 0], [1, 0], [0, 1]], "velocity": [0.25, 0]},
+    {"name": "D", "circle": {"center": [0, 1], "radius": 2}}
+  ],
+  "$schema": "../schema/scene.schema.json",
+  "view": {"size": [640, 480], "zoom": "fit", "x:y": true},
+  "description": "form"
+})";
+    const SceneResult loaded = ParseScene(file, "dir/form.json");
+    INFO(loaded.error);
+    REQUIRE(loaded.Ok());
+    // Unchanged: the same keys in the same order, the same numbers as written, one body per line.
+    const std::string same = R"({
+  "bodies": [
+    {"box":[2,1],"name":"A","tool:color":"red"},
+    {"name":"B","regular":{"radius":0.5,"sides":7,"tool:note":1},"angle":0,"position":[1.5,0]},
+    {"polygon":[[0,0],[1,0],[0,1]],"velocity":[0.25,0]},
+    {"name":"D","circle":{"center":[0,1],"radius":2}}
+  ],
+  "$schema": "../schema/scene.schema.json",
+  "view": {"size":[640,480],"zoom":"fit","x:y":true},
+  "description": "form"
+}
+)";
+    CHECK(SceneToJson(loaded.scene) == same);
+
+    // Edited: a moved box stays a box; a reshaped regular polygon becomes vertices in its place; new fields are
+    // added after the file's own; an unnamed body that keeps its default name stays unnamed.
+    Scene edited = loaded.scene;
+    edited.bodies[0].position = {0.5, -1};
+    std::vector<Vec2> points(edited.bodies[1].shape.polygon.vertices.begin(),
+                             edited.bodies[1].shape.polygon.vertices.end());
+    points[0] = 1.5 * points[0];
+    const PolygonResult reshaped = MakePolygon(points);
+    REQUIRE(reshaped.Ok());
+    edited.bodies[1].shape = MakeShape(reshaped.polygon);
+    edited.bodies[3].shape.circle.radius = 2.5;
+    edited.view.fit = false;
+    edited.view.center = {1, 2};
+    edited.view.zoom = 40;
+    edited.view.step = 3;
+    const std::string text = SceneToJson(edited);
+    const SceneResult again = ParseScene(text, "again.json");
+    INFO(text);
+    REQUIRE(again.Ok());
+    const nlohmann::ordered_json json = nlohmann::ordered_json::parse(text);
+    CHECK(json.begin().key() == "bodies");
+    CHECK(json["$schema"] == "../schema/scene.schema.json");
+    CHECK(json["bodies"][0].dump() == R"({"box":[2,1],"name":"A","tool:color":"red","position":[0.5,-1.0]})");
+    const nlohmann::ordered_json& b = json["bodies"][1];
+    CHECK(!b.contains("regular"));
+    REQUIRE(b.contains("polygon"));
+    CHECK(std::next(b.begin()).key() == "polygon");
+    CHECK(b["polygon"].size() == 7);
+    CHECK(again.scene.bodies[1].shape.polygon.vertices[0] == reshaped.polygon.vertices[0]);
+    CHECK(json["bodies"][2].dump() == R"({"polygon":[[0,0],[1,0],[0,1]],"velocity":[0.25,0]})");
+    CHECK(json["bodies"][3].dump() == R"({"name":"D","circle":{"center":[0,1],"radius":2.5}})");
+    CHECK(json["view"].dump() == R"({"size":[640,480],"zoom":40.0,"x:y":true,"center":[1.0,2.0],"step":4})");
+    CHECK(again.scene.view.center == Vec2{1, 2});
+    CHECK(again.scene.bodies[0].position == Vec2{0.5, -1});
+
+    // A renamed body has no fields of the file: its shape is written as vertices, its zero position left out.
+    edited.bodies[2].name = "E";
+    CHECK(nlohmann::ordered_json::parse(SceneToJson(edited))["bodies"][2].dump() ==
+          R"({"name":"E","polygon":[[0.0,0.0],[1.0,0.0],[0.0,1.0]],"velocity":[0.25,0.0]})");
+}
+
+TEST_CASE("Every bundled scene saves back to the same JSON, key for key and number for number", "[scene]")
+{
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    {
+        const SceneResult original = LoadScene(entry.path().string());
+        REQUIRE(original.Ok());
+        std::ifstream in(entry.path());
+        const nlohmann::ordered_json file = nlohmann::ordered_json::parse(in);
+        const std::string saved = SceneToJson(original.scene);
+        INFO(entry.path() << "\n" << saved);
+        CHECK(nlohmann::ordered_json::parse(saved).dump() == file.dump());
+        // Saving the saved file changes nothing.
+        CHECK(SceneToJson(ParseScene(saved, "saved.json").scene) == saved);
+        ++scenes;
+    }
+    CHECK(scenes >= 8);
+}
+
+TEST_CASE("SaveScene points a relative $schema at the same schema from the new folder", "[scene]")
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "satviz-schema-test";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir / "deeper");
+    const SceneResult loaded = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    REQUIRE(loaded.Ok());
+    std::string error;
+    const std::string file = (dir / "deeper" / "scene.json").string();
+    REQUIRE(SaveScene(loaded.scene, file, error));
+    std::ifstream in(file);
+    const nlohmann::ordered_json saved = nlohmann::ordered_json::parse(in);
+    const std::filesystem::path schema = saved["$schema"].get<std::string>();
+    CHECK(schema.is_relative());
+    CHECK(std::filesystem::equivalent(dir / "deeper" / schema,
+                                      std::string(SATVIZ_SOURCE_DIR) + "/core/scene/scene.schema.json"));
+    CHECK(saved["bodies"][0]["box"].dump() == "[2.0,1.0]");
+    // Saved again where it now is, the path stays.
+    const SceneResult reloaded = LoadScene(file);
+    REQUIRE(reloaded.Ok());
+    REQUIRE(SaveScene(reloaded.scene, file, error));
+    std::ifstream again(file);
+    CHECK(nlohmann::ordered_json::parse(again)["$schema"] == saved["$schema"]);
+    std::filesystem::remove_all(dir);
 }

@@ -11,16 +11,26 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <unistd.h>
 
 namespace satviz
 {
+
+struct SceneSource
+{
+    nlohmann::ordered_json root; // the parsed file
+    std::string file;            // the name it was parsed under, for a relative "$schema"
+};
+
 namespace
 {
 
-using Json = nlohmann::json;
+// Ordered, so that the parsed file keeps its key order for SceneToJson (and errors name the first bad key in file
+// order).
+using Json = nlohmann::ordered_json;
 
 // Thrown inside the parser only; ParseScene turns it into the error string.
 struct SceneFault
@@ -178,14 +188,20 @@ Vec2 Point(const Json& value, const std::string& path)
     return {Number(value[0], path + "[0]"), Number(value[1], path + "[1]")};
 }
 
-double PositiveNumber(const Json& value, const std::string& path)
+double PositiveNumber(const Json& value, const std::string& path, double limit = kMaxSceneValue)
 {
-    const double number = Number(value, path);
+    const double number = Number(value, path, limit);
     if (number <= 0.0)
     {
         Fail(path, "must be greater than 0");
     }
     return number;
+}
+
+// The name of a body without one: A, B, ... Z by its place in the file, then body26, body27, ...
+std::string DefaultBodyName(size_t index)
+{
+    return index < 26 ? std::string(1, static_cast<char>('A' + index)) : "body" + std::to_string(index);
 }
 
 Shape PolygonShape(const PolygonResult& result, const std::string& path)
@@ -216,7 +232,7 @@ Body ParseBody(const Json& value, const std::string& path, size_t index)
     }
     else
     {
-        body.name = index < 26 ? std::string(1, static_cast<char>('A' + index)) : "body" + std::to_string(index);
+        body.name = DefaultBodyName(index);
     }
 
     int shapes = 0;
@@ -365,7 +381,11 @@ SceneView ParseView(const Json& value, const Scene& scene)
         }
         else
         {
-            view.zoom = PositiveNumber(zoom, path + ".zoom");
+            view.zoom = PositiveNumber(zoom, path + ".zoom", std::numeric_limits<double>::max());
+            if (view.zoom < kMinViewZoom || view.zoom > kMaxViewZoom)
+            {
+                Fail(path + ".zoom", "expected pixels per world unit from 1e-9 to 1e12, or \"fit\"");
+            }
             view.fit = false;
         }
     }
@@ -585,6 +605,7 @@ SceneResult ParseScene(std::string_view text, const std::string& file)
     try
     {
         result.scene = ParseRoot(root);
+        result.scene.source = std::make_shared<const SceneSource>(SceneSource{std::move(root), file});
     }
     catch (const SceneFault& fault)
     {
@@ -627,130 +648,386 @@ SceneResult LoadScene(const std::string& file)
 namespace
 {
 
-nlohmann::ordered_json PointJson(Vec2 p)
+// A field of an object being written: its key and value.
+struct Field
 {
-    return nlohmann::ordered_json::array({p.x, p.y});
+    std::string key;
+    Json value;
+};
+
+// The field `key` of `object`, or null when it has none (or is not an object).
+const Json* Member(const Json* object, const char* key)
+{
+    if (object == nullptr || !object->is_object())
+    {
+        return nullptr;
+    }
+    const auto it = object->find(key);
+    return it == object->end() ? nullptr : &*it;
+}
+
+bool SameDouble(double a, double b)
+{
+    return a == b && std::signbit(a) == std::signbit(b);
+}
+
+// The number as the file wrote it when it still has that value (1 stays 1, not 1.0), else the value.
+Json NumberJson(const Json* old, double value)
+{
+    if (old != nullptr && old->is_number() && SameDouble(old->get<double>(), value))
+    {
+        return *old;
+    }
+    return value;
+}
+
+Json PointJson(const Json* old, Vec2 p)
+{
+    const bool pair = old != nullptr && old->is_array() && old->size() == 2;
+    return Json::array({NumberJson(pair ? &(*old)[0] : nullptr, p.x), NumberJson(pair ? &(*old)[1] : nullptr, p.y)});
+}
+
+// The place of a key among the file's keys: the four shape keys share one place, so that a box that became a
+// polygon is written where the box was.
+std::string Slot(const std::string& key)
+{
+    return key == "polygon" || key == "box" || key == "regular" || key == "circle" ? "shape" : key;
+}
+
+// The fields as one object in the file's order: fields the file had take its places, keys the file had that are
+// not the scene's (namespaced fields, "$schema") come back as they were, new fields follow in the given order.
+Json Arrange(const std::vector<Field>& fields, const Json* old, const std::vector<std::string>& known)
+{
+    Json out = Json::object();
+    std::vector<bool> written(fields.size(), false);
+    if (old != nullptr && old->is_object())
+    {
+        for (const auto& item : old->items())
+        {
+            const std::string& key = item.key();
+            if (std::find(known.begin(), known.end(), key) == known.end())
+            {
+                out[key] = item.value();
+                continue;
+            }
+            for (size_t i = 0; i < fields.size(); ++i)
+            {
+                if (!written[i] && Slot(fields[i].key) == Slot(key))
+                {
+                    out[fields[i].key] = fields[i].value;
+                    written[i] = true;
+                }
+            }
+        }
+    }
+    for (size_t i = 0; i < fields.size(); ++i)
+    {
+        if (!written[i])
+        {
+            out[fields[i].key] = fields[i].value;
+        }
+    }
+    return out;
+}
+
+bool SameVertices(const Polygon& polygon, const std::vector<Vec2>& points)
+{
+    if (polygon.Count() != static_cast<int>(points.size()))
+    {
+        return false;
+    }
+    for (int i = 0; i < polygon.Count(); ++i)
+    {
+        if (!SameDouble(polygon.vertices[i].x, points[static_cast<size_t>(i)].x) ||
+            !SameDouble(polygon.vertices[i].y, points[static_cast<size_t>(i)].y))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool SameVertices(const Polygon& polygon, const PolygonResult& made)
+{
+    return made.Ok() &&
+           SameVertices(polygon, std::vector<Vec2>(made.polygon.vertices.begin(), made.polygon.vertices.end()));
+}
+
+// The file's own shape field when it still describes the body's shape: a "box" or "regular" shorthand, or the
+// polygon's vertices as written. Null when the shape changed or the file had none.
+const Json* KeptShape(const Polygon& polygon, const Json* old, std::string& key)
+{
+    if (const Json* box = Member(old, "box");
+        box != nullptr && box->is_array() && box->size() == 2 && (*box)[0].is_number() && (*box)[1].is_number())
+    {
+        key = "box";
+        const PolygonResult made = MakeBox(0.5 * (*box)[0].get<double>(), 0.5 * (*box)[1].get<double>());
+        return SameVertices(polygon, made) ? box : nullptr;
+    }
+    if (const Json* regular = Member(old, "regular"); regular != nullptr)
+    {
+        const Json* sides = Member(regular, "sides");
+        const Json* radius = Member(regular, "radius");
+        const Json* phase = Member(regular, "phase");
+        if (sides == nullptr || !sides->is_number_integer() || radius == nullptr || !radius->is_number() ||
+            (phase != nullptr && !phase->is_number()) || sides->get<long>() != polygon.Count())
+        {
+            return nullptr;
+        }
+        key = "regular";
+        const PolygonResult made =
+            MakeRegularPolygon(polygon.Count(), radius->get<double>(), phase == nullptr ? 0.0 : phase->get<double>());
+        return SameVertices(polygon, made) ? regular : nullptr;
+    }
+    if (const Json* points = Member(old, "polygon");
+        points != nullptr && points->is_array() && points->size() == static_cast<size_t>(polygon.Count()))
+    {
+        key = "polygon";
+        for (int i = 0; i < polygon.Count(); ++i)
+        {
+            const Json& p = (*points)[static_cast<size_t>(i)];
+            if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number() ||
+                !SameDouble(p[0].get<double>(), polygon.vertices[i].x) ||
+                !SameDouble(p[1].get<double>(), polygon.vertices[i].y))
+            {
+                return nullptr;
+            }
+        }
+        return points;
+    }
+    return nullptr;
+}
+
+// One body. `old` is the body of the same name in the source file, null for a new body or a scene built in code;
+// `index` is the body's place in the scene.
+Json BodyJson(const Body& body, const Json* old, size_t index, bool fromFile)
+{
+    std::vector<Field> fields;
+    if (!fromFile || old == nullptr || Member(old, "name") != nullptr || body.name != DefaultBodyName(index))
+    {
+        fields.push_back({"name", body.name});
+    }
+    if (body.shape.type == ShapeType::Polygon)
+    {
+        std::string key;
+        if (const Json* kept = KeptShape(body.shape.polygon, old, key); kept != nullptr)
+        {
+            fields.push_back({key, *kept});
+        }
+        else
+        {
+            Json vertices = Json::array();
+            for (const Vec2& v : body.shape.polygon.vertices)
+            {
+                vertices.push_back(Json::array({v.x, v.y}));
+            }
+            fields.push_back({"polygon", std::move(vertices)});
+        }
+    }
+    else
+    {
+        const Json* oldCircle = Member(old, "circle");
+        std::vector<Field> circle{{"radius", NumberJson(Member(oldCircle, "radius"), body.shape.circle.radius)}};
+        if (Member(oldCircle, "center") != nullptr || body.shape.circle.center != Vec2{})
+        {
+            circle.push_back({"center", PointJson(Member(oldCircle, "center"), body.shape.circle.center)});
+        }
+        fields.push_back({"circle", Arrange(circle, oldCircle, {"radius", "center"})});
+    }
+    // A scene built in code always names the position; a file's body keeps the fields it had.
+    if (!fromFile || Member(old, "position") != nullptr || body.position != Vec2{})
+    {
+        fields.push_back({"position", PointJson(Member(old, "position"), body.position)});
+    }
+    if (Member(old, "angle") != nullptr || body.angle != 0.0)
+    {
+        fields.push_back({"angle", NumberJson(Member(old, "angle"), body.angle)});
+    }
+    if (Member(old, "velocity") != nullptr || body.velocity != Vec2{})
+    {
+        fields.push_back({"velocity", PointJson(Member(old, "velocity"), body.velocity)});
+    }
+    return Arrange(fields, old, {"name", "polygon", "box", "regular", "circle", "position", "angle", "velocity"});
+}
+
+// The view block. `old` is the file's, null for a scene built in code (which writes zoom, size, query and step
+// always) or a file without one.
+Json ViewJson(const SceneView& v, const Json* old, bool fromFile)
+{
+    auto had = [&](const char* key) { return !fromFile || Member(old, key) != nullptr; };
+    std::vector<Field> fields;
+    if (v.fit)
+    {
+        if (had("zoom"))
+        {
+            fields.push_back({"zoom", "fit"});
+        }
+    }
+    else
+    {
+        fields.push_back({"center", PointJson(Member(old, "center"), v.center)});
+        fields.push_back({"zoom", NumberJson(Member(old, "zoom"), v.zoom)});
+    }
+    if (had("size") || v.width != SceneView{}.width || v.height != SceneView{}.height)
+    {
+        const Json* size = Member(old, "size");
+        const bool same = size != nullptr && size->is_array() && size->size() == 2 && (*size)[0].is_number() &&
+                          (*size)[1].is_number() && (*size)[0].get<double>() == v.width &&
+                          (*size)[1].get<double>() == v.height;
+        fields.push_back({"size", same ? *size : Json::array({v.width, v.height})});
+    }
+    if (!v.layers.empty())
+    {
+        fields.push_back({"layers", v.layers});
+    }
+    if (!v.bodyA.empty() && !v.bodyB.empty())
+    {
+        fields.push_back({"pair", Json::array({v.bodyA, v.bodyB})});
+    }
+    if (had("query") || v.query != ViewQuery::Automatic)
+    {
+        fields.push_back(
+            {"query", v.query == ViewQuery::Collide ? "collide" : (v.query == ViewQuery::Sweep ? "sweep" : "auto")});
+    }
+    if (had("steps") || v.steps == StepView::Faces)
+    {
+        fields.push_back({"steps", v.steps == StepView::Faces ? "faces" : "textbook"});
+    }
+    if (had("step") || v.step >= 0)
+    {
+        // Files count steps from 1, as every view does; a step 0 from an older file is written back as it was.
+        const Json* previous = Member(old, "step");
+        const bool legacyFirst =
+            previous != nullptr && previous->is_number() && previous->get<double>() == 0.0 && v.step == 0;
+        fields.push_back({"step", v.step >= 0 ? Json(legacyFirst ? 0 : v.step + 1) : Json("last")});
+    }
+    if (v.time >= 0.0)
+    {
+        fields.push_back({"time", NumberJson(Member(old, "time"), v.time)});
+    }
+    if (!v.caption.empty())
+    {
+        fields.push_back({"caption", v.caption});
+    }
+    if (v.singlePrecision || (fromFile && Member(old, "precision") != nullptr))
+    {
+        fields.push_back({"precision", v.singlePrecision ? "float" : "double"});
+    }
+    return Arrange(
+        fields, old,
+        {"center", "zoom", "size", "layers", "pair", "query", "steps", "step", "time", "caption", "precision"});
+}
+
+// The whole file; `schema` replaces a kept "$schema" when not null.
+std::string SceneText(const Scene& scene, const std::string* schema)
+{
+    const bool fromFile = scene.source != nullptr;
+    const Json* old = fromFile ? &scene.source->root : nullptr;
+
+    // Bodies of the file by name, to find each body's own fields.
+    std::vector<std::pair<std::string, const Json*>> oldBodies;
+    if (const Json* bodies = Member(old, "bodies"); bodies != nullptr && bodies->is_array())
+    {
+        for (size_t i = 0; i < bodies->size(); ++i)
+        {
+            const Json* body = &(*bodies)[i];
+            const Json* name = Member(body, "name");
+            oldBodies.emplace_back(name != nullptr && name->is_string() ? name->get<std::string>() : DefaultBodyName(i),
+                                   body);
+        }
+        std::sort(oldBodies.begin(), oldBodies.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    }
+    auto oldBody = [&](const std::string& name) -> const Json* {
+        const auto it = std::lower_bound(oldBodies.begin(), oldBodies.end(), name,
+                                         [](const auto& entry, const std::string& key) { return entry.first < key; });
+        return it != oldBodies.end() && it->first == name ? it->second : nullptr;
+    };
+
+    std::vector<Field> fields;
+    if (!scene.description.empty() || Member(old, "description") != nullptr)
+    {
+        fields.push_back({"description", scene.description});
+    }
+    fields.push_back({"bodies", Json::array()});
+    if (scene.hasView)
+    {
+        fields.push_back({"view", ViewJson(scene.view, Member(old, "view"), fromFile)});
+    }
+    Json root = Arrange(fields, old, {"description", "bodies", "view"});
+    if (schema != nullptr && root.contains("$schema"))
+    {
+        root["$schema"] = *schema;
+    }
+
+    // One body per line keeps saved scenes readable and diffable.
+    std::string text = "{";
+    bool first = true;
+    for (const auto& item : root.items())
+    {
+        text += first ? "\n  " : ",\n  ";
+        first = false;
+        text += Json(item.key()).dump() + ": ";
+        if (item.key() != "bodies")
+        {
+            text += item.value().dump();
+            continue;
+        }
+        text += "[\n";
+        for (size_t i = 0; i < scene.bodies.size(); ++i)
+        {
+            const Body& body = scene.bodies[i];
+            text += "    " + BodyJson(body, oldBody(body.name), i, fromFile).dump() +
+                    (i + 1 < scene.bodies.size() ? ",\n" : "\n");
+        }
+        text += "  ]";
+    }
+    text += "\n}\n";
+    return text;
+}
+
+// The source's "$schema" as seen from `target`'s folder, when it is a relative path and the folder changes; null
+// when it stays as it is.
+std::unique_ptr<std::string> MovedSchema(const Scene& scene, const std::filesystem::path& target)
+{
+    if (scene.source == nullptr)
+    {
+        return nullptr;
+    }
+    const Json* schema = Member(&scene.source->root, "$schema");
+    if (schema == nullptr || !schema->is_string())
+    {
+        return nullptr;
+    }
+    const std::filesystem::path path(schema->get<std::string>());
+    if (path.empty() || path.is_absolute() || schema->get<std::string>().find(':') != std::string::npos)
+    {
+        return nullptr; // absolute, or a URL
+    }
+    std::error_code code;
+    const std::filesystem::path from =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(scene.source->file, code).parent_path(), code);
+    const std::filesystem::path to =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(target, code).parent_path(), code);
+    if (code || from == to)
+    {
+        return nullptr;
+    }
+    const std::filesystem::path moved = (from / path).lexically_normal().lexically_relative(to);
+    return moved.empty() ? nullptr : std::make_unique<std::string>(moved.generic_string());
 }
 
 } // namespace
 
 std::string SceneToJson(const Scene& scene)
 {
-    using Ordered = nlohmann::ordered_json;
-    Ordered root = Ordered::object();
-    if (!scene.description.empty())
-    {
-        root["description"] = scene.description;
-    }
-    Ordered bodies = Ordered::array();
-    for (const Body& body : scene.bodies)
-    {
-        Ordered item = Ordered::object();
-        item["name"] = body.name;
-        if (body.shape.type == ShapeType::Polygon)
-        {
-            Ordered vertices = Ordered::array();
-            for (const Vec2& v : body.shape.polygon.vertices)
-            {
-                vertices.push_back(PointJson(v));
-            }
-            item["polygon"] = vertices;
-        }
-        else
-        {
-            Ordered circle = Ordered::object();
-            circle["radius"] = body.shape.circle.radius;
-            if (body.shape.circle.center != Vec2{})
-            {
-                circle["center"] = PointJson(body.shape.circle.center);
-            }
-            item["circle"] = circle;
-        }
-        item["position"] = PointJson(body.position);
-        if (body.angle != 0.0)
-        {
-            item["angle"] = body.angle;
-        }
-        if (body.velocity != Vec2{})
-        {
-            item["velocity"] = PointJson(body.velocity);
-        }
-        bodies.push_back(item);
-    }
-    root["bodies"] = bodies;
-    if (scene.hasView)
-    {
-        const SceneView& v = scene.view;
-        Ordered view = Ordered::object();
-        if (v.fit)
-        {
-            view["zoom"] = "fit";
-        }
-        else
-        {
-            view["center"] = PointJson(v.center);
-            view["zoom"] = v.zoom;
-        }
-        view["size"] = Ordered::array({v.width, v.height});
-        if (!v.layers.empty())
-        {
-            view["layers"] = v.layers;
-        }
-        if (!v.bodyA.empty() && !v.bodyB.empty())
-        {
-            view["pair"] = Ordered::array({v.bodyA, v.bodyB});
-        }
-        view["query"] = v.query == ViewQuery::Collide ? "collide" : (v.query == ViewQuery::Sweep ? "sweep" : "auto");
-        if (v.steps == StepView::Faces)
-        {
-            view["steps"] = "faces";
-        }
-        if (v.step >= 0)
-        {
-            view["step"] = v.step + 1;
-        }
-        else
-        {
-            view["step"] = "last";
-        }
-        if (v.time >= 0.0)
-        {
-            view["time"] = v.time;
-        }
-        if (!v.caption.empty())
-        {
-            view["caption"] = v.caption;
-        }
-        if (v.singlePrecision)
-        {
-            view["precision"] = "float";
-        }
-        root["view"] = view;
-    }
-    // One body per line keeps saved scenes readable and diffable.
-    std::string text = "{\n";
-    if (root.contains("description"))
-    {
-        text += "  \"description\": " + root["description"].dump() + ",\n";
-    }
-    text += "  \"bodies\": [\n";
-    for (size_t i = 0; i < bodies.size(); ++i)
-    {
-        text += "    " + bodies[i].dump() + (i + 1 < bodies.size() ? ",\n" : "\n");
-    }
-    text += "  ]";
-    if (root.contains("view"))
-    {
-        text += ",\n  \"view\": " + root["view"].dump();
-    }
-    text += "\n}\n";
-    return text;
+    return SceneText(scene, nullptr);
 }
 
 bool SaveScene(const Scene& scene, const std::string& file, std::string& error)
 {
-    const std::string text = SceneToJson(scene);
     const std::filesystem::path target(file);
+    const std::unique_ptr<std::string> schema = MovedSchema(scene, target);
+    const std::string text = SceneText(scene, schema.get());
     const std::filesystem::path temporary =
         target.parent_path() / ("." + target.filename().string() + ".tmp." + std::to_string(::getpid()));
     {

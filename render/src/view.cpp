@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <satviz/render/view.h>
+#include <satviz/scene.h>
 
 #include <algorithm>
 
@@ -23,7 +24,7 @@ View ZoomAbout(const View& view, ScreenPoint fixed, double factor)
 {
     const Vec2 before = ToWorld(view, fixed);
     View zoomed = view;
-    zoomed.zoom = std::clamp(view.zoom * factor, 1e-9, 1e12);
+    zoomed.zoom = std::clamp(view.zoom * factor, kMinViewZoom, kMaxViewZoom);
     const Vec2 after = ToWorld(zoomed, fixed);
     zoomed.center = zoomed.center + (before - after);
     return zoomed;

@@ -7,12 +7,16 @@
 #include <satviz/render/describe.h>
 
 #include <catch2/catch.hpp>
+#include <imgui_internal.h>
+#include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <thread>
 #include <unistd.h>
 
 using namespace satviz;
@@ -30,6 +34,7 @@ enum KeySlot
     kZ,
     kY,
     kEscape,
+    kEnter,
 };
 
 /// The directory of this process's scene copies, removed when the tests end.
@@ -84,6 +89,7 @@ struct Harness
         io.KeyMap[ImGuiKey_Z] = kZ;
         io.KeyMap[ImGuiKey_Y] = kY;
         io.KeyMap[ImGuiKey_Escape] = kEscape;
+        io.KeyMap[ImGuiKey_Enter] = kEnter;
         options.scenesDir = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes";
         app = std::make_unique<App>(fonts, options);
         REQUIRE(app->Open(scene));
@@ -140,6 +146,61 @@ struct Harness
         io.KeysDown[slot] = false;
         Frames(1);
         io.KeyCtrl = false;
+    }
+    // Types into the text field that has the keyboard focus, then presses Enter.
+    void TypeAndEnter(const std::string& text)
+    {
+        Frames(1);
+        ImGui::GetIO().AddInputCharactersUTF8(text.c_str());
+        Frames(1);
+        Key(kEnter);
+    }
+    // True while the window (or popup) of that name is shown.
+    static bool Showing(const char* window)
+    {
+        const ImGuiWindow* w = ImGui::FindWindowByName(window);
+        return w != nullptr && w->Active;
+    }
+    // Clicks the button of that label in the window of that name: finds it by moving the pointer over the window
+    // until ImGui reports the button hovered. False when the window or the button is not shown.
+    bool ClickButton(const char* window, const char* label)
+    {
+        Frames(2); // a popup that just appeared is sized on its second frame
+        ImGuiWindow* w = ImGui::FindWindowByName(window);
+        if (w == nullptr || !w->Active)
+        {
+            return false;
+        }
+        const ImGuiID id = w->GetID(label);
+        const ImVec2 low = w->Pos;
+        const ImVec2 high(w->Pos.x + w->Size.x, w->Pos.y + w->Size.y);
+        for (float y = low.y + 2.0f; y < high.y; y += 4.0f)
+        {
+            for (float x = low.x + 2.0f; x < high.x; x += 8.0f)
+            {
+                MoveTo(ImVec2(x, y));
+                if (ImGui::GetCurrentContext()->HoveredId == id)
+                {
+                    ImGuiIO& io = ImGui::GetIO();
+                    io.MouseDown[0] = true;
+                    Frames(1);
+                    io.MouseDown[0] = false;
+                    Frames(2);
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+    // Runs frames until the background test of the pair is taken in; false after 30 s.
+    bool AwaitStudy()
+    {
+        for (int i = 0; i < 3000 && app->Studying(); ++i)
+        {
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            Frames(1);
+        }
+        return !app->Studying();
     }
     Body& BodyNamed(const std::string& name)
     {
@@ -379,4 +440,165 @@ TEST_CASE("Opening a scene adds it to the recent file, unless the recent list is
         CHECK(h.app->recent == std::vector<std::string>{fs::absolute(copy).string(), "/elsewhere/old.json"});
         CHECK(contents() == fs::absolute(copy).string() + "\n/elsewhere/old.json\n");
     }
+}
+
+TEST_CASE("A camera beyond what a scene file accepts is saved within it, so the file opens again", "[app]")
+{
+    const fs::path copy = ScratchCopy("separated_triangle.json");
+    Harness h(copy.string());
+    h.app->cameraFit = false;
+    h.app->camera.zoom = 1e15;
+    h.app->dirty = true;
+    h.Key('S', true);
+    CHECK(h.app->status.find("Saved") == 0);
+    SceneResult saved = LoadScene(copy.string());
+    INFO(saved.error);
+    REQUIRE(saved.Ok());
+    CHECK(saved.scene.view.zoom == kMaxViewZoom);
+
+    h.app->camera.zoom = 1e-12;
+    h.app->camera.center = {-5e12, 3.0};
+    h.app->dirty = true;
+    h.Key('S', true);
+    saved = LoadScene(copy.string());
+    INFO(saved.error);
+    REQUIRE(saved.Ok());
+    CHECK(saved.scene.view.zoom == kMinViewZoom);
+    CHECK(saved.scene.view.center == Vec2{-kMaxSceneValue, 3.0});
+}
+
+TEST_CASE("Saving after an edit keeps the file's $schema, its box shorthand and its key order", "[app]")
+{
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    Harness h(copy.string());
+    const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x + 30.0f, from.y));
+    REQUIRE(h.app->dirty);
+    h.Key('S', true);
+    REQUIRE(!h.app->dirty);
+    std::ifstream in(copy);
+    const nlohmann::ordered_json saved = nlohmann::ordered_json::parse(in);
+    CHECK(saved.begin().key() == "$schema");
+    CHECK(saved["$schema"] == "../../core/scene/scene.schema.json");
+    CHECK(saved["bodies"][0].dump() == R"({"name":"A","box":[2.0,1.0],"position":[0.0,0.0]})");
+    const nlohmann::ordered_json& b = saved["bodies"][1];
+    CHECK(b["polygon"].dump() == "[[-0.5,-0.5],[0.5,-0.5],[0.5,0.5],[-0.5,0.5]]");
+    CHECK(b["position"][0].get<double>() == h.BodyNamed("B").position.x);
+    CHECK(saved.contains("view"));
+}
+
+TEST_CASE("Opening another scene with unsaved changes asks first: cancel keeps them, or open without saving", "[app]")
+{
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    const fs::path other = ScratchCopy("separated_triangle.json");
+    Harness h(copy.string());
+    // Without changes, another scene opens at once.
+    CHECK(h.app->RequestOpen(other.string()));
+    CHECK(h.app->file == other.string());
+    REQUIRE(h.app->Open(copy.string()));
+    h.Frames(2);
+
+    const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x + 30.0f, from.y));
+    REQUIRE(h.app->dirty);
+    const Vec2 moved = h.BodyNamed("B").position;
+
+    // ctrl+o, a path, Enter: the question comes before anything is opened.
+    h.Key('O', true);
+    REQUIRE(Harness::Showing("Open scene"));
+    h.TypeAndEnter(other.string());
+    CHECK(Harness::Showing("Unsaved changes before opening"));
+    CHECK(h.app->file == copy.string());
+    REQUIRE(h.ClickButton("Unsaved changes before opening", "Cancel"));
+    CHECK(!Harness::Showing("Unsaved changes before opening"));
+    CHECK(h.app->file == copy.string());
+    CHECK(h.app->dirty);
+    CHECK(h.BodyNamed("B").position == moved);
+
+    // The menus ask the same way; "Open without saving" opens the other scene and leaves the file as it was.
+    CHECK(!h.app->RequestOpen(other.string()));
+    REQUIRE(h.ClickButton("Unsaved changes before opening", "Open without saving"));
+    CHECK(h.app->file == other.string());
+    CHECK(!h.app->dirty);
+    const SceneResult onDisk = LoadScene(copy.string());
+    REQUIRE(onDisk.Ok());
+    CHECK(onDisk.scene.bodies[1].position != moved);
+}
+
+TEST_CASE("Save and open saves the changes, then opens the other scene", "[app]")
+{
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    const fs::path other = ScratchCopy("separated_triangle.json");
+    Harness h(copy.string());
+    const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x - 25.0f, from.y + 10.0f));
+    REQUIRE(h.app->dirty);
+    const Vec2 moved = h.BodyNamed("B").position;
+    CHECK(!h.app->RequestOpen(other.string()));
+    REQUIRE(h.ClickButton("Unsaved changes before opening", "Save and open"));
+    CHECK(h.app->file == other.string());
+    CHECK(!h.app->dirty);
+    const SceneResult saved = LoadScene(copy.string());
+    REQUIRE(saved.Ok());
+    CHECK(saved.scene.bodies[1].position == moved);
+}
+
+TEST_CASE("Save and open on a bundled scene asks where to save, and opens nothing when that is cancelled", "[app]")
+{
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    REQUIRE(h.app->readOnly);
+    const std::string bundled = h.app->file;
+    const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x + 15.0f, from.y));
+    REQUIRE(h.app->dirty);
+    CHECK(!h.app->RequestOpen(ScratchCopy("separated_triangle.json").string()));
+    REQUIRE(h.ClickButton("Unsaved changes before opening", "Save and open"));
+    REQUIRE(Harness::Showing("Save scene as"));
+    REQUIRE(h.ClickButton("Save scene as", "Cancel"));
+    CHECK(!Harness::Showing("Save scene as"));
+    CHECK(h.app->file == bundled);
+    CHECK(h.app->dirty);
+}
+
+TEST_CASE("A large pair is tested on a worker thread while frames go on, and the figure follows", "[app]")
+{
+    // many_sides is a 64-gon and a triangle: over a limit of 8 vertices, it counts as large.
+    AppOptions background;
+    background.backgroundVertices = 8;
+    Harness h(ScratchCopy("many_sides.json").string(), background);
+    REQUIRE(h.AwaitStudy());
+    REQUIRE(h.app->setup.Ok());
+    const Body& disc = h.BodyNamed("disc");
+    const Body& triangle = h.BodyNamed("triangle");
+    CHECK(h.app->setup.study.manifold.depth == Collide(disc.shape, disc.Xf(), triangle.shape, triangle.Xf()).depth);
+    // The textbook view: the 64-gon's opposite faces share an axis, 32 axes, then the triangle's 3 and the verdict.
+    CHECK(h.app->setup.study.StepCount() == 32 + 3 + 1);
+    CHECK(h.app->step == h.app->setup.study.VerdictStep());
+
+    // An edit starts another test; the interface keeps the figure it has, and says why, until it is taken in.
+    const Vec2 before = triangle.position;
+    const ImVec2 from = h.OnScreen(Centroid(triangle));
+    h.Drag(from, ImVec2(from.x + 40.0f, from.y));
+    const Vec2 after = h.BodyNamed("triangle").position;
+    REQUIRE(after != before);
+    REQUIRE(h.AwaitStudy());
+    CHECK(h.app->Studied().bodies[1].position == after);
+    const Body& moved = h.BodyNamed("triangle");
+    CHECK(h.app->setup.study.manifold.depth == Collide(disc.shape, disc.Xf(), moved.shape, moved.Xf()).depth);
+
+    // Stepping does not test again: it only picks another step of the same trace.
+    h.Key(kLeft);
+    CHECK(!h.app->Studying());
+    CHECK(h.app->step == h.app->setup.study.VerdictStep() - 1);
+    CHECK(h.app->setup.figure.step == h.app->step);
+
+    // Opening another scene drops the figure of the one before until its own test is in.
+    REQUIRE(h.app->Open(ScratchCopy("many_sides.json").string()));
+    CHECK(!h.app->setup.Ok());
+    h.Frames(1);
+    CHECK(h.app->Studying());
+    CHECK(h.app->status.find("worker thread") == std::string::npos); // the status line shows it, not `status`
+    REQUIRE(h.AwaitStudy());
+    CHECK(h.app->setup.Ok());
+    CHECK(h.app->Studied().bodies[1].position == before);
 }

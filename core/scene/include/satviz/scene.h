@@ -4,6 +4,7 @@
 
 #include <satviz/shape.h>
 
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -71,6 +72,16 @@ struct SceneView
 /// Largest accepted image side of a view, in pixels.
 constexpr int kMaxViewSize = 8192;
 
+/// Smallest accepted view zoom, in pixels per world unit: a 1e12-wide world still fits in a few pixels.
+constexpr double kMinViewZoom = 1e-9;
+
+/// Largest accepted view zoom, in pixels per world unit (the app's wheel zoom stops at the same bounds).
+constexpr double kMaxViewZoom = 1e12;
+
+/// What a scene file held beyond the scene itself: its key order, "$schema", namespaced fields ("tool:field"),
+/// shorthand shapes ("box", "regular") and numbers as written. Defined in scene.cpp, read by SceneToJson.
+struct SceneSource;
+
 /// A scene: bodies in the world.
 struct Scene
 {
@@ -78,6 +89,9 @@ struct Scene
     std::vector<Body> bodies; ///< the bodies, in file order
     bool hasView = false;     ///< the file has a "view" block
     SceneView view;           ///< how to picture it (defaults when hasView is false)
+    /// The file the scene was parsed from, so that saving keeps its form; null for a scene built in code. Copies
+    /// of the scene share it.
+    std::shared_ptr<const SceneSource> source;
 };
 
 /// The outcome of loading a scene: the scene, or a one-line error "FILE: JSON.PATH: what is wrong".
@@ -103,14 +117,18 @@ SceneResult ParseScene(std::string_view text, const std::string& file);
 /// Reads and parses a scene file.
 SceneResult LoadScene(const std::string& file);
 
-/// The scene as JSON text that ParseScene reads back to the same scene: bodies with their polygon vertices (boxes
-/// and regular polygons are written as vertices), circles, positions, angles and velocities, every number printed
-/// so that it reads back as the same double; the view block when the scene has one.
+/// The scene as JSON text that ParseScene reads back to the same scene: bodies with their polygon vertices,
+/// circles, positions, angles and velocities, every number printed so that it reads back as the same double; the
+/// view block when the scene has one. A scene parsed from a file (scene.source) keeps that file's form: its key
+/// order, "$schema" and namespaced fields, a "box" or "regular" body whose shape is unchanged, fields it had at
+/// their default values, and numbers as they were written where their value is unchanged; a field it did not
+/// have is added only when it is not at its default. One body per line.
 std::string SceneToJson(const Scene& scene);
 
 /// Writes the scene to `file` atomically: a temporary file in the same directory, then renamed
-/// over the target, so that a failed write never damages the existing file. Returns false with a one-line error
-/// naming the file.
+/// over the target, so that a failed write never damages the existing file. A relative "$schema" path kept from
+/// the source file is rewritten to point at the same schema from the new file's folder. Returns false with a
+/// one-line error naming the file.
 bool SaveScene(const Scene& scene, const std::string& file, std::string& error);
 
 } // namespace satviz
