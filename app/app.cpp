@@ -1032,29 +1032,38 @@ void App::Inspector()
     {
         ImGui::TextWrapped("A polygon is not valid once rounded to float: the numbers are double.");
     }
+    // Every number in full, as the shortest decimal that reads back as the same value.
+    auto full = [&](double v) {
+        return study.singlePrecision ? ShortestDecimal(static_cast<float>(v)) : ShortestDecimal(v);
+    };
+    auto point = [&](Vec2 p) { return "(" + full(p.x) + ", " + full(p.y) + ")"; };
     const Manifold& m = study.manifold;
     ImGui::Text("overlap: %s", m.overlap ? "yes" : "no");
+    // The textbook view shows the MTV its own test found; the contact points come from Collide's clipping.
+    const bool textbook = study.Textbook();
+    const double depth = textbook ? study.textbookResult.depth : m.depth;
+    const double gap = textbook ? study.textbookResult.gap : m.gap;
+    const Vec2 normal = textbook ? study.textbookResult.normal : m.normal;
     if (m.overlap)
     {
-        ImGui::Text(study.singlePrecision ? "depth: %.9g" : "depth: %.17g", m.depth);
+        ImGui::Text("MTV length (depth): %s", full(depth).c_str());
     }
     else
     {
-        ImGui::Text(study.singlePrecision ? "gap on the separating axis: %.9g" : "gap on the separating axis: %.17g",
-                    m.gap);
+        ImGui::Text("gap on the separating axis: %s", full(gap).c_str());
     }
-    ImGui::Text("normal (A to B): (%.6f, %.6f)", m.normal.x, m.normal.y);
+    ImGui::Text("%s: %s", m.overlap ? "MTV direction (A to B)" : "separating axis (A to B)", point(normal).c_str());
     for (int i = 0; i < m.contactCount; ++i)
     {
-        ImGui::Text("contact %d: (%.6f, %.6f)", i + 1, m.contacts[i].point.x, m.contacts[i].point.y);
+        ImGui::Text("contact %d: %s", i + 1, point(m.contacts[i].point).c_str());
     }
     if (study.sweep)
     {
         const SweepResult& r = study.sweepResult;
         if (r.status == SweepStatus::Hit)
         {
-            ImGui::Text("time of impact: %.17g", r.toi);
-            ImGui::Text("normal at impact: (%.6f, %.6f)", r.normal.x, r.normal.y);
+            ImGui::Text("time of impact: %s", full(r.toi).c_str());
+            ImGui::Text("normal at impact: %s", point(r.normal).c_str());
         }
         else
         {

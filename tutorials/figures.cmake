@@ -7,6 +7,7 @@ set(SATVIZ_FIGURE_SCENES
   box_above_floor
   bullet_wall
   circle_and_polygon
+  circle_corner
   containment
   far_from_origin
   fly_by
@@ -20,6 +21,7 @@ set(SATVIZ_FIGURE_SCENES
 set(SATVIZ_STEP_SCENES
   overlapping_boxes
   circle_and_polygon
+  circle_corner
   box_above_floor
 )
 set(SATVIZ_FACE_STEP_SCENES

@@ -240,9 +240,11 @@ PolygonResultT<S> ComputeHull(const std::vector<Vec2T<S>>& input)
 }
 
 template <typename S>
-PolygonResultT<S> MakeBox(S hx, S hy)
+PolygonResultT<S> MakeBox(S halfWidth, S halfHeight)
 {
-    return MakePolygon(std::vector<Vec2T<S>>{{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}});
+    const S x = halfWidth;
+    const S y = halfHeight;
+    return MakePolygon(std::vector<Vec2T<S>>{{-x, -y}, {x, -y}, {x, y}, {-x, y}});
 }
 
 template <typename S>

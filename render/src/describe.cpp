@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include <satviz/render/describe.h>
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 
 namespace satviz
 {
@@ -85,7 +88,32 @@ std::string SweepExitReason(SweepExit exit)
     return "the test ended";
 }
 
-// "the normal of floor's edge 0 (with floor's edge 2 and box's edges 0, 2 on the same line)".
+// What precision the numbers carry, said where it matters: a pair far from the origin, or the float queries.
+std::string PrecisionNote(const Scene& scene, const PairStudy& study)
+{
+    const Body& a = scene.bodies[static_cast<size_t>(study.bodyA)];
+    const Body& b = scene.bodies[static_cast<size_t>(study.bodyB)];
+    const double distance = std::max(Length(a.position), Length(b.position));
+    const float far = static_cast<float>(distance);
+    const double floatStep = static_cast<double>(std::nextafter(far, INFINITY) - far);
+    if (study.singlePrecision)
+    {
+        std::string text = " These numbers come from the float queries (about 7 significant digits)";
+        return distance >= 1e4
+                   ? text + ": " + FormatNumber(distance) + " from the origin a float coordinate moves in " +
+                         "steps of " + FormatNumber(floatStep) + "."
+                   : text + ".";
+    }
+    if (distance < 1e4)
+    {
+        return "";
+    }
+    return " The pair lies " + FormatNumber(distance) + " from the origin. The queries run in double (about 16 " +
+           "significant digits) in A's frame, so they decide as they would at the origin; in float, coordinates " +
+           "this far are only good to steps of " + FormatNumber(floatStep) + ".";
+}
+
+// "the normal of floor's edge 0 (with floor's edge 2 and box's edges 0 and 2)": the faces merged into one axis.
 std::string DescribeFaces(const Scene& scene, const PairStudy& study, const AxisRef* faces, int count)
 {
     std::string text = DescribeAxis(scene, study, faces[0]);
@@ -93,17 +121,31 @@ std::string DescribeFaces(const Scene& scene, const PairStudy& study, const Axis
     {
         return text;
     }
+    // The other faces on the line, grouped by shape: "floor's edge 2", "box's edges 0 and 2".
     std::string others;
-    for (int f = 1; f < count; ++f)
+    for (int shape = 0; shape < 2; ++shape)
     {
-        others += (f == 1           ? ""
-                   : f + 1 == count ? " and "
-                                    : ", ") +
-                  (faces[f].kind == AxisKind::FaceNormal
-                       ? Possessive(NameOf(scene, study, faces[f].shape)) + " edge " + std::to_string(faces[f].index)
-                       : DescribeAxis(scene, study, faces[f]));
+        std::vector<int> edges;
+        for (int f = 1; f < count; ++f)
+        {
+            if (faces[f].kind == AxisKind::FaceNormal && faces[f].shape == shape)
+            {
+                edges.push_back(faces[f].index);
+            }
+        }
+        if (edges.empty())
+        {
+            continue;
+        }
+        std::string list;
+        for (size_t e = 0; e < edges.size(); ++e)
+        {
+            list += (e == 0 ? "" : e + 1 == edges.size() ? " and " : ", ") + std::to_string(edges[e]);
+        }
+        others += (others.empty() ? "" : " and ") + Possessive(NameOf(scene, study, shape)) +
+                  (edges.size() == 1 ? " edge " : " edges ") + list;
     }
-    return text + " (" + others + (count == 2 ? " lies" : " lie") + " on the same line)";
+    return others.empty() ? text : text + " (with " + others + " on the same line)";
 }
 
 std::string TextbookAxisStep(const Scene& scene, const PairStudy& study, int step)
@@ -140,7 +182,9 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
         "axis " + std::to_string(r.axis + 1) + " (" + DescribeAxis(scene, study, t.faces[0]) + ")";
     if (!r.overlap)
     {
-        return "Verdict: " + where + " separates the shapes with a gap of " + FormatNumber(r.gap) +
+        const bool beyond = t.minB - t.maxA > 0.0;
+        return "Verdict: " + where + " separates the shapes with a gap of " +
+               (beyond ? Difference(t.minB, t.maxA) : Difference(t.minA, t.maxB)) +
                ", so they do not collide. The test stopped after " + std::to_string(r.axesTested) + " of " +
                std::to_string(r.axisCount) + " axes.";
     }
@@ -150,8 +194,9 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
     const std::string way = t.pushSign > 0 ? "along" : "against";
     text += "Verdict: all " + std::to_string(r.axisCount) + " axes overlap, so the shapes collide. The smallest " +
             "overlap is " + FormatNumber(r.depth) + ", on " + where + ": moving " + nameB + " " +
-            FormatNumber(r.depth) + " " + way + " that normal, direction " + Pair(r.normal.x, r.normal.y) +
-            ", separates them. That is the minimum translation vector (MTV).";
+            FormatNumber(r.depth) + " " + way +
+            (t.faces[0].kind == AxisKind::FaceNormal ? " that normal" : " that axis") + ", direction " +
+            Pair(r.normal.x, r.normal.y) + ", separates them. That is the minimum translation vector (MTV).";
     const int contacts = study.manifold.contactCount;
     text += contacts == 1 ? " 1 contact point." : " " + std::to_string(contacts) + " contact points.";
     return text;
@@ -190,7 +235,7 @@ std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, in
     {
         return text + " This ends the test: " + SweepExitReason(study.textbookSweep.exit) + ".";
     }
-    if (t.latestEntry >= 0 && t.earliestExit >= 0)
+    if (t.latestEntry >= 0 && t.earliestExit >= 0 && step > 0)
     {
         const TextbookSweepAxis& entry = study.textbookSweep.axes[static_cast<size_t>(t.latestEntry)];
         const TextbookSweepAxis& exit = study.textbookSweep.axes[static_cast<size_t>(t.earliestExit)];
@@ -398,8 +443,41 @@ std::string FormatNumber(double value)
     {
         std::snprintf(buffer, sizeof(buffer), "%.3g", value);
     }
-    const std::string text = buffer;
+    std::string text = buffer;
+    // Exponents as a reader writes them: 1.41e6 and 2.5e-5, not 1.41e+06 and 2.5e-05.
+    const size_t e = text.find('e');
+    if (e != std::string::npos)
+    {
+        std::string exponent = text.substr(e + 1);
+        const bool negative = !exponent.empty() && exponent[0] == '-';
+        exponent.erase(0, exponent.find_first_not_of("+-"));
+        exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+        text = text.substr(0, e) + "e" + (negative ? "-" : "") + exponent;
+    }
     return text == "-0.00" ? "0.00" : text;
+}
+
+namespace
+{
+
+template <typename T>
+std::string Shortest(T value)
+{
+    char buffer[64];
+    const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof(buffer), value + T(0));
+    return std::string(buffer, r.ptr);
+}
+
+} // namespace
+
+std::string ShortestDecimal(double value)
+{
+    return Shortest(value);
+}
+
+std::string ShortestDecimal(float value)
+{
+    return Shortest(value);
 }
 
 std::string DescribeAxis(const Scene& scene, const PairStudy& study, const AxisRef& axis)
@@ -429,13 +507,15 @@ std::string DescribeStep(const Scene& scene, const PairStudy& study, int step)
     {
         if (step == study.VerdictStep())
         {
-            return study.sweep ? TextbookSweepVerdict(scene, study) : TextbookVerdict(scene, study);
+            return (study.sweep ? TextbookSweepVerdict(scene, study) : TextbookVerdict(scene, study)) +
+                   PrecisionNote(scene, study);
         }
         return study.sweep ? TextbookSweepAxisStep(scene, study, step) : TextbookAxisStep(scene, study, step);
     }
     if (step == study.VerdictStep())
     {
-        return study.sweep ? FaceSweepVerdict(scene, study) : FaceTestVerdict(scene, study);
+        return (study.sweep ? FaceSweepVerdict(scene, study) : FaceTestVerdict(scene, study)) +
+               PrecisionNote(scene, study);
     }
     return study.sweep ? FaceSweepStep(scene, study, step) : FaceTestStep(scene, study, step);
 }

@@ -5,6 +5,7 @@
 #include <satviz/render/painter.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 namespace satviz
@@ -13,16 +14,19 @@ namespace satviz
 namespace
 {
 
-constexpr float kCaptionLines = 2.0f;  // caption lines the band holds (longer captions extend it)
-constexpr float kLineHeight = 19.0f;   // caption line spacing
-constexpr float kPad = 12.0f;          // padding inside bands
-constexpr float kStaticPanel = 108.0f; // number-line panel height, static test
-constexpr float kSweepPanel = 166.0f;  // number line and time bar, swept test
-constexpr float kAxisGap = 30.0f;      // pixels between the pair's disc and the axis line
-constexpr float kFitMargin = 22.0f;    // pixels between the axis line and the scene area's edge
-constexpr float kOutline = 2.0f;       // shape outline thickness
-constexpr float kBar = 6.0f;           // interval bar thickness
-constexpr float kLinePad = 26.0f;      // the axis line runs this far beyond the intervals
+constexpr float kCaptionLines = 3.0f;     // caption lines the band holds (longer captions take a smaller size)
+constexpr int kSmallFigure = 560;         // figures narrower than this reserve label-size caption lines
+constexpr int kSmallPanelHeight = 400;    // figures lower than this show no number-line panel
+constexpr float kLineHeight = 19.0f;      // caption line spacing
+constexpr float kLabelLineHeight = 16.0f; // caption line spacing at label size (small figures)
+constexpr float kPad = 12.0f;             // padding inside bands
+constexpr float kStaticPanel = 108.0f;    // number-line panel height, static test
+constexpr float kSweepPanel = 166.0f;     // number line and time bar, swept test
+constexpr float kAxisGap = 30.0f;         // pixels between the pair's disc and the axis line
+constexpr float kFitMargin = 22.0f;       // pixels between the axis line and the scene area's edge
+constexpr float kOutline = 2.0f;          // shape outline thickness
+constexpr float kBar = 6.0f;              // interval bar thickness
+constexpr float kLinePad = 26.0f;         // the axis line runs this far beyond the intervals
 
 bool Has(const Figure& figure, LayerMask layer)
 {
@@ -355,7 +359,7 @@ class Painter
   public:
     Painter(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure)
         : canvas_(canvas), scene_(scene), study_(study), figure_(figure), view_(figure.view),
-          layout_(LayoutFigure(study, figure.layers, figure.view.width, figure.view.height)),
+          layout_(LayoutFigure(study, figure.layers, figure.view.width, figure.view.height, !figure.caption.empty())),
           labels_(canvas, static_cast<float>(figure.view.width), static_cast<float>(figure.view.height)),
           bodyA_(scene.bodies[static_cast<size_t>(study.bodyA)]), bodyB_(scene.bodies[static_cast<size_t>(study.bodyB)])
     {
@@ -1102,16 +1106,14 @@ class Painter
         }
     }
 
-    void Caption()
+    // Greedy word wrap to the band width. A bracketed pair such as "[-0.25, 0.25]" or "(0.96, 0.30)" is one word,
+    // so that no number is split from its partner across lines.
+    std::vector<std::string> Wrap(const std::string& text, TextStyle style) const
     {
-        canvas_.BeginGroup("caption");
-        const std::string text = figure_.caption.empty() ? DescribeStep(scene_, study_, figure_.step) : figure_.caption;
-        // Greedy word wrap to the band width.
-        std::vector<std::string> lines;
-        std::string line;
+        std::vector<std::string> words;
+        int depth = 0;
         size_t start = 0;
-        const float maxWidth = Width() - 2.0f * kPad - 4.0f;
-        while (start < text.size())
+        while (start <= text.size())
         {
             size_t end = text.find(' ', start);
             if (end == std::string::npos)
@@ -1119,8 +1121,32 @@ class Painter
                 end = text.size();
             }
             const std::string word = text.substr(start, end - start);
+            if (depth > 0 && !words.empty())
+            {
+                words.back() += " " + word;
+            }
+            else if (!word.empty())
+            {
+                words.push_back(word);
+            }
+            for (size_t i = 0; i < word.size(); ++i)
+            {
+                // Only a bracket that opens a number ("[-0.25," or "(0.96,") groups; prose in parentheses wraps.
+                const bool number = i + 1 < word.size() &&
+                                    (std::isdigit(static_cast<unsigned char>(word[i + 1])) || word[i + 1] == '-');
+                depth += ((word[i] == '[' || word[i] == '(') && number) ? 1 : 0;
+                depth -= (word[i] == ']' || word[i] == ')') && depth > 0 ? 1 : 0;
+            }
+            depth = std::max(depth, 0);
+            start = end + 1;
+        }
+        std::vector<std::string> lines;
+        std::string line;
+        const float maxWidth = Width() - 2.0f * kPad - 4.0f;
+        for (const std::string& word : words)
+        {
             const std::string candidate = line.empty() ? word : line + " " + word;
-            if (!line.empty() && canvas_.MeasureText(candidate, TextStyle::Body).x > maxWidth)
+            if (!line.empty() && canvas_.MeasureText(candidate, style).x > maxWidth)
             {
                 lines.push_back(line);
                 line = word;
@@ -1129,20 +1155,61 @@ class Painter
             {
                 line = candidate;
             }
-            start = end + 1;
         }
         if (!line.empty())
         {
             lines.push_back(line);
         }
-        const float bottom = std::max(layout_.sceneTop, kPad + kLineHeight * static_cast<float>(lines.size()) + 6.0f);
+        return lines;
+    }
+
+    // The step's explanation under the scene's own title (its caption), in the band the layout reserves: at body
+    // size, else at label size (the band grows over the scene's top when even that does not fit), and in small
+    // figures, where it does not fit, the step's short title, so that the scene stays in view.
+    void Caption()
+    {
+        canvas_.BeginGroup("caption");
+        const std::string text = DescribeStep(scene_, study_, figure_.step);
+        float y = kPad - 2.0f;
+        const float room = layout_.sceneTop - 6.0f;
+        std::vector<std::pair<std::string, TextStyle>> rows;
+        float used = 0.0f;
+        if (!figure_.caption.empty())
+        {
+            for (const std::string& l : Wrap(figure_.caption, TextStyle::Heading))
+            {
+                rows.push_back({l, TextStyle::Heading});
+                used += kLineHeight;
+            }
+        }
+        auto fits = [&](const std::vector<std::string>& lines, float height) {
+            return y + used + height * static_cast<float>(lines.size()) <= room + 1.0f;
+        };
+        TextStyle style = TextStyle::Body;
+        float height = kLineHeight;
+        std::vector<std::string> lines = Wrap(text, style);
+        if (!fits(lines, height))
+        {
+            style = TextStyle::Label;
+            height = kLabelLineHeight;
+            lines = Wrap(text, style);
+        }
+        if (!fits(lines, height) && view_.width < kSmallFigure)
+        {
+            lines = Wrap(StepTitle(scene_, study_, figure_.step), style);
+        }
+        const float bottom = std::max(layout_.sceneTop, y + used + height * static_cast<float>(lines.size()) + 6.0f);
         canvas_.FillRect({0.0f, 0.0f}, {Width(), bottom}, palette::kPanel);
         canvas_.Segment({0.0f, bottom}, {Width(), bottom}, palette::kFaint, 1.0f);
-        float y = kPad - 2.0f;
+        for (const auto& [l, rowStyle] : rows)
+        {
+            canvas_.Text({kPad, y}, l, rowStyle, palette::kInk);
+            y += kLineHeight;
+        }
         for (const std::string& l : lines)
         {
-            canvas_.Text({kPad, y}, l, TextStyle::Body, palette::kInk);
-            y += kLineHeight;
+            canvas_.Text({kPad, y}, l, style, palette::kInk);
+            y += height;
         }
     }
 
@@ -1190,14 +1257,18 @@ LayerMask LayersFromNames(const std::vector<std::string>& names)
     return mask;
 }
 
-FigureLayout LayoutFigure(const PairStudy& study, LayerMask layers, int width, int height)
+FigureLayout LayoutFigure(const PairStudy& study, LayerMask layers, int width, int height, bool titled)
 {
-    (void)width;
     FigureLayout layout;
     const float h = static_cast<float>(height);
-    layout.sceneTop = (layers & kLayerCaption) ? kPad + kLineHeight * kCaptionLines + 6.0f : 0.0f;
-    const bool panel =
-        study.AxisCount() > 0 && ((layers & kLayerProjection) || (study.sweep && (layers & kLayerSwept)));
+    // Small figures reserve label-size lines; a scene's own caption takes one more line, as a title.
+    const float line = width < kSmallFigure ? kLabelLineHeight : kLineHeight;
+    layout.sceneTop =
+        (layers & kLayerCaption) ? kPad + line * kCaptionLines + (titled ? kLineHeight : 0.0f) + 6.0f : 0.0f;
+    // A small figure has no room for the number line under the scene: the axis line in the scene shows the
+    // intervals alone.
+    const bool panel = height >= kSmallPanelHeight && study.AxisCount() > 0 &&
+                       ((layers & kLayerProjection) || (study.sweep && (layers & kLayerSwept)));
     const float panelHeight = panel ? (study.sweep ? kSweepPanel : kStaticPanel) : 0.0f;
     // Small images keep at least half their height for the scene.
     layout.panelTop = panel ? std::max(h - panelHeight, layout.sceneTop + 0.5f * (h - layout.sceneTop)) : h;
@@ -1208,7 +1279,7 @@ FigureLayout LayoutFigure(const PairStudy& study, LayerMask layers, int width, i
 View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int width, int height)
 {
     const std::vector<std::pair<Vec2, double>> points = PairPoints(scene, study);
-    const FigureLayout layout = LayoutFigure(study, layers, width, height);
+    const FigureLayout layout = LayoutFigure(study, layers, width, height, !scene.view.caption.empty());
     // B moved out by the minimum translation vector.
     std::vector<std::pair<Vec2, double>> moved;
     if ((layers & kLayerMtv) && !study.sweep && study.manifold.overlap)

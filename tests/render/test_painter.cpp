@@ -10,7 +10,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -207,6 +209,92 @@ TEST_CASE("Each axis step draws its axis and both projection intervals where the
         }
     }
     CHECK(checked >= 40);
+}
+
+TEST_CASE("A box above a floor: the textbook step shows a gap and stops, the face test says how far behind",
+          "[painter]")
+{
+    const Scene scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/box_above_floor.json");
+    const FigureSetup textbook = SetUpView(scene, StepView::Textbook);
+    REQUIRE(textbook.Ok());
+    // Two boxes, aligned: 2 distinct axes; the first (vertical) already separates, then the verdict.
+    CHECK(textbook.study.StepCount() == 2);
+    const std::string first = DescribeStep(scene, textbook.study, 0);
+    INFO(first);
+    CHECK(first.rfind("Axis 1 of 2: the normal of floor's edge 0", 0) == 0);
+    CHECK(first.find("floor projects to [-0.25, 0.25], box to [-1.30, -0.70]") != std::string::npos);
+    CHECK(first.find("Gap 0.45 between them: this axis separates the shapes") != std::string::npos);
+    CHECK(first.find("overlap") == std::string::npos);
+    CHECK(first.find("push") == std::string::npos);
+    const std::string verdict = DescribeStep(scene, textbook.study, 1);
+    CHECK(verdict.find("gap of 0.45") != std::string::npos);
+    CHECK(verdict.find("after 1 of 2 axes") != std::string::npos);
+
+    const FigureSetup faces = SetUpView(scene, StepView::Faces);
+    REQUIRE(faces.Ok());
+    const std::string face = DescribeStep(scene, faces.study, 0);
+    INFO(face);
+    CHECK(face.rfind("Face test 1 of 8: does box lie wholly beyond floor's edge 0? No:", 0) == 0);
+    CHECK(face.find("1.55 behind it") != std::string::npos);
+    CHECK(face.find("Each axis is two face tests") != std::string::npos);
+    CHECK(face.find("Intervals") == std::string::npos);
+}
+
+TEST_CASE("Numbers as figures print them: no -0, exponents as written, full values that read back", "[painter]")
+{
+    CHECK(FormatNumber(-0.0) == "0");
+    CHECK(FormatNumber(1414213.5) == "1.41e6");
+    CHECK(FormatNumber(2.5e-5) == "2.5e-5");
+    CHECK(FormatNumber(-1e-300) == "-1e-300");
+    CHECK(FormatNumber(0.4825) == "0.48");
+    CHECK(FormatNumber(-0.001) == "-0.001");
+    CHECK(ShortestDecimal(0.4825) == "0.4825");
+    CHECK(ShortestDecimal(-0.0) == "0");
+    testing::Rng rng(5);
+    for (int i = 0; i < 20000; ++i)
+    {
+        const double x = rng.Uniform(-1.0, 1.0) * std::pow(10.0, rng.Uniform(-30.0, 30.0));
+        const std::string text = ShortestDecimal(x);
+        REQUIRE(std::strtod(text.c_str(), nullptr) == x);
+        REQUIRE(text.size() <= 24);
+        const float f = static_cast<float>(x);
+        REQUIRE(std::strtof(ShortestDecimal(f).c_str(), nullptr) == f);
+        const std::string shown = FormatNumber(x);
+        REQUIRE(shown.find("e+") == std::string::npos);
+        REQUIRE(shown != "-0.00");
+    }
+}
+
+TEST_CASE("Caption lines never split a pair of numbers", "[painter]")
+{
+    int lines = 0;
+    for (const std::string& file : TutorialScenes())
+    {
+        for (StepView view : kViews)
+        {
+            const Scene scene = Load(file);
+            FigureSetup setup = SetUpView(scene, view);
+            REQUIRE(setup.Ok());
+            for (int step = 0; step < setup.study.StepCount(); ++step)
+            {
+                for (const std::string& line : Paint(scene, setup, step, kLayerCaption).Texts())
+                {
+                    // Every "[" or "(" that opens a number closes on the same line.
+                    int open = 0;
+                    for (size_t i = 0; i + 1 < line.size(); ++i)
+                    {
+                        const bool number = std::isdigit(static_cast<unsigned char>(line[i + 1])) || line[i + 1] == '-';
+                        open += (line[i] == '[' || line[i] == '(') && number ? 1 : 0;
+                        open -= (line[i + 1] == ']' || line[i + 1] == ')') && open > 0 ? 1 : 0;
+                    }
+                    INFO(file << " step " << step << ": " << line);
+                    CHECK(open == 0);
+                    ++lines;
+                }
+            }
+        }
+    }
+    CHECK(lines > 100);
 }
 
 TEST_CASE("The caption of a step states the trace's numbers", "[painter]")

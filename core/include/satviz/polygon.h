@@ -194,9 +194,10 @@ PolygonResultT<S> MakePolygon(const std::vector<Vec2T<S>>& points, PolygonOption
 template <typename S>
 PolygonResultT<S> ComputeHull(const std::vector<Vec2T<S>>& points);
 
-/// An axis-aligned box centred on the body origin with half-widths hx and hy (both > 0).
+/// An axis-aligned box centred on the body origin, from half its width and half its height (both > 0): the box
+/// spans [-halfWidth, halfWidth] x [-halfHeight, halfHeight]. A scene file's "box" gives the full width and height.
 template <typename S>
-PolygonResultT<S> MakeBox(S hx, S hy);
+PolygonResultT<S> MakeBox(S halfWidth, S halfHeight);
 
 /// A regular polygon with `sides` vertices on a circle of `radius` around the body origin, the first vertex at
 /// angle `phase` (radians).

@@ -12,6 +12,13 @@ namespace satviz
 /// A number as figures show it: two decimals for ordinary magnitudes, three significant digits otherwise.
 std::string FormatNumber(double value);
 
+/// The shortest decimal that reads back as the same double (0.4825, not 0.48249999999999998): for the panels that
+/// show a number in full.
+std::string ShortestDecimal(double value);
+
+/// The shortest decimal that reads back as the same float.
+std::string ShortestDecimal(float value);
+
 /// Where an axis comes from, in words: "normal of B's edge 1", "from pentagon's vertex 2 to ball's centre".
 std::string DescribeAxis(const Scene& scene, const PairStudy& study, const AxisRef& axis);
 

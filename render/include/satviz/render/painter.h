@@ -52,7 +52,7 @@ struct Figure
     LayerMask layers = kDefaultLayers; ///< layers to draw
     int step = 0;                      ///< trace step: 0 .. StepCount() - 1 (the last is the verdict)
     double time = -1.0;                ///< sweeps: also draw the bodies at this time in [0, 1]; -1: not drawn
-    std::string caption;               ///< caption text; empty: DescribeStep
+    std::string caption;               ///< the figure's title, drawn above the step's explanation; empty: none
 };
 
 /// Screen regions of a figure: the caption band on top, the number-line panel at the bottom, the scene between.
@@ -63,8 +63,9 @@ struct FigureLayout
     float panelTop = 0.0f;    ///< top of the panel (== height when there is none)
 };
 
-/// Where the caption, the scene and the panel go for these layers and image size.
-FigureLayout LayoutFigure(const PairStudy& study, LayerMask layers, int width, int height);
+/// Where the caption, the scene and the panel go for these layers and image size; `titled`: the figure has a
+/// caption of its own (a title line above the step's explanation).
+FigureLayout LayoutFigure(const PairStudy& study, LayerMask layers, int width, int height, bool titled = false);
 
 /// The camera that frames the pair (both shapes over the whole step when sweeping, and the room the axis line
 /// needs beside them) in the scene area; the same for every step, so stepping does not move the picture.
