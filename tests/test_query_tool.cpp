@@ -261,3 +261,25 @@ TEST_CASE("satviz-query tells a pair that overlaps at the start from one that hi
     CHECK(inside["toi_normal"][0].get<double>() == Approx(1.0).margin(1e-15));
     CHECK(inside["depth"].get<double>() == Approx(0.5).margin(1e-15));
 }
+
+TEST_CASE("satviz-query: a long trace says so on stderr, and one too large for the textbook prints the face tests",
+          "[query]")
+{
+    Write("large.json", R"({"bodies": [{"name": "disc", "regular": {"sides": 4200, "radius": 1}},
+        {"name": "box", "box": [0.5, 0.5], "position": [1.1, 0.3]}]})");
+    const Run large = Query("--trace large.json");
+    REQUIRE(large.exitCode == 0);
+    CHECK(large.err.find("satviz-query: large.json: tracing disc and box, 4204 vertices") != std::string::npos);
+    const nlohmann::json textbook = nlohmann::json::parse(large.out[0])["pairs"][0]["trace"];
+    CHECK(textbook["view"] == "textbook");
+    CHECK(textbook["result"]["axis_count"] == 2100 + 2);
+    CHECK(Query("large.json").err.empty());
+
+    Write("huge.json", R"({"bodies": [{"name": "disc", "regular": {"sides": 20001, "radius": 1}},
+        {"name": "box", "box": [0.5, 0.5], "position": [1.1, 0.3]}]})");
+    const Run huge = Query("--trace huge.json");
+    REQUIRE(huge.exitCode == 0);
+    const nlohmann::json faces = nlohmann::json::parse(huge.out[0])["pairs"][0]["trace"];
+    CHECK(faces["view"] == "faces");
+    CHECK(faces["note"].get<std::string>().find("too many vertices for the textbook trace") == 0);
+}

@@ -6,6 +6,7 @@
 #include <satviz/sweep.h>
 
 #include <cmath>
+#include <ostream>
 
 namespace satviz
 {
@@ -228,8 +229,11 @@ Json TextbookSweepTraceJson(const TextbookSweepTrace& trace)
             {"toi", r.status == SweepStatus::Hit ? Json(r.toi + 0.0) : Json(nullptr)}};
 }
 
-Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace, StepView view)
+Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace, StepView view, std::ostream* progress)
 {
+    // A trace records every face's intervals, so its cost grows with the square of the vertex count.
+    constexpr int kSlowTrace = 4096;
+    constexpr long long kTextbookTraceBudget = 400000000;
     Json pairs = Json::array();
     Trace trace;
     for (size_t i = 0; i < scene.bodies.size(); ++i)
@@ -238,6 +242,13 @@ Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace,
         {
             const Body& a = scene.bodies[i];
             const Body& b = scene.bodies[j];
+            auto vertices = [](const Shape& s) { return s.type == ShapeType::Polygon ? s.polygon.Count() : 1; };
+            const int total = vertices(a.shape) + vertices(b.shape);
+            if (withTrace && progress != nullptr && total > kSlowTrace)
+            {
+                *progress << "satviz-query: " << file << ": tracing " << a.name << " and " << b.name << ", " << total
+                          << " vertices (every face's intervals)" << std::endl;
+            }
             const Manifold manifold = Collide(a.shape, a.Xf(), b.shape, b.Xf(), withTrace ? &trace : nullptr);
             Json pair = ManifoldJson(a.name, b.name, manifold);
             // Only pairs where something moves are swept: a still pair has nothing to add.
@@ -269,9 +280,17 @@ Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace,
                     pair["toi_contacts"] = contacts;
                 }
             }
-            if (withTrace && view == StepView::Faces)
+            // The textbook test projects every vertex on every axis: past a budget the face tests are printed,
+            // and the trace says why.
+            const bool textbookTooLarge = static_cast<long long>(total) * total > kTextbookTraceBudget;
+            if (withTrace && (view == StepView::Faces || textbookTooLarge))
             {
                 pair["trace"] = TraceJson(trace);
+                if (view == StepView::Textbook)
+                {
+                    pair["trace"]["note"] = "too many vertices for the textbook trace (every vertex on every axis): "
+                                            "the face tests are printed";
+                }
             }
             else if (withTrace)
             {

@@ -55,22 +55,20 @@ struct Candidate
     AxisRef faces[kMaxFacesPerAxis]{};
     int faceCount = 0;
     Vec2T<S> u{};
+    S slack{}; // how far rounding may have turned u: a few epsilons, more for a short edge far from its origin
 };
 
-// Two unit directions lie on one line when their cross product is within the rounding of rotating them.
+// Adds direction u from `ref` as a new axis, or to the axis already listed on its line: two directions lie on one
+// line when their cross product is within what rounding may have turned them by. A face normal is computed from
+// its edge, so its direction carries about eps * R / L for vertices R from the body origin and an edge of length
+// L (a fine polygon's opposite faces, parallel in exact arithmetic, differ by that much).
 template <typename S>
-bool SameLine(Vec2T<S> u, Vec2T<S> w)
-{
-    return std::abs(Cross(u, w)) <= S(16) * std::numeric_limits<S>::epsilon();
-}
-
-// Adds direction u from `ref` as a new axis, or to the axis already listed on its line.
-template <typename S>
-void AddAxis(std::vector<Candidate<S>>& axes, const AxisRef& ref, Vec2T<S> u)
+void AddAxis(std::vector<Candidate<S>>& axes, const AxisRef& ref, Vec2T<S> u, S slack)
 {
     for (Candidate<S>& axis : axes)
     {
-        if (SameLine(axis.u, u) && axis.faceCount < kMaxFacesPerAxis)
+        const S tolerance = S(16) * std::numeric_limits<S>::epsilon() + axis.slack + slack;
+        if (std::abs(Cross(axis.u, u)) <= tolerance && axis.faceCount < kMaxFacesPerAxis)
         {
             axis.faces[axis.faceCount++] = ref;
             return;
@@ -80,7 +78,15 @@ void AddAxis(std::vector<Candidate<S>>& axes, const AxisRef& ref, Vec2T<S> u)
     axis.faces[0] = ref;
     axis.faceCount = 1;
     axis.u = u;
+    axis.slack = slack;
     axes.push_back(axis);
+}
+
+// The rounding slack of face i's normal (see AddAxis).
+template <typename S>
+S NormalSlack(const PolygonT<S>& polygon, S reach, int i)
+{
+    return S(4) * std::numeric_limits<S>::epsilon() * reach / Length(polygon.Edge(i));
 }
 
 // The axis from a polygon's vertex nearest to a circle's centre to that centre (Ericson 5.2.6: with the face
@@ -101,7 +107,7 @@ void AddVertexAxis(std::vector<Candidate<S>>& axes, const Placed<S>& polygon, in
     }
     if (nearest >= 0 && nearestSquared > S(0))
     {
-        AddAxis(axes, {AxisKind::VertexToCenter, side, nearest}, Normalize(center - polygon.Vertex(nearest)));
+        AddAxis(axes, {AxisKind::VertexToCenter, side, nearest}, Normalize(center - polygon.Vertex(nearest)), S(0));
     }
 }
 
@@ -116,9 +122,15 @@ std::vector<Candidate<S>> DistinctAxes(const Placed<S>& a, const Placed<S>& b, b
     {
         if (shapes[side]->IsPolygon())
         {
-            for (int i = 0; i < shapes[side]->Polygon().Count(); ++i)
+            const PolygonT<S>& polygon = shapes[side]->Polygon();
+            S reach = S(0);
+            for (const Vec2T<S>& v : polygon.vertices)
             {
-                AddAxis(axes, {AxisKind::FaceNormal, side, i}, shapes[side]->Normal(i));
+                reach = std::max(reach, Length(v));
+            }
+            for (int i = 0; i < polygon.Count(); ++i)
+            {
+                AddAxis(axes, {AxisKind::FaceNormal, side, i}, shapes[side]->Normal(i), NormalSlack(polygon, reach, i));
             }
         }
     }
@@ -136,7 +148,7 @@ std::vector<Candidate<S>> DistinctAxes(const Placed<S>& a, const Placed<S>& b, b
     {
         const Vec2T<S> centers = b.Center() - a.Center();
         const Vec2T<S> u = LengthSquared(centers) > S(0) ? Normalize(centers) : Vec2T<S>{S(0), S(1)};
-        AddAxis(axes, {AxisKind::CenterToCenter, -1, -1}, u);
+        AddAxis(axes, {AxisKind::CenterToCenter, -1, -1}, u, S(0));
     }
     return axes;
 }

@@ -42,8 +42,9 @@ int main(int argc, char** argv)
             ++failures;
             continue;
         }
-        std::cout << satviz::QuerySceneJson(loaded.scene, file, withTrace, steps).dump(-1, ' ', false, kReplace)
-                  << "\n";
+        std::cout
+            << satviz::QuerySceneJson(loaded.scene, file, withTrace, steps, &std::cerr).dump(-1, ' ', false, kReplace)
+            << "\n";
     }
     std::cout.flush();
     return failures == 0 ? 0 : 1;

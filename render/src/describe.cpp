@@ -346,9 +346,17 @@ std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
                                               : "";
     if (!m.overlap)
     {
-        return text + "Verdict: " + DescribeAxis(scene, study, m.axis) + " separates the shapes by " +
-               FormatNumber(m.gap) + ", so they do not collide. The test stopped after " + std::to_string(tested) +
-               " of " + std::to_string(CandidateCount(scene, study)) + " face tests.";
+        // The gap as the number line shows it: the other shape's near end minus the face's shape's far end.
+        std::string gap = FormatNumber(m.gap);
+        if (!study.trace.axes.empty() && study.trace.axes.back().separating)
+        {
+            const AxisTest& t = study.trace.axes.back();
+            const bool fromB = t.axis.shape == 1 && t.axis.kind != AxisKind::CenterToCenter;
+            gap = fromB ? Difference(t.minA, t.maxB) : Difference(t.minB, t.maxA);
+        }
+        return text + "Verdict: " + DescribeAxis(scene, study, m.axis) + " separates the shapes by " + gap +
+               ", so they do not collide. The test stopped after " + std::to_string(tested) + " of " +
+               std::to_string(CandidateCount(scene, study)) + " face tests.";
     }
     if (study.startsOverlapping)
     {

@@ -139,6 +139,9 @@ class HeadlessRenderer
     int height_ = 0;
 };
 
+// Pairs with more vertices than this (both shapes together) get a progress line while they are traced.
+constexpr size_t kSlowTrace = 4096;
+
 struct Job
 {
     std::string scene;
@@ -350,7 +353,29 @@ int main(int argc, char** argv)
             first.setStep = true;
             first.step = step - 1;
         }
+        // A trace records every face's intervals, so its cost grows with the square of the vertex count: say so
+        // before a long one, and how long it took after.
+        size_t largest = 0;
+        size_t second = 0;
+        for (const satviz::Body& body : loaded.scene.bodies)
+        {
+            const size_t n = body.shape.type == satviz::ShapeType::Polygon ? body.shape.polygon.vertices.size() : 1;
+            second = std::max(second, std::min(largest, n));
+            largest = std::max(largest, n);
+        }
+        const bool slow = !quiet && largest + second > kSlowTrace;
+        const auto traceStart = Clock::now();
+        if (slow)
+        {
+            std::fprintf(stderr, "satviz-render: %s: tracing polygons of up to %zu vertices (every face's intervals)\n",
+                         file.c_str(), largest);
+        }
         satviz::FigureSetup setup = satviz::SetUpFigure(loaded.scene, first);
+        if (slow)
+        {
+            std::fprintf(stderr, "satviz-render: %s: traced in %.1f s\n", file.c_str(),
+                         Seconds(Clock::now() - traceStart));
+        }
         if (!setup.Ok())
         {
             std::fprintf(stderr, "satviz-render: %s: %s\n", file.c_str(), setup.error.c_str());

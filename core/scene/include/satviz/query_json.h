@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <iosfwd>
 #include <string>
 
 namespace satviz
@@ -34,8 +35,8 @@ nlohmann::ordered_json TextbookSweepTraceJson(const TextbookSweepTrace& trace);
 /// Every pair of bodies of a scene, in file order: {"scene": file, "pairs": [...]}. Pairs where a body moves also
 /// carry "toi" (the time of impact in [0, 1], 0 when overlapping at the start, null for a miss), "toi_normal" and
 /// "toi_contacts". With `withTrace`, each pair also carries its "trace" in the chosen view (and, in the textbook
-/// view, moving pairs their "sweep_trace").
+/// view, moving pairs their "sweep_trace"). `progress`, when not null, gets a line before each long trace.
 nlohmann::ordered_json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace,
-                                      StepView view = StepView::Textbook);
+                                      StepView view = StepView::Textbook, std::ostream* progress = nullptr);
 
 } // namespace satviz
