@@ -62,14 +62,31 @@ struct Candidate
 // line when their cross product is within what rounding may have turned them by. A face normal is computed from
 // its edge, so its direction carries about eps * R / L for vertices R from the body origin and an edge of length
 // L (a fine polygon's opposite faces, parallel in exact arithmetic, differ by that much).
+// Of the faces on one line, the one whose world normal points right (or, for a vertical line, up) names the axis
+// and orients it, so that the number line grows the way a reader expects.
 template <typename S>
-void AddAxis(std::vector<Candidate<S>>& axes, const AxisRef& ref, Vec2T<S> u, S slack)
+bool PointsRightOrUp(Vec2T<S> world)
+{
+    const S level = S(64) * std::numeric_limits<S>::epsilon();
+    return world.x > level || (std::abs(world.x) <= level && world.y > S(0));
+}
+
+template <typename S>
+void AddAxis(std::vector<Candidate<S>>& axes, const AxisRef& ref, Vec2T<S> u, S slack, RotT<S> toWorld)
 {
     for (Candidate<S>& axis : axes)
     {
         const S tolerance = S(16) * std::numeric_limits<S>::epsilon() + axis.slack + slack;
         if (std::abs(Cross(axis.u, u)) <= tolerance && axis.faceCount < kMaxFacesPerAxis)
         {
+            if (!PointsRightOrUp(Rotate(toWorld, axis.u)) && PointsRightOrUp(Rotate(toWorld, u)))
+            {
+                std::copy_backward(axis.faces, axis.faces + axis.faceCount, axis.faces + axis.faceCount + 1);
+                axis.faces[0] = ref;
+                axis.u = u;
+                ++axis.faceCount;
+                return;
+            }
             axis.faces[axis.faceCount++] = ref;
             return;
         }
@@ -92,7 +109,8 @@ S NormalSlack(const PolygonT<S>& polygon, S reach, int i)
 // The axis from a polygon's vertex nearest to a circle's centre to that centre (Ericson 5.2.6: with the face
 // normals, the axes a polygon and a circle need). None when the centre lies on the vertex.
 template <typename S>
-void AddVertexAxis(std::vector<Candidate<S>>& axes, const Placed<S>& polygon, int side, Vec2T<S> center)
+void AddVertexAxis(std::vector<Candidate<S>>& axes, const Placed<S>& polygon, int side, Vec2T<S> center,
+                   RotT<S> toWorld)
 {
     int nearest = -1;
     S nearestSquared = std::numeric_limits<S>::infinity();
@@ -107,14 +125,15 @@ void AddVertexAxis(std::vector<Candidate<S>>& axes, const Placed<S>& polygon, in
     }
     if (nearest >= 0 && nearestSquared > S(0))
     {
-        AddAxis(axes, {AxisKind::VertexToCenter, side, nearest}, Normalize(center - polygon.Vertex(nearest)), S(0));
+        AddAxis(axes, {AxisKind::VertexToCenter, side, nearest}, Normalize(center - polygon.Vertex(nearest)), S(0),
+                toWorld);
     }
 }
 
 // The distinct axes of a pair, in test order: A's face normals, B's, then a circle's axis. With `fixedOnly`, only
 // the axes that keep their direction as the shapes translate (a circle's axis turns).
 template <typename S>
-std::vector<Candidate<S>> DistinctAxes(const Placed<S>& a, const Placed<S>& b, bool fixedOnly)
+std::vector<Candidate<S>> DistinctAxes(const Placed<S>& a, const Placed<S>& b, bool fixedOnly, RotT<S> toWorld)
 {
     std::vector<Candidate<S>> axes;
     const Placed<S>* shapes[2] = {&a, &b};
@@ -130,7 +149,8 @@ std::vector<Candidate<S>> DistinctAxes(const Placed<S>& a, const Placed<S>& b, b
             }
             for (int i = 0; i < polygon.Count(); ++i)
             {
-                AddAxis(axes, {AxisKind::FaceNormal, side, i}, shapes[side]->Normal(i), NormalSlack(polygon, reach, i));
+                AddAxis(axes, {AxisKind::FaceNormal, side, i}, shapes[side]->Normal(i), NormalSlack(polygon, reach, i),
+                        toWorld);
             }
         }
     }
@@ -142,13 +162,13 @@ std::vector<Candidate<S>> DistinctAxes(const Placed<S>& a, const Placed<S>& b, b
     {
         const int polygonSide = a.IsPolygon() ? 0 : 1;
         const Placed<S>& polygon = *shapes[polygonSide];
-        AddVertexAxis(axes, polygon, polygonSide, shapes[1 - polygonSide]->Center());
+        AddVertexAxis(axes, polygon, polygonSide, shapes[1 - polygonSide]->Center(), toWorld);
     }
     else if (!a.IsPolygon())
     {
         const Vec2T<S> centers = b.Center() - a.Center();
         const Vec2T<S> u = LengthSquared(centers) > S(0) ? Normalize(centers) : Vec2T<S>{S(0), S(1)};
-        AddAxis(axes, {AxisKind::CenterToCenter, -1, -1}, u, S(0));
+        AddAxis(axes, {AxisKind::CenterToCenter, -1, -1}, u, S(0), toWorld);
     }
     return axes;
 }
@@ -202,7 +222,7 @@ TextbookResultT<S> TextbookCollideWith(const ShapeT<S>& a, const TransformT<S>& 
     Placed<S> pa;
     Placed<S> pb;
     PlacePair(a, xfA, b, xfB, pa, pb);
-    const std::vector<Candidate<S>> axes = DistinctAxes(pa, pb, false);
+    const std::vector<Candidate<S>> axes = DistinctAxes(pa, pb, false, xfA.q);
     const Vec2T<S> centers = pb.Center() - pa.Center();
 
     TextbookResultT<S> result;
@@ -323,7 +343,7 @@ TextbookSweepResultT<S> TextbookSweepWith(const ShapeT<S>& a, const TransformT<S
     Placed<S> pb;
     PlacePair(a, xfA, b, xfB, pa, pb);
     const bool circles = !pa.IsPolygon() || !pb.IsPolygon();
-    const std::vector<Candidate<S>> axes = DistinctAxes(pa, pb, circles);
+    const std::vector<Candidate<S>> axes = DistinctAxes(pa, pb, circles, xfA.q);
     const Vec2T<S> v = InvRotate(xfA.q, velocity);
     // Motion along an axis within the rounding of its rate counts as none (as Sweep's StillRate).
     const S still = S(8) * std::numeric_limits<S>::epsilon() * std::max(std::abs(velocity.x), std::abs(velocity.y));

@@ -24,14 +24,20 @@ std::string Possessive(const std::string& name)
     return name + "'s";
 }
 
+// A coordinate beside others: an exact 0 as 0.00, like its neighbours.
+std::string Coordinate(double value)
+{
+    return value == 0.0 ? "0.00" : FormatNumber(value);
+}
+
 std::string Pair(double x, double y)
 {
-    return "(" + FormatNumber(x) + ", " + FormatNumber(y) + ")";
+    return "(" + Coordinate(x) + ", " + Coordinate(y) + ")";
 }
 
 std::string Interval(double low, double high)
 {
-    return "[" + FormatNumber(low) + ", " + FormatNumber(high) + "]";
+    return "[" + Coordinate(low) + ", " + Coordinate(high) + "]";
 }
 
 // Number of face tests the fast test could run: every face of a polygon, one axis per circle pair.
@@ -51,14 +57,23 @@ double Shown(double value)
     return std::strtod(text.c_str(), nullptr);
 }
 
-// hi - lo, computed from the numbers as shown: a learner subtracting the printed ends gets the printed result.
-std::string Difference(double hi, double lo)
+} // namespace
+
+std::string ShownDifference(double hi, double lo)
 {
     const double a = Shown(hi);
     const double b = Shown(lo);
-    const bool sameBand = std::isfinite(a) && std::isfinite(b) && std::fabs(hi) >= 0.01 && std::fabs(hi) < 1e5 &&
-                          std::fabs(lo) >= 0.01 && std::fabs(lo) < 1e5 && std::fabs(hi - lo) >= 0.01;
+    auto fixed = [](double v) { return v == 0.0 || (std::fabs(v) >= 0.01 && std::fabs(v) < 1e9); };
+    const bool sameBand = std::isfinite(a) && std::isfinite(b) && fixed(hi) && fixed(lo) && std::fabs(a - b) >= 0.01;
     return FormatNumber(sameBand ? a - b : hi - lo);
+}
+
+namespace
+{
+
+std::string Difference(double hi, double lo)
+{
+    return ShownDifference(hi, lo);
 }
 
 std::string Time(double t)
@@ -73,7 +88,8 @@ std::string SweepExitReason(SweepExit exit)
     case SweepExit::NotMoving:
         return "nothing moves, so the static test decides";
     case SweepExit::NeverCloses:
-        return "on this axis the intervals never overlap during the step, so the shapes cannot meet";
+        return "on this axis the intervals never overlap during the step (at most they touch, and touching is not a "
+               "hit), so the shapes cannot interpenetrate";
     case SweepExit::EntryAfterStep:
         return "the intervals would only meet after the step ends";
     case SweepExit::EntryAfterExit:
@@ -94,15 +110,16 @@ std::string PrecisionNote(const Scene& scene, const PairStudy& study)
     const Body& a = scene.bodies[static_cast<size_t>(study.bodyA)];
     const Body& b = scene.bodies[static_cast<size_t>(study.bodyB)];
     const double distance = std::max(Length(a.position), Length(b.position));
-    const float far = static_cast<float>(distance);
-    const double floatStep = static_cast<double>(std::nextafter(far, INFINITY) - far);
+    const double coordinate =
+        std::max({std::fabs(a.position.x), std::fabs(a.position.y), std::fabs(b.position.x), std::fabs(b.position.y)});
+    const float far = static_cast<float>(coordinate);
+    const std::string floatStep = ShortestDecimal(std::nextafter(far, INFINITY) - far);
     if (study.singlePrecision)
     {
         std::string text = " These numbers come from the float queries (about 7 significant digits)";
-        return distance >= 1e4
-                   ? text + ": " + FormatNumber(distance) + " from the origin a float coordinate moves in " +
-                         "steps of " + FormatNumber(floatStep) + "."
-                   : text + ".";
+        return distance >= 1e4 ? text + ": a float coordinate as large as " + FormatNumber(coordinate) +
+                                     " moves in steps of " + floatStep + "."
+                               : text + ".";
     }
     if (distance < 1e4)
     {
@@ -110,10 +127,10 @@ std::string PrecisionNote(const Scene& scene, const PairStudy& study)
     }
     return " The pair lies " + FormatNumber(distance) + " from the origin. The queries run in double (about 16 " +
            "significant digits) in A's frame, so they decide as they would at the origin; in float, coordinates " +
-           "this far are only good to steps of " + FormatNumber(floatStep) + ".";
+           "this large (" + FormatNumber(coordinate) + ") move in steps of " + floatStep + ".";
 }
 
-// "the normal of floor's edge 0 (with floor's edge 2 and box's edges 0 and 2)": the faces merged into one axis.
+// "the normal of floor's edge 2 (floor's edge 0 and box's edges 0 and 2 are parallel to it)": one axis, many faces.
 std::string DescribeFaces(const Scene& scene, const PairStudy& study, const AxisRef* faces, int count)
 {
     std::string text = DescribeAxis(scene, study, faces[0]);
@@ -145,7 +162,7 @@ std::string DescribeFaces(const Scene& scene, const PairStudy& study, const Axis
         others += (others.empty() ? "" : " and ") + Possessive(NameOf(scene, study, shape)) +
                   (edges.size() == 1 ? " edge " : " edges ") + list;
     }
-    return others.empty() ? text : text + " (with " + others + " on the same line)";
+    return others.empty() ? text : text + " (" + others + (count == 2 ? " is" : " are") + " parallel to it)";
 }
 
 std::string TextbookAxisStep(const Scene& scene, const PairStudy& study, int step)
@@ -158,8 +175,7 @@ std::string TextbookAxisStep(const Scene& scene, const PairStudy& study, int ste
                        Interval(t.minA, t.maxA) + ", " + nameB + " to " + Interval(t.minB, t.maxB) + ". ";
     if (t.separating)
     {
-        const bool beyond = t.minB - t.maxA > 0.0;
-        return text + "Gap " + (beyond ? Difference(t.minB, t.maxA) : Difference(t.minA, t.maxB)) +
+        return text + "Gap " + ShownGap(t) +
                " between them: this axis separates the shapes, so they do not collide and the test stops here.";
     }
     const std::string along = Difference(t.maxA, t.minB);
@@ -182,9 +198,7 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
         "axis " + std::to_string(r.axis + 1) + " (" + DescribeAxis(scene, study, t.faces[0]) + ")";
     if (!r.overlap)
     {
-        const bool beyond = t.minB - t.maxA > 0.0;
-        return "Verdict: " + where + " separates the shapes with a gap of " +
-               (beyond ? Difference(t.minB, t.maxA) : Difference(t.minA, t.maxB)) +
+        return "Verdict: " + where + " separates the shapes with a gap of " + ShownGap(t) +
                ", so they do not collide. The test stopped after " + std::to_string(r.axesTested) + " of " +
                std::to_string(r.axisCount) + " axes.";
     }
@@ -192,13 +206,19 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
                                                  "impact. "
                                                : "";
     const std::string way = t.pushSign > 0 ? "along" : "against";
-    text += "Verdict: all " + std::to_string(r.axisCount) + " axes overlap, so the shapes collide. The smallest " +
-            "overlap is " + FormatNumber(r.depth) + ", on " + where + ": moving " + nameB + " " +
-            FormatNumber(r.depth) + " " + way +
-            (t.faces[0].kind == AxisKind::FaceNormal ? " that normal" : " that axis") + ", direction " +
-            Pair(r.normal.x, r.normal.y) + ", separates them. That is the minimum translation vector (MTV).";
+    const std::string depth = ShownOverlap(t);
+    text += "Verdict: " +
+            (r.axisCount == 1 ? std::string("the only axis overlaps")
+                              : "all " + std::to_string(r.axisCount) + " axes overlap") +
+            ", so the shapes collide. The smallest overlap is " + depth + ", on " + where + ": moving " + nameB + " " +
+            depth + " " + way + (t.faces[0].kind == AxisKind::FaceNormal ? " that normal" : " that axis") +
+            ", direction " + Pair(r.normal.x, r.normal.y) +
+            ", separates them. That is the minimum translation vector (MTV).";
     const int contacts = study.manifold.contactCount;
-    text += contacts == 1 ? " 1 contact point." : " " + std::to_string(contacts) + " contact points.";
+    text += contacts == 1 ? " 1 contact point" : " " + std::to_string(contacts) + " contact points";
+    text += study.trace.hasClip ? ", clipped from the incident edge against the reference face, each halfway between "
+                                  "the two surfaces."
+                                : ", halfway between the two surfaces.";
     return text;
 }
 
@@ -212,7 +232,10 @@ std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, in
                        Interval(t.minB, t.maxB) + "; ";
     if (t.never)
     {
-        text += nameB + "'s interval does not move along this axis and never overlaps " + nameA + "'s.";
+        const bool touching = std::max(t.minB - t.maxA, t.minA - t.maxB) == 0.0;
+        text += nameB + "'s interval does not move along this axis and " +
+                (touching ? "only touches " + nameA + "'s: they never overlap by more than 0."
+                          : "never overlaps " + nameA + "'s.");
     }
     else if (t.rate == 0.0)
     {
@@ -251,9 +274,16 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
     const TextbookSweepResult& r = study.textbookSweepResult;
     if (study.textbookSweep.exit == SweepExit::RoundedOutline)
     {
-        const std::string fixed = study.textbookSweep.axes.empty()
-                                      ? "Two circles have no fixed axis: the line of centres turns as they move, so "
-                                      : "No fixed axis rules out a hit, but a circle's own axis turns as it moves, so ";
+        // A circle's own axis (from the nearest vertex, or the other centre, to its centre) turns as it moves, so
+        // fixed axes cannot time a hit on a corner: the exact test moves the centre against the other shape grown
+        // by the radius.
+        const std::string fixed =
+            study.textbookSweep.axes.empty()
+                ? "Two circles have no fixed axis: the line of centres turns as they move. So the test follows "
+                  "the centre of one along its path against the other grown by its radius: "
+                : "No fixed axis rules out a hit. The circle's own axis, from the polygon's nearest vertex to its "
+                  "centre, turns as it moves, so the test follows the centre along its path against the polygon "
+                  "grown by the radius (faces pushed out, corners rounded): ";
         if (r.status == SweepStatus::Hit)
         {
             std::string where;
@@ -264,15 +294,15 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
             }
             else if (r.axis >= 0)
             {
-                where = " on a face, axis " + std::to_string(r.axis + 1) + ", whose entry it is";
+                where = ", when it reaches a pushed-out face: axis " + std::to_string(r.axis + 1) + "'s entry time";
             }
-            return "Verdict: " + fixed +
-                   "the centre's path is cast against the rounded outline: first contact at t = " +
-                   FormatNumber(r.toi) + where + ", normal " + Pair(r.normal.x, r.normal.y) + ".";
+            return "Verdict: " + fixed + "first contact at t = " + FormatNumber(r.toi) + where + ", normal " +
+                   Pair(r.normal.x, r.normal.y) + " (from " + NameOf(scene, study, 0) + " to " +
+                   NameOf(scene, study, 1) + ").";
         }
-        return "Verdict: " + fixed + "the centre's path is cast against the rounded outline: " +
+        return "Verdict: " + fixed +
                (r.status == SweepStatus::Overlapping ? "the shapes already overlap at t = 0."
-                                                     : "it misses, so there is no hit during the step.");
+                                                     : "the path misses it, so there is no hit during the step.");
     }
     if (r.status == SweepStatus::Hit)
     {
@@ -294,9 +324,9 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
 std::string FaceTestStep(const Scene& scene, const PairStudy& study, int step)
 {
     const AxisTest& test = study.trace.axes[static_cast<size_t>(step)];
-    std::string text =
-        "Face test " + std::to_string(step + 1) + " of " + std::to_string(CandidateCount(scene, study)) + ": ";
     const bool face = test.axis.kind == AxisKind::FaceNormal;
+    std::string text = (face ? "Face test " : "Test ") + std::to_string(step + 1) + " of " +
+                       std::to_string(CandidateCount(scene, study)) + ": ";
     const int owner = face ? test.axis.shape : 0;
     const std::string& own = NameOf(scene, study, owner);
     const std::string& other = NameOf(scene, study, 1 - owner);
@@ -326,7 +356,8 @@ std::string FaceTestStep(const Scene& scene, const PairStudy& study, int step)
     }
     if (test.pruned)
     {
-        text += " Pruned: a single point of the other shape showed this face cannot separate or be the shallowest.";
+        text += " Decided early: one vertex of the other shape already lies deeper behind this face than the best face "
+                "so far, so it can neither separate the shapes nor give the MTV (its depth is shown for reference).";
     }
     if (step == 0)
     {
@@ -364,7 +395,8 @@ std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
     }
     const bool face = m.axis.kind == AxisKind::FaceNormal;
     const std::string way = face && m.axis.shape == 1 ? "against" : "along";
-    text += "Verdict: no face separates, so the shapes collide. The shallowest is " +
+    text += "Verdict: no face test separates, so the shapes collide. The face the other shape reaches least far "
+            "behind is " +
             DescribeAxis(scene, study, m.axis) + ": moving " + nameB + " by " + FormatNumber(m.depth) + " " + way +
             " it, direction " + Pair(m.normal.x, m.normal.y) + ", separates them (the MTV).";
     text += m.contactCount == 1 ? " 1 contact point." : " " + std::to_string(m.contactCount) + " contact points.";
@@ -374,8 +406,10 @@ std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
 std::string FaceSweepStep(const Scene& scene, const PairStudy& study, int step)
 {
     const SweepAxis& axis = study.sweepTrace.axes[static_cast<size_t>(step)];
-    std::string text = "Face test " + std::to_string(step + 1) + ": " + DescribeAxis(scene, study, axis.axis) +
-                       ". At t = 0 the other shape is " +
+    const bool face = axis.axis.kind == AxisKind::FaceNormal;
+    const std::string other = face ? NameOf(scene, study, 1 - axis.axis.shape) : std::string("the other shape");
+    std::string text = (face ? "Face test " : "Test ") + std::to_string(step + 1) + ": " +
+                       DescribeAxis(scene, study, axis.axis) + ". At t = 0 " + other + " is " +
                        (axis.separation > 0.0 ? FormatNumber(axis.separation) + " beyond this face"
                                               : FormatNumber(-axis.separation) + " behind this face");
     if (axis.rate == 0.0)
@@ -443,9 +477,16 @@ std::string FormatNumber(double value)
     {
         return "0";
     }
-    if (magnitude >= 0.01 && magnitude < 1e5)
+    if (magnitude >= 0.01 && magnitude < 1e9)
     {
-        std::snprintf(buffer, sizeof(buffer), "%.2f", value);
+        // Three decimals, the third dropped when it is 0: 0.176, -0.125, 0.45, 1.30.
+        std::snprintf(buffer, sizeof(buffer), "%.3f", value);
+        std::string fixed = buffer;
+        if (fixed.back() == '0')
+        {
+            fixed.pop_back();
+        }
+        return fixed == "-0.00" ? "0.00" : fixed;
     }
     else
     {
@@ -477,6 +518,16 @@ std::string Shortest(T value)
 }
 
 } // namespace
+
+std::string ShownOverlap(const TextbookAxis& t)
+{
+    return t.pushSign > 0 ? ShownDifference(t.maxA, t.minB) : ShownDifference(t.maxB, t.minA);
+}
+
+std::string ShownGap(const TextbookAxis& t)
+{
+    return t.minB - t.maxA > 0.0 ? ShownDifference(t.minB, t.maxA) : ShownDifference(t.minA, t.maxB);
+}
 
 std::string ShortestDecimal(double value)
 {
@@ -546,8 +597,13 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
         }
         if (study.Textbook())
         {
-            return study.textbookResult.overlap ? "verdict: collide, MTV " + FormatNumber(study.textbookResult.depth)
-                                                : "verdict: apart, gap " + FormatNumber(study.textbookResult.gap);
+            const TextbookResult& r = study.textbookResult;
+            if (r.axis < 0)
+            {
+                return "verdict";
+            }
+            const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(r.axis)];
+            return r.overlap ? "verdict: collide, MTV " + ShownOverlap(t) : "verdict: apart, gap " + ShownGap(t);
         }
         return study.manifold.overlap ? "verdict: collide, MTV " + FormatNumber(study.manifold.depth)
                                       : "verdict: apart, gap " + FormatNumber(study.manifold.gap);
@@ -587,8 +643,7 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
             return s.never ? title + ", never overlap" : title + times(s.entry, s.exit);
         }
         const TextbookAxis& t = study.textbook.axes[k];
-        return t.separating ? title + ", gap " + FormatNumber(t.gap) + " (separates)"
-                            : title + ", overlap " + FormatNumber(t.overlap);
+        return t.separating ? title + ", gap " + ShownGap(t) + " (separates)" : title + ", overlap " + ShownOverlap(t);
     }
     if (study.sweep)
     {

@@ -141,6 +141,13 @@ void LabelPlacer::Reserve(const ScreenRect& rect)
     taken_.push_back(rect);
 }
 
+namespace
+{
+
+constexpr float kLabelSpacing = 3.0f; // pixels kept free beside a label
+
+} // namespace
+
 void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
                         float distance, bool optional)
 {
@@ -149,32 +156,39 @@ void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
     const double start = length > 0.0f ? std::atan2(dy, dx) : 0.0;
     ScreenRect chosen{};
     bool found = false;
-    for (int i = 0; i < 24 && !found; ++i)
+    // Labels side by side read as one ("gap 0.60" and "0" as "gap 0.600"): a space's width is kept between them
+    // where the room allows, and given up before a label has to cover another.
+    for (int pass = 0; pass < 2 && !found; ++pass)
     {
-        const float reach = distance + static_cast<float>(i / 8) * 9.0f;
-        // Preferred direction first, then alternately either side of it.
-        const int k = (i % 8 + 1) / 2 * (i % 2 == 1 ? 1 : -1);
-        const double angle = start + k * 0.78539816339744831;
-        const float ux = static_cast<float>(std::cos(angle));
-        const float uy = static_cast<float>(std::sin(angle));
-        // The rectangle's point nearest the anchor sits `distance` away along the direction.
-        const float cx = anchor.x + ux * (reach + 0.5f * size.x * std::fabs(ux));
-        const float cy = anchor.y + uy * (reach + 0.5f * size.y * std::fabs(uy));
-        ScreenRect rect{std::round(cx - 0.5f * size.x), std::round(cy - 0.5f * size.y), 0.0f, 0.0f};
-        rect.maxX = rect.minX + size.x;
-        rect.maxY = rect.minY + size.y;
-        if (i == 0)
+        const float spacing = pass == 0 ? kLabelSpacing : 0.0f;
+        for (int i = 0; i < 24 && !found; ++i)
         {
-            chosen = rect;
-        }
-        const bool inside =
-            rect.minX >= 2.0f && rect.minY >= 2.0f && rect.maxX <= width_ - 2.0f && rect.maxY <= height_ - 2.0f;
-        const bool free =
-            std::none_of(taken_.begin(), taken_.end(), [&](const ScreenRect& other) { return other.Overlaps(rect); });
-        if (inside && free)
-        {
-            chosen = rect;
-            found = true;
+            const float reach = distance + static_cast<float>(i / 8) * 9.0f;
+            // Preferred direction first, then alternately either side of it.
+            const int k = (i % 8 + 1) / 2 * (i % 2 == 1 ? 1 : -1);
+            const double angle = start + k * 0.78539816339744831;
+            const float ux = static_cast<float>(std::cos(angle));
+            const float uy = static_cast<float>(std::sin(angle));
+            // The rectangle's point nearest the anchor sits `distance` away along the direction.
+            const float cx = anchor.x + ux * (reach + 0.5f * size.x * std::fabs(ux));
+            const float cy = anchor.y + uy * (reach + 0.5f * size.y * std::fabs(uy));
+            ScreenRect rect{std::round(cx - 0.5f * size.x), std::round(cy - 0.5f * size.y), 0.0f, 0.0f};
+            rect.maxX = rect.minX + size.x;
+            rect.maxY = rect.minY + size.y;
+            if (i == 0 && pass == 0)
+            {
+                chosen = rect;
+            }
+            const bool inside =
+                rect.minX >= 2.0f && rect.minY >= 2.0f && rect.maxX <= width_ - 2.0f && rect.maxY <= height_ - 2.0f;
+            const ScreenRect spaced{rect.minX - spacing, rect.minY, rect.maxX + spacing, rect.maxY};
+            const bool free = std::none_of(taken_.begin(), taken_.end(),
+                                           [&](const ScreenRect& other) { return other.Overlaps(spaced); });
+            if (inside && free)
+            {
+                chosen = rect;
+                found = true;
+            }
         }
     }
     if (!found && optional)

@@ -21,7 +21,7 @@ constexpr float kLineHeight = 19.0f;      // caption line spacing
 constexpr float kLabelLineHeight = 16.0f; // caption line spacing at label size (small figures)
 constexpr float kPad = 12.0f;             // padding inside bands
 constexpr float kStaticPanel = 108.0f;    // number-line panel height, static test
-constexpr float kSweepPanel = 166.0f;     // number line and time bar, swept test
+constexpr float kSweepPanel = 184.0f;     // number line and time bar, swept test
 constexpr float kAxisGap = 30.0f;         // pixels between the pair's disc and the axis line
 constexpr int kFitAxes = 128;             // at most about this many axis lines are framed by FitFigure
 constexpr float kFitMargin = 22.0f;       // pixels between the axis line and the scene area's edge
@@ -314,15 +314,18 @@ ShownAxis ShowAxis(const PairStudy& study, int index)
 
 // The label of the band between the bars: a two-sided overlap or gap, or how far the other shape lies behind or
 // beyond a face.
+// The amount is computed from the interval ends as the figure prints them, so that it agrees with them and with the
+// caption.
 std::string BandLabel(const ShownAxis& axis)
 {
+    const bool gap = axis.separation > 0.0;
+    const std::string amount =
+        gap ? ShownDifference(axis.otherMin, axis.leadMax) : ShownDifference(axis.leadMax, axis.otherMin);
     if (axis.textbook)
     {
-        return axis.separation > 0.0 ? "gap " + FormatNumber(axis.separation)
-                                     : "overlap " + FormatNumber(-axis.separation);
+        return (gap ? "gap " : "overlap ") + amount;
     }
-    return axis.separation > 0.0 ? FormatNumber(axis.separation) + " beyond"
-                                 : FormatNumber(-axis.separation) + " behind";
+    return amount + (gap ? " beyond" : " behind");
 }
 
 // The axis the verdict step shows: the separating axis, the axis of the smallest push, or the latest entry.
@@ -428,6 +431,10 @@ class Painter
             Labels();
         }
         labels_.Flush(WithAlpha(palette::kBackground, 0.72f));
+        if (hasMtvArrow_)
+        {
+            MtvArrow();
+        }
         if (layout_.panelTop < static_cast<float>(view_.height))
         {
             Panel();
@@ -822,9 +829,21 @@ class Painter
         {
             to = {from.x + 20.0f * static_cast<float>(m.normal.x), from.y - 20.0f * static_cast<float>(m.normal.y)};
         }
-        Arrow(canvas_, from, to, palette::kResult, 3.0f, 12.0f);
-        labels_.Place(to, "MTV " + FormatNumber(m.depth), TextStyle::Heading, palette::kResult,
-                      static_cast<float>(m.normal.x), static_cast<float>(-m.normal.y));
+        // The arrow is drawn over the labels (MtvArrow), so that B's name never hides its shaft.
+        mtvFrom_ = from;
+        mtvTo_ = to;
+        hasMtvArrow_ = true;
+        // The length as the number line prints it: the deciding axis's overlap from its shown ends.
+        const std::string depth = hasAxis_ && axis_.separation <= 0.0 ? ShownDifference(axis_.leadMax, axis_.otherMin)
+                                                                      : FormatNumber(m.depth);
+        labels_.Place(to, "MTV " + depth, TextStyle::Heading, palette::kResult, static_cast<float>(m.normal.x),
+                      static_cast<float>(-m.normal.y));
+    }
+
+    void MtvArrow()
+    {
+        canvas_.BeginGroup("mtv");
+        Arrow(canvas_, mtvFrom_, mtvTo_, palette::kResult, 3.0f, 12.0f);
     }
 
     void Contacts()
@@ -1035,7 +1054,7 @@ class Painter
         // margin), even for a time at or before 0.
         const float labelsFrom = 24.0f + canvas_.MeasureText("time", TextStyle::Heading).x + 8.0f;
         const float left = std::max(barLeft, labelsFrom + 16.0f);
-        auto x = [&](double t) { return static_cast<float>(left + std::clamp(t, -0.04, 1.04) * (right - left)); };
+        auto x = [&](double t) { return static_cast<float>(left + std::clamp(t, -0.02, 1.02) * (right - left)); };
         canvas_.Segment({x(0.0), y}, {x(1.0), y}, palette::kMuted, 2.0f);
         for (double t : {0.0, 0.5, 1.0})
         {
@@ -1061,7 +1080,8 @@ class Painter
             const std::string text = "no common time: exit " + FormatNumber(axis_.windowExit) + " < entry " +
                                      FormatNumber(axis_.windowEntry);
             const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
-            canvas_.Text({std::clamp(0.5f * (a + b) - 0.5f * size.x, left, right - size.x), y + 22.0f}, text,
+            // A row of its own, under the entry and exit labels.
+            canvas_.Text({std::clamp(0.5f * (a + b) - 0.5f * size.x, left, right - size.x), y + 40.0f}, text,
                          TextStyle::Label, 0xA04000FFu);
         }
         auto marker = [&](double t, const std::string& name, bool up) {
@@ -1075,7 +1095,7 @@ class Painter
                              palette::kInk);
                 return;
             }
-            const bool inside = t >= -0.04 && t <= 1.04;
+            const bool inside = t >= -0.02 && t <= 1.02;
             const float px = x(t);
             const float dir = up ? -1.0f : 1.0f;
             const ScreenPoint tri[3] = {{px, y}, {px - 5.0f, y + dir * 9.0f}, {px + 5.0f, y + dir * 9.0f}};
@@ -1100,9 +1120,10 @@ class Painter
         {
             marker(axis_.exit, "exit", false);
         }
-        if (verdict_ && study_.sweepResult.status == SweepStatus::Hit)
+        const SweepStatus status = study_.Textbook() ? study_.textbookSweepResult.status : study_.sweepResult.status;
+        if (verdict_ && status == SweepStatus::Hit)
         {
-            const float px = x(study_.sweepResult.toi);
+            const float px = x(study_.Textbook() ? study_.textbookSweepResult.toi : study_.sweepResult.toi);
             canvas_.Segment({px, y - 12.0f}, {px, y + 12.0f}, palette::kResult, 3.0f);
         }
     }
@@ -1231,6 +1252,9 @@ class Painter
     int axisIndex_ = -1;
     bool hasAxis_ = false;
     ShownAxis axis_{};
+    bool hasMtvArrow_ = false;
+    ScreenPoint mtvFrom_{};
+    ScreenPoint mtvTo_{};
 };
 
 } // namespace

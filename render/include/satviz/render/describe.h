@@ -9,8 +9,19 @@
 namespace satviz
 {
 
-/// A number as figures show it: two decimals for ordinary magnitudes, three significant digits otherwise.
+/// A number as figures show it: three decimals (two when the third is 0) for magnitudes from 0.01 to 1e9, three
+/// significant digits otherwise, exponents as written (1.41e6), never -0.
 std::string FormatNumber(double value);
+
+/// hi - lo computed from the two values as FormatNumber shows them, so that a reader subtracting the printed ends
+/// gets the printed difference (the true difference when the values are too small or large for that).
+std::string ShownDifference(double hi, double lo);
+
+/// A textbook axis's overlap as the figures print it: the shorter push, from the shown interval ends.
+std::string ShownOverlap(const TextbookAxis& axis);
+
+/// A textbook axis's gap as the figures print it, from the shown interval ends.
+std::string ShownGap(const TextbookAxis& axis);
 
 /// The shortest decimal that reads back as the same double (0.4825, not 0.48249999999999998): for the panels that
 /// show a number in full.
