@@ -17,12 +17,30 @@ set(SATVIZ_FIGURE_SCENES
   separated_triangle
   sliding_past
   two_circles
+  l02_box_and_triangle
+  l04_wrong_way
+  l05_naive_push
+  l06_plank_over_ledge
+  l06_tilted_plank
+  l09_landing
+  l09_stuck
+  l10_ray_miss
+  l10_round_bullet
+  l11_decimal_touch
+  l11_float_seen
+  l12_apart
 )
 set(SATVIZ_STEP_SCENES
   overlapping_boxes
   circle_and_polygon
   circle_corner
   box_above_floor
+  l01_triangle_and_ball
+  l03_corner_gap
+  l05_box_in_box
+  l07_near_miss
+  l08_throw
+  l10_ray_hit
 )
 set(SATVIZ_FACE_STEP_SCENES
   overlapping_boxes

@@ -14,6 +14,10 @@ namespace satviz
 namespace
 {
 
+// Interval ends up to this magnitude are subtracted as shown; beyond it, their rounding dominates (see
+// ShownDifference).
+constexpr double kShownEnds = 1e5;
+
 const std::string& NameOf(const Scene& scene, const PairStudy& study, int shape)
 {
     return scene.bodies[static_cast<size_t>(shape == 0 ? study.bodyA : study.bodyB)].name;
@@ -59,13 +63,15 @@ double Shown(double value)
 
 } // namespace
 
-std::string ShownDifference(double hi, double lo)
+std::string ShownDifference(double hi, double lo, double exact)
 {
     const double a = Shown(hi);
     const double b = Shown(lo);
-    auto fixed = [](double v) { return v == 0.0 || (std::fabs(v) >= 0.01 && std::fabs(v) < 1e9); };
+    // Far from the origin the ends carry the rounding of their magnitude (float: steps of 0.0625 at 1e6), and their
+    // difference is no longer the algorithm's: there the value it computed, in A's frame, is shown.
+    auto fixed = [](double v) { return v == 0.0 || (std::fabs(v) >= 0.01 && std::fabs(v) < kShownEnds); };
     const bool sameBand = std::isfinite(a) && std::isfinite(b) && fixed(hi) && fixed(lo) && std::fabs(a - b) >= 0.01;
-    return FormatNumber(sameBand ? a - b : hi - lo);
+    return FormatNumber(sameBand ? a - b : (std::isnan(exact) ? hi - lo : exact));
 }
 
 namespace
@@ -73,7 +79,7 @@ namespace
 
 std::string Difference(double hi, double lo)
 {
-    return ShownDifference(hi, lo);
+    return ShownDifference(hi, lo, hi - lo);
 }
 
 std::string Time(double t)
@@ -312,13 +318,29 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
                std::to_string(r.axis + 1) + ") until " +
                (std::isinf(exit.exit) ? std::string("the end") : Time(exit.exit)) +
                " (the earliest exit): first contact at t = " + FormatNumber(r.toi) + ", normal " +
-               Pair(r.normal.x, r.normal.y) + ".";
+               Pair(r.normal.x, r.normal.y) + " (from " + NameOf(scene, study, 0) + " to " + NameOf(scene, study, 1) +
+               ").";
     }
     if (r.status == SweepStatus::Overlapping)
     {
         return "Verdict: every axis overlaps already at t = 0: the shapes start interpenetrating.";
     }
-    return "Verdict: no hit during the step: " + SweepExitReason(study.textbookSweep.exit) + ".";
+    const TextbookSweepTrace& trace = study.textbookSweep;
+    if (trace.exit == SweepExit::EntryAfterExit && !trace.axes.empty())
+    {
+        // Which axes: the one that parts, and the one that meets too late.
+        const TextbookSweepAxis& last = trace.axes.back();
+        if (last.latestEntry >= 0 && last.earliestExit >= 0)
+        {
+            const TextbookSweepAxis& entry = trace.axes[static_cast<size_t>(last.latestEntry)];
+            const TextbookSweepAxis& exit = trace.axes[static_cast<size_t>(last.earliestExit)];
+            return "Verdict: no hit during the step: on axis " + std::to_string(last.earliestExit + 1) +
+                   " the intervals part at " + Time(exit.exit) + ", before those of axis " +
+                   std::to_string(last.latestEntry + 1) + " meet at " + Time(entry.entry) +
+                   ", so the shapes never overlap on all axes at once.";
+        }
+    }
+    return "Verdict: no hit during the step: " + SweepExitReason(trace.exit) + ".";
 }
 
 std::string FaceTestStep(const Scene& scene, const PairStudy& study, int step)
@@ -521,12 +543,12 @@ std::string Shortest(T value)
 
 std::string ShownOverlap(const TextbookAxis& t)
 {
-    return t.pushSign > 0 ? ShownDifference(t.maxA, t.minB) : ShownDifference(t.maxB, t.minA);
+    return t.pushSign > 0 ? ShownDifference(t.maxA, t.minB, t.overlap) : ShownDifference(t.maxB, t.minA, t.overlap);
 }
 
 std::string ShownGap(const TextbookAxis& t)
 {
-    return t.minB - t.maxA > 0.0 ? ShownDifference(t.minB, t.maxA) : ShownDifference(t.minA, t.maxB);
+    return t.minB - t.maxA > 0.0 ? ShownDifference(t.minB, t.maxA, t.gap) : ShownDifference(t.minA, t.maxB, t.gap);
 }
 
 std::string ShortestDecimal(double value)

@@ -319,8 +319,8 @@ ShownAxis ShowAxis(const PairStudy& study, int index)
 std::string BandLabel(const ShownAxis& axis)
 {
     const bool gap = axis.separation > 0.0;
-    const std::string amount =
-        gap ? ShownDifference(axis.otherMin, axis.leadMax) : ShownDifference(axis.leadMax, axis.otherMin);
+    const std::string amount = gap ? ShownDifference(axis.otherMin, axis.leadMax, axis.separation)
+                                   : ShownDifference(axis.leadMax, axis.otherMin, -axis.separation);
     if (axis.textbook)
     {
         return (gap ? "gap " : "overlap ") + amount;
@@ -834,8 +834,9 @@ class Painter
         mtvTo_ = to;
         hasMtvArrow_ = true;
         // The length as the number line prints it: the deciding axis's overlap from its shown ends.
-        const std::string depth = hasAxis_ && axis_.separation <= 0.0 ? ShownDifference(axis_.leadMax, axis_.otherMin)
-                                                                      : FormatNumber(m.depth);
+        const std::string depth = hasAxis_ && axis_.separation <= 0.0
+                                      ? ShownDifference(axis_.leadMax, axis_.otherMin, -axis_.separation)
+                                      : FormatNumber(m.depth);
         labels_.Place(to, "MTV " + depth, TextStyle::Heading, palette::kResult, static_cast<float>(m.normal.x),
                       static_cast<float>(-m.normal.y));
     }

@@ -15,6 +15,8 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <thread>
 #include <unistd.h>
@@ -601,4 +603,35 @@ TEST_CASE("A large pair is tested on a worker thread while frames go on, and the
     REQUIRE(h.AwaitStudy());
     CHECK(h.app->setup.Ok());
     CHECK(h.app->Studied().bodies[1].position == before);
+}
+
+TEST_CASE("Every scene a lesson names opens in the app, with a figure and its steps", "[app][lessons]")
+{
+    const fs::path tutorials = fs::path(SATVIZ_SOURCE_DIR) / "tutorials";
+    static const std::regex named(R"(scenes/([A-Za-z0-9_]+)\.json)");
+    std::set<std::string> scenes;
+    for (const auto& entry : fs::directory_iterator(tutorials))
+    {
+        if (entry.path().extension() != ".md")
+        {
+            continue;
+        }
+        std::ifstream in(entry.path());
+        std::stringstream text;
+        text << in.rdbuf();
+        const std::string lesson = text.str();
+        for (std::sregex_iterator it(lesson.begin(), lesson.end(), named), end; it != end; ++it)
+        {
+            scenes.insert((*it)[1].str());
+        }
+    }
+    REQUIRE(scenes.size() >= 10);
+    for (const std::string& scene : scenes)
+    {
+        INFO(scene);
+        Harness h((tutorials / "scenes" / (scene + ".json")).string());
+        REQUIRE(h.app->setup.Ok());
+        CHECK(h.app->setup.study.StepCount() >= 1);
+        CHECK(!h.app->statusIsError);
+    }
 }

@@ -14,8 +14,9 @@ namespace satviz
 std::string FormatNumber(double value);
 
 /// hi - lo computed from the two values as FormatNumber shows them, so that a reader subtracting the printed ends
-/// gets the printed difference (the true difference when the values are too small or large for that).
-std::string ShownDifference(double hi, double lo);
+/// gets the printed difference. Where the ends are too small or too large for that (beyond 1e5, their own rounding
+/// dominates), `exact` is shown instead: the value the algorithm computed (NaN: hi - lo).
+std::string ShownDifference(double hi, double lo, double exact);
 
 /// A textbook axis's overlap as the figures print it: the shorter push, from the shown interval ends.
 std::string ShownOverlap(const TextbookAxis& axis);
