@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <thread>
 
 namespace satviz
@@ -104,6 +105,14 @@ void HelpMarker(const char* text)
 App::App(const FigureFonts& fonts, AppOptions options) : fonts_(fonts), options_(std::move(options))
 {
     LoadRecent();
+    if (options_.lessonsDir.empty() && !options_.scenesDir.empty())
+    {
+        options_.lessonsDir = std::filesystem::path(options_.scenesDir).parent_path().string();
+    }
+    if (!options_.lessonsDir.empty())
+    {
+        lessons_ = FindLessons(options_.lessonsDir);
+    }
 }
 
 bool App::Open(const std::string& path)
@@ -564,6 +573,162 @@ void App::Frame()
     {
         HelpOverlay();
     }
+    if (showLesson)
+    {
+        LessonWindow();
+    }
+}
+
+void App::LessonsMenu()
+{
+    if (!ImGui::BeginMenu("Lessons", !lessons_.empty()))
+    {
+        return;
+    }
+    for (size_t i = 0; i < lessons_.size(); ++i)
+    {
+        if (ImGui::MenuItem(lessons_[i].title.c_str(), nullptr, static_cast<int>(i) == lesson_ && showLesson))
+        {
+            OpenLesson(static_cast<int>(i));
+        }
+    }
+    ImGui::EndMenu();
+}
+
+bool App::OpenLesson(int index)
+{
+    if (index < 0 || index >= static_cast<int>(lessons_.size()))
+    {
+        return false;
+    }
+    const Lesson& lesson = lessons_[static_cast<size_t>(index)];
+    std::vector<LessonBlock> blocks;
+    std::string error;
+    if (!LoadLesson(lesson.file, blocks, error))
+    {
+        SetStatus(error, true);
+        return false;
+    }
+    lesson_ = index;
+    lessonBlocks_ = std::move(blocks);
+    showLesson = true;
+    lessonScrollTop_ = true;
+    if (!lesson.scenes.empty() && lesson.scenes.front() != file)
+    {
+        RequestOpen(lesson.scenes.front());
+    }
+    return true;
+}
+
+// The lesson beside the canvas: its text from the Markdown (md4c), buttons for its scenes, previous and next.
+void App::LessonWindow()
+{
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const float top = ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x, viewport->Pos.y + top));
+    ImGui::SetNextWindowSize(ImVec2(kLessonWidth, viewport->Size.y - 2.0f * top));
+    const Lesson& lesson = lessons_[static_cast<size_t>(lesson_)];
+    if (!ImGui::Begin("Lesson###lesson", &showLesson,
+                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                          ImGuiWindowFlags_NoSavedSettings))
+    {
+        ImGui::End();
+        return;
+    }
+    int go = lesson_;
+    ImGui::BeginDisabled(lesson_ <= 0);
+    if (ImGui::Button("< Previous"))
+    {
+        go = lesson_ - 1;
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(lesson_ + 1 >= static_cast<int>(lessons_.size()));
+    if (ImGui::Button("Next >"))
+    {
+        go = lesson_ + 1;
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::TextDisabled("lesson %d of %d", lesson_ + 1, static_cast<int>(lessons_.size()));
+    if (!lesson.scenes.empty())
+    {
+        ImGui::TextUnformatted("Scenes:");
+        for (const std::string& scene : lesson.scenes)
+        {
+            ImGui::SameLine();
+            const std::string name = std::filesystem::path(scene).stem().string();
+            if (ImGui::SmallButton(name.c_str()))
+            {
+                RequestOpen(scene);
+            }
+        }
+    }
+    ImGui::Separator();
+    ImGui::BeginChild("##lesson-text");
+    if (lessonScrollTop_)
+    {
+        ImGui::SetScrollY(0.0f);
+        lessonScrollTop_ = false;
+    }
+    for (const LessonBlock& block : lessonBlocks_)
+    {
+        switch (block.kind)
+        {
+        case LessonBlock::Kind::Heading:
+            ImGui::Spacing();
+            ImGui::PushFont(fonts_.heading);
+            ImGui::TextWrapped("%s", block.text.c_str());
+            ImGui::PopFont();
+            break;
+        case LessonBlock::Kind::Paragraph:
+            ImGui::TextWrapped("%s", block.text.c_str());
+            ImGui::Spacing();
+            break;
+        case LessonBlock::Kind::Item:
+            ImGui::Indent(static_cast<float>(block.level - 1) * 14.0f);
+            ImGui::Bullet();
+            ImGui::TextWrapped("%s", block.text.c_str());
+            ImGui::Unindent(static_cast<float>(block.level - 1) * 14.0f);
+            break;
+        case LessonBlock::Kind::Code:
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            ImGui::TextUnformatted(block.text.c_str());
+            ImGui::PopStyleColor();
+            ImGui::Spacing();
+            break;
+        case LessonBlock::Kind::Figure:
+        {
+            // The figure is the canvas: a figure of a scene opens that scene there.
+            ImGui::TextDisabled("Figure: %s", block.text.c_str());
+            static const std::regex step("-step[0-9]+$");
+            const std::string stem =
+                std::regex_replace(std::filesystem::path(block.target).stem().string(), step, std::string());
+            const std::string scene =
+                (std::filesystem::path(options_.lessonsDir) / "scenes" / (stem + ".json")).string();
+            if (std::filesystem::exists(scene))
+            {
+                ImGui::PushID(&block);
+                if (ImGui::SmallButton(("show " + stem).c_str()))
+                {
+                    RequestOpen(scene);
+                }
+                ImGui::PopID();
+            }
+            ImGui::Spacing();
+            break;
+        }
+        case LessonBlock::Kind::Rule:
+            ImGui::Separator();
+            break;
+        }
+    }
+    ImGui::EndChild();
+    ImGui::End();
+    if (go != lesson_)
+    {
+        OpenLesson(go);
+    }
 }
 
 void App::Shortcuts()
@@ -782,6 +947,7 @@ void App::MenuBar()
     if (ImGui::BeginMenu("Help"))
     {
         ImGui::MenuItem("Controls and conventions", "F1", &showHelp);
+        LessonsMenu();
         ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();

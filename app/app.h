@@ -4,6 +4,8 @@
 // ImGui's input fields without a display.
 #pragma once
 
+#include "lessons.h"
+
 #include <satviz/render/figure.h>
 #include <satviz/render/imgui_canvas.h>
 #include <satviz/scene.h>
@@ -15,6 +17,9 @@
 
 namespace satviz
 {
+
+/// Width of the lesson column on the left of the canvas, in pixels, while a lesson is open.
+constexpr float kLessonWidth = 440.0f;
 
 /// Key codes of the keys the app reads beyond ImGui's own key map (letters and function keys): the window system
 /// fills them in (GLFW key codes in main.cpp), tests pick their own.
@@ -32,6 +37,7 @@ struct AppKeys
 struct AppOptions
 {
     std::string scenesDir;    ///< folder of the bundled scenes (the File menu lists them)
+    std::string lessonsDir;   ///< folder of the lessons (Help > Lessons); empty: the scenes folder's parent
     std::string recentFile;   ///< where the recent files are remembered; empty: not remembered
     bool updateRecent = true; ///< files opened or saved join the recent list; false: it is shown but left as it is
     std::string exportPath;   ///< where ctrl+e writes the PNG; empty: next to the scene, SCENE-stepN.png
@@ -77,6 +83,15 @@ class App
     Scene SceneForSaving() const;
     /// The figure of the current view, exactly what satviz-render draws from SceneForSaving().
     FigureSetup ExportFigure() const;
+    /// Opens lesson `index` of Lessons(): its text in the lesson window and its first scene (asking first when the
+    /// scene has unsaved changes). False for an index out of range or a lesson that cannot be read.
+    bool OpenLesson(int index);
+    /// The lessons found in the lessons folder, in order.
+    const std::vector<Lesson>& Lessons() const { return lessons_; }
+    /// The lesson shown, -1 for none.
+    int CurrentLesson() const { return lesson_; }
+    /// The blocks of the lesson shown.
+    const std::vector<LessonBlock>& LessonBlocks() const { return lessonBlocks_; }
     /// Shows a one-line message in the status bar (an export result, an error).
     void SetStatus(const std::string& message, bool error);
 
@@ -99,6 +114,7 @@ class App
     int canvasWidth = 800;             ///< canvas size (pixels)
     int canvasHeight = 600;            ///< canvas size (pixels)
     bool showHelp = false;             ///< the help overlay is open
+    bool showLesson = false;           ///< the lesson window is open
     std::vector<std::string> recent;   ///< recently opened files, newest first
     std::string status;                ///< the status line
     bool statusIsError = false;        ///< the status line reports an error
@@ -145,6 +161,8 @@ class App
     void Handles(ImDrawList* list, ImVec2 origin);
     void Popups();
     void HelpOverlay();
+    void LessonWindow();
+    void LessonsMenu();
     void Shortcuts();
     void StatusBar();
     void Save(const std::string& path);
@@ -161,6 +179,10 @@ class App
     bool rerun_ = false;            // the scene changed while it ran: test again when it ends
     bool canvasSized_ = false;      // the canvas has had its first frame (and so its size)
     FigureFonts fonts_;
+    std::vector<Lesson> lessons_;
+    int lesson_ = -1;
+    std::vector<LessonBlock> lessonBlocks_;
+    bool lessonScrollTop_ = false;
     AppOptions options_;
     std::vector<Scene> undo_;
     std::vector<Scene> redo_;

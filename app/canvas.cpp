@@ -99,8 +99,11 @@ void App::CanvasWindow()
 {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     const float top = ImGui::GetFrameHeight();
-    const ImVec2 position(viewport->Pos.x, viewport->Pos.y + top);
-    const ImVec2 size(std::max(64.0f, viewport->Size.x - kPanelWidth), std::max(64.0f, viewport->Size.y - 2.0f * top));
+    // An open lesson takes a column on the left; the canvas keeps the rest.
+    const float lessonWidth = showLesson ? kLessonWidth : 0.0f;
+    const ImVec2 position(viewport->Pos.x + lessonWidth, viewport->Pos.y + top);
+    const ImVec2 size(std::max(64.0f, viewport->Size.x - kPanelWidth - lessonWidth),
+                      std::max(64.0f, viewport->Size.y - 2.0f * top));
     ImGui::SetNextWindowPos(position);
     ImGui::SetNextWindowSize(size);
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0.0f, 0.0f));

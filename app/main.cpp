@@ -231,7 +231,15 @@ int main(int argc, char** argv)
         cli.add_option("--measure-fps", measureFrames,
                        "Run this many frames (at least 1) without waiting for the display, print the frame rate, "
                        "and exit; the scene is not added to the Recent list");
+    int lessonNumber = 0;
+    const CLI::Option* lessonOption = cli.add_option(
+        "--lesson", lessonNumber, "Open lesson N of tutorials/ (from 1) beside the canvas, with its first scene");
     CLI11_PARSE(cli, argc, argv);
+    if (lessonOption->count() > 0 && lessonNumber < 1)
+    {
+        std::fprintf(stderr, "satviz: --lesson: lessons count from 1, got %d\n", lessonNumber);
+        return 2;
+    }
     const bool measuring = measureOption->count() > 0;
     if (measuring && measureFrames < 1)
     {
@@ -301,6 +309,12 @@ int main(int argc, char** argv)
     {
         std::fprintf(stderr, "satviz: %s\n", app.status.c_str());
         return 1;
+    }
+    if (lessonOption->count() > 0 && !app.OpenLesson(lessonNumber - 1))
+    {
+        std::fprintf(stderr, "satviz: --lesson: there are %zu lessons, no lesson %d\n", app.Lessons().size(),
+                     lessonNumber);
+        return 2;
     }
 
     using Clock = std::chrono::steady_clock;

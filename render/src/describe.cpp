@@ -303,8 +303,8 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
                 where = ", when it reaches a pushed-out face: axis " + std::to_string(r.axis + 1) + "'s entry time";
             }
             return "Verdict: " + fixed + "first contact at t = " + FormatNumber(r.toi) + where + ", normal " +
-                   Pair(r.normal.x, r.normal.y) + " (from " + NameOf(scene, study, 0) + " to " +
-                   NameOf(scene, study, 1) + ").";
+                   Pair(r.normal.x, r.normal.y) + ", from " + NameOf(scene, study, 0) + " to " +
+                   NameOf(scene, study, 1) + ".";
         }
         return "Verdict: " + fixed +
                (r.status == SweepStatus::Overlapping ? "the shapes already overlap at t = 0."
@@ -318,8 +318,8 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
                std::to_string(r.axis + 1) + ") until " +
                (std::isinf(exit.exit) ? std::string("the end") : Time(exit.exit)) +
                " (the earliest exit): first contact at t = " + FormatNumber(r.toi) + ", normal " +
-               Pair(r.normal.x, r.normal.y) + " (from " + NameOf(scene, study, 0) + " to " + NameOf(scene, study, 1) +
-               ").";
+               Pair(r.normal.x, r.normal.y) + ", from " + NameOf(scene, study, 0) + " to " + NameOf(scene, study, 1) +
+               ".";
     }
     if (r.status == SweepStatus::Overlapping)
     {

@@ -635,3 +635,78 @@ TEST_CASE("Every scene a lesson names opens in the app, with a figure and its st
         CHECK(!h.app->statusIsError);
     }
 }
+
+TEST_CASE("Lesson Markdown is parsed with md4c into headings, text, items, code, figures and table rows",
+          "[app][lessons]")
+{
+    const std::vector<LessonBlock> blocks = ParseLesson(R"(# 3. The overlap test
+
+Some *running* text with a [link](x.md) and a check mark: <!--check scene /pairs/0/depth-->0.18.
+
+- first item
+- second item
+  - nested
+
+![Axis 1: a gap](figures/box_above_floor-step1.png)
+
+```sh
+satviz tutorials/scenes/x.json
+```
+
+| a | b |
+| --- | --- |
+| 1 | 2 |
+
+---
+)");
+    REQUIRE(blocks.size() >= 8);
+    CHECK(blocks[0].kind == LessonBlock::Kind::Heading);
+    CHECK(blocks[0].level == 1);
+    CHECK(blocks[0].text == "3. The overlap test");
+    CHECK(blocks[1].kind == LessonBlock::Kind::Paragraph);
+    CHECK(blocks[1].text == "Some running text with a link and a check mark: 0.18.");
+    CHECK(blocks[2].kind == LessonBlock::Kind::Item);
+    CHECK(blocks[2].text == "first item");
+    CHECK(blocks[4].text == "nested");
+    CHECK(blocks[4].level == 2);
+    CHECK(blocks[5].kind == LessonBlock::Kind::Figure);
+    CHECK(blocks[5].text == "Axis 1: a gap");
+    CHECK(blocks[5].target == "figures/box_above_floor-step1.png");
+    CHECK(blocks[6].kind == LessonBlock::Kind::Code);
+    CHECK(blocks[6].text.find("satviz tutorials/scenes/x.json") == 0);
+    CHECK(blocks[7].text == "a | b");
+    CHECK(blocks[8].text == "1 | 2");
+    CHECK(blocks.back().kind == LessonBlock::Kind::Rule);
+    // Signs beyond the fonts' Latin-1 are written as plain text writes them.
+    CHECK(ParseLesson("t = (minA \u2212 maxB) / s \u2264 1 \u2248 2")[0].text == "t = (minA - maxB) / s <= 1 ~ 2");
+}
+
+TEST_CASE("Help > Lessons lists the lessons, and opening one shows its text and loads its scene",
+          "[app][lessons]")
+{
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    const std::vector<Lesson>& lessons = h.app->Lessons();
+    REQUIRE(lessons.size() >= 12);
+    CHECK(lessons[0].title.find("1.") == 0);
+    for (size_t i = 0; i < lessons.size(); ++i)
+    {
+        INFO(lessons[i].file);
+        CHECK(fs::path(lessons[i].file).filename().string().substr(0, 2) ==
+              (i + 1 < 10 ? "0" : "") + std::to_string(i + 1));
+    }
+    REQUIRE(h.app->OpenLesson(2));
+    h.Frames(3);
+    CHECK(h.app->CurrentLesson() == 2);
+    CHECK(h.app->showLesson);
+    REQUIRE(!h.app->LessonBlocks().empty());
+    CHECK(h.app->LessonBlocks()[0].text == lessons[2].title);
+    REQUIRE(!lessons[2].scenes.empty());
+    CHECK(fs::equivalent(h.app->file, lessons[2].scenes.front()));
+    CHECK(h.app->setup.Ok());
+    REQUIRE(h.app->OpenLesson(3));
+    h.Frames(3);
+    CHECK(h.app->CurrentLesson() == 3);
+    CHECK(fs::equivalent(h.app->file, lessons[3].scenes.front()));
+    CHECK_FALSE(h.app->OpenLesson(static_cast<int>(lessons.size())));
+    CHECK(h.app->CurrentLesson() == 3);
+}

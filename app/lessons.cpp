@@ -1,0 +1,314 @@
+// SPDX-License-Identifier: MIT
+#include "lessons.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <md4c.h>
+#include <regex>
+#include <sstream>
+
+namespace satviz
+{
+
+namespace
+{
+
+namespace fs = std::filesystem;
+
+// md4c's callbacks fill this: the blocks so far and the one being read.
+struct Reader
+{
+    std::vector<LessonBlock> blocks;
+    LessonBlock current;
+    bool open = false;    // a text block is being read
+    int listDepth = 0;    // nesting of lists
+    bool inImage = false; // inside an image span: text is its alternative text
+    LessonBlock image;
+    bool inCell = false; // inside a table row: cells are joined
+    bool firstCell = true;
+
+    void Begin(LessonBlock::Kind kind, int level)
+    {
+        Finish();
+        current = LessonBlock{};
+        current.kind = kind;
+        current.level = level;
+        open = true;
+    }
+
+    void Finish()
+    {
+        if (!open)
+        {
+            return;
+        }
+        open = false;
+        // Trim the spaces soft breaks leave at either end.
+        std::string& t = current.text;
+        t.erase(t.begin(), std::find_if(t.begin(), t.end(), [](unsigned char c) { return !std::isspace(c); }));
+        while (!t.empty() && current.kind != LessonBlock::Kind::Code &&
+               std::isspace(static_cast<unsigned char>(t.back())))
+        {
+            t.pop_back();
+        }
+        if (!t.empty() || current.kind == LessonBlock::Kind::Rule)
+        {
+            blocks.push_back(current);
+        }
+    }
+
+    void Append(const std::string& text)
+    {
+        if (inImage)
+        {
+            image.text += text;
+        }
+        else if (open)
+        {
+            current.text += text;
+        }
+    }
+};
+
+// The figure fonts hold Latin-1 only: the few mathematical signs the lessons use beyond it are written the way
+// plain text writes them.
+std::string Latin1(std::string text)
+{
+    static const std::pair<const char*, const char*> kSigns[] = {
+        {"\u2212", "-"}, {"\u2013", "-"}, {"\u2014", " - "}, {"\u2264", "<="}, {"\u2265", ">="},
+        {"\u2248", "~"}, {"\u221a", "sqrt"}, {"\u2192", "->"}, {"\u2026", "..."}, {"\u2011", "-"},
+    };
+    for (const auto& [from, to] : kSigns)
+    {
+        for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + std::strlen(to)))
+        {
+            text.replace(at, std::strlen(from), to);
+        }
+    }
+    return text;
+}
+
+int EnterBlock(MD_BLOCKTYPE type, void* detail, void* user)
+{
+    Reader& r = *static_cast<Reader*>(user);
+    switch (type)
+    {
+    case MD_BLOCK_H:
+        r.Begin(LessonBlock::Kind::Heading, static_cast<int>(static_cast<MD_BLOCK_H_DETAIL*>(detail)->level));
+        break;
+    case MD_BLOCK_P:
+        // A paragraph inside a list item continues the item.
+        if (!(r.open && r.current.kind == LessonBlock::Kind::Item))
+        {
+            r.Begin(LessonBlock::Kind::Paragraph, 0);
+        }
+        break;
+    case MD_BLOCK_UL:
+    case MD_BLOCK_OL:
+        ++r.listDepth;
+        break;
+    case MD_BLOCK_LI:
+        r.Begin(LessonBlock::Kind::Item, r.listDepth);
+        break;
+    case MD_BLOCK_CODE:
+        r.Begin(LessonBlock::Kind::Code, 0);
+        break;
+    case MD_BLOCK_HR:
+        r.Begin(LessonBlock::Kind::Rule, 0);
+        r.Finish();
+        break;
+    case MD_BLOCK_TR:
+        r.Begin(LessonBlock::Kind::Paragraph, 0);
+        r.inCell = true;
+        r.firstCell = true;
+        break;
+    case MD_BLOCK_TH:
+    case MD_BLOCK_TD:
+        r.Append(r.firstCell ? "" : " | ");
+        r.firstCell = false;
+        break;
+    default:
+        break;
+    }
+    return 0;
+}
+
+int LeaveBlock(MD_BLOCKTYPE type, void*, void* user)
+{
+    Reader& r = *static_cast<Reader*>(user);
+    switch (type)
+    {
+    case MD_BLOCK_H:
+    case MD_BLOCK_CODE:
+    case MD_BLOCK_LI:
+        r.Finish();
+        break;
+    case MD_BLOCK_P:
+        if (!(r.open && r.current.kind == LessonBlock::Kind::Item))
+        {
+            r.Finish();
+        }
+        else
+        {
+            r.Append(" ");
+        }
+        break;
+    case MD_BLOCK_UL:
+    case MD_BLOCK_OL:
+        --r.listDepth;
+        break;
+    case MD_BLOCK_TR:
+        r.inCell = false;
+        r.Finish();
+        break;
+    default:
+        break;
+    }
+    return 0;
+}
+
+int EnterSpan(MD_SPANTYPE type, void* detail, void* user)
+{
+    Reader& r = *static_cast<Reader*>(user);
+    if (type == MD_SPAN_IMG)
+    {
+        const MD_SPAN_IMG_DETAIL* img = static_cast<MD_SPAN_IMG_DETAIL*>(detail);
+        r.inImage = true;
+        r.image = LessonBlock{};
+        r.image.kind = LessonBlock::Kind::Figure;
+        r.image.target.assign(img->src.text, img->src.size);
+    }
+    return 0;
+}
+
+int LeaveSpan(MD_SPANTYPE type, void*, void* user)
+{
+    Reader& r = *static_cast<Reader*>(user);
+    if (type == MD_SPAN_IMG)
+    {
+        r.inImage = false;
+        // A figure stands on its own between the text before and after it.
+        const bool wasOpen = r.open;
+        const LessonBlock::Kind kind = r.current.kind;
+        const int level = r.current.level;
+        r.Finish();
+        r.blocks.push_back(r.image);
+        if (wasOpen)
+        {
+            r.Begin(kind, level);
+        }
+    }
+    return 0;
+}
+
+int Text(MD_TEXTTYPE type, const MD_CHAR* text, MD_SIZE size, void* user)
+{
+    Reader& r = *static_cast<Reader*>(user);
+    const std::string s(text, size);
+    switch (type)
+    {
+    case MD_TEXT_HTML:
+        break; // the lessons' check marks and other HTML are not shown
+    case MD_TEXT_BR:
+        r.Append(r.current.kind == LessonBlock::Kind::Code ? "\n" : " ");
+        break;
+    case MD_TEXT_SOFTBR:
+        r.Append(" ");
+        break;
+    case MD_TEXT_ENTITY:
+        r.Append(s == "&amp;" ? "&" : s == "&lt;" ? "<" : s == "&gt;" ? ">" : s == "&quot;" ? "\"" : s);
+        break;
+    default:
+        r.Append(Latin1(s));
+        break;
+    }
+    return 0;
+}
+
+std::string ReadAll(const std::string& file, bool& ok)
+{
+    std::ifstream in(file, std::ios::binary);
+    ok = static_cast<bool>(in);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+} // namespace
+
+std::vector<LessonBlock> ParseLesson(const std::string& markdown)
+{
+    MD_PARSER parser{};
+    parser.abi_version = 0;
+    parser.flags = MD_FLAG_TABLES | MD_FLAG_NOHTMLBLOCKS;
+    parser.enter_block = EnterBlock;
+    parser.leave_block = LeaveBlock;
+    parser.enter_span = EnterSpan;
+    parser.leave_span = LeaveSpan;
+    parser.text = Text;
+    Reader reader;
+    md_parse(markdown.data(), static_cast<MD_SIZE>(markdown.size()), &parser, &reader);
+    reader.Finish();
+    return reader.blocks;
+}
+
+bool LoadLesson(const std::string& file, std::vector<LessonBlock>& blocks, std::string& error)
+{
+    bool ok = false;
+    const std::string text = ReadAll(file, ok);
+    if (!ok)
+    {
+        error = file + ": cannot read the lesson";
+        return false;
+    }
+    blocks = ParseLesson(text);
+    return true;
+}
+
+std::vector<Lesson> FindLessons(const std::string& folder)
+{
+    std::vector<Lesson> lessons;
+    std::error_code code;
+    static const std::regex name("^[0-9][0-9]-[A-Za-z0-9-]+\\.md$");
+    static const std::regex scene("scenes/([A-Za-z0-9_]+)\\.json");
+    for (fs::directory_iterator it(folder, code), end; !code && it != end; it.increment(code))
+    {
+        const std::string file = it->path().filename().string();
+        if (!std::regex_match(file, name))
+        {
+            continue;
+        }
+        Lesson lesson;
+        lesson.file = it->path().string();
+        bool ok = false;
+        const std::string text = ReadAll(lesson.file, ok);
+        for (const LessonBlock& block : ParseLesson(text))
+        {
+            if (block.kind == LessonBlock::Kind::Heading)
+            {
+                lesson.title = block.text;
+                break;
+            }
+        }
+        if (lesson.title.empty())
+        {
+            lesson.title = file;
+        }
+        for (std::sregex_iterator m(text.begin(), text.end(), scene), none; m != none; ++m)
+        {
+            const std::string path = (fs::path(folder) / "scenes" / ((*m)[1].str() + ".json")).string();
+            if (std::find(lesson.scenes.begin(), lesson.scenes.end(), path) == lesson.scenes.end())
+            {
+                lesson.scenes.push_back(path);
+            }
+        }
+        lessons.push_back(lesson);
+    }
+    std::sort(lessons.begin(), lessons.end(), [](const Lesson& a, const Lesson& b) { return a.file < b.file; });
+    return lessons;
+}
+
+} // namespace satviz

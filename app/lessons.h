@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+// satviz app: the lessons of tutorials/ as the app shows them: found on disk, parsed from Markdown with md4c into
+// blocks of text, headings, list items, code and figures. No drawing here (see App::LessonWindow).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace satviz
+{
+
+/// A lesson file of tutorials/ (NN-slug.md).
+struct Lesson
+{
+    std::string file;                ///< path of the Markdown file
+    std::string title;               ///< its first heading, without the "#"
+    std::vector<std::string> scenes; ///< the scene files it names (tutorials/scenes/NAME.json), in order, no repeats
+};
+
+/// The lessons in `folder` (files named NN-slug.md), in order; empty when there are none or the folder is missing.
+std::vector<Lesson> FindLessons(const std::string& folder);
+
+/// One block of a lesson as the app's panel lays it out.
+struct LessonBlock
+{
+    /// What the block is.
+    enum class Kind
+    {
+        Heading,   ///< a heading of `level` 1 to 6
+        Paragraph, ///< running text
+        Item,      ///< a list item, `level` deep (1 for the outer list)
+        Code,      ///< a code block, shown as it is
+        Figure,    ///< an image: `text` is its alternative text, `target` its file
+        Rule,      ///< a horizontal rule
+    };
+    Kind kind = Kind::Paragraph; ///< what the block is
+    int level = 0;               ///< heading level or list depth
+    std::string text;            ///< the block's text, inline markup flattened (links keep their text)
+    std::string target;          ///< a figure's file, relative to the lesson
+};
+
+/// Parses a lesson's Markdown (CommonMark with tables, as md4c reads it) into blocks. HTML comments (the lessons'
+/// check marks) are dropped; a table becomes one paragraph per row, its cells separated by " | ".
+std::vector<LessonBlock> ParseLesson(const std::string& markdown);
+
+/// Reads and parses a lesson file; false with a one-line error naming the file when it cannot be read.
+bool LoadLesson(const std::string& file, std::vector<LessonBlock>& blocks, std::string& error);
+
+} // namespace satviz
