@@ -1221,7 +1221,9 @@ void App::Inspector()
     ImGui::Text("%s: %s", m.overlap ? "MTV direction (A to B)" : "separating axis (A to B)", point(normal).c_str());
     for (int i = 0; i < m.contactCount; ++i)
     {
-        ImGui::Text("contact %d: %s", i + 1, point(m.contacts[i].point).c_str());
+        // In the order the figure labels them c1, c2, and satviz-query lists "contacts".
+        ImGui::Text(study.sweep ? "contact c%d at t = 0: %s" : "contact c%d: %s", i + 1,
+                    point(m.contacts[i].point).c_str());
     }
     if (study.sweep)
     {
@@ -1230,6 +1232,11 @@ void App::Inspector()
         {
             ImGui::Text("time of impact: %s", full(r.toi).c_str());
             ImGui::Text("normal at impact: %s", point(r.normal).c_str());
+            // The contacts the figure labels c1, c2 in a sweep (satviz-query's "toi_contacts", in that order).
+            for (int i = 0; i < r.contactCount; ++i)
+            {
+                ImGui::Text("contact c%d at impact: %s", i + 1, point(r.contacts[i].point).c_str());
+            }
         }
         else
         {
