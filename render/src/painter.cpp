@@ -14,20 +14,21 @@ namespace satviz
 namespace
 {
 
-constexpr float kCaptionLines = 3.0f;     // caption lines the band holds (longer captions take a smaller size)
-constexpr int kSmallFigure = 560;         // figures narrower than this reserve label-size caption lines
-constexpr int kSmallPanelHeight = 400;    // figures lower than this show no number-line panel
-constexpr float kLineHeight = 19.0f;      // caption line spacing
-constexpr float kLabelLineHeight = 16.0f; // caption line spacing at label size (small figures)
-constexpr float kPad = 12.0f;             // padding inside bands
-constexpr float kStaticPanel = 108.0f;    // number-line panel height, static test
-constexpr float kSweepPanel = 184.0f;     // number line and time bar, swept test
-constexpr float kAxisGap = 30.0f;         // pixels between the pair's disc and the axis line
-constexpr int kFitAxes = 128;             // at most about this many axis lines are framed by FitFigure
-constexpr float kFitMargin = 22.0f;       // pixels between the axis line and the scene area's edge
-constexpr float kOutline = 2.0f;          // shape outline thickness
-constexpr float kBar = 6.0f;              // interval bar thickness
-constexpr float kLinePad = 26.0f;         // the axis line runs this far beyond the intervals
+constexpr float kCaptionLines = 3.0f;      // caption lines the band holds (longer captions take a smaller size)
+constexpr int kSmallFigure = 560;          // figures narrower than this reserve label-size caption lines
+constexpr int kSmallPanelHeight = 400;     // figures lower than this show no number-line panel
+constexpr float kLineHeight = 19.0f;       // caption line spacing
+constexpr float kLabelLineHeight = 16.0f;  // caption line spacing at label size (small figures)
+constexpr float kPad = 12.0f;              // padding inside bands
+constexpr float kStaticPanel = 108.0f;     // number-line panel height, static test
+constexpr float kSweepPanel = 184.0f;      // number line and time bar, swept test
+constexpr float kAxisGap = 30.0f;          // pixels between the pair's disc and the axis line
+constexpr size_t kMinkowskiPoints = 65536; // largest n * m the Minkowski inset draws
+constexpr int kFitAxes = 128;              // at most about this many axis lines are framed by FitFigure
+constexpr float kFitMargin = 22.0f;        // pixels between the axis line and the scene area's edge
+constexpr float kOutline = 2.0f;           // shape outline thickness
+constexpr float kBar = 6.0f;               // interval bar thickness
+constexpr float kLinePad = 26.0f;          // the axis line runs this far beyond the intervals
 
 bool Has(const Figure& figure, LayerMask layer)
 {
@@ -435,6 +436,10 @@ class Painter
         {
             MtvArrow();
         }
+        if (Has(figure_, kLayerMinkowski))
+        {
+            Minkowski();
+        }
         if (layout_.panelTop < static_cast<float>(view_.height))
         {
             Panel();
@@ -614,6 +619,135 @@ class Painter
             labels_.Place(tip, "v", TextStyle::Heading, InkOf(s), static_cast<float>(body.velocity.x),
                           static_cast<float>(-body.velocity.y));
         }
+    }
+
+    // The Minkowski difference A - B in an inset at the scene's top right, in its own scale: the points a - b of
+    // every pair of points of the shapes, a convex polygon. The shapes overlap exactly when it holds the origin;
+    // the MTV is the origin's shortest way out of it; a sweep moves it by -t (vB - vA), so the time of impact is
+    // where the ray from the origin along the relative motion enters it (van den Bergen; Ericson 3.11).
+    void Minkowski()
+    {
+        canvas_.BeginGroup("minkowski");
+        std::vector<Vec2> points;
+        auto outline = [&](const Body& body) {
+            std::vector<Vec2> out;
+            const Transform xf = body.Xf();
+            if (body.shape.type == ShapeType::Polygon)
+            {
+                for (const Vec2& v : body.shape.polygon.vertices)
+                {
+                    out.push_back(TransformPoint(xf, v));
+                }
+            }
+            else
+            {
+                const Vec2 c = TransformPoint(xf, body.shape.circle.center);
+                for (int k = 0; k < 48; ++k)
+                {
+                    const double angle = 6.283185307179586 * k / 48.0;
+                    out.push_back(c + body.shape.circle.radius * Vec2{std::cos(angle), std::sin(angle)});
+                }
+            }
+            return out;
+        };
+        const std::vector<Vec2> a = outline(bodyA_);
+        const std::vector<Vec2> b = outline(bodyB_);
+        const float side = std::min(220.0f, 0.42f * std::min(Width(), layout_.sceneBottom - layout_.sceneTop));
+        const float right = Width() - 10.0f;
+        const float top = layout_.sceneTop + 10.0f;
+        const ScreenRect box{right - side, top, right, top + side};
+        canvas_.FillRect({box.minX, box.minY}, {box.maxX, box.maxY}, WithAlpha(palette::kPanel, 0.95f));
+        canvas_.Polyline(
+            std::vector<ScreenPoint>{
+                {box.minX, box.minY}, {box.maxX, box.minY}, {box.maxX, box.maxY}, {box.minX, box.maxY}}
+                .data(),
+            4, true, palette::kFaint, 1.0f);
+        canvas_.Text({box.minX + 6.0f, box.minY + 4.0f}, "Minkowski A - B", TextStyle::Label,
+                     palette::kMuted);
+        if (a.size() * b.size() > kMinkowskiPoints)
+        {
+            canvas_.Text({box.minX + 6.0f, box.minY + 22.0f}, "too many vertices to draw", TextStyle::Label,
+                         palette::kMuted);
+            return;
+        }
+        // Relative to A's position, so that a pair far from the origin keeps its digits.
+        const Vec2 base = bodyA_.position - bodyB_.position;
+        for (const Vec2& p : a)
+        {
+            for (const Vec2& q : b)
+            {
+                points.push_back((p - q) - base);
+            }
+        }
+        const PolygonResult hull = ComputeHull(points);
+        if (!hull.Ok())
+        {
+            return;
+        }
+        const Vec2 motion = bodyB_.velocity - bodyA_.velocity;
+        const bool sweep = study_.sweep;
+        // The inset's scale: the hull, the origin and (sweeps) the ray's end, with a margin.
+        Vec2 low{0.0, 0.0};
+        Vec2 high{0.0, 0.0};
+        auto include = [&](Vec2 p) {
+            low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+            high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+        };
+        const Vec2 origin = -1.0 * base;
+        include(origin);
+        for (const Vec2& p : hull.polygon.vertices)
+        {
+            include(p);
+        }
+        if (sweep)
+        {
+            include(origin + motion);
+        }
+        const double span = std::max({high.x - low.x, high.y - low.y, 1e-12});
+        const double scale = (side - 44.0f) / span;
+        const Vec2 middle = 0.5 * (low + high);
+        auto at = [&](Vec2 p) {
+            return ScreenPoint{static_cast<float>(0.5 * (box.minX + box.maxX) + (p.x - middle.x) * scale),
+                               static_cast<float>(0.5 * (box.minY + box.maxY) + 8.0 - (p.y - middle.y) * scale)};
+        };
+        std::vector<ScreenPoint> screen;
+        for (const Vec2& p : hull.polygon.vertices)
+        {
+            screen.push_back(at(p));
+        }
+        canvas_.FillConvex(screen.data(), static_cast<int>(screen.size()), WithAlpha(palette::kOverlap, 0.25f));
+        canvas_.Polyline(screen.data(), static_cast<int>(screen.size()), true, palette::kOverlap, 1.5f);
+        const ScreenPoint o = at(origin);
+        canvas_.FillCircle(o, 3.5f, palette::kInk);
+        canvas_.Text({o.x + 5.0f, o.y + 2.0f}, "O", TextStyle::Label, palette::kInk);
+        if (sweep)
+        {
+            // The origin moves by the relative motion relative to the difference: where it enters is the hit.
+            DashedSegment(canvas_, o, at(origin + motion), palette::kShapeBInk, 1.5f, box, 5.0f, 4.0f);
+            const SweepStatus status =
+                study_.Textbook() ? study_.textbookSweepResult.status : study_.sweepResult.status;
+            const double toi = study_.Textbook() ? study_.textbookSweepResult.toi : study_.sweepResult.toi;
+            if (status == SweepStatus::Hit)
+            {
+                const ScreenPoint hit = at(origin + toi * motion);
+                canvas_.FillCircle(hit, 4.0f, palette::kResult);
+                canvas_.Text({box.minX + 6.0f, box.maxY - 18.0f}, "the ray enters at t = " + FormatNumber(toi),
+                             TextStyle::Label, palette::kResult);
+            }
+            return;
+        }
+        const bool overlap = study_.Textbook() ? study_.textbookResult.overlap : study_.manifold.overlap;
+        if (overlap)
+        {
+            const double depth = study_.Textbook() ? study_.textbookResult.depth : study_.manifold.depth;
+            const Vec2 normal = study_.Textbook() ? study_.textbookResult.normal : study_.manifold.normal;
+            // Moving B by depth * normal moves A - B by -depth * normal: the origin reaches the boundary at
+            // depth * normal, the nearest boundary point.
+            Arrow(canvas_, o, at(origin + depth * normal), palette::kResult, 2.0f, 8.0f);
+        }
+        canvas_.Text({box.minX + 6.0f, box.maxY - 18.0f},
+                     overlap ? "O inside: overlap" : "O outside: apart", TextStyle::Label,
+                     overlap ? palette::kResult : 0x006E50FFu);
     }
 
     // The moving shapes at the time of impact, and at the figure's chosen time.

@@ -375,6 +375,7 @@ TEST_CASE("A layer that is off draws nothing, and each layer draws only its own 
         {kLayerSwept, {"swept", "panel", "timebar", "labels"}},
         {kLayerGhost, {"ghost", "labels"}},
         {kLayerCaption, {"caption"}},
+        {kLayerMinkowski, {"minkowski"}},
     };
     std::set<std::string> seen;
     for (const std::string& file : TutorialScenes())
@@ -399,7 +400,7 @@ TEST_CASE("A layer that is off draws nothing, and each layer draws only its own 
     }
     // Every view appears somewhere in the example scenes.
     for (const char* group : {"shapes", "labels", "normals", "axes", "projection", "panel", "timebar", "exit", "best",
-                              "mtv", "contacts", "swept", "ghost", "caption"})
+                              "mtv", "contacts", "swept", "ghost", "caption", "minkowski"})
     {
         INFO(group);
         CHECK(seen.count(group) == 1);
@@ -694,4 +695,64 @@ TEST_CASE("The single-precision study agrees with double within float rounding, 
         ++compared;
     }
     CHECK(compared > 1500);
+}
+
+TEST_CASE("The Minkowski inset holds the origin exactly when the shapes overlap", "[painter]")
+{
+    testing::Rng rng(77);
+    int inside = 0;
+    int outside = 0;
+    for (int i = 0; i < 300; ++i)
+    {
+        Scene scene;
+        for (int k = 0; k < 2; ++k)
+        {
+            Body body;
+            body.name = k == 0 ? "A" : "B";
+            body.shape = rng.Chance(0.2) ? MakeShape(Circle{{0.0, 0.0}, rng.Uniform(0.2, 1.0)})
+                                         : MakeShape(testing::RandomPolygon(rng, rng.Int(3, 12), 1.0, 0.7));
+            body.position = {rng.Uniform(-1.5, 1.5), rng.Uniform(-1.5, 1.5)};
+            body.angle = rng.Uniform(-3.0, 3.0);
+            scene.bodies.push_back(std::move(body));
+        }
+        FigureSetup setup = SetUpFigure(scene, {});
+        REQUIRE(setup.Ok());
+        const Manifold& m = setup.study.manifold;
+        // Pairs near touching may round either way on screen.
+        if (std::abs(m.overlap ? m.depth : m.gap) < 0.05)
+        {
+            continue;
+        }
+        const RecordingCanvas canvas = Paint(scene, setup, setup.study.VerdictStep(), kLayerMinkowski);
+        const DrawCommand* hull = nullptr;
+        const DrawCommand* origin = nullptr;
+        for (const DrawCommand* c : canvas.InGroup("minkowski"))
+        {
+            if (c->kind == DrawCommand::Kind::FillConvex && hull == nullptr)
+            {
+                hull = c;
+            }
+            if (c->kind == DrawCommand::Kind::FillCircle && origin == nullptr)
+            {
+                origin = c;
+            }
+        }
+        REQUIRE(hull != nullptr);
+        REQUIRE(origin != nullptr);
+        // The origin's side of every edge of the (counter-clockwise in the world, clockwise on screen) hull.
+        const ScreenPoint o = origin->points[0];
+        bool in = true;
+        const size_t n = hull->points.size();
+        for (size_t k = 0; k < n; ++k)
+        {
+            const ScreenPoint p = hull->points[k];
+            const ScreenPoint q = hull->points[(k + 1) % n];
+            in = in && (q.x - p.x) * (o.y - p.y) - (q.y - p.y) * (o.x - p.x) <= 0.0f;
+        }
+        INFO("pair " << i << ", overlap " << m.overlap);
+        CHECK(in == m.overlap);
+        (in ? inside : outside) += 1;
+    }
+    CHECK(inside > 30);
+    CHECK(outside > 30);
 }

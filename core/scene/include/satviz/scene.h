@@ -42,8 +42,9 @@ enum class StepView
 /// Names of the drawing layers a view can switch on, in drawing order (see render/README.md).
 inline const std::vector<std::string>& ViewLayerNames()
 {
-    static const std::vector<std::string> names = {"shapes", "labels", "normals",  "axes",  "projection", "exit",
-                                                   "best",   "mtv",    "contacts", "swept", "ghost",      "caption"};
+    static const std::vector<std::string> names = {"shapes", "labels",  "normals",  "axes",     "projection",
+                                                   "exit",   "best",    "mtv",      "contacts", "swept",
+                                                   "ghost",  "caption", "minkowski"};
     return names;
 }
 

@@ -32,12 +32,15 @@ enum Layer : LayerMask
     kLayerSwept = 1u << 9,      ///< velocities, swept intervals, entry and exit times on a time bar
     kLayerGhost = 1u << 10,     ///< the moving shapes at the time of impact (and at the chosen time)
     kLayerCaption = 1u << 11,   ///< the caption above the figure
+    /// An inset of the Minkowski difference A - B: the origin inside it exactly when the shapes overlap, the MTV as
+    /// the origin's shortest way out, and for sweeps the relative motion as a ray from the origin.
+    kLayerMinkowski = 1u << 12,
 };
 
 /// Every layer.
-constexpr LayerMask kAllLayers = (1u << 12) - 1;
-/// The layers drawn when a scene does not choose: all but the normals and the candidate axes.
-constexpr LayerMask kDefaultLayers = kAllLayers & ~(kLayerNormals | kLayerAxes);
+constexpr LayerMask kAllLayers = (1u << 13) - 1;
+/// The layers drawn when a scene does not choose: all but the normals, the candidate axes and the Minkowski inset.
+constexpr LayerMask kDefaultLayers = kAllLayers & ~(kLayerNormals | kLayerAxes | kLayerMinkowski);
 
 /// The layer of a name of ViewLayerNames() ("shapes", "labels", ...), or 0 for an unknown name.
 LayerMask LayerFromName(std::string_view name);
