@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <md4c.h>
-#include <regex>
 #include <sstream>
 
 namespace satviz
@@ -78,8 +77,8 @@ struct Reader
 std::string Latin1(std::string text)
 {
     static const std::pair<const char*, const char*> kSigns[] = {
-        {"\u2212", "-"}, {"\u2013", "-"}, {"\u2014", " - "}, {"\u2264", "<="}, {"\u2265", ">="},
-        {"\u2248", "~"}, {"\u221a", "sqrt"}, {"\u2192", "->"}, {"\u2026", "..."}, {"\u2011", "-"},
+        {"\u2212", "-"}, {"\u2013", "-"},    {"\u2014", " - "}, {"\u2264", "<="},  {"\u2265", ">="},
+        {"\u2248", "~"}, {"\u221a", "sqrt"}, {"\u2192", "->"},  {"\u2026", "..."}, {"\u2011", "-"},
     };
     for (const auto& [from, to] : kSigns)
     {
@@ -268,16 +267,69 @@ bool LoadLesson(const std::string& file, std::vector<LessonBlock>& blocks, std::
     return true;
 }
 
+std::vector<std::string> NamedScenes(const std::string& markdown)
+{
+    std::vector<std::string> names;
+    const std::string marker = "scenes/";
+    for (size_t at = markdown.find(marker); at != std::string::npos; at = markdown.find(marker, at + 1))
+    {
+        size_t end = at + marker.size();
+        while (end < markdown.size() &&
+               (std::isalnum(static_cast<unsigned char>(markdown[end])) || markdown[end] == '_'))
+        {
+            ++end;
+        }
+        const std::string name = markdown.substr(at + marker.size(), end - at - marker.size());
+        if (!name.empty() && markdown.compare(end, 5, ".json") == 0 &&
+            std::find(names.begin(), names.end(), name) == names.end())
+        {
+            names.push_back(name);
+        }
+    }
+    return names;
+}
+
+std::string SceneOfFigure(const std::string& figure)
+{
+    std::string stem = fs::path(figure).stem().string();
+    size_t digits = stem.size();
+    while (digits > 0 && std::isdigit(static_cast<unsigned char>(stem[digits - 1])))
+    {
+        --digits;
+    }
+    if (digits < stem.size() && digits >= 5 && stem.compare(digits - 5, 5, "-step") == 0)
+    {
+        stem.erase(digits - 5);
+    }
+    return stem;
+}
+
+namespace
+{
+
+// NN-slug.md: two digits, a dash, letters, digits and dashes.
+bool IsLessonFile(const std::string& name)
+{
+    if (name.size() < 7 || !std::isdigit(static_cast<unsigned char>(name[0])) ||
+        !std::isdigit(static_cast<unsigned char>(name[1])) || name[2] != '-' ||
+        name.compare(name.size() - 3, 3, ".md") != 0)
+    {
+        return false;
+    }
+    return std::all_of(name.begin() + 3, name.end() - 3,
+                       [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-'; });
+}
+
+} // namespace
+
 std::vector<Lesson> FindLessons(const std::string& folder)
 {
     std::vector<Lesson> lessons;
     std::error_code code;
-    static const std::regex name("^[0-9][0-9]-[A-Za-z0-9-]+\\.md$");
-    static const std::regex scene("scenes/([A-Za-z0-9_]+)\\.json");
     for (fs::directory_iterator it(folder, code), end; !code && it != end; it.increment(code))
     {
         const std::string file = it->path().filename().string();
-        if (!std::regex_match(file, name))
+        if (!IsLessonFile(file))
         {
             continue;
         }
@@ -297,13 +349,9 @@ std::vector<Lesson> FindLessons(const std::string& folder)
         {
             lesson.title = file;
         }
-        for (std::sregex_iterator m(text.begin(), text.end(), scene), none; m != none; ++m)
+        for (const std::string& name : NamedScenes(text))
         {
-            const std::string path = (fs::path(folder) / "scenes" / ((*m)[1].str() + ".json")).string();
-            if (std::find(lesson.scenes.begin(), lesson.scenes.end(), path) == lesson.scenes.end())
-            {
-                lesson.scenes.push_back(path);
-            }
+            lesson.scenes.push_back((fs::path(folder) / "scenes" / (name + ".json")).string());
         }
         lessons.push_back(lesson);
     }

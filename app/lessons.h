@@ -17,6 +17,12 @@ struct Lesson
     std::vector<std::string> scenes; ///< the scene files it names (tutorials/scenes/NAME.json), in order, no repeats
 };
 
+/// The scenes a lesson's text names ("scenes/NAME.json"), as NAME, in order of first mention, no repeats.
+std::vector<std::string> NamedScenes(const std::string& markdown);
+
+/// The scene a figure was rendered from: "figures/faces/overlapping_boxes-step6.png" -> "overlapping_boxes".
+std::string SceneOfFigure(const std::string& figure);
+
 /// The lessons in `folder` (files named NN-slug.md), in order; empty when there are none or the folder is missing.
 std::vector<Lesson> FindLessons(const std::string& folder);
 

@@ -18,7 +18,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 using namespace satviz;
@@ -55,9 +54,105 @@ std::vector<fs::path> Lessons()
 // The scene a figure was rendered from: "figures/faces/overlapping_boxes-step6.png" -> "overlapping_boxes".
 std::string SceneOfFigure(const std::string& figure)
 {
-    const std::string stem = fs::path(figure).stem().string();
-    static const std::regex step("-step[0-9]+$");
-    return std::regex_replace(stem, step, "");
+    std::string stem = fs::path(figure).stem().string();
+    size_t digits = stem.size();
+    while (digits > 0 && std::isdigit(static_cast<unsigned char>(stem[digits - 1])))
+    {
+        --digits;
+    }
+    if (digits < stem.size() && digits >= 5 && stem.compare(digits - 5, 5, "-step") == 0)
+    {
+        stem.erase(digits - 5);
+    }
+    return stem;
+}
+
+// The run of characters from `at` that `keep` accepts.
+template <typename Keep>
+std::string Run(const std::string& text, size_t at, Keep keep)
+{
+    size_t end = at;
+    while (end < text.size() && keep(text[end]))
+    {
+        ++end;
+    }
+    return text.substr(at, end - at);
+}
+
+bool NameCharacter(char c)
+{
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
+// Every "![alt](target)" image target.
+std::vector<std::string> Images(const std::string& text)
+{
+    std::vector<std::string> out;
+    for (size_t at = text.find("!["); at != std::string::npos; at = text.find("![", at + 2))
+    {
+        const size_t close = text.find("](", at);
+        const size_t end = close == std::string::npos ? std::string::npos : text.find(')', close);
+        if (end != std::string::npos)
+        {
+            out.push_back(text.substr(close + 2, end - close - 2));
+        }
+    }
+    return out;
+}
+
+// Every "scenes/NAME.json" a text names, as NAME.
+std::vector<std::string> Scenes(const std::string& text)
+{
+    std::vector<std::string> out;
+    for (size_t at = text.find("scenes/"); at != std::string::npos; at = text.find("scenes/", at + 1))
+    {
+        const std::string name = Run(text, at + 7, NameCharacter);
+        if (!name.empty() && text.compare(at + 7 + name.size(), 5, ".json") == 0)
+        {
+            out.push_back(name);
+        }
+    }
+    return out;
+}
+
+// A checked number: "<!--check SCENE /pointer-->NUMBER".
+struct CheckMark
+{
+    std::string scene;
+    std::string pointer;
+    std::string shown;
+};
+
+std::vector<CheckMark> CheckMarks(const std::string& text)
+{
+    std::vector<CheckMark> out;
+    const std::string open = "<!--check ";
+    for (size_t at = text.find(open); at != std::string::npos; at = text.find(open, at + 1))
+    {
+        CheckMark mark;
+        size_t p = at + open.size();
+        mark.scene = Run(text, p, NameCharacter);
+        p += mark.scene.size();
+        if (p >= text.size() || text[p] != ' ')
+        {
+            continue;
+        }
+        const size_t close = text.find("-->", p);
+        if (close == std::string::npos)
+        {
+            continue;
+        }
+        mark.pointer = text.substr(p + 1, close - p - 1);
+        mark.shown = Run(text, close + 3,
+                         [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-'; });
+        // A sentence's full stop after the number is not one of its decimals.
+        while (!mark.shown.empty() && mark.shown.back() == '.')
+        {
+            mark.shown.pop_back();
+        }
+        out.push_back(mark);
+    }
+    return out;
 }
 
 // Decimals a printed number shows: "0.18" -> 2, "3" -> 0.
@@ -87,14 +182,12 @@ TEST_CASE("The lessons exist, in order, with the index that lists them", "[lesso
 
 TEST_CASE("Every figure a lesson shows exists and is rendered from a scene of tutorials/scenes", "[lessons]")
 {
-    static const std::regex image(R"(!\[[^\]]*\]\(([^)\s]+\.png)\))");
     int figures = 0;
     for (const fs::path& lesson : Lessons())
     {
         const std::string text = ReadFile(lesson);
-        for (std::sregex_iterator it(text.begin(), text.end(), image), end; it != end; ++it)
+        for (const std::string& figure : Images(text))
         {
-            const std::string figure = (*it)[1].str();
             INFO(lesson.filename().string() << ": " << figure);
             CHECK(figure.rfind("figures/", 0) == 0);
             CHECK(fs::exists(kTutorials / figure));
@@ -107,14 +200,13 @@ TEST_CASE("Every figure a lesson shows exists and is rendered from a scene of tu
 
 TEST_CASE("Every scene a lesson names loads and can be pictured", "[lessons]")
 {
-    static const std::regex named(R"(scenes/([A-Za-z0-9_]+)\.json)");
     int scenes = 0;
     for (const fs::path& lesson : Lessons())
     {
         const std::string text = ReadFile(lesson);
-        for (std::sregex_iterator it(text.begin(), text.end(), named), end; it != end; ++it)
+        for (const std::string& name : Scenes(text))
         {
-            const fs::path file = kTutorials / "scenes" / ((*it)[1].str() + ".json");
+            const fs::path file = kTutorials / "scenes" / (name + ".json");
             const SceneResult loaded = LoadScene(file.string());
             INFO(lesson.filename().string() << ": " << loaded.error);
             CHECK(loaded.Ok());
@@ -126,16 +218,17 @@ TEST_CASE("Every scene a lesson names loads and can be pictured", "[lessons]")
 
 TEST_CASE("Every checked number of a worked example matches satviz-query on its scene", "[lessons]")
 {
-    static const std::regex check(R"(<!--check ([A-Za-z0-9_]+) (/[^ ]*)-->(-?[0-9]+(\.[0-9]+)?))");
     int checked = 0;
     for (const fs::path& lesson : Lessons())
     {
         const std::string text = ReadFile(lesson);
-        for (std::sregex_iterator it(text.begin(), text.end(), check), end; it != end; ++it)
+        for (const CheckMark& mark : CheckMarks(text))
         {
-            const std::string scene = (*it)[1].str();
-            const std::string pointer = (*it)[2].str();
-            const std::string shown = (*it)[3].str();
+            const std::string& scene = mark.scene;
+            const std::string& pointer = mark.pointer;
+            const std::string& shown = mark.shown;
+            REQUIRE(!shown.empty());
+            REQUIRE(pointer.rfind("/", 0) == 0);
             INFO(lesson.filename().string() << ": " << scene << " " << pointer << " shown as " << shown);
             const fs::path file = kTutorials / "scenes" / (scene + ".json");
             const SceneResult loaded = LoadScene(file.string());

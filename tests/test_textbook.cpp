@@ -97,7 +97,7 @@ TEST_CASE("The textbook test gives Overlap's verdict and Collide's depth, and it
         REQUIRE(std::abs(t.depth - m.depth) <= 1e-13 * scale);
         // Independent of ties: along the textbook normal, B must move exactly the depth to leave A (quad).
         const QVec u{t.normal.x, t.normal.y};
-        Quad loA, hiA, loB, hiB;
+        Quad loA = 0, hiA = 0, loB = 0, hiB = 0;
         QExtent(pair.a, pair.xfA, u, loA, hiA);
         QExtent(pair.b, pair.xfB, u, loB, hiB);
         REQUIRE(std::abs(static_cast<double>(hiA - loB) - t.depth) <= 1e-13 * scale);
@@ -130,7 +130,7 @@ TEST_CASE("Textbook traces are bit-identical to the untraced test and hold check
         {
             const TextbookAxis& axis = trace.axes[k];
             // The intervals are the shapes' projections on the axis (quad precision, world space).
-            Quad loA, hiA, loB, hiB;
+            Quad loA = 0, hiA = 0, loB = 0, hiB = 0;
             const QVec u{axis.direction.x, axis.direction.y};
             QExtent(pair.a, pair.xfA, u, loA, hiA);
             QExtent(pair.b, pair.xfB, u, loB, hiB);

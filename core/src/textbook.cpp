@@ -231,10 +231,10 @@ TextbookResultT<S> TextbookCollideWith(const ShapeT<S>& a, const TransformT<S>& 
     for (size_t k = 0; k < axes.size(); ++k)
     {
         const Vec2T<S> u = axes[k].u;
-        S minA;
-        S maxA;
-        S minB;
-        S maxB;
+        S minA{};
+        S maxA{};
+        S minB{};
+        S maxB{};
         pa.Project(u, minA, maxA);
         pb.Project(u, minB, maxB);
         result.axesTested = static_cast<int>(k) + 1;
@@ -356,17 +356,17 @@ TextbookSweepResultT<S> TextbookSweepWith(const ShapeT<S>& a, const TransformT<S
     for (size_t k = 0; k < axes.size(); ++k)
     {
         const Vec2T<S> u = axes[k].u;
-        S minA;
-        S maxA;
-        S minB;
-        S maxB;
+        S minA{};
+        S maxA{};
+        S minB{};
+        S maxB{};
         pa.Project(u, minA, maxA);
         pb.Project(u, minB, maxB);
         const S rawRate = Dot(u, v);
         const S rate = std::abs(rawRate) > still ? rawRate : S(0);
-        S entry;
-        S leave;
-        bool never;
+        S entry{};
+        S leave{};
+        bool never = false;
         MovingIntervals(minA, maxA, minB, maxB, rate, entry, leave, never);
         if (!never && (latestAxis < 0 || entry > latest))
         {
