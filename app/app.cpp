@@ -9,7 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <regex>
+#include <iterator>
 #include <thread>
 
 namespace satviz
@@ -701,9 +701,7 @@ void App::LessonWindow()
         {
             // The figure is the canvas: a figure of a scene opens that scene there.
             ImGui::TextDisabled("Figure: %s", block.text.c_str());
-            static const std::regex step("-step[0-9]+$");
-            const std::string stem =
-                std::regex_replace(std::filesystem::path(block.target).stem().string(), step, std::string());
+            const std::string stem = SceneOfFigure(block.target);
             const std::string scene =
                 (std::filesystem::path(options_.lessonsDir) / "scenes" / (stem + ".json")).string();
             if (std::filesystem::exists(scene))
@@ -968,6 +966,7 @@ void App::LayerToggles()
         "velocities, swept intervals, the time bar",
         "the moving bodies at the time of impact",
         "the step's sentence above the figure",
+        "the Minkowski difference A - B in an inset: the origin inside it exactly when they overlap",
     };
     const std::vector<std::string>& names = ViewLayerNames();
     for (size_t i = 0; i < names.size(); ++i)
@@ -978,7 +977,8 @@ void App::LayerToggles()
             layers = on ? (layers | (1u << i)) : (layers & ~(1u << i));
             Refresh();
         }
-        if (ImGui::IsItemHovered())
+        // A layer added to ViewLayerNames() without a description here gets none, never a read past the list.
+        if (ImGui::IsItemHovered() && i < std::size(kDescriptions))
         {
             ImGui::SetTooltip("%s", kDescriptions[i]);
         }
@@ -1077,6 +1077,23 @@ void App::StepControls()
         ImGui::SetTooltip("The textbook test projects both shapes on each distinct axis and compares the intervals.\n"
                           "The fast queries test faces instead: does the other shape lie wholly beyond this face?\n"
                           "Each axis is two face tests, one per side; both give the same verdict and MTV.");
+    }
+    // A classic mistake beside the right answer: the library never takes it, the view shows what it would do.
+    int pitfall = static_cast<int>(scene.view.pitfall);
+    const char* pitfalls[] = {"no pitfall", "pitfall: axes not normalised", "pitfall: push direction not checked",
+                              "pitfall: only A's axes tested", "pitfall: motion sampled, not swept"};
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::Combo("##pitfall", &pitfall, pitfalls, 5))
+    {
+        scene.view.pitfall = static_cast<Pitfall>(pitfall);
+        dirty = true;
+        Refresh();
+    }
+    if (ImGui::IsItemHovered())
+    {
+        ImGui::SetTooltip(
+            "Shows what a classic SAT mistake would answer, beside the right answer, on the verdict step\n"
+            "(a dashed arrow and a sentence). The library's queries never make it.");
     }
 
     ImGui::Separator();

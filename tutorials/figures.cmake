@@ -29,6 +29,13 @@ set(SATVIZ_FIGURE_SCENES
   l11_decimal_touch
   l11_float_seen
   l12_apart
+  l13_overlap
+  l13_apart
+  l13_sweep
+  pitfall_direction
+  pitfall_one_shape
+  pitfall_tunnel
+  pitfall_unnormalised
 )
 set(SATVIZ_STEP_SCENES
   overlapping_boxes

@@ -370,7 +370,8 @@ SceneView ParseView(const Json& value, const Scene& scene)
         Fail(path, "expected an object, got " + TypeName(value));
     }
     CheckKeys(value, path,
-              {"center", "zoom", "size", "layers", "pair", "query", "steps", "step", "time", "caption", "precision"});
+              {"center", "zoom", "size", "layers", "pair", "query", "steps", "pitfall", "step", "time", "caption",
+               "precision"});
     SceneView view;
     if (value.contains("zoom"))
     {
@@ -459,6 +460,16 @@ SceneView ParseView(const Json& value, const Scene& scene)
         else if (query != "auto")
         {
             Fail(path + ".query", "expected \"collide\", \"sweep\" or \"auto\", got \"" + query + "\"");
+        }
+    }
+    if (value.contains("pitfall"))
+    {
+        const std::string name = String(value["pitfall"], path + ".pitfall");
+        if (!PitfallFromName(name, view.pitfall))
+        {
+            Fail(path + ".pitfall", "expected \"none\", \"unnormalised-axes\", \"unchecked-direction\", "
+                                    "\"one-shapes-axes\" or \"sampled-motion\", got \"" +
+                                        name + "\"");
         }
     }
     if (value.contains("steps"))
@@ -889,6 +900,10 @@ Json ViewJson(const SceneView& v, const Json* old, bool fromFile)
         fields.push_back(
             {"query", v.query == ViewQuery::Collide ? "collide" : (v.query == ViewQuery::Sweep ? "sweep" : "auto")});
     }
+    if (had("pitfall") || v.pitfall != Pitfall::None)
+    {
+        fields.push_back({"pitfall", std::string(PitfallName(v.pitfall))});
+    }
     if (had("steps") || v.steps == StepView::Faces)
     {
         fields.push_back({"steps", v.steps == StepView::Faces ? "faces" : "textbook"});
@@ -913,9 +928,9 @@ Json ViewJson(const SceneView& v, const Json* old, bool fromFile)
     {
         fields.push_back({"precision", v.singlePrecision ? "float" : "double"});
     }
-    return Arrange(
-        fields, old,
-        {"center", "zoom", "size", "layers", "pair", "query", "steps", "step", "time", "caption", "precision"});
+    return Arrange(fields, old,
+                   {"center", "zoom", "size", "layers", "pair", "query", "steps", "pitfall", "step", "time", "caption",
+                    "precision"});
 }
 
 // The whole file; `schema` replaces a kept "$schema" when not null.
@@ -1017,6 +1032,45 @@ std::unique_ptr<std::string> MovedSchema(const Scene& scene, const std::filesyst
 }
 
 } // namespace
+
+namespace
+{
+
+// The one list of pitfalls and their scene-file names.
+constexpr std::pair<Pitfall, std::string_view> kPitfallNames[] = {
+    {Pitfall::None, "none"},
+    {Pitfall::UnnormalisedAxes, "unnormalised-axes"},
+    {Pitfall::UncheckedDirection, "unchecked-direction"},
+    {Pitfall::OneShapesAxes, "one-shapes-axes"},
+    {Pitfall::SampledMotion, "sampled-motion"},
+};
+
+} // namespace
+
+std::string_view PitfallName(Pitfall pitfall)
+{
+    for (const auto& [value, name] : kPitfallNames)
+    {
+        if (value == pitfall)
+        {
+            return name;
+        }
+    }
+    return "none";
+}
+
+bool PitfallFromName(std::string_view name, Pitfall& pitfall)
+{
+    for (const auto& [value, known] : kPitfallNames)
+    {
+        if (known == name)
+        {
+            pitfall = value;
+            return true;
+        }
+    }
+    return false;
+}
 
 std::string SceneToJson(const Scene& scene)
 {

@@ -136,6 +136,12 @@ std::string PrecisionNote(const Scene& scene, const PairStudy& study)
            "this large (" + FormatNumber(coordinate) + ") move in steps of " + floatStep + ".";
 }
 
+// The view's pitfall, said after the right verdict.
+std::string PitfallNote(const PairStudy& study)
+{
+    return study.pitfall.verdict.empty() ? "" : " " + study.pitfall.verdict;
+}
+
 // "the normal of floor's edge 2 (floor's edge 0 and box's edges 0 and 2 are parallel to it)": one axis, many faces.
 std::string DescribeFaces(const Scene& scene, const PairStudy& study, const AxisRef* faces, int count)
 {
@@ -589,14 +595,14 @@ std::string DescribeStep(const Scene& scene, const PairStudy& study, int step)
         if (step == study.VerdictStep())
         {
             return (study.sweep ? TextbookSweepVerdict(scene, study) : TextbookVerdict(scene, study)) +
-                   PrecisionNote(scene, study);
+                   PrecisionNote(scene, study) + PitfallNote(study);
         }
         return study.sweep ? TextbookSweepAxisStep(scene, study, step) : TextbookAxisStep(scene, study, step);
     }
     if (step == study.VerdictStep())
     {
         return (study.sweep ? FaceSweepVerdict(scene, study) : FaceTestVerdict(scene, study)) +
-               PrecisionNote(scene, study);
+               PrecisionNote(scene, study) + PitfallNote(study);
     }
     return study.sweep ? FaceSweepStep(scene, study, step) : FaceTestStep(scene, study, step);
 }

@@ -44,6 +44,7 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
     }
     setup.study =
         StudyPair(scene, a, b, view.query, view.singlePrecision, options.setSteps ? options.steps : view.steps);
+    setup.study.pitfall = RunPitfall(view.pitfall, scene, a, b);
 
     Figure& figure = setup.figure;
     figure.layers =

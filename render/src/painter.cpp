@@ -662,8 +662,7 @@ class Painter
                 {box.minX, box.minY}, {box.maxX, box.minY}, {box.maxX, box.maxY}, {box.minX, box.maxY}}
                 .data(),
             4, true, palette::kFaint, 1.0f);
-        canvas_.Text({box.minX + 6.0f, box.minY + 4.0f}, "Minkowski A - B", TextStyle::Label,
-                     palette::kMuted);
+        canvas_.Text({box.minX + 6.0f, box.minY + 4.0f}, "Minkowski A - B", TextStyle::Label, palette::kMuted);
         if (a.size() * b.size() > kMinkowskiPoints)
         {
             canvas_.Text({box.minX + 6.0f, box.minY + 22.0f}, "too many vertices to draw", TextStyle::Label,
@@ -745,9 +744,8 @@ class Painter
             // depth * normal, the nearest boundary point.
             Arrow(canvas_, o, at(origin + depth * normal), palette::kResult, 2.0f, 8.0f);
         }
-        canvas_.Text({box.minX + 6.0f, box.maxY - 18.0f},
-                     overlap ? "O inside: overlap" : "O outside: apart", TextStyle::Label,
-                     overlap ? palette::kResult : 0x006E50FFu);
+        canvas_.Text({box.minX + 6.0f, box.maxY - 18.0f}, overlap ? "O inside: overlap" : "O outside: apart",
+                     TextStyle::Label, overlap ? palette::kResult : 0x006E50FFu);
     }
 
     // The moving shapes at the time of impact, and at the figure's chosen time.
@@ -979,6 +977,24 @@ class Painter
     {
         canvas_.BeginGroup("mtv");
         Arrow(canvas_, mtvFrom_, mtvTo_, palette::kResult, 3.0f, 12.0f);
+        // A pitfall's push beside the right one, dashed, so that the two can be compared.
+        const PitfallResult& pitfall = study_.pitfall;
+        if (pitfall.ran && pitfall.overlap && !study_.sweep && pitfall.depth > 0.0)
+        {
+            const Vec2 c = ShapeCenter(bodyB_.shape, bodyB_.Xf());
+            const ScreenPoint from = At(c);
+            ScreenPoint to = At(c + pitfall.depth * pitfall.normal);
+            if (std::hypot(to.x - from.x, to.y - from.y) < 20.0f)
+            {
+                to = {from.x + 20.0f * static_cast<float>(pitfall.normal.x),
+                      from.y - 20.0f * static_cast<float>(pitfall.normal.y)};
+            }
+            DashedSegment(canvas_, from, to, palette::kInk, 2.0f, bounds_, 6.0f, 4.0f);
+            Arrow(canvas_, {to.x - 0.01f * (to.x - from.x), to.y - 0.01f * (to.y - from.y)}, to, palette::kInk, 2.0f,
+                  10.0f);
+            canvas_.Text({to.x + 6.0f, to.y + 4.0f}, "pitfall " + FormatNumber(pitfall.depth), TextStyle::Label,
+                         palette::kInk);
+        }
     }
 
     void Contacts()
@@ -1278,7 +1294,11 @@ class Painter
                 end = text.size();
             }
             const std::string word = text.substr(start, end - start);
-            if (depth > 0 && !words.empty())
+            // "t = 0.438" stays on one line: "=" joins the words on both sides of it.
+            const bool glued = depth > 0 || word == "=" ||
+                               (!words.empty() && words.back().size() >= 2 &&
+                                words.back().compare(words.back().size() - 2, 2, " =") == 0);
+            if (glued && !words.empty())
             {
                 words.back() += " " + word;
             }

@@ -15,7 +15,6 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -608,7 +607,6 @@ TEST_CASE("A large pair is tested on a worker thread while frames go on, and the
 TEST_CASE("Every scene a lesson names opens in the app, with a figure and its steps", "[app][lessons]")
 {
     const fs::path tutorials = fs::path(SATVIZ_SOURCE_DIR) / "tutorials";
-    static const std::regex named(R"(scenes/([A-Za-z0-9_]+)\.json)");
     std::set<std::string> scenes;
     for (const auto& entry : fs::directory_iterator(tutorials))
     {
@@ -620,9 +618,9 @@ TEST_CASE("Every scene a lesson names opens in the app, with a figure and its st
         std::stringstream text;
         text << in.rdbuf();
         const std::string lesson = text.str();
-        for (std::sregex_iterator it(lesson.begin(), lesson.end(), named), end; it != end; ++it)
+        for (const std::string& name : NamedScenes(lesson))
         {
-            scenes.insert((*it)[1].str());
+            scenes.insert(name);
         }
     }
     REQUIRE(scenes.size() >= 10);
@@ -681,8 +679,7 @@ satviz tutorials/scenes/x.json
     CHECK(ParseLesson("t = (minA \u2212 maxB) / s \u2264 1 \u2248 2")[0].text == "t = (minA - maxB) / s <= 1 ~ 2");
 }
 
-TEST_CASE("Help > Lessons lists the lessons, and opening one shows its text and loads its scene",
-          "[app][lessons]")
+TEST_CASE("Help > Lessons lists the lessons, and opening one shows its text and loads its scene", "[app][lessons]")
 {
     Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
     const std::vector<Lesson>& lessons = h.app->Lessons();

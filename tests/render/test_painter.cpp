@@ -296,6 +296,9 @@ TEST_CASE("Caption lines never split a pair of numbers", "[painter]")
                     }
                     INFO(file << " step " << step << ": " << line);
                     CHECK(open == 0);
+                    // Nor an equation: "t = 0.438" is never split at its "=".
+                    CHECK(line.rfind("= ", 0) != 0);
+                    CHECK((line.size() < 2 || line.compare(line.size() - 2, 2, " =") != 0));
                     ++lines;
                 }
             }
@@ -341,7 +344,7 @@ TEST_CASE("The caption of a step states the trace's numbers", "[painter]")
                 {
                     const AxisTest& t = setup.study.trace.axes[static_cast<size_t>(step)];
                     // A face's test is a face test; a circle's axis is a plain test.
-                CHECK(expected.rfind(t.axis.kind == AxisKind::FaceNormal ? "Face test " : "Test ", 0) == 0);
+                    CHECK(expected.rfind(t.axis.kind == AxisKind::FaceNormal ? "Face test " : "Test ", 0) == 0);
                     if (!t.skipped)
                     {
                         for (double value : {std::abs(t.separation)})
@@ -755,4 +758,77 @@ TEST_CASE("The Minkowski inset holds the origin exactly when the shapes overlap"
     }
     CHECK(inside > 30);
     CHECK(outside > 30);
+}
+
+TEST_CASE("Each pitfall scene shows its mistake going wrong beside the right answer", "[painter][pitfall]")
+{
+    const std::string dir = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/";
+    {
+        const Scene scene = Load(dir + "pitfall_unnormalised.json");
+        const FigureSetup setup = SetUpFigure(scene, {});
+        const PitfallResult& p = setup.study.pitfall;
+        REQUIRE(p.ran);
+        CHECK(p.overlap == setup.study.textbookResult.overlap);
+        // It pushes sideways where the MTV goes up.
+        CHECK(std::abs(Dot(p.normal, setup.study.textbookResult.normal)) < 1e-12);
+    }
+    {
+        const Scene scene = Load(dir + "pitfall_direction.json");
+        const FigureSetup setup = SetUpFigure(scene, {});
+        const PitfallResult& p = setup.study.pitfall;
+        REQUIRE(p.ran);
+        CHECK(Dot(p.normal, setup.study.textbookResult.normal) < -0.99);
+        CHECK(p.verdict.find("drives B into A") != std::string::npos);
+    }
+    {
+        const Scene scene = Load(dir + "pitfall_one_shape.json");
+        const FigureSetup setup = SetUpFigure(scene, {});
+        REQUIRE(setup.study.pitfall.ran);
+        CHECK(setup.study.pitfall.overlap);
+        CHECK_FALSE(setup.study.textbookResult.overlap);
+    }
+    {
+        const Scene scene = Load(dir + "pitfall_tunnel.json");
+        const FigureSetup setup = SetUpFigure(scene, {});
+        REQUIRE(setup.study.pitfall.ran);
+        CHECK_FALSE(setup.study.pitfall.overlap);
+        CHECK(setup.study.sweepResult.status == SweepStatus::Hit);
+        CHECK(setup.study.pitfall.verdict.find("tunnel") != std::string::npos);
+        // The verdict caption says both.
+        const std::string verdict = DescribeStep(scene, setup.study, setup.study.VerdictStep());
+        CHECK(verdict.find("first contact at t = ") != std::string::npos);
+        CHECK(verdict.find("Pitfall (sampled motion)") != std::string::npos);
+    }
+}
+
+TEST_CASE("Pitfalls on random pairs: scaling keeps every verdict, fewer axes never miss a collision",
+          "[painter][pitfall][property]")
+{
+    testing::Rng rng(31);
+    for (int i = 0; i < 2000; ++i)
+    {
+        Scene scene;
+        for (int k = 0; k < 2; ++k)
+        {
+            Body body;
+            body.name = k == 0 ? "A" : "B";
+            body.shape = MakeShape(testing::RandomPolygon(rng, rng.Int(3, 10), 1.0, rng.Uniform(0.3, 1.0)));
+            body.position = {rng.Uniform(-1.2, 1.2), rng.Uniform(-1.2, 1.2)};
+            body.angle = rng.Uniform(-3.0, 3.0);
+            scene.bodies.push_back(std::move(body));
+        }
+        const TextbookResult right =
+            TextbookCollide(scene.bodies[0].shape, scene.bodies[0].Xf(), scene.bodies[1].shape, scene.bodies[1].Xf());
+        if (std::abs(right.overlap ? right.depth : right.gap) < 1e-9)
+        {
+            continue;
+        }
+        INFO("pair " << i);
+        CHECK(RunPitfall(Pitfall::UnnormalisedAxes, scene, 0, 1).overlap == right.overlap);
+        CHECK(RunPitfall(Pitfall::UncheckedDirection, scene, 0, 1).overlap == right.overlap);
+        if (right.overlap)
+        {
+            CHECK(RunPitfall(Pitfall::OneShapesAxes, scene, 0, 1).overlap);
+        }
+    }
 }

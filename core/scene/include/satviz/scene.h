@@ -39,6 +39,22 @@ enum class StepView
     Faces,    ///< the face tests as the fast queries run them (Collide, Sweep): one side of an axis per step
 };
 
+/// A classic mistake of SAT implementations.
+enum class Pitfall
+{
+    None,               ///< no mistake: the right algorithm only
+    UnnormalisedAxes,   ///< overlaps measured on edge normals of different lengths, compared as if unit
+    UncheckedDirection, ///< the push taken along the axis as it points, without choosing the shorter way
+    OneShapesAxes,      ///< only A's face normals tested
+    SampledMotion,      ///< a moving pair tested at the start and the end of the step only (tunnelling)
+};
+
+/// The scene-file name of a pitfall ("unnormalised-axes", ...; "none"): the one list of them.
+std::string_view PitfallName(Pitfall pitfall);
+
+/// The pitfall of a name, false for an unknown one.
+bool PitfallFromName(std::string_view name, Pitfall& pitfall);
+
 /// Names of the drawing layers a view can switch on, in drawing order (see render/README.md).
 inline const std::vector<std::string>& ViewLayerNames()
 {
@@ -62,6 +78,7 @@ struct SceneView
     std::string bodyB;                      ///< second body of the pair; empty: the second body
     ViewQuery query = ViewQuery::Automatic; ///< which test to show
     StepView steps = StepView::Textbook;    ///< which algorithm the steps show ("steps": "textbook" or "faces")
+    Pitfall pitfall = Pitfall::None;        ///< a classic mistake shown beside the right answer ("pitfall": name)
     /// Trace step to show, from 0 here; -1: the last step (the verdict). A scene file counts from 1 ("step": 1 is
     /// the first axis, as every view numbers it); 0 from older files also means the first.
     int step = -1;

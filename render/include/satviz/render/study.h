@@ -2,6 +2,7 @@
 // satviz render: the queries run on the pictured pair, with their step traces.
 #pragma once
 
+#include <satviz/render/pitfall.h>
 #include <satviz/scene.h>
 #include <satviz/sweep.h>
 #include <satviz/textbook.h>
@@ -39,6 +40,8 @@ struct PairStudy
     TextbookTrace textbook;                  ///< its trace
     TextbookSweepResult textbookSweepResult; ///< TextbookSweep(A, B), in the textbook view when sweep
     TextbookSweepTrace textbookSweep;        ///< its trace
+    /// The view's pitfall (a classic mistake) run on the pair beside the right answer; ran is false without one.
+    PitfallResult pitfall;
 
     /// The steps are those of the textbook test.
     bool Textbook() const { return steps == StepView::Textbook; }

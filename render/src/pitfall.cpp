@@ -1,0 +1,251 @@
+// SPDX-License-Identifier: MIT
+#include <satviz/collide.h>
+#include <satviz/render/describe.h>
+#include <satviz/render/pitfall.h>
+#include <satviz/sweep.h>
+#include <satviz/textbook.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace satviz
+{
+
+namespace
+{
+
+// A polygon's vertices in the world.
+std::vector<Vec2> World(const Body& body)
+{
+    std::vector<Vec2> out;
+    for (const Vec2& v : body.shape.polygon.vertices)
+    {
+        out.push_back(TransformPoint(body.Xf(), v));
+    }
+    return out;
+}
+
+void Project(const std::vector<Vec2>& points, Vec2 axis, double& lo, double& hi)
+{
+    lo = std::numeric_limits<double>::infinity();
+    hi = -lo;
+    for (const Vec2& p : points)
+    {
+        lo = std::min(lo, Dot(axis, p));
+        hi = std::max(hi, Dot(axis, p));
+    }
+}
+
+std::string AxisName(const Scene& scene, int body, int edge)
+{
+    return scene.bodies[static_cast<size_t>(body)].name + "'s edge " + std::to_string(edge);
+}
+
+// The mistake: overlaps on edge normals that are not unit length, compared as if they were.
+PitfallResult Unnormalised(const Scene& scene, int a, int b, const TextbookResult& right)
+{
+    PitfallResult out;
+    out.ran = true;
+    const std::vector<Vec2> pa = World(scene.bodies[static_cast<size_t>(a)]);
+    const std::vector<Vec2> pb = World(scene.bodies[static_cast<size_t>(b)]);
+    double smallest = std::numeric_limits<double>::infinity();
+    int chosenBody = -1;
+    int chosenEdge = -1;
+    double length = 1.0;
+    out.overlap = true;
+    for (int side = 0; side < 2 && out.overlap; ++side)
+    {
+        const std::vector<Vec2>& own = side == 0 ? pa : pb;
+        for (size_t i = 0; i < own.size() && out.overlap; ++i)
+        {
+            const Vec2 n = RightPerp(own[(i + 1) % own.size()] - own[i]); // length: the edge's
+            double minA = 0.0, maxA = 0.0, minB = 0.0, maxB = 0.0;
+            Project(pa, n, minA, maxA);
+            Project(pb, n, minB, maxB);
+            if (minB > maxA || minA > maxB)
+            {
+                out.overlap = false;
+                break;
+            }
+            const double along = maxA - minB;
+            const double against = maxB - minA;
+            const double overlap = std::min(along, against);
+            if (overlap < smallest)
+            {
+                smallest = overlap;
+                chosenBody = side == 0 ? a : b;
+                chosenEdge = static_cast<int>(i);
+                length = Length(n);
+                out.normal = (along <= against ? 1.0 : -1.0) * Normalize(n);
+            }
+        }
+    }
+    if (!out.overlap)
+    {
+        out.verdict = "Pitfall (unnormalised axes): a gap has the same sign on any axis length, so this mistake "
+                      "still finds the separating axis.";
+        return out;
+    }
+    out.depth = smallest;
+    out.verdict = "Pitfall (unnormalised axes): comparing overlaps on edge normals as long as their edges picks " +
+                  AxisName(scene, chosenBody, chosenEdge) + " (normal " + FormatNumber(length) +
+                  " long) and a 'depth' of " + FormatNumber(smallest) + " = " + FormatNumber(smallest / length) +
+                  " x " + FormatNumber(length) + "; on unit axes the MTV is " + FormatNumber(right.depth) + ".";
+    return out;
+}
+
+// The mistake: the overlap taken as the intervals' common part and B pushed along the axis as it points.
+PitfallResult Unchecked(const TextbookTrace& trace)
+{
+    PitfallResult out;
+    out.ran = true;
+    out.overlap = trace.result.overlap;
+    if (!out.overlap)
+    {
+        out.verdict = "Pitfall (unchecked direction): the shapes are apart, so there is no push to get wrong.";
+        return out;
+    }
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const TextbookAxis& t : trace.axes)
+    {
+        const double common = std::min(t.maxA, t.maxB) - std::max(t.minA, t.minB);
+        if (common < smallest)
+        {
+            smallest = common;
+            out.normal = t.direction;
+        }
+    }
+    out.depth = smallest;
+    const bool inward = Dot(out.normal, trace.result.normal) < 0.0;
+    out.verdict = "Pitfall (unchecked direction): taking the intervals' common part, " + FormatNumber(smallest) +
+                  ", and pushing B along the axis as it happens to point, " +
+                  (inward ? std::string("drives B into A instead of out of it")
+                          : std::string("happens to push the right way here, by luck")) +
+                  "; the MTV moves B " + FormatNumber(trace.result.depth) + " along (" +
+                  FormatNumber(trace.result.normal.x) + ", " + FormatNumber(trace.result.normal.y) + ").";
+    return out;
+}
+
+// The mistake: only A's face normals tested.
+PitfallResult OneShape(const Scene& scene, int a, int b, const TextbookTrace& right)
+{
+    PitfallResult out;
+    out.ran = true;
+    const std::vector<Vec2> pa = World(scene.bodies[static_cast<size_t>(a)]);
+    const std::vector<Vec2> pb = World(scene.bodies[static_cast<size_t>(b)]);
+    out.overlap = true;
+    double smallest = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < pa.size(); ++i)
+    {
+        const Vec2 n = Normalize(RightPerp(pa[(i + 1) % pa.size()] - pa[i]));
+        double minA = 0.0, maxA = 0.0, minB = 0.0, maxB = 0.0;
+        Project(pa, n, minA, maxA);
+        Project(pb, n, minB, maxB);
+        if (minB > maxA || minA > maxB)
+        {
+            out.overlap = false;
+            break;
+        }
+        const double along = maxA - minB;
+        const double against = maxB - minA;
+        if (std::min(along, against) < smallest)
+        {
+            smallest = std::min(along, against);
+            out.normal = (along <= against ? 1.0 : -1.0) * n;
+        }
+    }
+    out.depth = out.overlap ? smallest : 0.0;
+    const std::string nameA = scene.bodies[static_cast<size_t>(a)].name;
+    if (out.overlap && !right.result.overlap)
+    {
+        out.verdict = "Pitfall (only " + nameA + "'s axes): no face normal of " + nameA +
+                      " shows a gap, so it says the shapes collide; the separating axis is a face normal of the other "
+                      "shape.";
+    }
+    else if (out.overlap)
+    {
+        out.verdict = "Pitfall (only " + nameA + "'s axes): it finds the collision, with a 'depth' of " +
+                      FormatNumber(smallest) + " where the MTV is " + FormatNumber(right.result.depth) + ".";
+    }
+    else
+    {
+        out.verdict = "Pitfall (only " + nameA + "'s axes): here one of " + nameA +
+                      "'s face normals separates, so the mistake goes unnoticed.";
+    }
+    return out;
+}
+
+// The mistake: a moving pair tested where it is at the start and at the end of the step.
+PitfallResult Sampled(const Scene& scene, int a, int b)
+{
+    PitfallResult out;
+    const Body& ba = scene.bodies[static_cast<size_t>(a)];
+    const Body& bb = scene.bodies[static_cast<size_t>(b)];
+    if (ba.velocity == bb.velocity)
+    {
+        out.verdict = "Pitfall (sampled motion): nothing moves relative to the other, so there is nothing to sample.";
+        return out;
+    }
+    out.ran = true;
+    auto at = [](const Body& body, double t) { return MakeTransform(body.position + t * body.velocity, body.angle); };
+    const bool start = Overlap(ba.shape, at(ba, 0.0), bb.shape, at(bb, 0.0));
+    const bool end = Overlap(ba.shape, at(ba, 1.0), bb.shape, at(bb, 1.0));
+    out.overlap = start || end;
+    const SweepResult swept = Sweep(ba.shape, ba.Xf(), ba.velocity, bb.shape, bb.Xf(), bb.velocity);
+    const std::string samples = std::string("at t = 0 the shapes ") + (start ? "overlap" : "are apart") +
+                                ", at t = 1 they " + (end ? "overlap" : "are apart");
+    if (!out.overlap && swept.status == SweepStatus::Hit)
+    {
+        out.verdict = "Pitfall (sampled motion): " + samples +
+                      ", so it sees no collision: the shapes tunnel "
+                      "through each other. The swept test finds first contact at t = " +
+                      FormatNumber(swept.toi) + ".";
+    }
+    else
+    {
+        out.verdict = "Pitfall (sampled motion): " + samples +
+                      "; here the samples catch the contact, but only by the "
+                      "luck of where the step ends.";
+    }
+    return out;
+}
+
+} // namespace
+
+PitfallResult RunPitfall(Pitfall pitfall, const Scene& scene, int a, int b)
+{
+    const Body& ba = scene.bodies[static_cast<size_t>(a)];
+    const Body& bb = scene.bodies[static_cast<size_t>(b)];
+    if (pitfall == Pitfall::None)
+    {
+        return {};
+    }
+    if (pitfall == Pitfall::SampledMotion)
+    {
+        return Sampled(scene, a, b);
+    }
+    if (ba.shape.type != ShapeType::Polygon || bb.shape.type != ShapeType::Polygon)
+    {
+        PitfallResult none;
+        none.verdict = "(This pitfall is shown for two polygons.)";
+        return none;
+    }
+    TextbookTrace trace;
+    TextbookCollide(ba.shape, ba.Xf(), bb.shape, bb.Xf(), &trace);
+    switch (pitfall)
+    {
+    case Pitfall::UnnormalisedAxes:
+        return Unnormalised(scene, a, b, trace.result);
+    case Pitfall::UncheckedDirection:
+        return Unchecked(trace);
+    case Pitfall::OneShapesAxes:
+        return OneShape(scene, a, b, trace);
+    default:
+        break;
+    }
+    return {};
+}
+
+} // namespace satviz
