@@ -1080,10 +1080,14 @@ void App::StepControls()
     }
     // A classic mistake beside the right answer: the library never takes it, the view shows what it would do.
     int pitfall = static_cast<int>(scene.view.pitfall);
-    const char* pitfalls[] = {"no pitfall", "pitfall: axes not normalised", "pitfall: push direction not checked",
-                              "pitfall: only A's axes tested", "pitfall: motion sampled, not swept"};
+    const char* pitfalls[] = {"no pitfall",
+                              "pitfall: axes not normalised",
+                              "pitfall: push direction not checked",
+                              "pitfall: only A's axes tested",
+                              "pitfall: motion sampled, not swept",
+                              "pitfall: float on world coordinates"};
     ImGui::SetNextItemWidth(-1.0f);
-    if (ImGui::Combo("##pitfall", &pitfall, pitfalls, 5))
+    if (ImGui::Combo("##pitfall", &pitfall, pitfalls, static_cast<int>(std::size(pitfalls))))
     {
         scene.view.pitfall = static_cast<Pitfall>(pitfall);
         dirty = true;

@@ -33,6 +33,7 @@ set(SATVIZ_FIGURE_SCENES
   l13_apart
   l13_sweep
   pitfall_direction
+  pitfall_float
   pitfall_one_shape
   pitfall_tunnel
   pitfall_unnormalised

@@ -468,7 +468,7 @@ SceneView ParseView(const Json& value, const Scene& scene)
         if (!PitfallFromName(name, view.pitfall))
         {
             Fail(path + ".pitfall", "expected \"none\", \"unnormalised-axes\", \"unchecked-direction\", "
-                                    "\"one-shapes-axes\" or \"sampled-motion\", got \"" +
+                                    "\"one-shapes-axes\", \"sampled-motion\" or \"float-world\", got \"" +
                                         name + "\"");
         }
     }
@@ -1043,6 +1043,7 @@ constexpr std::pair<Pitfall, std::string_view> kPitfallNames[] = {
     {Pitfall::UncheckedDirection, "unchecked-direction"},
     {Pitfall::OneShapesAxes, "one-shapes-axes"},
     {Pitfall::SampledMotion, "sampled-motion"},
+    {Pitfall::FloatWorld, "float-world"},
 };
 
 } // namespace

@@ -212,6 +212,69 @@ PitfallResult Sampled(const Scene& scene, int a, int b)
     return out;
 }
 
+// The mistake: the world coordinates in float, where far from the origin they keep only a few decimals.
+PitfallResult FloatWorld(const Scene& scene, int a, int b, const TextbookResult& right)
+{
+    PitfallResult out;
+    out.ran = true;
+    auto world = [&](const Body& body) {
+        const RotT<float> q = MakeRot(static_cast<float>(body.angle));
+        const Vec2T<float> p = ConvertVec<float>(body.position);
+        std::vector<Vec2T<float>> points;
+        for (const Vec2& v : body.shape.polygon.vertices)
+        {
+            points.push_back(Rotate(q, ConvertVec<float>(v)) + p);
+        }
+        return points;
+    };
+    const std::vector<Vec2T<float>> pa = world(scene.bodies[static_cast<size_t>(a)]);
+    const std::vector<Vec2T<float>> pb = world(scene.bodies[static_cast<size_t>(b)]);
+    auto project = [](const std::vector<Vec2T<float>>& points, Vec2T<float> n, float& lo, float& hi) {
+        lo = std::numeric_limits<float>::infinity();
+        hi = -lo;
+        for (const Vec2T<float>& p : points)
+        {
+            lo = std::min(lo, Dot(n, p));
+            hi = std::max(hi, Dot(n, p));
+        }
+    };
+    out.overlap = true;
+    float smallest = std::numeric_limits<float>::infinity();
+    for (int side = 0; side < 2 && out.overlap; ++side)
+    {
+        const std::vector<Vec2T<float>>& own = side == 0 ? pa : pb;
+        for (size_t i = 0; i < own.size(); ++i)
+        {
+            const Vec2T<float> n = Normalize(RightPerp(own[(i + 1) % own.size()] - own[i]));
+            float minA = 0.0f, maxA = 0.0f, minB = 0.0f, maxB = 0.0f;
+            project(pa, n, minA, maxA);
+            project(pb, n, minB, maxB);
+            if (minB > maxA || minA > maxB)
+            {
+                out.overlap = false;
+                break;
+            }
+            const float along = maxA - minB;
+            const float against = maxB - minA;
+            if (std::min(along, against) < smallest)
+            {
+                smallest = std::min(along, against);
+                out.normal = ConvertVec<double>((along <= against ? 1.0f : -1.0f) * n);
+            }
+        }
+    }
+    out.depth = out.overlap ? static_cast<double>(smallest) : 0.0;
+    const Body& body = scene.bodies[static_cast<size_t>(a)];
+    const float far = static_cast<float>(std::max(std::abs(body.position.x), std::abs(body.position.y)));
+    const std::string step = ShortestDecimal(std::nextafter(far, INFINITY) - far);
+    const std::string said = out.overlap ? "a depth of " + FormatNumber(out.depth) : std::string("no collision");
+    out.verdict = "Pitfall (float on world coordinates): at " + FormatNumber(far) +
+                  " from the origin a float coordinate moves in steps of " + step + ", so it finds " + said +
+                  ", where double in A's frame finds " +
+                  (right.overlap ? "a depth of " + FormatNumber(right.depth) : std::string("no collision")) + ".";
+    return out;
+}
+
 } // namespace
 
 PitfallResult RunPitfall(Pitfall pitfall, const Scene& scene, int a, int b)
@@ -242,6 +305,8 @@ PitfallResult RunPitfall(Pitfall pitfall, const Scene& scene, int a, int b)
         return Unchecked(trace);
     case Pitfall::OneShapesAxes:
         return OneShape(scene, a, b, trace);
+    case Pitfall::FloatWorld:
+        return FloatWorld(scene, a, b, trace.result);
     default:
         break;
     }

@@ -801,6 +801,19 @@ TEST_CASE("Each pitfall scene shows its mistake going wrong beside the right ans
     }
 }
 
+TEST_CASE("The float pitfall far from the origin loses an overlap that double in A's frame keeps", "[painter][pitfall]")
+{
+    const Scene scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/pitfall_float.json");
+    const FigureSetup setup = SetUpFigure(scene, {});
+    const PitfallResult& p = setup.study.pitfall;
+    REQUIRE(p.ran);
+    REQUIRE(setup.study.textbookResult.overlap);
+    CHECK(setup.study.textbookResult.depth == Approx(0.03).margin(1e-9));
+    // Float coordinates at 1e6 step by 0.0625: the 0.03 overlap cannot survive them.
+    CHECK(std::abs(p.depth - 0.03) > 0.02);
+    CHECK(p.verdict.find("steps of 0.0625") != std::string::npos);
+}
+
 TEST_CASE("Pitfalls on random pairs: scaling keeps every verdict, fewer axes never miss a collision",
           "[painter][pitfall][property]")
 {

@@ -47,6 +47,7 @@ enum class Pitfall
     UncheckedDirection, ///< the push taken along the axis as it points, without choosing the shorter way
     OneShapesAxes,      ///< only A's face normals tested
     SampledMotion,      ///< a moving pair tested at the start and the end of the step only (tunnelling)
+    FloatWorld,         ///< float arithmetic on world coordinates, which far from the origin lose the overlap
 };
 
 /// The scene-file name of a pitfall ("unnormalised-axes", ...; "none"): the one list of them.
