@@ -142,7 +142,8 @@ std::string PitfallNote(const PairStudy& study)
     return study.pitfall.verdict.empty() ? "" : " " + study.pitfall.verdict;
 }
 
-// "the normal of floor's edge 2 (floor's edge 0 and box's edges 0 and 2 are parallel to it)": one axis, many faces.
+// "the normal of floor's edge 2 (floor's edge 0 and box's edges 0 and 2 are parallel to that edge)": one axis, many
+// faces.
 std::string DescribeFaces(const Scene& scene, const PairStudy& study, const AxisRef* faces, int count)
 {
     std::string text = DescribeAxis(scene, study, faces[0]);
@@ -174,7 +175,10 @@ std::string DescribeFaces(const Scene& scene, const PairStudy& study, const Axis
         others += (others.empty() ? "" : " and ") + Possessive(NameOf(scene, study, shape)) +
                   (edges.size() == 1 ? " edge " : " edges ") + list;
     }
-    return others.empty() ? text : text + " (" + others + (count == 2 ? " is" : " are") + " parallel to it)";
+    // Parallel to the face that names the axis, so their normals share its line.
+    const std::string relation =
+        faces[0].kind == AxisKind::FaceNormal ? " parallel to that edge)" : " on the same line)";
+    return others.empty() ? text : text + " (" + others + (count == 2 ? " is" : " are") + relation;
 }
 
 std::string TextbookAxisStep(const Scene& scene, const PairStudy& study, int step)
