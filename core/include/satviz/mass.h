@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// satviz: mass, centre of mass and moment of inertia of a shape of uniform density.
+#pragma once
+
+#include <satviz/shape.h>
+
+namespace satviz
+{
+
+/// The mass properties of a shape of uniform density, in its body frame.
+struct MassProperties
+{
+    double mass = 0.0;    ///< density times area
+    Vec2 center{};        ///< centre of mass, body frame
+    double inertia = 0.0; ///< moment of inertia about the centre of mass
+};
+
+/// Mass, centre of mass and moment of inertia of `shape` with `density` (mass per unit area, > 0).
+/// Polygon: the sum over the triangles that the centroid fans out to the edges, each triangle's area and second
+/// moment taken exactly (Ericson, Real-Time Collision Detection, and Catto's Box2D use the same fan; the fan's apex
+/// at a point inside the polygon keeps every triangle small, so the sums lose no digits far from the body origin).
+/// Circle: mass density pi r^2, inertia m r^2 / 2.
+MassProperties ComputeMass(const Shape& shape, double density);
+
+/// Radius of the largest circle about the centre of mass inside the shape: the distance from `center` to the
+/// nearest face of a polygon, the radius of a circle less the offset of `center` from the circle's centre. Used
+/// to decide whether a body moves far within a step compared with its size.
+double InnerRadius(const Shape& shape, Vec2 center);
+
+/// Largest distance from `center` to a point of the shape: the radius of the circle about `center` that holds it.
+/// Bounds how far a point of the shape moves when the body turns.
+double OuterRadius(const Shape& shape, Vec2 center);
+
+} // namespace satviz

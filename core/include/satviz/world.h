@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: MIT
+// satviz: a rigid-body world: bodies that fall, collide, bounce, slide, stick and spin.
+#pragma once
+
+#include <satviz/broadphase.h>
+#include <satviz/manifold.h>
+#include <satviz/mass.h>
+#include <satviz/material.h>
+#include <satviz/shape.h>
+#include <satviz/solver_trace.h>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace satviz
+{
+
+/// A static body never moves (infinite mass); a dynamic body moves under gravity and contacts.
+enum class BodyType
+{
+    Static,  ///< fixed in place: ground, walls, slopes
+    Dynamic, ///< moved by the world
+};
+
+/// What a body is made of and how it starts: the input of AddBody.
+struct BodyDef
+{
+    Shape shape;                       ///< the shape, in the body frame
+    BodyType type = BodyType::Dynamic; ///< static or dynamic
+    double density = 1.0;              ///< mass per unit area of a dynamic body, > 0
+    Material material{};               ///< restitution and frictions
+    Vec2 position{};                   ///< world position of the body origin
+    double angle = 0.0;                ///< rotation in radians, counter-clockwise
+    Vec2 velocity{};                   ///< velocity of the centre of mass, units per time unit
+    double angularVelocity = 0.0;      ///< radians per time unit, counter-clockwise
+};
+
+/// A body of the world. The state is public to read; change it between steps only through the fields that say so.
+struct RigidBody
+{
+    Shape shape;                       ///< the shape, in the body frame
+    BodyType type = BodyType::Dynamic; ///< static or dynamic
+    Material material{};               ///< restitution and frictions
+    Vec2 position{};                   ///< world position of the body origin
+    double angle = 0.0;                ///< rotation in radians
+    Vec2 velocity{};                   ///< velocity of the centre of mass
+    double angularVelocity = 0.0;      ///< radians per time unit
+    double mass = 0.0;                 ///< 0 for a static body
+    double invMass = 0.0;              ///< 1 / mass, 0 for a static body
+    double inertia = 0.0;              ///< moment of inertia about the centre of mass, 0 for a static body
+    double invInertia = 0.0;           ///< 1 / inertia, 0 for a static body
+    Vec2 localCenter{};                ///< centre of mass in the body frame
+    double innerRadius = 0.0;          ///< InnerRadius about the centre of mass: the body's size for the sweep rule
+    double outerRadius = 0.0;          ///< OuterRadius about the centre of mass: bounds a turning point's motion
+    bool awake = true;                 ///< false while asleep: not moved, not solved, until something touches it
+    double sleepTime = 0.0;            ///< how long the body has been slower than the sleep thresholds
+
+    /// The body's transform (body frame to world).
+    Transform Xf() const { return MakeTransform(position, angle); }
+    /// The centre of mass in world space.
+    Vec2 WorldCenter() const { return TransformPoint(Xf(), localCenter); }
+};
+
+/// How the world steps, and which of its savings are on. Every saving can be switched off to measure what it saves;
+/// the results stay the same up to the order in which contacts are solved, except sleeping, which freezes bodies
+/// that would otherwise creep by rounding.
+struct WorldSettings
+{
+    Vec2 gravity{};             ///< acceleration, units per time unit squared
+    int velocityIterations = 8; ///< sequential-impulse passes over the contacts for the velocities
+    int positionIterations = 3; ///< split-impulse passes that remove overlap
+    /// Overlap left in place, in units: contacts are kept touching by this much so that they persist from step to
+    /// step (and warm start), and the push-out never overshoots into a gap.
+    double linearSlop = 0.005;
+    /// Fraction of the overlap beyond the slop that the split impulse removes per step (Baumgarte's factor, applied
+    /// to positions only, so removing overlap adds no velocity).
+    double splitFactor = 0.2;
+    /// Below this approach speed (units per time unit) a contact does not bounce: resting contacts stay at rest.
+    double restitutionThreshold = 0.5;
+    /// A dynamic body whose points can move more than this fraction of its inner radius within a step is swept:
+    /// its hits are found by time of impact and taken in time order (see Step).
+    double sweepFraction = 0.5;
+    /// Most time-ordered hits a body takes in one step; after that it stops at its last hit for the rest of the
+    /// step (a body wedged between two walls cannot stall the step).
+    int maxHitsPerBody = 16;
+    /// Below these speeds (units and radians per time unit) a body counts as resting; an island of bodies resting
+    /// for timeToSleep goes to sleep.
+    double sleepLinearSpeed = 0.01;
+    double sleepAngularSpeed = 0.035; ///< see sleepLinearSpeed
+    double timeToSleep = 0.5;         ///< see sleepLinearSpeed
+
+    bool broadphase = true;      ///< sort and sweep; off: every pair goes to the narrowphase
+    bool skipStaticPairs = true; ///< no pair of two static bodies is considered; off: they are tested too
+    bool sweepOnlyFast = true;   ///< only fast bodies are swept; off: every moving dynamic body is
+    bool sleeping = true;        ///< resting islands sleep; off: every dynamic body is stepped always
+};
+
+/// What one step did with the pairs of bodies, stage by stage: how many were considered and how many each
+/// saving removed, so a view can show what was skipped.
+struct StepCounts
+{
+    int64_t pairs = 0;         ///< pairs of bodies: n (n - 1) / 2
+    int64_t staticPairs = 0;   ///< of those, skipped because both bodies are static
+    int64_t sleepingPairs = 0; ///< skipped because neither body is awake (asleep or static, at least one asleep)
+    int64_t boundsApart = 0;   ///< skipped by the broadphase: their bounding boxes do not overlap
+    int64_t tested = 0;        ///< given to the narrowphase (Collide)
+    int64_t touching = 0;      ///< found touching or overlapping: contacts for the solver
+    int64_t swept = 0;         ///< pairs swept for a time of impact (fast bodies)
+    int64_t hits = 0;          ///< time-ordered hits resolved within the step
+    int64_t broadphaseComparisons = 0; ///< box comparisons the broadphase made
+    int awakeBodies = 0;               ///< dynamic bodies awake after the step
+    int sleepingBodies = 0;            ///< dynamic bodies asleep after the step
+};
+
+/// One contact point of a contact, with the impulses the solver accumulated on it.
+struct WorldContactPoint
+{
+    Vec2 point{};                ///< world position (from Collide)
+    double separation = 0.0;     ///< < 0: overlap
+    double normalImpulse = 0.0;  ///< accumulated normal impulse of the last step
+    double tangentImpulse = 0.0; ///< accumulated friction impulse of the last step
+    bool stuck = false;          ///< static friction held this point in the last step
+    uint32_t key = 0;            ///< identifies the point from step to step (reference face, incident edge, slot)
+};
+
+/// A touching pair of bodies: their manifold and the solver's state for it. Bodies a < b.
+struct WorldContact
+{
+    int a = -1;                    ///< first body
+    int b = -1;                    ///< second body
+    Vec2 normal{};                 ///< unit normal from a to b
+    WorldContactPoint points[2]{}; ///< contact points, valid up to pointCount
+    int pointCount = 0;            ///< 1 or 2
+    ContactMaterial material{};    ///< combined restitution and frictions
+};
+
+/// The world: bodies, settings and what the last step found.
+struct World
+{
+    WorldSettings settings{};           ///< how to step
+    std::vector<RigidBody> bodies;      ///< the bodies, by index
+    double time = 0.0;                  ///< simulated time
+    StepCounts counts{};                ///< what the last step did
+    std::vector<WorldContact> contacts; ///< contacts of the last step, sorted by (a, b)
+    /// When not null, the solver records what it does for the pair (trace->bodyA, trace->bodyB) during each step
+    /// (cleared at the start of the step). Null: nothing is recorded and nothing is paid.
+    ContactSolveTrace* trace = nullptr;
+
+    /// The broadphase's box order, kept between steps so that sorting costs close to linear time. Working memory,
+    /// not state: two worlds with the same bodies and contacts step alike whatever it holds.
+    SortAndSweep broadphase;
+};
+
+/// Adds a body, computing its mass properties from the shape and the density (a static body gets none). Returns
+/// its index. The definition must be valid: a finite state, a shape built by the polygon builders or a circle of
+/// positive radius, a positive density for a dynamic body, non-negative finite material coefficients
+/// (ValidateBodyDef says what is wrong).
+int AddBody(World& world, const BodyDef& def);
+
+/// Empty when the definition is valid, else what is wrong, naming the field ("density must be > 0", ...).
+std::string ValidateBodyDef(const BodyDef& def);
+
+/// Advances the world by `dt` (> 0) time units. One step, after Catto's sequential impulses (Box2D) with the
+/// hits of fast bodies taken in time order:
+///  1. Bounds: each body's box; the broadphase pairs the overlapping ones (skipping static-static and sleeping
+///     pairs); the narrowphase (Collide) turns the touching pairs into contacts, keeping the impulses of the points
+///     that persist from the last step (warm starting).
+///  2. Velocities: gravity, then the velocity passes: at each contact point a normal impulse that stops the
+///     approach, or, above the restitution threshold, reverses it times the restitution (the approach speed is
+///     taken before the step's gravity and before the solve), accumulated and clamped to push only; and a
+///     friction impulse with its own effective mass, held within static friction times the normal impulse while
+///     the point sticks, else the dynamic limit (Coulomb's cone). Two-point contacts solve their normal impulses
+///     together (a 2x2 block), so a flat landing does not spin.
+///  3. Overlap: split impulses (Catto; Bullet) push overlapping bodies apart in the positions only, by the overlap
+///     beyond the slop times splitFactor, so removing overlap adds no kinetic energy; bouncing contacts are left
+///     to separate by their own velocity.
+///  4. Positions: each body moves with its velocity. A fast body (see WorldSettings::sweepFraction) is swept
+///     against the bodies its swept box meets: translation by Sweep, turning by conservative advancement (the
+///     distance bound of SAT divided by the fastest approach a turning point can make). The earliest hit of the
+///     world comes first: its two bodies move to that time, the hit is resolved with the same impulses, their
+///     later hits are found again, and the step goes on, so two hits in one step happen in order and no body
+///     passes through another at any speed.
+///  5. Sleep: islands of touching bodies that have rested for timeToSleep sleep; a body that touches a sleeping
+///     one wakes its island.
+/// Deterministic: the same world stepped the same way gives the same bits, in every build.
+void Step(World& world, double dt);
+
+/// The pairs of bodies whose shapes touch or overlap, (i, j) with i < j in ascending order, found through the
+/// broadphase (sort and sweep) and the Overlap test: what a scene's bodies touch without stepping it.
+std::vector<std::pair<int, int>> TouchingPairs(const std::vector<Shape>& shapes, const std::vector<Transform>& xfs);
+
+/// Total kinetic energy of the dynamic bodies: linear plus rotational.
+double KineticEnergy(const World& world);
+
+/// Total linear momentum of the dynamic bodies.
+Vec2 LinearMomentum(const World& world);
+
+/// Total angular momentum of the dynamic bodies about `origin`: spin plus the moment of the linear momentum.
+double AngularMomentum(const World& world, Vec2 origin);
+
+} // namespace satviz
