@@ -153,7 +153,28 @@ void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<
         }
     }
     sweep.comparisons = comparisons;
-    std::sort(pairs.begin(), pairs.end());
+    // A counting sort on the first index, then each (short) run sorted on the second: linear in the pairs.
+    std::vector<int> start(static_cast<size_t>(n) + 1, 0);
+    for (const auto& pair : pairs)
+    {
+        ++start[pair.first + 1];
+    }
+    for (int i = 0; i < n; ++i)
+    {
+        start[i + 1] += start[i];
+    }
+    std::vector<std::pair<int, int>> sorted(pairs.size());
+    for (const auto& pair : pairs)
+    {
+        sorted[start[pair.first]++] = pair;
+    }
+    int begin = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        std::sort(sorted.begin() + begin, sorted.begin() + start[i]);
+        begin = start[i];
+    }
+    pairs.swap(sorted);
 }
 
 void FindPairsBruteForce(const std::vector<Aabb>& boxes, std::vector<std::pair<int, int>>& pairs,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// satviz: the contact solver's setup, warm start and split impulse.
+// satviz: the contact solver's setup and warm start.
 
 #include "contact_solver.h"
 
@@ -54,30 +54,6 @@ void WarmStart(SolverContact& c, SolverBody& a, SolverBody& b)
     {
         const SolverPoint& p = c.points[i];
         ApplyImpulse(a, b, p.rA, p.rB, p.normalImpulse * c.normal + p.tangentImpulse * t);
-    }
-}
-
-void SolveContactPosition(SolverContact& c, SolverBody& a, SolverBody& b, double dt, double slop, double factor)
-{
-    const Vec2 n = c.normal;
-    for (int i = 0; i < c.count; ++i)
-    {
-        SolverPoint& p = c.points[i];
-        if (p.bounce > 0.0)
-        {
-            continue;
-        }
-        const double excess = -p.separation - slop;
-        const double target = excess > 0.0 ? factor * excess / dt : 0.0;
-        const Vec2 dv = (b.pv + b.pw * LeftPerp(p.rB)) - (a.pv + a.pw * LeftPerp(p.rA));
-        const double wanted = p.pseudoImpulse - p.normalMass * (Dot(dv, n) - target);
-        const double next = wanted > 0.0 ? wanted : 0.0;
-        const Vec2 impulse = (next - p.pseudoImpulse) * n;
-        p.pseudoImpulse = next;
-        a.pv = a.pv - a.invMass * impulse;
-        a.pw -= a.invInertia * Cross(p.rA, impulse);
-        b.pv = b.pv + b.invMass * impulse;
-        b.pw += b.invInertia * Cross(p.rB, impulse);
     }
 }
 

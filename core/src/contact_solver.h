@@ -15,8 +15,6 @@ struct SolverBody
 {
     Vec2 v{};                ///< linear velocity of the centre of mass
     double w = 0.0;          ///< angular velocity
-    Vec2 pv{};               ///< pseudo-velocity of the split impulse: moves the position only
-    double pw = 0.0;         ///< angular pseudo-velocity
     double invMass = 0.0;    ///< 0 for static and sleeping bodies
     double invInertia = 0.0; ///< 0 for static and sleeping bodies
 };
@@ -32,7 +30,6 @@ struct SolverPoint
     double bounce = 0.0;         ///< separating normal speed the restitution asks for (0: none)
     double normalImpulse = 0.0;  ///< accumulated normal impulse
     double tangentImpulse = 0.0; ///< accumulated friction impulse
-    double pseudoImpulse = 0.0;  ///< accumulated split impulse
     bool stuck = false;          ///< static friction held in the last pass
 };
 
@@ -196,11 +193,5 @@ void SolveContactVelocity(SolverContact& c, SolverBody& a, SolverBody& b, int pa
         recorder.Pass(record[i]);
     }
 }
-
-/// One split-impulse pass (Catto; Bullet's split impulse): pseudo-velocities that push the bodies apart by
-/// splitFactor times the overlap beyond the slop per step, accumulated and clamped to push only. They move the
-/// positions in this step and are then dropped, so removing overlap gives the bodies no velocity. Bouncing points
-/// are left out: their own velocity separates them.
-void SolveContactPosition(SolverContact& c, SolverBody& a, SolverBody& b, double dt, double slop, double factor);
 
 } // namespace satviz::detail

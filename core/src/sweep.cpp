@@ -427,8 +427,8 @@ int BracketedSupport(const PolygonT<S>& polygon, Vec2T<S> d, int lo, int hi)
 {
     const int n = polygon.Count();
     const Chain chain{lo, n};
-    const int k = FirstPast(hi >= lo ? hi - lo : hi - lo + n,
-                            [&](int j) { return !(Dot(d, polygon.Edge(chain.At(j))) > S(0)); });
+    const int k =
+        FirstPast(hi >= lo ? hi - lo : hi - lo + n, [&](int j) { return !(Dot(d, polygon.Edge(chain.At(j))) > S(0)); });
     return ClimbFrom(polygon, d, chain.At(k));
 }
 
@@ -659,8 +659,7 @@ int CrossingFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, Vec2T<S>
     const int n = ref.Count();
     const auto past = [&](int k) {
         const int face = run.At(k);
-        const int support =
-            BracketedSupport(inc.polygon, InvRotate(inc.xf.q, -ref.Normal(face)), supportLo, supportHi);
+        const int support = BracketedSupport(inc.polygon, InvRotate(inc.xf.q, -ref.Normal(face)), supportLo, supportHi);
         const Vec2T<S> end = ref.vertices[Next(face, n)] - TransformPoint(inc.xf, inc.polygon.vertices[support]);
         const S side = Cross(end, velocity);
         const bool beyond = facing ? side >= S(0) : side <= S(0);

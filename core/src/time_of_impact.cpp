@@ -40,14 +40,12 @@ constexpr int kMaxAdvances = 64;
 
 } // namespace
 
-TimeOfImpactStage::TimeOfImpactStage(World& world, double dt, const std::vector<Vec2>& centers,
-                                     const std::vector<SolverBody>& solverBodies)
-    : m_world(world), m_dt(dt)
+TimeOfImpactStage::TimeOfImpactStage(World& world, double dt, const std::vector<Transform>& xfs,
+                                     const std::vector<Vec2>& centers, const std::vector<SolverBody>& solverBodies)
+    : m_world(world), m_dt(dt), m_xfs(xfs)
 {
     const int n = static_cast<int>(world.bodies.size());
     m_motion.resize(n);
-    m_pseudo.assign(n, Vec2{});
-    m_pseudoTurn.assign(n, 0.0);
     for (int i = 0; i < n; ++i)
     {
         const RigidBody& body = world.bodies[i];
@@ -57,10 +55,8 @@ TimeOfImpactStage::TimeOfImpactStage(World& world, double dt, const std::vector<
         if (IsAwakeDynamic(body))
         {
             m.moves = true;
-            m_pseudo[i] = solverBodies[i].pv;
-            m_pseudoTurn[i] = solverBodies[i].pw;
-            m.v = body.velocity + m_pseudo[i];
-            m.w = body.angularVelocity + m_pseudoTurn[i];
+            m.v = solverBodies[i].v;
+            m.w = solverBodies[i].w;
         }
     }
 }
@@ -77,7 +73,11 @@ Transform TimeOfImpactStage::PoseAt(int i, double t) const
     const RigidBody& body = m_world.bodies[i];
     if (!m.moves)
     {
-        return body.Xf();
+        return m_xfs[i];
+    }
+    if (t == m.t && t == 0.0)
+    {
+        return m_xfs[i];
     }
     if (t == m.t)
     {
@@ -312,11 +312,11 @@ void TimeOfImpactStage::Resolve(const Event& event)
     SolverBody sa, sb;
     if (a.type == BodyType::Dynamic)
     {
-        sa = {a.velocity, a.angularVelocity, {}, 0.0, a.invMass, a.invInertia};
+        sa = {a.velocity, a.angularVelocity, a.invMass, a.invInertia};
     }
     if (b.type == BodyType::Dynamic)
     {
-        sb = {b.velocity, b.angularVelocity, {}, 0.0, b.invMass, b.invInertia};
+        sb = {b.velocity, b.angularVelocity, b.invMass, b.invInertia};
     }
     SolverContact c;
     c.a = i;
@@ -379,19 +379,17 @@ void TimeOfImpactStage::Resolve(const Event& event)
             m_fast[k] = 0;
             continue;
         }
-        // A body that takes a hit moves with its velocity alone for the rest of the step: its split-impulse push
-        // waits for the next step, so that the hit leaves it not approaching the other body.
-        m_pseudo[k] = {};
-        m_pseudoTurn[k] = 0.0;
         m.v = body.velocity;
         m.w = body.angularVelocity;
         m_fast[k] = m_fast[k] || IsFast(k);
         const double speed = Speed(k);
-        if (speed > m_reachSpeed[k])
+        const Aabb reach = Reach(k, speed);
+        const Aabb& drawn = m_reach[k];
+        if (reach.min.x < drawn.min.x || reach.min.y < drawn.min.y || reach.max.x > drawn.max.x ||
+            reach.max.y > drawn.max.y)
         {
-            // Faster than its reach was drawn for: find the bodies it can reach now.
-            m_reachSpeed[k] = speed;
-            m_reach[k] = Reach(k, speed);
+            // It can now reach beyond the box its pairs were found with: find the bodies it can reach now.
+            m_reach[k] = AabbUnion(drawn, reach);
             for (int o = 0; o < static_cast<int>(world.bodies.size()); ++o)
             {
                 if (o != k && AabbOverlap(m_reach[k], m_reach[o]) &&
@@ -439,12 +437,10 @@ void TimeOfImpactStage::Run()
     }
     if (anyFast)
     {
-        m_reachSpeed.assign(n, 0.0);
         m_reach.resize(n);
         for (int i = 0; i < n; ++i)
         {
-            m_reachSpeed[i] = m_motion[i].moves ? Speed(i) : 0.0;
-            m_reach[i] = Reach(i, m_reachSpeed[i]);
+            m_reach[i] = Reach(i, m_motion[i].moves ? Speed(i) : 0.0);
         }
         std::vector<std::pair<int, int>> pairs;
         FindPairs(world.sweptBroadphase, m_reach, pairs, SkipSlowPair, &m_fast);
@@ -485,9 +481,9 @@ void TimeOfImpactStage::Run()
             continue;
         }
         RigidBody& body = world.bodies[i];
-        const Transform xf = PoseAt(i, 1.0);
+        const Vec2 center = CenterAt(i, 1.0);
         body.angle = m.angle + (1.0 - m.t) * m_dt * m.w;
-        body.position = xf.p;
+        body.position = center - Rotate(MakeRot(body.angle), body.localCenter);
     }
 }
 

@@ -34,9 +34,9 @@ namespace satviz::detail
 class TimeOfImpactStage
 {
   public:
-    /// The stage for `world`'s bodies, with the solved velocities and pseudo-velocities of `solverBodies` and the
-    /// centres of mass at the start of the step.
-    TimeOfImpactStage(World& world, double dt, const std::vector<Vec2>& centers,
+    /// The stage for `world`'s bodies, with the solved velocities of `solverBodies`, the
+    /// transforms and the centres of mass at the start of the step.
+    TimeOfImpactStage(World& world, double dt, const std::vector<Transform>& xfs, const std::vector<Vec2>& centers,
                       const std::vector<SolverBody>& solverBodies);
     /// Moves the bodies to the end of the step.
     void Run();
@@ -47,8 +47,8 @@ class TimeOfImpactStage
         Vec2 center{};      // centre of mass at time t
         double angle = 0.0; // angle at time t
         double t = 0.0;     // the body's time, as a fraction of the step
-        Vec2 v{};           // velocity of the motion (solved velocity plus split-impulse pseudo-velocity)
-        double w = 0.0;     // turning rate of the motion
+        Vec2 v{};           // velocity
+        double w = 0.0;     // turning rate
         bool moves = false; // an awake dynamic body
     };
     struct Event
@@ -81,11 +81,9 @@ class TimeOfImpactStage
 
     World& m_world;
     double m_dt;
+    const std::vector<Transform>& m_xfs;
     std::vector<Motion> m_motion;
-    std::vector<Vec2> m_pseudo;
-    std::vector<double> m_pseudoTurn;
     std::vector<uint8_t> m_fast;
-    std::vector<double> m_reachSpeed;
     std::vector<Aabb> m_reach;
     std::vector<uint32_t> m_stamp;
     std::vector<int> m_hits;
