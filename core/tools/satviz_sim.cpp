@@ -87,11 +87,12 @@ int main(int argc, char** argv)
     std::string everyText = "1";
     std::string savePath;
     bool withCounts = false;
-    app.add_option("scene", file, "Scene file (JSON)")->required();
-    app.add_option("--steps", stepsText, "Number of steps, at least 1")->required();
-    app.add_option("--dt", dtText, "Step length in time units, > 0 (default: the scene's world.dt, else 1)");
-    app.add_option("--every", everyText, "Print every K-th step (default 1), and always the last");
-    app.add_option("--save", savePath, "Write the final state as a scene file (atomically)");
+    app.add_option("scene", file, "Scene file (JSON)")->required()->type_name("SCENE.json");
+    app.add_option("--steps", stepsText, "Number of steps, at least 1")->required()->type_name("N");
+    app.add_option("--dt", dtText, "Step length in time units, > 0 (default: the scene's world.dt, else 1)")
+        ->type_name("S");
+    app.add_option("--every", everyText, "Print every K-th step (default 1), and always the last")->type_name("K");
+    app.add_option("--save", savePath, "Write the final state as a scene file (atomically)")->type_name("OUT.json");
     app.add_flag("--counts", withCounts,
                  "Add each printed step's counts: pairs, static_pairs, sleeping_pairs, bounds_apart, tested, "
                  "touching, swept, hits, awake, sleeping");
