@@ -406,7 +406,7 @@ TEST_CASE("SaveScene points a relative $schema at the same schema from the new f
     std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("A body's physical fields and the world block load, with their defaults", "[scene][world]")
+TEST_CASE("A scene body's physical fields and the world block load, with their defaults", "[scene][world]")
 {
     const SceneResult r = ParseScene(R"({"bodies": [
           {"name": "ground", "box": [10, 1], "static": true, "friction": 0.8},
@@ -461,7 +461,7 @@ TEST_CASE("A body's physical fields and the world block load, with their default
               .Ok());
 }
 
-TEST_CASE("Errors in the physical fields and the world block name the file and the field", "[scene][world]")
+TEST_CASE("Scene errors in the physical fields and the world block name the file and the field", "[scene][world]")
 {
     const std::string body = R"({"bodies": [{"name": "P", "box": [1, 1]}, {"name": "Q", "box": [1, 1], )";
     CHECK(ErrorOf(body + R"("density": 0}]})") == "s.json: bodies[1].density: must be greater than 0");
@@ -506,7 +506,7 @@ TEST_CASE("Errors in the physical fields and the world block name the file and t
     CHECK(ErrorOf(two + R"({"gravity": [0, -1], "dt": 0.5, "sim:substeps": 4}})").empty());
 }
 
-TEST_CASE("Physical fields and the world block save and load back, absent ones staying absent", "[scene][world]")
+TEST_CASE("A scene's physical fields and world block save and load back, absent ones staying absent", "[scene][world]")
 {
     const std::string file = R"({
   "world": {"dt": 0.5, "sim:note": "kept"},
