@@ -375,9 +375,38 @@ TEST_CASE("satviz-sim refuses bad arguments and scenes with one line naming the 
     CHECK(Sim(kSim / "bad_dt.json --steps 5").err ==
           "satviz-sim: " + kSim / "bad_dt.json" + ": world.dt: must be greater than 0\n");
 
+    // A final state the scene format cannot hold is refused before anything is written: an angle past 1e6.
+    WriteFile(kSim / "spin.json", R"({"bodies": [{"name": "spinner", "box": [2, 0.1], "angular_velocity": 1e6}]})");
+    const SimRun spun = Sim(kSim / "spin.json --steps 2 --save " + kSim / "spun.json");
+    CHECK(spun.exitCode == 1);
+    CHECK(spun.out.size() == 2);
+    CHECK(spun.err.find("satviz-sim: " + kSim / "spun.json" +
+                        ": bodies[0].angle: magnitude exceeds 1e+06 (the final state; nothing was written)\n") !=
+          std::string::npos);
+    CHECK(!std::filesystem::exists(kSim / "spun.json"));
+
     // Without a scene or --steps: CLI11's usage error, and a non-zero exit.
     CHECK(Sim("--steps 5").exitCode != 0);
     CHECK(Sim(scene).exitCode != 0);
+}
+
+TEST_CASE("satviz-sim: the README's example line is what the program prints", "[sim]")
+{
+    WriteFile(kSim / "ball.json", R"({"bodies": [{"name": "ball", "circle": {"radius": 0.5}, "position": [0, 2],
+        "angular_velocity": 1}], "world": {"gravity": [0, -9.81], "dt": 0.0166666}})");
+    const SimRun run = Sim(kSim / "ball.json --steps 1");
+    REQUIRE(run.exitCode == 0);
+    REQUIRE(run.out.size() == 1);
+    std::istringstream readme(ReadAll(SATVIZ_SOURCE_DIR "/README.md"));
+    std::string example;
+    for (std::string line; std::getline(readme, line);)
+    {
+        if (line.rfind(R"({"step":1,)", 0) == 0)
+        {
+            example = line;
+        }
+    }
+    CHECK(example == run.out[0]);
 }
 
 TEST_CASE("satviz-sim --version prints its name and the project version", "[sim]")

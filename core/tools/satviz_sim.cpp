@@ -166,9 +166,10 @@ int main(int argc, char** argv)
         dynamic += body.type == satviz::BodyType::Dynamic ? 1 : 0;
     }
     std::fprintf(stderr,
-                 "satviz-sim: %s: %lld steps of %g in %.3f ms; last step: %zu contacts; %d of %d dynamic bodies "
+                 "satviz-sim: %s: %lld step%s of %g in %.3f ms; last step: %zu contacts; %d of %d dynamic bodies "
                  "asleep; %lld time-ordered hits\n",
-                 file.c_str(), steps, dt, ms, world.contacts.size(), world.counts.sleepingBodies, dynamic, hits);
+                 file.c_str(), steps, steps == 1 ? "" : "s", dt, ms, world.contacts.size(), world.counts.sleepingBodies,
+                 dynamic, hits);
 
     if (!savePath.empty())
     {
