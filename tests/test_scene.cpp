@@ -530,6 +530,10 @@ TEST_CASE("A scene's physical fields and world block save and load back, absent 
 }
 )";
     CHECK(SceneToJson(loaded.scene) == same);
+    // A world hands back -0 for a body that stopped turning: still the default, not a new field.
+    Scene stopped = loaded.scene;
+    stopped.bodies[0].angularVelocity = -0.0;
+    CHECK(SceneToJson(stopped) == same);
 
     // Edited: a changed field is written in its place, a field changed from its default is added after the file's
     // own, a static friction that no longer equals the friction is written.

@@ -935,10 +935,11 @@ Json BodyJson(const Body& body, const Json* old, size_t index, bool fromFile)
     {
         fields.push_back({"velocity", PointJson(Member(old, "velocity"), body.velocity)});
     }
-    // The physical fields: each written when the file had it or its value is not the default.
+    // The physical fields: each written when the file had it or its value is not the default (-0 counts as 0, as
+    // for the angle).
     const Body defaults;
     auto number = [&](const char* key, double value, double fallback) {
-        if (Member(old, key) != nullptr || !SameDouble(value, fallback))
+        if (Member(old, key) != nullptr || value != fallback)
         {
             fields.push_back({key, NumberJson(Member(old, key), value)});
         }
@@ -1038,7 +1039,7 @@ Json WorldJson(const SceneWorld& world, const Json* old, bool fromFile)
     {
         fields.push_back({"gravity", PointJson(Member(old, "gravity"), world.gravity)});
     }
-    if (!fromFile || Member(old, "dt") != nullptr || !SameDouble(world.dt, defaults.dt))
+    if (!fromFile || Member(old, "dt") != nullptr || world.dt != defaults.dt)
     {
         fields.push_back({"dt", NumberJson(Member(old, "dt"), world.dt)});
     }
@@ -1081,7 +1082,7 @@ std::string SceneText(const Scene& scene, const std::string* schema)
         fields.push_back({"view", ViewJson(scene.view, Member(old, "view"), fromFile)});
     }
     // A scene built in code that sets a world without saying so gets its block too.
-    if (scene.hasWorld || scene.world.gravity != SceneWorld{}.gravity || !SameDouble(scene.world.dt, SceneWorld{}.dt))
+    if (scene.hasWorld || scene.world.gravity != SceneWorld{}.gravity || scene.world.dt != SceneWorld{}.dt)
     {
         fields.push_back({"world", WorldJson(scene.world, Member(old, "world"), fromFile)});
     }
