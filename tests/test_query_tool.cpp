@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
-// satviz-query as a program: one JSON line per file, errors on stderr, a non-zero exit, the other files answered.
+// satviz-query as a program: one JSON line per file, errors on stderr, a non-zero exit, the other files answered;
+// --touching against a brute-force oracle.
 
 #include <satviz/collide.h>
+#include <satviz/polygon.h>
 #include <satviz/scene.h>
 #include <satviz/sweep.h>
 
@@ -10,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -282,4 +285,157 @@ TEST_CASE("satviz-query: a long trace says so on stderr, and one too large for t
     const nlohmann::json faces = nlohmann::json::parse(huge.out[0])["pairs"][0]["trace"];
     CHECK(faces["view"] == "faces");
     CHECK(faces["note"].get<std::string>().find("too many vertices for the textbook trace") == 0);
+}
+
+namespace
+{
+
+// A scene of grid x grid bodies: circles, boxes and pentagons of random size and turn, each jittered about its
+// own cell of a 1.2-unit grid. No body reaches more than 0.72 + 0.15 sqrt 2 < 0.94 from its cell's centre, and
+// cells two apart are 2.4 apart, so only bodies of neighbouring cells (8 around) can touch; about one pair of
+// neighbours in twelve does.
+Scene GridScene(int grid)
+{
+    uint64_t state = 0x9e3779b97f4a7c15ull;
+    auto uniform = [&state](double low, double high) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return low + (high - low) * static_cast<double>(state >> 11) * 0x1.0p-53;
+    };
+    Scene scene;
+    for (int k = 0; k < grid * grid; ++k)
+    {
+        Body body;
+        body.name = "b" + std::to_string(k);
+        body.position = {1.2 * (k % grid) + uniform(-0.15, 0.15), 1.2 * (k / grid) + uniform(-0.15, 0.15)};
+        body.angle = uniform(-3.0, 3.0);
+        if (k % 3 == 0)
+        {
+            body.shape = MakeShape(Circle{{0.0, 0.0}, uniform(0.4, 0.7)});
+        }
+        else if (k % 3 == 1)
+        {
+            body.shape = MakeShape(MakeBox(uniform(0.3, 0.5), uniform(0.3, 0.5)).polygon);
+        }
+        else
+        {
+            body.shape = MakeShape(MakeRegularPolygon(5, uniform(0.4, 0.72), 0.0).polygon);
+        }
+        scene.bodies.push_back(body);
+    }
+    return scene;
+}
+
+using NamePairs = std::vector<std::pair<std::string, std::string>>;
+
+NamePairs TouchingOf(const nlohmann::json& line)
+{
+    NamePairs pairs;
+    for (const auto& pair : line["touching"])
+    {
+        pairs.emplace_back(pair[0].get<std::string>(), pair[1].get<std::string>());
+    }
+    return pairs;
+}
+
+NamePairs Names(const Scene& scene, const std::vector<std::pair<size_t, size_t>>& pairs)
+{
+    NamePairs names;
+    for (const auto& [i, j] : pairs)
+    {
+        names.emplace_back(scene.bodies[i].name, scene.bodies[j].name);
+    }
+    return names;
+}
+
+bool Touch(const Body& a, const Body& b)
+{
+    return Overlap(a.shape, a.Xf(), b.shape, b.Xf());
+}
+
+} // namespace
+
+TEST_CASE("satviz-query --touching lists the pairs that touch, in body order", "[query][touching]")
+{
+    // A and B share an edge (touching counts), C overlaps B, D is far away.
+    Write("touch.json", R"({"bodies": [
+        {"name": "A", "box": [1, 1]},
+        {"name": "B", "box": [1, 1], "position": [1, 0]},
+        {"name": "C", "circle": {"radius": 0.5}, "position": [1.75, 0.25]},
+        {"name": "D", "circle": {"radius": 0.5}, "position": [10, 0]}]})");
+    const Run run = Query("--touching touch.json");
+    REQUIRE(run.exitCode == 0);
+    REQUIRE(run.out.size() == 1);
+    CHECK(run.out[0] == R"({"scene":"touch.json","touching":[["A","B"],["B","C"]],"bodies":4})");
+    CHECK(run.err.empty());
+
+    Write("empty.json", R"({"bodies": []})");
+    const Run empty = Query("--touching empty.json missing.json");
+    CHECK(empty.exitCode == 1);
+    REQUIRE(empty.out.size() == 2);
+    CHECK(empty.out[0] == R"({"scene":"empty.json","touching":[],"bodies":0})");
+    CHECK(nlohmann::json::parse(empty.out[1]).contains("error"));
+    CHECK(Query("--touching --trace touch.json").exitCode != 0);
+}
+
+TEST_CASE("satviz-query --touching equals the brute-force Overlap of every pair, and answers 10000 bodies",
+          "[query][touching]")
+{
+    // 900 bodies: every one of the 404 550 pairs tested here.
+    std::string error;
+    REQUIRE(SaveScene(GridScene(30), "grid30.json", error));
+    const SceneResult small = LoadScene("grid30.json");
+    REQUIRE(small.Ok());
+    std::vector<std::pair<size_t, size_t>> expected;
+    for (size_t i = 0; i < small.scene.bodies.size(); ++i)
+    {
+        for (size_t j = i + 1; j < small.scene.bodies.size(); ++j)
+        {
+            if (Touch(small.scene.bodies[i], small.scene.bodies[j]))
+            {
+                expected.emplace_back(i, j);
+            }
+        }
+    }
+    CHECK(expected.size() > 200);
+    const Run run = Query("--touching grid30.json");
+    REQUIRE(run.exitCode == 0);
+    const nlohmann::json line = nlohmann::json::parse(run.out.at(0));
+    CHECK(line["bodies"] == 900);
+    CHECK(TouchingOf(line) == Names(small.scene, expected));
+
+    // 10 000 bodies: 50 million pairs, answered through the broadphase. The oracle here tests each body against
+    // its neighbouring cells, the only ones it can reach (see GridScene), so it is exact too.
+    const int grid = 100;
+    REQUIRE(SaveScene(GridScene(grid), "grid100.json", error));
+    const SceneResult large = LoadScene("grid100.json");
+    REQUIRE(large.Ok());
+    std::vector<std::pair<size_t, size_t>> near;
+    for (size_t i = 0; i < large.scene.bodies.size(); ++i)
+    {
+        const int x = static_cast<int>(i) % grid;
+        const int y = static_cast<int>(i) / grid;
+        for (int dy = -1; dy <= 1; ++dy)
+        {
+            for (int dx = -1; dx <= 1; ++dx)
+            {
+                const int nx = x + dx;
+                const int ny = y + dy;
+                if (nx < 0 || ny < 0 || nx >= grid || ny >= grid)
+                {
+                    continue;
+                }
+                const size_t j = static_cast<size_t>(ny * grid + nx);
+                if (j > i && Touch(large.scene.bodies[i], large.scene.bodies[j]))
+                {
+                    near.emplace_back(i, j);
+                }
+            }
+        }
+    }
+    std::sort(near.begin(), near.end());
+    const Run big = Query("--touching grid100.json");
+    REQUIRE(big.exitCode == 0);
+    const nlohmann::json bigLine = nlohmann::json::parse(big.out.at(0));
+    CHECK(bigLine["bodies"] == 10000);
+    CHECK(TouchingOf(bigLine) == Names(large.scene, near));
 }

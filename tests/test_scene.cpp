@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 using namespace satviz;
 
@@ -403,4 +404,216 @@ TEST_CASE("SaveScene points a relative $schema at the same schema from the new f
     std::ifstream again(file);
     CHECK(nlohmann::ordered_json::parse(again)["$schema"] == saved["$schema"]);
     std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("A scene body's physical fields and the world block load, with their defaults", "[scene][world]")
+{
+    const SceneResult r = ParseScene(R"({"bodies": [
+          {"name": "ground", "box": [10, 1], "static": true, "friction": 0.8},
+          {"name": "ball", "circle": {"radius": 0.5}, "position": [0, 3], "velocity": [1, -2],
+           "angular_velocity": -0.75, "density": 2.5, "restitution": 0.9, "friction": 0.2, "static_friction": 0.3},
+          {"name": "plain", "box": [1, 1]}],
+        "world": {"gravity": [0, -9.81], "dt": 0.0166666}})",
+                                     "s.json");
+    INFO(r.error);
+    REQUIRE(r.Ok());
+    const Body& ground = r.scene.bodies[0];
+    CHECK(ground.isStatic);
+    CHECK(ground.density == 1.0);
+    CHECK(ground.material.friction == 0.8);
+    CHECK(ground.material.staticFriction == 0.8); // static friction defaults to the body's friction
+    CHECK(ground.material.restitution == 0.0);
+    const Body& ball = r.scene.bodies[1];
+    CHECK(!ball.isStatic);
+    CHECK(ball.velocity == Vec2{1, -2});
+    CHECK(ball.angularVelocity == -0.75);
+    CHECK(ball.density == 2.5);
+    CHECK(ball.material.restitution == 0.9);
+    CHECK(ball.material.friction == 0.2);
+    CHECK(ball.material.staticFriction == 0.3);
+    const Body& plain = r.scene.bodies[2];
+    CHECK(!plain.isStatic);
+    CHECK(plain.angularVelocity == 0.0);
+    CHECK(plain.density == 1.0);
+    CHECK(plain.material.restitution == 0.0);
+    CHECK(plain.material.friction == 0.5);
+    CHECK(plain.material.staticFriction == 0.5);
+    CHECK(r.scene.hasWorld);
+    CHECK(r.scene.world.gravity == Vec2{0, -9.81});
+    CHECK(r.scene.world.dt == 0.0166666);
+
+    // Without a world block: no gravity, and a step of 1, so a velocity is still the displacement over one step.
+    const SceneResult none = ParseScene(R"({"bodies": []})", "s.json");
+    REQUIRE(none.Ok());
+    CHECK(!none.scene.hasWorld);
+    CHECK(none.scene.world.gravity == Vec2{});
+    CHECK(none.scene.world.dt == 1.0);
+    const SceneResult partial = ParseScene(R"({"bodies": [], "world": {"dt": 0.5}})", "s.json");
+    REQUIRE(partial.Ok());
+    CHECK(partial.scene.hasWorld);
+    CHECK(partial.scene.world.gravity == Vec2{});
+    CHECK(partial.scene.world.dt == 0.5);
+    // A static body may give a density, which it ignores; the edges of the ranges are accepted.
+    CHECK(ParseScene(R"({"bodies": [{"box": [1, 1], "static": true, "density": 3}]})", "s.json").Ok());
+    CHECK(ParseScene(R"({"bodies": [{"box": [1, 1], "static": false, "restitution": 1, "friction": 0,
+        "static_friction": 0}]})",
+                     "s.json")
+              .Ok());
+}
+
+TEST_CASE("Scene errors in the physical fields and the world block name the file and the field", "[scene][world]")
+{
+    const std::string body = R"({"bodies": [{"name": "P", "box": [1, 1]}, {"name": "Q", "box": [1, 1], )";
+    CHECK(ErrorOf(body + R"("density": 0}]})") == "s.json: bodies[1].density: must be greater than 0");
+    CHECK(ErrorOf(body + R"("density": -2}]})") == "s.json: bodies[1].density: must be greater than 0");
+    CHECK(ErrorOf(body + R"("static": true, "density": 0}]})") == "s.json: bodies[1].density: must be greater than 0");
+    CHECK(ErrorOf(body + R"("static": true, "density": 2e12}]})") ==
+          "s.json: bodies[1].density: magnitude exceeds 1e+12");
+    CHECK(ErrorOf(body + R"("density": "heavy"}]})") == "s.json: bodies[1].density: expected a number, got a string");
+    CHECK(ErrorOf(body + R"("restitution": -0.1}]})") ==
+          "s.json: bodies[1].restitution: expected a restitution in [0, 1] (0: no bounce, 1: a perfectly elastic one)");
+    CHECK(ErrorOf(body + R"("restitution": 1.5}]})") ==
+          "s.json: bodies[1].restitution: expected a restitution in [0, 1] (0: no bounce, 1: a perfectly elastic one)");
+    CHECK(ErrorOf(body + R"("friction": -0.5}]})") == "s.json: bodies[1].friction: must be 0 or greater");
+    CHECK(ErrorOf(body + R"("friction": 1e13}]})") == "s.json: bodies[1].friction: magnitude exceeds 1e+12");
+    CHECK(ErrorOf(body + R"("static_friction": -1}]})") == "s.json: bodies[1].static_friction: must be 0 or greater");
+    CHECK(ErrorOf(body + R"("static_friction": null}]})") ==
+          "s.json: bodies[1].static_friction: expected a number, got null");
+    CHECK(ErrorOf(body + R"("angular_velocity": 2e12}]})") ==
+          "s.json: bodies[1].angular_velocity: magnitude exceeds 1e+12");
+    CHECK(ErrorOf(body + R"("angular_velocity": [1]}]})") ==
+          "s.json: bodies[1].angular_velocity: expected a number, got an array");
+    CHECK(ErrorOf(body + R"("static": 1}]})") == "s.json: bodies[1].static: expected true or false, got a number");
+    CHECK(ErrorOf(body + R"("static": "yes"}]})") == "s.json: bodies[1].static: expected true or false, got a string");
+    CHECK(ErrorOf(body + R"("statik": true}]})") ==
+          "s.json: bodies[1].statik: unknown field \"statik\" (did you mean \"static\"?)");
+    CHECK(ErrorOf(body + R"("angular_velocity": 1e400}]})").find("malformed JSON: number overflow") !=
+          std::string::npos);
+
+    const std::string two = R"({"bodies": [{"name": "P", "box": [1, 1]}], "world": )";
+    CHECK(ErrorOf(two + R"({"dt": 0}})") == "s.json: world.dt: must be greater than 0");
+    CHECK(ErrorOf(two + R"({"dt": -0.01}})") == "s.json: world.dt: must be greater than 0");
+    CHECK(ErrorOf(two + R"({"dt": 1e13}})") == "s.json: world.dt: magnitude exceeds 1e+12");
+    CHECK(ErrorOf(two + R"({"dt": "fast"}})") == "s.json: world.dt: expected a number, got a string");
+    CHECK(ErrorOf(two + R"({"gravity": [0, -2e12]}})") == "s.json: world.gravity[1]: magnitude exceeds 1e+12");
+    CHECK(ErrorOf(two + R"({"gravity": [0]}})") ==
+          "s.json: world.gravity: expected a pair of numbers [x, y], got an array of 1");
+    CHECK(ErrorOf(two + R"({"gravity": [0, null]}})") == "s.json: world.gravity[1]: expected a number, got null");
+    CHECK(ErrorOf(two + R"({"gravty": [0, -1]}})") ==
+          "s.json: world.gravty: unknown field \"gravty\" (did you mean \"gravity\"?)");
+    CHECK(ErrorOf(two + R"([0, -9.81]})") ==
+          "s.json: world: expected an object {\"gravity\": [x, y], \"dt\": s}, got an array");
+    CHECK(ErrorOf(two + R"({"gravity": [0, -1], "dt": 0.5, "sim:substeps": 4}})").empty());
+}
+
+TEST_CASE("A scene's physical fields and world block save and load back, absent ones staying absent", "[scene][world]")
+{
+    const std::string file = R"({
+  "world": {"dt": 0.5, "sim:note": "kept"},
+  "bodies": [
+    {"name": "ground", "box": [10, 1], "static": true},
+    {"name": "ball", "circle": {"radius": 0.5}, "position": [0, 3], "friction": 0.25, "restitution": 0.5},
+    {"name": "crate", "box": [1, 1], "static": false, "density": 1, "static_friction": 0.5, "angular_velocity": 0}
+  ]
+})";
+    const SceneResult loaded = ParseScene(file, "phys.json");
+    INFO(loaded.error);
+    REQUIRE(loaded.Ok());
+    // Unchanged: the file's fields as written, in its order; nothing added.
+    const std::string same = R"({
+  "world": {"dt":0.5,"sim:note":"kept"},
+  "bodies": [
+    {"name":"ground","box":[10,1],"static":true},
+    {"name":"ball","circle":{"radius":0.5},"position":[0,3],"friction":0.25,"restitution":0.5},
+    {"name":"crate","box":[1,1],"static":false,"density":1,"static_friction":0.5,"angular_velocity":0}
+  ]
+}
+)";
+    CHECK(SceneToJson(loaded.scene) == same);
+    // A world hands back -0 for a body that stopped turning: still the default, not a new field.
+    Scene stopped = loaded.scene;
+    stopped.bodies[0].angularVelocity = -0.0;
+    CHECK(SceneToJson(stopped) == same);
+
+    // Edited: a changed field is written in its place, a field changed from its default is added after the file's
+    // own, a static friction that no longer equals the friction is written.
+    Scene edited = loaded.scene;
+    edited.bodies[0].isStatic = false;
+    edited.bodies[1].angularVelocity = -1.25;
+    edited.bodies[1].material.friction = 0.75; // its static friction stays 0.25
+    edited.bodies[2].density = 3;
+    edited.world.gravity = {0, -9.81};
+    const std::string text = SceneToJson(edited);
+    INFO(text);
+    const nlohmann::ordered_json json = nlohmann::ordered_json::parse(text);
+    CHECK(json["world"].dump() == R"({"dt":0.5,"sim:note":"kept","gravity":[0.0,-9.81]})");
+    CHECK(json["bodies"][0].dump() == R"({"name":"ground","box":[10,1],"static":false})");
+    CHECK(json["bodies"][1].dump() == R"({"name":"ball","circle":{"radius":0.5},"position":[0,3],"friction":0.75,)"
+                                      R"("restitution":0.5,"angular_velocity":-1.25,"static_friction":0.25})");
+    CHECK(json["bodies"][2].dump() ==
+          R"({"name":"crate","box":[1,1],"static":false,"density":3.0,"static_friction":0.5,"angular_velocity":0})");
+    const SceneResult again = ParseScene(text, "again.json");
+    REQUIRE(again.Ok());
+    for (size_t i = 0; i < edited.bodies.size(); ++i)
+    {
+        const Body& x = edited.bodies[i];
+        const Body& y = again.scene.bodies[i];
+        CHECK(x.isStatic == y.isStatic);
+        CHECK(x.density == y.density);
+        CHECK(x.angularVelocity == y.angularVelocity);
+        CHECK(x.material.restitution == y.material.restitution);
+        CHECK(x.material.friction == y.material.friction);
+        CHECK(x.material.staticFriction == y.material.staticFriction);
+    }
+    CHECK(again.scene.world.gravity == Vec2{0, -9.81});
+    CHECK(again.scene.world.dt == 0.5);
+
+    // A scene built in code writes only what differs from the defaults, and its world block whole.
+    Scene built;
+    Body body;
+    body.name = "A";
+    body.shape = MakeShape(Circle{{0, 0}, 1});
+    built.bodies.push_back(body);
+    body.name = "B";
+    body.isStatic = true;
+    body.material = {0.25, 0.125, 0.5};
+    body.angularVelocity = 2;
+    built.bodies.push_back(body);
+    CHECK(SceneToJson(built).find("world") == std::string::npos);
+    built.hasWorld = true;
+    const std::string builtText = SceneToJson(built);
+    INFO(builtText);
+    const nlohmann::ordered_json builtJson = nlohmann::ordered_json::parse(builtText);
+    CHECK(builtJson["bodies"][0].dump() == R"({"name":"A","circle":{"radius":1.0},"position":[0.0,0.0]})");
+    CHECK(builtJson["bodies"][1].dump() ==
+          R"({"name":"B","circle":{"radius":1.0},"position":[0.0,0.0],"angular_velocity":2.0,"static":true,)"
+          R"("restitution":0.25,"friction":0.125,"static_friction":0.5})");
+    CHECK(builtJson["world"].dump() == R"({"gravity":[0.0,0.0],"dt":1.0})");
+    const SceneResult builtAgain = ParseScene(builtText, "built.json");
+    REQUIRE(builtAgain.Ok());
+    CHECK(builtAgain.scene.bodies[1].material.staticFriction == 0.5);
+    CHECK(builtAgain.scene.bodies[1].isStatic);
+
+    // A file that had a world block and a scene that dropped it: the block goes.
+    Scene dropped = loaded.scene;
+    dropped.hasWorld = false;
+    dropped.world = SceneWorld{};
+    CHECK(nlohmann::ordered_json::parse(SceneToJson(dropped)).count("world") == 0);
+}
+
+TEST_CASE("Saving a scene with NaN or infinite values built in code does not crash, and the result is refused",
+          "[scene][world]")
+{
+    Scene scene;
+    Body body;
+    body.name = "A";
+    body.shape = MakeShape(Circle{{0, 0}, 1});
+    body.angularVelocity = std::numeric_limits<double>::quiet_NaN();
+    body.material.friction = std::numeric_limits<double>::infinity();
+    scene.bodies.push_back(body);
+    scene.world.dt = std::numeric_limits<double>::quiet_NaN();
+    const std::string text = SceneToJson(scene);
+    const SceneResult r = ParseScene(text, "nan.json");
+    CHECK(!r.Ok());
+    CHECK(r.error == "nan.json: bodies[0].angular_velocity: expected a number, got null");
 }

@@ -4,6 +4,7 @@
 
 #include <satviz/query_json.h>
 #include <satviz/sweep.h>
+#include <satviz/world.h>
 
 #include <cmath>
 #include <ostream>
@@ -308,6 +309,26 @@ Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace,
         }
     }
     return {{"scene", file}, {"pairs", pairs}};
+}
+
+Json TouchingSceneJson(const Scene& scene, const std::string& file)
+{
+    std::vector<Shape> shapes;
+    std::vector<Transform> transforms;
+    shapes.reserve(scene.bodies.size());
+    transforms.reserve(scene.bodies.size());
+    for (const Body& body : scene.bodies)
+    {
+        shapes.push_back(body.shape);
+        transforms.push_back(body.Xf());
+    }
+    Json touching = Json::array();
+    for (const auto& [i, j] : TouchingPairs(shapes, transforms))
+    {
+        touching.push_back(
+            Json::array({scene.bodies[static_cast<size_t>(i)].name, scene.bodies[static_cast<size_t>(j)].name}));
+    }
+    return {{"scene", file}, {"touching", std::move(touching)}, {"bodies", scene.bodies.size()}};
 }
 
 } // namespace satviz

@@ -198,6 +198,16 @@ double PositiveNumber(const Json& value, const std::string& path, double limit =
     return number;
 }
 
+double NonNegativeNumber(const Json& value, const std::string& path)
+{
+    const double number = Number(value, path);
+    if (number < 0.0)
+    {
+        Fail(path, "must be 0 or greater");
+    }
+    return number;
+}
+
 // The name of a body without one: A, B, ... Z by its place in the file, then body26, body27, ...
 std::string DefaultBodyName(size_t index)
 {
@@ -219,7 +229,9 @@ Body ParseBody(const Json& value, const std::string& path, size_t index)
     {
         Fail(path, "expected a body object, got " + TypeName(value));
     }
-    CheckKeys(value, path, {"name", "polygon", "box", "regular", "circle", "position", "angle", "velocity"});
+    CheckKeys(value, path,
+              {"name", "polygon", "box", "regular", "circle", "position", "angle", "velocity", "angular_velocity",
+               "static", "density", "restitution", "friction", "static_friction"});
 
     Body body;
     if (value.contains("name"))
@@ -327,6 +339,41 @@ Body ParseBody(const Json& value, const std::string& path, size_t index)
     {
         body.velocity = Point(value["velocity"], path + ".velocity");
     }
+    if (value.contains("angular_velocity"))
+    {
+        body.angularVelocity = Number(value["angular_velocity"], path + ".angular_velocity");
+    }
+    if (value.contains("static"))
+    {
+        const Json& fixed = value["static"];
+        if (!fixed.is_boolean())
+        {
+            Fail(path + ".static", "expected true or false, got " + TypeName(fixed));
+        }
+        body.isStatic = fixed.get<bool>();
+    }
+    if (value.contains("density"))
+    {
+        // A static body has no mass, but a density it gives must still be one a dynamic body could have.
+        body.density = PositiveNumber(value["density"], path + ".density");
+    }
+    if (value.contains("restitution"))
+    {
+        const std::string p = path + ".restitution";
+        body.material.restitution = Number(value["restitution"], p);
+        if (body.material.restitution < 0.0 || body.material.restitution > 1.0)
+        {
+            Fail(p, "expected a restitution in [0, 1] (0: no bounce, 1: a perfectly elastic one)");
+        }
+    }
+    if (value.contains("friction"))
+    {
+        body.material.friction = NonNegativeNumber(value["friction"], path + ".friction");
+    }
+    // Static friction defaults to the body's friction: a file that gives one coefficient gets Coulomb's plain law.
+    body.material.staticFriction = value.contains("static_friction")
+                                       ? NonNegativeNumber(value["static_friction"], path + ".static_friction")
+                                       : body.material.friction;
     return body;
 }
 
@@ -513,13 +560,33 @@ SceneView ParseView(const Json& value, const Scene& scene)
     return view;
 }
 
+SceneWorld ParseWorld(const Json& value)
+{
+    const std::string path = "world";
+    if (!value.is_object())
+    {
+        Fail(path, "expected an object {\"gravity\": [x, y], \"dt\": s}, got " + TypeName(value));
+    }
+    CheckKeys(value, path, {"gravity", "dt"});
+    SceneWorld world;
+    if (value.contains("gravity"))
+    {
+        world.gravity = Point(value["gravity"], path + ".gravity");
+    }
+    if (value.contains("dt"))
+    {
+        world.dt = PositiveNumber(value["dt"], path + ".dt");
+    }
+    return world;
+}
+
 Scene ParseRoot(const Json& root)
 {
     if (!root.is_object())
     {
         Fail("(root)", "expected an object with \"bodies\", got " + TypeName(root));
     }
-    CheckKeys(root, "", {"$schema", "description", "bodies", "view"});
+    CheckKeys(root, "", {"$schema", "description", "bodies", "view", "world"});
     Scene scene;
     if (root.contains("description"))
     {
@@ -553,6 +620,11 @@ Scene ParseRoot(const Json& root)
     {
         scene.view = ParseView(root["view"], scene);
         scene.hasView = true;
+    }
+    if (root.contains("world"))
+    {
+        scene.world = ParseWorld(root["world"]);
+        scene.hasWorld = true;
     }
     return scene;
 }
@@ -809,6 +881,11 @@ const Json* KeptShape(const Polygon& polygon, const Json* old, std::string& key)
     return nullptr;
 }
 
+// The keys of a body that the scene holds, in the order a new body writes them.
+const std::vector<std::string> kBodyKeys = {"name",     "polygon",     "box",      "regular",          "circle",
+                                            "position", "angle",       "velocity", "angular_velocity", "static",
+                                            "density",  "restitution", "friction", "static_friction"};
+
 // One body. `old` is the body of the same name in the source file, null for a new body or a scene built in code;
 // `index` is the body's place in the scene.
 Json BodyJson(const Body& body, const Json* old, size_t index, bool fromFile)
@@ -858,7 +935,26 @@ Json BodyJson(const Body& body, const Json* old, size_t index, bool fromFile)
     {
         fields.push_back({"velocity", PointJson(Member(old, "velocity"), body.velocity)});
     }
-    return Arrange(fields, old, {"name", "polygon", "box", "regular", "circle", "position", "angle", "velocity"});
+    // The physical fields: each written when the file had it or its value is not the default (-0 counts as 0, as
+    // for the angle).
+    const Body defaults;
+    auto number = [&](const char* key, double value, double fallback) {
+        if (Member(old, key) != nullptr || value != fallback)
+        {
+            fields.push_back({key, NumberJson(Member(old, key), value)});
+        }
+    };
+    number("angular_velocity", body.angularVelocity, defaults.angularVelocity);
+    if (Member(old, "static") != nullptr || body.isStatic)
+    {
+        fields.push_back({"static", body.isStatic});
+    }
+    number("density", body.density, defaults.density);
+    number("restitution", body.material.restitution, defaults.material.restitution);
+    number("friction", body.material.friction, defaults.material.friction);
+    // Static friction's default is the body's own friction.
+    number("static_friction", body.material.staticFriction, body.material.friction);
+    return Arrange(fields, old, kBodyKeys);
 }
 
 // The view block. `old` is the file's, null for a scene built in code (which writes zoom, size, query and step
@@ -933,6 +1029,23 @@ Json ViewJson(const SceneView& v, const Json* old, bool fromFile)
                     "precision"});
 }
 
+// The world block. `old` is the file's, null for a scene built in code (which writes both fields) or a file
+// without one.
+Json WorldJson(const SceneWorld& world, const Json* old, bool fromFile)
+{
+    const SceneWorld defaults;
+    std::vector<Field> fields;
+    if (!fromFile || Member(old, "gravity") != nullptr || world.gravity != defaults.gravity)
+    {
+        fields.push_back({"gravity", PointJson(Member(old, "gravity"), world.gravity)});
+    }
+    if (!fromFile || Member(old, "dt") != nullptr || world.dt != defaults.dt)
+    {
+        fields.push_back({"dt", NumberJson(Member(old, "dt"), world.dt)});
+    }
+    return Arrange(fields, old, {"gravity", "dt"});
+}
+
 // The whole file; `schema` replaces a kept "$schema" when not null.
 std::string SceneText(const Scene& scene, const std::string* schema)
 {
@@ -968,7 +1081,12 @@ std::string SceneText(const Scene& scene, const std::string* schema)
     {
         fields.push_back({"view", ViewJson(scene.view, Member(old, "view"), fromFile)});
     }
-    Json root = Arrange(fields, old, {"description", "bodies", "view"});
+    // A scene built in code that sets a world without saying so gets its block too.
+    if (scene.hasWorld || scene.world.gravity != SceneWorld{}.gravity || scene.world.dt != SceneWorld{}.dt)
+    {
+        fields.push_back({"world", WorldJson(scene.world, Member(old, "world"), fromFile)});
+    }
+    Json root = Arrange(fields, old, {"description", "bodies", "view", "world"});
     if (schema != nullptr && root.contains("$schema"))
     {
         root["$schema"] = *schema;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// satviz-query: answers every pair of bodies of each scene file with one JSON line. No graphics.
+// satviz-query: answers every pair of bodies of each scene file with one JSON line (or, with --touching, lists the
+// pairs that touch). No graphics.
 
 #include <satviz/query_json.h>
 #include <satviz/scene.h>
@@ -27,6 +28,11 @@ int main(int argc, char** argv)
                    "The trace to print: textbook (both intervals on each distinct axis, the MTV) or faces (the face "
                    "tests as the fast queries run them, with the contact clipping)")
         ->check(CLI::IsMember({"textbook", "faces"}));
+    bool touching = false;
+    app.add_flag("--touching", touching,
+                 "Only list the pairs of bodies that touch or overlap, found through the broadphase: "
+                 "{\"scene\", \"touching\": [[\"A\", \"B\"], ...], \"bodies\"}, fast for many bodies")
+        ->excludes("--trace");
     CLI11_PARSE(app, argc, argv);
     const satviz::StepView steps = view == "faces" ? satviz::StepView::Faces : satviz::StepView::Textbook;
 
@@ -42,9 +48,10 @@ int main(int argc, char** argv)
             ++failures;
             continue;
         }
-        std::cout
-            << satviz::QuerySceneJson(loaded.scene, file, withTrace, steps, &std::cerr).dump(-1, ' ', false, kReplace)
-            << "\n";
+        const nlohmann::ordered_json answer =
+            touching ? satviz::TouchingSceneJson(loaded.scene, file)
+                     : satviz::QuerySceneJson(loaded.scene, file, withTrace, steps, &std::cerr);
+        std::cout << answer.dump(-1, ' ', false, kReplace) << "\n";
     }
     std::cout.flush();
     return failures == 0 ? 0 : 1;

@@ -39,4 +39,8 @@ nlohmann::ordered_json TextbookSweepTraceJson(const TextbookSweepTrace& trace);
 nlohmann::ordered_json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace,
                                       StepView view = StepView::Textbook, std::ostream* progress = nullptr);
 
+/// The pairs of bodies that touch or overlap, found through the broadphase (TouchingPairs), in body order:
+/// {"scene": file, "touching": [["A", "B"], ...], "bodies": n}. Close to linear in the number of bodies.
+nlohmann::ordered_json TouchingSceneJson(const Scene& scene, const std::string& file);
+
 } // namespace satviz

@@ -2,6 +2,7 @@
 // satviz: scenes, read from JSON files shared by the tools, tests, figures and benchmarks.
 #pragma once
 
+#include <satviz/material.h>
 #include <satviz/shape.h>
 
 #include <memory>
@@ -12,16 +13,31 @@
 namespace satviz
 {
 
-/// A body of a scene: a named shape placed in the world, with the displacement it makes over one step.
+/// A body of a scene: a named shape placed in the world, how it moves, and what a rigid-body world makes of it.
 struct Body
 {
     std::string name;   ///< unique name within the scene
     Shape shape;        ///< the shape, in the body frame
     Vec2 position{};    ///< world position of the body origin
     double angle = 0.0; ///< rotation in radians, counter-clockwise
-    Vec2 velocity{};    ///< displacement over one step, world frame
+    /// Velocity of the centre of mass, world frame, in units per time unit. A step lasts the scene's world dt,
+    /// 1 by default, so in a scene without a "world" block it is the displacement over one step.
+    Vec2 velocity{};
+    double angularVelocity = 0.0; ///< radians per time unit, counter-clockwise ("angular_velocity")
+    bool isStatic = false;        ///< never moves ("static"): ground, walls; its density is ignored
+    double density = 1.0;         ///< mass per unit area of a dynamic body, > 0
+    /// Restitution in [0, 1] and frictions >= 0 ("restitution", "friction", "static_friction"); a file without
+    /// "static_friction" gives the body's friction.
+    Material material{};
     /// The body's transform (body frame to world).
     Transform Xf() const { return MakeTransform(position, angle); }
+};
+
+/// How a rigid-body world steps the scene: the optional "world" block of a scene file.
+struct SceneWorld
+{
+    Vec2 gravity{};  ///< acceleration, units per time unit squared ("gravity": [x, y], default [0, 0])
+    double dt = 1.0; ///< time units per step, > 0 ("dt", default 1: a velocity is the displacement over one step)
 };
 
 /// Which query a view shows.
@@ -108,6 +124,8 @@ struct Scene
     std::vector<Body> bodies; ///< the bodies, in file order
     bool hasView = false;     ///< the file has a "view" block
     SceneView view;           ///< how to picture it (defaults when hasView is false)
+    bool hasWorld = false;    ///< the file has a "world" block
+    SceneWorld world;         ///< how a rigid-body world steps it (defaults when hasWorld is false)
     /// The file the scene was parsed from, so that saving keeps its form; null for a scene built in code. Copies
     /// of the scene share it.
     std::shared_ptr<const SceneSource> source;
@@ -122,14 +140,17 @@ struct SceneResult
     bool Ok() const { return error.empty(); }
 };
 
-/// Largest accepted magnitude of a position, velocity, radius or vertex coordinate in a scene file.
+/// Largest accepted magnitude of a position, velocity, angular velocity, radius, vertex coordinate, density,
+/// friction, gravity or dt in a scene file.
 constexpr double kMaxSceneValue = 1e12;
 
 /// Parses a scene from JSON text. `file` names the source in error messages.
 /// Format (see core/scene/scene.schema.json): {"bodies": [{"name": "A", "polygon": [[x, y], ...], "position": [x, y],
 /// "angle": 0.0, "velocity": [vx, vy]}, {"name": "B", "circle": {"radius": 0.5}, ...}]}. A body has exactly one
 /// shape: "polygon" (counter-clockwise vertices), "box" ([width, height]), "regular" ({"sides": n, "radius": r})
-/// or "circle" ({"radius": r, "center": [x, y]}). Unknown fields are errors, with a hint for misspellings, unless
+/// or "circle" ({"radius": r, "center": [x, y]}). A body may also give "angular_velocity", "static" (true or
+/// false), "density" (> 0), "restitution" (in [0, 1]), "friction" and "static_friction" (>= 0); the scene may give
+/// "world": {"gravity": [x, y], "dt": s} (dt > 0). Unknown fields are errors, with a hint for misspellings, unless
 /// namespaced ("tool:field").
 SceneResult ParseScene(std::string_view text, const std::string& file);
 
@@ -137,8 +158,9 @@ SceneResult ParseScene(std::string_view text, const std::string& file);
 SceneResult LoadScene(const std::string& file);
 
 /// The scene as JSON text that ParseScene reads back to the same scene: bodies with their polygon vertices,
-/// circles, positions, angles and velocities, every number printed so that it reads back as the same double; the
-/// view block when the scene has one. A scene parsed from a file (scene.source) keeps that file's form: its key
+/// circles, positions, angles, velocities and, where not at their defaults, angular velocities and physical
+/// fields, every number printed so that it reads back as the same double; the view and world blocks when the
+/// scene has them. A scene parsed from a file (scene.source) keeps that file's form: its key
 /// order, "$schema" and namespaced fields, a "box" or "regular" body whose shape is unchanged, fields it had at
 /// their default values, and numbers as they were written where their value is unchanged; a field it did not
 /// have is added only when it is not at its default. One body per line.

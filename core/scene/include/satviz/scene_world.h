@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// satviz: a scene as a rigid-body world, and the world's state back into the scene.
+#pragma once
+
+#include <satviz/scene.h>
+#include <satviz/world.h>
+
+#include <string>
+
+namespace satviz
+{
+
+/// The definition AddBody takes for a scene body: its shape, static or dynamic, density, material, position,
+/// angle, velocity and angular velocity.
+BodyDef MakeBodyDef(const Body& body);
+
+/// Empty when every body of the scene makes a valid world body, else the first problem, naming the body by its
+/// JSON path and name ("bodies[2] (\"ball\"): density must be > 0"). A loaded scene always passes; a scene built
+/// or edited in code may not.
+std::string ValidateSceneWorld(const Scene& scene);
+
+/// A world for the scene: its gravity, and one body per scene body in the scene's order (body i of the world is
+/// body i of the scene), added by AddBody. The scene must pass ValidateSceneWorld. The world's other settings are
+/// its defaults; the step length is the caller's (scene.world.dt).
+World MakeWorld(const Scene& scene);
+
+/// Copies the world's state into the scene's bodies, body i to body i: positions, angles, velocities and angular
+/// velocities, so that SaveScene writes the world as it is now as a scene that loads again. The world must have
+/// been made from the scene (the same number of bodies).
+void CopyWorldState(const World& world, Scene& scene);
+
+} // namespace satviz

@@ -1,0 +1,419 @@
+// SPDX-License-Identifier: MIT
+// satviz-sim as a program, and the scene library's bridge to the world (MakeWorld, CopyWorldState): JSON lines
+// whose numbers are the world's own doubles, --every, --counts, --save, one-line errors.
+
+#include <satviz/mass.h>
+#include <satviz/scene.h>
+#include <satviz/scene_world.h>
+#include <satviz/world.h>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace satviz;
+
+namespace
+{
+
+/// The files these tests write live in a directory of their own, removed at exit.
+struct SimScratch
+{
+    std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("satviz-sim-test-" + std::to_string(::getpid()));
+
+    SimScratch() { std::filesystem::create_directories(dir); }
+
+    ~SimScratch()
+    {
+        std::error_code ignored;
+        std::filesystem::remove_all(dir, ignored);
+    }
+
+    std::string operator/(const std::string& name) const { return (dir / name).string(); }
+};
+
+const SimScratch kSim;
+
+struct SimRun
+{
+    int exitCode = -1;
+    std::vector<std::string> out;
+    std::string err;
+};
+
+std::string ReadAll(const std::string& path)
+{
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+SimRun Sim(const std::string& arguments)
+{
+    const std::string out = kSim / "sim.out";
+    const std::string err = kSim / "sim.err";
+    const std::string command = std::string(SATVIZ_SIM_EXE) + " " + arguments + " > " + out + " 2> " + err;
+    const int status = std::system(command.c_str());
+    SimRun run;
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::istringstream lines(ReadAll(out));
+    for (std::string line; std::getline(lines, line);)
+    {
+        run.out.push_back(line);
+    }
+    run.err = ReadAll(err);
+    return run;
+}
+
+void WriteFile(const std::string& path, const std::string& text)
+{
+    std::ofstream(path) << text;
+}
+
+size_t LineCount(const std::string& text)
+{
+    size_t lines = 0;
+    for (const char c : text)
+    {
+        lines += c == '\n' ? 1 : 0;
+    }
+    return lines;
+}
+
+// A ball dropped on the ground beside a spinning box thrown up, in metres and seconds.
+const std::string kDrop = R"({
+  "description": "drop",
+  "bodies": [
+    {"name": "ground", "box": [20, 1], "position": [0, -0.5], "static": true, "friction": 0.8},
+    {"name": "ball", "circle": {"radius": 0.5}, "position": [0, 2], "restitution": 0.5, "tool:color": "red"},
+    {"name": "crate", "box": [1, 0.5], "position": [4, 1], "velocity": [0.5, 3], "angular_velocity": 2,
+     "density": 2}
+  ],
+  "world": {"gravity": [0, -9.81], "dt": 0.0166666}
+})";
+
+} // namespace
+
+TEST_CASE("MakeWorld: one world body per scene body, in order, with the scene's gravity and fields", "[sim][world]")
+{
+    const SceneResult loaded = ParseScene(kDrop, "drop.json");
+    REQUIRE(loaded.Ok());
+    CHECK(ValidateSceneWorld(loaded.scene).empty());
+    const World world = MakeWorld(loaded.scene);
+    CHECK(world.settings.gravity == Vec2{0, -9.81});
+    REQUIRE(world.bodies.size() == 3);
+    const RigidBody& ground = world.bodies[0];
+    CHECK(ground.type == BodyType::Static);
+    CHECK(ground.invMass == 0.0);
+    CHECK(ground.material.friction == 0.8);
+    CHECK(ground.material.staticFriction == 0.8);
+    CHECK(ground.position == Vec2{0, -0.5});
+    const RigidBody& ball = world.bodies[1];
+    CHECK(ball.type == BodyType::Dynamic);
+    CHECK(ball.material.restitution == 0.5);
+    CHECK(ball.mass == Approx(ComputeMass(ball.shape, 1.0).mass));
+    const RigidBody& crate = world.bodies[2];
+    CHECK(crate.mass == Approx(ComputeMass(crate.shape, 2.0).mass));
+    CHECK(crate.mass == Approx(1.0));
+    CHECK(crate.position == Vec2{4, 1});
+    CHECK(crate.velocity == Vec2{0.5, 3});
+    CHECK(crate.angularVelocity == 2.0);
+
+    // A scene built in code can hold what a file cannot: the body is named by its path and name.
+    Scene bad = loaded.scene;
+    bad.bodies[2].density = 0.0;
+    const std::string error = ValidateSceneWorld(bad);
+    CHECK(error.rfind("bodies[2] (\"crate\"): ", 0) == 0);
+    CHECK(error.find("density") != std::string::npos);
+}
+
+TEST_CASE("CopyWorldState: the world's state back into the scene, which saves and loads as that state", "[sim][world]")
+{
+    SceneResult loaded = ParseScene(kDrop, kSim / "drop.json");
+    REQUIRE(loaded.Ok());
+    World world = MakeWorld(loaded.scene);
+    for (int i = 0; i < 30; ++i)
+    {
+        Step(world, loaded.scene.world.dt);
+    }
+    Scene& scene = loaded.scene;
+    CopyWorldState(world, scene);
+    for (size_t i = 0; i < scene.bodies.size(); ++i)
+    {
+        CHECK(scene.bodies[i].position == world.bodies[i].position);
+        CHECK(scene.bodies[i].angle == world.bodies[i].angle);
+        CHECK(scene.bodies[i].velocity == world.bodies[i].velocity);
+        CHECK(scene.bodies[i].angularVelocity == world.bodies[i].angularVelocity);
+    }
+    std::string error;
+    REQUIRE(SaveScene(scene, kSim / "copied.json", error));
+    const SceneResult again = LoadScene(kSim / "copied.json");
+    INFO(again.error);
+    REQUIRE(again.Ok());
+    for (size_t i = 0; i < scene.bodies.size(); ++i)
+    {
+        CHECK(again.scene.bodies[i].position == world.bodies[i].position);
+        CHECK(again.scene.bodies[i].angle == world.bodies[i].angle);
+        CHECK(again.scene.bodies[i].velocity == world.bodies[i].velocity);
+        CHECK(again.scene.bodies[i].angularVelocity == world.bodies[i].angularVelocity);
+        CHECK(again.scene.bodies[i].isStatic == scene.bodies[i].isStatic);
+        CHECK(again.scene.bodies[i].density == scene.bodies[i].density);
+    }
+    CHECK(again.scene.world.dt == 0.0166666);
+}
+
+TEST_CASE("satviz-sim prints one JSON line per step with the world's own numbers, and a summary", "[sim]")
+{
+    WriteFile(kSim / "drop.json", kDrop);
+    const SimRun run = Sim(kSim / "drop.json --steps 40");
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    REQUIRE(run.out.size() == 40);
+
+    // The same world stepped here gives the same bits: every printed number reads back as the world's double.
+    const SceneResult loaded = LoadScene(kSim / "drop.json");
+    REQUIRE(loaded.Ok());
+    World world = MakeWorld(loaded.scene);
+    for (size_t k = 0; k < run.out.size(); ++k)
+    {
+        Step(world, 0.0166666);
+        const nlohmann::ordered_json line = nlohmann::ordered_json::parse(run.out[k]);
+        std::vector<std::string> keys;
+        for (const auto& item : line.items())
+        {
+            keys.push_back(item.key());
+        }
+        CHECK(keys == std::vector<std::string>{"step", "time", "bodies"});
+        CHECK(line["step"] == k + 1);
+        CHECK(line["time"].get<double>() == world.time);
+        REQUIRE(line["bodies"].size() == 3);
+        for (size_t i = 0; i < 3; ++i)
+        {
+            const nlohmann::ordered_json& body = line["bodies"][i];
+            const RigidBody& expected = world.bodies[i];
+            CHECK(body.begin().key() == "name");
+            CHECK(body["name"] == loaded.scene.bodies[i].name);
+            CHECK(body["position"][0].get<double>() == expected.position.x);
+            CHECK(body["position"][1].get<double>() == expected.position.y);
+            CHECK(body["angle"].get<double>() == expected.angle);
+            CHECK(body["velocity"][0].get<double>() == expected.velocity.x);
+            CHECK(body["velocity"][1].get<double>() == expected.velocity.y);
+            CHECK(body["angular_velocity"].get<double>() == expected.angularVelocity);
+            CHECK(body.size() == 5);
+        }
+        CHECK(!line.contains("counts"));
+    }
+    // The ground stays put; the ball falls under gravity and the crate turns.
+    const nlohmann::json last = nlohmann::json::parse(run.out.back());
+    CHECK(last["bodies"][0]["position"] == nlohmann::json::array({0, -0.5}));
+    CHECK(last["bodies"][1]["position"][1].get<double>() < 2.0);
+    CHECK(last["bodies"][2]["angle"].get<double>() > 0.0);
+    CHECK(last["time"].get<double>() == Approx(40 * 0.0166666));
+
+    // One summary line on stderr: the steps, the time they took, the last step's contacts, sleep and hits.
+    CHECK(LineCount(run.err) == 1);
+    CHECK(run.err.find("satviz-sim: " + kSim / "drop.json" + ": 40 steps of 0.0166666 in ") == 0);
+    CHECK(run.err.find(" ms; last step: ") != std::string::npos);
+    CHECK(run.err.find("contacts") != std::string::npos);
+    CHECK(run.err.find("dynamic bodies asleep") != std::string::npos);
+    CHECK(run.err.find("time-ordered hits") != std::string::npos);
+}
+
+TEST_CASE("satviz-sim --every prints every K-th step and the last, --dt overrides the scene's step", "[sim]")
+{
+    WriteFile(kSim / "drop.json", kDrop);
+    const SimRun run = Sim(kSim / "drop.json --steps 10 --every 3");
+    REQUIRE(run.exitCode == 0);
+    std::vector<int> steps;
+    for (const std::string& line : run.out)
+    {
+        steps.push_back(nlohmann::json::parse(line)["step"].get<int>());
+    }
+    CHECK(steps == std::vector<int>{3, 6, 9, 10});
+    const SimRun exact = Sim(kSim / "drop.json --steps 10 --every 5");
+    CHECK(exact.out.size() == 2);
+    const SimRun once = Sim(kSim / "drop.json --steps 3 --every 100");
+    REQUIRE(once.out.size() == 1);
+    CHECK(nlohmann::json::parse(once.out[0])["step"] == 3);
+
+    // --dt 0.001: ten steps make 0.01 time units whatever the scene says.
+    const SimRun fine = Sim(kSim / "drop.json --steps 10 --dt 0.001");
+    REQUIRE(fine.exitCode == 0);
+    CHECK(nlohmann::json::parse(fine.out.back())["time"].get<double>() == Approx(0.01));
+    CHECK(fine.err.find("10 steps of 0.001 in") != std::string::npos);
+
+    // A scene without a world block steps by 1: a velocity is the displacement over one step.
+    WriteFile(kSim / "plain.json", R"({"bodies": [{"name": "A", "box": [1, 1], "velocity": [0.25, 0]}]})");
+    const SimRun plain = Sim(kSim / "plain.json --steps 4");
+    REQUIRE(plain.exitCode == 0);
+    const nlohmann::json last = nlohmann::json::parse(plain.out.back());
+    CHECK(last["time"].get<double>() == 4.0);
+    CHECK(last["bodies"][0]["position"][0].get<double>() == Approx(1.0));
+    CHECK(last["bodies"][0]["position"][1].get<double>() == Approx(0.0).margin(1e-12));
+}
+
+TEST_CASE("satviz-sim --counts adds what each step did with the pairs", "[sim]")
+{
+    WriteFile(kSim / "drop.json", kDrop);
+    const SimRun run = Sim(kSim / "drop.json --steps 5 --every 5 --counts");
+    REQUIRE(run.exitCode == 0);
+    REQUIRE(run.out.size() == 1);
+    const nlohmann::ordered_json line = nlohmann::ordered_json::parse(run.out[0]);
+    REQUIRE(line.contains("counts"));
+    std::vector<std::string> keys;
+    for (const auto& item : line["counts"].items())
+    {
+        keys.push_back(item.key());
+    }
+    CHECK(keys == std::vector<std::string>{"pairs", "static_pairs", "sleeping_pairs", "bounds_apart", "tested",
+                                           "touching", "swept", "hits", "awake", "sleeping"});
+    CHECK(line["counts"]["pairs"] == 3);
+    CHECK(line["counts"]["awake"].get<int>() + line["counts"]["sleeping"].get<int>() == 2);
+}
+
+TEST_CASE("satviz-sim --save writes the last printed state as a scene that loads, in the file's form", "[sim]")
+{
+    WriteFile(kSim / "drop.json", kDrop);
+    const std::string saved = kSim / "saved.json";
+    const SimRun run = Sim(kSim / "drop.json --steps 50 --every 7 --save " + saved);
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    const SceneResult again = LoadScene(saved);
+    INFO(again.error);
+    REQUIRE(again.Ok());
+    const nlohmann::json last = nlohmann::json::parse(run.out.back());
+    CHECK(last["step"] == 50);
+    REQUIRE(again.scene.bodies.size() == last["bodies"].size());
+    for (size_t i = 0; i < again.scene.bodies.size(); ++i)
+    {
+        const Body& body = again.scene.bodies[i];
+        const nlohmann::json& printed = last["bodies"][i];
+        CHECK(body.name == printed["name"]);
+        CHECK(body.position.x == printed["position"][0].get<double>());
+        CHECK(body.position.y == printed["position"][1].get<double>());
+        CHECK(body.angle == printed["angle"].get<double>());
+        CHECK(body.velocity.x == printed["velocity"][0].get<double>());
+        CHECK(body.velocity.y == printed["velocity"][1].get<double>());
+        CHECK(body.angularVelocity == printed["angular_velocity"].get<double>());
+    }
+    // The file keeps its form: its description, world block, namespaced fields and physical fields.
+    const nlohmann::ordered_json json = nlohmann::ordered_json::parse(ReadAll(saved));
+    CHECK(json["description"] == "drop");
+    CHECK(json["world"].dump() == R"({"gravity":[0,-9.81],"dt":0.0166666})");
+    CHECK(json["bodies"][0]["box"].dump() == "[20,1]");
+    CHECK(json["bodies"][0]["static"] == true);
+    CHECK(json["bodies"][1]["tool:color"] == "red");
+    CHECK(json["bodies"][2]["density"] == 2);
+    // No temporary file is left beside it.
+    for (const auto& entry : std::filesystem::directory_iterator(kSim.dir))
+    {
+        CHECK(entry.path().filename().string().find(".tmp.") == std::string::npos);
+    }
+
+    // The saved scene steps on.
+    const SimRun more = Sim(saved + " --steps 5");
+    CHECK(more.exitCode == 0);
+    CHECK(more.out.size() == 5);
+
+    // A directory that does not exist: an error naming the file, after the run.
+    const SimRun bad = Sim(kSim / "drop.json --steps 2 --save " + kSim / "missing/out.json");
+    CHECK(bad.exitCode == 1);
+    CHECK(bad.err.find("satviz-sim: " + kSim / "missing/out.json" + ": cannot write") != std::string::npos);
+}
+
+TEST_CASE("satviz-sim refuses bad arguments and scenes with one line naming the option, file or field", "[sim]")
+{
+    WriteFile(kSim / "drop.json", kDrop);
+    const std::string scene = kSim / "drop.json";
+    const struct
+    {
+        std::string arguments;
+        std::string error;
+        int exitCode;
+    } cases[] = {
+        {scene + " --steps 0", "satviz-sim: --steps: expected a whole number of steps of at least 1, got \"0\"", 2},
+        {scene + " --steps -3", "satviz-sim: --steps: expected a whole number of steps of at least 1, got \"-3\"", 2},
+        {scene + " --steps ten", "satviz-sim: --steps: expected a whole number of steps of at least 1, got \"ten\"", 2},
+        {scene + " --steps 2.5", "satviz-sim: --steps: expected a whole number of steps of at least 1, got \"2.5\"", 2},
+        {scene + " --steps 5 --every 0", "satviz-sim: --every: expected a whole number of at least 1, got \"0\"", 2},
+        {scene + " --steps 5 --dt 0",
+         "satviz-sim: --dt: expected a finite step length greater than 0 (at most 1e12), got \"0\"", 2},
+        {scene + " --steps 5 --dt -0.1",
+         "satviz-sim: --dt: expected a finite step length greater than 0 (at most 1e12), got \"-0.1\"", 2},
+        {scene + " --steps 5 --dt nan",
+         "satviz-sim: --dt: expected a finite step length greater than 0 (at most 1e12), got \"nan\"", 2},
+        {scene + " --steps 5 --dt inf",
+         "satviz-sim: --dt: expected a finite step length greater than 0 (at most 1e12), got \"inf\"", 2},
+        {scene + " --steps 5 --dt 1e-3x",
+         "satviz-sim: --dt: expected a finite step length greater than 0 (at most 1e12), got \"1e-3x\"", 2},
+        {kSim / "missing.json --steps 5",
+         "satviz-sim: " + kSim / "missing.json" + ": cannot open: No such file or directory", 1},
+    };
+    for (const auto& c : cases)
+    {
+        INFO(c.arguments);
+        const SimRun run = Sim(c.arguments);
+        CHECK(run.exitCode == c.exitCode);
+        CHECK(run.out.empty());
+        CHECK(run.err == c.error + "\n");
+    }
+
+    WriteFile(kSim / "bad.json", R"({"bodies": [{"name": "A", "box": [1, 1], "density": 0}]})");
+    const SimRun bad = Sim(kSim / "bad.json --steps 5");
+    CHECK(bad.exitCode == 1);
+    CHECK(bad.out.empty());
+    CHECK(bad.err == "satviz-sim: " + kSim / "bad.json" + ": bodies[0].density: must be greater than 0\n");
+    WriteFile(kSim / "bad_dt.json", R"({"bodies": [], "world": {"dt": -1}})");
+    CHECK(Sim(kSim / "bad_dt.json --steps 5").err ==
+          "satviz-sim: " + kSim / "bad_dt.json" + ": world.dt: must be greater than 0\n");
+
+    // A final state the scene format cannot hold is refused before anything is written: an angle past 1e6.
+    WriteFile(kSim / "spin.json", R"({"bodies": [{"name": "spinner", "box": [2, 0.1], "angular_velocity": 1e6}]})");
+    const SimRun spun = Sim(kSim / "spin.json --steps 2 --save " + kSim / "spun.json");
+    CHECK(spun.exitCode == 1);
+    CHECK(spun.out.size() == 2);
+    CHECK(spun.err.find("satviz-sim: " + kSim / "spun.json" +
+                        ": bodies[0].angle: magnitude exceeds 1e+06 (the final state; nothing was written)\n") !=
+          std::string::npos);
+    CHECK(!std::filesystem::exists(kSim / "spun.json"));
+
+    // Without a scene or --steps: CLI11's usage error, and a non-zero exit.
+    CHECK(Sim("--steps 5").exitCode != 0);
+    CHECK(Sim(scene).exitCode != 0);
+}
+
+TEST_CASE("satviz-sim: the README's example line is what the program prints", "[sim]")
+{
+    WriteFile(kSim / "ball.json", R"({"bodies": [{"name": "ball", "circle": {"radius": 0.5}, "position": [0, 2],
+        "angular_velocity": 1}], "world": {"gravity": [0, -9.81], "dt": 0.0166666}})");
+    const SimRun run = Sim(kSim / "ball.json --steps 1");
+    REQUIRE(run.exitCode == 0);
+    REQUIRE(run.out.size() == 1);
+    std::istringstream readme(ReadAll(SATVIZ_SOURCE_DIR "/README.md"));
+    std::string example;
+    for (std::string line; std::getline(readme, line);)
+    {
+        if (line.rfind(R"({"step":1,)", 0) == 0)
+        {
+            example = line;
+        }
+    }
+    CHECK(example == run.out[0]);
+}
+
+TEST_CASE("satviz-sim --version prints its name and the project version", "[sim]")
+{
+    const SimRun run = Sim("--version");
+    CHECK(run.exitCode == 0);
+    REQUIRE(run.out.size() == 1);
+    CHECK(run.out[0] == std::string("satviz-sim ") + SATVIZ_VERSION);
+    CHECK(run.err.empty());
+}
