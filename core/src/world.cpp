@@ -427,6 +427,7 @@ void Stepper::FindContacts()
     // The contacts of pairs skipped because neither body was awake are kept as they were: neither body moved. Both
     // lists are in pair order, so a merge keeps the whole in order.
     const size_t found = contacts.size();
+    counts.touching = static_cast<int64_t>(found);
     for (const WorldContact& c : previous)
     {
         if (!awakeAtStart[c.a] && !awakeAtStart[c.b])
@@ -437,7 +438,6 @@ void Stepper::FindContacts()
     std::inplace_merge(
         contacts.begin(), contacts.begin() + static_cast<std::ptrdiff_t>(found), contacts.end(),
         [](const WorldContact& x, const WorldContact& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); });
-    counts.touching = static_cast<int64_t>(contacts.size());
     WakeIslands(world, wake);
 }
 

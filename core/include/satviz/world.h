@@ -110,9 +110,10 @@ struct StepCounts
     int64_t sleepingPairs = 0; ///< skipped because neither body is awake (asleep or static, at least one asleep)
     int64_t boundsApart = 0;   ///< skipped by the broadphase: their bounding boxes do not overlap
     int64_t tested = 0;        ///< given to the narrowphase (Collide)
-    int64_t touching = 0;      ///< found touching or overlapping: contacts for the solver
-    int64_t swept = 0;         ///< pairs swept for a time of impact (fast bodies)
-    int64_t hits = 0;          ///< time-ordered hits resolved within the step
+    /// Of the tested, found touching or overlapping (contacts kept from sleeping pairs are not counted).
+    int64_t touching = 0;
+    int64_t swept = 0;                 ///< pairs swept for a time of impact (fast bodies)
+    int64_t hits = 0;                  ///< time-ordered hits resolved within the step
     int64_t broadphaseComparisons = 0; ///< box comparisons the broadphase made
     int awakeBodies = 0;               ///< dynamic bodies awake after the step
     int sleepingBodies = 0;            ///< dynamic bodies asleep after the step
