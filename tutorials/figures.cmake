@@ -42,6 +42,9 @@ set(SATVIZ_FIGURE_SCENES
   l14_head_on_after
   l14_slide
   l14_slide_after
+  l15_slope
+  l15_slope_sticks
+  l15_slope_slides
 )
 set(SATVIZ_STEP_SCENES
   overlapping_boxes
