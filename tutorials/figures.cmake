@@ -45,6 +45,11 @@ set(SATVIZ_FIGURE_SCENES
   l15_slope
   l15_slope_sticks
   l15_slope_slides
+  l16_peg
+  l16_peg_after
+  l16_plank_corner
+  l16_plank_corner_after
+  l16_plank_flat_after
 )
 set(SATVIZ_STEP_SCENES
   overlapping_boxes
