@@ -50,6 +50,14 @@ set(SATVIZ_FIGURE_SCENES
   l16_plank_corner
   l16_plank_corner_after
   l16_plank_flat_after
+  l17_bullet
+  l17_bullet_after
+  l17_corner
+  l17_corner_after
+  l17_spinner
+  l17_spinner_sampled
+  l17_spinner_after
+  l17_skips
 )
 set(SATVIZ_STEP_SCENES
   overlapping_boxes
