@@ -4,6 +4,7 @@
 #include "app.h"
 
 #include <satviz/render/describe.h>
+#include <satviz/scene_world.h>
 
 #include <algorithm>
 #include <cmath>
@@ -128,6 +129,16 @@ bool App::Open(const std::string& path)
         SetStatus(path + ": bodies: the app needs at least two bodies to test", true);
         return false;
     }
+    // A view that asks for rigid-body steps is shown where they leave the bodies, as satviz-render draws it. The
+    // scene then holds that state, its sim_steps back to 0, so that a save or an export pictures what the canvas
+    // shows.
+    const int simSteps = result.scene.view.simSteps;
+    if (const std::string error = SimulateScene(result.scene, simSteps); !error.empty())
+    {
+        SetStatus(path + ": " + error, true);
+        return false;
+    }
+    result.scene.view.simSteps = 0;
     scene = std::move(result.scene);
     file = path;
     std::error_code code;
@@ -155,7 +166,12 @@ bool App::Open(const std::string& path)
     rerun_ = false;
     Refresh();
     Remember(path);
-    SetStatus("Opened " + path + (readOnly ? " (a bundled scene: Save asks for a new file)" : ""), false);
+    SetStatus("Opened " + path +
+                  (simSteps > 0 ? ", after " + std::to_string(simSteps) + " rigid-body step" +
+                                      (simSteps == 1 ? "" : "s") + " (its view's sim_steps)"
+                                : "") +
+                  (readOnly ? " (a bundled scene: Save asks for a new file)" : ""),
+              false);
     return true;
 }
 

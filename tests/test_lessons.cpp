@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The lessons in tutorials/: every figure they show exists and comes from a scene, every scene they name loads,
-// and every number of a worked example that is marked for checking matches satviz-query on its scene.
+// and every number of a worked example that is marked for checking matches satviz-query or satviz-sim on its scene.
 //
 // A checked number is written after an HTML comment that names the scene and a JSON pointer into satviz-query's
 // answer for it (with --trace, textbook view):
 //     the overlap is <!--check overlapping_boxes /pairs/0/depth-->0.18
+// or, with @N after the scene, into the last line satviz-sim prints for it after N steps (with --counts):
+//     it stops at <!--check l14_slide@60 /bodies/1/position/0-->-1.107
 // The number must equal the value rounded to the decimals it shows.
 
 #include <satviz/query_json.h>
@@ -16,9 +18,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace satviz;
 namespace fs = std::filesystem;
@@ -115,10 +121,12 @@ std::vector<std::string> Scenes(const std::string& text)
     return out;
 }
 
-// A checked number: "<!--check SCENE /pointer-->NUMBER".
+// A checked number: "<!--check SCENE /pointer-->NUMBER", or "<!--check SCENE@STEPS /pointer-->NUMBER" for
+// satviz-sim's state after STEPS steps.
 struct CheckMark
 {
     std::string scene;
+    int steps = 0; // 0: satviz-query
     std::string pointer;
     std::string shown;
 };
@@ -133,6 +141,17 @@ std::vector<CheckMark> CheckMarks(const std::string& text)
         size_t p = at + open.size();
         mark.scene = Run(text, p, NameCharacter);
         p += mark.scene.size();
+        if (p < text.size() && text[p] == '@')
+        {
+            const std::string digits =
+                Run(text, p + 1, [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+            if (digits.empty() || digits.size() > 7)
+            {
+                continue;
+            }
+            mark.steps = std::stoi(digits);
+            p += 1 + digits.size();
+        }
         if (p >= text.size() || text[p] != ' ')
         {
             continue;
@@ -160,6 +179,39 @@ int Decimals(const std::string& number)
 {
     const size_t dot = number.find('.');
     return dot == std::string::npos ? 0 : static_cast<int>(number.size() - dot - 1);
+}
+
+// The last line satviz-sim prints for a scene of tutorials/scenes after `steps` steps, with --counts: the program
+// itself, run once per scene and count.
+nlohmann::json SimulatedState(const std::string& scene, int steps)
+{
+    static std::map<std::pair<std::string, int>, nlohmann::json> done;
+    const auto key = std::make_pair(scene, steps);
+    if (const auto found = done.find(key); found != done.end())
+    {
+        return found->second;
+    }
+    const fs::path out = fs::temp_directory_path() / ("satviz-lessons-sim-" + std::to_string(::getpid()) + ".out");
+    const std::string command =
+        std::string(SATVIZ_SIM_EXE) + " " + (kTutorials / "scenes" / (scene + ".json")).string() + " --steps " +
+        std::to_string(steps) + " --every " + std::to_string(steps) + " --counts > " + out.string() + " 2> /dev/null";
+    const int status = std::system(command.c_str());
+    std::string last;
+    {
+        std::ifstream in(out);
+        for (std::string line; std::getline(in, line);)
+        {
+            last = line;
+        }
+    }
+    fs::remove(out);
+    nlohmann::json state;
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && !last.empty())
+    {
+        state = nlohmann::json::parse(last);
+    }
+    done.emplace(key, state);
+    return state;
 }
 
 } // namespace
@@ -216,9 +268,10 @@ TEST_CASE("Every scene a lesson names loads and can be pictured", "[lessons]")
     CHECK(scenes > 0);
 }
 
-TEST_CASE("Every checked number of a worked example matches satviz-query on its scene", "[lessons]")
+TEST_CASE("Every checked number of a worked example matches satviz-query or satviz-sim on its scene", "[lessons]")
 {
     int checked = 0;
+    int simulated = 0;
     for (const fs::path& lesson : Lessons())
     {
         const std::string text = ReadFile(lesson);
@@ -233,16 +286,32 @@ TEST_CASE("Every checked number of a worked example matches satviz-query on its 
             const fs::path file = kTutorials / "scenes" / (scene + ".json");
             const SceneResult loaded = LoadScene(file.string());
             REQUIRE(loaded.Ok());
-            const nlohmann::ordered_json answer = QuerySceneJson(loaded.scene, file.string(), true);
-            const nlohmann::ordered_json::json_pointer at(pointer);
-            REQUIRE(answer.contains(at));
-            REQUIRE(answer.at(at).is_number());
-            const double value = answer.at(at).get<double>();
+            double value = 0.0;
+            if (mark.steps > 0)
+            {
+                INFO("after " << mark.steps << " steps");
+                const nlohmann::json state = SimulatedState(scene, mark.steps);
+                REQUIRE(state.is_object());
+                const nlohmann::json::json_pointer at(pointer);
+                REQUIRE(state.contains(at));
+                REQUIRE(state.at(at).is_number());
+                value = state.at(at).get<double>();
+                ++simulated;
+            }
+            else
+            {
+                const nlohmann::ordered_json answer = QuerySceneJson(loaded.scene, file.string(), true);
+                const nlohmann::ordered_json::json_pointer at(pointer);
+                REQUIRE(answer.contains(at));
+                REQUIRE(answer.at(at).is_number());
+                value = answer.at(at).get<double>();
+            }
             const double unit = std::pow(10.0, -Decimals(shown));
-            INFO("satviz-query says " << value);
+            INFO((mark.steps > 0 ? "satviz-sim says " : "satviz-query says ") << value);
             CHECK(std::abs(value - std::stod(shown)) <= 0.5 * unit * (1.0 + 1e-9));
             ++checked;
         }
     }
     CHECK(checked > 0);
+    CHECK(simulated > 0);
 }

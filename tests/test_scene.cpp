@@ -196,6 +196,28 @@ TEST_CASE("View block errors name the field", "[scene]")
     CHECK(ParseScene(SceneToJson(single.scene), "s.json").scene.view.singlePrecision);
 }
 
+TEST_CASE("A view's sim_steps loads, saves back and refuses a negative or fractional count", "[scene]")
+{
+    const std::string two = R"({"bodies": [{"name": "P", "box": [1, 1]}, {"name": "Q", "box": [1, 1]}], "view": )";
+    const SceneResult stepped = ParseScene(two + R"({"sim_steps": 120}})", "s.json");
+    INFO(stepped.error);
+    REQUIRE(stepped.Ok());
+    CHECK(stepped.scene.view.simSteps == 120);
+    CHECK(ParseScene(SceneToJson(stepped.scene), "again.json").scene.view.simSteps == 120);
+    CHECK(ParseScene(two + "{}}", "s.json").scene.view.simSteps == 0);
+    // Absent stays absent; a file's explicit 0 is kept as written.
+    CHECK(SceneToJson(ParseScene(two + "{}}", "s.json").scene).find("sim_steps") == std::string::npos);
+    CHECK(SceneToJson(ParseScene(two + R"({"sim_steps": 0}})", "s.json").scene).find("\"sim_steps\":0") !=
+          std::string::npos);
+    CHECK(ErrorOf(two + R"({"sim_steps": -1}})") ==
+          "s.json: view.sim_steps: expected a whole number from 0 to 1000000");
+    CHECK(ErrorOf(two + R"({"sim_steps": 2.5}})") ==
+          "s.json: view.sim_steps: expected a whole number from 0 to 1000000");
+    CHECK(ErrorOf(two + R"({"sim_steps": "many"}})") == "s.json: view.sim_steps: expected a number, got a string");
+    CHECK(ErrorOf(two + R"({"sim_step": 3}})").find("unknown field \"sim_step\" (did you mean \"sim_steps\"?)") !=
+          std::string::npos);
+}
+
 TEST_CASE("A saved scene reads back as the same scene, bit for bit", "[scene]")
 {
     int scenes = 0;
@@ -243,6 +265,7 @@ TEST_CASE("A saved scene reads back as the same scene, bit for bit", "[scene]")
         CHECK(a.view.time == b.view.time);
         CHECK(a.view.caption == b.view.caption);
         CHECK(a.view.singlePrecision == b.view.singlePrecision);
+        CHECK(a.view.simSteps == b.view.simSteps);
         ++scenes;
     }
     CHECK(scenes >= 8);

@@ -170,6 +170,39 @@ TEST_CASE("CopyWorldState: the world's state back into the scene, which saves an
     CHECK(again.scene.world.dt == 0.0166666);
 }
 
+TEST_CASE("SimulateScene: a falling body drops by g dt^2 N (N + 1) / 2, what sim_steps draws", "[sim][world]")
+{
+    // Each step adds g dt to the velocity, then moves by the new velocity (semi-implicit Euler): after N steps the
+    // body has fallen g dt^2 (1 + 2 + ... + N) = g dt^2 N (N + 1) / 2, and falls at g dt N.
+    SceneResult loaded =
+        ParseScene(R"({"bodies": [{"name": "ground", "box": [4, 1], "position": [0, -10], "static": true},
+        {"name": "ball", "circle": {"radius": 0.25}, "position": [0, 2]}],
+        "world": {"gravity": [0, -10], "dt": 0.1}, "view": {"sim_steps": 10}})",
+                   "fall.json");
+    REQUIRE(loaded.Ok());
+    Scene& scene = loaded.scene;
+    CHECK(SimulateScene(scene, 0).empty());
+    CHECK(scene.bodies[1].position == Vec2{0, 2});
+    REQUIRE(SimulateScene(scene, scene.view.simSteps).empty());
+    CHECK(scene.bodies[1].position.x == 0.0);
+    CHECK(scene.bodies[1].position.y == Approx(2.0 - 10.0 * 0.1 * 0.1 * 10 * 11 / 2).margin(1e-12)); // 2 - 5.5
+    CHECK(scene.bodies[1].velocity.y == Approx(-10.0 * 0.1 * 10).margin(1e-12));
+    CHECK(scene.bodies[0].position == Vec2{0, -10});
+
+    // Errors leave the scene as it was.
+    const Vec2 before = scene.bodies[1].position;
+    CHECK(SimulateScene(scene, -1) == "expected a whole number of steps of at least 0, got -1");
+    Scene flung = scene;
+    flung.bodies[1].velocity = {9e11, 0};
+    flung.world.dt = 10.0;
+    CHECK(SimulateScene(flung, 1).find("bodies[1] (\"ball\"): after 1 step its state is beyond") == 0);
+    CHECK(flung.bodies[1].velocity == Vec2{9e11, 0});
+    Scene bad = scene;
+    bad.bodies[1].density = 0.0;
+    CHECK(SimulateScene(bad, 3).rfind("bodies[1] (\"ball\"): ", 0) == 0);
+    CHECK(bad.bodies[1].position == before);
+}
+
 TEST_CASE("satviz-sim prints one JSON line per step with the world's own numbers, and a summary", "[sim]")
 {
     WriteFile(kSim / "drop.json", kDrop);

@@ -1,5 +1,6 @@
 # The figures of the tutorials, rendered by satviz-render from tutorials/scenes/ into tutorials/figures/.
-# SATVIZ_FIGURE_SCENES: one figure each, as the scene's own view block says (SCENE.png).
+# SATVIZ_FIGURE_SCENES: one figure each, as the scene's own view block says (SCENE.png); a view with "sim_steps"
+# steps the scene's world that many times first.
 # SATVIZ_STEP_SCENES: one figure per trace step (SCENE-stepN.png, N from 1), for stepping through the textbook test.
 # SATVIZ_FACE_STEP_SCENES: the same in the face-test view (--view faces), in figures/faces/.
 # The committed figures double as the golden images of the render tests.
@@ -37,6 +38,26 @@ set(SATVIZ_FIGURE_SCENES
   pitfall_one_shape
   pitfall_tunnel
   pitfall_unnormalised
+  l14_head_on
+  l14_head_on_after
+  l14_slide
+  l14_slide_after
+  l15_slope
+  l15_slope_sticks
+  l15_slope_slides
+  l16_peg
+  l16_peg_after
+  l16_plank_corner
+  l16_plank_corner_after
+  l16_plank_flat_after
+  l17_bullet
+  l17_bullet_after
+  l17_corner
+  l17_corner_after
+  l17_spinner
+  l17_spinner_sampled
+  l17_spinner_after
+  l17_skips
 )
 set(SATVIZ_STEP_SCENES
   overlapping_boxes

@@ -418,7 +418,7 @@ SceneView ParseView(const Json& value, const Scene& scene)
     }
     CheckKeys(value, path,
               {"center", "zoom", "size", "layers", "pair", "query", "steps", "pitfall", "step", "time", "caption",
-               "precision"});
+               "precision", "sim_steps"});
     SceneView view;
     if (value.contains("zoom"))
     {
@@ -556,6 +556,10 @@ SceneView ParseView(const Json& value, const Scene& scene)
             Fail(path + ".precision", "expected \"double\" or \"float\", got \"" + precision + "\"");
         }
         view.singlePrecision = precision == "float";
+    }
+    if (value.contains("sim_steps"))
+    {
+        view.simSteps = WholeNumber(value["sim_steps"], path + ".sim_steps", 0, kMaxViewSimSteps);
     }
     return view;
 }
@@ -1024,9 +1028,13 @@ Json ViewJson(const SceneView& v, const Json* old, bool fromFile)
     {
         fields.push_back({"precision", v.singlePrecision ? "float" : "double"});
     }
+    if (v.simSteps > 0 || (fromFile && Member(old, "sim_steps") != nullptr))
+    {
+        fields.push_back({"sim_steps", v.simSteps});
+    }
     return Arrange(fields, old,
                    {"center", "zoom", "size", "layers", "pair", "query", "steps", "pitfall", "step", "time", "caption",
-                    "precision"});
+                    "precision", "sim_steps"});
 }
 
 // The world block. `old` is the file's, null for a scene built in code (which writes both fields) or a file

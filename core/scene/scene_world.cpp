@@ -4,6 +4,7 @@
 #include <satviz/scene_world.h>
 
 #include <cassert>
+#include <cmath>
 
 namespace satviz
 {
@@ -59,6 +60,50 @@ void CopyWorldState(const World& world, Scene& scene)
         to.velocity = from.velocity;
         to.angularVelocity = from.angularVelocity;
     }
+}
+
+std::string SimulateScene(Scene& scene, int steps)
+{
+    if (steps < 0)
+    {
+        return "expected a whole number of steps of at least 0, got " + std::to_string(steps);
+    }
+    if (steps == 0)
+    {
+        return {};
+    }
+    if (std::string error = ValidateSceneWorld(scene); !error.empty())
+    {
+        return error;
+    }
+    World world = MakeWorld(scene);
+    for (int i = 0; i < steps; ++i)
+    {
+        Step(world, scene.world.dt);
+    }
+    // The scene keeps what it can hold, as a file would: a state beyond that is refused whole.
+    const std::string after = "after " + std::to_string(steps) + (steps == 1 ? " step" : " steps");
+    for (size_t i = 0; i < world.bodies.size(); ++i)
+    {
+        const RigidBody& body = world.bodies[i];
+        const double values[] = {body.position.x, body.position.y, body.velocity.x, body.velocity.y,
+                                 body.angularVelocity};
+        for (const double v : values)
+        {
+            if (!(std::fabs(v) <= kMaxSceneValue))
+            {
+                return "bodies[" + std::to_string(i) + "] (\"" + scene.bodies[i].name + "\"): " + after +
+                       " its state is beyond what a scene holds (at most 1e12)";
+            }
+        }
+        if (!(std::fabs(body.angle) <= 1e6))
+        {
+            return "bodies[" + std::to_string(i) + "] (\"" + scene.bodies[i].name + "\"): " + after +
+                   " its angle is beyond what a scene holds (at most 1e6 radians)";
+        }
+    }
+    CopyWorldState(world, scene);
+    return {};
 }
 
 } // namespace satviz

@@ -8,6 +8,7 @@
 #include <satviz/render/imgui_canvas.h>
 #include <satviz/render/png_file.h>
 #include <satviz/scene.h>
+#include <satviz/scene_world.h>
 
 #include <CLI/CLI.hpp>
 #include <GL/osmesa.h>
@@ -259,12 +260,24 @@ int main(int argc, char** argv)
                    "Comma-separated layers: shapes, labels, normals, axes, projection, exit, best, mtv, contacts, "
                    "swept, ghost, caption, or all, default");
     app.add_flag("-q,--quiet", quiet, "No progress lines, only errors and the summary");
+    int simSteps = 0;
+    auto* simOption = app.add_option("--sim-steps", simSteps,
+                                     "Step each scene's rigid-body world N times (by its world.dt) before drawing it, "
+                                     "then draw the bodies where the world leaves them; default: the scene's "
+                                     "view.sim_steps, else 0")
+                          ->type_name("N");
     CLI11_PARSE(app, argc, argv);
 
     satviz::FigureOptions options;
     if (stepOption->count() > 0 && step < 1)
     {
         std::fprintf(stderr, "satviz-render: --step: steps count from 1 (1 = the first axis), got %d\n", step);
+        return 2;
+    }
+    if (simOption->count() > 0 && (simSteps < 0 || simSteps > satviz::kMaxViewSimSteps))
+    {
+        std::fprintf(stderr, "satviz-render: --sim-steps: expected a whole number of steps from 0 to %d, got %d\n",
+                     satviz::kMaxViewSimSteps, simSteps);
         return 2;
     }
     if (!viewName.empty())
@@ -340,10 +353,18 @@ int main(int argc, char** argv)
     for (size_t s = 0; s < scenes.size(); ++s)
     {
         const std::string& file = scenes[s];
-        const satviz::SceneResult loaded = satviz::LoadScene(file);
+        satviz::SceneResult loaded = satviz::LoadScene(file);
         if (!loaded.Ok())
         {
             std::fprintf(stderr, "satviz-render: %s\n", loaded.error.c_str());
+            ++failedScenes;
+            continue;
+        }
+        // The world first, when asked: the figure then shows the bodies where the steps leave them.
+        const int sceneSteps = simOption->count() > 0 ? simSteps : loaded.scene.view.simSteps;
+        if (const std::string simError = satviz::SimulateScene(loaded.scene, sceneSteps); !simError.empty())
+        {
+            std::fprintf(stderr, "satviz-render: %s: %s\n", file.c_str(), simError.c_str());
             ++failedScenes;
             continue;
         }

@@ -394,6 +394,27 @@ TEST_CASE("A scene that fails to load keeps the current one and shows the error"
     fs::remove(broken);
 }
 
+TEST_CASE("A scene whose view asks for sim_steps opens where the steps leave it, as satviz-render draws it", "[app]")
+{
+    Harness h(ScratchCopy("overlapping_boxes.json").string());
+    const fs::path file = fs::temp_directory_path() / ("satviz-app-sim-" + std::to_string(::getpid()) + ".json");
+    // Gravity 10, dt 0.1, 10 steps: the ball falls 10 * 0.1^2 * (1 + ... + 10) = 5.5.
+    std::ofstream(file) << R"({"bodies": [{"name": "ground", "box": [4, 1], "position": [0, -10], "static": true},
+        {"name": "ball", "circle": {"radius": 0.25}, "position": [0, 2]}],
+        "world": {"gravity": [0, -10], "dt": 0.1}, "view": {"sim_steps": 10}})";
+    REQUIRE(h.app->Open(file.string()));
+    h.Frames(2);
+    CHECK(!h.app->statusIsError);
+    CHECK(h.app->status.find("after 10 rigid-body steps") != std::string::npos);
+    CHECK(h.app->scene.bodies[1].position.y == Approx(-3.5).margin(1e-12));
+    CHECK(h.app->scene.bodies[1].velocity.y == Approx(-10.0).margin(1e-12));
+    // The scene holds the stepped state: saving or exporting it does not step it again.
+    CHECK(h.app->scene.view.simSteps == 0);
+    CHECK(h.app->SceneForSaving().view.simSteps == 0);
+    CHECK(!h.app->dirty);
+    fs::remove(file);
+}
+
 TEST_CASE("Quitting without changes needs no question", "[app]")
 {
     Harness h(ScratchCopy("overlapping_boxes.json").string());

@@ -265,3 +265,51 @@ TEST_CASE("satviz-render --version prints its name and the project version", "[r
     CHECK(run.outLines[0] == std::string("satviz-render ") + SATVIZ_VERSION);
     CHECK(run.errLines.empty());
 }
+
+TEST_CASE("satviz-render --sim-steps draws a falling body where N steps leave it, g dt^2 N (N + 1) / 2 lower",
+          "[render-tool]")
+{
+    const fs::path dir = FreshDirectory("render-sim");
+    fs::create_directories(dir);
+    // A ball at y = 2 under gravity 10 with dt 0.1: each step adds g dt to its speed, then moves it, so after 10
+    // steps it has fallen 10 * 0.1^2 * (1 + 2 + ... + 10) = 5.5, to y = -3.5 (the continuous g t^2 / 2 says 5).
+    auto scene = [](const std::string& ball, const std::string& extra) {
+        return R"({"bodies": [{"name": "ground", "box": [4, 1], "position": [0, -10], "static": true},
+            {"name": "ball", "circle": {"radius": 0.25}, )" +
+               ball + R"(}], "world": {"gravity": [0, -10], "dt": 0.1},
+            "view": {"zoom": 40, "center": [0, -1], "size": [200, 400], "query": "collide", "layers": ["shapes"])" +
+               extra + "}}";
+    };
+    std::ofstream(dir / "fall.json") << scene(R"("position": [0, 2])", "");
+    std::ofstream(dir / "fall_view.json") << scene(R"("position": [0, 2])", R"(, "sim_steps": 10)");
+    std::ofstream(dir / "closed_form.json") << scene(R"("position": [0, -3.5])", "");
+    std::ofstream(dir / "continuous.json") << scene(R"("position": [0, -3])", "");
+
+    const Run run = Render((dir / "fall.json").string() + " --sim-steps 10 -q -o " + (dir / "fall.png").string());
+    INFO(Joined(run.errLines));
+    REQUIRE(run.exitCode == 0);
+    REQUIRE(Render((dir / "closed_form.json").string() + " -q -o " + (dir / "closed_form.png").string()).exitCode == 0);
+    REQUIRE(Render((dir / "continuous.json").string() + " -q -o " + (dir / "continuous.png").string()).exitCode == 0);
+    REQUIRE(Render((dir / "fall.json").string() + " -q -o " + (dir / "start.png").string()).exitCode == 0);
+    const std::string stepped = Bytes(dir / "fall.png");
+    CHECK(stepped == Bytes(dir / "closed_form.png"));
+    CHECK(stepped != Bytes(dir / "continuous.png"));
+    CHECK(stepped != Bytes(dir / "start.png"));
+
+    // The scene's view.sim_steps does the same; --sim-steps overrides it, 0 drawing the scene as written.
+    REQUIRE(Render((dir / "fall_view.json").string() + " -q -o " + (dir / "view.png").string()).exitCode == 0);
+    CHECK(Bytes(dir / "view.png") == stepped);
+    REQUIRE(
+        Render((dir / "fall_view.json").string() + " --sim-steps 0 -q -o " + (dir / "zero.png").string()).exitCode ==
+        0);
+    CHECK(Bytes(dir / "zero.png") == Bytes(dir / "start.png"));
+
+    // A negative count is refused before anything is drawn, with one line.
+    const Run negative =
+        Render((dir / "fall.json").string() + " --sim-steps -1 -q -o " + (dir / "negative.png").string());
+    CHECK(negative.exitCode == 2);
+    REQUIRE(negative.errLines.size() == 1);
+    CHECK(negative.errLines[0] ==
+          "satviz-render: --sim-steps: expected a whole number of steps from 0 to 1000000, got -1");
+    CHECK(!fs::exists(dir / "negative.png"));
+}

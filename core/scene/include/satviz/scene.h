@@ -102,7 +102,14 @@ struct SceneView
     double time = -1.0;           ///< sweeps: draw the moving shapes at this time in [0, 1]; -1: not drawn
     std::string caption;          ///< text drawn above the figure; empty: the step's own description
     bool singlePrecision = false; ///< run the queries in float ("precision": "float") instead of double
+    /// Rigid-body steps to take before the scene is pictured ("sim_steps"): its world (MakeWorld) is stepped this
+    /// many times by the scene's dt and the bodies are drawn where the world leaves them (SimulateScene). 0, the
+    /// default: drawn as written.
+    int simSteps = 0;
 };
+
+/// Most rigid-body steps a view may ask for before it is pictured ("sim_steps").
+constexpr int kMaxViewSimSteps = 1000000;
 
 /// Largest accepted image side of a view, in pixels.
 constexpr int kMaxViewSize = 8192;

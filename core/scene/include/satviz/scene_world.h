@@ -29,4 +29,10 @@ World MakeWorld(const Scene& scene);
 /// been made from the scene (the same number of bodies).
 void CopyWorldState(const World& world, Scene& scene);
 
+/// Steps the scene as a world `steps` (>= 0) times by its dt and copies the state back: MakeWorld, Step,
+/// CopyWorldState. What satviz-render and the app do for a view's sim_steps. Returns "" on success, else the
+/// problem, the scene unchanged: a scene that fails ValidateSceneWorld, a negative count, or a state the scene
+/// format cannot hold (a body flung beyond kMaxSceneValue, an angle wound past 1e6 radians).
+std::string SimulateScene(Scene& scene, int steps);
+
 } // namespace satviz
