@@ -70,7 +70,7 @@ struct WorldSettings
 {
     Vec2 gravity{};             ///< acceleration, units per time unit squared
     int velocityIterations = 8; ///< sequential-impulse passes over the contacts for the velocities
-    int positionIterations = 3; ///< split-impulse passes that remove overlap
+    int positionIterations = 3; ///< passes of the position correction that removes overlap
     /// Overlap left in place, in units: contacts are kept touching by this much so that they persist from step to
     /// step (and warm start), and the push-out never overshoots into a gap.
     double linearSlop = 0.005;
