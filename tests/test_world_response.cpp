@@ -107,13 +107,15 @@ TEST_CASE("A box on a 20 degree slope sticks when static friction exceeds tan 20
     World world = SlopeWorld(0.3, 0.5);
     const Vec2 start = world.bodies[1].position;
     const double angle = world.bodies[1].angle;
-    double moved = 0.0;
+    double moved = 0.0, along = 0.0;
     for (int i = 0; i < 120; ++i)
     {
         Step(world, kDt);
         moved = std::max(moved, Length(world.bodies[1].position - start));
+        along = std::max(along, std::abs(DownSlope(world, start)));
     }
-    INFO("largest displacement over 2 s: " << moved);
+    INFO("largest displacement over 2 s: " << moved << ", along the slope " << along);
+    CHECK(along < 0.01);
     CHECK(moved < 0.01);
     CHECK(std::abs(world.bodies[1].angle - angle) < 0.01);
 }
