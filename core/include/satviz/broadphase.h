@@ -43,6 +43,9 @@ struct SortAndSweep
 {
     /// Box indices in ascending order of their lower bound on the sweep axis; kept between calls.
     std::vector<int> order;
+    /// The sweep axis of the last call (0: x, 1: y; -1 before the first). It changes only when the other axis
+    /// spreads the centres clearly more, so a square pile does not flip between axes and re-sort from scratch.
+    int axis = -1;
     /// Comparisons of a box with a neighbour on the sweep axis in the last call (the work done).
     int64_t comparisons = 0;
 };

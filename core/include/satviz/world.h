@@ -151,6 +151,8 @@ struct World
     /// The broadphase's box order, kept between steps so that sorting costs close to linear time. Working memory,
     /// not state: two worlds with the same bodies and contacts step alike whatever it holds.
     SortAndSweep broadphase;
+    /// The same for the swept boxes of the time-ordered hits.
+    SortAndSweep sweptBroadphase;
 };
 
 /// Adds a body, computing its mass properties from the shape and the density (a static body gets none). Returns

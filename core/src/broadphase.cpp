@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: MIT
+// satviz: bounding boxes and sort and sweep.
+
+#include <satviz/broadphase.h>
+
+#include <algorithm>
+
+namespace satviz
+{
+
+Aabb ComputeAabb(const Shape& shape, const Transform& xf)
+{
+    if (shape.type == ShapeType::Circle)
+    {
+        const Vec2 c = TransformPoint(xf, shape.circle.center);
+        const double r = shape.circle.radius;
+        return {{c.x - r, c.y - r}, {c.x + r, c.y + r}};
+    }
+    const Polygon& polygon = shape.polygon;
+    Vec2 lo = TransformPoint(xf, polygon.vertices[0]);
+    Vec2 hi = lo;
+    for (int i = 1; i < polygon.Count(); ++i)
+    {
+        const Vec2 v = TransformPoint(xf, polygon.vertices[i]);
+        lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)};
+        hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
+    }
+    return {lo, hi};
+}
+
+namespace
+{
+
+// The axis along which the box centres spread most: 0 for x, 1 for y (Ericson, 7.5.2). The last axis stays
+// unless the other spreads the centres a quarter more.
+int SweepAxis(const std::vector<Aabb>& boxes, int last)
+{
+    const size_t n = boxes.size();
+    double sum[2] = {0.0, 0.0};
+    double sum2[2] = {0.0, 0.0};
+    for (const Aabb& box : boxes)
+    {
+        const double cx = 0.5 * (box.min.x + box.max.x);
+        const double cy = 0.5 * (box.min.y + box.max.y);
+        sum[0] += cx;
+        sum[1] += cy;
+        sum2[0] += cx * cx;
+        sum2[1] += cy * cy;
+    }
+    const double varX = sum2[0] - sum[0] * sum[0] / static_cast<double>(n);
+    const double varY = sum2[1] - sum[1] * sum[1] / static_cast<double>(n);
+    if (last == 0)
+    {
+        return varY > 1.25 * varX ? 1 : 0;
+    }
+    if (last == 1)
+    {
+        return varX > 1.25 * varY ? 0 : 1;
+    }
+    return varY > varX ? 1 : 0;
+}
+
+double Lower(const Aabb& box, int axis)
+{
+    return axis == 0 ? box.min.x : box.min.y;
+}
+double Upper(const Aabb& box, int axis)
+{
+    return axis == 0 ? box.max.x : box.max.y;
+}
+
+} // namespace
+
+// Outline (Baraff, 1992; Ericson, 7.5):
+//  1. Pick the axis of largest spread of the box centres.
+//  2. Order the boxes by their lower bound on it: an insertion sort of the last order when the count is unchanged
+//     (boxes that moved a little swap with few neighbours), else a full sort. Ties go by index, so the order, and
+//     with it the work, depends only on the boxes.
+//  3. Sweep: a box meets the boxes after it in the order whose lower bound is within its upper bound; each such
+//     pair is checked on the other axis.
+//  4. Sort the pairs, so the caller sees them in the same order whatever the axis.
+void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<std::pair<int, int>>& pairs,
+               bool (*skip)(const void* context, int i, int j), const void* context)
+{
+    pairs.clear();
+    sweep.comparisons = 0;
+    const int n = static_cast<int>(boxes.size());
+    if (n < 2)
+    {
+        sweep.order.assign(n, 0);
+        sweep.axis = -1;
+        return;
+    }
+    const int axis = SweepAxis(boxes, sweep.axis);
+    const bool sameAxis = axis == sweep.axis;
+    sweep.axis = axis;
+    std::vector<int>& order = sweep.order;
+    auto before = [&](int i, int j) {
+        const double li = Lower(boxes[i], axis);
+        const double lj = Lower(boxes[j], axis);
+        return li < lj || (li == lj && i < j);
+    };
+    if (sameAxis && static_cast<int>(order.size()) == n)
+    {
+        for (int k = 1; k < n; ++k)
+        {
+            const int item = order[k];
+            int m = k - 1;
+            while (m >= 0 && before(item, order[m]))
+            {
+                order[m + 1] = order[m];
+                --m;
+            }
+            order[m + 1] = item;
+        }
+    }
+    else
+    {
+        order.resize(n);
+        for (int i = 0; i < n; ++i)
+        {
+            order[i] = i;
+        }
+        std::sort(order.begin(), order.end(), before);
+    }
+
+    const int other = 1 - axis;
+    int64_t comparisons = 0;
+    for (int k = 0; k < n; ++k)
+    {
+        const int i = order[k];
+        const Aabb& a = boxes[i];
+        const double upper = Upper(a, axis);
+        for (int m = k + 1; m < n; ++m)
+        {
+            const int j = order[m];
+            const Aabb& b = boxes[j];
+            if (Lower(b, axis) > upper)
+            {
+                break;
+            }
+            ++comparisons;
+            const int lo = i < j ? i : j;
+            const int hi = i < j ? j : i;
+            if (skip != nullptr && skip(context, lo, hi))
+            {
+                continue;
+            }
+            if (Lower(a, other) <= Upper(b, other) && Lower(b, other) <= Upper(a, other))
+            {
+                pairs.emplace_back(lo, hi);
+            }
+        }
+    }
+    sweep.comparisons = comparisons;
+    std::sort(pairs.begin(), pairs.end());
+}
+
+void FindPairsBruteForce(const std::vector<Aabb>& boxes, std::vector<std::pair<int, int>>& pairs,
+                         bool (*skip)(const void* context, int i, int j), const void* context)
+{
+    pairs.clear();
+    const int n = static_cast<int>(boxes.size());
+    for (int i = 0; i < n; ++i)
+    {
+        for (int j = i + 1; j < n; ++j)
+        {
+            if (skip != nullptr && skip(context, i, j))
+            {
+                continue;
+            }
+            if (AabbOverlap(boxes[i], boxes[j]))
+            {
+                pairs.emplace_back(i, j);
+            }
+        }
+    }
+}
+
+} // namespace satviz

@@ -1,0 +1,206 @@
+// SPDX-License-Identifier: MIT
+// satviz: the contact solver of the world: sequential impulses on one contact at a time (internal).
+#pragma once
+
+#include <satviz/material.h>
+#include <satviz/solver_trace.h>
+
+#include <cmath>
+
+namespace satviz::detail
+{
+
+/// The velocities the solver changes, and the inverse masses it reads, of one body.
+struct SolverBody
+{
+    Vec2 v{};                ///< linear velocity of the centre of mass
+    double w = 0.0;          ///< angular velocity
+    Vec2 pv{};               ///< pseudo-velocity of the split impulse: moves the position only
+    double pw = 0.0;         ///< angular pseudo-velocity
+    double invMass = 0.0;    ///< 0 for static and sleeping bodies
+    double invInertia = 0.0; ///< 0 for static and sleeping bodies
+};
+
+/// One point of a contact as the solver sees it.
+struct SolverPoint
+{
+    Vec2 rA{};                   ///< from A's centre of mass to the point
+    Vec2 rB{};                   ///< from B's centre of mass to the point
+    double separation = 0.0;     ///< overlap (< 0) at the start of the step
+    double normalMass = 0.0;     ///< effective mass along the normal
+    double tangentMass = 0.0;    ///< effective mass along the tangent
+    double bounce = 0.0;         ///< separating normal speed the restitution asks for (0: none)
+    double normalImpulse = 0.0;  ///< accumulated normal impulse
+    double tangentImpulse = 0.0; ///< accumulated friction impulse
+    double pseudoImpulse = 0.0;  ///< accumulated split impulse
+    bool stuck = false;          ///< static friction held in the last pass
+};
+
+/// A contact between solver bodies a and b, normal from a to b.
+struct SolverContact
+{
+    int a = -1;                             ///< first body
+    int b = -1;                             ///< second body
+    Vec2 normal{};                          ///< unit normal from a to b
+    int count = 0;                          ///< points, 1 or 2
+    SolverPoint points[2]{};                ///< the points
+    ContactMaterial material{};             ///< restitution and frictions
+    bool block = false;                     ///< the two normal impulses are solved together
+    double k11 = 0.0, k12 = 0.0, k22 = 0.0; ///< the 2x2 normal mass matrix K (symmetric)
+    double m11 = 0.0, m12 = 0.0, m22 = 0.0; ///< its inverse
+    bool traced = false;                    ///< the world records this contact's passes
+};
+
+/// Records nothing: the fast path.
+struct NullSolveRecorder
+{
+    /// Ignores a pass.
+    void Pass(const ContactPointSolve&) {}
+};
+
+/// Appends every pass to a ContactSolveTrace.
+struct TraceSolveRecorder
+{
+    ContactSolveTrace* trace = nullptr; ///< where to record
+    /// Records a pass.
+    void Pass(const ContactPointSolve& pass) { trace->passes.push_back(pass); }
+};
+
+/// Relative velocity of B's point against A's point at offsets rA, rB.
+inline Vec2 RelativeVelocity(const SolverBody& a, const SolverBody& b, Vec2 rA, Vec2 rB)
+{
+    return (b.v + b.w * LeftPerp(rB)) - (a.v + a.w * LeftPerp(rA));
+}
+
+/// Adds impulse p at offsets rA, rB: -p on A, +p on B.
+inline void ApplyImpulse(SolverBody& a, SolverBody& b, Vec2 rA, Vec2 rB, Vec2 p)
+{
+    a.v = a.v - a.invMass * p;
+    a.w -= a.invInertia * Cross(rA, p);
+    b.v = b.v + b.invMass * p;
+    b.w += b.invInertia * Cross(rB, p);
+}
+
+/// Effective masses, restitution targets and the 2x2 block of a contact whose points have rA, rB and separation
+/// set. `approach[i]` is the relative normal velocity of point i before the step's gravity (< 0: approaching).
+void PrepareContact(SolverContact& c, const SolverBody& a, const SolverBody& b, const double approach[2],
+                    double restitutionThreshold);
+
+/// Applies the accumulated impulses of the last step (warm starting).
+void WarmStart(SolverContact& c, SolverBody& a, SolverBody& b);
+
+/// Outline of one velocity pass over a contact (Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005;
+/// "Fast and Simple Physics using Sequential Impulses", GDC 2006; Box2D's contact solver):
+///  1. Friction first, per point: the impulse that stops the slip, with the tangent's effective mass, added to the
+///     accumulated one. Within staticFriction times the normal impulse it is taken whole (the point sticks);
+///     beyond, the accumulated impulse is clamped to friction times the normal impulse (it slides).
+///  2. Normal: the impulse that brings the normal speed to the restitution target, accumulated and clamped to be
+///     a push. Two points are solved together as a 2x2 linear complementarity problem (each point's impulse
+///     positive with its speed at the target, or zero with its speed above it: four cases, the first that holds),
+///     so that a symmetric landing stays symmetric whatever the order of the points.
+template <typename Recorder>
+void SolveContactVelocity(SolverContact& c, SolverBody& a, SolverBody& b, int pass, Recorder& recorder)
+{
+    const Vec2 n = c.normal;
+    const Vec2 t = RightPerp(n);
+    ContactPointSolve record[2]{};
+    for (int i = 0; i < c.count; ++i)
+    {
+        SolverPoint& p = c.points[i];
+        const double vt = Dot(RelativeVelocity(a, b, p.rA, p.rB), t);
+        const double wanted = p.tangentImpulse - p.tangentMass * vt;
+        const double staticLimit = c.material.staticFriction * p.normalImpulse;
+        const double dynamicLimit = c.material.friction * p.normalImpulse;
+        double next = wanted;
+        p.stuck = std::fabs(wanted) <= staticLimit;
+        if (!p.stuck)
+        {
+            next = wanted > dynamicLimit ? dynamicLimit : (wanted < -dynamicLimit ? -dynamicLimit : wanted);
+        }
+        const double applied = next - p.tangentImpulse;
+        p.tangentImpulse = next;
+        ApplyImpulse(a, b, p.rA, p.rB, applied * t);
+        record[i].pass = pass;
+        record[i].point = i;
+        record[i].tangentSpeed = vt;
+        record[i].tangentImpulseWanted = wanted;
+        record[i].staticLimit = staticLimit;
+        record[i].dynamicLimit = dynamicLimit;
+        record[i].tangentImpulse = next;
+        record[i].stuck = p.stuck;
+    }
+
+    if (!c.block)
+    {
+        for (int i = 0; i < c.count; ++i)
+        {
+            SolverPoint& p = c.points[i];
+            const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), n);
+            const double wanted = p.normalImpulse - p.normalMass * (vn - p.bounce);
+            const double next = wanted > 0.0 ? wanted : 0.0;
+            const double applied = next - p.normalImpulse;
+            p.normalImpulse = next;
+            ApplyImpulse(a, b, p.rA, p.rB, applied * n);
+            record[i].normalSpeed = vn;
+            record[i].normalImpulseWanted = wanted;
+            record[i].normalImpulse = next;
+        }
+    }
+    else
+    {
+        SolverPoint& p1 = c.points[0];
+        SolverPoint& p2 = c.points[1];
+        const double vn1 = Dot(RelativeVelocity(a, b, p1.rA, p1.rB), n);
+        const double vn2 = Dot(RelativeVelocity(a, b, p2.rA, p2.rB), n);
+        const double a1 = p1.normalImpulse;
+        const double a2 = p2.normalImpulse;
+        // b = vn - target - K a: the speeds the impulses x must bring to the targets, vn' = K x + b.
+        const double b1 = vn1 - p1.bounce - (c.k11 * a1 + c.k12 * a2);
+        const double b2 = vn2 - p2.bounce - (c.k12 * a1 + c.k22 * a2);
+        double x1 = -(c.m11 * b1 + c.m12 * b2);
+        double x2 = -(c.m12 * b1 + c.m22 * b2);
+        if (!(x1 >= 0.0 && x2 >= 0.0))
+        {
+            x1 = -p1.normalMass * b1;
+            x2 = 0.0;
+            if (!(x1 >= 0.0 && c.k12 * x1 + b2 >= 0.0))
+            {
+                x1 = 0.0;
+                x2 = -p2.normalMass * b2;
+                if (!(x2 >= 0.0 && c.k12 * x2 + b1 >= 0.0))
+                {
+                    x1 = 0.0;
+                    x2 = 0.0;
+                    if (!(b1 >= 0.0 && b2 >= 0.0))
+                    {
+                        // No case holds (round-off on a degenerate pair): keep the impulses of the last pass.
+                        x1 = a1;
+                        x2 = a2;
+                    }
+                }
+            }
+        }
+        ApplyImpulse(a, b, p1.rA, p1.rB, (x1 - a1) * n);
+        ApplyImpulse(a, b, p2.rA, p2.rB, (x2 - a2) * n);
+        p1.normalImpulse = x1;
+        p2.normalImpulse = x2;
+        record[0].normalSpeed = vn1;
+        record[1].normalSpeed = vn2;
+        record[0].normalImpulseWanted = -(c.m11 * b1 + c.m12 * b2);
+        record[1].normalImpulseWanted = -(c.m12 * b1 + c.m22 * b2);
+        record[0].normalImpulse = x1;
+        record[1].normalImpulse = x2;
+    }
+    for (int i = 0; i < c.count; ++i)
+    {
+        recorder.Pass(record[i]);
+    }
+}
+
+/// One split-impulse pass (Catto; Bullet's split impulse): pseudo-velocities that push the bodies apart by
+/// splitFactor times the overlap beyond the slop per step, accumulated and clamped to push only. They move the
+/// positions in this step and are then dropped, so removing overlap gives the bodies no velocity. Bouncing points
+/// are left out: their own velocity separates them.
+void SolveContactPosition(SolverContact& c, SolverBody& a, SolverBody& b, double dt, double slop, double factor);
+
+} // namespace satviz::detail

@@ -1,0 +1,649 @@
+// SPDX-License-Identifier: MIT
+// satviz: the rigid-body world: bodies, the step, and what it counts.
+
+#include "contact_solver.h"
+#include "time_of_impact.h"
+
+#include <satviz/collide.h>
+#include <satviz/sweep.h>
+#include <satviz/world.h>
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+namespace satviz
+{
+
+namespace
+{
+
+using detail::SolverBody;
+using detail::SolverContact;
+
+bool FiniteNumber(double x)
+{
+    return std::isfinite(x);
+}
+
+// Identifies a contact point from step to step: the deciding axis (kind, shape, index), the incident edge and the
+// point's slot. Points whose features persist keep their impulses (warm starting).
+uint32_t FeatureKey(const Manifold& m, int slot)
+{
+    const uint32_t kind = static_cast<uint32_t>(m.axis.kind) & 3u;
+    const uint32_t shape = static_cast<uint32_t>(m.axis.shape + 1) & 3u;
+    const uint32_t index = static_cast<uint32_t>(m.axis.index + 1) & 0x1fffu;
+    const uint32_t incident = static_cast<uint32_t>(m.incidentEdge + 1) & 0x1fffu;
+    return kind | shape << 2 | index << 4 | incident << 17 | static_cast<uint32_t>(slot) << 30;
+}
+
+bool IsAwakeDynamic(const RigidBody& body)
+{
+    return body.type == BodyType::Dynamic && body.awake;
+}
+
+struct PairFilter
+{
+    const std::vector<RigidBody>* bodies = nullptr;
+    bool skipStatic = true;
+};
+
+// A pair is skipped when both bodies are static (if the world skips those) or when neither is awake and dynamic.
+bool SkipPair(const void* context, int i, int j)
+{
+    const PairFilter& filter = *static_cast<const PairFilter*>(context);
+    const RigidBody& a = (*filter.bodies)[i];
+    const RigidBody& b = (*filter.bodies)[j];
+    if (a.type == BodyType::Static && b.type == BodyType::Static)
+    {
+        return filter.skipStatic;
+    }
+    return !IsAwakeDynamic(a) && !IsAwakeDynamic(b);
+}
+
+// Wakes the sleeping bodies in `seeds` and every sleeping dynamic body joined to them through contacts: an island
+// wakes as a whole. Static bodies do not join islands.
+void WakeIslands(World& world, std::vector<int>& seeds)
+{
+    std::vector<RigidBody>& bodies = world.bodies;
+    if (seeds.empty())
+    {
+        return;
+    }
+    const int n = static_cast<int>(bodies.size());
+    std::vector<int> start(n + 1, 0);
+    for (const WorldContact& c : world.contacts)
+    {
+        ++start[c.a + 1];
+        ++start[c.b + 1];
+    }
+    for (int i = 0; i < n; ++i)
+    {
+        start[i + 1] += start[i];
+    }
+    std::vector<int> next(start.begin(), start.end() - 1);
+    std::vector<int> neighbours(start[n]);
+    for (const WorldContact& c : world.contacts)
+    {
+        neighbours[next[c.a]++] = c.b;
+        neighbours[next[c.b]++] = c.a;
+    }
+    while (!seeds.empty())
+    {
+        const int i = seeds.back();
+        seeds.pop_back();
+        RigidBody& body = bodies[i];
+        if (body.type != BodyType::Dynamic || body.awake)
+        {
+            continue;
+        }
+        body.awake = true;
+        body.sleepTime = 0.0;
+        for (int k = start[i]; k < start[i + 1]; ++k)
+        {
+            seeds.push_back(neighbours[k]);
+        }
+    }
+}
+
+const WorldContact* FindContact(const std::vector<WorldContact>& contacts, int a, int b)
+{
+    auto it = std::lower_bound(contacts.begin(), contacts.end(), std::make_pair(a, b),
+                               [](const WorldContact& c, const std::pair<int, int>& key) {
+                                   return c.a < key.first || (c.a == key.first && c.b < key.second);
+                               });
+    if (it != contacts.end() && it->a == a && it->b == b)
+    {
+        return &*it;
+    }
+    return nullptr;
+}
+
+// Union-find over body indices, for the islands of sleeping.
+int FindRoot(std::vector<int>& parent, int i)
+{
+    while (parent[i] != i)
+    {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+} // namespace
+
+std::string ValidateBodyDef(const BodyDef& def)
+{
+    if (def.shape.type == ShapeType::Polygon)
+    {
+        if (def.shape.polygon.Count() < 3)
+        {
+            return "shape: a polygon needs at least 3 vertices";
+        }
+    }
+    else if (!(def.shape.circle.radius > 0.0) || !FiniteNumber(def.shape.circle.radius) ||
+             !IsFinite(def.shape.circle.center))
+    {
+        return "shape: a circle needs a finite radius > 0";
+    }
+    if (!IsFinite(def.position) || !FiniteNumber(def.angle))
+    {
+        return "position and angle must be finite";
+    }
+    if (!IsFinite(def.velocity))
+    {
+        return "velocity must be finite";
+    }
+    if (!FiniteNumber(def.angularVelocity))
+    {
+        return "angular_velocity must be finite";
+    }
+    if (def.type == BodyType::Dynamic && !(def.density > 0.0 && FiniteNumber(def.density)))
+    {
+        return "density must be finite and > 0 on a dynamic body";
+    }
+    if (!(def.material.restitution >= 0.0 && def.material.restitution <= 1.0))
+    {
+        return "restitution must be in [0, 1]";
+    }
+    if (!(def.material.friction >= 0.0 && FiniteNumber(def.material.friction)))
+    {
+        return "friction must be finite and >= 0";
+    }
+    if (!(def.material.staticFriction >= 0.0 && FiniteNumber(def.material.staticFriction)))
+    {
+        return "static_friction must be finite and >= 0";
+    }
+    return {};
+}
+
+int AddBody(World& world, const BodyDef& def)
+{
+    RigidBody body;
+    body.shape = def.shape;
+    body.type = def.type;
+    body.material = def.material;
+    body.position = def.position;
+    body.angle = def.angle;
+    const MassProperties mass = ComputeMass(def.shape, 1.0);
+    body.localCenter = mass.center;
+    if (def.type == BodyType::Dynamic)
+    {
+        body.mass = def.density * mass.mass;
+        body.inertia = def.density * mass.inertia;
+        body.invMass = body.mass > 0.0 ? 1.0 / body.mass : 0.0;
+        body.invInertia = body.inertia > 0.0 ? 1.0 / body.inertia : 0.0;
+        body.velocity = def.velocity;
+        body.angularVelocity = def.angularVelocity;
+    }
+    body.innerRadius = InnerRadius(def.shape, mass.center);
+    body.outerRadius = OuterRadius(def.shape, mass.center);
+    world.bodies.push_back(std::move(body));
+    world.broadphase.order.clear();
+    return static_cast<int>(world.bodies.size()) - 1;
+}
+
+double KineticEnergy(const World& world)
+{
+    double energy = 0.0;
+    for (const RigidBody& body : world.bodies)
+    {
+        if (body.type == BodyType::Dynamic)
+        {
+            energy += 0.5 * body.mass * LengthSquared(body.velocity) +
+                      0.5 * body.inertia * body.angularVelocity * body.angularVelocity;
+        }
+    }
+    return energy;
+}
+
+Vec2 LinearMomentum(const World& world)
+{
+    Vec2 p{};
+    for (const RigidBody& body : world.bodies)
+    {
+        if (body.type == BodyType::Dynamic)
+        {
+            p = p + body.mass * body.velocity;
+        }
+    }
+    return p;
+}
+
+double AngularMomentum(const World& world, Vec2 origin)
+{
+    double l = 0.0;
+    for (const RigidBody& body : world.bodies)
+    {
+        if (body.type == BodyType::Dynamic)
+        {
+            l += body.inertia * body.angularVelocity + Cross(body.WorldCenter() - origin, body.mass * body.velocity);
+        }
+    }
+    return l;
+}
+
+std::vector<std::pair<int, int>> TouchingPairs(const std::vector<Shape>& shapes, const std::vector<Transform>& xfs)
+{
+    std::vector<Aabb> boxes(shapes.size());
+    for (size_t i = 0; i < shapes.size(); ++i)
+    {
+        boxes[i] = ComputeAabb(shapes[i], xfs[i]);
+    }
+    SortAndSweep sweep;
+    std::vector<std::pair<int, int>> candidates;
+    FindPairs(sweep, boxes, candidates);
+    std::vector<std::pair<int, int>> touching;
+    for (const auto& [i, j] : candidates)
+    {
+        if (Overlap(shapes[i], xfs[i], shapes[j], xfs[j]))
+        {
+            touching.emplace_back(i, j);
+        }
+    }
+    return touching;
+}
+
+namespace
+{
+
+// The state of one step, shared by its stages.
+struct Stepper
+{
+    World& world;
+    double dt;
+    const WorldSettings& settings;
+    std::vector<SolverBody> solverBodies;
+    std::vector<SolverContact> solverContacts;
+    std::vector<Vec2> centers; // centres of mass at the start of the step
+
+    Stepper(World& w, double step) : world(w), dt(step), settings(w.settings) {}
+
+    void FindContacts();
+    void SolveVelocities();
+    void SolvePositions();
+    void Move();
+    void Sleep();
+};
+
+// Stage 1: bounds, broadphase, narrowphase, warm starting, waking.
+void Stepper::FindContacts()
+{
+    std::vector<RigidBody>& bodies = world.bodies;
+    const int n = static_cast<int>(bodies.size());
+    StepCounts& counts = world.counts;
+    counts.pairs = static_cast<int64_t>(n) * (n - 1) / 2;
+
+    int64_t statics = 0, idle = 0;
+    std::vector<uint8_t> awakeAtStart(n);
+    for (int i = 0; i < n; ++i)
+    {
+        statics += bodies[i].type == BodyType::Static;
+        idle += !IsAwakeDynamic(bodies[i]);
+        awakeAtStart[i] = IsAwakeDynamic(bodies[i]);
+    }
+    counts.staticPairs = settings.skipStaticPairs ? statics * (statics - 1) / 2 : 0;
+    const int64_t idlePairs = idle * (idle - 1) / 2 - statics * (statics - 1) / 2;
+    counts.sleepingPairs = idlePairs;
+
+    PairFilter filter{&bodies, settings.skipStaticPairs};
+    std::vector<std::pair<int, int>> candidates;
+    if (settings.broadphase)
+    {
+        std::vector<Aabb> boxes(n);
+        for (int i = 0; i < n; ++i)
+        {
+            boxes[i] = ComputeAabb(bodies[i].shape, bodies[i].Xf());
+        }
+        FindPairs(world.broadphase, boxes, candidates, SkipPair, &filter);
+        counts.broadphaseComparisons = world.broadphase.comparisons;
+    }
+    else
+    {
+        for (int i = 0; i < n; ++i)
+        {
+            for (int j = i + 1; j < n; ++j)
+            {
+                if (!SkipPair(&filter, i, j))
+                {
+                    candidates.emplace_back(i, j);
+                }
+            }
+        }
+    }
+    counts.tested = static_cast<int64_t>(candidates.size());
+    counts.boundsApart = counts.pairs - counts.staticPairs - counts.sleepingPairs - counts.tested;
+
+    std::vector<int> wake;
+    std::vector<WorldContact> previous = std::move(world.contacts);
+    std::vector<WorldContact>& contacts = world.contacts;
+    contacts.clear();
+    for (const auto& [i, j] : candidates)
+    {
+        RigidBody& a = bodies[i];
+        RigidBody& b = bodies[j];
+        if (a.type == BodyType::Static && b.type == BodyType::Static)
+        {
+            Collide(a.shape, a.Xf(), b.shape, b.Xf());
+            continue;
+        }
+        const Manifold m = Collide(a.shape, a.Xf(), b.shape, b.Xf());
+        if (!m.overlap || m.contactCount == 0)
+        {
+            continue;
+        }
+        WorldContact c;
+        c.a = i;
+        c.b = j;
+        c.normal = m.normal;
+        c.pointCount = m.contactCount;
+        c.material = CombineMaterials(a.material, b.material);
+        const WorldContact* old = FindContact(previous, i, j);
+        for (int k = 0; k < m.contactCount; ++k)
+        {
+            WorldContactPoint& p = c.points[k];
+            p.point = m.contacts[k].point;
+            p.separation = m.contacts[k].separation;
+            p.key = FeatureKey(m, k);
+            if (old != nullptr)
+            {
+                for (int l = 0; l < old->pointCount; ++l)
+                {
+                    if (old->points[l].key == p.key)
+                    {
+                        p.normalImpulse = old->points[l].normalImpulse;
+                        p.tangentImpulse = old->points[l].tangentImpulse;
+                    }
+                }
+            }
+        }
+        contacts.push_back(c);
+        // A body that touches a sleeping one wakes its island.
+        if (awakeAtStart[i] != awakeAtStart[j])
+        {
+            wake.push_back(awakeAtStart[i] ? j : i);
+        }
+    }
+    // The contacts of pairs skipped because neither body was awake are kept as they were: neither body moved.
+    for (const WorldContact& c : previous)
+    {
+        if (!awakeAtStart[c.a] && !awakeAtStart[c.b])
+        {
+            contacts.push_back(c);
+        }
+    }
+    std::sort(contacts.begin(), contacts.end(),
+              [](const WorldContact& x, const WorldContact& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); });
+    counts.touching = static_cast<int64_t>(contacts.size());
+    WakeIslands(world, wake);
+}
+
+// Stage 2: gravity and the velocity passes (with the restitution targets taken before gravity).
+void Stepper::SolveVelocities()
+{
+    std::vector<RigidBody>& bodies = world.bodies;
+    const int n = static_cast<int>(bodies.size());
+    solverBodies.assign(n, SolverBody{});
+    centers.resize(n);
+    for (int i = 0; i < n; ++i)
+    {
+        const RigidBody& body = bodies[i];
+        centers[i] = body.WorldCenter();
+        if (IsAwakeDynamic(body))
+        {
+            SolverBody& s = solverBodies[i];
+            s.v = body.velocity;
+            s.w = body.angularVelocity;
+            s.invMass = body.invMass;
+            s.invInertia = body.invInertia;
+        }
+    }
+
+    ContactSolveTrace* trace = world.trace;
+    solverContacts.clear();
+    for (size_t k = 0; k < world.contacts.size(); ++k)
+    {
+        const WorldContact& wc = world.contacts[k];
+        if (!IsAwakeDynamic(bodies[wc.a]) && !IsAwakeDynamic(bodies[wc.b]))
+        {
+            continue;
+        }
+        SolverContact c;
+        c.a = wc.a;
+        c.b = wc.b;
+        c.normal = wc.normal;
+        c.count = wc.pointCount;
+        c.material = wc.material;
+        double approach[2] = {0.0, 0.0};
+        for (int i = 0; i < c.count; ++i)
+        {
+            detail::SolverPoint& p = c.points[i];
+            p.rA = wc.points[i].point - centers[wc.a];
+            p.rB = wc.points[i].point - centers[wc.b];
+            p.separation = wc.points[i].separation;
+            p.normalImpulse = wc.points[i].normalImpulse;
+            p.tangentImpulse = wc.points[i].tangentImpulse;
+            approach[i] = Dot(detail::RelativeVelocity(solverBodies[c.a], solverBodies[c.b], p.rA, p.rB), c.normal);
+        }
+        detail::PrepareContact(c, solverBodies[c.a], solverBodies[c.b], approach, settings.restitutionThreshold);
+        if (trace != nullptr &&
+            ((trace->bodyA == c.a && trace->bodyB == c.b) || (trace->bodyA == c.b && trace->bodyB == c.a)))
+        {
+            c.traced = true;
+            trace->found = true;
+            trace->normal = c.normal;
+            trace->pointCount = c.count;
+            trace->restitution = c.material.restitution;
+            trace->blockSolved = c.block;
+            for (int i = 0; i < c.count; ++i)
+            {
+                trace->approachSpeed[i] = approach[i];
+                trace->bounceSpeed[i] = c.points[i].bounce;
+                trace->normalMass[i] = c.points[i].normalMass;
+                trace->tangentMass[i] = c.points[i].tangentMass;
+                trace->warmNormal[i] = c.points[i].normalImpulse;
+                trace->warmTangent[i] = c.points[i].tangentImpulse;
+            }
+        }
+        solverContacts.push_back(c);
+    }
+
+    for (int i = 0; i < n; ++i)
+    {
+        if (IsAwakeDynamic(bodies[i]))
+        {
+            solverBodies[i].v = solverBodies[i].v + dt * settings.gravity;
+        }
+    }
+    for (SolverContact& c : solverContacts)
+    {
+        detail::WarmStart(c, solverBodies[c.a], solverBodies[c.b]);
+    }
+    detail::NullSolveRecorder quiet;
+    detail::TraceSolveRecorder loud{trace};
+    for (int pass = 0; pass < settings.velocityIterations; ++pass)
+    {
+        for (SolverContact& c : solverContacts)
+        {
+            if (c.traced)
+            {
+                detail::SolveContactVelocity(c, solverBodies[c.a], solverBodies[c.b], pass, loud);
+            }
+            else
+            {
+                detail::SolveContactVelocity(c, solverBodies[c.a], solverBodies[c.b], pass, quiet);
+            }
+        }
+    }
+}
+
+// Stage 3: split impulses, then the accumulated impulses go back to the world's contacts for the next warm start.
+void Stepper::SolvePositions()
+{
+    for (int pass = 0; pass < settings.positionIterations; ++pass)
+    {
+        for (SolverContact& c : solverContacts)
+        {
+            detail::SolveContactPosition(c, solverBodies[c.a], solverBodies[c.b], dt, settings.linearSlop,
+                                         settings.splitFactor);
+        }
+    }
+    size_t k = 0;
+    for (const SolverContact& c : solverContacts)
+    {
+        while (world.contacts[k].a != c.a || world.contacts[k].b != c.b)
+        {
+            ++k;
+        }
+        WorldContact& wc = world.contacts[k];
+        for (int i = 0; i < c.count; ++i)
+        {
+            wc.points[i].normalImpulse = c.points[i].normalImpulse;
+            wc.points[i].tangentImpulse = c.points[i].tangentImpulse;
+            wc.points[i].stuck = c.points[i].stuck;
+        }
+    }
+}
+
+// Stage 4: positions, with the hits of fast bodies in time order.
+void Stepper::Move()
+{
+    std::vector<RigidBody>& bodies = world.bodies;
+    const int n = static_cast<int>(bodies.size());
+    for (int i = 0; i < n; ++i)
+    {
+        if (IsAwakeDynamic(bodies[i]))
+        {
+            bodies[i].velocity = solverBodies[i].v;
+            bodies[i].angularVelocity = solverBodies[i].w;
+        }
+    }
+    detail::TimeOfImpactStage stage(world, dt, centers, solverBodies);
+    stage.Run();
+}
+
+// Stage 5: islands of touching dynamic bodies sleep together once all have rested long enough.
+void Stepper::Sleep()
+{
+    std::vector<RigidBody>& bodies = world.bodies;
+    const int n = static_cast<int>(bodies.size());
+    StepCounts& counts = world.counts;
+    if (!settings.sleeping)
+    {
+        for (RigidBody& body : bodies)
+        {
+            if (body.type == BodyType::Dynamic)
+            {
+                body.awake = true;
+                body.sleepTime = 0.0;
+            }
+        }
+    }
+    else
+    {
+        const double linear2 = settings.sleepLinearSpeed * settings.sleepLinearSpeed;
+        for (RigidBody& body : bodies)
+        {
+            if (!IsAwakeDynamic(body))
+            {
+                continue;
+            }
+            const bool resting = LengthSquared(body.velocity) <= linear2 &&
+                                 std::fabs(body.angularVelocity) <= settings.sleepAngularSpeed;
+            body.sleepTime = resting ? body.sleepTime + dt : 0.0;
+        }
+        std::vector<int> parent(n);
+        for (int i = 0; i < n; ++i)
+        {
+            parent[i] = i;
+        }
+        for (const WorldContact& c : world.contacts)
+        {
+            if (bodies[c.a].type == BodyType::Dynamic && bodies[c.b].type == BodyType::Dynamic)
+            {
+                const int ra = FindRoot(parent, c.a), rb = FindRoot(parent, c.b);
+                if (ra != rb)
+                {
+                    parent[ra > rb ? ra : rb] = ra < rb ? ra : rb;
+                }
+            }
+        }
+        // The shortest rest in each island, and whether any body of it is awake.
+        std::vector<double> shortest(n, INFINITY);
+        std::vector<uint8_t> anyAwake(n, 0);
+        for (int i = 0; i < n; ++i)
+        {
+            if (bodies[i].type != BodyType::Dynamic)
+            {
+                continue;
+            }
+            const int root = FindRoot(parent, i);
+            shortest[root] = std::min(shortest[root], bodies[i].awake ? bodies[i].sleepTime : INFINITY);
+            anyAwake[root] |= bodies[i].awake ? 1 : 0;
+        }
+        for (int i = 0; i < n; ++i)
+        {
+            RigidBody& body = bodies[i];
+            if (body.type != BodyType::Dynamic || !body.awake)
+            {
+                continue;
+            }
+            const int root = FindRoot(parent, i);
+            if (anyAwake[root] && shortest[root] >= settings.timeToSleep)
+            {
+                body.awake = false;
+                body.velocity = {};
+                body.angularVelocity = 0.0;
+            }
+        }
+    }
+    counts.awakeBodies = 0;
+    counts.sleepingBodies = 0;
+    for (const RigidBody& body : bodies)
+    {
+        if (body.type == BodyType::Dynamic)
+        {
+            (body.awake ? counts.awakeBodies : counts.sleepingBodies) += 1;
+        }
+    }
+}
+
+} // namespace
+
+void Step(World& world, double dt)
+{
+    world.counts = StepCounts();
+    if (world.trace != nullptr)
+    {
+        world.trace->Clear();
+    }
+    Stepper stepper(world, dt);
+    stepper.FindContacts();
+    stepper.SolveVelocities();
+    stepper.SolvePositions();
+    stepper.Move();
+    stepper.Sleep();
+    world.time += dt;
+}
+
+} // namespace satviz
