@@ -35,7 +35,9 @@ World Pile(uint64_t seed)
         const Vec2 p{-2.0 + 1.3 * (i % 4) + rng.Uniform(-0.1, 0.1), 0.6 + 1.1 * (i / 4) + rng.Uniform(0.0, 0.1)};
         const int kind = i % 3;
         const Shape shape = kind == 0 ? BoxShape(0.45, 0.35) : kind == 1 ? DiscShape(0.4) : MakeShape(hexagon.polygon);
-        AddDynamic(world, shape, p, rng.Uniform(-0.5, 0.5), {rng.Uniform(-1.0, 1.0), 0.0});
+        const double angle = rng.Uniform(-0.5, 0.5);
+        const double vx = rng.Uniform(-1.0, 1.0);
+        AddDynamic(world, shape, p, angle, {vx, 0.0});
     }
     return world;
 }
@@ -141,7 +143,8 @@ TEST_CASE("A world copied mid-run steps to the same bits as the original", "[wor
     AddDynamic(original, DiscShape(0.1), {-1.5, 12.0}, 0.0, {0.0, -200.0});
     World copy = original;
     World emptied = original; // the broadphase's order is working memory, not state
-    emptied.broadphase.order.clear();
+    emptied.broadphase = SortAndSweep();
+    emptied.sweptBroadphase = SortAndSweep();
     for (int i = 0; i < 150; ++i)
     {
         Step(original, kDt);
@@ -261,7 +264,6 @@ TEST_CASE("The step counts add up with each saving on and off", "[world][counts]
                            << c.boundsApart << ", tested " << c.tested << ", touching " << c.touching);
         CHECK(c.pairs == PairsOf(n));
         CHECK(c.staticPairs + c.sleepingPairs + c.boundsApart + c.tested == c.pairs);
-        CHECK(c.touching <= c.tested);
         CHECK(c.awakeBodies == 4);
         CHECK(c.sleepingBodies == 6);
         if (!run.skipStatic)
