@@ -81,10 +81,18 @@ Shape PolygonShape(const std::vector<Vec2>& points)
     return MakeShape(result.polygon);
 }
 
-std::string Lower(std::string s)
+/// Lower case, without spaces and underscores: "staticFriction", "static friction" and "static_friction" alike.
+std::string Folded(const std::string& s)
 {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
+    std::string folded;
+    for (unsigned char c : s)
+    {
+        if (c != ' ' && c != '_')
+        {
+            folded.push_back(static_cast<char>(std::tolower(c)));
+        }
+    }
+    return folded;
 }
 
 } // namespace
@@ -229,7 +237,10 @@ TEST_CASE("Translating a polygon's vertices moves its centre and keeps its inert
     Rng rng(403);
     for (int k = 0; k < 500; ++k)
     {
-        const Polygon polygon = RandomPolygon(rng, rng.Int(3, 24), rng.Uniform(0.2, 2.0), rng.Uniform(0.2, 1.0));
+        const int n = rng.Int(3, 24);
+        const double radius = rng.Uniform(0.2, 2.0);
+        const double aspect = rng.Uniform(0.2, 1.0);
+        const Polygon polygon = RandomPolygon(rng, n, radius, aspect);
         const std::vector<Vec2> points = Outline(polygon);
         const MassProperties base = ComputeMass(MakeShape(polygon), 1.7);
         for (double distance : {1.0, 1e3, 1e5})
@@ -280,8 +291,13 @@ TEST_CASE("CombineMaterials takes the larger restitution and the geometric mean 
     Rng rng(404);
     for (int k = 0; k < 1000; ++k)
     {
-        const Material a = MakeMaterial(rng.Uniform(0.0, 1.0), rng.Uniform(0.0, 2.0), rng.Uniform(0.0, 2.0));
-        const Material b = MakeMaterial(rng.Uniform(0.0, 1.0), rng.Uniform(0.0, 2.0), rng.Uniform(0.0, 2.0));
+        double c[6];
+        for (double& x : c)
+        {
+            x = rng.Uniform(0.0, 2.0);
+        }
+        const Material a = MakeMaterial(0.5 * c[0], c[1], c[2]);
+        const Material b = MakeMaterial(0.5 * c[3], c[4], c[5]);
         const ContactMaterial ab = CombineMaterials(a, b);
         const ContactMaterial ba = CombineMaterials(b, a);
         REQUIRE(ab.restitution == std::max(a.restitution, b.restitution));
@@ -549,8 +565,8 @@ TEST_CASE("ComputeAabb is the tight box of the placed shape", "[world][broadphas
     for (int k = 0; k < 2000; ++k)
     {
         const Shape shape = RandomShape(rng, 0.3);
-        const Transform xf =
-            MakeTransform(Vec2{rng.Uniform(-50.0, 50.0), rng.Uniform(-50.0, 50.0)}, rng.Uniform(-kPi, kPi));
+        const Vec2 position{rng.Uniform(-50.0, 50.0), rng.Uniform(-50.0, 50.0)};
+        const Transform xf = MakeTransform(position, rng.Uniform(-kPi, kPi));
         Aabb expected;
         if (shape.type == ShapeType::Circle)
         {
@@ -599,8 +615,8 @@ TEST_CASE("TouchingPairs equals Overlap over every pair", "[world][broadphase]")
                 continue;
             }
             shapes.push_back(RandomShape(rng, 0.3));
-            xfs.push_back(MakeTransform(Vec2{rng.Uniform(-spread, spread), rng.Uniform(-spread, spread)},
-                                        rng.Uniform(-kPi, kPi)));
+            const Vec2 position{rng.Uniform(-spread, spread), rng.Uniform(-spread, spread)};
+            xfs.push_back(MakeTransform(position, rng.Uniform(-kPi, kPi)));
         }
         if (scene % 5 == 0)
         {
@@ -645,7 +661,7 @@ TEST_CASE("ValidateBodyDef names the field that is wrong", "[world][validate]")
     {
         const char* what;
         BodyDef def;
-        std::vector<const char*> names; // any of these, in lower case, must appear in the message
+        std::vector<const char*> names; // any of these must appear in the folded message
     };
     std::vector<Case> cases;
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -671,7 +687,7 @@ TEST_CASE("ValidateBodyDef names the field that is wrong", "[world][validate]")
         cases.push_back(c);
     }
     {
-        Case c{"negative static friction", good, {"staticfriction", "static friction"}};
+        Case c{"negative static friction", good, {"staticfriction"}};
         c.def.material.staticFriction = -0.1;
         cases.push_back(c);
     }
@@ -686,7 +702,7 @@ TEST_CASE("ValidateBodyDef names the field that is wrong", "[world][validate]")
         cases.push_back(c);
     }
     {
-        Case c{"NaN angular velocity", good, {"angularvelocity", "angular velocity"}};
+        Case c{"NaN angular velocity", good, {"angularvelocity"}};
         c.def.angularVelocity = nan;
         cases.push_back(c);
     }
@@ -726,7 +742,7 @@ TEST_CASE("ValidateBodyDef names the field that is wrong", "[world][validate]")
         const std::string message = ValidateBodyDef(c.def);
         INFO(c.what << ": \"" << message << "\"");
         CHECK(!message.empty());
-        const std::string lower = Lower(message);
+        const std::string lower = Folded(message);
         bool named = false;
         for (const char* name : c.names)
         {
