@@ -71,16 +71,18 @@ TEST_CASE("A bullet at 1e5 stops at a 0.01 thick wall", "[world][ccd]")
             const Vec2 v{1e5 * std::cos(angle), 1e5 * std::sin(angle)};
             const Shape bullet = shape == 0 ? DiscShape(0.05) : BoxShape(0.05, 0.03);
             const int body = AddDynamic(world, bullet, {-1.0, 0.0}, 0.4, v);
-            for (int step = 0; step < 3; ++step)
+            bool onItsSide = true;
+            for (int step = 0; step < 3 && onItsSide; ++step)
             {
                 Step(world, kDt);
                 const RigidBody& b = world.bodies[static_cast<size_t>(body)];
+                onItsSide = b.position.x < -kWall && !Overlap(b.shape, b.Xf(), FarSide(), FarSideAt(kWall));
                 INFO((shape == 0 ? "circle" : "box")
                      << " at " << degrees << " degrees, step " << step << ": centre at " << b.position.x << ", "
-                     << b.position.y << ", velocity " << b.velocity.x << ", " << b.velocity.y);
-                REQUIRE(b.position.x < -kWall);
-                REQUIRE_FALSE(Overlap(b.shape, b.Xf(), FarSide(), FarSideAt(kWall)));
-                REQUIRE(std::isfinite(b.velocity.x));
+                     << b.position.y << ", velocity " << b.velocity.x << ", " << b.velocity.y << ", turning at "
+                     << b.angularVelocity << ", " << world.counts.hits << " hits in the step");
+                CHECK(onItsSide);
+                CHECK(std::isfinite(b.velocity.x));
             }
         }
     }
