@@ -1,0 +1,753 @@
+// SPDX-License-Identifier: MIT
+// The world's building blocks against independent computations: mass properties against closed forms and the
+// shoelace sums about the origin, the material rule, the broadphase against every pair compared, TouchingPairs
+// against Overlap over every pair, and the validation of body definitions.
+
+#include "support/builders.h"
+#include "support/random_shapes.h"
+#include "support/world_scenes.h"
+
+#include <satviz/broadphase.h>
+#include <satviz/collide.h>
+#include <satviz/mass.h>
+#include <satviz/material.h>
+#include <satviz/world.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace satviz;
+using namespace satviz::testing;
+
+namespace
+{
+
+/// |a - b| <= rel * |b| (+ a tiny absolute floor for b == 0).
+bool Near(double a, double b, double rel)
+{
+    return std::abs(a - b) <= rel * std::abs(b) + 1e-300;
+}
+
+/// The mass properties of a polygon from its outline alone, in long double: the shoelace area, the centroid, and
+/// the polar second moment about the origin (each edge with the origin as a triangle), then the parallel-axis
+/// theorem to move it to the centroid. A different fan from the library's (the origin, not the centroid).
+struct ReferenceMass
+{
+    long double mass = 0;
+    long double cx = 0;
+    long double cy = 0;
+    long double inertia = 0;
+};
+
+ReferenceMass Reference(const std::vector<Vec2>& points, double density)
+{
+    long double area2 = 0, sx = 0, sy = 0, polar = 0;
+    const size_t n = points.size();
+    for (size_t i = 0; i < n; ++i)
+    {
+        const long double px = points[i].x, py = points[i].y;
+        const long double qx = points[(i + 1) % n].x, qy = points[(i + 1) % n].y;
+        const long double cross = px * qy - qx * py;
+        area2 += cross;
+        sx += (px + qx) * cross;
+        sy += (py + qy) * cross;
+        polar += cross * (px * px + px * qx + qx * qx + py * py + py * qy + qy * qy);
+    }
+    ReferenceMass r;
+    r.mass = density * area2 / 2;
+    r.cx = sx / (3 * area2);
+    r.cy = sy / (3 * area2);
+    const long double polarOrigin = density * polar / 12;
+    r.inertia = polarOrigin - r.mass * (r.cx * r.cx + r.cy * r.cy);
+    return r;
+}
+
+std::vector<Vec2> Outline(const Polygon& polygon)
+{
+    return std::vector<Vec2>(polygon.vertices.begin(), polygon.vertices.end());
+}
+
+Shape PolygonShape(const std::vector<Vec2>& points)
+{
+    PolygonResult result = MakePolygon(points);
+    REQUIRE(result.Ok());
+    return MakeShape(result.polygon);
+}
+
+/// Lower case, without spaces and underscores: "staticFriction", "static friction" and "static_friction" alike.
+std::string Folded(const std::string& s)
+{
+    std::string folded;
+    for (unsigned char c : s)
+    {
+        if (c != ' ' && c != '_')
+        {
+            folded.push_back(static_cast<char>(std::tolower(c)));
+        }
+    }
+    return folded;
+}
+
+} // namespace
+
+TEST_CASE("ComputeMass of boxes matches the closed form", "[world][mass]")
+{
+    // Full sides w = 2 hx and h = 2 hy: m = rho w h, I = m (w^2 + h^2) / 12 about the centre.
+    for (double hx : {0.01, 0.5, 1.0, 3.0, 250.0})
+    {
+        for (double hy : {0.02, 0.5, 2.0, 7.5})
+        {
+            for (double density : {0.1, 1.0, 37.0})
+            {
+                const MassProperties mp = ComputeMass(BoxShape(hx, hy), density);
+                const double w = 2.0 * hx, h = 2.0 * hy;
+                const double m = density * w * h;
+                INFO("hx " << hx << ", hy " << hy << ", density " << density);
+                CHECK(Near(mp.mass, m, 1e-13));
+                CHECK(Near(mp.inertia, m * (w * w + h * h) / 12.0, 1e-12));
+                CHECK(std::abs(mp.center.x) <= 1e-14 * (hx + hy));
+                CHECK(std::abs(mp.center.y) <= 1e-14 * (hx + hy));
+            }
+        }
+    }
+}
+
+TEST_CASE("ComputeMass of regular polygons matches the closed form", "[world][mass]")
+{
+    // n vertices on a circle of radius R: area n R^2 sin(2 pi / n) / 2, and about the centre
+    // I = m R^2 (1 + 2 cos^2(pi / n)) / 6 (a square of side s: m s^2 / 6; n to infinity: m R^2 / 2).
+    for (int n : {3, 4, 5, 6, 7, 8, 9, 12, 16, 33, 100})
+    {
+        for (double radius : {0.05, 1.0, 40.0})
+        {
+            for (double phase : {0.0, 0.3, 2.0})
+            {
+                PolygonResult result = MakeRegularPolygon(n, radius, phase);
+                REQUIRE(result.Ok());
+                const double density = 2.5;
+                const MassProperties mp = ComputeMass(MakeShape(result.polygon), density);
+                const double m = density * 0.5 * n * radius * radius * std::sin(2.0 * kPi / n);
+                const double c = std::cos(kPi / n);
+                INFO("n " << n << ", radius " << radius << ", phase " << phase);
+                CHECK(Near(mp.mass, m, 1e-12));
+                CHECK(Near(mp.inertia, m * radius * radius * (1.0 + 2.0 * c * c) / 6.0, 1e-12));
+                CHECK(std::abs(mp.center.x) <= 1e-13 * radius);
+                CHECK(std::abs(mp.center.y) <= 1e-13 * radius);
+            }
+        }
+    }
+}
+
+TEST_CASE("ComputeMass of triangles matches the closed form", "[world][mass]")
+{
+    // A triangle with sides a, b, c: the centroid is the mean of the vertices, and the polar moment about it is
+    // m (a^2 + b^2 + c^2) / 36.
+    Rng rng(401);
+    for (int k = 0; k < 2000; ++k)
+    {
+        std::vector<Vec2> points(3);
+        for (Vec2& p : points)
+        {
+            p = {rng.Uniform(-3.0, 3.0), rng.Uniform(-3.0, 3.0)};
+        }
+        const double cross = Cross(points[1] - points[0], points[2] - points[0]);
+        if (std::abs(cross) < 0.05)
+        {
+            continue;
+        }
+        if (cross < 0.0)
+        {
+            std::swap(points[1], points[2]);
+        }
+        const double density = rng.Uniform(0.1, 10.0);
+        const MassProperties mp = ComputeMass(PolygonShape(points), density);
+        const double m = density * 0.5 * std::abs(cross);
+        const double sides2 = LengthSquared(points[1] - points[0]) + LengthSquared(points[2] - points[1]) +
+                              LengthSquared(points[0] - points[2]);
+        const Vec2 centroid = (1.0 / 3.0) * (points[0] + points[1] + points[2]);
+        INFO("triangle " << k);
+        REQUIRE(Near(mp.mass, m, 1e-12));
+        REQUIRE(Near(mp.inertia, m * sides2 / 36.0, 1e-11));
+        REQUIRE(std::abs(mp.center.x - centroid.x) <= 1e-13 * 3.0);
+        REQUIRE(std::abs(mp.center.y - centroid.y) <= 1e-13 * 3.0);
+    }
+}
+
+TEST_CASE("ComputeMass of circles, centred and off-centre", "[world][mass][circle]")
+{
+    // m = rho pi r^2, centre at the circle's centre, I = m r^2 / 2 about that centre wherever it sits in the body.
+    for (double radius : {0.01, 0.5, 3.0, 100.0})
+    {
+        for (Vec2 center : {Vec2{0.0, 0.0}, Vec2{0.7, -0.2}, Vec2{-5.0, 12.0}, Vec2{1e4, 3e3}})
+        {
+            Circle circle;
+            circle.radius = radius;
+            circle.center = center;
+            const double density = 3.0;
+            const MassProperties mp = ComputeMass(MakeShape(circle), density);
+            const double m = density * kPi * radius * radius;
+            INFO("radius " << radius << ", centre " << center.x << ", " << center.y);
+            CHECK(Near(mp.mass, m, 1e-14));
+            CHECK(Near(mp.inertia, 0.5 * m * radius * radius, 1e-14));
+            CHECK(mp.center == center);
+        }
+    }
+}
+
+TEST_CASE("ComputeMass of random convex polygons matches the shoelace sums about the origin", "[world][mass]")
+{
+    Rng rng(402);
+    for (int k = 0; k < 3000; ++k)
+    {
+        const int n = rng.Chance(0.8) ? rng.Int(3, 12) : rng.Int(13, 120);
+        const double radius = rng.LogUniform(-1.0, 1.0);
+        const double aspect = rng.Chance(0.1) ? rng.LogUniform(-2.0, -1.0) : rng.Uniform(0.3, 1.0);
+        Polygon polygon = RandomPolygon(rng, n, radius, aspect);
+        // Off the origin by up to a few sizes, so the centroid is not at the body origin.
+        const Vec2 shift{rng.Uniform(-3.0, 3.0) * radius, rng.Uniform(-3.0, 3.0) * radius};
+        std::vector<Vec2> points = Outline(polygon);
+        for (Vec2& p : points)
+        {
+            p = p + shift;
+        }
+        const double density = rng.LogUniform(-1.0, 1.0);
+        const MassProperties mp = ComputeMass(PolygonShape(points), density);
+        const ReferenceMass ref = Reference(points, density);
+        INFO("polygon " << k << ", n " << n << ", radius " << radius << ", aspect " << aspect);
+        REQUIRE(Near(mp.mass, static_cast<double>(ref.mass), 1e-12));
+        // The reference loses digits in the parallel-axis step when the centroid is several sizes out; the error
+        // bound scales with m |c|^2.
+        const double scale =
+            static_cast<double>(ref.mass * (ref.cx * ref.cx + ref.cy * ref.cy)) + static_cast<double>(ref.inertia);
+        REQUIRE(std::abs(mp.inertia - static_cast<double>(ref.inertia)) <= 1e-12 * scale);
+        REQUIRE(std::abs(mp.center.x - static_cast<double>(ref.cx)) <= 1e-13 * 4.0 * radius);
+        REQUIRE(std::abs(mp.center.y - static_cast<double>(ref.cy)) <= 1e-13 * 4.0 * radius);
+    }
+}
+
+TEST_CASE("Translating a polygon's vertices moves its centre and keeps its inertia about the centre", "[world][mass]")
+{
+    Rng rng(403);
+    for (int k = 0; k < 500; ++k)
+    {
+        const int n = rng.Int(3, 24);
+        const double radius = rng.Uniform(0.2, 2.0);
+        const double aspect = rng.Uniform(0.2, 1.0);
+        const Polygon polygon = RandomPolygon(rng, n, radius, aspect);
+        const std::vector<Vec2> points = Outline(polygon);
+        const MassProperties base = ComputeMass(MakeShape(polygon), 1.7);
+        for (double distance : {1.0, 1e3, 1e5})
+        {
+            const double angle = rng.Uniform(0.0, 2.0 * kPi);
+            const Vec2 offset{distance * std::cos(angle), distance * std::sin(angle)};
+            std::vector<Vec2> moved = points;
+            for (Vec2& p : moved)
+            {
+                p = p + offset;
+            }
+            const MassProperties mp = ComputeMass(PolygonShape(moved), 1.7);
+            // The translated vertices are rounded to the spacing of doubles at `distance`: the shape itself changes
+            // by that much, relative to its size.
+            const double rounding = 4.0 * std::numeric_limits<double>::epsilon() * distance;
+            INFO("polygon " << k << ", distance " << distance);
+            REQUIRE(Near(mp.mass, base.mass, 1e-12 + 10.0 * rounding));
+            REQUIRE(Near(mp.inertia, base.inertia, 1e-11 + 10.0 * rounding));
+            REQUIRE(std::abs(mp.center.x - (base.center.x + offset.x)) <= 1e-13 + 4.0 * rounding);
+            REQUIRE(std::abs(mp.center.y - (base.center.y + offset.y)) <= 1e-13 + 4.0 * rounding);
+        }
+    }
+}
+
+TEST_CASE("InnerRadius and OuterRadius of boxes and circles", "[world][mass]")
+{
+    const Shape box = BoxShape(2.0, 0.5);
+    CHECK(InnerRadius(box, {0.0, 0.0}) == Approx(0.5).epsilon(1e-14));
+    CHECK(OuterRadius(box, {0.0, 0.0}) == Approx(std::sqrt(4.25)).epsilon(1e-14));
+    // About a point off the centre: the nearest face is 0.3 away, the farthest corner (-2, -0.5) from (0.5, 0.2).
+    CHECK(InnerRadius(box, {0.5, 0.2}) == Approx(0.3).epsilon(1e-14));
+    CHECK(OuterRadius(box, {0.5, 0.2}) == Approx(std::sqrt(2.5 * 2.5 + 0.7 * 0.7)).epsilon(1e-14));
+
+    Circle circle;
+    circle.radius = 1.5;
+    circle.center = {3.0, 4.0};
+    const Shape disc = MakeShape(circle);
+    CHECK(InnerRadius(disc, {3.0, 4.0}) == Approx(1.5).epsilon(1e-14));
+    CHECK(OuterRadius(disc, {3.0, 4.0}) == Approx(1.5).epsilon(1e-14));
+    CHECK(InnerRadius(disc, {3.6, 4.8}) == Approx(0.5).epsilon(1e-14));
+    CHECK(OuterRadius(disc, {3.6, 4.8}) == Approx(2.5).epsilon(1e-14));
+    // A body whose origin is off the circle: the radii about the centre of mass do not depend on the origin.
+    CHECK(OuterRadius(disc, ComputeMass(disc, 1.0).center) == Approx(1.5).epsilon(1e-14));
+}
+
+TEST_CASE("CombineMaterials takes the larger restitution and the geometric mean of the frictions", "[world][material]")
+{
+    Rng rng(404);
+    for (int k = 0; k < 1000; ++k)
+    {
+        double c[6];
+        for (double& x : c)
+        {
+            x = rng.Uniform(0.0, 2.0);
+        }
+        const Material a = MakeMaterial(0.5 * c[0], c[1], c[2]);
+        const Material b = MakeMaterial(0.5 * c[3], c[4], c[5]);
+        const ContactMaterial ab = CombineMaterials(a, b);
+        const ContactMaterial ba = CombineMaterials(b, a);
+        REQUIRE(ab.restitution == std::max(a.restitution, b.restitution));
+        REQUIRE(Near(ab.friction, std::sqrt(a.friction * b.friction), 1e-15));
+        REQUIRE(Near(ab.staticFriction, std::sqrt(a.staticFriction * b.staticFriction), 1e-15));
+        REQUIRE(ab.restitution == ba.restitution);
+        REQUIRE(ab.friction == ba.friction);
+        REQUIRE(ab.staticFriction == ba.staticFriction);
+    }
+    // Ice against anything slides; a dead floor does not stop a bouncy ball bouncing.
+    const ContactMaterial ice = CombineMaterials(MakeMaterial(0.0, 0.0, 0.0), MakeMaterial(0.2, 0.9, 1.1));
+    CHECK(ice.friction == 0.0);
+    CHECK(ice.staticFriction == 0.0);
+    CHECK(ice.restitution == 0.2);
+    const ContactMaterial same = CombineMaterials(MakeMaterial(0.5, 0.3, 0.4), MakeMaterial(0.5, 0.3, 0.4));
+    CHECK(same.restitution == 0.5);
+    CHECK(same.friction == Approx(0.3).epsilon(1e-15));
+    CHECK(same.staticFriction == Approx(0.4).epsilon(1e-15));
+    const ContactMaterial mixed = CombineMaterials(MakeMaterial(1.0, 0.25, 0.5), MakeMaterial(0.0, 1.0, 0.5));
+    CHECK(mixed.restitution == 1.0);
+    CHECK(mixed.friction == Approx(0.5).epsilon(1e-15));
+    CHECK(mixed.staticFriction == Approx(0.5).epsilon(1e-15));
+}
+
+namespace
+{
+
+/// Random boxes with corners on a coarse grid, so that many boxes touch exactly; some repeat an earlier box, some
+/// have zero width or height or both (a point).
+std::vector<Aabb> RandomBoxes(Rng& rng, int n, double extent)
+{
+    std::vector<Aabb> boxes;
+    boxes.reserve(static_cast<size_t>(n));
+    const int cells = static_cast<int>(extent * 4.0);
+    for (int i = 0; i < n; ++i)
+    {
+        if (!boxes.empty() && rng.Chance(0.05))
+        {
+            boxes.push_back(boxes[static_cast<size_t>(rng.Int(0, static_cast<int>(boxes.size()) - 1))]);
+            continue;
+        }
+        Aabb box;
+        box.min = {0.25 * rng.Int(-cells, cells), 0.25 * rng.Int(-cells, cells)};
+        Vec2 size{0.25 * rng.Int(0, 8), 0.25 * rng.Int(0, 8)};
+        if (rng.Chance(0.2))
+        {
+            size = {rng.Uniform(0.0, 2.0), rng.Uniform(0.0, 2.0)}; // off the grid
+        }
+        if (rng.Chance(0.05))
+        {
+            size = {0.0, 0.0}; // a point
+        }
+        box.max = box.min + size;
+        boxes.push_back(box);
+    }
+    return boxes;
+}
+
+bool BoxesOverlap(const Aabb& a, const Aabb& b)
+{
+    return !(a.max.x < b.min.x || b.max.x < a.min.x || a.max.y < b.min.y || b.max.y < a.min.y);
+}
+
+/// Every pair compared, the skipped ones dropped.
+std::vector<std::pair<int, int>> AllPairs(const std::vector<Aabb>& boxes, const std::vector<char>* frozen)
+{
+    std::vector<std::pair<int, int>> pairs;
+    const int n = static_cast<int>(boxes.size());
+    for (int i = 0; i < n; ++i)
+    {
+        for (int j = i + 1; j < n; ++j)
+        {
+            if (frozen != nullptr && (*frozen)[static_cast<size_t>(i)] && (*frozen)[static_cast<size_t>(j)])
+            {
+                continue;
+            }
+            if (BoxesOverlap(boxes[static_cast<size_t>(i)], boxes[static_cast<size_t>(j)]))
+            {
+                pairs.emplace_back(i, j);
+            }
+        }
+    }
+    return pairs;
+}
+
+/// Skips the pairs of two frozen boxes (as a world skips two static bodies).
+bool SkipFrozen(const void* context, int i, int j)
+{
+    const auto& frozen = *static_cast<const std::vector<char>*>(context);
+    return frozen[static_cast<size_t>(i)] && frozen[static_cast<size_t>(j)];
+}
+
+/// The order is a permutation of the boxes sorted by their lower bound on x or on y.
+bool SortedOnAnAxis(const std::vector<int>& order, const std::vector<Aabb>& boxes)
+{
+    if (order.size() != boxes.size())
+    {
+        return false;
+    }
+    std::vector<int> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    for (size_t i = 0; i < sorted.size(); ++i)
+    {
+        if (sorted[i] != static_cast<int>(i))
+        {
+            return false;
+        }
+    }
+    bool byX = true, byY = true;
+    for (size_t i = 1; i < order.size(); ++i)
+    {
+        const Aabb& p = boxes[static_cast<size_t>(order[i - 1])];
+        const Aabb& q = boxes[static_cast<size_t>(order[i])];
+        byX = byX && p.min.x <= q.min.x;
+        byY = byY && p.min.y <= q.min.y;
+    }
+    return byX || byY;
+}
+
+} // namespace
+
+TEST_CASE("FindPairs finds the same pairs as comparing every box with every other", "[world][broadphase]")
+{
+    Rng rng(405);
+    std::vector<std::pair<int, int>> pairs, brute;
+    for (int set = 0; set < 3000; ++set)
+    {
+        const int n = set < 10 ? set : (rng.Chance(0.02) ? rng.Int(200, 600) : rng.Int(2, 60));
+        // Tall, wide and square spreads, so that both sweep axes are taken.
+        const std::vector<Aabb> boxes = RandomBoxes(rng, n, rng.Uniform(1.0, 12.0));
+        std::vector<Aabb> stretched = boxes;
+        const int shape = set % 3;
+        for (Aabb& b : stretched)
+        {
+            if (shape == 1)
+            {
+                b.min.x *= 6.0;
+                b.max.x *= 6.0;
+            }
+            else if (shape == 2)
+            {
+                b.min.y *= 6.0;
+                b.max.y *= 6.0;
+            }
+        }
+        const std::vector<std::pair<int, int>> expected = AllPairs(stretched, nullptr);
+        SortAndSweep sweep;
+        FindPairs(sweep, stretched, pairs);
+        FindPairsBruteForce(stretched, brute);
+        INFO("set " << set << ", " << n << " boxes");
+        REQUIRE(pairs == expected);
+        REQUIRE(brute == expected);
+        REQUIRE(SortedOnAnAxis(sweep.order, stretched));
+    }
+}
+
+TEST_CASE("FindPairs with touching, identical and zero-size boxes", "[world][broadphase]")
+{
+    // A row of unit boxes that touch at their sides, each with a copy of itself, and points on their corners.
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 10; ++i)
+    {
+        const Aabb box{{double(i), 0.0}, {double(i + 1), 1.0}};
+        boxes.push_back(box);
+        boxes.push_back(box);
+        boxes.push_back({box.max, box.max});
+    }
+    boxes.push_back({{3.0, 1.0}, {3.0, 1.0}});   // a second point on a corner
+    boxes.push_back({{-5.0, 1.0}, {20.0, 1.0}}); // a segment along the row's top
+    std::vector<std::pair<int, int>> pairs, brute;
+    SortAndSweep sweep;
+    FindPairs(sweep, boxes, pairs);
+    FindPairsBruteForce(boxes, brute);
+    const std::vector<std::pair<int, int>> expected = AllPairs(boxes, nullptr);
+    CHECK(pairs == expected);
+    CHECK(brute == expected);
+    // Box 0 touches its copy, its corner point, box 1 (sides touch) and its copy, and the segment.
+    CHECK(std::count(expected.begin(), expected.end(), std::make_pair(0, 1)) == 1);
+    CHECK(std::count(expected.begin(), expected.end(), std::make_pair(0, 3)) == 1);
+    CHECK(std::count(expected.begin(), expected.end(), std::make_pair(0, 31)) == 1);
+}
+
+TEST_CASE("FindPairs keeps its order between calls as the boxes move", "[world][broadphase]")
+{
+    Rng rng(406);
+    std::vector<std::pair<int, int>> pairs, brute;
+    for (int world = 0; world < 20; ++world)
+    {
+        const int n = rng.Int(50, 300);
+        std::vector<Aabb> boxes = RandomBoxes(rng, n, 10.0);
+        std::vector<Vec2> drift(boxes.size());
+        for (Vec2& d : drift)
+        {
+            d = {rng.Uniform(-0.1, 0.1), rng.Uniform(-0.1, 0.1)};
+        }
+        SortAndSweep sweep;
+        std::vector<char> frozen(boxes.size());
+        for (char& f : frozen)
+        {
+            f = rng.Chance(0.4);
+        }
+        for (int frame = 0; frame < 40; ++frame)
+        {
+            const bool skip = frame % 2 == 1;
+            if (skip)
+            {
+                FindPairs(sweep, boxes, pairs, SkipFrozen, &frozen);
+                FindPairsBruteForce(boxes, brute, SkipFrozen, &frozen);
+            }
+            else
+            {
+                FindPairs(sweep, boxes, pairs);
+                FindPairsBruteForce(boxes, brute);
+            }
+            const std::vector<std::pair<int, int>> expected = AllPairs(boxes, skip ? &frozen : nullptr);
+            INFO("world " << world << ", frame " << frame);
+            REQUIRE(pairs == expected);
+            REQUIRE(brute == expected);
+            REQUIRE(SortedOnAnAxis(sweep.order, boxes));
+            // The unfrozen boxes move a little; now and then one jumps across the world.
+            for (size_t i = 0; i < boxes.size(); ++i)
+            {
+                if (frozen[i])
+                {
+                    continue;
+                }
+                Vec2 d = drift[i];
+                if (rng.Chance(0.01))
+                {
+                    d = {rng.Uniform(-10.0, 10.0), rng.Uniform(-10.0, 10.0)};
+                }
+                boxes[i].min = boxes[i].min + d;
+                boxes[i].max = boxes[i].max + d;
+            }
+        }
+    }
+}
+
+TEST_CASE("FindPairs with a skip callback drops exactly the skipped pairs", "[world][broadphase]")
+{
+    Rng rng(407);
+    std::vector<std::pair<int, int>> pairs, brute;
+    for (int set = 0; set < 1000; ++set)
+    {
+        const std::vector<Aabb> boxes = RandomBoxes(rng, rng.Int(2, 80), 4.0);
+        std::vector<char> frozen(boxes.size());
+        const double p = rng.Uniform(0.0, 1.0);
+        for (char& f : frozen)
+        {
+            f = rng.Chance(p);
+        }
+        SortAndSweep sweep;
+        FindPairs(sweep, boxes, pairs, SkipFrozen, &frozen);
+        FindPairsBruteForce(boxes, brute, SkipFrozen, &frozen);
+        const std::vector<std::pair<int, int>> expected = AllPairs(boxes, &frozen);
+        INFO("set " << set);
+        REQUIRE(pairs == expected);
+        REQUIRE(brute == expected);
+    }
+}
+
+TEST_CASE("ComputeAabb is the tight box of the placed shape", "[world][broadphase]")
+{
+    Rng rng(408);
+    for (int k = 0; k < 2000; ++k)
+    {
+        const Shape shape = RandomShape(rng, 0.3);
+        const Vec2 position{rng.Uniform(-50.0, 50.0), rng.Uniform(-50.0, 50.0)};
+        const Transform xf = MakeTransform(position, rng.Uniform(-kPi, kPi));
+        Aabb expected;
+        if (shape.type == ShapeType::Circle)
+        {
+            const Vec2 c = TransformPoint(xf, shape.circle.center);
+            const Vec2 r{shape.circle.radius, shape.circle.radius};
+            expected = {c - r, c + r};
+        }
+        else
+        {
+            expected.min = {1e300, 1e300};
+            expected.max = {-1e300, -1e300};
+            for (const Vec2& v : shape.polygon.vertices)
+            {
+                const Vec2 w = TransformPoint(xf, v);
+                expected.min = {std::min(expected.min.x, w.x), std::min(expected.min.y, w.y)};
+                expected.max = {std::max(expected.max.x, w.x), std::max(expected.max.y, w.y)};
+            }
+        }
+        const Aabb box = ComputeAabb(shape, xf);
+        const double tol = 1e-13 * 100.0;
+        INFO("shape " << k);
+        REQUIRE(std::abs(box.min.x - expected.min.x) <= tol);
+        REQUIRE(std::abs(box.min.y - expected.min.y) <= tol);
+        REQUIRE(std::abs(box.max.x - expected.max.x) <= tol);
+        REQUIRE(std::abs(box.max.y - expected.max.y) <= tol);
+    }
+}
+
+TEST_CASE("TouchingPairs equals Overlap over every pair", "[world][broadphase]")
+{
+    Rng rng(409);
+    int touching = 0;
+    for (int scene = 0; scene < 150; ++scene)
+    {
+        const int n = rng.Int(2, 30);
+        const double spread = rng.Uniform(2.0, 8.0);
+        std::vector<Shape> shapes;
+        std::vector<Transform> xfs;
+        for (int i = 0; i < n; ++i)
+        {
+            if (i > 0 && rng.Chance(0.05))
+            {
+                // An identical copy of the previous body.
+                shapes.push_back(shapes.back());
+                xfs.push_back(xfs.back());
+                continue;
+            }
+            shapes.push_back(RandomShape(rng, 0.3));
+            const Vec2 position{rng.Uniform(-spread, spread), rng.Uniform(-spread, spread)};
+            xfs.push_back(MakeTransform(position, rng.Uniform(-kPi, kPi)));
+        }
+        if (scene % 5 == 0)
+        {
+            // Two boxes sharing a side exactly: touching counts.
+            shapes.push_back(BoxShape(0.5, 0.5));
+            xfs.push_back(At(20.0, 20.0));
+            shapes.push_back(BoxShape(0.5, 0.5));
+            xfs.push_back(At(21.0, 20.0));
+        }
+        std::vector<std::pair<int, int>> expected;
+        for (size_t i = 0; i < shapes.size(); ++i)
+        {
+            for (size_t j = i + 1; j < shapes.size(); ++j)
+            {
+                if (Overlap(shapes[i], xfs[i], shapes[j], xfs[j]))
+                {
+                    expected.emplace_back(static_cast<int>(i), static_cast<int>(j));
+                }
+            }
+        }
+        touching += static_cast<int>(expected.size());
+        INFO("scene " << scene);
+        REQUIRE(TouchingPairs(shapes, xfs) == expected);
+    }
+    CHECK(touching > 500); // the scenes are dense enough to say something
+}
+
+TEST_CASE("ValidateBodyDef names the field that is wrong", "[world][validate]")
+{
+    BodyDef good;
+    good.shape = BoxShape(0.5, 0.5);
+    CHECK(ValidateBodyDef(good).empty());
+    BodyDef staticZero = good;
+    staticZero.type = BodyType::Static;
+    staticZero.density = 0.0;
+    CHECK(ValidateBodyDef(staticZero).empty()); // a static body has no mass
+    BodyDef elastic = good;
+    elastic.material.restitution = 1.0;
+    CHECK(ValidateBodyDef(elastic).empty());
+
+    struct Case
+    {
+        const char* what;
+        BodyDef def;
+        std::vector<const char*> names; // any of these must appear in the folded message
+    };
+    std::vector<Case> cases;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    {
+        Case c{"negative density", good, {"density"}};
+        c.def.density = -1.0;
+        cases.push_back(c);
+    }
+    {
+        Case c{"zero density", good, {"density"}};
+        c.def.density = 0.0;
+        cases.push_back(c);
+    }
+    {
+        Case c{"NaN density", good, {"density"}};
+        c.def.density = nan;
+        cases.push_back(c);
+    }
+    {
+        Case c{"negative friction", good, {"friction"}};
+        c.def.material.friction = -0.1;
+        cases.push_back(c);
+    }
+    {
+        Case c{"negative static friction", good, {"staticfriction"}};
+        c.def.material.staticFriction = -0.1;
+        cases.push_back(c);
+    }
+    {
+        Case c{"NaN velocity", good, {"velocity"}};
+        c.def.velocity = {nan, 0.0};
+        cases.push_back(c);
+    }
+    {
+        Case c{"infinite velocity", good, {"velocity"}};
+        c.def.velocity = {0.0, inf};
+        cases.push_back(c);
+    }
+    {
+        Case c{"NaN angular velocity", good, {"angularvelocity"}};
+        c.def.angularVelocity = nan;
+        cases.push_back(c);
+    }
+    {
+        Case c{"NaN position", good, {"position"}};
+        c.def.position = {0.0, nan};
+        cases.push_back(c);
+    }
+    {
+        Case c{"infinite angle", good, {"angle"}};
+        c.def.angle = inf;
+        cases.push_back(c);
+    }
+    {
+        Case c{"restitution above 1", good, {"restitution"}};
+        c.def.material.restitution = 1.5;
+        cases.push_back(c);
+    }
+    {
+        Case c{"negative restitution", good, {"restitution"}};
+        c.def.material.restitution = -0.5;
+        cases.push_back(c);
+    }
+    {
+        Case c{"circle of zero radius", good, {"radius", "shape"}};
+        c.def.shape = DiscShape(1.0);
+        c.def.shape.circle.radius = 0.0;
+        cases.push_back(c);
+    }
+    {
+        Case c{"empty polygon", good, {"shape", "polygon"}};
+        c.def.shape = MakeShape(Polygon());
+        cases.push_back(c);
+    }
+    for (const Case& c : cases)
+    {
+        const std::string message = ValidateBodyDef(c.def);
+        INFO(c.what << ": \"" << message << "\"");
+        CHECK(!message.empty());
+        const std::string lower = Folded(message);
+        bool named = false;
+        for (const char* name : c.names)
+        {
+            named = named || lower.find(name) != std::string::npos;
+        }
+        CHECK(named);
+    }
+}
