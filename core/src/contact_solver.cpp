@@ -3,11 +3,19 @@
 
 #include "contact_solver.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace satviz::detail
 {
 
-void PrepareContact(SolverContact& c, const SolverBody& a, const SolverBody& b, const double approach[2],
-                    double restitutionThreshold)
+// The target comes from the energy that semi-implicit Euler keeps exactly in free fall: with v the velocity of a
+// step's move and y the height reached, v^2 / 2 + g y - g dt v / 2 is the same at every step. At the impact, the
+// approach v < 0 (before gravity) has reached an overlap d, so the speed it would have had at the surface is
+// u^2 = v^2 + g dt |v| - 2 g d. The separating speed w that gives the same quantity restitution^2 u^2 / 2 at the
+// surface after the step solves w^2 + g dt w = 2 g d + e^2 u^2.
+void PrepareContact(SolverContact& c, const SolverBody& a, const SolverBody& b, const double approach[2], double pull,
+                    double dt, double restitutionThreshold)
 {
     const Vec2 n = c.normal;
     const Vec2 t = RightPerp(n);
@@ -21,7 +29,20 @@ void PrepareContact(SolverContact& c, const SolverBody& a, const SolverBody& b, 
         const double rtA = Cross(p.rA, t), rtB = Cross(p.rB, t);
         const double kt = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
         p.tangentMass = kt > 0.0 ? 1.0 / kt : 0.0;
-        p.bounce = approach[i] < -restitutionThreshold ? -c.material.restitution * approach[i] : 0.0;
+        p.bounce = 0.0;
+        if (approach[i] < -restitutionThreshold)
+        {
+            const double e = c.material.restitution;
+            const double v = approach[i];
+            const double d = p.separation < 0.0 ? -p.separation : 0.0;
+            const double gdt = pull * dt;
+            const double u2 = std::max(0.0, v * v - gdt * v - 2.0 * pull * d);
+            p.bounce = 0.5 * (std::sqrt(gdt * gdt + 4.0 * (2.0 * pull * d + e * e * u2)) - gdt);
+            if (e == 0.0)
+            {
+                p.bounce = 0.0;
+            }
+        }
     }
     c.block = false;
     if (c.count == 2)

@@ -79,9 +79,14 @@ inline void ApplyImpulse(SolverBody& a, SolverBody& b, Vec2 rA, Vec2 rB, Vec2 p)
 }
 
 /// Effective masses, restitution targets and the 2x2 block of a contact whose points have rA, rB and separation
-/// set. `approach[i]` is the relative normal velocity of point i before the step's gravity (< 0: approaching).
-void PrepareContact(SolverContact& c, const SolverBody& a, const SolverBody& b, const double approach[2],
-                    double restitutionThreshold);
+/// set. `approach[i]` is the relative normal velocity of point i before the step's gravity (< 0: approaching);
+/// `pull` is how fast gravity closes the pair along the normal (units per time unit squared, >= 0 when it pulls the
+/// bodies together) and `dt` the step. Above the threshold the target separating speed is the one that leaves the
+/// pair, one step later, with restitution squared times the energy of the approach, counted at the surface: the
+/// overlap the point reached and the step's gravity are taken into account, so the bounce does not depend on the
+/// phase of the step at which the impact fell. Without gravity it is restitution times the approach speed.
+void PrepareContact(SolverContact& c, const SolverBody& a, const SolverBody& b, const double approach[2], double pull,
+                    double dt, double restitutionThreshold);
 
 /// Applies the accumulated impulses of the last step (warm starting).
 void WarmStart(SolverContact& c, SolverBody& a, SolverBody& b);

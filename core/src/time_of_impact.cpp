@@ -210,6 +210,13 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
         }
         t += (m.gap - 0.5 * tolerance) / (approach * m_dt);
     }
+    if (t < 1.0)
+    {
+        // Out of passes before the end of the step and still short of the contact (a body spinning so fast that
+        // each pass gains little): the pair stops where it is, which never lets it pass through.
+        event = {t, i, j, m_stamp[i], m_stamp[j], {}, {}, 0};
+        return true;
+    }
     return false;
 }
 
@@ -285,93 +292,117 @@ void TimeOfImpactStage::SweepPair(int i, int j)
     m_queue.push(event);
 }
 
-void TimeOfImpactStage::Resolve(const Event& event)
+void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
 {
     World& world = m_world;
-    const int i = event.i, j = event.j;
-    RigidBody& a = world.bodies[i];
-    RigidBody& b = world.bodies[j];
-    // Both bodies move to the time of the hit; a sleeping body that is hit wakes.
-    for (const int k : {i, j})
+    // The bodies of the hits move to the time of their hit; a sleeping body that is hit wakes.
+    std::vector<int> bodies;
+    for (const Event& event : group)
     {
-        Motion& m = m_motion[k];
-        RigidBody& body = world.bodies[k];
-        if (body.type == BodyType::Dynamic && !body.awake)
+        for (const int k : {event.i, event.j})
         {
-            body.awake = true;
-            body.sleepTime = 0.0;
-            m.moves = true;
+            Motion& m = m_motion[k];
+            RigidBody& body = world.bodies[k];
+            if (body.type == BodyType::Dynamic && !body.awake)
+            {
+                body.awake = true;
+                body.sleepTime = 0.0;
+                m.moves = true;
+            }
+            if (m.moves && m.t < event.t)
+            {
+                m.center = CenterAt(k, event.t);
+                m.angle += (event.t - m.t) * m_dt * m.w;
+                m.t = event.t;
+            }
+            if (std::find(bodies.begin(), bodies.end(), k) == bodies.end())
+            {
+                bodies.push_back(k);
+            }
         }
-        if (m.moves)
+    }
+    // Hits at the same time are solved together, as the contacts of one step are: a plank landing flat on two
+    // supports takes both hits at once and does not start to spin.
+    std::vector<SolverBody> solver(bodies.size());
+    for (size_t s = 0; s < bodies.size(); ++s)
+    {
+        const RigidBody& body = world.bodies[bodies[s]];
+        if (body.type == BodyType::Dynamic)
         {
-            m.center = CenterAt(k, event.t);
-            m.angle += (event.t - m.t) * m_dt * m.w;
-            m.t = event.t;
+            solver[s] = {body.velocity, body.angularVelocity, body.invMass, body.invInertia};
         }
     }
-    SolverBody sa, sb;
-    if (a.type == BodyType::Dynamic)
-    {
-        sa = {a.velocity, a.angularVelocity, a.invMass, a.invInertia};
-    }
-    if (b.type == BodyType::Dynamic)
-    {
-        sb = {b.velocity, b.angularVelocity, b.invMass, b.invInertia};
-    }
-    SolverContact c;
-    c.a = i;
-    c.b = j;
-    c.normal = event.normal;
-    c.count = event.count;
-    c.material = CombineMaterials(a.material, b.material);
-    double approach[2] = {0.0, 0.0};
-    for (int k = 0; k < c.count; ++k)
-    {
-        c.points[k].rA = event.points[k] - m_motion[i].center;
-        c.points[k].rB = event.points[k] - m_motion[j].center;
-        approach[k] = Dot(RelativeVelocity(sa, sb, c.points[k].rA, c.points[k].rB), c.normal);
-    }
-    PrepareContact(c, sa, sb, approach, world.settings.restitutionThreshold);
+    auto slot = [&](int k) { return static_cast<int>(std::find(bodies.begin(), bodies.end(), k) - bodies.begin()); };
+    std::vector<SolverContact> contacts;
+    std::vector<uint8_t> stopped(bodies.size(), 0);
     ContactSolveTrace* trace = world.trace;
-    const bool traced =
-        trace != nullptr && ((trace->bodyA == i && trace->bodyB == j) || (trace->bodyA == j && trace->bodyB == i));
+    for (const Event& event : group)
+    {
+        const int i = event.i, j = event.j;
+        if (event.count == 0)
+        {
+            // Conservative advancement ran out of passes short of the contact: both bodies stop there.
+            stopped[slot(i)] = 1;
+            stopped[slot(j)] = 1;
+            continue;
+        }
+        SolverContact c;
+        c.a = slot(i);
+        c.b = slot(j);
+        c.normal = event.normal;
+        c.count = event.count;
+        c.material = CombineMaterials(world.bodies[i].material, world.bodies[j].material);
+        double approach[2] = {0.0, 0.0};
+        for (int k = 0; k < c.count; ++k)
+        {
+            c.points[k].rA = event.points[k] - m_motion[i].center;
+            c.points[k].rB = event.points[k] - m_motion[j].center;
+            approach[k] = Dot(RelativeVelocity(solver[c.a], solver[c.b], c.points[k].rA, c.points[k].rB), c.normal);
+        }
+        // A hit within the step is taken at the surface (no overlap) with the velocities of the move.
+        PrepareContact(c, solver[c.a], solver[c.b], approach, 0.0, m_dt, world.settings.restitutionThreshold);
+        c.traced =
+            trace != nullptr && ((trace->bodyA == i && trace->bodyB == j) || (trace->bodyA == j && trace->bodyB == i));
+        if (c.traced)
+        {
+            if (trace->hits == 0)
+            {
+                trace->hitTime = event.t;
+            }
+            ++trace->hits;
+        }
+        contacts.push_back(c);
+        ++world.counts.hits;
+    }
     NullSolveRecorder quiet;
     TraceSolveRecorder loud{trace};
     for (int pass = 0; pass < world.settings.velocityIterations; ++pass)
     {
-        if (traced)
+        for (SolverContact& c : contacts)
         {
-            SolveContactVelocity(c, sa, sb, -1, loud);
-        }
-        else
-        {
-            SolveContactVelocity(c, sa, sb, -1, quiet);
+            if (c.traced)
+            {
+                SolveContactVelocity(c, solver[c.a], solver[c.b], -1, loud);
+            }
+            else
+            {
+                SolveContactVelocity(c, solver[c.a], solver[c.b], -1, quiet);
+            }
         }
     }
-    if (traced)
+    for (size_t s = 0; s < bodies.size(); ++s)
     {
-        if (trace->hits == 0)
-        {
-            trace->hitTime = event.t;
-        }
-        ++trace->hits;
-    }
-    ++world.counts.hits;
-    const SolverBody* solved[2] = {&sa, &sb};
-    const int ids[2] = {i, j};
-    for (int s = 0; s < 2; ++s)
-    {
-        const int k = ids[s];
+        const int k = bodies[s];
         RigidBody& body = world.bodies[k];
         if (body.type != BodyType::Dynamic)
         {
             continue;
         }
-        body.velocity = solved[s]->v;
-        body.angularVelocity = solved[s]->w;
+        body.velocity = solver[s].v;
+        body.angularVelocity = solver[s].w;
         Motion& m = m_motion[k];
         ++m_stamp[k];
-        if (++m_hits[k] >= world.settings.maxHitsPerBody)
+        if (stopped[s] || ++m_hits[k] >= world.settings.maxHitsPerBody)
         {
             // Stops where it is for the rest of the step.
             m.v = {};
@@ -400,7 +431,10 @@ void TimeOfImpactStage::Resolve(const Event& event)
             }
         }
     }
-    for (const int k : {i, j})
+    // The pairs of the bodies that were hit are swept again from now. A pair that was just resolved is swept only
+    // while it still approaches.
+    std::vector<std::pair<int, int>> swept;
+    for (const int k : bodies)
     {
         if (world.bodies[k].type != BodyType::Dynamic)
         {
@@ -408,18 +442,33 @@ void TimeOfImpactStage::Resolve(const Event& event)
         }
         for (const int o : m_near[k])
         {
-            if (o == i + j - k)
+            const std::pair<int, int> pair{std::min(k, o), std::max(k, o)};
+            if (std::find(swept.begin(), swept.end(), pair) != swept.end())
             {
-                if (!Approaching(i, j, event.t, event.normal, event.points, event.count))
+                continue;
+            }
+            swept.push_back(pair);
+            bool resolved = false;
+            bool approaching = false;
+            for (const Event& event : group)
+            {
+                if (event.i == pair.first && event.j == pair.second)
                 {
-                    continue;
-                }
-                if (k == j && world.bodies[i].type == BodyType::Dynamic)
-                {
-                    continue; // swept once, from i's side
+                    resolved = true;
+                    approaching = approaching ||
+                                  (event.count > 0 &&
+                                   Approaching(event.i, event.j, event.t, event.normal, event.points, event.count));
                 }
             }
-            SweepPair(k, o);
+            // A pair that turns can meet again elsewhere within the step even when its contact points part.
+            const double turning = (std::fabs(m_motion[pair.first].w) * world.bodies[pair.first].outerRadius +
+                                    std::fabs(m_motion[pair.second].w) * world.bodies[pair.second].outerRadius) *
+                                   (1.0 - group.front().t) * m_dt;
+            if (resolved && !approaching && turning <= 0.25 * world.settings.linearSlop)
+            {
+                continue;
+            }
+            SweepPair(pair.first, pair.second);
         }
     }
 }
@@ -462,6 +511,7 @@ void TimeOfImpactStage::Run()
                 SweepPair(i, j);
             }
         }
+        std::vector<Event> group;
         while (!m_queue.empty())
         {
             const Event event = m_queue.top();
@@ -470,7 +520,18 @@ void TimeOfImpactStage::Run()
             {
                 continue;
             }
-            Resolve(event);
+            // The hits within a millionth of the step of this one are taken with it.
+            group.assign(1, event);
+            while (!m_queue.empty() && m_queue.top().t <= event.t + 1e-6)
+            {
+                const Event next = m_queue.top();
+                m_queue.pop();
+                if (next.stampI == m_stamp[next.i] && next.stampJ == m_stamp[next.j])
+                {
+                    group.push_back(next);
+                }
+            }
+            Resolve(group);
         }
     }
     for (int i = 0; i < n; ++i)

@@ -29,7 +29,9 @@ namespace satviz::detail
 ///  4. The earliest hit of all is taken first: its two bodies move to that time, the hit is resolved with the
 ///     solver's impulses (restitution, static and dynamic friction), their stamps change (so their older hits are
 ///     dropped), and their pairs are swept again from that time.
-///  5. A body that takes maxHitsPerBody hits stops where it is for the rest of the step. When the queue is empty,
+///     Hits within a millionth of the step of each other are resolved together, as one step's contacts are.
+///  5. A body that takes maxHitsPerBody hits stops where it is for the rest of the step, and so does a pair that
+///     conservative advancement cannot bring within the slop in kMaxAdvances passes. When the queue is empty,
 ///     every body moves on to the end of the step.
 class TimeOfImpactStage
 {
@@ -76,7 +78,7 @@ class TimeOfImpactStage
     bool Approaching(int i, int j, double t, Vec2 normal, const Vec2* points, int count) const;
     void SweepPair(int i, int j);
     bool Advance(int i, int j, double t0, Event& event);
-    void Resolve(const Event& event);
+    void Resolve(const std::vector<Event>& group);
     void Connect(int i, int j);
 
     World& m_world;

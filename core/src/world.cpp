@@ -489,7 +489,12 @@ void Stepper::SolveVelocities()
             p.tangentImpulse = wc.points[i].tangentImpulse;
             approach[i] = Dot(detail::RelativeVelocity(solverBodies[c.a], solverBodies[c.b], p.rA, p.rB), c.normal);
         }
-        detail::PrepareContact(c, solverBodies[c.a], solverBodies[c.b], approach, settings.restitutionThreshold);
+        // How fast gravity closes the pair along the normal: it pulls only the awake dynamic bodies.
+        const Vec2 gravityA = IsAwakeDynamic(bodies[c.a]) ? settings.gravity : Vec2{};
+        const Vec2 gravityB = IsAwakeDynamic(bodies[c.b]) ? settings.gravity : Vec2{};
+        const double pull = std::max(0.0, -Dot(gravityB - gravityA, c.normal));
+        detail::PrepareContact(c, solverBodies[c.a], solverBodies[c.b], approach, pull, dt,
+                               settings.restitutionThreshold);
         if (trace != nullptr &&
             ((trace->bodyA == c.a && trace->bodyB == c.b) || (trace->bodyA == c.b && trace->bodyB == c.a)))
         {
@@ -554,8 +559,10 @@ void Stepper::StoreImpulses()
         WorldContact& wc = world.contacts[k];
         for (int i = 0; i < c.count; ++i)
         {
-            wc.points[i].normalImpulse = c.points[i].normalImpulse;
-            wc.points[i].tangentImpulse = c.points[i].tangentImpulse;
+            // A bounce is an impact, not a load the point will carry next step: it is not warm started.
+            const bool bounced = c.points[i].bounce > 0.0;
+            wc.points[i].normalImpulse = bounced ? 0.0 : c.points[i].normalImpulse;
+            wc.points[i].tangentImpulse = bounced ? 0.0 : c.points[i].tangentImpulse;
             wc.points[i].stuck = c.points[i].stuck;
         }
     }
