@@ -55,4 +55,7 @@ if(TARGET satviz)
 endif()
 list(REMOVE_DUPLICATES satviz_deb_depends)
 list(JOIN satviz_deb_depends ", " CPACK_DEBIAN_PACKAGE_DEPENDS)
-include(CPack)
+# Inside another project (add_subdirectory), its own packaging stays its own.
+if(PROJECT_IS_TOP_LEVEL)
+  include(CPack)
+endif()
