@@ -749,6 +749,16 @@ SceneResult RunScene(const WorldBenchSettings& s, bool rain, int n)
                 result.configs[c].wallRatio.push_back(wall[c] / wall[base]);
             }
         }
+        // The round's figures as they come, for a long run.
+        std::fprintf(stderr, "  ms per step:");
+        for (int c : order)
+        {
+            if (!(IsCostly(c) && round > 0))
+            {
+                std::fprintf(stderr, " %s %.3f;", kConfigNames[c], whole[c]);
+            }
+        }
+        std::fprintf(stderr, "\n");
     }
     return result;
 }
