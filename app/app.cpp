@@ -103,6 +103,29 @@ void HelpMarker(const char* text)
 
 } // namespace
 
+std::string FindBundledScenes(const std::filesystem::path& programDir, const std::filesystem::path& dataDir)
+{
+    std::error_code code;
+    const std::filesystem::path data = (programDir / dataDir / "scenes").lexically_normal();
+    if (std::filesystem::is_directory(data, code))
+    {
+        return data.string();
+    }
+    for (std::filesystem::path dir = programDir; !dir.empty(); dir = dir.parent_path())
+    {
+        const std::filesystem::path source = dir / "tutorials" / "scenes";
+        if (std::filesystem::is_directory(source, code))
+        {
+            return source.string();
+        }
+        if (dir == dir.parent_path())
+        {
+            break;
+        }
+    }
+    return "";
+}
+
 App::App(const FigureFonts& fonts, AppOptions options) : fonts_(fonts), options_(std::move(options))
 {
     LoadRecent();

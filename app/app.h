@@ -11,6 +11,7 @@
 #include <satviz/scene.h>
 
 #include <atomic>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,6 +47,12 @@ struct AppOptions
     /// queries and the camera fit grow with the square of the count, about 13 ms at 2048 vertices.
     int backgroundVertices = 2048;
 };
+
+/// The folder of the bundled scenes for the program in `programDir`, whose data folder (the lessons, and the scenes
+/// in its scenes/) is `programDir / dataDir` ("../share/satviz" beside an install prefix's bin/; the build tree
+/// has the same layout, with a link to tutorials/). Else, in a build directory inside the source tree,
+/// tutorials/scenes in the nearest ancestor of `programDir` that has one. Empty when neither exists.
+std::string FindBundledScenes(const std::filesystem::path& programDir, const std::filesystem::path& dataDir);
 
 /// What a drag on the canvas does, decided when the mouse button goes down.
 enum class DragKind

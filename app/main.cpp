@@ -180,18 +180,26 @@ bool ExportWithRenderer(satviz::App& app, const std::string& renderer, const std
     return true;
 }
 
-// satviz-render: beside this program in the build tree, or on the PATH.
-std::string FindRenderer()
+/// The directory of this program's file, from /proc/self/exe; empty where that cannot be read.
+std::filesystem::path ProgramDir()
 {
     std::error_code code;
     const std::filesystem::path self = std::filesystem::canonical("/proc/self/exe", code);
-    for (const std::filesystem::path& candidate :
-         {self.parent_path() / "satviz-render", self.parent_path().parent_path() / "render" / "satviz-render",
-          std::filesystem::path(SATVIZ_RENDER_EXE)})
+    return code ? std::filesystem::path() : self.parent_path();
+}
+
+// satviz-render: beside this program (an install prefix's bin/), in ../render (the build tree), or on the PATH.
+std::string FindRenderer(const std::filesystem::path& programDir)
+{
+    if (!programDir.empty())
     {
-        if (::access(candidate.c_str(), X_OK) == 0)
+        for (const std::filesystem::path& candidate :
+             {programDir / "satviz-render", programDir.parent_path() / "render" / "satviz-render"})
         {
-            return candidate.string();
+            if (::access(candidate.c_str(), X_OK) == 0)
+            {
+                return candidate.string();
+            }
         }
     }
     if (const char* path = std::getenv("PATH"))
@@ -255,6 +263,17 @@ int main(int argc, char** argv)
         return 2;
     }
 
+    // The bundled scenes and the lessons, found from where this program is (see FindBundledScenes).
+    const std::filesystem::path programDir = ProgramDir();
+    const std::string scenesDir =
+        programDir.empty() ? std::string() : satviz::FindBundledScenes(programDir, SATVIZ_DATA_FROM_BIN);
+    if (sceneFile.empty() && scenesDir.empty())
+    {
+        std::fprintf(stderr, "satviz: no bundled scenes in %s or a tutorials/scenes above it; name a scene file\n",
+                     (programDir / SATVIZ_DATA_FROM_BIN / "scenes").lexically_normal().c_str());
+        return 1;
+    }
+
     if (!glfwInit())
     {
         std::fprintf(stderr, "satviz: cannot open a window (no display?); satviz-render draws figures without one\n");
@@ -292,7 +311,7 @@ int main(int argc, char** argv)
     ImGui_ImplOpenGL2_Init();
 
     satviz::AppOptions options;
-    options.scenesDir = SATVIZ_SCENES_DIR;
+    options.scenesDir = scenesDir;
     options.recentFile = RecentFile();
     options.updateRecent = !measuring;
     options.exportPath = exportPath;
@@ -303,7 +322,7 @@ int main(int argc, char** argv)
     options.keys.f = GLFW_KEY_F;
     options.keys.f1 = GLFW_KEY_F1;
     satviz::App app(fonts, options);
-    const std::string renderer = FindRenderer();
+    const std::string renderer = FindRenderer(programDir);
     const std::string initial = sceneFile.empty() ? options.scenesDir + "/overlapping_boxes.json" : sceneFile;
     if (!app.Open(initial))
     {

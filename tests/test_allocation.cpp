@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <new>
 
@@ -88,7 +89,7 @@ TEST_CASE("Overlap, Collide and Sweep allocate nothing, at any vertex count", "[
     }
     const long during = g_allocations.load() - before;
     CHECK(during == 0);
-    CHECK(sink == sink);
+    CHECK(std::isfinite(sink)); // the results are used, so the queries are not optimised away
 
     // The traced query does allocate (its trace grows): the counter sees it.
     Trace trace;

@@ -32,7 +32,6 @@ TEST_CASE("A projectile never tunnels through a thin wall, at any speed and angl
     const Shape wall = BoxShape(5e-4, 10.0);
     const Shape bullet = BoxShape(0.005, 0.005);
     Rng rng(31);
-    int shots = 0;
     for (double speed = 1.0; speed <= 1e6; speed *= 10.0)
     {
         for (int k = 0; k < 2000; ++k)
@@ -54,10 +53,8 @@ TEST_CASE("A projectile never tunnels through a thin wall, at any speed and angl
             const SweepResult reverse = Sweep(bullet, At(start.x, start.y), kStill, wall, At(0, 0), -v);
             REQUIRE(reverse.status == SweepStatus::Hit);
             REQUIRE(std::abs(reverse.toi - r.toi) <= 1e-12 * r.toi);
-            ++shots;
         }
     }
-    CHECK(shots == 14000);
 }
 
 TEST_CASE("A fast circle hits a thin wall at the analytic time", "[sweep][circle]")
@@ -771,12 +768,12 @@ TEST_CASE("Polygons that start touching and move into each other hit at once, on
     // sweep that took a face touching at t = 0 for one that overlaps and reported A's face 0 (its normal, axis
     // and contacts) whatever the geometry.
     Rng rng(6101);
-    Tally tally;
-    int faceToFaceCount = 0;
+    Tally byVertex;
+    Tally faceToFaceTally;
     for (int i = 0; i < 20000; ++i)
     {
         const bool faceToFace = rng.Chance(0.3);
-        faceToFaceCount += faceToFace;
+        Tally& tally = faceToFace ? faceToFaceTally : byVertex;
         const Polygon a = TouchPolygon(rng);
         const Touching pair = OnFace(rng, a, MakeShape(TouchPolygon(rng)), faceToFace);
         const Vec2 v = IntoContact(rng, pair, rng.LogUniform(-3.0, 6.0));
@@ -787,9 +784,12 @@ TEST_CASE("Polygons that start touching and move into each other hit at once, on
         RequireHitAtOnce(pair.a, pair.xfA, vA, pair.b, pair.xfB, vB, pair.normal, scale, tally);
         RequireHitAtOnce(pair.b, pair.xfB, vB, pair.a, pair.xfA, vA, -pair.normal, scale, tally);
     }
-    WARN(tally.hits << " hits, " << tally.overlapping << " overlapping by rounding");
-    CHECK(tally.hits > 10000);
-    CHECK(faceToFaceCount > 4000);
+    WARN("by a vertex " << byVertex.hits << " hits, " << byVertex.overlapping
+                        << " overlapping by rounding; edge to edge " << faceToFaceTally.hits << " hits, "
+                        << faceToFaceTally.overlapping << " overlapping by rounding");
+    // Rounding may start a pair just inside the other (overlapping): most must still be real hits at t = 0.
+    CHECK(byVertex.hits > 15000);
+    CHECK(faceToFaceTally.hits > 5000);
 }
 
 TEST_CASE("Axis-aligned boxes that start touching and move in hit at once from every side", "[sweep]")
@@ -1319,5 +1319,4 @@ TEST_CASE("Boxes and circles never tunnel through a rotated thin wall", "[sweep]
         }
     }
     WARN(shots << " shots, worst relative error of the time " << worst);
-    CHECK(shots == 21000);
 }

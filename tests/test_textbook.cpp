@@ -204,9 +204,16 @@ TEST_CASE("Textbook MTV on the two mirrored triangles that tie on their diagonal
     CHECK(t.axisCount == 4);
     const Manifold m = Collide(a.polygon, at, b.polygon, at);
     CHECK(t.depth == Approx(m.depth).margin(1e-15));
-    // The push of B by depth * normal separates along the MTV: B's lowest point meets A's highest.
+    // The diagonals tie; the first of them in the test order decides, A's, as A's face is Collide's reference face.
     const TextbookAxis& best = trace.axes[static_cast<size_t>(t.axis)];
-    CHECK(best.overlap == Approx(t.depth).margin(1e-15));
+    CHECK(best.faces[0].shape == 0);
+    CHECK(best.faces[0].index == 1);
+    CHECK(t.normal == m.normal);
+    // The push of B by depth * normal leaves the triangles touching, and a hair more separates them.
+    const Transform pushed = MakeTransform(t.depth * t.normal, 0.0);
+    const Reference touching = ReferenceCollide(a, at, b, pushed);
+    CHECK(std::abs(static_cast<double>(touching.separation)) <= 1e-15);
+    CHECK(!ReferenceCollide(a, at, b, MakeTransform((t.depth + 1e-12) * t.normal, 0.0)).overlap);
 }
 
 TEST_CASE("The textbook swept test gives Sweep's status and time of impact on random moving pairs",

@@ -124,7 +124,8 @@ Aabb TimeOfImpactStage::Reach(int i, double speed) const
     return {{m.center.x - r, m.center.y - r}, {m.center.x + r, m.center.y + r}};
 }
 
-bool TimeOfImpactStage::Approaching(int i, int j, double t, Vec2 normal, const Vec2* points, int count) const
+bool TimeOfImpactStage::Approaching(int i, int j, double t, Vec2 normal, const Vec2* points, int count,
+                                    double minSpeed) const
 {
     const Vec2 ci = CenterAt(i, t), cj = CenterAt(j, t);
     const Motion& mi = m_motion[i];
@@ -136,7 +137,7 @@ bool TimeOfImpactStage::Approaching(int i, int j, double t, Vec2 normal, const V
         const Vec2 vj = mj.v + mj.w * LeftPerp(points[k] - cj);
         // Round-off of the solve leaves a resolved pair approaching by a few ulps of the speeds: that is not an
         // approach, and sweeping it again would find the same hit at the same time.
-        if (Dot(vj - vi, normal) < -1e-9 * scale)
+        if (Dot(vj - vi, normal) < -(1e-9 * scale + minSpeed))
         {
             return true;
         }
@@ -151,6 +152,14 @@ void TimeOfImpactStage::Connect(int i, int j)
         m_near[i].push_back(j);
         m_near[j].push_back(i);
     }
+}
+
+// The approach speed below which a pair within the slop is left to the next step's contact: slower, it cannot
+// overlap by more than the slop before the step ends. A pair pressed together by turning would otherwise take a
+// string of tiny hits.
+double TimeOfImpactStage::CloseSpeed(double t) const
+{
+    return m_world.settings.linearSlop / (std::max(1.0 - t, 1e-12) * m_dt);
 }
 
 // Conservative advancement of a pair whose turning matters, from t0: see the outline in the header.
@@ -179,7 +188,7 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
             {
                 points[k] = m.contacts[k].point;
             }
-            if (m.contactCount == 0 || !Approaching(i, j, t, m.normal, points, m.contactCount))
+            if (m.contactCount == 0 || !Approaching(i, j, t, m.normal, points, m.contactCount, CloseSpeed(t)))
             {
                 return false;
             }
@@ -199,7 +208,7 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
                 {
                     points[k] = close.contacts[k].point + (0.5 * shift) * close.normal;
                 }
-                if (Approaching(i, j, t, close.normal, points, close.contactCount))
+                if (Approaching(i, j, t, close.normal, points, close.contactCount, CloseSpeed(t)))
                 {
                     event = {t, i, j, m_stamp[i], m_stamp[j], close.normal, {points[0], points[1]}, close.contactCount};
                     return true;

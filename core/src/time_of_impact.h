@@ -75,7 +75,8 @@ class TimeOfImpactStage
     double Speed(int i) const;
     bool IsFast(int i) const;
     Aabb Reach(int i, double speed) const;
-    bool Approaching(int i, int j, double t, Vec2 normal, const Vec2* points, int count) const;
+    bool Approaching(int i, int j, double t, Vec2 normal, const Vec2* points, int count, double minSpeed = 0.0) const;
+    double CloseSpeed(double t) const;
     void SweepPair(int i, int j);
     bool Advance(int i, int j, double t0, Event& event);
     void Resolve(const std::vector<Event>& group);

@@ -728,3 +728,27 @@ TEST_CASE("Help > Lessons lists the lessons, and opening one shows its text and 
     CHECK_FALSE(h.app->OpenLesson(static_cast<int>(lessons.size())));
     CHECK(h.app->CurrentLesson() == 3);
 }
+
+TEST_CASE("The bundled scenes are found from the program's folder: the data folder, else tutorials/ above it", "[app]")
+{
+    const fs::path root = fs::temp_directory_path() / ("satviz-app-layout-" + std::to_string(::getpid()));
+    fs::remove_all(root);
+    // An install prefix: PREFIX/bin/satviz, PREFIX/share/satviz/scenes.
+    fs::create_directories(root / "prefix" / "bin");
+    fs::create_directories(root / "prefix" / "share" / "satviz" / "scenes");
+    CHECK(FindBundledScenes(root / "prefix" / "bin", "../share/satviz") ==
+          (root / "prefix" / "share" / "satviz" / "scenes").string());
+    // A build directory inside the source tree, without a data folder: SOURCE/tutorials/scenes.
+    fs::create_directories(root / "source" / "tutorials" / "scenes");
+    fs::create_directories(root / "source" / "build" / "release" / "app");
+    CHECK(FindBundledScenes(root / "source" / "build" / "release" / "app", "../share/satviz") ==
+          (root / "source" / "tutorials" / "scenes").string());
+    // The data folder comes first.
+    fs::create_directories(root / "source" / "build" / "release" / "share" / "satviz" / "scenes");
+    CHECK(FindBundledScenes(root / "source" / "build" / "release" / "app", "../share/satviz") ==
+          (root / "source" / "build" / "release" / "share" / "satviz" / "scenes").string());
+    // Neither.
+    fs::create_directories(root / "elsewhere" / "bin");
+    CHECK(FindBundledScenes(root / "elsewhere" / "bin", "../share/satviz").empty());
+    fs::remove_all(root);
+}

@@ -27,14 +27,13 @@ struct Run
 };
 
 /// Runs satviz with `arguments` and no display, found on the PATH as `satviz` (so that its usage line names it
-/// so); its output goes to files of this process, read and removed.
-Run App(const std::string& arguments)
+/// so) in `dir`; its output goes to files of this process, read and removed.
+Run App(const std::string& arguments, const fs::path& dir = fs::path(SATVIZ_APP_EXE).parent_path())
 {
     const fs::path out = fs::temp_directory_path() / ("satviz-app-cli-" + std::to_string(::getpid()) + ".out");
     const fs::path err = fs::temp_directory_path() / ("satviz-app-cli-" + std::to_string(::getpid()) + ".err");
-    const std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY PATH=\"" +
-                                fs::path(SATVIZ_APP_EXE).parent_path().string() + ":$PATH\" satviz " + arguments +
-                                " > " + out.string() + " 2> " + err.string();
+    const std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY PATH=\"" + dir.string() + ":$PATH\" satviz " +
+                                arguments + " > " + out.string() + " 2> " + err.string();
     const int status = std::system(command.c_str());
     Run run;
     run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -93,4 +92,29 @@ TEST_CASE("README.md lists the app's options as satviz --help prints them", "[ap
     REQUIRE(end != std::string::npos);
     // CLI11 ends its help with an empty line, which the README leaves out.
     CHECK(readme.substr(begin + 8, end - begin - 8) + "\n" == run.out);
+}
+
+TEST_CASE("satviz finds its bundled scenes from its own folder, with no path compiled in", "[app-cli]")
+{
+    // In the build tree (BUILD/share/satviz links to tutorials/): it gets as far as the window.
+    const Run found = App("");
+    CHECK(found.exitCode == 1);
+    REQUIRE(found.errLines.size() == 1);
+    CHECK(found.errLines[0].find("cannot open a window") != std::string::npos);
+
+    // A copy of the program with no data folder beside it and no source tree above it says where it looked.
+    const fs::path prefix = fs::temp_directory_path() / ("satviz-app-cli-prefix-" + std::to_string(::getpid()));
+    fs::create_directories(prefix / "bin");
+    fs::copy_file(SATVIZ_APP_EXE, prefix / "bin" / "satviz", fs::copy_options::overwrite_existing);
+    const Run missing = App("", prefix / "bin");
+    const Run named = App(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json", prefix / "bin");
+    fs::remove_all(prefix);
+    CHECK(missing.exitCode == 1);
+    REQUIRE(missing.errLines.size() == 1);
+    CHECK(missing.errLines[0] == "satviz: no bundled scenes in " + (prefix / "share" / "satviz" / "scenes").string() +
+                                     " or a tutorials/scenes above it; name a scene file");
+    // A scene named on the command line needs no bundled scenes.
+    CHECK(named.exitCode == 1);
+    REQUIRE(named.errLines.size() == 1);
+    CHECK(named.errLines[0].find("cannot open a window") != std::string::npos);
 }

@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# Plots satviz-bench's CSV files with gnuplot: run time against vertex count, and run time against error.
-# Usage: tests/bench/plot.sh CSV_DIR OUT_DIR (writes OUT_DIR/time-vs-vertices.png and OUT_DIR/time-vs-error.png).
+# Plots satviz-bench's CSV files with gnuplot: run time against vertex count, and run time against error (from
+# timing.csv and accuracy.csv), and the world's time per step against the body count (from world.csv, written by
+# satviz-bench --world). Each figure is drawn when its CSV file is in CSV_DIR.
+# Usage: tests/bench/plot.sh CSV_DIR OUT_DIR (writes OUT_DIR/time-vs-vertices.png, OUT_DIR/time-vs-error.png,
+# OUT_DIR/world-step-time.png).
 set -euo pipefail
 csv=$1 out=$2
 command -v gnuplot > /dev/null || { echo "plot.sh: gnuplot is not installed (apt-get install gnuplot-nox)" >&2; exit 2; }
 mkdir -p "$out"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+written=()
 
 # A colour of its own for every query of a panel, and a dash pattern per library: solid satviz, dashed Box2D,
 # dotted Chipmunk, dash-dot textbook.
@@ -31,6 +35,7 @@ panel() {
   done
   echo "${plots%, }"
 }
+if [ -f "$csv/timing.csv" ]; then
 static=$(panel s "satviz Overlap" "satviz Collide" "satviz Overlap float" "satviz Collide float" \
   "textbook Overlap" "textbook MTV" "box2d b2TestOverlap" "box2d b2CollidePolygons" "chipmunk cpShapesCollide")
 moving=$(panel m "satviz Sweep" "satviz SweepTime" "satviz Sweep float" "satviz RayCast" "satviz RayCast float" \
@@ -51,9 +56,12 @@ set title "Sweeps and segment casts"
 plot $moving
 unset multiplot
 GNUPLOT
+written+=("$out/time-vs-vertices.png")
+fi
 
 # Run time at n = 8 against the worst error and against the wrong answers: one point per query or variant, in the
 # legend. The columns are found by their names in the header.
+if [ -f "$csv/accuracy.csv" ]; then
 errors=""
 wrongs=""
 j=0
@@ -89,4 +97,50 @@ set yrange [0.3:*]
 plot ${wrongs%, }
 unset multiplot
 GNUPLOT
-echo "plot.sh: wrote $out/time-vs-vertices.png and $out/time-vs-error.png"
+written+=("$out/time-vs-error.png")
+fi
+
+# The world: ms per step against the number of bodies, a panel per scene, a line per configuration (satviz solid,
+# Box2D dashed, satviz with one saving off dotted). The columns are found by their names in the header.
+if [ -f "$csv/world.csv" ]; then
+  world_panel() {
+    local scene=$1 plots="" i=0 configuration
+    while IFS= read -r configuration; do
+      i=$((i + 1))
+      awk -F, -v s="$scene" -v c="$configuration" 'NR == 1 { for (k = 1; k <= NF; ++k) col[$k] = k; next }
+        $col["scene"] == s && $col["configuration"] == c { print $col["bodies"], $col["ms_step"] }' \
+        "$csv/world.csv" | sort -n > "$work/$scene$i.dat"
+      [ -s "$work/$scene$i.dat" ] || continue
+      case "$configuration" in
+        box2d*) dash=2 width=2 ;;
+        satviz) dash=1 width=3 ;;
+        *) dash=3 width=1.5 ;;
+      esac
+      colour=${palette[$(((i - 1) % ${#palette[@]}))]}
+      plots+="'$work/$scene$i.dat' using 1:2 with linespoints lw $width dt $dash pt 7 ps 0.8 lc rgb '#$colour' "
+      plots+="title '${configuration//;/,}', "
+    done < <(awk -F, 'NR == 1 { for (k = 1; k <= NF; ++k) col[$k] = k; next }
+      !seen[$col["configuration"]]++ { print $col["configuration"] }' "$csv/world.csv")
+    echo "${plots%, }"
+  }
+  pile=$(world_panel pile)
+  rain=$(world_panel rain)
+  gnuplot << GNUPLOT
+set terminal pngcairo size 1400,640 font "DejaVu Sans,11"
+set output "$out/world-step-time.png"
+set multiplot layout 1,2 title "Rigid-body world: ms per step against the number of bodies (median of the rounds, mixed shapes)"
+set logscale xy
+set xlabel "dynamic bodies"
+set ylabel "ms per step"
+set key top left font ",9"
+set grid
+set title "Pile: a grid falls and settles"
+plot $pile
+set title "Rain: rows land one after another"
+plot $rain
+unset multiplot
+GNUPLOT
+  written+=("$out/world-step-time.png")
+fi
+[ ${#written[@]} -gt 0 ] || { echo "plot.sh: no timing.csv, accuracy.csv or world.csv in $csv" >&2; exit 2; }
+echo "plot.sh: wrote ${written[*]}"

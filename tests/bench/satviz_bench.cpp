@@ -15,6 +15,7 @@
 #include "support/reference.h"
 #include "support/reference_ray.h"
 #include "textbook_sat.h"
+#include "world_bench.h"
 
 // White-box: the benchmark instantiates the algorithm with some of its choices turned off (the variants).
 #include "sat_impl.h"
@@ -1440,7 +1441,47 @@ int main(int argc, char** argv)
     app.add_option("--csv", csv,
                    "Also write timing.csv, accuracy.csv and accuracy_by_category.csv into this directory (for the "
                    "plots); created if missing, checked before the run");
+    bool world = false;
+    bench::WorldBenchSettings w;
+    app.add_flag("--world", world,
+                 "Time the rigid-body world instead of the queries: ms per step of a pile and a rain of mixed "
+                 "shapes beside Box2D's b2World, with penetration and energy drift (--csv: world.csv)");
+    app.add_option("--bodies", w.bodies, "--world: dynamic bodies per scene (each at least 1)");
+    app.add_option("--steps", w.steps, "--world: steps per run (at least 4; the last quarter is the tail)");
     CLI11_PARSE(app, argc, argv);
+    if (world)
+    {
+        w.seed = s.seed;
+        w.csvDirectory = csv;
+        if (app.count("--rounds") > 0)
+        {
+            w.rounds = s.rounds;
+        }
+        if (const std::string error = bench::CheckWorldBenchSettings(w); !error.empty())
+        {
+            std::fprintf(stderr, "satviz-bench: %s\n", error.c_str());
+            return 2;
+        }
+        if (!csv.empty())
+        {
+            if (const std::string error = CheckCsvDirectory(csv); !error.empty())
+            {
+                std::fprintf(stderr, "satviz-bench: %s\n", error.c_str());
+                return 2;
+            }
+        }
+        if (quick)
+        {
+            w = bench::QuickWorldBenchSettings(w);
+        }
+        PrintMachine(argc, argv);
+        if (quick)
+        {
+            std::printf("--quick: tiny scenes, few steps and one round: these figures only show that the benchmark "
+                        "runs; they are not measurements\n\n");
+        }
+        return bench::RunWorldBench(w) ? 0 : 1;
+    }
     if (const std::string error = CheckSettings(s); !error.empty())
     {
         std::fprintf(stderr, "satviz-bench: %s\n", error.c_str());

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // satviz-bench as a program: settings it cannot run and a --csv directory it cannot write are refused with one line
-// before the run starts, --quick says that its figures are not measurements, --help names the peers.
+// before the run starts, --quick says that its figures are not measurements (--world --quick too), --help names the
+// peers.
 
 #include <catch2/catch.hpp>
 
@@ -120,6 +121,42 @@ TEST_CASE("satviz-bench --quick says its figures are not measurements, and write
         ++files;
     }
     CHECK(files == 3);
+}
+
+TEST_CASE("satviz-bench --world refuses no bodies, too few steps and no rounds", "[bench-tool]")
+{
+    CheckRefused("--world --bodies 0", {"--bodies", "got 0"});
+    CheckRefused("--world --bodies 100 -5", {"--bodies", "got -5"});
+    CheckRefused("--world --steps 3", {"--steps", "got 3"});
+    CheckRefused("--world --rounds 0", {"--rounds", "got 0"});
+    CheckRefused("--world --quick --steps 0", {"--steps", "got 0"});
+}
+
+TEST_CASE("satviz-bench --world --quick says its figures are not measurements, and writes world.csv", "[bench-tool]")
+{
+    const fs::path csv = kScratch.dir / "world" / "csv";
+    const Run run = Bench("--world --quick --csv " + csv.string());
+    CHECK(run.exitCode == 0);
+    CHECK(run.out.find("--quick: tiny scenes, few steps and one round: these figures only show that the benchmark "
+                       "runs; they are not measurements\n") != std::string::npos);
+    for (const char* table : {"ms per step", "what each saving saves", "quality", "targets"})
+    {
+        INFO(table);
+        CHECK(run.out.find(table) != std::string::npos);
+    }
+    REQUIRE(fs::is_regular_file(csv / "world.csv"));
+    std::ifstream file(csv / "world.csv");
+    std::string header;
+    std::getline(file, header);
+    CHECK(header.find("scene,bodies,configuration,") == 0);
+    int rows = 0;
+    for (std::string line; std::getline(file, line);)
+    {
+        ++rows;
+    }
+    // Two scenes of two sizes, each in satviz's five configurations (broadphase off included at these sizes) and,
+    // when the build has it, Box2D.
+    CHECK((rows == 20 || rows == 24));
 }
 
 TEST_CASE("satviz-bench --help names every peer it compares with", "[bench-tool]")

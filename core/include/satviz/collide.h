@@ -44,7 +44,9 @@ bool Overlap(const ShapeT<S>& a, const TransformT<S>& xfA, const ShapeT<S>& b, c
 
 /// The manifold of two polygons: overlap, penetration depth and unit normal from A to B (the minimum translation
 /// vector, also when one polygon contains the other), up to two contact points from clipping the incident edge to
-/// the reference face, and the deciding axis. When separated: the separating axis found and its gap.
+/// the reference face, and the deciding axis. The reference face is the face of largest separation (least
+/// penetration) of either polygon; on a tie it is A's: B's face is taken only when its separation is strictly
+/// larger. When separated: the separating axis found and its gap.
 /// Works in A's frame (B relative to A), so shapes far from the origin keep their precision. O(n + m), no heap
 /// allocation. With a non-null `trace`, every step is recorded; the result is bit-identical either way.
 template <typename S>

@@ -52,8 +52,9 @@ struct ManifoldT
     Vec2T<S> normal{};
     ContactPointT<S> contacts[2]{}; ///< contact points, valid up to contactCount
     int contactCount = 0;           ///< 0 when separated, 1 or 2 when overlapping
-    /// The deciding axis: overlapping, the axis of least penetration (for polygons: the reference face);
-    /// separated, the separating axis found.
+    /// The deciding axis: overlapping, the axis of least penetration (for polygons: the reference face, the face of
+    /// largest separation over both polygons, A's on a tie, so that the normal and the contacts are then those of
+    /// A's face); separated, the separating axis found.
     AxisRef axis{};
     /// Polygon pairs that overlap: the incident edge, on the shape that is not axis.shape; else -1.
     int incidentEdge = -1;
