@@ -1448,6 +1448,7 @@ int main(int argc, char** argv)
                  "shapes beside Box2D's b2World, with penetration and energy drift (--csv: world.csv)");
     app.add_option("--bodies", w.bodies, "--world: dynamic bodies per scene (each at least 1)");
     app.add_option("--steps", w.steps, "--world: steps per run (at least 4; the last quarter is the tail)");
+    app.add_option("--scenes", w.scenes, "--world: the scenes to run: pile, rain (default: both)");
     CLI11_PARSE(app, argc, argv);
     if (world)
     {

@@ -123,13 +123,14 @@ TEST_CASE("satviz-bench --quick says its figures are not measurements, and write
     CHECK(files == 3);
 }
 
-TEST_CASE("satviz-bench --world refuses no bodies, too few steps and no rounds", "[bench-tool]")
+TEST_CASE("satviz-bench --world refuses no bodies, too few steps, no rounds and unknown scenes", "[bench-tool]")
 {
     CheckRefused("--world --bodies 0", {"--bodies", "got 0"});
     CheckRefused("--world --bodies 100 -5", {"--bodies", "got -5"});
     CheckRefused("--world --steps 3", {"--steps", "got 3"});
     CheckRefused("--world --rounds 0", {"--rounds", "got 0"});
     CheckRefused("--world --quick --steps 0", {"--steps", "got 0"});
+    CheckRefused("--world --scenes pile drizzle", {"--scenes", "got drizzle"});
 }
 
 TEST_CASE("satviz-bench --world --quick says its figures are not measurements, and writes world.csv", "[bench-tool]")

@@ -969,6 +969,17 @@ bool WriteCsv(const WorldBenchSettings& s, const std::vector<SceneResult>& resul
 
 std::string CheckWorldBenchSettings(const WorldBenchSettings& settings)
 {
+    if (settings.scenes.empty())
+    {
+        return "--scenes: give at least one scene (pile, rain)";
+    }
+    for (const std::string& scene : settings.scenes)
+    {
+        if (scene != "pile" && scene != "rain")
+        {
+            return "--scenes: the scenes are pile and rain, got " + scene;
+        }
+    }
     if (settings.bodies.empty())
     {
         return "--bodies: give at least one body count";
@@ -1003,11 +1014,15 @@ WorldBenchSettings QuickWorldBenchSettings(WorldBenchSettings settings)
 bool RunWorldBench(const WorldBenchSettings& settings)
 {
     std::vector<SceneResult> results;
-    for (bool rain : {false, true})
+    for (const char* scene : {"pile", "rain"})
     {
+        if (std::find(settings.scenes.begin(), settings.scenes.end(), scene) == settings.scenes.end())
+        {
+            continue;
+        }
         for (int n : settings.bodies)
         {
-            results.push_back(RunScene(settings, rain, n));
+            results.push_back(RunScene(settings, std::string(scene) == "rain", n));
         }
     }
     PrintTables(settings, results);

@@ -13,12 +13,13 @@ namespace satviz::bench
 /// What satviz-bench --world runs.
 struct WorldBenchSettings
 {
-    std::vector<int> bodies = {100, 1000, 10000}; ///< dynamic bodies of each scene (a pile and a rain of each size)
-    int steps = 600;                              ///< steps of 1/60 per run; the last quarter is the settled tail
-    int rounds = 5;                               ///< timed rounds; a figure is the median over the rounds
-    uint64_t seed = 20240601;                     ///< seed of the scenes' shapes and placements
-    bool quick = false;                           ///< set by QuickWorldBenchSettings: the figures are no measurement
-    std::string csvDirectory;                     ///< where world.csv is written; empty: nowhere
+    std::vector<std::string> scenes = {"pile", "rain"}; ///< which scenes run: "pile", "rain"
+    std::vector<int> bodies = {100, 1000, 10000};       ///< dynamic bodies of each scene (each scene at each size)
+    int steps = 600;                                    ///< steps of 1/60 per run; the last quarter is the settled tail
+    int rounds = 5;                                     ///< timed rounds; a figure is the median over the rounds
+    uint64_t seed = 20240601;                           ///< seed of the scenes' shapes and placements
+    bool quick = false;       ///< set by QuickWorldBenchSettings: the figures are no measurement
+    std::string csvDirectory; ///< where world.csv is written; empty: nowhere
 };
 
 /// Above this many bodies the world is not timed with its broadphase off, nor with every moving body swept: the
