@@ -30,11 +30,14 @@ void PrepareContact(SolverContact& c, const SolverBody& a, const SolverBody& b, 
         const double kt = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
         p.tangentMass = kt > 0.0 ? 1.0 / kt : 0.0;
         p.bounce = 0.0;
+        p.restitutionFactor = 0.0;
         if (approach[i] < -restitutionThreshold)
         {
             const double e = c.material.restitution;
             const double v = approach[i];
-            const double d = p.separation < 0.0 ? -p.separation : 0.0;
+            // Only the overlap this step's approach can have made counts: a deeper one was there before the impact
+            // and gravity's energy stored in it is not the impact's to return.
+            const double d = std::min(p.separation < 0.0 ? -p.separation : 0.0, -v * dt);
             const double gdt = pull * dt;
             const double u2 = std::max(0.0, v * v - gdt * v - 2.0 * pull * d);
             p.bounce = 0.5 * (std::sqrt(gdt * gdt + 4.0 * (2.0 * pull * d + e * e * u2)) - gdt);
@@ -42,6 +45,8 @@ void PrepareContact(SolverContact& c, const SolverBody& a, const SolverBody& b, 
             {
                 p.bounce = 0.0;
             }
+            const double stop = gdt - v;
+            p.restitutionFactor = p.bounce > 0.0 && stop > 0.0 ? p.bounce / stop : 0.0;
         }
     }
     c.block = false;
@@ -75,6 +80,142 @@ void WarmStart(SolverContact& c, SolverBody& a, SolverBody& b)
     {
         const SolverPoint& p = c.points[i];
         ApplyImpulse(a, b, p.rA, p.rB, p.normalImpulse * c.normal + p.tangentImpulse * t);
+    }
+}
+
+namespace
+{
+
+int Root(std::vector<int>& parent, int i)
+{
+    while (parent[i] != i)
+    {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+} // namespace
+
+void ApplyRestitution(std::vector<SolverContact>& contacts, std::vector<SolverBody>& bodies,
+                      const std::vector<double>& energyBefore, int passes)
+{
+    bool any = false;
+    for (SolverContact& c : contacts)
+    {
+        for (int i = 0; i < c.count; ++i)
+        {
+            SolverPoint& p = c.points[i];
+            p.restitutionImpulse = p.restitutionFactor * p.normalImpulse;
+            any = any || p.restitutionImpulse > 0.0;
+        }
+    }
+    if (!any)
+    {
+        return;
+    }
+    // Groups: union-find over the bodies that move.
+    const int n = static_cast<int>(bodies.size());
+    std::vector<int> parent(n);
+    for (int i = 0; i < n; ++i)
+    {
+        parent[i] = i;
+    }
+    auto moves = [&](int i) { return bodies[i].invMass > 0.0 || bodies[i].invInertia > 0.0; };
+    for (const SolverContact& c : contacts)
+    {
+        if (moves(c.a) && moves(c.b))
+        {
+            const int ra = Root(parent, c.a), rb = Root(parent, c.b);
+            parent[ra < rb ? rb : ra] = ra < rb ? ra : rb;
+        }
+    }
+    // The velocity change of the unscaled restitution impulses, per body.
+    std::vector<Vec2> dv(n);
+    std::vector<double> dw(n, 0.0);
+    for (const SolverContact& c : contacts)
+    {
+        for (int i = 0; i < c.count; ++i)
+        {
+            const SolverPoint& p = c.points[i];
+            if (p.restitutionImpulse > 0.0)
+            {
+                SolverBody a{dv[c.a], dw[c.a], bodies[c.a].invMass, bodies[c.a].invInertia};
+                SolverBody b{dv[c.b], dw[c.b], bodies[c.b].invMass, bodies[c.b].invInertia};
+                ApplyImpulse(a, b, p.rA, p.rB, p.restitutionImpulse * c.normal);
+                dv[c.a] = a.v;
+                dw[c.a] = a.w;
+                dv[c.b] = b.v;
+                dw[c.b] = b.w;
+            }
+        }
+    }
+    // Per group: energy now (e0), its allowance, and the linear (g) and quadratic (h) terms in the scale.
+    std::vector<double> e0(n, 0.0), allowed(n, 0.0), g(n, 0.0), h(n, 0.0);
+    for (int i = 0; i < n; ++i)
+    {
+        if (!moves(i))
+        {
+            continue;
+        }
+        const int r = Root(parent, i);
+        const SolverBody& b = bodies[i];
+        e0[r] += Energy(b);
+        allowed[r] += energyBefore[i];
+        const double m = b.invMass > 0.0 ? 1.0 / b.invMass : 0.0;
+        const double inertia = b.invInertia > 0.0 ? 1.0 / b.invInertia : 0.0;
+        g[r] += m * Dot(b.v, dv[i]) + inertia * b.w * dw[i];
+        h[r] += 0.5 * (m * Dot(dv[i], dv[i]) + inertia * dw[i] * dw[i]);
+    }
+    std::vector<double> scale(n, 1.0);
+    for (int r = 0; r < n; ++r)
+    {
+        if (parent[r] != r || h[r] <= 0.0 || e0[r] + g[r] + h[r] <= allowed[r])
+        {
+            continue;
+        }
+        const double c0 = e0[r] - allowed[r];
+        const double disc = g[r] * g[r] - 4.0 * h[r] * c0;
+        scale[r] = c0 >= 0.0 || disc < 0.0 ? 0.0 : std::min(1.0, (-g[r] + std::sqrt(disc)) / (2.0 * h[r]));
+    }
+    bool applied = false;
+    for (SolverContact& c : contacts)
+    {
+        const int r = Root(parent, moves(c.a) ? c.a : c.b);
+        for (int i = 0; i < c.count; ++i)
+        {
+            SolverPoint& p = c.points[i];
+            if (p.restitutionImpulse > 0.0)
+            {
+                p.restitutionImpulse *= scale[r];
+                ApplyImpulse(bodies[c.a], bodies[c.b], p.rA, p.rB, p.restitutionImpulse * c.normal);
+                p.normalImpulse += p.restitutionImpulse;
+                applied = applied || p.restitutionImpulse > 0.0;
+            }
+        }
+    }
+    if (!applied)
+    {
+        return;
+    }
+    // A bounce can drive a body into another of its contacts: push-only passes stop such approaches, inelastically,
+    // and never take back any of the impulses above.
+    for (int pass = 0; pass < passes; ++pass)
+    {
+        for (SolverContact& c : contacts)
+        {
+            SolverBody& a = bodies[c.a];
+            SolverBody& b = bodies[c.b];
+            for (int i = 0; i < c.count; ++i)
+            {
+                SolverPoint& p = c.points[i];
+                const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), c.normal);
+                const double next = std::max(0.0, p.pushImpulse - p.normalMass * vn);
+                ApplyImpulse(a, b, p.rA, p.rB, (next - p.pushImpulse) * c.normal);
+                p.pushImpulse = next;
+            }
+        }
     }
 }
 

@@ -6,6 +6,7 @@
 #include <satviz/solver_trace.h>
 
 #include <cmath>
+#include <vector>
 
 namespace satviz::detail
 {
@@ -22,15 +23,18 @@ struct SolverBody
 /// One point of a contact as the solver sees it.
 struct SolverPoint
 {
-    Vec2 rA{};                   ///< from A's centre of mass to the point
-    Vec2 rB{};                   ///< from B's centre of mass to the point
-    double separation = 0.0;     ///< overlap (< 0) at the start of the step
-    double normalMass = 0.0;     ///< effective mass along the normal
-    double tangentMass = 0.0;    ///< effective mass along the tangent
-    double bounce = 0.0;         ///< separating normal speed the restitution asks for (0: none)
-    double normalImpulse = 0.0;  ///< accumulated normal impulse
-    double tangentImpulse = 0.0; ///< accumulated friction impulse
-    bool stuck = false;          ///< static friction held in the last pass
+    Vec2 rA{};                       ///< from A's centre of mass to the point
+    Vec2 rB{};                       ///< from B's centre of mass to the point
+    double separation = 0.0;         ///< overlap (< 0) at the start of the step
+    double normalMass = 0.0;         ///< effective mass along the normal
+    double tangentMass = 0.0;        ///< effective mass along the tangent
+    double bounce = 0.0;             ///< separating normal speed the restitution asks for alone (0: none)
+    double restitutionFactor = 0.0;  ///< the restitution impulse as a multiple of the compression impulse
+    double restitutionImpulse = 0.0; ///< the impulse the restitution added after the passes
+    double pushImpulse = 0.0;        ///< accumulated impulse of the push-only passes after the restitution
+    double normalImpulse = 0.0;      ///< accumulated normal impulse
+    double tangentImpulse = 0.0;     ///< accumulated friction impulse
+    bool stuck = false;              ///< static friction held in the last pass
 };
 
 /// A contact between solver bodies a and b, normal from a to b.
@@ -85,6 +89,8 @@ inline void ApplyImpulse(SolverBody& a, SolverBody& b, Vec2 rA, Vec2 rB, Vec2 p)
 /// pair, one step later, with restitution squared times the energy of the approach, counted at the surface: the
 /// overlap the point reached and the step's gravity are taken into account, so the bounce does not depend on the
 /// phase of the step at which the impact fell. Without gravity it is restitution times the approach speed.
+/// The restitution factor is that speed over the speed the point must lose to stop (its approach and the step's
+/// gravity): the multiple of the compression impulse that gives a lone contact exactly its target.
 void PrepareContact(SolverContact& c, const SolverBody& a, const SolverBody& b, const double approach[2], double pull,
                     double dt, double restitutionThreshold);
 
@@ -96,10 +102,11 @@ void WarmStart(SolverContact& c, SolverBody& a, SolverBody& b);
 ///  1. Friction first, per point: the impulse that stops the slip, with the tangent's effective mass, added to the
 ///     accumulated one. Within staticFriction times the normal impulse it is taken whole (the point sticks);
 ///     beyond, the accumulated impulse is clamped to friction times the normal impulse (it slides).
-///  2. Normal: the impulse that brings the normal speed to the restitution target, accumulated and clamped to be
-///     a push. Two points are solved together as a 2x2 linear complementarity problem (each point's impulse
-///     positive with its speed at the target, or zero with its speed above it: four cases, the first that holds),
-///     so that a symmetric landing stays symmetric whatever the order of the points.
+///  2. Normal: the impulse that stops the approach (compression), accumulated and clamped to be a push. Two points
+///     are solved together as a 2x2 linear complementarity problem (each point's impulse positive with its speed
+///     zero, or zero with its speed positive: four cases, the first that holds), so that a symmetric landing stays
+///     symmetric whatever the order of the points.
+/// The bounce is not a target of these passes: ApplyRestitution adds it once they are done.
 template <typename Recorder>
 void SolveContactVelocity(SolverContact& c, SolverBody& a, SolverBody& b, int pass, Recorder& recorder)
 {
@@ -138,7 +145,7 @@ void SolveContactVelocity(SolverContact& c, SolverBody& a, SolverBody& b, int pa
         {
             SolverPoint& p = c.points[i];
             const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), n);
-            const double wanted = p.normalImpulse - p.normalMass * (vn - p.bounce);
+            const double wanted = p.normalImpulse - p.normalMass * vn;
             const double next = wanted > 0.0 ? wanted : 0.0;
             const double applied = next - p.normalImpulse;
             p.normalImpulse = next;
@@ -156,9 +163,9 @@ void SolveContactVelocity(SolverContact& c, SolverBody& a, SolverBody& b, int pa
         const double vn2 = Dot(RelativeVelocity(a, b, p2.rA, p2.rB), n);
         const double a1 = p1.normalImpulse;
         const double a2 = p2.normalImpulse;
-        // b = vn - target - K a: the speeds the impulses x must bring to the targets, vn' = K x + b.
-        const double b1 = vn1 - p1.bounce - (c.k11 * a1 + c.k12 * a2);
-        const double b2 = vn2 - p2.bounce - (c.k12 * a1 + c.k22 * a2);
+        // b = vn - K a: the speeds the impulses x must bring to the targets, vn' = K x + b, to be brought to zero.
+        const double b1 = vn1 - (c.k11 * a1 + c.k12 * a2);
+        const double b2 = vn2 - (c.k12 * a1 + c.k22 * a2);
         double x1 = -(c.m11 * b1 + c.m12 * b2);
         double x2 = -(c.m12 * b1 + c.m22 * b2);
         if (!(x1 >= 0.0 && x2 >= 0.0))
@@ -198,5 +205,31 @@ void SolveContactVelocity(SolverContact& c, SolverBody& a, SolverBody& b, int pa
         recorder.Pass(record[i]);
     }
 }
+
+/// Kinetic energy of a solver body (0 for static and sleeping ones).
+inline double Energy(const SolverBody& b)
+{
+    const double linear = b.invMass > 0.0 ? Dot(b.v, b.v) / b.invMass : 0.0;
+    const double angular = b.invInertia > 0.0 ? b.w * b.w / b.invInertia : 0.0;
+    return 0.5 * (linear + angular);
+}
+
+/// Outline of restitution after the velocity passes (Poisson's hypothesis: the restitution impulse is a multiple of
+/// the compression impulse; Stronge, "Impact Mechanics", 2000, ch. 2; Mirtich, "Impulse-based Dynamic Simulation
+/// of Rigid Body Systems", 1996, ch. 2):
+///  1. The passes have left each point with the compression impulse that stops its approach.
+///  2. Each bouncing point's restitution impulse is its restitutionFactor times that impulse.
+///  3. The contacts are split into groups of bodies they join (static and sleeping bodies join nothing). With one
+///     restitution e < 1 in a group the total impulse, (1 + e) times the inelastic one, always loses energy; with
+///     different restitutions it can gain some. So in each group the restitution impulses are scaled by the
+///     largest s <= 1 that leaves the group's kinetic energy at most `energyBefore` (summed per body: the energy
+///     before the contacts acted). The energy is quadratic in s, so s is a root of a quadratic.
+///  4. The scaled impulses are applied.
+///  5. If any was, `passes` push-only passes stop the approaches the bounces made at other points (an inelastic
+///     solve whose impulses only add to the ones before: it cannot take a bounce back, nor add energy).
+/// A lone contact, or contacts of one restitution, get their bounce speeds exactly (s = 1). Each point's added
+/// impulse is left in `restitutionImpulse` and added to its normal impulse.
+void ApplyRestitution(std::vector<SolverContact>& contacts, std::vector<SolverBody>& bodies,
+                      const std::vector<double>& energyBefore, int passes);
 
 } // namespace satviz::detail

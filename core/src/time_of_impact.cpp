@@ -341,6 +341,11 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
             solver[s] = {body.velocity, body.angularVelocity, body.invMass, body.invInertia};
         }
     }
+    std::vector<double> energyBefore(bodies.size());
+    for (size_t s = 0; s < bodies.size(); ++s)
+    {
+        energyBefore[s] = Energy(solver[s]);
+    }
     auto slot = [&](int k) { return static_cast<int>(std::find(bodies.begin(), bodies.end(), k) - bodies.begin()); };
     std::vector<SolverContact> contacts;
     std::vector<uint8_t> stopped(bodies.size(), 0);
@@ -397,6 +402,17 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
             {
                 SolveContactVelocity(c, solver[c.a], solver[c.b], -1, quiet);
             }
+        }
+    }
+    ApplyRestitution(contacts, solver, energyBefore, world.settings.velocityIterations);
+    for (const SolverContact& c : contacts)
+    {
+        if (c.traced)
+        {
+            trace->restitutionFactor[0] = c.points[0].restitutionFactor;
+            trace->restitutionFactor[1] = c.points[1].restitutionFactor;
+            trace->restitutionImpulse[0] = c.points[0].restitutionImpulse;
+            trace->restitutionImpulse[1] = c.points[1].restitutionImpulse;
         }
     }
     for (size_t s = 0; s < bodies.size(); ++s)

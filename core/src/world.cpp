@@ -285,8 +285,9 @@ struct Stepper
     const WorldSettings& settings;
     std::vector<SolverBody> solverBodies;
     std::vector<SolverContact> solverContacts;
-    std::vector<Transform> xfs; // transforms at the start of the step (one sine and cosine per body)
-    std::vector<Vec2> centers;  // centres of mass at the start of the step
+    std::vector<double> energyBefore; // per body, after gravity and before the contacts
+    std::vector<Transform> xfs;       // transforms at the start of the step (one sine and cosine per body)
+    std::vector<Vec2> centers;        // centres of mass at the start of the step
 
     Stepper(World& w, double step) : world(w), dt(step), settings(w.settings) {}
 
@@ -508,6 +509,7 @@ void Stepper::SolveVelocities()
             {
                 trace->approachSpeed[i] = approach[i];
                 trace->bounceSpeed[i] = c.points[i].bounce;
+                trace->restitutionFactor[i] = c.points[i].restitutionFactor;
                 trace->normalMass[i] = c.points[i].normalMass;
                 trace->tangentMass[i] = c.points[i].tangentMass;
                 trace->warmNormal[i] = c.points[i].normalImpulse;
@@ -523,6 +525,11 @@ void Stepper::SolveVelocities()
         {
             solverBodies[i].v = solverBodies[i].v + dt * settings.gravity;
         }
+    }
+    energyBefore.resize(n);
+    for (int i = 0; i < n; ++i)
+    {
+        energyBefore[i] = detail::Energy(solverBodies[i]);
     }
     for (SolverContact& c : solverContacts)
     {
@@ -542,6 +549,15 @@ void Stepper::SolveVelocities()
             {
                 detail::SolveContactVelocity(c, solverBodies[c.a], solverBodies[c.b], pass, quiet);
             }
+        }
+    }
+    detail::ApplyRestitution(solverContacts, solverBodies, energyBefore, settings.velocityIterations);
+    for (const SolverContact& c : solverContacts)
+    {
+        if (c.traced)
+        {
+            trace->restitutionImpulse[0] = c.points[0].restitutionImpulse;
+            trace->restitutionImpulse[1] = c.points[1].restitutionImpulse;
         }
     }
 }

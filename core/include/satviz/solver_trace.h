@@ -35,8 +35,10 @@ struct ContactSolveTrace
     int pointCount = 0;                    ///< contact points
     double approachSpeed[2]{};             ///< relative normal velocity per point before gravity and the solve
     double restitution = 0.0;              ///< the contact's combined restitution
-    double bounceSpeed[2]{};               ///< target separating speed per point: restitution * approach, or 0 below
-                                           ///< the threshold
+    double bounceSpeed[2]{};               ///< separating speed per point the restitution gives a lone contact:
+                                           ///< restitution * approach without gravity, or 0 below the threshold
+    double restitutionFactor[2]{};         ///< restitution impulse per point as a multiple of its compression impulse
+    double restitutionImpulse[2]{};        ///< impulse the restitution added per point after the passes
     double normalMass[2]{};                ///< effective mass along the normal per point
     double tangentMass[2]{};               ///< effective mass along the tangent per point
     double warmNormal[2]{};                ///< normal impulse carried over from the last step (warm start)

@@ -175,11 +175,14 @@ std::string ValidateBodyDef(const BodyDef& def);
 ///     pairs); the narrowphase (Collide) turns the touching pairs into contacts, keeping the impulses of the points
 ///     that persist from the last step (warm starting).
 ///  2. Velocities: gravity, then the velocity passes: at each contact point a normal impulse that stops the
-///     approach, or, above the restitution threshold, reverses it times the restitution (the approach speed is
-///     taken before the step's gravity and before the solve), accumulated and clamped to push only; and a
-///     friction impulse with its own effective mass, held within static friction times the normal impulse while
-///     the point sticks, else the dynamic limit (Coulomb's cone). Two-point contacts solve their normal impulses
-///     together (a 2x2 block), so a flat landing does not spin.
+///     approach (compression), accumulated and clamped to push only; and a friction impulse with its own effective
+///     mass, held within static friction times the normal impulse while the point sticks, else the dynamic limit
+///     (Coulomb's cone). Two-point contacts solve their normal impulses together (a 2x2 block), so a flat landing
+///     does not spin. Then restitution (Poisson's rule): a point that approached faster than the restitution
+///     threshold (measured before the step's gravity) gets a multiple of its compression impulse once more, the
+///     multiple that gives a lone contact its bounce speed; in a group of contacts that mixes restitutions the
+///     bounce impulses are scaled down as far as needed to return no more kinetic energy than the group had; and
+///     push-only passes stop any approach a bounce made at another point.
 ///  3. Positions: each body moves with its velocity. A fast body (see WorldSettings::sweepFraction) is swept
 ///     against the bodies its swept box meets: translation by Sweep, turning by conservative advancement (the
 ///     distance bound of SAT divided by the fastest approach a turning point can make). The earliest hit of the
