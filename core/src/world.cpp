@@ -575,10 +575,10 @@ void Stepper::StoreImpulses()
         WorldContact& wc = world.contacts[k];
         for (int i = 0; i < c.count; ++i)
         {
-            // A bounce is an impact, not a load the point will carry next step: it is not warm started.
-            const bool bounced = c.points[i].bounce > 0.0;
-            wc.points[i].normalImpulse = bounced ? 0.0 : c.points[i].normalImpulse;
-            wc.points[i].tangentImpulse = bounced ? 0.0 : c.points[i].tangentImpulse;
+            // A bounce's own impulse is an impact, not a load the point will carry next step: only the compression
+            // part is warm started.
+            wc.points[i].normalImpulse = c.points[i].normalImpulse - c.points[i].restitutionImpulse;
+            wc.points[i].tangentImpulse = c.points[i].tangentImpulse;
             wc.points[i].stuck = c.points[i].stuck;
         }
     }
@@ -631,15 +631,16 @@ void Stepper::CorrectPositions()
             for (int k = 0; k < sc.count; ++k)
             {
                 const detail::SolverPoint& p = sc.points[k];
-                if (p.bounce > 0.0)
-                {
-                    continue;
-                }
                 const Vec2 rA = Rotate(q[a], InvRotate(qa0, p.rA));
                 const Vec2 rB = Rotate(q[b], InvRotate(qb0, p.rB));
                 const double sep = p.separation + Dot((c[b] + rB) - (c[a] + rA), n0);
                 double C = settings.correctionFactor * (sep + settings.linearSlop);
                 C = std::max(-settings.maxCorrection, std::min(0.0, C));
+                // A bounce that carries the point out of this much overlap within the step is left to do so.
+                if (p.bounce * dt >= -C)
+                {
+                    continue;
+                }
                 const double rnA = Cross(rA, n0), rnB = Cross(rB, n0);
                 const double K = sa.invMass + sb.invMass + sa.invInertia * rnA * rnA + sb.invInertia * rnB * rnB;
                 if (!(K > 0.0) || C == 0.0)

@@ -70,13 +70,13 @@ struct WorldSettings
 {
     Vec2 gravity{};             ///< acceleration, units per time unit squared
     int velocityIterations = 8; ///< sequential-impulse passes over the contacts for the velocities
-    int positionIterations = 3; ///< passes of the position correction that removes overlap
+    int positionIterations = 5; ///< passes of the position correction that removes overlap
     /// Overlap left in place, in units: contacts are kept touching by this much so that they persist from step to
     /// step (and warm start), and the push-out never overshoots into a gap.
     double linearSlop = 0.005;
     /// Fraction of the overlap beyond the slop that a pass of the position correction removes (Baumgarte's factor,
     /// applied to positions only, so removing overlap adds no velocity).
-    double correctionFactor = 0.2;
+    double correctionFactor = 0.3;
     /// Most overlap a pass of the position correction removes at a point, in units: a deep overlap (a fast body
     /// that was not swept) is removed over several steps instead of flinging the bodies apart.
     double maxCorrection = 0.2;
@@ -191,10 +191,11 @@ std::string ValidateBodyDef(const BodyDef& def);
 ///     passes through another at any speed.
 ///  4. Overlap: nonlinear Gauss-Seidel on the positions (Catto; Box2D 2.4): each pass measures a point's overlap at
 ///     the bodies' present positions and moves them apart by correctionFactor times the overlap beyond the slop.
-///     It changes positions only, so removing overlap adds no kinetic energy; bouncing contacts are left to
-///     separate by their own velocity. Chosen over split impulses (pseudo-velocities from the overlap at the start
-///     of the step) because it sees the overlap after the move: a body that sank during this step is lifted in
-///     this step. In a pile of 10 000 bodies it leaves a fifth of the deepest overlap that split impulses leave.
+///     It changes positions only, so removing overlap adds no kinetic energy; a bouncing point whose bounce
+///     carries it out of the overlap within the step is left to do so. Chosen over split impulses (pseudo-velocities
+///     from the overlap at the start of the step) because it sees the overlap after the move: a body that sank during
+///     this step is lifted in this step. In a pile of 10 000 bodies it leaves a fifth of the deepest overlap that split
+///     impulses leave.
 ///  5. Sleep: islands of touching bodies that have rested for timeToSleep sleep; a body that touches a sleeping
 ///     one wakes its island.
 /// Deterministic: the same world stepped the same way gives the same bits, in every build.
