@@ -281,17 +281,4 @@ inline LatticePair TouchingLatticePair(Rng& rng, Contact contact, bool boxes = f
     return pair;
 }
 
-/// A polygon turned or translated in place: its vertices mapped by `xf`, exactly for lattice inputs.
-inline Polygon Mapped(const Polygon& polygon, const Transform& xf)
-{
-    std::vector<Vec2> points;
-    for (const Vec2& v : polygon.vertices)
-    {
-        points.push_back(TransformPoint(xf, v));
-    }
-    PolygonResult result = MakePolygon(points);
-    REQUIRE(result.Ok());
-    return result.polygon;
-}
-
 } // namespace satviz::testing
