@@ -2,7 +2,7 @@
 // satviz: the swept test for translating shapes (Ericson, Real-Time Collision Detection, 5.5.2 for polygons;
 // 5.3.2 and 5.5.7 for the ray against a sphere and the rounded shapes of circles).
 
-#include "lanes.h"
+#include "sat/lanes.h"
 #include "sat_impl.h"
 
 #include <satviz/collide.h>
