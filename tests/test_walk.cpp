@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The private search helpers of the walked face queries against brute force.
 
-#include "sat_impl.h"
+#include "sat/walked_faces.h"
 #include "support/builders.h"
 #include "support/random_shapes.h"
 #include "support/reference.h"

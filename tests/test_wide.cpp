@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The wide scans (AVX2, chosen at run time) against the baseline instructions: the same bits for every query.
 
-#include "sat_impl.h"
+#include "sat/cpu_dispatch.h"
+#include "sat/lanes.h"
+#include "sat/select.h"
 #include "support/builders.h"
 #include "support/random_shapes.h"
 #include "support/same_bits.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "sat_impl.h"
+#include "sat/support.h"
 
 #include <satviz/raycast.h>
 

@@ -2,8 +2,14 @@
 // satviz: the swept test for translating shapes (Ericson, Real-Time Collision Detection, 5.5.2 for polygons;
 // 5.3.2 and 5.5.7 for the ray against a sphere and the rounded shapes of circles).
 
+#include "sat/clip.h"
+#include "sat/cpu_dispatch.h"
+#include "sat/face_blocks.h"
+#include "sat/incident_polygon.h"
 #include "sat/lanes.h"
-#include "sat_impl.h"
+#include "sat/select.h"
+#include "sat/support.h"
+#include "sat/tracer.h"
 
 #include <satviz/collide.h>
 #include <satviz/sweep.h>

@@ -18,7 +18,7 @@
 #include "world_bench.h"
 
 // White-box: the benchmark instantiates the algorithm with some of its choices turned off (the variants).
-#include "sat_impl.h"
+#include "sat/polygon_polygon.h"
 
 #include <satviz/sat.h>
 

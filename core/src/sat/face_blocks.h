@@ -128,10 +128,10 @@ struct SmallRefSeparations
     }
 };
 
-/// The face query of Collide (unit normals) for a ref of at most 8 faces against a scanned inc of N padded vertices
-/// (QueryFacesN, steps 2, 4 and 6): the separations of all of ref's faces from one pass over inc's vertices, as
-/// SmallRefSeparations takes them (the same bits), then one branch for all of them. A separating face ends the
-/// query at the first such face; otherwise the largest separation is one reduction across the lanes and its first
+/// The face query of Collide (unit normals) for a ref of at most 8 faces against a scanned inc of N padded vertices,
+/// with the answer of the textbook loop (ScanFaces): the separations of all of ref's faces from one pass over inc's
+/// vertices, as SmallRefSeparations takes them (the same bits), then one branch for all of them. A separating face ends
+/// the query at the first such face; otherwise the largest separation is one reduction across the lanes and its first
 /// face the first lane equal to it, read from the comparison's bits. ref's normals and vertices are loaded four at
 /// a time, whole: a polygon of at most 8 vertices keeps them inline, so the lanes past its last face read its own
 /// block and are masked out. A skipped face (anti-parallel to one already tested) and a NaN separation take no
@@ -226,12 +226,12 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
     return query;
 }
 
-/// The face query of Collide (unit normals) against a scanned inc, four faces of ref at a time in lanes (QueryFacesN,
-/// steps 2, 4 and 6). Each vertex of inc is projected on four normals at once, so no minimum is taken across lanes,
-/// and a block of four faces costs one branch instead of one per face, whose outcome follows the geometry and would
-/// be mispredicted. The last block repeats the last face, which changes no answer. Each lane keeps the largest
-/// separation it saw and its first face; the lanes combine into the first face of the largest separation, as a
-/// face-by-face loop finds it. A block that holds a separating face ends the query at the first such face. The
+/// The face query of Collide (unit normals) against a scanned inc, four faces of ref at a time in lanes, with the
+/// answer of the textbook loop (ScanFaces). Each vertex of inc is projected on four normals at once, so no minimum is
+/// taken across lanes, and a block of four faces costs one branch instead of one per face, whose outcome follows the
+/// geometry and would be mispredicted. The last block repeats the last face, which changes no answer. Each lane keeps
+/// the largest separation it saw and its first face; the lanes combine into the first face of the largest separation,
+/// as a face-by-face loop finds it. A block that holds a separating face ends the query at the first such face. The
 /// recorder replays the block's faces in order, up to that face, with the same numbers. A ref of at most 8 faces
 /// takes SmallRefFaceQuery instead, and Overlap of small polygons SmallFacesSeparate (raw edge normals).
 template <int N, typename S, typename Tracer>
