@@ -458,10 +458,6 @@ struct NoParallelSkip : detail::NullTracer
 {
     static constexpr bool kSkipParallel = false;
 };
-struct WithPruning : detail::NullTracer
-{
-    static constexpr bool kPrune = true;
-};
 struct NoWalkedPruning : detail::NullTracer
 {
     static constexpr bool kPruneWalked = false;
@@ -555,7 +551,6 @@ std::vector<Query> Queries()
         SatvizQuery("satviz Overlap, as compiled here", false, OverlapVariant<detail::NullTracer>),
         SatvizQuery("satviz Overlap, no early exit", false, OverlapVariant<NoEarlyExit>),
         SatvizQuery("satviz Overlap, no parallel skip", false, OverlapVariant<NoParallelSkip>),
-        SatvizQuery("satviz Overlap, with pruning", false, OverlapVariant<WithPruning>),
         SatvizQuery("satviz Overlap, walk only", false, OverlapVariant<WalkOnly>),
         SatvizQuery("satviz Overlap, walked unpruned", false, OverlapVariant<NoWalkedPruning>),
         SatvizQuery("satviz Collide, as compiled here", false, CollideVariant<detail::NullTracer>),
@@ -1080,7 +1075,6 @@ void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n,
     const SatvizRecord record{p.sa, p.sb, p.xfA, p.xfB, p.velocity, {}, {}};
     Record(acc["satviz Overlap, no early exit"], OverlapVariant<NoEarlyExit>(record) != 0.0, ref, 0.0, false);
     Record(acc["satviz Overlap, no parallel skip"], OverlapVariant<NoParallelSkip>(record) != 0.0, ref, 0.0, false);
-    Record(acc["satviz Overlap, with pruning"], OverlapVariant<WithPruning>(record) != 0.0, ref, 0.0, false);
     Record(acc["satviz Overlap, walk only"], OverlapVariant<WalkOnly>(record) != 0.0, ref, 0.0, false);
     Record(acc["satviz Overlap, walked unpruned"], OverlapVariant<NoWalkedPruning>(record) != 0.0, ref, 0.0, false);
     const auto collideVariant = [&](const char* name, auto variant) {
@@ -1586,8 +1580,6 @@ int main(int argc, char** argv)
     ratioRow("Overlap without early exit / Overlap", "satviz Overlap, no early exit",
              "satviz Overlap, as compiled here");
     ratioRow("Overlap without parallel skip / Overlap", "satviz Overlap, no parallel skip",
-             "satviz Overlap, as compiled here");
-    ratioRow("Overlap with back-face pruning / Overlap", "satviz Overlap, with pruning",
              "satviz Overlap, as compiled here");
     ratioRow("Overlap walking, not scanning / Overlap", "satviz Overlap, walk only",
              "satviz Overlap, as compiled here");

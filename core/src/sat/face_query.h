@@ -119,21 +119,15 @@ bool RecordFace(FaceQuery<S>& query, const IncidentPolygon<S>& inc, int side, in
 ///      without branches (FaceSeparation, face_scan.h): O(n m) with a tiny constant.
 ///   2. A separation > 0 is a separating axis: stop there (early exit).
 ///   3. Keep the largest separation and its face (kUnit): when no face separates, the face of least penetration.
-///   4. Back-face pruning when Tracer::kPrune (off by default): separation_i <= Dot(n, c - v_i) for inc's centroid
-///      c, which lies inside inc. When that bound is not above `floor` (Overlap: 0, the face cannot separate) nor
-///      above the best face so far (Collide: the face cannot become the reference face), the face is not scanned;
-///      in exact arithmetic the answer is the same. It scans fewer faces (3.6 of 10 for Overlap of 8-gons) but its
-///      branch is mispredicted so often that Overlap of 3- to 8-gons ran 1.2 to 1.35 times slower with it
-///      (satviz-bench, "with pruning").
-///   5. Second pass only: a face of ref exactly anti-parallel to a face of inc repeats the test the first pass made
+///   4. Second pass only: a face of ref exactly anti-parallel to a face of inc repeats the test the first pass made
 ///      from that face, and is skipped (the faces in SecondPassSkips).
 /// kUnit selects unit normals (Collide: separations are distances, the best face is tracked) or raw edge normals
 /// (Overlap: only the sign matters, so no square root or division is needed). N is inc's padded vertex count, a
 /// multiple of 4. kInside also finds, for each vertex of inc, its largest separation from ref's faces (ScanFace),
 /// in `inside`: a vertex whose largest separation is <= 0 lies inside ref.
 template <bool kUnit, bool kInside, int N, typename S, typename Tracer>
-FaceQuery<S> ScanFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, S floor,
-                       Tracer& tracer, S* inside)
+FaceQuery<S> ScanFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, Tracer& tracer,
+                       S* inside)
 {
     static_assert(N > 0 && N % 4 == 0 && N <= IncidentPolygon<S>::kCapacity, "a scan of a padded count");
     const int n = ref.Count();
@@ -152,21 +146,6 @@ FaceQuery<S> ScanFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
                 tracer.SkippedFace(i, -1);
             }
             continue;
-        }
-        // Back-face pruning: inc's centroid lies inside inc, so its separation bounds the face's from above. A face
-        // whose bound cannot beat the floor (Overlap: 0; Collide: the best face so far, which only a strictly larger
-        // separation replaces) changes nothing and is not scanned.
-        if constexpr (Tracer::kPrune)
-        {
-            const S bound = Dot(normal, inc.centroid - ref.vertices[i]);
-            if (bound <= std::max(floor, query.separation))
-            {
-                if constexpr (Tracer::kEnabled)
-                {
-                    tracer.PrunedFace(side, i, normal, bound, inc.Support(normal));
-                }
-                continue;
-            }
         }
         const S separation =
             FaceSeparation<N, kInside, Tracer::kWide>(inc.x, inc.y, normal, Dot(normal, ref.vertices[i]), inside);

@@ -45,7 +45,7 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
     }
     else
     {
-        return ScanFaces<kUnit, kInside, N>(ref, inc, side, second, floor, tracer, inside);
+        return ScanFaces<kUnit, kInside, N>(ref, inc, side, second, tracer, inside);
     }
 }
 

@@ -58,8 +58,7 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
                      Tracer& tracer)
 {
 #if SATVIZ_WIDE
-    if constexpr (Tracer::kWide512 && !Tracer::kEnabled && !Tracer::kPrune && Tracer::kScanLimit >= 8 &&
-                  std::is_same_v<S, double>)
+    if constexpr (Tracer::kWide512 && !Tracer::kEnabled && Tracer::kScanLimit >= 8 && std::is_same_v<S, double>)
     {
         if (a.Count() > 0 && a.Count() <= 8 && b.Count() > 0 && b.Count() <= 8)
         {
@@ -68,35 +67,27 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
     }
 #endif
     const IncidentPolygon<S> incB(b, xfA, xfB, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
-    if constexpr (!Tracer::kPrune)
+    if (incB.scan && a.Count() <= 8 && b.Count() <= 8)
     {
-        if (incB.scan && a.Count() <= 8 && b.Count() <= 8)
+        bool separated = SmallFacesSeparate(a, incB, 0, false, tracer);
+        if (!separated || !Tracer::kEarlyExit)
         {
-            bool separated = SmallFacesSeparate(a, incB, 0, false, tracer);
-            if (!separated || !Tracer::kEarlyExit)
-            {
-                const IncidentPolygon<S> incA(a, xfB, xfA, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
-                separated = SmallFacesSeparate(b, incA, 1, true, tracer) || separated;
-            }
-            if constexpr (Tracer::kEnabled)
-            {
-                ManifoldT<S> result;
-                result.overlap = !separated;
-                tracer.Finish(separated ? TraceExit::SeparatingAxis : TraceExit::AllAxesOverlap, result);
-            }
-            return !separated;
+            const IncidentPolygon<S> incA(a, xfB, xfA, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
+            separated = SmallFacesSeparate(b, incA, 1, true, tracer) || separated;
         }
+        if constexpr (Tracer::kEnabled)
+        {
+            ManifoldT<S> result;
+            result.overlap = !separated;
+            tracer.Finish(separated ? TraceExit::SeparatingAxis : TraceExit::AllAxesOverlap, result);
+        }
+        return !separated;
     }
-    // Pruned faces would leave gaps in the vertices' largest separations, so pruning turns the shortcut off.
-    constexpr bool kInside = !Tracer::kPrune;
     alignas(32) S inside[IncidentPolygon<S>::kCapacity];
-    if constexpr (kInside)
-    {
-        std::fill(inside, inside + incB.padded, -std::numeric_limits<S>::infinity());
-    }
-    const FaceQuery<S> queryA = QueryFaces<false, kInside>(a, incB, 0, false, S(0), tracer, inside);
+    std::fill(inside, inside + incB.padded, -std::numeric_limits<S>::infinity());
+    const FaceQuery<S> queryA = QueryFaces<false, true>(a, incB, 0, false, S(0), tracer, inside);
     bool overlap = !queryA.separated;
-    if (kInside && overlap)
+    if (overlap)
     {
         int contained = -1;
         if (incB.scan)

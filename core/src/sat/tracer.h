@@ -30,7 +30,6 @@ struct AlgorithmChoices
 {
     static constexpr bool kEarlyExit = true;    ///< stop at the first separating axis
     static constexpr bool kSkipParallel = true; ///< skip faces of B anti-parallel to a face of A
-    static constexpr bool kPrune = false;       ///< back-face pruning with the centroid bound (scan only)
     /// Walked faces whose separation a single point of the other polygon (the witness) bounds too low to matter
     /// are not walked to: large polygons then walk only the faces near the contact.
     static constexpr bool kPruneWalked = true;
