@@ -5,7 +5,6 @@
 // (face_scan.h); a large one is only given its transform, and its support points are walked to.
 #pragma once
 
-#include "cpu_dispatch.h"
 #include "face_scan.h"
 #include "lanes.h"
 #include "support.h"
@@ -90,12 +89,6 @@ struct IncidentPolygon
         }
     }
 
-    /// The smallest projection on `normal` (reference frame), scan only.
-    S Min(Vec2T<S> normal) const { return MinProjection(x, y, padded, normal.x, normal.y); }
-
-    /// Scan only: the separation of a reference face (outward `normal`, a vertex `v` on it) from this polygon.
-    S Separation(Vec2T<S> normal, Vec2T<S> v) const { return Min(normal) - Dot(normal, v); }
-
     /// The separation of a reference face from this polygon's vertex `support`, its support point.
     S Separation(Vec2T<S> normal, Vec2T<S> v, int support) const
     {
@@ -113,19 +106,9 @@ struct IncidentPolygon
         }
         // The smallest projection is known exactly (MinProjection rounds each projection the same way); mark the
         // vertices that reach it and take the first. No chain of dependent comparisons.
-        S low;
-#if SATVIZ_WIDE
-        if constexpr (kWide)
-        {
-            low = MinProjectionWide(x, y, padded, normal.x, normal.y);
-        }
-        else
-#endif
-        {
-            low = Min(normal);
-        }
-        // Padding repeats vertex 0, so a padded entry that reaches the minimum comes after a real one.
         using L = Lanes<S, kWide && std::is_same_v<S, double>>;
+        const S low = MinProjection<L>(x, y, padded, normal.x, normal.y);
+        // Padding repeats vertex 0, so a padded entry that reaches the minimum comes after a real one.
         const L nx = L::Fill(normal.x);
         const L ny = L::Fill(normal.y);
         uint32_t hits = 0;
