@@ -4,6 +4,7 @@
 #include "app.h"
 
 #include <satviz/render/describe.h>
+#include <satviz/render/layers.h>
 #include <satviz/scene_world.h>
 
 #include <algorithm>
@@ -35,19 +36,6 @@ bool Pressed(int key)
 bool PressedNamed(ImGuiKey key)
 {
     return Pressed(ImGui::GetKeyIndex(key));
-}
-
-std::vector<std::string> LayerNames(LayerMask mask)
-{
-    std::vector<std::string> names;
-    for (const std::string& name : ViewLayerNames())
-    {
-        if (mask & LayerFromName(name))
-        {
-            names.push_back(name);
-        }
-    }
-    return names;
 }
 
 std::string UniqueName(const Scene& scene, const std::string& stem)
@@ -990,36 +978,20 @@ void App::MenuBar()
     ImGui::EndMainMenuBar();
 }
 
+// One switch per row of the layer table, with its description as the tooltip.
 void App::LayerToggles()
 {
-    static const char* const kDescriptions[] = {
-        "the bodies, filled and outlined",
-        "body names, vertex and edge numbers",
-        "every outward edge normal",
-        "every candidate axis, faint",
-        "the current axis, both intervals, the number line",
-        "the separating line of an early exit",
-        "the best axis so far",
-        "the minimum translation vector",
-        "contact points, reference face, incident edge",
-        "velocities, swept intervals, the time bar",
-        "the moving bodies at the time of impact",
-        "the step's sentence above the figure",
-        "the Minkowski difference A - B in an inset: the origin inside it exactly when they overlap",
-    };
-    const std::vector<std::string>& names = ViewLayerNames();
-    for (size_t i = 0; i < names.size(); ++i)
+    for (const LayerInfo& layer : kLayerTable)
     {
-        bool on = (layers & (1u << i)) != 0;
-        if (ImGui::Checkbox(names[i].c_str(), &on))
+        bool on = (layers & layer.bit) != 0;
+        if (ImGui::Checkbox(std::string(layer.name).c_str(), &on))
         {
-            layers = on ? (layers | (1u << i)) : (layers & ~(1u << i));
+            layers = on ? (layers | layer.bit) : (layers & ~layer.bit);
             Refresh();
         }
-        // A layer added to ViewLayerNames() without a description here gets none, never a read past the list.
-        if (ImGui::IsItemHovered() && i < std::size(kDescriptions))
+        if (ImGui::IsItemHovered())
         {
-            ImGui::SetTooltip("%s", kDescriptions[i]);
+            ImGui::SetTooltip("%.*s", static_cast<int>(layer.description.size()), layer.description.data());
         }
     }
 }
