@@ -366,7 +366,6 @@ TEST_CASE("The caption of a step states the trace's numbers", "[painter]")
 
 TEST_CASE("The layer table is what scene files accept, and its names and bits are one-to-one", "[painter]")
 {
-    // The scene loader keeps its own list of names to check view.layers against: it must be the table's, in order.
     std::vector<std::string> names;
     for (const LayerInfo& layer : kLayerTable)
     {
@@ -374,7 +373,6 @@ TEST_CASE("The layer table is what scene files accept, and its names and bits ar
         CHECK(LayerFromName(layer.name) == layer.bit);
         CHECK(!layer.description.empty());
     }
-    CHECK(names == ViewLayerNames());
     CHECK(LayerNames(kAllLayers) == names);
     CHECK(LayersFromNames(names) == kAllLayers);
     CHECK(kDefaultLayers == (kAllLayers & ~(kLayerNormals | kLayerAxes | kLayerMinkowski)));
