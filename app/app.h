@@ -1,26 +1,27 @@
 // SPDX-License-Identifier: MIT
-// satviz app: the state and the user interface of the interactive tool, without any window system. main.cpp owns
-// the GLFW window and the OpenGL backend; everything here talks to Dear ImGui only, so tests drive it through
-// ImGui's input fields without a display.
+// satviz app: the app, without any window system. It joins the document (the scene, its file and its undo history,
+// document.h), the viewer (what the canvas shows of it, viewer.h) and the panels (the Dear ImGui interface,
+// panels.h), and its methods are the user's actions: the panels call them, and so do the tests. main.cpp owns the
+// GLFW window and the OpenGL backend.
 #pragma once
 
+#include "document.h"
 #include "lessons.h"
+#include "panels.h"
+#include "recent_files.h"
+#include "viewer.h"
 
 #include <satviz/render/figure.h>
 #include <satviz/render/imgui_canvas.h>
 #include <satviz/scene.h>
 
-#include <atomic>
+#include <cstddef>
 #include <filesystem>
-#include <memory>
 #include <string>
 #include <vector>
 
 namespace satviz
 {
-
-/// Width of the lesson column on the left of the canvas, in pixels, while a lesson is open.
-constexpr float kLessonWidth = 440.0f;
 
 /// Key codes of the keys the app reads beyond ImGui's own key map (letters and function keys): the window system
 /// fills them in (GLFW key codes in main.cpp), tests pick their own.
@@ -54,42 +55,121 @@ struct AppOptions
 /// tutorials/scenes in the nearest ancestor of `programDir` that has one. Empty when neither exists.
 std::string FindBundledScenes(const std::filesystem::path& programDir, const std::filesystem::path& dataDir);
 
-/// What a drag on the canvas does, decided when the mouse button goes down.
-enum class DragKind
-{
-    None,     ///< no drag
-    Pan,      ///< moves the camera
-    Body,     ///< moves the selected body
-    Rotate,   ///< turns the selected body about its centre
-    Vertex,   ///< moves one vertex of the selected polygon (refused where it would break convexity)
-    Velocity, ///< sets the selected body's velocity (its displacement over one step)
-};
-
-/// The interactive app: a scene, the pair it studies, the step shown, the camera, the edit history.
+/// The interactive app: a document, its viewer and the panels, and the user's actions on them.
 class App
 {
   public:
     /// An app that draws figures with `fonts` (already in ImGui's font atlas).
     App(const FigureFonts& fonts, AppOptions options);
+    App(const App&) = delete;            ///< the panels refer to their app
+    App& operator=(const App&) = delete; ///< the panels refer to their app
+
+    /// Builds the whole user interface for one ImGui frame (between NewFrame and Render).
+    void Frame();
+
+    // Files.
 
     /// Opens a scene file. On failure the current scene stays and the error is shown in the app.
     bool Open(const std::string& file);
     /// The user wants to open `file` (ctrl+o, the Bundled scenes or Recent menu): opens it now when nothing is
     /// unsaved, else asks first (save and open, open without saving, cancel) and returns false.
     bool RequestOpen(const std::string& file);
-    /// Builds the whole user interface for one ImGui frame (between NewFrame and Render).
-    void Frame();
-    /// The user wants to close the window: true when the app may close now; with unsaved changes it asks first.
-    bool RequestQuit();
-    /// True once the user confirmed quitting (from the prompt or the menu).
-    bool QuitConfirmed() const { return quitConfirmed_; }
-    /// True, once, when the user asked for a PNG export; `path` receives the file to write.
-    bool TakeExportRequest(std::string& path);
+    /// The file RequestOpen waits to open until the unsaved changes are dealt with.
+    const std::string& PendingOpen() const { return pendingOpen_; }
+    /// Saves the scene as SceneForSaving() gives it to `file`; true when it was written. The status line says how
+    /// it went.
+    bool Save(const std::string& file);
     /// The scene as it would be saved now: the bodies and a view block with the current camera (or "fit"), the
     /// canvas size, the layers, the pair, the query, the step and the time.
     Scene SceneForSaving() const;
     /// The figure of the current view, exactly what satviz-render draws from SceneForSaving().
     FigureSetup ExportFigure() const;
+    /// Asks main.cpp for a PNG of the current view: at AppOptions::exportPath, else SCENE-stepN.png beside the
+    /// scene.
+    void RequestExport();
+    /// True, once, when the user asked for a PNG export; `path` receives the file to write.
+    bool TakeExportRequest(std::string& path);
+    /// The bundled scenes (AppOptions::scenesDir), sorted.
+    std::vector<std::string> BundledScenes() const;
+    /// Recently opened files, newest first.
+    const std::vector<std::string>& Recent() const { return recent_.List(); }
+
+    /// The user wants to close the window: true when the app may close now; with unsaved changes it asks first.
+    bool RequestQuit();
+    /// The user confirmed quitting (from the unsaved-changes prompt).
+    void ConfirmQuit() { quitConfirmed_ = true; }
+    /// True once the user confirmed quitting (from the prompt or the menu).
+    bool QuitConfirmed() const { return quitConfirmed_; }
+
+    // The document: the scene, its file, the edit history.
+
+    /// The scene being edited, its file and its history.
+    const Document& GetDocument() const { return document_; }
+    /// Undoes the last edit (of the bodies, or of the pair, query, step view, pitfall, precision or layers);
+    /// false when there is nothing to undo.
+    bool Undo();
+    /// Redoes the last undone edit; false when there is nothing to redo.
+    bool Redo();
+    /// The selected body, -1 for none.
+    int Selected() const { return selected_; }
+    /// Selects body `index` (-1: none).
+    void Select(int index) { selected_ = index; }
+    /// Starts an edit of the bodies that lasts until EndEdit (a drag): it is undone in one step.
+    void BeginEdit();
+    /// Ends the edit begun by BeginEdit; it goes on the undo stack if it changed the scene.
+    void EndEdit();
+    /// Moves body `index`'s origin to world point `position`.
+    void MoveBody(int index, Vec2 position);
+    /// Turns body `index` to `angle` radians, counter-clockwise.
+    void TurnBody(int index, double angle);
+    /// Sets body `index`'s velocity (world units per time unit: its displacement over one step).
+    void SetVelocity(int index, Vec2 velocity);
+    /// Moves vertex `vertex` of polygon body `index` to world point `world`; refused, and the status line says
+    /// why, when the polygon would no longer be strictly convex and counter-clockwise. True when it moved.
+    bool MoveVertex(int index, int vertex, Vec2 world);
+    /// Adds a body of `shape` at the camera's centre, named `stem` with the first free number, and selects it.
+    void AddBody(Shape shape, const std::string& stem);
+    /// Deletes the selected body; refused (the status line says why) when none is selected or only two are left.
+    void DeleteSelected();
+
+    // The viewer: what the canvas shows. Changes of the pair, query, step view, pitfall, precision and layers are
+    // edits: they mark the scene modified and go on the undo stack.
+
+    /// The viewer: the choices, the step, the camera, the figure of the pair's test.
+    const Viewer& GetViewer() const { return viewer_; }
+    /// Tests the pair named `bodyA` and `bodyB`.
+    void SetPair(const std::string& bodyA, const std::string& bodyB);
+    /// Shows the static test, the swept test, or either as the pair moves or not.
+    void SetQuery(ViewQuery query);
+    /// Shows the textbook test's steps or the face tests'.
+    void SetStepView(StepView steps);
+    /// Shows a classic mistake beside the right answer (Pitfall::None: none).
+    void SetPitfall(Pitfall pitfall);
+    /// Runs the queries in float (true) or double.
+    void SetPrecision(bool singlePrecision);
+    /// Draws the layers of `layers`.
+    void SetLayers(LayerMask layers);
+    /// Shows trace step `step` (from 0); one that does not exist shows the verdict.
+    void ShowStep(int step) { viewer_.ShowStep(step); }
+    /// Starts or stops stepping through the trace automatically.
+    void TogglePlay() { viewer_.TogglePlay(); }
+    /// Sweeps: draws the moving bodies at time `time` in [0, 1]; -1: not drawn.
+    void SetTime(double time) { viewer_.SetTime(time); }
+    /// Frames the pair again, and keeps it framed through edits until the user pans or zooms.
+    void FitCamera();
+    /// Puts the camera's centre at `center`, `zoom` pixels per world unit.
+    void SetCamera(Vec2 center, double zoom) { viewer_.SetCamera(center, zoom); }
+    /// Moves the camera so the world follows a drag of (dx, dy) pixels.
+    void PanCamera(float dx, float dy) { viewer_.PanCamera(dx, dy); }
+    /// Zooms by `factor` about canvas point `fixed` (the pointer).
+    void ZoomCamera(ScreenPoint fixed, double factor) { viewer_.ZoomCamera(fixed, factor); }
+    /// Holds the camera where it is while the scene changes under the pointer.
+    void HoldCamera() { viewer_.HoldCamera(); }
+    /// Places the canvas in the window (its first frame, a resize): a new size fits the figure to it.
+    void PlaceCanvas(ScreenPoint origin, int width, int height);
+
+    // Lessons.
+
     /// Opens lesson `index` of Lessons(): its text in the lesson window and its first scene (asking first when the
     /// scene has unsaved changes). False for an index out of range or a lesson that cannot be read.
     bool OpenLesson(int index);
@@ -99,119 +179,50 @@ class App
     int CurrentLesson() const { return lesson_; }
     /// The blocks of the lesson shown.
     const std::vector<LessonBlock>& LessonBlocks() const { return lessonBlocks_; }
+    /// True while the lesson window is open.
+    bool LessonShown() const { return lessonShown_; }
+    /// Closes the lesson window.
+    void CloseLesson() { lessonShown_ = false; }
+
+    // The status line and the rest.
+
     /// Shows a one-line message in the status bar (an export result, an error).
     void SetStatus(const std::string& message, bool error);
-
-    // State, public for the tests and the window loop.
-    Scene scene;                       ///< the scene being edited
-    std::string file;                  ///< its file; empty for a new scene
-    bool readOnly = false;             ///< a bundled scene: saving asks for another file
-    bool dirty = false;                ///< unsaved changes
-    FigureSetup setup;                 ///< the pair's queries and the current figure
-    int step = 0;                      ///< the trace step shown
-    bool playing = false;              ///< stepping automatically
-    LayerMask layers = kDefaultLayers; ///< layers drawn
-    View camera;                       ///< the canvas camera
-    bool cameraFit = true;             ///< the camera follows FitFigure (until the user pans or zooms)
-    int selected = -1;                 ///< the selected body, -1 for none
-    DragKind drag = DragKind::None;    ///< the drag in progress
-    int dragVertex = -1;               ///< the vertex being dragged
-    float canvasX = 0.0f;              ///< canvas position in the window (pixels)
-    float canvasY = 0.0f;              ///< canvas position in the window (pixels)
-    int canvasWidth = 800;             ///< canvas size (pixels)
-    int canvasHeight = 600;            ///< canvas size (pixels)
-    bool showHelp = false;             ///< the help overlay is open
-    bool showLesson = false;           ///< the lesson window is open
-    std::vector<std::string> recent;   ///< recently opened files, newest first
-    std::string status;                ///< the status line
-    bool statusIsError = false;        ///< the status line reports an error
-
-    /// Undoes the last edit; false when there is nothing to undo.
-    bool Undo();
-    /// Redoes the last undone edit; false when there is nothing to redo.
-    bool Redo();
-    /// Number of edits that can be undone.
-    size_t UndoDepth() const { return undo_.size(); }
-    /// Re-runs the queries after an edit, keeping the step where it still exists. A pair with more vertices
-    /// than AppOptions::backgroundVertices is tested on a worker thread: the figure keeps showing the last
-    /// finished test until Frame() takes the new one in.
-    void Refresh();
-    /// True while a test of the pair runs on the worker thread.
-    bool Studying() const;
-    /// The scene that `setup` describes: the current one, or the one before the edits whose test still runs.
-    const Scene& Studied() const { return studied_; }
+    /// The status line.
+    const std::string& Status() const { return status_; }
+    /// True when the status line reports an error.
+    bool StatusIsError() const { return statusIsError_; }
+    /// The start-up choices.
+    const AppOptions& Options() const { return options_; }
+    /// The figure fonts.
+    const FigureFonts& Fonts() const { return fonts_; }
 
   private:
-    /// A test of the pair on the worker thread: the scene and options it runs on, its result once done.
-    struct StudyJob
-    {
-        Scene scene;
-        FigureOptions options;
-        FigureSetup result;
-        std::atomic<bool> done{false};
-    };
+    // Re-runs the queries on the scene, keeping the step where it still exists. A pair with more vertices than
+    // AppOptions::backgroundVertices is tested on a worker thread: the figure keeps showing the last finished test
+    // until Frame() takes the new one in.
+    void Refresh();
+    void TakeFinishedTest();
+    void ChangeChoices(const ViewChoices& choices);
+    bool BodyExists(int index) const;
 
-    int PairVertices() const;
-    void PollStudy();
-    void Adopt(FigureSetup fresh, Scene studied);
-    void ShowStep();
-    void BeginEdit();
-    void CommitEdit();
-    void CancelEdit();
-    void MenuBar();
-    void SidePanel();
-    void StepControls();
-    void Inspector();
-    void LayerToggles();
-    void CanvasWindow();
-    void CanvasInput(ImVec2 origin, bool hovered);
-    void Handles(ImDrawList* list, ImVec2 origin);
-    void Popups();
-    void HelpOverlay();
-    void LessonWindow();
-    void LessonsMenu();
-    void Shortcuts();
-    void StatusBar();
-    void Save(const std::string& path);
-    void AddBody(Shape shape, const std::string& stem);
-    void DeleteSelected();
-    int BodyAt(Vec2 world) const;
-    void Remember(const std::string& path);
-    void LoadRecent();
-    void SaveRecent() const;
-    std::vector<std::string> BundledScenes() const;
-
-    Scene studied_;                 // the scene `setup` was made from
-    std::shared_ptr<StudyJob> job_; // the test running on the worker thread, if any
-    bool rerun_ = false;            // the scene changed while it ran: test again when it ends
-    bool canvasSized_ = false;      // the canvas has had its first frame (and so its size)
     FigureFonts fonts_;
+    AppOptions options_;
+    Document document_;
+    Viewer viewer_;
+    Panels panels_;
+    RecentFiles recent_;
+    int selected_ = -1;
+    std::string status_;
+    bool statusIsError_ = false;
     std::vector<Lesson> lessons_;
     int lesson_ = -1;
     std::vector<LessonBlock> lessonBlocks_;
-    bool lessonScrollTop_ = false;
-    AppOptions options_;
-    std::vector<Scene> undo_;
-    std::vector<Scene> redo_;
-    bool editOpen_ = false;
-    Scene editStart_;
-    ImVec2 dragStart_{};
-    Vec2 grabOffset_{};
-    double grabAngle_ = 0.0;
-    double playClock_ = 0.0;
+    bool lessonShown_ = false;
+    std::string pendingOpen_;
     bool quitConfirmed_ = false;
-    bool canvasAnnounced_ = false;
-    int newSides_ = 5;
-    bool askQuit_ = false;
-    bool askOpen_ = false;
-    bool askOpenUnsaved_ = false;
-    std::string pendingOpen_;      // the file to open once the unsaved changes are dealt with
-    bool openAfterSaveAs_ = false; // the Save as popup was opened by "Save and open"
-
-    bool askSaveAs_ = false;
     bool exportRequested_ = false;
     std::string exportPath_;
-    char pathBuffer_[1024] = {};
 };
 
 } // namespace satviz

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// satviz app: the canvas, where the painter draws the figure and the mouse moves, turns, reshapes and launches
+// satviz app: the canvas panel, where the painter draws the figure and the mouse moves, turns, reshapes and launches
 // bodies (after the "Canvas" example of imgui_demo.cpp: an invisible button over a draw list).
 #include "app.h"
 
@@ -12,7 +12,6 @@ namespace satviz
 namespace
 {
 
-constexpr float kPanelWidth = 380.0f;
 constexpr float kHandleRadius = 8.0f; // pick distance of the handles, pixels
 
 float Distance(ScreenPoint a, ScreenPoint b)
@@ -69,14 +68,12 @@ bool Contains(const Body& body, Vec2 world)
     return true;
 }
 
-} // namespace
-
-int App::BodyAt(Vec2 world) const
+// The body under world point `world`, -1 for none. The pair is drawn above the other bodies, B on top.
+int BodyAt(const Viewer& viewer, const Scene& scene, Vec2 world)
 {
-    // The pair is drawn above the other bodies, B on top.
-    if (setup.Ok())
+    if (viewer.Setup().Ok())
     {
-        for (int index : {setup.study.bodyB, setup.study.bodyA})
+        for (int index : {viewer.Setup().study.bodyB, viewer.Setup().study.bodyA})
         {
             if (index < static_cast<int>(scene.bodies.size()) &&
                 Contains(scene.bodies[static_cast<size_t>(index)], world))
@@ -95,12 +92,14 @@ int App::BodyAt(Vec2 world) const
     return -1;
 }
 
-void App::CanvasWindow()
+} // namespace
+
+void Panels::CanvasWindow()
 {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     const float top = ImGui::GetFrameHeight();
     // An open lesson takes a column on the left; the canvas keeps the rest.
-    const float lessonWidth = showLesson ? kLessonWidth : 0.0f;
+    const float lessonWidth = app_.LessonShown() ? kLessonWidth : 0.0f;
     const ImVec2 position(viewport->Pos.x + lessonWidth, viewport->Pos.y + top);
     const ImVec2 size(std::max(64.0f, viewport->Size.x - kPanelWidth - lessonWidth),
                       std::max(64.0f, viewport->Size.y - 2.0f * top));
@@ -112,21 +111,13 @@ void App::CanvasWindow()
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
-    canvasX = origin.x;
-    canvasY = origin.y;
-    const int width = static_cast<int>(size.x);
-    const int height = static_cast<int>(size.y);
-    if (!canvasSized_ || width != canvasWidth || height != canvasHeight)
-    {
-        canvasWidth = width;
-        canvasHeight = height;
-        canvasSized_ = true;
-        Refresh();
-    }
+    app_.PlaceCanvas({origin.x, origin.y}, static_cast<int>(size.x), static_cast<int>(size.y));
+    const Viewer& viewer = app_.GetViewer();
     if (!canvasAnnounced_)
     {
         // One line for scripts that drive the window (the end-to-end test).
-        std::printf("satviz: canvas at %.0f,%.0f size %dx%d\n", origin.x, origin.y, canvasWidth, canvasHeight);
+        std::printf("satviz: canvas at %.0f,%.0f size %dx%d\n", origin.x, origin.y, viewer.CanvasWidth(),
+                    viewer.CanvasHeight());
         std::fflush(stdout);
         canvasAnnounced_ = true;
     }
@@ -134,39 +125,39 @@ void App::CanvasWindow()
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);
     CanvasInput(origin, ImGui::IsItemHovered());
-    if (setup.Ok())
+    if (viewer.Setup().Ok())
     {
         ImDrawList* list = ImGui::GetWindowDrawList();
-        ImDrawListCanvas canvas(list, fonts_, origin);
-        setup.figure.view = camera;
-        setup.figure.step = step;
-        PaintFigure(canvas, studied_, setup.study, setup.figure);
+        ImDrawListCanvas canvas(list, app_.Fonts(), origin);
+        PaintFigure(canvas, viewer.Studied(), viewer.Setup().study, viewer.CurrentFigure());
         Handles(list, origin);
     }
     ImGui::End();
     ImGui::PopStyleVar(2);
 }
 
-void App::CanvasInput(ImVec2 origin, bool hovered)
+void Panels::CanvasInput(ImVec2 origin, bool hovered)
 {
     const ImGuiIO& io = ImGui::GetIO();
+    const Viewer& viewer = app_.GetViewer();
+    const std::vector<Body>& bodies = app_.GetDocument().GetScene().bodies;
     const ScreenPoint mouse{io.MousePos.x - origin.x, io.MousePos.y - origin.y};
-    const Vec2 world = ToWorld(camera, mouse);
+    const Vec2 world = ToWorld(viewer.Camera(), mouse);
     if (hovered && io.MouseWheel != 0.0f)
     {
-        camera = ZoomAbout(camera, mouse, std::pow(1.15, static_cast<double>(io.MouseWheel)));
-        cameraFit = false;
+        app_.ZoomCamera(mouse, std::pow(1.15, static_cast<double>(io.MouseWheel)));
     }
-    if (drag == DragKind::None && hovered && (ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2)))
+    if (drag_ == DragKind::None && hovered && (ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2)))
     {
-        drag = DragKind::Pan;
+        drag_ = DragKind::Pan;
     }
-    if (drag == DragKind::None && hovered && ImGui::IsMouseClicked(0))
+    if (drag_ == DragKind::None && hovered && ImGui::IsMouseClicked(0))
     {
-        dragStart_ = io.MousePos;
-        if (selected >= 0 && selected < static_cast<int>(scene.bodies.size()))
+        const int selected = app_.Selected();
+        if (selected >= 0 && selected < static_cast<int>(bodies.size()))
         {
-            const Body& body = scene.bodies[static_cast<size_t>(selected)];
+            const Body& body = bodies[static_cast<size_t>(selected)];
+            const View& camera = viewer.Camera();
             if (body.shape.type == ShapeType::Polygon && body.shape.polygon.Count() <= 64)
             {
                 const Transform xf = body.Xf();
@@ -175,124 +166,100 @@ void App::CanvasInput(ImVec2 origin, bool hovered)
                     if (Distance(mouse, ToScreen(camera, TransformPoint(xf, body.shape.polygon.vertices[i]))) <=
                         kHandleRadius)
                     {
-                        drag = DragKind::Vertex;
-                        dragVertex = i;
+                        drag_ = DragKind::Vertex;
+                        dragVertex_ = i;
                         break;
                     }
                 }
             }
-            if (drag == DragKind::None && Distance(mouse, RotateHandle(camera, body)) <= kHandleRadius)
+            if (drag_ == DragKind::None && Distance(mouse, RotateHandle(camera, body)) <= kHandleRadius)
             {
-                drag = DragKind::Rotate;
+                drag_ = DragKind::Rotate;
             }
-            if (drag == DragKind::None && Distance(mouse, VelocityHandle(camera, body)) <= kHandleRadius)
+            if (drag_ == DragKind::None && Distance(mouse, VelocityHandle(camera, body)) <= kHandleRadius)
             {
-                drag = DragKind::Velocity;
+                drag_ = DragKind::Velocity;
             }
         }
-        if (drag == DragKind::None)
+        if (drag_ == DragKind::None)
         {
-            const int hit = BodyAt(world);
-            if (hit >= 0)
-            {
-                selected = hit;
-                drag = io.KeyShift ? DragKind::Rotate : DragKind::Body;
-            }
-            else
-            {
-                selected = -1;
-                drag = DragKind::Pan;
-            }
+            const int hit = BodyAt(viewer, app_.GetDocument().GetScene(), world);
+            app_.Select(hit);
+            drag_ = hit < 0 ? DragKind::Pan : io.KeyShift ? DragKind::Rotate : DragKind::Body;
         }
-        if (drag != DragKind::Pan)
+        if (drag_ != DragKind::Pan)
         {
             // The camera holds still while the scene changes under the pointer.
-            cameraFit = false;
-            const Body& body = scene.bodies[static_cast<size_t>(selected)];
+            app_.HoldCamera();
+            const Body& body = bodies[static_cast<size_t>(app_.Selected())];
             grabOffset_ = world - body.position;
             const Vec2 arm = world - body.position;
             grabAngle_ = std::atan2(arm.y, arm.x) - body.angle;
-            BeginEdit();
+            app_.BeginEdit();
         }
     }
-    if (drag == DragKind::None)
+    if (drag_ == DragKind::None)
     {
         return;
     }
     const bool down = ImGui::IsMouseDown(0) || ImGui::IsMouseDown(1) || ImGui::IsMouseDown(2);
-    if (drag == DragKind::Pan)
+    const int selected = app_.Selected();
+    if (drag_ == DragKind::Pan)
     {
         if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)
         {
-            camera = Pan(camera, io.MouseDelta.x, io.MouseDelta.y);
-            cameraFit = false;
+            app_.PanCamera(io.MouseDelta.x, io.MouseDelta.y);
         }
     }
-    else if (selected >= 0 && selected < static_cast<int>(scene.bodies.size()))
+    else if (selected >= 0 && selected < static_cast<int>(bodies.size()))
     {
-        Body& body = scene.bodies[static_cast<size_t>(selected)];
-        switch (drag)
+        const Body& body = bodies[static_cast<size_t>(selected)];
+        switch (drag_)
         {
         case DragKind::Body:
-            body.position = world - grabOffset_;
+            app_.MoveBody(selected, world - grabOffset_);
             break;
         case DragKind::Rotate:
         {
             const Vec2 arm = world - body.position;
             if (Length(arm) > 0.0)
             {
-                body.angle = std::atan2(arm.y, arm.x) - grabAngle_;
+                app_.TurnBody(selected, std::atan2(arm.y, arm.x) - grabAngle_);
             }
             break;
         }
         case DragKind::Vertex:
-        {
-            std::vector<Vec2> vertices(body.shape.polygon.vertices.begin(), body.shape.polygon.vertices.end());
-            vertices[static_cast<size_t>(dragVertex)] = InvTransformPoint(body.Xf(), world);
-            PolygonResult result = MakePolygon(vertices);
-            if (result.Ok())
-            {
-                body.shape.polygon = std::move(result.polygon);
-                if (statusIsError)
-                {
-                    SetStatus("", false);
-                }
-            }
-            else
-            {
-                SetStatus("Vertex " + std::to_string(dragVertex) + " stays where it was: the " +
-                              DescribePolygonError(result.error, result.vertex),
-                          true);
-            }
+            app_.MoveVertex(selected, dragVertex_, world);
             break;
-        }
         case DragKind::Velocity:
-            body.velocity = world - body.position;
+            app_.SetVelocity(selected, world - body.position);
             break;
         default:
             break;
         }
-        Refresh();
     }
     if (!down)
     {
-        if (drag != DragKind::Pan)
+        if (drag_ != DragKind::Pan)
         {
-            CommitEdit();
+            app_.EndEdit();
         }
-        drag = DragKind::None;
-        dragVertex = -1;
+        drag_ = DragKind::None;
+        dragVertex_ = -1;
     }
 }
 
 // The selected body's handles: its vertices, the turning handle above it, and its velocity arrow's tip.
-void App::Handles(ImDrawList* list, ImVec2 origin)
+void Panels::Handles(ImDrawList* list, ImVec2 origin)
 {
-    if (selected < 0 || selected >= static_cast<int>(scene.bodies.size()))
+    const int selected = app_.Selected();
+    const std::vector<Body>& bodies = app_.GetDocument().GetScene().bodies;
+    if (selected < 0 || selected >= static_cast<int>(bodies.size()))
     {
         return;
     }
-    const Body& body = scene.bodies[static_cast<size_t>(selected)];
+    const Body& body = bodies[static_cast<size_t>(selected)];
+    const View& camera = app_.GetViewer().Camera();
     auto at = [&](ScreenPoint p) { return ImVec2(p.x + origin.x, p.y + origin.y); };
     const ImU32 ink = IM_COL32(43, 43, 43, 255);
     const ImU32 white = IM_COL32(255, 255, 255, 255);

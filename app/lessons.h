@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // satviz app: the lessons of tutorials/ as the app shows them: found on disk, parsed from Markdown with md4c into
-// blocks of text, headings, list items, code and figures. No drawing here (see App::LessonWindow).
+// blocks of text, headings, list items, code and figures. No drawing here (see Panels::LessonWindow).
 #pragma once
 
 #include <string>

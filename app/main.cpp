@@ -326,7 +326,7 @@ int main(int argc, char** argv)
     const std::string initial = sceneFile.empty() ? options.scenesDir + "/overlapping_boxes.json" : sceneFile;
     if (!app.Open(initial))
     {
-        std::fprintf(stderr, "satviz: %s\n", app.status.c_str());
+        std::fprintf(stderr, "satviz: %s\n", app.Status().c_str());
         return 1;
     }
     if (lessonOption->count() > 0 && !app.OpenLesson(lessonNumber - 1))
@@ -370,8 +370,8 @@ int main(int argc, char** argv)
             }
             else if (exportSetup.Ok())
             {
-                drawing =
-                    std::make_unique<satviz::FigureDrawing>(app.scene, exportSetup.study, exportSetup.figure, fonts);
+                drawing = std::make_unique<satviz::FigureDrawing>(app.GetDocument().GetScene(), exportSetup.study,
+                                                                  exportSetup.figure, fonts);
             }
             else
             {
@@ -403,8 +403,8 @@ int main(int argc, char** argv)
             {
                 const double seconds = std::chrono::duration<double>(Clock::now() - measureStart).count();
                 std::printf("satviz: %d frames in %.3f s: %.1f frames per second (%zu bodies, %dx%d window)\n",
-                            measureFrames, seconds, measureFrames / seconds, app.scene.bodies.size(), framebufferWidth,
-                            framebufferHeight);
+                            measureFrames, seconds, measureFrames / seconds, app.GetDocument().GetScene().bodies.size(),
+                            framebufferWidth, framebufferHeight);
                 break;
             }
         }

@@ -408,15 +408,29 @@ TEST_CASE("satviz-sim refuses bad arguments and scenes with one line naming the 
     CHECK(Sim(kSim / "bad_dt.json --steps 5").err ==
           "satviz-sim: " + kSim / "bad_dt.json" + ": world.dt: must be greater than 0\n");
 
-    // A final state the scene format cannot hold is refused before anything is written: an angle past 1e6.
+    // A final state the scene format cannot hold is refused before anything is written: a body flung past 1e12.
+    WriteFile(kSim / "fling.json", R"({"bodies": [{"name": "flung", "box": [2, 0.1], "velocity": [1e12, 0]}]})");
+    const SimRun flung = Sim(kSim / "fling.json --steps 2 --save " + kSim / "flung.json");
+    CHECK(flung.exitCode == 1);
+    CHECK(flung.out.size() == 2);
+    INFO(flung.err);
+    CHECK(flung.err.find("satviz-sim: " + kSim / "flung.json" + ": bodies[0].position") != std::string::npos);
+    CHECK(flung.err.find("(the final state; nothing was written)\n") != std::string::npos);
+    CHECK(!std::filesystem::exists(kSim / "flung.json"));
+
+    // A body wound through many turns saves with its orientation, the angle turned into [-pi, pi].
     WriteFile(kSim / "spin.json", R"({"bodies": [{"name": "spinner", "box": [2, 0.1], "angular_velocity": 1e6}]})");
     const SimRun spun = Sim(kSim / "spin.json --steps 2 --save " + kSim / "spun.json");
-    CHECK(spun.exitCode == 1);
-    CHECK(spun.out.size() == 2);
-    CHECK(spun.err.find("satviz-sim: " + kSim / "spun.json" +
-                        ": bodies[0].angle: magnitude exceeds 1e+06 (the final state; nothing was written)\n") !=
-          std::string::npos);
-    CHECK(!std::filesystem::exists(kSim / "spun.json"));
+    INFO(spun.err);
+    CHECK(spun.exitCode == 0);
+    const double wound = nlohmann::json::parse(spun.out.back())["bodies"][0]["angle"].get<double>();
+    CHECK(wound == 2e6);
+    const SceneResult spunScene = LoadScene(kSim / "spun.json");
+    REQUIRE(spunScene.Ok());
+    const double saved = spunScene.scene.bodies[0].angle;
+    CHECK(std::abs(saved) <= 3.14159265358979323846);
+    CHECK(std::cos(saved) == Approx(std::cos(wound)).margin(1e-9));
+    CHECK(std::sin(saved) == Approx(std::sin(wound)).margin(1e-9));
 
     // Without a scene or --steps: CLI11's usage error, and a non-zero exit.
     CHECK(Sim("--steps 5").exitCode != 0);

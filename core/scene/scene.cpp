@@ -3,6 +3,9 @@
 
 #include <satviz/scene.h>
 
+// The drawing layers' one table lives with the painter (standard library only); the loader checks names against it.
+#include <satviz/render/layers.h>
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -462,17 +465,16 @@ SceneView ParseView(const Json& value, const Scene& scene)
         {
             Fail(path + ".layers", "expected an array of layer names, got " + TypeName(layers));
         }
-        const std::vector<std::string>& known = ViewLayerNames();
         for (size_t i = 0; i < layers.size(); ++i)
         {
             const std::string p = path + ".layers[" + std::to_string(i) + "]";
             std::string name = String(layers[i], p);
-            if (std::find(known.begin(), known.end(), name) == known.end())
+            if (FindLayer(name) == nullptr)
             {
                 std::string list;
-                for (const std::string& candidate : known)
+                for (const LayerInfo& known : kLayerTable)
                 {
-                    list += (list.empty() ? "" : ", ") + candidate;
+                    list += (list.empty() ? "" : ", ") + std::string(known.name);
                 }
                 Fail(p, "unknown layer \"" + name + "\" (known layers: " + list + ")");
             }

@@ -9,6 +9,13 @@
 namespace satviz
 {
 
+namespace
+{
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+} // namespace
+
 BodyDef MakeBodyDef(const Body& body)
 {
     BodyDef def;
@@ -56,7 +63,9 @@ void CopyWorldState(const World& world, Scene& scene)
         const RigidBody& from = world.bodies[i];
         Body& to = scene.bodies[i];
         to.position = from.position;
-        to.angle = from.angle;
+        // The world sums a body's turning without bound; a scene holds its orientation, so the angle is written
+        // turned into [-pi, pi].
+        to.angle = std::remainder(from.angle, kTwoPi);
         to.velocity = from.velocity;
         to.angularVelocity = from.angularVelocity;
     }
@@ -95,11 +104,6 @@ std::string SimulateScene(Scene& scene, int steps)
                 return "bodies[" + std::to_string(i) + "] (\"" + scene.bodies[i].name + "\"): " + after +
                        " its state is beyond what a scene holds (at most 1e12)";
             }
-        }
-        if (!(std::fabs(body.angle) <= 1e6))
-        {
-            return "bodies[" + std::to_string(i) + "] (\"" + scene.bodies[i].name + "\"): " + after +
-                   " its angle is beyond what a scene holds (at most 1e6 radians)";
         }
     }
     CopyWorldState(world, scene);

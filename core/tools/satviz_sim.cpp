@@ -174,7 +174,7 @@ int main(int argc, char** argv)
     if (!savePath.empty())
     {
         satviz::CopyWorldState(world, scene);
-        // A state the scene format cannot hold (an angle wound past its limit, a body flung beyond 1e12) is
+        // A state the scene format cannot hold (a body flung beyond 1e12) is
         // refused before anything is written.
         const satviz::SceneResult check = satviz::ParseScene(satviz::SceneToJson(scene), savePath);
         if (!check.Ok())

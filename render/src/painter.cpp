@@ -1414,29 +1414,6 @@ class Painter
 
 } // namespace
 
-LayerMask LayerFromName(std::string_view name)
-{
-    const std::vector<std::string>& names = ViewLayerNames();
-    for (size_t i = 0; i < names.size(); ++i)
-    {
-        if (names[i] == name)
-        {
-            return 1u << i;
-        }
-    }
-    return 0;
-}
-
-LayerMask LayersFromNames(const std::vector<std::string>& names)
-{
-    LayerMask mask = 0;
-    for (const std::string& name : names)
-    {
-        mask |= LayerFromName(name);
-    }
-    return mask;
-}
-
 FigureLayout LayoutFigure(const PairStudy& study, LayerMask layers, int width, int height, bool titled)
 {
     FigureLayout layout;

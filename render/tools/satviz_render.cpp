@@ -6,6 +6,7 @@
 #include <satviz/render/figure.h>
 #include <satviz/render/figure_drawing.h>
 #include <satviz/render/imgui_canvas.h>
+#include <satviz/render/layers.h>
 #include <satviz/render/png_file.h>
 #include <satviz/scene.h>
 #include <satviz/scene_world.h>
@@ -187,12 +188,7 @@ bool ParseLayers(const std::string& text, satviz::LayerMask& mask, std::string& 
         }
         else
         {
-            std::string known;
-            for (const std::string& n : satviz::ViewLayerNames())
-            {
-                known += n + ", ";
-            }
-            error = "--layers: unknown layer \"" + name + "\" (known: " + known + "all, default)";
+            error = "--layers: unknown layer \"" + name + "\" (known: " + satviz::LayerNameList() + ", all, default)";
             return false;
         }
         start = end + 1;
@@ -256,9 +252,7 @@ int main(int argc, char** argv)
                    "faces (the face tests as the fast queries run them); default: the scene's");
     app.add_flag("--all-steps", allSteps, "One figure per trace step")->excludes(stepOption);
     app.add_option("--size", size, "Image size WxH in pixels (default: the scene's, else 800x600)");
-    app.add_option("--layers", layers,
-                   "Comma-separated layers: shapes, labels, normals, axes, projection, exit, best, mtv, contacts, "
-                   "swept, ghost, caption, or all, default");
+    app.add_option("--layers", layers, "Comma-separated layers: " + satviz::LayerNameList() + ", or all, default");
     app.add_flag("-q,--quiet", quiet, "No progress lines, only errors and the summary");
     int simSteps = 0;
     auto* simOption = app.add_option("--sim-steps", simSteps,

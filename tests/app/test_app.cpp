@@ -101,6 +101,10 @@ struct Harness
         app.reset();
         ImGui::DestroyContext(context);
     }
+    // The app's viewer: pair, step, camera, canvas, figure.
+    const Viewer& View() const { return app->GetViewer(); }
+    // The app's document: scene, file, history.
+    const Document& Doc() const { return app->GetDocument(); }
     void Frames(int count)
     {
         for (int i = 0; i < count; ++i)
@@ -113,8 +117,15 @@ struct Harness
     // Screen position (in the window) of a world point on the canvas.
     ImVec2 OnScreen(Vec2 world) const
     {
-        const ScreenPoint p = ToScreen(app->camera, world);
-        return ImVec2(p.x + app->canvasX, p.y + app->canvasY);
+        const ScreenPoint p = ToScreen(View().Camera(), world);
+        const ScreenPoint origin = View().CanvasOrigin();
+        return ImVec2(p.x + origin.x, p.y + origin.y);
+    }
+    // The canvas's top-left corner in the window.
+    ImVec2 CanvasOrigin() const
+    {
+        const ScreenPoint origin = View().CanvasOrigin();
+        return ImVec2(origin.x, origin.y);
     }
     void MoveTo(ImVec2 p)
     {
@@ -196,16 +207,16 @@ struct Harness
     // Runs frames until the background test of the pair is taken in; false after 30 s.
     bool AwaitStudy()
     {
-        for (int i = 0; i < 3000 && app->Studying(); ++i)
+        for (int i = 0; i < 3000 && View().Studying(); ++i)
         {
             std::this_thread::sleep_for(std::chrono::milliseconds(10));
             Frames(1);
         }
-        return !app->Studying();
+        return !View().Studying();
     }
-    Body& BodyNamed(const std::string& name)
+    const Body& BodyNamed(const std::string& name) const
     {
-        for (Body& body : app->scene.bodies)
+        for (const Body& body : Doc().GetScene().bodies)
         {
             if (body.name == name)
             {
@@ -213,7 +224,7 @@ struct Harness
             }
         }
         FAIL("no body " << name);
-        return app->scene.bodies.front();
+        return Doc().GetScene().bodies.front();
     }
 };
 
@@ -229,16 +240,16 @@ TEST_CASE("Dragging a body moves it with the pointer, undo and redo restore each
 {
     Harness h(ScratchCopy("overlapping_boxes.json").string());
     const Vec2 before = h.BodyNamed("B").position;
-    const double zoom = h.app->camera.zoom;
+    const double zoom = h.View().Camera().zoom;
     const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
     h.Drag(from, ImVec2(from.x + 40.0f, from.y - 20.0f));
     const Vec2 after = h.BodyNamed("B").position;
     CHECK(after.x - before.x == Approx(40.0 / zoom).epsilon(1e-5));
     CHECK(after.y - before.y == Approx(20.0 / zoom).epsilon(1e-5));
-    CHECK(h.app->dirty);
-    CHECK(h.app->UndoDepth() == 1);
+    CHECK(h.Doc().Dirty());
+    CHECK(h.Doc().UndoDepth() == 1);
     // The queries follow the edit.
-    const Manifold& m = h.app->setup.study.manifold;
+    const Manifold& m = h.View().Setup().study.manifold;
     const Body& a = h.BodyNamed("A");
     const Body& b = h.BodyNamed("B");
     const Manifold fresh = Collide(a.shape, a.Xf(), b.shape, b.Xf());
@@ -250,48 +261,48 @@ TEST_CASE("Dragging a body moves it with the pointer, undo and redo restore each
     CHECK(h.BodyNamed("B").position == after);
     // A click without a move is not an edit.
     h.Drag(h.OnScreen(Centroid(h.BodyNamed("B"))), h.OnScreen(Centroid(h.BodyNamed("B"))));
-    CHECK(h.app->UndoDepth() == 1);
+    CHECK(h.Doc().UndoDepth() == 1);
 }
 
 TEST_CASE("Arrow keys and space step through the trace, edits keep the step where it still exists", "[app]")
 {
     Harness h(ScratchCopy("overlapping_boxes.json").string());
-    const int verdict = h.app->setup.study.VerdictStep();
-    CHECK(h.app->step == verdict);
+    const int verdict = h.View().Setup().study.VerdictStep();
+    CHECK(h.View().Step() == verdict);
     h.Key(kLeft);
-    CHECK(h.app->step == verdict - 1);
+    CHECK(h.View().Step() == verdict - 1);
     h.Key(kLeft);
     h.Key(kLeft);
-    CHECK(h.app->step == verdict - 3);
+    CHECK(h.View().Step() == verdict - 3);
     h.Key(kRight);
-    CHECK(h.app->step == verdict - 2);
-    const int kept = h.app->step;
-    CHECK(h.app->setup.figure.step == kept);
+    CHECK(h.View().Step() == verdict - 2);
+    const int kept = h.View().Step();
+    CHECK(h.View().Setup().figure.step == kept);
     // Nudge a body: the pair still has as many steps, so the step stays.
     const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
     h.Drag(from, ImVec2(from.x + 3.0f, from.y));
-    CHECK(h.app->step == kept);
+    CHECK(h.View().Step() == kept);
     // Space plays from the first step to the verdict.
     h.Key(kSpace);
-    CHECK(h.app->playing);
+    CHECK(h.View().Playing());
     h.Frames(60 * 20);
-    CHECK(!h.app->playing);
-    CHECK(h.app->step == verdict);
+    CHECK(!h.View().Playing());
+    CHECK(h.View().Step() == verdict);
 }
 
 TEST_CASE("A vertex drag that would break convexity is refused and says why", "[app]")
 {
     Harness h(ScratchCopy("overlapping_boxes.json").string());
-    Body& b = h.BodyNamed("B");
+    const Body& b = h.BodyNamed("B");
     // Select B, then drag its vertex 0 to the far side of the diagonal through vertices 1 and 3.
     h.Drag(h.OnScreen(Centroid(b)), h.OnScreen(Centroid(b)));
-    REQUIRE(h.app->selected >= 0);
+    REQUIRE(h.app->Selected() >= 0);
     const Vec2 v0 = TransformPoint(b.Xf(), b.shape.polygon.vertices[0]);
     const Vec2 v2 = TransformPoint(b.Xf(), b.shape.polygon.vertices[2]);
     const Vec2 beyond = v0 + 0.8 * (v2 - v0);
     h.Drag(h.OnScreen(v0), h.OnScreen(beyond));
-    CHECK(h.app->statusIsError);
-    CHECK(h.app->status.find("convex") != std::string::npos);
+    CHECK(h.app->StatusIsError());
+    CHECK(h.app->Status().find("convex") != std::string::npos);
     const Body& kept = h.BodyNamed("B");
     const Vec2 v0after = TransformPoint(kept.Xf(), kept.shape.polygon.vertices[0]);
     CHECK(Length(v0after - beyond) > 0.1); // never accepted there
@@ -300,34 +311,34 @@ TEST_CASE("A vertex drag that would break convexity is refused and says why", "[
     const Vec2 outward = v0 + 0.1 * (v0 - v2);
     h.Drag(h.OnScreen(v0after), h.OnScreen(outward));
     const Body& moved = h.BodyNamed("B");
-    CHECK(Length(TransformPoint(moved.Xf(), moved.shape.polygon.vertices[0]) - outward) < 2.0 / h.app->camera.zoom);
+    CHECK(Length(TransformPoint(moved.Xf(), moved.shape.polygon.vertices[0]) - outward) < 2.0 / h.View().Camera().zoom);
 }
 
 TEST_CASE("The wheel zooms about the pointer and a drag on empty space pans", "[app]")
 {
     Harness h(ScratchCopy("separated_triangle.json").string());
     ImGuiIO& io = ImGui::GetIO();
-    const ImVec2 pointer(h.app->canvasX + 120.0f, h.app->canvasY + 140.0f);
+    const ImVec2 pointer(h.CanvasOrigin().x + 120.0f, h.CanvasOrigin().y + 140.0f);
     h.MoveTo(pointer);
-    const Vec2 under = ToWorld(h.app->camera, {pointer.x - h.app->canvasX, pointer.y - h.app->canvasY});
-    const double zoom = h.app->camera.zoom;
+    const Vec2 under = ToWorld(h.View().Camera(), {pointer.x - h.CanvasOrigin().x, pointer.y - h.CanvasOrigin().y});
+    const double zoom = h.View().Camera().zoom;
     io.MouseWheel = 2.0f;
     h.Frames(1);
     io.MouseWheel = 0.0f;
-    CHECK(h.app->camera.zoom == Approx(zoom * 1.15 * 1.15));
-    const Vec2 still = ToWorld(h.app->camera, {pointer.x - h.app->canvasX, pointer.y - h.app->canvasY});
+    CHECK(h.View().Camera().zoom == Approx(zoom * 1.15 * 1.15));
+    const Vec2 still = ToWorld(h.View().Camera(), {pointer.x - h.CanvasOrigin().x, pointer.y - h.CanvasOrigin().y});
     CHECK(Length(still - under) < 1e-9);
-    CHECK(!h.app->cameraFit);
-    const Vec2 center = h.app->camera.center;
+    CHECK(!h.View().CameraFit());
+    const Vec2 center = h.View().Camera().center;
     h.Drag(pointer, ImVec2(pointer.x + 50.0f, pointer.y + 30.0f), 1);
-    CHECK(h.app->camera.center.x == Approx(center.x - 50.0 / h.app->camera.zoom));
-    CHECK(h.app->camera.center.y == Approx(center.y + 30.0 / h.app->camera.zoom));
+    CHECK(h.View().Camera().center.x == Approx(center.x - 50.0 / h.View().Camera().zoom));
+    CHECK(h.View().Camera().center.y == Approx(center.y + 30.0 / h.View().Camera().zoom));
 }
 
 TEST_CASE("Shift-drag turns a body and the velocity handle sets its velocity", "[app]")
 {
     Harness h(ScratchCopy("overlapping_boxes.json").string());
-    Body& b = h.BodyNamed("B");
+    const Body& b = h.BodyNamed("B");
     const double angle = b.angle;
     const ImVec2 grab = h.OnScreen(b.position + Vec2{0.3, 0.0});
     // A quarter turn counter-clockwise around the body origin: from +x to +y.
@@ -341,14 +352,168 @@ TEST_CASE("Shift-drag turns a body and the velocity handle sets its velocity", "
     {
         extent = std::max(extent, Length(v));
     }
-    const ScreenPoint origin = ToScreen(h.app->camera, turned.position);
-    const ImVec2 handle(origin.x + static_cast<float>(extent * h.app->camera.zoom) + 22.0f + h.app->canvasX,
-                        origin.y + h.app->canvasY);
+    const ScreenPoint origin = ToScreen(h.View().Camera(), turned.position);
+    const ImVec2 handle(origin.x + static_cast<float>(extent * h.View().Camera().zoom) + 22.0f + h.CanvasOrigin().x,
+                        origin.y + h.CanvasOrigin().y);
     const Vec2 target = turned.position + Vec2{-1.5, -0.25};
     h.Drag(handle, h.OnScreen(target));
-    CHECK(Length(h.BodyNamed("B").velocity - Vec2{-1.5, -0.25}) < 2.0 / h.app->camera.zoom);
+    CHECK(Length(h.BodyNamed("B").velocity - Vec2{-1.5, -0.25}) < 2.0 / h.View().Camera().zoom);
     // The pair now moves but overlaps at t = 0: the swept test ran and handed over to the static one.
-    CHECK(h.app->setup.study.startsOverlapping);
+    CHECK(h.View().Setup().study.startsOverlapping);
+}
+
+TEST_CASE("Pair, query, step view, pitfall, precision and layer changes are edits that undo and redo restore", "[app]")
+{
+    // Three bodies; the file's view tests the bottom cushion and the moving ball, so the swept test.
+    Harness h(ScratchCopy("l17_corner.json").string());
+    REQUIRE(h.View().Setup().Ok());
+    auto pair = [&h]() {
+        const PairStudy& study = h.View().Setup().study;
+        const Scene& studied = h.View().Studied();
+        return studied.bodies[static_cast<size_t>(study.bodyA)].name + "," +
+               studied.bodies[static_cast<size_t>(study.bodyB)].name;
+    };
+    CHECK(pair() == "bottom,ball");
+    CHECK(h.View().Setup().study.sweep);
+    CHECK(!h.Doc().Dirty());
+    CHECK(h.Doc().UndoDepth() == 0);
+
+    SECTION("the pair")
+    {
+        h.app->SetPair("right", "ball");
+        CHECK(pair() == "right,ball");
+        CHECK(h.Doc().Dirty());
+        CHECK(h.Doc().UndoDepth() == 1);
+        CHECK(h.app->SceneForSaving().view.bodyA == "right");
+        // ctrl+z and ctrl+y, as the user does it.
+        h.Key(kZ, true);
+        CHECK(pair() == "bottom,ball");
+        CHECK(h.Doc().UndoDepth() == 0);
+        CHECK(h.Doc().RedoDepth() == 1);
+        CHECK(h.app->SceneForSaving().view.bodyA == "bottom");
+        h.Key(kY, true);
+        CHECK(pair() == "right,ball");
+        CHECK(h.Doc().UndoDepth() == 1);
+        // Naming the pair already shown is no edit.
+        h.app->SetPair("right", "ball");
+        CHECK(h.Doc().UndoDepth() == 1);
+    }
+    SECTION("the query")
+    {
+        h.app->SetQuery(ViewQuery::Collide);
+        CHECK(h.View().Choices().query == ViewQuery::Collide);
+        CHECK(!h.View().Setup().study.sweep);
+        CHECK(h.Doc().UndoDepth() == 1);
+        REQUIRE(h.app->Undo());
+        CHECK(h.View().Choices().query == ViewQuery::Automatic);
+        CHECK(h.View().Setup().study.sweep);
+        REQUIRE(h.app->Redo());
+        CHECK(h.View().Choices().query == ViewQuery::Collide);
+        CHECK(!h.View().Setup().study.sweep);
+        // Choosing the query already chosen is no edit.
+        h.app->SetQuery(ViewQuery::Collide);
+        CHECK(h.Doc().UndoDepth() == 1);
+    }
+    SECTION("the layers")
+    {
+        const LayerMask before = h.View().Choices().layers;
+        REQUIRE(before == (kLayerShapes | kLayerLabels | kLayerSwept | kLayerGhost | kLayerCaption));
+        const LayerMask after = before | kLayerNormals | kLayerMinkowski;
+        h.app->SetLayers(after);
+        CHECK(h.View().Setup().figure.layers == after);
+        CHECK(h.Doc().Dirty());
+        CHECK(h.app->SceneForSaving().view.layers ==
+              std::vector<std::string>{"shapes", "labels", "normals", "swept", "ghost", "caption", "minkowski"});
+        REQUIRE(h.app->Undo());
+        CHECK(h.View().Choices().layers == before);
+        CHECK(h.View().Setup().figure.layers == before);
+        CHECK(h.app->SceneForSaving().view.layers ==
+              std::vector<std::string>{"shapes", "labels", "swept", "ghost", "caption"});
+        REQUIRE(h.app->Redo());
+        CHECK(h.View().Choices().layers == after);
+        CHECK(h.View().Setup().figure.layers == after);
+    }
+    SECTION("the precision")
+    {
+        REQUIRE(!h.View().Setup().study.singlePrecision);
+        h.app->SetPrecision(true);
+        CHECK(h.View().Choices().singlePrecision);
+        CHECK(h.View().Setup().study.singlePrecision);
+        REQUIRE(h.app->Undo());
+        CHECK(!h.View().Choices().singlePrecision);
+        CHECK(!h.View().Setup().study.singlePrecision);
+        CHECK(!h.app->SceneForSaving().view.singlePrecision);
+        REQUIRE(h.app->Redo());
+        CHECK(h.View().Setup().study.singlePrecision);
+        CHECK(h.app->SceneForSaving().view.singlePrecision);
+    }
+    SECTION("the step view and the pitfall")
+    {
+        h.app->SetStepView(StepView::Faces);
+        h.app->SetPitfall(Pitfall::OneShapesAxes);
+        CHECK(!h.View().Setup().study.Textbook());
+        CHECK(h.Doc().UndoDepth() == 2);
+        REQUIRE(h.app->Undo());
+        CHECK(h.View().Choices().pitfall == Pitfall::None);
+        CHECK(h.View().Choices().steps == StepView::Faces);
+        REQUIRE(h.app->Undo());
+        CHECK(h.View().Choices().steps == StepView::Textbook);
+        CHECK(h.View().Setup().study.Textbook());
+        CHECK(!h.app->Undo());
+        REQUIRE(h.app->Redo());
+        REQUIRE(h.app->Redo());
+        CHECK(h.View().Choices().pitfall == Pitfall::OneShapesAxes);
+        CHECK(h.View().Choices().steps == StepView::Faces);
+    }
+}
+
+TEST_CASE("Undo takes back body edits and view changes one at a time, in the order they were made", "[app]")
+{
+    Harness h(ScratchCopy("overlapping_boxes.json").string());
+    const Vec2 start = h.BodyNamed("B").position;
+    const LayerMask layers = h.View().Choices().layers;
+    ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x + 20.0f, from.y));
+    const Vec2 moved = h.BodyNamed("B").position;
+    REQUIRE(moved != start);
+    h.app->SetPrecision(true);
+    h.app->SetLayers(layers | kLayerAxes);
+    from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x, from.y + 20.0f));
+    const Vec2 movedAgain = h.BodyNamed("B").position;
+    REQUIRE(movedAgain != moved);
+    CHECK(h.Doc().UndoDepth() == 4);
+
+    // The last drag goes first; the view's choices stay as they were.
+    REQUIRE(h.app->Undo());
+    CHECK(h.BodyNamed("B").position == moved);
+    CHECK(h.View().Choices().singlePrecision);
+    CHECK(h.View().Choices().layers == (layers | kLayerAxes));
+    REQUIRE(h.app->Undo());
+    CHECK(h.View().Choices().layers == layers);
+    CHECK(h.View().Choices().singlePrecision);
+    CHECK(h.BodyNamed("B").position == moved);
+    REQUIRE(h.app->Undo());
+    CHECK(!h.View().Choices().singlePrecision);
+    CHECK(h.BodyNamed("B").position == moved);
+    REQUIRE(h.app->Undo());
+    CHECK(h.BodyNamed("B").position == start);
+    CHECK(!h.app->Undo());
+
+    for (int i = 0; i < 4; ++i)
+    {
+        REQUIRE(h.app->Redo());
+    }
+    CHECK(!h.app->Redo());
+    CHECK(h.BodyNamed("B").position == movedAgain);
+    CHECK(h.View().Choices().singlePrecision);
+    CHECK(h.View().Choices().layers == (layers | kLayerAxes));
+
+    // A change after an undo starts a new branch: nothing is left to redo.
+    REQUIRE(h.app->Undo());
+    h.app->SetQuery(ViewQuery::Sweep);
+    CHECK(h.Doc().RedoDepth() == 0);
+    CHECK(h.Doc().UndoDepth() == 4);
 }
 
 TEST_CASE("Saving writes the view, the export figure is what satviz-render draws from the saved file", "[app]")
@@ -357,16 +522,15 @@ TEST_CASE("Saving writes the view, the export figure is what satviz-render draws
     Harness h(copy.string());
     h.Key(kLeft);
     h.Key(kLeft);
-    h.app->layers |= kLayerNormals;
-    h.app->Refresh();
+    h.app->SetLayers(h.View().Choices().layers | kLayerNormals);
     h.Key('S', true);
-    CHECK(!h.app->dirty);
-    CHECK(h.app->status.find("Saved") == 0);
+    CHECK(!h.Doc().Dirty());
+    CHECK(h.app->Status().find("Saved") == 0);
     const SceneResult saved = LoadScene(copy.string());
     REQUIRE(saved.Ok());
-    CHECK(saved.scene.view.step == h.app->step);
-    CHECK(saved.scene.view.width == h.app->canvasWidth);
-    CHECK(saved.scene.view.height == h.app->canvasHeight);
+    CHECK(saved.scene.view.step == h.View().Step());
+    CHECK(saved.scene.view.width == h.View().CanvasWidth());
+    CHECK(saved.scene.view.height == h.View().CanvasHeight());
     const FigureSetup fromFile = SetUpFigure(saved.scene, {});
     const FigureSetup fromApp = h.app->ExportFigure();
     REQUIRE(fromFile.Ok());
@@ -377,20 +541,20 @@ TEST_CASE("Saving writes the view, the export figure is what satviz-render draws
     CHECK(fromFile.figure.view.zoom == fromApp.figure.view.zoom);
     CHECK(fromFile.figure.view.width == fromApp.figure.view.width);
     // The canvas shows that same figure.
-    CHECK(fromApp.figure.view.center == h.app->camera.center);
-    CHECK(fromApp.figure.view.zoom == h.app->camera.zoom);
+    CHECK(fromApp.figure.view.center == h.View().Camera().center);
+    CHECK(fromApp.figure.view.zoom == h.View().Camera().zoom);
 }
 
 TEST_CASE("A scene that fails to load keeps the current one and shows the error", "[app]")
 {
     Harness h(ScratchCopy("overlapping_boxes.json").string());
-    const std::string before = SceneToJson(h.app->scene);
+    const std::string before = SceneToJson(h.Doc().GetScene());
     const fs::path broken = fs::temp_directory_path() / "satviz-app-broken.json";
     std::ofstream(broken) << R"({"bodies": [{"polygon": [[0, 0], [1, 0], [1, 1], [0.9, 0.2]]}, {"box": [1, 1]}]})";
     CHECK(!h.app->Open(broken.string()));
-    CHECK(h.app->statusIsError);
-    CHECK(h.app->status.find("bodies[0].polygon") != std::string::npos);
-    CHECK(SceneToJson(h.app->scene) == before);
+    CHECK(h.app->StatusIsError());
+    CHECK(h.app->Status().find("bodies[0].polygon") != std::string::npos);
+    CHECK(SceneToJson(h.Doc().GetScene()) == before);
     fs::remove(broken);
 }
 
@@ -404,14 +568,14 @@ TEST_CASE("A scene whose view asks for sim_steps opens where the steps leave it,
         "world": {"gravity": [0, -10], "dt": 0.1}, "view": {"sim_steps": 10}})";
     REQUIRE(h.app->Open(file.string()));
     h.Frames(2);
-    CHECK(!h.app->statusIsError);
-    CHECK(h.app->status.find("after 10 rigid-body steps") != std::string::npos);
-    CHECK(h.app->scene.bodies[1].position.y == Approx(-3.5).margin(1e-12));
-    CHECK(h.app->scene.bodies[1].velocity.y == Approx(-10.0).margin(1e-12));
+    CHECK(!h.app->StatusIsError());
+    CHECK(h.app->Status().find("after 10 rigid-body steps") != std::string::npos);
+    CHECK(h.Doc().GetScene().bodies[1].position.y == Approx(-3.5).margin(1e-12));
+    CHECK(h.Doc().GetScene().bodies[1].velocity.y == Approx(-10.0).margin(1e-12));
     // The scene holds the stepped state: saving or exporting it does not step it again.
-    CHECK(h.app->scene.view.simSteps == 0);
+    CHECK(h.Doc().GetScene().view.simSteps == 0);
     CHECK(h.app->SceneForSaving().view.simSteps == 0);
-    CHECK(!h.app->dirty);
+    CHECK(!h.Doc().Dirty());
     fs::remove(file);
 }
 
@@ -431,8 +595,8 @@ TEST_CASE("Quitting with unsaved changes asks first, deleting keeps two bodies",
     CHECK(!edited.app->QuitConfirmed());
     // Only two bodies: deleting one is refused.
     edited.Key(kDelete);
-    CHECK(edited.app->scene.bodies.size() == 2);
-    CHECK(edited.app->statusIsError);
+    CHECK(edited.Doc().GetScene().bodies.size() == 2);
+    CHECK(edited.app->StatusIsError());
 }
 
 TEST_CASE("Opening a scene adds it to the recent file, unless the recent list is not to be updated", "[app]")
@@ -453,13 +617,13 @@ TEST_CASE("Opening a scene adds it to the recent file, unless the recent list is
         // As for a --measure-fps run: the list is shown, but neither it nor its file changes.
         options.updateRecent = false;
         Harness h(copy.string(), options);
-        CHECK(h.app->recent == std::vector<std::string>{"/elsewhere/old.json"});
+        CHECK(h.app->Recent() == std::vector<std::string>{"/elsewhere/old.json"});
         CHECK(contents() == "/elsewhere/old.json\n");
     }
     {
         options.updateRecent = true;
         Harness h(copy.string(), options);
-        CHECK(h.app->recent == std::vector<std::string>{fs::absolute(copy).string(), "/elsewhere/old.json"});
+        CHECK(h.app->Recent() == std::vector<std::string>{fs::absolute(copy).string(), "/elsewhere/old.json"});
         CHECK(contents() == fs::absolute(copy).string() + "\n/elsewhere/old.json\n");
     }
 }
@@ -468,19 +632,15 @@ TEST_CASE("A camera beyond what a scene file accepts is saved within it, so the 
 {
     const fs::path copy = ScratchCopy("separated_triangle.json");
     Harness h(copy.string());
-    h.app->cameraFit = false;
-    h.app->camera.zoom = 1e15;
-    h.app->dirty = true;
+    h.app->SetCamera(h.View().Camera().center, 1e15);
     h.Key('S', true);
-    CHECK(h.app->status.find("Saved") == 0);
+    CHECK(h.app->Status().find("Saved") == 0);
     SceneResult saved = LoadScene(copy.string());
     INFO(saved.error);
     REQUIRE(saved.Ok());
     CHECK(saved.scene.view.zoom == kMaxViewZoom);
 
-    h.app->camera.zoom = 1e-12;
-    h.app->camera.center = {-5e12, 3.0};
-    h.app->dirty = true;
+    h.app->SetCamera({-5e12, 3.0}, 1e-12);
     h.Key('S', true);
     saved = LoadScene(copy.string());
     INFO(saved.error);
@@ -495,9 +655,9 @@ TEST_CASE("Saving after an edit keeps the file's $schema, its box shorthand and 
     Harness h(copy.string());
     const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
     h.Drag(from, ImVec2(from.x + 30.0f, from.y));
-    REQUIRE(h.app->dirty);
+    REQUIRE(h.Doc().Dirty());
     h.Key('S', true);
-    REQUIRE(!h.app->dirty);
+    REQUIRE(!h.Doc().Dirty());
     std::ifstream in(copy);
     const nlohmann::ordered_json saved = nlohmann::ordered_json::parse(in);
     CHECK(saved.begin().key() == "$schema");
@@ -516,13 +676,13 @@ TEST_CASE("Opening another scene with unsaved changes asks first: cancel keeps t
     Harness h(copy.string());
     // Without changes, another scene opens at once.
     CHECK(h.app->RequestOpen(other.string()));
-    CHECK(h.app->file == other.string());
+    CHECK(h.Doc().File() == other.string());
     REQUIRE(h.app->Open(copy.string()));
     h.Frames(2);
 
     const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
     h.Drag(from, ImVec2(from.x + 30.0f, from.y));
-    REQUIRE(h.app->dirty);
+    REQUIRE(h.Doc().Dirty());
     const Vec2 moved = h.BodyNamed("B").position;
 
     // ctrl+o, a path, Enter: the question comes before anything is opened.
@@ -530,18 +690,18 @@ TEST_CASE("Opening another scene with unsaved changes asks first: cancel keeps t
     REQUIRE(Harness::Showing("Open scene"));
     h.TypeAndEnter(other.string());
     CHECK(Harness::Showing("Unsaved changes before opening"));
-    CHECK(h.app->file == copy.string());
+    CHECK(h.Doc().File() == copy.string());
     REQUIRE(h.ClickButton("Unsaved changes before opening", "Cancel"));
     CHECK(!Harness::Showing("Unsaved changes before opening"));
-    CHECK(h.app->file == copy.string());
-    CHECK(h.app->dirty);
+    CHECK(h.Doc().File() == copy.string());
+    CHECK(h.Doc().Dirty());
     CHECK(h.BodyNamed("B").position == moved);
 
     // The menus ask the same way; "Open without saving" opens the other scene and leaves the file as it was.
     CHECK(!h.app->RequestOpen(other.string()));
     REQUIRE(h.ClickButton("Unsaved changes before opening", "Open without saving"));
-    CHECK(h.app->file == other.string());
-    CHECK(!h.app->dirty);
+    CHECK(h.Doc().File() == other.string());
+    CHECK(!h.Doc().Dirty());
     const SceneResult onDisk = LoadScene(copy.string());
     REQUIRE(onDisk.Ok());
     CHECK(onDisk.scene.bodies[1].position != moved);
@@ -554,12 +714,12 @@ TEST_CASE("Save and open saves the changes, then opens the other scene", "[app]"
     Harness h(copy.string());
     const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
     h.Drag(from, ImVec2(from.x - 25.0f, from.y + 10.0f));
-    REQUIRE(h.app->dirty);
+    REQUIRE(h.Doc().Dirty());
     const Vec2 moved = h.BodyNamed("B").position;
     CHECK(!h.app->RequestOpen(other.string()));
     REQUIRE(h.ClickButton("Unsaved changes before opening", "Save and open"));
-    CHECK(h.app->file == other.string());
-    CHECK(!h.app->dirty);
+    CHECK(h.Doc().File() == other.string());
+    CHECK(!h.Doc().Dirty());
     const SceneResult saved = LoadScene(copy.string());
     REQUIRE(saved.Ok());
     CHECK(saved.scene.bodies[1].position == moved);
@@ -568,18 +728,18 @@ TEST_CASE("Save and open saves the changes, then opens the other scene", "[app]"
 TEST_CASE("Save and open on a bundled scene asks where to save, and opens nothing when that is cancelled", "[app]")
 {
     Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
-    REQUIRE(h.app->readOnly);
-    const std::string bundled = h.app->file;
+    REQUIRE(h.Doc().ReadOnly());
+    const std::string bundled = h.Doc().File();
     const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
     h.Drag(from, ImVec2(from.x + 15.0f, from.y));
-    REQUIRE(h.app->dirty);
+    REQUIRE(h.Doc().Dirty());
     CHECK(!h.app->RequestOpen(ScratchCopy("separated_triangle.json").string()));
     REQUIRE(h.ClickButton("Unsaved changes before opening", "Save and open"));
     REQUIRE(Harness::Showing("Save scene as"));
     REQUIRE(h.ClickButton("Save scene as", "Cancel"));
     CHECK(!Harness::Showing("Save scene as"));
-    CHECK(h.app->file == bundled);
-    CHECK(h.app->dirty);
+    CHECK(h.Doc().File() == bundled);
+    CHECK(h.Doc().Dirty());
 }
 
 TEST_CASE("A large pair is tested on a worker thread while frames go on, and the figure follows", "[app]")
@@ -589,13 +749,13 @@ TEST_CASE("A large pair is tested on a worker thread while frames go on, and the
     background.backgroundVertices = 8;
     Harness h(ScratchCopy("many_sides.json").string(), background);
     REQUIRE(h.AwaitStudy());
-    REQUIRE(h.app->setup.Ok());
+    REQUIRE(h.View().Setup().Ok());
     const Body& disc = h.BodyNamed("disc");
     const Body& triangle = h.BodyNamed("triangle");
-    CHECK(h.app->setup.study.manifold.depth == Collide(disc.shape, disc.Xf(), triangle.shape, triangle.Xf()).depth);
+    CHECK(h.View().Setup().study.manifold.depth == Collide(disc.shape, disc.Xf(), triangle.shape, triangle.Xf()).depth);
     // The textbook view: the 64-gon's opposite faces share an axis, 32 axes, then the triangle's 3 and the verdict.
-    CHECK(h.app->setup.study.StepCount() == 32 + 3 + 1);
-    CHECK(h.app->step == h.app->setup.study.VerdictStep());
+    CHECK(h.View().Setup().study.StepCount() == 32 + 3 + 1);
+    CHECK(h.View().Step() == h.View().Setup().study.VerdictStep());
 
     // An edit starts another test; the interface keeps the figure it has, and says why, until it is taken in.
     const Vec2 before = triangle.position;
@@ -604,25 +764,25 @@ TEST_CASE("A large pair is tested on a worker thread while frames go on, and the
     const Vec2 after = h.BodyNamed("triangle").position;
     REQUIRE(after != before);
     REQUIRE(h.AwaitStudy());
-    CHECK(h.app->Studied().bodies[1].position == after);
+    CHECK(h.View().Studied().bodies[1].position == after);
     const Body& moved = h.BodyNamed("triangle");
-    CHECK(h.app->setup.study.manifold.depth == Collide(disc.shape, disc.Xf(), moved.shape, moved.Xf()).depth);
+    CHECK(h.View().Setup().study.manifold.depth == Collide(disc.shape, disc.Xf(), moved.shape, moved.Xf()).depth);
 
     // Stepping does not test again: it only picks another step of the same trace.
     h.Key(kLeft);
-    CHECK(!h.app->Studying());
-    CHECK(h.app->step == h.app->setup.study.VerdictStep() - 1);
-    CHECK(h.app->setup.figure.step == h.app->step);
+    CHECK(!h.View().Studying());
+    CHECK(h.View().Step() == h.View().Setup().study.VerdictStep() - 1);
+    CHECK(h.View().Setup().figure.step == h.View().Step());
 
     // Opening another scene drops the figure of the one before until its own test is in.
     REQUIRE(h.app->Open(ScratchCopy("many_sides.json").string()));
-    CHECK(!h.app->setup.Ok());
+    CHECK(!h.View().Setup().Ok());
     h.Frames(1);
     // The worker may finish within that frame on a fast machine, so only what does not race is checked here.
-    CHECK(h.app->status.find("worker thread") == std::string::npos); // the status line shows it, not `status`
+    CHECK(h.app->Status().find("worker thread") == std::string::npos); // the status line shows it, not `status`
     REQUIRE(h.AwaitStudy());
-    CHECK(h.app->setup.Ok());
-    CHECK(h.app->Studied().bodies[1].position == before);
+    CHECK(h.View().Setup().Ok());
+    CHECK(h.View().Studied().bodies[1].position == before);
 }
 
 TEST_CASE("Every scene a lesson names opens in the app, with a figure and its steps", "[app][lessons]")
@@ -649,9 +809,9 @@ TEST_CASE("Every scene a lesson names opens in the app, with a figure and its st
     {
         INFO(scene);
         Harness h((tutorials / "scenes" / (scene + ".json")).string());
-        REQUIRE(h.app->setup.Ok());
-        CHECK(h.app->setup.study.StepCount() >= 1);
-        CHECK(!h.app->statusIsError);
+        REQUIRE(h.View().Setup().Ok());
+        CHECK(h.View().Setup().study.StepCount() >= 1);
+        CHECK(!h.app->StatusIsError());
     }
 }
 
@@ -715,16 +875,16 @@ TEST_CASE("Help > Lessons lists the lessons, and opening one shows its text and 
     REQUIRE(h.app->OpenLesson(2));
     h.Frames(3);
     CHECK(h.app->CurrentLesson() == 2);
-    CHECK(h.app->showLesson);
+    CHECK(h.app->LessonShown());
     REQUIRE(!h.app->LessonBlocks().empty());
     CHECK(h.app->LessonBlocks()[0].text == lessons[2].title);
     REQUIRE(!lessons[2].scenes.empty());
-    CHECK(fs::equivalent(h.app->file, lessons[2].scenes.front()));
-    CHECK(h.app->setup.Ok());
+    CHECK(fs::equivalent(h.Doc().File(), lessons[2].scenes.front()));
+    CHECK(h.View().Setup().Ok());
     REQUIRE(h.app->OpenLesson(3));
     h.Frames(3);
     CHECK(h.app->CurrentLesson() == 3);
-    CHECK(fs::equivalent(h.app->file, lessons[3].scenes.front()));
+    CHECK(fs::equivalent(h.Doc().File(), lessons[3].scenes.front()));
     CHECK_FALSE(h.app->OpenLesson(static_cast<int>(lessons.size())));
     CHECK(h.app->CurrentLesson() == 3);
 }

@@ -22,6 +22,17 @@ foreach(file include/satviz/sat.h share/satviz/scenes/overlapping_boxes.json)
   endif()
 endforeach()
 
+# Every installed scene names a schema that exists beside it.
+file(GLOB installed_scenes ${prefix}/share/satviz/scenes/*.json)
+foreach(scene IN LISTS installed_scenes)
+  file(READ ${scene} text)
+  string(REGEX MATCH "\"\\$schema\": \"([^\"]*)\"" found "${text}")
+  get_filename_component(dir ${scene} DIRECTORY)
+  if(NOT found OR NOT EXISTS ${dir}/${CMAKE_MATCH_1})
+    message(FATAL_ERROR "install test: ${scene} names the schema '${CMAKE_MATCH_1}', which is not installed there")
+  endif()
+endforeach()
+
 run(${CMAKE_COMMAND} -S ${CONSUMER_DIR} -B ${build} -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
     -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_PREFIX_PATH=${prefix} "-DCMAKE_EXE_LINKER_FLAGS=${LINK_FLAGS}")
 run(${CMAKE_COMMAND} --build ${build})

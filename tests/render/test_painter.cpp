@@ -5,6 +5,7 @@
 
 #include <satviz/render/describe.h>
 #include <satviz/render/figure.h>
+#include <satviz/render/layers.h>
 #include <satviz/render/recording_canvas.h>
 
 #include <catch2/catch.hpp>
@@ -361,6 +362,37 @@ TEST_CASE("The caption of a step states the trace's numbers", "[painter]")
             }
         }
     }
+}
+
+TEST_CASE("The layer table is what scene files accept, and its names and bits are one-to-one", "[painter]")
+{
+    std::vector<std::string> names;
+    for (const LayerInfo& layer : kLayerTable)
+    {
+        names.emplace_back(layer.name);
+        CHECK(LayerFromName(layer.name) == layer.bit);
+        CHECK(!layer.description.empty());
+    }
+    CHECK(LayerNames(kAllLayers) == names);
+    CHECK(LayersFromNames(names) == kAllLayers);
+    CHECK(kDefaultLayers == (kAllLayers & ~(kLayerNormals | kLayerAxes | kLayerMinkowski)));
+    CHECK(LayerFromName("mvt") == 0);
+    CHECK(LayerNameList() ==
+          "shapes, labels, normals, axes, projection, exit, best, mtv, contacts, swept, ghost, caption, minkowski");
+    // Every name loads from a scene file's view block and gives back its own bit; an unknown one is one line naming
+    // the file and the field.
+    const std::string two = R"({"bodies": [{"box": [1, 1]}, {"box": [1, 1]}], "view": {"layers": [")";
+    for (const LayerInfo& layer : kLayerTable)
+    {
+        INFO(layer.name);
+        const SceneResult loaded = ParseScene(two + std::string(layer.name) + R"("]}})", "s.json");
+        REQUIRE(loaded.Ok());
+        const FigureSetup setup = SetUpFigure(loaded.scene, {});
+        REQUIRE(setup.Ok());
+        CHECK(setup.figure.layers == layer.bit);
+    }
+    CHECK(ParseScene(two + R"(mvt"]}})", "s.json").error ==
+          "s.json: view.layers[0]: unknown layer \"mvt\" (known layers: " + LayerNameList() + ")");
 }
 
 TEST_CASE("A layer that is off draws nothing, and each layer draws only its own groups", "[painter]")

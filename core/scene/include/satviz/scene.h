@@ -72,15 +72,6 @@ std::string_view PitfallName(Pitfall pitfall);
 /// The pitfall of a name, false for an unknown one.
 bool PitfallFromName(std::string_view name, Pitfall& pitfall);
 
-/// Names of the drawing layers a view can switch on, in drawing order (see render/README.md).
-inline const std::vector<std::string>& ViewLayerNames()
-{
-    static const std::vector<std::string> names = {"shapes", "labels",  "normals",  "axes",     "projection",
-                                                   "exit",   "best",    "mtv",      "contacts", "swept",
-                                                   "ghost",  "caption", "minkowski"};
-    return names;
-}
-
 /// How a scene is to be pictured: camera, image size, layers, the pair and the step of its trace. Optional in a
 /// scene file ("view": {...}); every field has a default.
 struct SceneView

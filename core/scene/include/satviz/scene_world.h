@@ -24,15 +24,16 @@ std::string ValidateSceneWorld(const Scene& scene);
 /// its defaults; the step length is the caller's (scene.world.dt).
 World MakeWorld(const Scene& scene);
 
-/// Copies the world's state into the scene's bodies, body i to body i: positions, angles, velocities and angular
-/// velocities, so that SaveScene writes the world as it is now as a scene that loads again. The world must have
+/// Copies the world's state into the scene's bodies, body i to body i: positions, angles (turned into [-pi, pi]:
+/// the same orientation, without the world's count of whole turns), velocities and angular velocities, so that
+/// SaveScene writes the world as it is now as a scene that loads again. The world must have
 /// been made from the scene (the same number of bodies).
 void CopyWorldState(const World& world, Scene& scene);
 
 /// Steps the scene as a world `steps` (>= 0) times by its dt and copies the state back: MakeWorld, Step,
 /// CopyWorldState. What satviz-render and the app do for a view's sim_steps. Returns "" on success, else the
 /// problem, the scene unchanged: a scene that fails ValidateSceneWorld, a negative count, or a state the scene
-/// format cannot hold (a body flung beyond kMaxSceneValue, an angle wound past 1e6 radians).
+/// format cannot hold (a body flung beyond kMaxSceneValue).
 std::string SimulateScene(Scene& scene, int steps);
 
 } // namespace satviz

@@ -4,49 +4,13 @@
 #pragma once
 
 #include <satviz/render/canvas.h>
+#include <satviz/render/layers.h>
 #include <satviz/render/study.h>
 
-#include <cstdint>
 #include <string>
-#include <string_view>
-#include <vector>
 
 namespace satviz
 {
-
-/// A set of drawing layers, one bit per layer.
-using LayerMask = uint32_t;
-
-/// The drawing layers. A layer that is off costs nothing: the painter skips its work entirely.
-enum Layer : LayerMask
-{
-    kLayerShapes = 1u << 0,     ///< the bodies, filled and outlined
-    kLayerLabels = 1u << 1,     ///< body names, vertex and edge numbers
-    kLayerNormals = 1u << 2,    ///< outward edge normals
-    kLayerAxes = 1u << 3,       ///< every candidate axis, faint, through the pair
-    kLayerProjection = 1u << 4, ///< the current axis, both projection intervals on it and on a number line
-    kLayerExit = 1u << 5,       ///< the early exit: the separating line of a separating axis
-    kLayerBest = 1u << 6,       ///< the best (least overlap or latest entry) axis so far
-    kLayerMtv = 1u << 7,        ///< the minimum translation vector and B moved out by it
-    kLayerContacts = 1u << 8,   ///< contact points, reference face, incident edge, clipping planes
-    kLayerSwept = 1u << 9,      ///< velocities, swept intervals, entry and exit times on a time bar
-    kLayerGhost = 1u << 10,     ///< the moving shapes at the time of impact (and at the chosen time)
-    kLayerCaption = 1u << 11,   ///< the caption above the figure
-    /// An inset of the Minkowski difference A - B: the origin inside it exactly when the shapes overlap, the MTV as
-    /// the origin's shortest way out, and for sweeps the relative motion as a ray from the origin.
-    kLayerMinkowski = 1u << 12,
-};
-
-/// Every layer.
-constexpr LayerMask kAllLayers = (1u << 13) - 1;
-/// The layers drawn when a scene does not choose: all but the normals, the candidate axes and the Minkowski inset.
-constexpr LayerMask kDefaultLayers = kAllLayers & ~(kLayerNormals | kLayerAxes | kLayerMinkowski);
-
-/// The layer of a name of ViewLayerNames() ("shapes", "labels", ...), or 0 for an unknown name.
-LayerMask LayerFromName(std::string_view name);
-
-/// The mask of a list of layer names; unknown names are ignored (the scene loader rejects them).
-LayerMask LayersFromNames(const std::vector<std::string>& names);
 
 /// What to picture: the camera, the layers, the trace step and the time.
 struct Figure

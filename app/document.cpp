@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+#include "document.h"
+
+#include <satviz/scene_world.h>
+
+#include <filesystem>
+#include <utility>
+
+namespace satviz
+{
+
+OpenResult Document::Open(const std::string& path, const std::string& bundledDir)
+{
+    OpenResult opened;
+    SceneResult result = LoadScene(path);
+    if (!result.Ok())
+    {
+        opened.error = result.error;
+        return opened;
+    }
+    if (result.scene.bodies.size() < 2)
+    {
+        opened.error = path + ": bodies: the app needs at least two bodies to test";
+        return opened;
+    }
+    // A view that asks for rigid-body steps is shown where they leave the bodies, as satviz-render draws it. The
+    // scene then holds that state, its sim_steps back to 0, so that a save or an export pictures what the canvas
+    // shows.
+    opened.simSteps = result.scene.view.simSteps;
+    if (const std::string error = SimulateScene(result.scene, opened.simSteps); !error.empty())
+    {
+        opened.error = path + ": " + error;
+        return opened;
+    }
+    result.scene.view.simSteps = 0;
+    scene_ = std::move(result.scene);
+    file_ = path;
+    std::error_code code;
+    const auto canonical = std::filesystem::weakly_canonical(path, code);
+    const auto bundled = std::filesystem::weakly_canonical(bundledDir, code);
+    readOnly_ = !bundledDir.empty() && canonical.parent_path() == bundled;
+    dirty_ = false;
+    undo_.clear();
+    redo_.clear();
+    editOpen_ = false;
+    opened.ok = true;
+    return opened;
+}
+
+bool Document::Save(Scene saved, const std::string& path, std::string& error)
+{
+    if (!SaveScene(saved, path, error))
+    {
+        return false;
+    }
+    scene_ = std::move(saved);
+    file_ = path;
+    readOnly_ = false;
+    dirty_ = false;
+    return true;
+}
+
+void Document::BeginEdit(const ViewChoices& choices)
+{
+    if (editOpen_)
+    {
+        return;
+    }
+    editStart_ = {scene_, choices};
+    editOpen_ = true;
+}
+
+void Document::AddBody(Body body)
+{
+    scene_.bodies.push_back(std::move(body));
+}
+
+void Document::RemoveBody(size_t index)
+{
+    scene_.bodies.erase(scene_.bodies.begin() + static_cast<std::ptrdiff_t>(index));
+}
+
+bool Document::CommitEdit()
+{
+    if (!editOpen_)
+    {
+        return false;
+    }
+    editOpen_ = false;
+    if (SceneToJson(editStart_.scene) == SceneToJson(scene_))
+    {
+        return false; // a click without a change is not an edit
+    }
+    undo_.push_back(std::move(editStart_));
+    redo_.clear();
+    dirty_ = true;
+    return true;
+}
+
+void Document::RecordChoices(const ViewChoices& before)
+{
+    undo_.push_back({scene_, before});
+    redo_.clear();
+    dirty_ = true;
+}
+
+bool Document::Undo(ViewChoices& choices)
+{
+    if (undo_.empty() || editOpen_)
+    {
+        return false;
+    }
+    redo_.push_back({std::move(scene_), choices});
+    scene_ = std::move(undo_.back().scene);
+    choices = std::move(undo_.back().choices);
+    undo_.pop_back();
+    dirty_ = true;
+    return true;
+}
+
+bool Document::Redo(ViewChoices& choices)
+{
+    if (redo_.empty() || editOpen_)
+    {
+        return false;
+    }
+    undo_.push_back({std::move(scene_), choices});
+    scene_ = std::move(redo_.back().scene);
+    choices = std::move(redo_.back().choices);
+    redo_.pop_back();
+    dirty_ = true;
+    return true;
+}
+
+} // namespace satviz

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+// satviz app: the document, the scene being edited with its file and the history of its edits. Each state of the
+// history holds the scene and the viewer's choices (pair, query, layers, precision...) of that moment, so that undo
+// and redo restore both. No ImGui here.
+#pragma once
+
+#include "view_choices.h"
+
+#include <satviz/scene.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace satviz
+{
+
+/// What opening a scene file gave.
+struct OpenResult
+{
+    bool ok = false;   ///< the scene is open
+    std::string error; ///< why not: one line naming the file and the field
+    int simSteps = 0;  ///< the rigid-body steps its view block asked for, taken before it was opened
+};
+
+/// The scene being edited, its file, whether it has unsaved changes, and its undo and redo history.
+class Document
+{
+  public:
+    /// Opens the scene file `path`, stepped by its view's sim_steps (which are then back at 0). A file in
+    /// `bundledDir` (the bundled scenes) opens read-only: saving asks for another file. On failure the document
+    /// stays as it was.
+    OpenResult Open(const std::string& path, const std::string& bundledDir);
+    /// Writes `saved` (the scene with the view block of the moment) to `path` atomically; from then on the document
+    /// holds it, from that file, without unsaved changes. False, with `error` set, when it cannot be written.
+    bool Save(Scene saved, const std::string& path, std::string& error);
+
+    /// The scene being edited.
+    const Scene& GetScene() const { return scene_; }
+    /// Its file; empty for a scene not read from a file.
+    const std::string& File() const { return file_; }
+    /// True for a bundled scene: saving asks for another file.
+    bool ReadOnly() const { return readOnly_; }
+    /// True when there are changes since the scene was opened or saved.
+    bool Dirty() const { return dirty_; }
+
+    /// Starts an edit of the bodies (a drag, a number being dragged): the scene now and the viewer's `choices` are
+    /// kept until CommitEdit, so that the whole edit is undone in one step. Does nothing while an edit is open.
+    void BeginEdit(const ViewChoices& choices);
+    /// True between BeginEdit and CommitEdit.
+    bool EditOpen() const { return editOpen_; }
+    /// Body `index`, to change in place while an edit is open.
+    Body& EditBody(size_t index) { return scene_.bodies[index]; }
+    /// Adds `body` after the others, while an edit is open.
+    void AddBody(Body body);
+    /// Removes body `index`, while an edit is open.
+    void RemoveBody(size_t index);
+    /// Ends the edit: the state it began from goes on the undo stack, unless the scene did not change (a click is
+    /// not an edit). True when it did.
+    bool CommitEdit();
+
+    /// Records a change of the viewer's choices about to be made: the scene with the choices `before` it goes on
+    /// the undo stack, and the redo stack is cleared.
+    void RecordChoices(const ViewChoices& before);
+    /// Undoes the last edit. `choices` gives the viewer's current choices (kept for Redo) and receives those of the
+    /// restored state. False when there is nothing to undo or an edit is open.
+    bool Undo(ViewChoices& choices);
+    /// Redoes the last undone edit, as Undo does. False when there is nothing to redo or an edit is open.
+    bool Redo(ViewChoices& choices);
+    /// Number of edits that can be undone.
+    size_t UndoDepth() const { return undo_.size(); }
+    /// Number of undone edits that can be redone.
+    size_t RedoDepth() const { return redo_.size(); }
+
+  private:
+    /// One state of the history: the scene and the viewer's choices of that moment.
+    struct State
+    {
+        Scene scene;
+        ViewChoices choices;
+    };
+
+    Scene scene_;
+    std::string file_;
+    bool readOnly_ = false;
+    bool dirty_ = false;
+    std::vector<State> undo_;
+    std::vector<State> redo_;
+    bool editOpen_ = false;
+    State editStart_;
+};
+
+} // namespace satviz

@@ -1,0 +1,975 @@
+// SPDX-License-Identifier: MIT
+// satviz app: the panels on Dear ImGui. The canvas and its mouse handling are in canvas.cpp.
+//
+// Index:
+// [SECTION] Helpers
+// [SECTION] Keyboard shortcuts
+// [SECTION] Menus
+// [SECTION] Side panel: the pair, the steps, the numbers, the layers
+// [SECTION] Status bar, popups and help
+// [SECTION] Lesson window
+#include "app.h"
+
+#include <satviz/render/describe.h>
+#include <satviz/render/layers.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iterator>
+
+namespace satviz
+{
+
+// [SECTION] Helpers
+
+namespace
+{
+
+bool Ctrl()
+{
+    return ImGui::GetIO().KeyCtrl;
+}
+
+bool Pressed(int key)
+{
+    return key >= 0 && ImGui::IsKeyPressed(key, false);
+}
+
+bool PressedNamed(ImGuiKey key)
+{
+    return Pressed(ImGui::GetKeyIndex(key));
+}
+
+// A modal popup asking for a file path; true on the frame the user confirms it (button or Enter).
+bool PathPopup(const char* title, const char* prompt, const char* action, char* buffer, size_t size)
+{
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    {
+        return false;
+    }
+    ImGui::TextUnformatted(prompt);
+    ImGui::SetNextItemWidth(480.0f);
+    if (ImGui::IsWindowAppearing())
+    {
+        ImGui::SetKeyboardFocusHere();
+    }
+    const bool enter = ImGui::InputText("##path", buffer, size, ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool confirmed = ImGui::Button(action) || enter;
+    ImGui::SameLine();
+    if (confirmed || ImGui::Button("Cancel"))
+    {
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+    return confirmed;
+}
+
+void HelpMarker(const char* text)
+{
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered())
+    {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+        ImGui::TextUnformatted(text);
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
+}
+
+} // namespace
+
+void Panels::Draw()
+{
+    MenuBar();
+    CanvasWindow();
+    SidePanel();
+    StatusBar();
+    Popups();
+    if (showHelp_)
+    {
+        HelpOverlay();
+    }
+    if (app_.LessonShown())
+    {
+        LessonWindow();
+    }
+}
+
+// Saves to the scene's file, or asks for one when it has none or is a bundled scene.
+void Panels::SaveOrAsk()
+{
+    const Document& document = app_.GetDocument();
+    if (document.File().empty() || document.ReadOnly())
+    {
+        askSaveAs_ = true;
+    }
+    else
+    {
+        app_.Save(document.File());
+    }
+}
+
+// [SECTION] Keyboard shortcuts
+
+void Panels::Shortcuts()
+{
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput)
+    {
+        return;
+    }
+    const AppKeys& k = app_.Options().keys;
+    if (Ctrl())
+    {
+        if (PressedNamed(ImGuiKey_Z))
+        {
+            if (!app_.Undo())
+            {
+                app_.SetStatus("Nothing to undo", false);
+            }
+        }
+        if (PressedNamed(ImGuiKey_Y))
+        {
+            if (!app_.Redo())
+            {
+                app_.SetStatus("Nothing to redo", false);
+            }
+        }
+        if (Pressed(k.s))
+        {
+            SaveOrAsk();
+        }
+        if (Pressed(k.o))
+        {
+            askOpen_ = true;
+        }
+        if (Pressed(k.e))
+        {
+            app_.RequestExport();
+        }
+        if (Pressed(k.q))
+        {
+            app_.RequestQuit();
+        }
+        return;
+    }
+    const Viewer& viewer = app_.GetViewer();
+    if (PressedNamed(ImGuiKey_Space))
+    {
+        app_.TogglePlay();
+    }
+    if (PressedNamed(ImGuiKey_RightArrow) && viewer.Step() < viewer.Setup().study.VerdictStep())
+    {
+        app_.ShowStep(viewer.Step() + 1);
+    }
+    if (PressedNamed(ImGuiKey_LeftArrow) && viewer.Step() > 0)
+    {
+        app_.ShowStep(viewer.Step() - 1);
+    }
+    if (PressedNamed(ImGuiKey_Delete))
+    {
+        app_.DeleteSelected();
+    }
+    if (Pressed(k.f1))
+    {
+        showHelp_ = !showHelp_;
+    }
+    if (Pressed(k.f))
+    {
+        app_.FitCamera();
+    }
+    if (PressedNamed(ImGuiKey_Escape))
+    {
+        showHelp_ = false;
+    }
+}
+
+// [SECTION] Menus
+
+void Panels::MenuBar()
+{
+    if (!ImGui::BeginMainMenuBar())
+    {
+        return;
+    }
+    if (ImGui::BeginMenu("File"))
+    {
+        if (ImGui::MenuItem("Open...", "Ctrl+O"))
+        {
+            askOpen_ = true;
+        }
+        if (ImGui::BeginMenu("Bundled scenes"))
+        {
+            for (const std::string& path : app_.BundledScenes())
+            {
+                if (ImGui::MenuItem(std::filesystem::path(path).stem().string().c_str()))
+                {
+                    app_.RequestOpen(path);
+                }
+            }
+            ImGui::EndMenu();
+        }
+        if (ImGui::BeginMenu("Recent", !app_.Recent().empty()))
+        {
+            // A copy: opening a file reorders the list.
+            for (const std::string& path : std::vector<std::string>(app_.Recent()))
+            {
+                if (ImGui::MenuItem(path.c_str()))
+                {
+                    app_.RequestOpen(path);
+                }
+            }
+            ImGui::EndMenu();
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Save", "Ctrl+S"))
+        {
+            SaveOrAsk();
+        }
+        if (ImGui::MenuItem("Save as..."))
+        {
+            askSaveAs_ = true;
+        }
+        if (ImGui::MenuItem("Export PNG", "Ctrl+E"))
+        {
+            app_.RequestExport();
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit", "Ctrl+Q"))
+        {
+            app_.RequestQuit();
+        }
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit"))
+    {
+        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, app_.GetDocument().UndoDepth() > 0))
+        {
+            app_.Undo();
+        }
+        if (ImGui::MenuItem("Redo", "Ctrl+Y", false, app_.GetDocument().RedoDepth() > 0))
+        {
+            app_.Redo();
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Add box"))
+        {
+            app_.AddBody(MakeShape(MakeBox(0.5, 0.5).polygon), "box");
+        }
+        if (ImGui::MenuItem("Add triangle"))
+        {
+            app_.AddBody(MakeShape(MakeRegularPolygon(3, 0.6).polygon), "triangle");
+        }
+        if (ImGui::MenuItem("Add regular polygon"))
+        {
+            app_.AddBody(MakeShape(MakeRegularPolygon(newSides_, 0.6).polygon), "polygon");
+        }
+        ImGui::SetNextItemWidth(120.0f);
+        if (ImGui::InputInt("sides", &newSides_))
+        {
+            newSides_ = std::clamp(newSides_, 3, 4096);
+        }
+        if (ImGui::MenuItem("Add circle"))
+        {
+            app_.AddBody(MakeShape(Circle{{0.0, 0.0}, 0.5}), "circle");
+        }
+        if (ImGui::MenuItem("Delete selected", "Del", false, app_.Selected() >= 0))
+        {
+            app_.DeleteSelected();
+        }
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View"))
+    {
+        if (ImGui::MenuItem("Fit the pair", "F"))
+        {
+            app_.FitCamera();
+        }
+        ImGui::Separator();
+        LayerToggles();
+        ImGui::Separator();
+        ImGui::MenuItem("Help", "F1", &showHelp_);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Help"))
+    {
+        ImGui::MenuItem("Controls and conventions", "F1", &showHelp_);
+        LessonsMenu();
+        ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+}
+
+void Panels::LessonsMenu()
+{
+    const std::vector<Lesson>& lessons = app_.Lessons();
+    if (!ImGui::BeginMenu("Lessons", !lessons.empty()))
+    {
+        return;
+    }
+    for (size_t i = 0; i < lessons.size(); ++i)
+    {
+        if (ImGui::MenuItem(lessons[i].title.c_str(), nullptr,
+                            static_cast<int>(i) == app_.CurrentLesson() && app_.LessonShown()))
+        {
+            app_.OpenLesson(static_cast<int>(i));
+        }
+    }
+    ImGui::EndMenu();
+}
+
+// One switch per row of the layer table, with its description as the tooltip.
+void Panels::LayerToggles()
+{
+    const LayerMask layers = app_.GetViewer().Choices().layers;
+    for (const LayerInfo& layer : kLayerTable)
+    {
+        bool on = (layers & layer.bit) != 0;
+        if (ImGui::Checkbox(std::string(layer.name).c_str(), &on))
+        {
+            app_.SetLayers(on ? (layers | layer.bit) : (layers & ~layer.bit));
+        }
+        if (ImGui::IsItemHovered())
+        {
+            ImGui::SetTooltip("%.*s", static_cast<int>(layer.description.size()), layer.description.data());
+        }
+    }
+}
+
+// [SECTION] Side panel: the pair, the steps, the numbers, the layers
+
+void Panels::SidePanel()
+{
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const float top = ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x - kPanelWidth, viewport->Pos.y + top));
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, viewport->Size.y - 2.0f * top));
+    ImGui::Begin("##panel", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    const Document& document = app_.GetDocument();
+    const std::string title = (document.File().empty() ? std::string("untitled")
+                                                       : std::filesystem::path(document.File()).filename().string()) +
+                              (document.Dirty() ? " (modified)" : "");
+    ImGui::TextUnformatted(title.c_str());
+    if (!document.GetScene().description.empty())
+    {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", document.GetScene().description.c_str());
+        ImGui::PopStyleColor();
+    }
+    ImGui::Separator();
+    if (app_.GetViewer().Setup().Ok())
+    {
+        StepControls();
+        Inspector();
+    }
+    if (ImGui::CollapsingHeader("Layers"))
+    {
+        LayerToggles();
+    }
+    ImGui::End();
+}
+
+void Panels::StepControls()
+{
+    const Viewer& viewer = app_.GetViewer();
+    const PairStudy& study = viewer.Setup().study;
+    const Scene& studied = viewer.Studied();
+    const ViewChoices& choices = viewer.Choices();
+    // The pair and the test, named as in the scene that was tested (the current one, unless a test still runs
+    // in the background).
+    const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
+    for (int s = 0; s < 2; ++s)
+    {
+        const int current = s == 0 ? study.bodyA : study.bodyB;
+        ImGui::SetNextItemWidth(half);
+        if (s == 1)
+        {
+            ImGui::SameLine();
+        }
+        const std::string label = s == 0 ? "##A" : "##B";
+        if (ImGui::BeginCombo(
+                label.c_str(),
+                (std::string(s == 0 ? "A: " : "B: ") + studied.bodies[static_cast<size_t>(current)].name).c_str()))
+        {
+            for (size_t i = 0; i < studied.bodies.size(); ++i)
+            {
+                const int other = s == 0 ? study.bodyB : study.bodyA;
+                if (static_cast<int>(i) == other)
+                {
+                    continue;
+                }
+                if (ImGui::Selectable(studied.bodies[i].name.c_str(), static_cast<int>(i) == current))
+                {
+                    const std::string& picked = studied.bodies[i].name;
+                    const std::string& kept = studied.bodies[static_cast<size_t>(other)].name;
+                    app_.SetPair(s == 0 ? picked : kept, s == 0 ? kept : picked);
+                }
+            }
+            ImGui::EndCombo();
+        }
+    }
+    int query = static_cast<int>(choices.query);
+    const char* queries[] = {"automatic (sweep when moving)", "static test (Collide)", "swept test (Sweep)"};
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::Combo("##query", &query, queries, 3))
+    {
+        app_.SetQuery(static_cast<ViewQuery>(query));
+    }
+    int steps = choices.steps == StepView::Faces ? 1 : 0;
+    const char* views[] = {"textbook SAT: both intervals per axis", "face tests, as the fast path runs them"};
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::Combo("##steps", &steps, views, 2))
+    {
+        app_.SetStepView(steps == 1 ? StepView::Faces : StepView::Textbook);
+    }
+    if (ImGui::IsItemHovered())
+    {
+        ImGui::SetTooltip("The textbook test projects both shapes on each distinct axis and compares the intervals.\n"
+                          "The fast queries test faces instead: does the other shape lie wholly beyond this face?\n"
+                          "Each axis is two face tests, one per side; both give the same verdict and MTV.");
+    }
+    // A classic mistake beside the right answer: the library never takes it, the view shows what it would do.
+    int pitfall = static_cast<int>(choices.pitfall);
+    const char* pitfalls[] = {"no pitfall",
+                              "pitfall: axes not normalised",
+                              "pitfall: push direction not checked",
+                              "pitfall: only A's axes tested",
+                              "pitfall: motion sampled, not swept",
+                              "pitfall: float on world coordinates"};
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::Combo("##pitfall", &pitfall, pitfalls, static_cast<int>(std::size(pitfalls))))
+    {
+        app_.SetPitfall(static_cast<Pitfall>(pitfall));
+    }
+    if (ImGui::IsItemHovered())
+    {
+        ImGui::SetTooltip(
+            "Shows what a classic SAT mistake would answer, beside the right answer, on the verdict step\n"
+            "(a dashed arrow and a sentence). The library's queries never make it.");
+    }
+
+    ImGui::Separator();
+    const int step = viewer.Step();
+    const int last = study.VerdictStep();
+    ImGui::BeginDisabled(step <= 0);
+    if (ImGui::ArrowButton("##previous", ImGuiDir_Left))
+    {
+        app_.ShowStep(step - 1);
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(step >= last);
+    if (ImGui::ArrowButton("##next", ImGuiDir_Right))
+    {
+        app_.ShowStep(step + 1);
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button(viewer.Playing() ? "Pause" : "Play"))
+    {
+        app_.TogglePlay();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Verdict"))
+    {
+        app_.ShowStep(last);
+    }
+    ImGui::SameLine();
+    ImGui::Text("step %d of %d", viewer.Step() + 1, study.StepCount());
+    ImGui::SetNextItemWidth(-1.0f);
+    int shown = viewer.Step();
+    const std::string sliderText = viewer.Step() == last ? "verdict" : "axis " + std::to_string(viewer.Step() + 1);
+    if (ImGui::SliderInt("##step", &shown, 0, last, sliderText.c_str()) && shown != viewer.Step())
+    {
+        app_.ShowStep(shown);
+    }
+    ImGui::TextWrapped("%s", DescribeStep(studied, study, viewer.Step()).c_str());
+
+    ImGui::Separator();
+    ImGui::TextUnformatted(study.Textbook() ? "Axes tested (click one)" : "Face tests run (click one)");
+    HelpMarker(study.Textbook()
+                   ? "Each row is one axis: the overlap of the two intervals on it (the shorter push that separates "
+                     "them) or the gap between them. The test stops at the first axis with a gap (a separating axis)."
+                   : "Each row is one face test: how far the other shape reaches behind the face, or how far beyond "
+                     "it it lies. The test stops at the first face with the other shape wholly beyond it.");
+    const float rows = std::min<float>(static_cast<float>(study.StepCount()), 9.0f);
+    if (ImGui::BeginChild("##axes", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 8.0f), true))
+    {
+        // Only the rows in sight are built: a polygon of 100 000 vertices has as many steps.
+        const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
+        if (ImGui::IsWindowAppearing())
+        {
+            ImGui::SetScrollY(std::max(0.0f, (static_cast<float>(viewer.Step()) - 4.0f) * rowHeight));
+        }
+        ImGuiListClipper clipper;
+        clipper.Begin(study.StepCount(), rowHeight);
+        while (clipper.Step())
+        {
+            for (int k = clipper.DisplayStart; k < clipper.DisplayEnd; ++k)
+            {
+                if (ImGui::Selectable(StepTitle(studied, study, k).c_str(), k == viewer.Step()))
+                {
+                    app_.ShowStep(k);
+                }
+            }
+        }
+    }
+    ImGui::EndChild();
+
+    if (study.sweep)
+    {
+        bool showTime = viewer.Time() >= 0.0;
+        if (ImGui::Checkbox("bodies at time", &showTime))
+        {
+            app_.SetTime(showTime ? 0.5 : -1.0);
+        }
+        ImGui::SameLine();
+        float t = static_cast<float>(std::max(viewer.Time(), 0.0));
+        ImGui::SetNextItemWidth(-1.0f);
+        ImGui::BeginDisabled(!showTime);
+        if (ImGui::SliderFloat("##time", &t, 0.0f, 1.0f, "t = %.3f"))
+        {
+            app_.SetTime(t);
+        }
+        ImGui::EndDisabled();
+    }
+}
+
+void Panels::Inspector()
+{
+    if (!ImGui::CollapsingHeader("Numbers", ImGuiTreeNodeFlags_DefaultOpen))
+    {
+        return;
+    }
+    const Viewer& viewer = app_.GetViewer();
+    bool single = viewer.Choices().singlePrecision;
+    if (ImGui::Checkbox("single precision (float)", &single))
+    {
+        app_.SetPrecision(single);
+    }
+    HelpMarker("Runs the float instantiation of the queries on the shapes rounded to float: compare its numbers "
+               "with double's to see what the precision costs.");
+    // A change of the pair's test above may have left no figure until its test is in.
+    if (!viewer.Setup().Ok())
+    {
+        return;
+    }
+    const PairStudy& study = viewer.Setup().study;
+    if (single && !study.singlePrecision)
+    {
+        ImGui::TextWrapped("A polygon is not valid once rounded to float: the numbers are double.");
+    }
+    // Every number in full, as the shortest decimal that reads back as the same value.
+    auto full = [&](double v) {
+        return study.singlePrecision ? ShortestDecimal(static_cast<float>(v)) : ShortestDecimal(v);
+    };
+    auto point = [&](Vec2 p) { return "(" + full(p.x) + ", " + full(p.y) + ")"; };
+    const Manifold& m = study.manifold;
+    ImGui::Text("overlap: %s", m.overlap ? "yes" : "no");
+    // The textbook view shows the MTV its own test found; the contact points come from Collide's clipping.
+    const bool textbook = study.Textbook();
+    const double depth = textbook ? study.textbookResult.depth : m.depth;
+    const double gap = textbook ? study.textbookResult.gap : m.gap;
+    const Vec2 normal = textbook ? study.textbookResult.normal : m.normal;
+    if (m.overlap)
+    {
+        ImGui::Text("MTV length (depth): %s", full(depth).c_str());
+    }
+    else
+    {
+        ImGui::Text("gap on the separating axis: %s", full(gap).c_str());
+    }
+    ImGui::Text("%s: %s", m.overlap ? "MTV direction (A to B)" : "separating axis (A to B)", point(normal).c_str());
+    for (int i = 0; i < m.contactCount; ++i)
+    {
+        // In the order the figure labels them c1, c2, and satviz-query lists "contacts".
+        ImGui::Text(study.sweep ? "contact c%d at t = 0: %s" : "contact c%d: %s", i + 1,
+                    point(m.contacts[i].point).c_str());
+    }
+    if (study.sweep)
+    {
+        const SweepResult& r = study.sweepResult;
+        if (r.status == SweepStatus::Hit)
+        {
+            ImGui::Text("time of impact: %s", full(r.toi).c_str());
+            ImGui::Text("normal at impact: %s", point(r.normal).c_str());
+            // The contacts the figure labels c1, c2 in a sweep (satviz-query's "toi_contacts", in that order).
+            for (int i = 0; i < r.contactCount; ++i)
+            {
+                ImGui::Text("contact c%d at impact: %s", i + 1, point(r.contacts[i].point).c_str());
+            }
+        }
+        else
+        {
+            ImGui::TextUnformatted("time of impact: none (no hit in this step)");
+        }
+    }
+    else if (study.startsOverlapping)
+    {
+        ImGui::TextUnformatted("moving, but overlapping at t = 0: no time of impact");
+    }
+    const int selected = app_.Selected();
+    const std::vector<Body>& bodies = app_.GetDocument().GetScene().bodies;
+    if (selected < 0 || selected >= static_cast<int>(bodies.size()))
+    {
+        return;
+    }
+    // Each field is one edit from the moment it is grabbed to the moment it is let go.
+    const Body& body = bodies[static_cast<size_t>(selected)];
+    ImGui::Separator();
+    ImGui::Text("selected: %s", body.name.c_str());
+    Vec2 position = body.position;
+    const bool moved = ImGui::DragScalarN("position", ImGuiDataType_Double, &position.x, 2, 0.01f);
+    if (ImGui::IsItemActivated())
+    {
+        app_.BeginEdit();
+    }
+    if (moved)
+    {
+        app_.MoveBody(selected, position);
+    }
+    if (ImGui::IsItemDeactivated())
+    {
+        app_.EndEdit();
+    }
+    double angle = bodies[static_cast<size_t>(selected)].angle;
+    const bool turned = ImGui::DragScalar("angle", ImGuiDataType_Double, &angle, 0.01f);
+    if (ImGui::IsItemActivated())
+    {
+        app_.BeginEdit();
+    }
+    if (turned)
+    {
+        app_.TurnBody(selected, angle);
+    }
+    if (ImGui::IsItemDeactivated())
+    {
+        app_.EndEdit();
+    }
+    Vec2 velocity = bodies[static_cast<size_t>(selected)].velocity;
+    const bool launched = ImGui::DragScalarN("velocity", ImGuiDataType_Double, &velocity.x, 2, 0.01f);
+    if (ImGui::IsItemActivated())
+    {
+        app_.BeginEdit();
+    }
+    if (launched)
+    {
+        app_.SetVelocity(selected, velocity);
+    }
+    if (ImGui::IsItemDeactivated())
+    {
+        app_.EndEdit();
+    }
+}
+
+// [SECTION] Status bar, popups and help
+
+void Panels::StatusBar()
+{
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const float height = ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x, viewport->Pos.y + viewport->Size.y - height));
+    ImGui::SetNextWindowSize(ImVec2(viewport->Size.x, height));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8.0f, 3.0f));
+    ImGui::Begin("##status", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    const bool error = app_.StatusIsError();
+    if (error)
+    {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.2f, 0.05f, 1.0f));
+    }
+    const Viewer& viewer = app_.GetViewer();
+    const std::string studying =
+        "Testing the pair (" + std::to_string(viewer.PairVertices(app_.GetDocument().GetScene())) +
+        " vertices) on a worker thread: its traced queries take long at this size; the figure follows when done";
+    ImGui::TextUnformatted(viewer.Studying()       ? studying.c_str()
+                           : app_.Status().empty() ? "Drag a body to move it, shift-drag to turn it; arrows step "
+                                                     "through the test; F1 for help"
+                                                   : app_.Status().c_str());
+    if (error)
+    {
+        ImGui::PopStyleColor();
+    }
+    ImGui::End();
+    ImGui::PopStyleVar();
+}
+
+void Panels::Popups()
+{
+    const Document& document = app_.GetDocument();
+    if (askOpen_)
+    {
+        askOpen_ = false;
+        pathBuffer_[0] = '\0';
+        ImGui::OpenPopup("Open scene");
+    }
+    if (askSaveAs_)
+    {
+        askSaveAs_ = false;
+        const std::string suggestion = document.File().empty()
+                                           ? "scene.json"
+                                           : (std::filesystem::path(document.File()).stem().string() + "-edited.json");
+        std::snprintf(pathBuffer_, sizeof(pathBuffer_), "%s", suggestion.c_str());
+        ImGui::OpenPopup("Save scene as");
+    }
+    if (askQuit_)
+    {
+        askQuit_ = false;
+        ImGui::OpenPopup("Unsaved changes");
+    }
+    if (askOpenUnsaved_)
+    {
+        askOpenUnsaved_ = false;
+        ImGui::OpenPopup("Unsaved changes before opening");
+    }
+    const ImVec2 center = ImGui::GetMainViewport()->GetCenter();
+    if (PathPopup("Open scene", "Scene file (JSON):", "Open", pathBuffer_, sizeof(pathBuffer_)))
+    {
+        app_.RequestOpen(pathBuffer_);
+    }
+    const bool saveAsOpen = ImGui::IsPopupOpen("Save scene as");
+    if (PathPopup("Save scene as", "Save to (JSON):", "Save", pathBuffer_, sizeof(pathBuffer_)))
+    {
+        app_.Save(pathBuffer_);
+        if (openAfterSaveAs_ && !document.Dirty())
+        {
+            app_.Open(app_.PendingOpen());
+        }
+        openAfterSaveAs_ = false;
+    }
+    else if (saveAsOpen && !ImGui::IsPopupOpen("Save scene as"))
+    {
+        openAfterSaveAs_ = false; // cancelled: the scene stays, nothing is opened
+    }
+    const std::string name = document.File().empty() ? "The scene" : document.File();
+    ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    {
+        ImGui::Text("%s has unsaved changes.", name.c_str());
+        if (ImGui::Button("Save and quit"))
+        {
+            if (document.File().empty() || document.ReadOnly())
+            {
+                ImGui::CloseCurrentPopup();
+                askSaveAs_ = true;
+            }
+            else
+            {
+                app_.Save(document.File());
+                if (!document.Dirty())
+                {
+                    app_.ConfirmQuit();
+                }
+                ImGui::CloseCurrentPopup();
+            }
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Quit without saving"))
+        {
+            app_.ConfirmQuit();
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel"))
+        {
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+    ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Unsaved changes before opening", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    {
+        ImGui::Text("%s has unsaved changes.", name.c_str());
+        ImGui::Text("Open %s?", app_.PendingOpen().c_str());
+        if (ImGui::Button("Save and open"))
+        {
+            ImGui::CloseCurrentPopup();
+            if (document.File().empty() || document.ReadOnly())
+            {
+                openAfterSaveAs_ = true;
+                askSaveAs_ = true;
+            }
+            else
+            {
+                app_.Save(document.File());
+                if (!document.Dirty())
+                {
+                    app_.Open(app_.PendingOpen());
+                }
+            }
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Open without saving"))
+        {
+            ImGui::CloseCurrentPopup();
+            app_.Open(app_.PendingOpen());
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel"))
+        {
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+}
+
+void Panels::HelpOverlay()
+{
+    const ImVec2 center = ImGui::GetMainViewport()->GetCenter();
+    ImGui::SetNextWindowPos(center, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(620.0f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.96f);
+    if (ImGui::Begin("Help (F1 or Esc closes)", &showHelp_,
+                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoResize))
+    {
+        ImGui::TextWrapped("The Separating Axis Theorem: two convex shapes do not touch if and only if some axis "
+                           "exists on which their projections (intervals) do not overlap. For polygons it is "
+                           "enough to try the normals of their edges. The test projects both shapes on each axis "
+                           "in turn and stops at the first gap. When every axis overlaps, the axis needing the "
+                           "smallest push gives the minimum translation vector (MTV).");
+        ImGui::Separator();
+        ImGui::TextUnformatted("Mouse");
+        ImGui::BulletText("drag a body: move it;  shift-drag, or the round handle above it: turn it");
+        ImGui::BulletText("drag a vertex handle of the selected polygon: reshape it (it must stay convex)");
+        ImGui::BulletText("drag the arrow tip (or the small v handle): set the velocity over one step");
+        ImGui::BulletText("drag empty space, or with the right button: pan;  wheel: zoom about the pointer");
+        ImGui::TextUnformatted("Keys");
+        ImGui::BulletText("left / right: previous / next step;  space: play or pause");
+        ImGui::BulletText("ctrl+z / ctrl+y: undo / redo;  del: delete the selected body;  f: fit the pair");
+        ImGui::BulletText("ctrl+o: open;  ctrl+s: save;  ctrl+e: export a PNG;  ctrl+q: quit;  F1: this help");
+        ImGui::TextUnformatted("Conventions");
+        ImGui::BulletText("world y points up; angles are radians, counter-clockwise");
+        ImGui::BulletText("polygon vertices go counter-clockwise, the interior on their left");
+        ImGui::BulletText("the normal points from A to B: moving B by depth x normal separates the pair");
+        ImGui::BulletText("a velocity is the displacement over one step; t runs from 0 to 1");
+    }
+    ImGui::End();
+}
+
+// [SECTION] Lesson window
+
+// The lesson beside the canvas: its text from the Markdown (md4c), buttons for its scenes, previous and next.
+void Panels::LessonWindow()
+{
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const float top = ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x, viewport->Pos.y + top));
+    ImGui::SetNextWindowSize(ImVec2(kLessonWidth, viewport->Size.y - 2.0f * top));
+    const int current = app_.CurrentLesson();
+    const int count = static_cast<int>(app_.Lessons().size());
+    const Lesson& lesson = app_.Lessons()[static_cast<size_t>(current)];
+    bool open = true;
+    const bool shown = ImGui::Begin("Lesson###lesson", &open,
+                                    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                        ImGuiWindowFlags_NoSavedSettings);
+    if (!open)
+    {
+        app_.CloseLesson();
+    }
+    if (!shown)
+    {
+        ImGui::End();
+        return;
+    }
+    int go = current;
+    ImGui::BeginDisabled(current <= 0);
+    if (ImGui::Button("< Previous"))
+    {
+        go = current - 1;
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(current + 1 >= count);
+    if (ImGui::Button("Next >"))
+    {
+        go = current + 1;
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::TextDisabled("lesson %d of %d", current + 1, count);
+    if (!lesson.scenes.empty())
+    {
+        ImGui::TextUnformatted("Scenes:");
+        for (const std::string& scene : lesson.scenes)
+        {
+            ImGui::SameLine();
+            const std::string name = std::filesystem::path(scene).stem().string();
+            if (ImGui::SmallButton(name.c_str()))
+            {
+                app_.RequestOpen(scene);
+            }
+        }
+    }
+    ImGui::Separator();
+    ImGui::BeginChild("##lesson-text");
+    if (lessonScrollTop_)
+    {
+        ImGui::SetScrollY(0.0f);
+        lessonScrollTop_ = false;
+    }
+    for (const LessonBlock& block : app_.LessonBlocks())
+    {
+        switch (block.kind)
+        {
+        case LessonBlock::Kind::Heading:
+            ImGui::Spacing();
+            ImGui::PushFont(app_.Fonts().heading);
+            ImGui::TextWrapped("%s", block.text.c_str());
+            ImGui::PopFont();
+            break;
+        case LessonBlock::Kind::Paragraph:
+            ImGui::TextWrapped("%s", block.text.c_str());
+            ImGui::Spacing();
+            break;
+        case LessonBlock::Kind::Item:
+            ImGui::Indent(static_cast<float>(block.level - 1) * 14.0f);
+            ImGui::Bullet();
+            ImGui::TextWrapped("%s", block.text.c_str());
+            ImGui::Unindent(static_cast<float>(block.level - 1) * 14.0f);
+            break;
+        case LessonBlock::Kind::Code:
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            ImGui::TextUnformatted(block.text.c_str());
+            ImGui::PopStyleColor();
+            ImGui::Spacing();
+            break;
+        case LessonBlock::Kind::Figure:
+        {
+            // The figure is the canvas: a figure of a scene opens that scene there.
+            ImGui::TextDisabled("Figure: %s", block.text.c_str());
+            const std::string stem = SceneOfFigure(block.target);
+            const std::string scene =
+                (std::filesystem::path(app_.Options().lessonsDir) / "scenes" / (stem + ".json")).string();
+            if (std::filesystem::exists(scene))
+            {
+                ImGui::PushID(&block);
+                if (ImGui::SmallButton(("show " + stem).c_str()))
+                {
+                    app_.RequestOpen(scene);
+                }
+                ImGui::PopID();
+            }
+            ImGui::Spacing();
+            break;
+        }
+        case LessonBlock::Kind::Rule:
+            ImGui::Separator();
+            break;
+        }
+    }
+    ImGui::EndChild();
+    ImGui::End();
+    if (go != current)
+    {
+        app_.OpenLesson(go);
+    }
+}
+
+} // namespace satviz

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// satviz app: the panels, the whole user interface on Dear ImGui: the menus, the side panel (pair, query, steps,
+// numbers, layers), the canvas (canvas.cpp), the status bar, the popups, the help and the lesson window. They keep
+// only what the interface needs between frames (a drag in progress, which popup to open); everything they show
+// they read from the app, and everything they change goes through the app's methods.
+#pragma once
+
+#include <satviz/math.h>
+
+#include <imgui.h>
+
+#include <cstddef>
+
+namespace satviz
+{
+
+class App;
+
+/// Width of the lesson column on the left of the canvas, in pixels, while a lesson is open.
+constexpr float kLessonWidth = 440.0f;
+
+/// Width of the side panel on the right of the canvas, in pixels.
+constexpr float kPanelWidth = 380.0f;
+
+/// What a drag on the canvas does, decided when the mouse button goes down.
+enum class DragKind
+{
+    None,     ///< no drag
+    Pan,      ///< moves the camera
+    Body,     ///< moves the selected body
+    Rotate,   ///< turns the selected body about its centre
+    Vertex,   ///< moves one vertex of the selected polygon (refused where it would break convexity)
+    Velocity, ///< sets the selected body's velocity (its displacement over one step)
+};
+
+/// The Dear ImGui interface of an app.
+class Panels
+{
+  public:
+    /// The panels of `app`, which outlives them.
+    explicit Panels(App& app) : app_(app) {}
+    Panels(const Panels&) = delete;            ///< the panels refer to their app
+    Panels& operator=(const Panels&) = delete; ///< the panels refer to their app
+
+    /// Reads this frame's keyboard shortcuts (before the windows are built).
+    void Shortcuts();
+    /// Builds this frame's windows: menus, canvas, side panel, status bar, popups, help, lesson.
+    void Draw();
+    /// Asks what to do with the unsaved changes before opening App::PendingOpen() (from the next frame).
+    void AskBeforeOpening() { askOpenUnsaved_ = true; }
+    /// Asks what to do with the unsaved changes before quitting (from the next frame).
+    void AskBeforeQuitting() { askQuit_ = true; }
+    /// Shows the lesson window's text from its top (a lesson was just opened).
+    void ScrollLessonToTop() { lessonScrollTop_ = true; }
+
+  private:
+    void SaveOrAsk();
+    void MenuBar();
+    void LessonsMenu();
+    void LayerToggles();
+    void SidePanel();
+    void StepControls();
+    void Inspector();
+    void StatusBar();
+    void Popups();
+    void HelpOverlay();
+    void LessonWindow();
+    void CanvasWindow();
+    void CanvasInput(ImVec2 origin, bool hovered);
+    void Handles(ImDrawList* list, ImVec2 origin);
+
+    App& app_;
+    DragKind drag_ = DragKind::None;
+    int dragVertex_ = -1;
+    Vec2 grabOffset_{};
+    double grabAngle_ = 0.0;
+    bool canvasAnnounced_ = false;
+    bool showHelp_ = false;
+    int newSides_ = 5;
+    bool askOpen_ = false;
+    bool askSaveAs_ = false;
+    bool askQuit_ = false;
+    bool askOpenUnsaved_ = false;
+    bool openAfterSaveAs_ = false; // the Save as popup was opened by "Save and open"
+    bool lessonScrollTop_ = false;
+    char pathBuffer_[1024] = {};
+};
+
+} // namespace satviz

@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: MIT
+// satviz app: the viewer, what the canvas shows of the document's scene: the choices (pair, query, layers,
+// precision...), the trace step, the time, the camera and the canvas, and the figure of the pair's test, run on a
+// worker thread for large pairs. No ImGui here.
+#pragma once
+
+#include "view_choices.h"
+
+#include <satviz/render/figure.h>
+#include <satviz/render/view.h>
+#include <satviz/scene.h>
+
+#include <atomic>
+#include <memory>
+
+namespace satviz
+{
+
+/// The view of a scene: what is chosen to be shown, the step of the trace, the camera, and the test of the pair.
+class Viewer
+{
+  public:
+    /// A viewer that tests pairs of more than `backgroundVertices` vertices (A's and B's together) on a worker
+    /// thread.
+    explicit Viewer(int backgroundVertices);
+
+    /// Starts over on a scene just opened: its view block's choices, camera, step and time; no figure until
+    /// Refresh has tested the pair.
+    void Reset(const Scene& scene);
+
+    /// The choices of what is shown.
+    const ViewChoices& Choices() const { return choices_; }
+    /// Takes other choices (a change in the panels, undo, redo); Refresh then tests the pair again.
+    void SetChoices(const ViewChoices& choices) { choices_ = choices; }
+
+    /// Tests the pair of `scene` again, keeping the step where it still exists; a pair that no longer exists is
+    /// dropped from the choices (the first two bodies are shown). A pair of more vertices than the background
+    /// limit is tested on a worker thread, and the figure shows the last finished test until TakeFinishedTest.
+    /// True when the new figure is in (false: it runs, or waits for the canvas's first frame).
+    bool Refresh(const Scene& scene);
+    /// Takes in the test that ran on the worker thread once it is done; true when it did.
+    bool TakeFinishedTest();
+    /// True, once, when the scene changed while the worker thread tested it: Refresh should test it again.
+    bool TakeRetest();
+    /// True while a test of the pair runs on the worker thread.
+    bool Studying() const { return job_ != nullptr; }
+    /// Vertices of the chosen pair of `scene` (a circle counts one).
+    int PairVertices(const Scene& scene) const;
+    /// The pair's queries and the figure of the last finished test.
+    const FigureSetup& Setup() const { return setup_; }
+    /// The scene that Setup() describes: the current one, or the one before the edits whose test still runs.
+    const Scene& Studied() const { return studied_; }
+    /// The figure to paint now: the last test's, with the camera and the step.
+    Figure CurrentFigure() const;
+
+    /// The trace step shown, from 0.
+    int Step() const { return step_; }
+    /// Shows trace step `step`; one that does not exist shows the verdict.
+    void ShowStep(int step);
+    /// True while stepping automatically.
+    bool Playing() const { return playing_; }
+    /// Starts or stops stepping automatically; starting at the verdict starts from the first step.
+    void TogglePlay();
+    /// Lets `seconds` pass: while playing, a step every kPlayInterval, stopping at the verdict.
+    void Advance(double seconds);
+    /// Sweeps: the time at which the moving bodies are drawn, in [0, 1]; -1: not drawn.
+    double Time() const { return time_; }
+    /// Draws the moving bodies at time `time` in [0, 1]; -1: not drawn.
+    void SetTime(double time);
+
+    /// The canvas camera.
+    const View& Camera() const { return camera_; }
+    /// True while the camera follows the fit of the pair (until the user pans or zooms).
+    bool CameraFit() const { return cameraFit_; }
+    /// Lets the camera follow the fit of the pair again, from the next Refresh.
+    void FitCamera() { cameraFit_ = true; }
+    /// Holds the camera where it is (the scene changes under the pointer).
+    void HoldCamera() { cameraFit_ = false; }
+    /// Puts the camera's centre at world point `center`, `zoom` pixels per unit, and holds it there.
+    void SetCamera(Vec2 center, double zoom);
+    /// Moves the camera so the world follows a drag of (dx, dy) pixels, and holds it there.
+    void PanCamera(float dx, float dy);
+    /// Zooms by `factor` about screen point `fixed` of the canvas, and holds the camera there.
+    void ZoomCamera(ScreenPoint fixed, double factor);
+
+    /// Places the canvas at `origin` in the window, `width` x `height` pixels; true when its size changed (or on
+    /// its first frame): Refresh then fits the figure to it.
+    bool PlaceCanvas(ScreenPoint origin, int width, int height);
+    /// The canvas's top-left corner in the window, in pixels.
+    ScreenPoint CanvasOrigin() const { return canvasOrigin_; }
+    /// The canvas width in pixels.
+    int CanvasWidth() const { return canvasWidth_; }
+    /// The canvas height in pixels.
+    int CanvasHeight() const { return canvasHeight_; }
+
+    /// Writes what is shown into the view block of `saved` (the document's scene): the camera (or "fit"), the
+    /// canvas size, the choices, the pair tested, the step and the time.
+    void WriteView(Scene& saved) const;
+
+    /// Seconds per step while playing.
+    static constexpr double kPlayInterval = 0.9;
+
+  private:
+    /// A test of the pair on the worker thread: the scene and options it runs on, its result once done.
+    struct StudyJob
+    {
+        Scene scene;
+        FigureOptions options;
+        FigureSetup result;
+        std::atomic<bool> done{false};
+    };
+
+    void Adopt(FigureSetup fresh, Scene studied);
+
+    int backgroundVertices_;
+    ViewChoices choices_;
+    FigureSetup setup_;
+    Scene studied_;
+    std::shared_ptr<StudyJob> job_;
+    bool retest_ = false;
+    int step_ = 0;
+    bool playing_ = false;
+    double playClock_ = 0.0;
+    double time_ = -1.0;
+    View camera_;
+    bool cameraFit_ = true;
+    ScreenPoint canvasOrigin_{};
+    int canvasWidth_ = 800;
+    int canvasHeight_ = 600;
+    bool canvasSized_ = false;
+};
+
+} // namespace satviz
