@@ -3,6 +3,9 @@
 // a branch per face. Lanes<S, false> is portable (plain arrays; two SSE2 registers for double on x86-64);
 // Lanes<double, true> holds one AVX2 register and is used only in code compiled for AVX2 (RunWide). Every operation is
 // the same IEEE operation lane by lane in both, so they give the same bits.
+// The portable templates take the wide lanes only inside the functions compiled for AVX2 or AVX-512, into which
+// they are flattened: one left out of line would be compiled for the baseline and pass vector registers in a
+// convention the AVX code does not share. tests/wide_inlined.sh fails the build's tests when the library holds one.
 #pragma once
 
 #include <algorithm>
