@@ -123,8 +123,8 @@ struct SatvizRecord
 void RaySegment(const Shape& sa, const Transform& xfA, const Shape& sb, const Transform& xfB, Vec2 velocity, Vec2& from,
                 Vec2& to)
 {
-    from = TransformPoint(xfB, sb.polygon.centroid) - 0.5 * velocity;
-    to = TransformPoint(xfA, sa.polygon.centroid);
+    from = TransformPoint(xfB, sb.polygon.Centroid()) - 0.5 * velocity;
+    to = TransformPoint(xfA, sa.polygon.Centroid());
 }
 
 struct FloatRecord
@@ -170,7 +170,7 @@ struct ChipmunkRecord
     {
         auto build = [](cpPolyShape& shape, const Polygon& polygon, const Transform& xf) {
             std::vector<cpVect> vertices;
-            for (const Vec2& v : polygon.vertices)
+            for (const Vec2& v : polygon.Vertices())
             {
                 vertices.push_back(cpv(v.x, v.y));
             }
@@ -222,7 +222,7 @@ void TouchBytes(const void* data, size_t bytes)
 template <typename S>
 void TouchPolygon(const PolygonT<S>& polygon)
 {
-    TouchBytes(polygon.vertices.data, sizeof(Vec2T<S>) * static_cast<size_t>(2 * polygon.Count() + 1));
+    TouchBytes(polygon.Vertices().data, sizeof(Vec2T<S>) * static_cast<size_t>(2 * polygon.Count() + 1));
 }
 
 void TouchRecord(const SatvizRecord& r)
@@ -305,7 +305,8 @@ b2PolygonShape ToBox2D(const Polygon& polygon)
     b2Vec2 centroid(0.0f, 0.0f);
     for (int i = 0; i < polygon.Count(); ++i)
     {
-        shape.m_vertices[i].Set(static_cast<float>(polygon.vertices[i].x), static_cast<float>(polygon.vertices[i].y));
+        shape.m_vertices[i].Set(static_cast<float>(polygon.Vertices()[i].x),
+                                static_cast<float>(polygon.Vertices()[i].y));
         shape.m_normals[i].Set(static_cast<float>(polygon.Normal(i).x), static_cast<float>(polygon.Normal(i).y));
         centroid += shape.m_vertices[i];
     }
@@ -376,7 +377,7 @@ BenchPair MakeBenchPair(const RandomPair& r, Rng& rng)
     p.xfA = r.xfA;
     p.xfB = r.xfB;
     // B heads roughly towards A and sometimes misses: v = k (cA - cB) + s perp(cA - cB).
-    const Vec2 toward = TransformPoint(p.xfA, p.sa.polygon.centroid) - TransformPoint(p.xfB, p.sb.polygon.centroid);
+    const Vec2 toward = TransformPoint(p.xfA, p.sa.polygon.Centroid()) - TransformPoint(p.xfB, p.sb.polygon.Centroid());
     p.velocity = rng.Uniform(0.2, 1.5) * toward + rng.Uniform(-0.5, 0.5) * LeftPerp(toward);
     const PolygonResultT<float> fa = ConvertPolygon<float>(p.sa.polygon);
     const PolygonResultT<float> fb = ConvertPolygon<float>(p.sb.polygon);
@@ -1133,7 +1134,7 @@ void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n,
     Vec2 rayFrom;
     Vec2 rayTo;
     RaySegment(p.sa, p.xfA, p.sb, p.xfB, p.velocity, rayFrom, rayTo);
-    const Vec2 corner = TransformPoint(p.xfA, p.sa.polygon.vertices[static_cast<size_t>(rng.Int(0, n - 1))]);
+    const Vec2 corner = TransformPoint(p.xfA, p.sa.polygon.Vertices()[static_cast<size_t>(rng.Int(0, n - 1))]);
     const Vec2 past = corner + (Radius(p.sa.polygon) * rng.Uniform(-0.1, 0.1)) * Normalize(LeftPerp(corner - rayFrom));
     const Vec2 rays[2][2] = {{rayFrom, rayTo}, {rayFrom, rayFrom + 1.5 * (past - rayFrom)}};
     for (const auto& ray : rays)
@@ -1205,7 +1206,7 @@ void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n,
         const double skinDepth = manifold.pointCount > 0 ? Box2DDepth(manifold, p, box2dNormal, b2_polygonRadius) : 0.0;
         Record(acc["box2d+skin b2CollidePolygons"], manifold.pointCount > 0, ref, skinDepth, true, box2dNormal, scale);
         BenchPair recentred = p;
-        const Vec2 origin = TransformPoint(p.xfA, p.sa.polygon.vertices[0]);
+        const Vec2 origin = TransformPoint(p.xfA, p.sa.polygon.Vertices()[0]);
         recentred.bxfA = ToBox2D(Transform{p.xfA.p - origin, p.xfA.q});
         recentred.bxfB = ToBox2D(Transform{p.xfB.p - origin, p.xfB.q});
         Record(acc["box2d+recenter b2TestOverlap"], b2TestOverlap(&p.ba, 0, &p.bb, 0, recentred.bxfA, recentred.bxfB),

@@ -131,8 +131,8 @@ int IncidentEdge(const IncidentPolygon<S>& inc, Vec2T<S> normal, int support, Cl
         const S dotLeaving = Dot(normal, Rotate(inc.xf.q, inc.polygon.Normal(s)));
         const S dotEntering = Dot(normal, Rotate(inc.xf.q, inc.polygon.Normal(before)));
         out.incidentEdge = Select(dotEntering < dotLeaving, before, s);
-        out.w1 = TransformPoint(inc.xf, inc.polygon.vertices[out.incidentEdge]);
-        out.w2 = TransformPoint(inc.xf, inc.polygon.vertices[Next(out.incidentEdge, m)]);
+        out.w1 = TransformPoint(inc.xf, inc.polygon.Vertices()[out.incidentEdge]);
+        out.w2 = TransformPoint(inc.xf, inc.polygon.Vertices()[Next(out.incidentEdge, m)]);
     }
     return s;
 }
@@ -246,7 +246,7 @@ void KeepDeepestVertex(const IncidentPolygon<S>& inc, int support, Vec2T<S> v1, 
     Vec2T<S> deepest = Dot(normal, out.w2 - out.w1) < S(0) ? out.w2 : out.w1;
     if (support >= 0)
     {
-        deepest = TransformPoint(inc.xf, inc.polygon.vertices[support]);
+        deepest = TransformPoint(inc.xf, inc.polygon.Vertices()[support]);
         if (shift != nullptr)
         {
             deepest = deepest + *shift;
@@ -274,8 +274,8 @@ ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentP
                                S keepBelow, const Vec2T<S>* shift = nullptr)
 {
     ClipResult<S> out;
-    const Vec2T<S> v1 = ref.vertices[face];
-    const Vec2T<S> v2 = ref.vertices[Next(face, ref.Count())];
+    const Vec2T<S> v1 = ref.Vertices()[face];
+    const Vec2T<S> v2 = ref.Vertices()[Next(face, ref.Count())];
     const Vec2T<S> normal = ref.Normal(face);
     const int s = IncidentEdge<kWide>(inc, normal, support, out);
     if (shift != nullptr)
@@ -310,13 +310,13 @@ ClipTraceT<S> ClipTraceOf(const ClipResult<S>& r, const AxisRef& reference, cons
 {
     ClipTraceT<S> clip;
     clip.reference = reference;
-    clip.referenceV1 = TransformPoint(xfRef, ref.vertices[reference.index]);
-    clip.referenceV2 = TransformPoint(xfRef, ref.vertices[Next(reference.index, ref.Count())]);
+    clip.referenceV1 = TransformPoint(xfRef, ref.Vertices()[reference.index]);
+    clip.referenceV2 = TransformPoint(xfRef, ref.Vertices()[Next(reference.index, ref.Count())]);
     clip.referenceNormal = Rotate(xfRef.q, ref.Normal(reference.index));
     clip.incidentShape = incidentShape;
     clip.incidentEdge = r.incidentEdge;
-    clip.incidentV1 = TransformPoint(xfInc, inc.vertices[r.incidentEdge]);
-    clip.incidentV2 = TransformPoint(xfInc, inc.vertices[Next(r.incidentEdge, inc.Count())]);
+    clip.incidentV1 = TransformPoint(xfInc, inc.Vertices()[r.incidentEdge]);
+    clip.incidentV2 = TransformPoint(xfInc, inc.Vertices()[Next(r.incidentEdge, inc.Count())]);
     clip.sideClip1Count = r.count1;
     clip.sideClip2Count = r.count2;
     for (int k = 0; k < r.count1; ++k)

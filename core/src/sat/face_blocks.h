@@ -290,7 +290,7 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
     };
     for (int i0 = 0; i0 < n; i0 += 4)
     {
-        const FaceBlock<L, S> block(ref, ref.vertices.data, i0);
+        const FaceBlock<L, S> block(ref, ref.Vertices().data, i0);
         if (take(i0, (ProjectionMinimum<N>(inc, block.nx, block.ny) - block.Offset()) + L::Fill(S(0))))
         {
             return query;

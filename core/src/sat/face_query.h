@@ -148,7 +148,7 @@ FaceQuery<S> ScanFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
             continue;
         }
         const S separation =
-            FaceSeparation<N, kInside, Tracer::kWide>(inc.x, inc.y, normal, Dot(normal, ref.vertices[i]), inside);
+            FaceSeparation<N, kInside, Tracer::kWide>(inc.x, inc.y, normal, Dot(normal, ref.Vertices()[i]), inside);
         if (RecordFace<kUnit, true>(query, inc, side, i, normal, separation, -1, tracer))
         {
             break;

@@ -47,7 +47,7 @@ struct IncidentPolygon
     IncidentPolygon(const PolygonT<S>& p, const TransformT<S>& xfRef, const TransformT<S>& xfInc,
                     int scanLimit = kScanLimit, std::bool_constant<kWide> = {})
         : polygon(p), xf(InvMulTransforms(xfRef, xfInc)), scan(p.Count() > 0 && p.Count() <= scanLimit),
-          centroid(TransformPoint(xf, p.centroid))
+          centroid(TransformPoint(xf, p.Centroid()))
     {
         if (!scan)
         {
@@ -78,7 +78,7 @@ struct IncidentPolygon
         }
         else
         {
-            map(polygon.vertices.data);
+            map(polygon.Vertices().data);
         }
         // Vertex 0 again in the four entries after the last vertex (at most kScanLimit + 3 < kCapacity): those up to
         // `padded`, which the scans read, and one more. A fixed count, so no loop and no branch.
@@ -92,7 +92,7 @@ struct IncidentPolygon
     /// The separation of a reference face from this polygon's vertex `support`, its support point.
     S Separation(Vec2T<S> normal, Vec2T<S> v, int support) const
     {
-        return Dot(normal, TransformPoint(xf, polygon.vertices[support]) - v);
+        return Dot(normal, TransformPoint(xf, polygon.Vertices()[support]) - v);
     }
 
     /// The first vertex whose projection on `normal` (reference frame) is the smallest: the support point in

@@ -48,7 +48,7 @@ ManifoldT<S> CollidePolygonCircle(const PolygonT<S>& polygon, const TransformT<S
     int bestFace = 0;
     for (int i = 0; i < n; ++i)
     {
-        const S s = Dot(polygon.Normal(i), c - polygon.vertices[i]);
+        const S s = Dot(polygon.Normal(i), c - polygon.Vertices()[i]);
         const bool separating = s > r;
         if (s > bestSeparation)
         {
@@ -75,8 +75,8 @@ ManifoldT<S> CollidePolygonCircle(const PolygonT<S>& polygon, const TransformT<S
         }
     }
 
-    const Vec2T<S> v1 = polygon.vertices[bestFace];
-    const Vec2T<S> v2 = polygon.vertices[Next(bestFace, n)];
+    const Vec2T<S> v1 = polygon.Vertices()[bestFace];
+    const Vec2T<S> v2 = polygon.Vertices()[Next(bestFace, n)];
     int vertex = -1;
     if (bestSeparation > S(0))
     {
@@ -92,7 +92,7 @@ ManifoldT<S> CollidePolygonCircle(const PolygonT<S>& polygon, const TransformT<S
 
     if (vertex >= 0)
     {
-        const Vec2T<S> v = polygon.vertices[vertex];
+        const Vec2T<S> v = polygon.Vertices()[vertex];
         const Vec2T<S> offset = c - v;
         const S distanceSquared = LengthSquared(offset);
         const bool separating = distanceSquared > r * r;

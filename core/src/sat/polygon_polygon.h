@@ -150,7 +150,7 @@ bool OverlapPolygonsCached(const PolygonT<S>& a, const TransformT<S>& xfA, const
             const int start = cachedSupport >= 0 && cachedSupport < inc.Count() ? cachedSupport : 0;
             const int support = ClimbFrom(inc, InvRotate(incInRef.q, -normal), start);
             const S separation =
-                Dot(normal, TransformPoint(incInRef, inc.vertices[support]) - ref.vertices[cached.index]);
+                Dot(normal, TransformPoint(incInRef, inc.Vertices()[support]) - ref.Vertices()[cached.index]);
             cachedSupport = support;
             if (separation > S(0))
             {

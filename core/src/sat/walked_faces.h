@@ -28,7 +28,7 @@ namespace satviz::detail
 template <typename S>
 S FaceDistance(const PolygonT<S>& polygon, int i, Vec2T<S> point)
 {
-    return Dot(polygon.Normal(i), point - polygon.vertices[i]);
+    return Dot(polygon.Normal(i), point - polygon.Vertices()[i]);
 }
 
 /// The first face i in [from, to) whose FaceDistance from `point` is above `threshold`, or `to` if none is (a NaN
@@ -58,7 +58,7 @@ inline __m128d FaceDistancePair(const double* normals, const double* vertices, i
 inline int FirstFaceAbove(const PolygonT<double>& polygon, Vec2T<double> point, double threshold, int from, int to)
 {
     const double* normals = &polygon.Normal(0).x;
-    const double* vertices = &polygon.vertices[0].x;
+    const double* vertices = &polygon.Vertices()[0].x;
     const __m128d p = _mm_set_pd(point.y, point.x);
     const __m128d limit = _mm_set1_pd(threshold);
     int i = from;
@@ -122,8 +122,8 @@ template <typename S>
 int WedgeOf(const PolygonT<S>& polygon, Vec2T<S> point, int start)
 {
     const int n = polygon.Count();
-    const Vec2T<S> r = polygon.vertices[0] - polygon.centroid;
-    const Vec2T<S> u = point - polygon.centroid;
+    const Vec2T<S> r = polygon.Vertices()[0] - polygon.Centroid();
+    const Vec2T<S> u = point - polygon.Centroid();
     const auto pastHalf = [r](Vec2T<S> v) {
         const S c = Cross(r, v);
         return c < S(0) || (c == S(0) && Dot(r, v) < S(0));
@@ -131,7 +131,7 @@ int WedgeOf(const PolygonT<S>& polygon, Vec2T<S> point, int start)
     const bool uPastHalf = pastHalf(u);
     // Whether the ray through v_j turns no farther from r than the point's: true for j = 0 .. wedge, false after.
     const auto noLater = [&](int j) {
-        const Vec2T<S> v = polygon.vertices[j] - polygon.centroid;
+        const Vec2T<S> v = polygon.Vertices()[j] - polygon.Centroid();
         const bool vPastHalf = pastHalf(v);
         return vPastHalf != uPastHalf ? uPastHalf : Cross(v, u) >= S(0);
     };
@@ -208,16 +208,16 @@ FaceQuery<S> WalkFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
     FaceQuery<S> query;
     // The first face, towards inc's centroid, with inc's support point found by bisection. That support
     // point is the witness: a point of inc, so FaceDistance(ref, i, witness) bounds face i's separation from above.
-    const Vec2T<S> towards = inc.centroid - ref.centroid;
+    const Vec2T<S> towards = inc.centroid - ref.Centroid();
     const int top = BisectSupport(ref, towards);
     const int start = ClimbFaceTowards(ref, inc.centroid, top);
     int support = BisectSupport(inc.polygon, InvRotate(inc.xf.q, -ref.Normal(start)));
-    Vec2T<S> witness = TransformPoint(inc.xf, inc.polygon.vertices[support]);
+    Vec2T<S> witness = TransformPoint(inc.xf, inc.polygon.Vertices()[support]);
     const auto faceAt = [start, n](int k) { return start + k < n ? start + k : start + k - n; };
     query.face = start;
     const Vec2T<S> firstNormal = kUnit ? ref.Normal(start) : RightPerp(ref.Edge(start));
     query.witness = support;
-    const S firstSeparation = Dot(firstNormal, witness - ref.vertices[start]);
+    const S firstSeparation = Dot(firstNormal, witness - ref.Vertices()[start]);
     query.witnessInside = firstSeparation <= S(0);
     if (RecordFace<kUnit, false>(query, inc, side, start, firstNormal, firstSeparation, support, tracer))
     {
@@ -238,8 +238,8 @@ FaceQuery<S> WalkFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
             }
             return false;
         }
-        const Vec2T<S> point = TransformPoint(inc.xf, inc.polygon.vertices[support]);
-        if (RecordFace<kUnit, false>(query, inc, side, i, normal, Dot(normal, point - ref.vertices[i]), support,
+        const Vec2T<S> point = TransformPoint(inc.xf, inc.polygon.Vertices()[support]);
+        if (RecordFace<kUnit, false>(query, inc, side, i, normal, Dot(normal, point - ref.Vertices()[i]), support,
                                      tracer))
         {
             return true;
