@@ -283,7 +283,7 @@ bool App::MoveVertex(int index, int vertex, Vec2 world)
     {
         return false;
     }
-    std::vector<Vec2> vertices(body.shape.polygon.vertices.begin(), body.shape.polygon.vertices.end());
+    std::vector<Vec2> vertices(body.shape.polygon.Vertices().begin(), body.shape.polygon.Vertices().end());
     vertices[static_cast<size_t>(vertex)] = InvTransformPoint(body.Xf(), world);
     PolygonResult result = MakePolygon(vertices);
     if (!result.Ok())

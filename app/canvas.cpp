@@ -27,7 +27,7 @@ double Extent(const Body& body)
         return Length(body.shape.circle.center) + body.shape.circle.radius;
     }
     double extent = 0.0;
-    for (const Vec2& v : body.shape.polygon.vertices)
+    for (const Vec2& v : body.shape.polygon.Vertices())
     {
         extent = std::max(extent, Length(v));
     }
@@ -60,7 +60,7 @@ bool Contains(const Body& body, Vec2 world)
     const auto& poly = body.shape.polygon;
     for (int i = 0; i < poly.Count(); ++i)
     {
-        if (Cross(poly.Edge(i), local - poly.vertices[i]) < 0.0)
+        if (Cross(poly.Edge(i), local - poly.Vertices()[i]) < 0.0)
         {
             return false;
         }
@@ -163,7 +163,7 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
                 const Transform xf = body.Xf();
                 for (int i = 0; i < body.shape.polygon.Count(); ++i)
                 {
-                    if (Distance(mouse, ToScreen(camera, TransformPoint(xf, body.shape.polygon.vertices[i]))) <=
+                    if (Distance(mouse, ToScreen(camera, TransformPoint(xf, body.shape.polygon.Vertices()[i]))) <=
                         kHandleRadius)
                     {
                         drag_ = DragKind::Vertex;
@@ -266,7 +266,7 @@ void Panels::Handles(ImDrawList* list, ImVec2 origin)
     if (body.shape.type == ShapeType::Polygon && body.shape.polygon.Count() <= 64)
     {
         const Transform xf = body.Xf();
-        for (const Vec2& v : body.shape.polygon.vertices)
+        for (const Vec2& v : body.shape.polygon.Vertices())
         {
             const ImVec2 p = at(ToScreen(camera, TransformPoint(xf, v)));
             list->AddRectFilled(ImVec2(p.x - 4.0f, p.y - 4.0f), ImVec2(p.x + 4.0f, p.y + 4.0f), white);

@@ -234,7 +234,7 @@ BigPoint BigWorld(const Transform& xf, Vec2 v)
 std::vector<BigPoint> BigWorld(const Polygon& polygon, const Transform& xf)
 {
     std::vector<BigPoint> out;
-    for (const Vec2& v : polygon.vertices)
+    for (const Vec2& v : polygon.Vertices())
     {
         out.push_back(BigWorld(xf, v));
     }
@@ -364,7 +364,7 @@ Polygon GridPolygon(Rng& rng, int count, double radius)
 
 std::vector<Vec2> Vertices(const Polygon& polygon)
 {
-    return {polygon.vertices.begin(), polygon.vertices.end()};
+    return {polygon.Vertices().begin(), polygon.Vertices().end()};
 }
 
 Polygon FromVertices(const std::vector<Vec2>& points)
@@ -379,7 +379,7 @@ Polygon FromVertices(const std::vector<Vec2>& points)
 // then), or an edge of B laid along the line.
 std::vector<Vec2> TouchingVertices(Rng& rng, const Polygon& a, int edge)
 {
-    const Vec2 p = a.vertices[edge];
+    const Vec2 p = a.Vertices()[edge];
     const Vec2 e = a.Edge(edge);
     std::vector<Vec2> points;
     if (rng.Chance(0.35))
@@ -689,7 +689,7 @@ TEST_CASE("The filtered reference decides touching and near-touching circles exa
             circle.radius = scale * length + tweak;
             // RightPerp(e) = offset: the edge's outward normal, of length `length`.
             circle.center = rng.Chance(0.6) ? p + Grid(rng, 0, 16, 4) * e + scale * offset
-                                            : polygon.vertices[rng.Int(0, polygon.Count() - 1)] + scale * offset;
+                                            : polygon.Vertices()[rng.Int(0, polygon.Count() - 1)] + scale * offset;
             expected = BigPolygonCircleOverlap(BigWorld(polygon, xf), BigWorld(xf, circle.center), circle.radius);
             ref = rng.Chance(0.5) ? ReferenceCollide(MakeShape(polygon), xf, MakeShape(circle), xf)
                                   : ReferenceCollide(MakeShape(circle), xf, MakeShape(polygon), xf);
@@ -725,7 +725,7 @@ TEST_CASE("The sweep reference decides sliding, touching starts and arrivals at 
         {
             deepest = Cross(e, cloud[k]) > Cross(e, cloud[deepest]) ? k : deepest; // exact on the grid
         }
-        const Vec2 target = a.vertices[edge] + Grid(rng, 1, 63, 6) * e;
+        const Vec2 target = a.Vertices()[edge] + Grid(rng, 1, 63, 6) * e;
         const int kind = rng.Int(0, 3);
         const double gap = kind >= 2 ? Grid(rng, 1, 64, 6) : 0.0;
         const int placement = rng.Chance(0.5) ? 0 : 2;

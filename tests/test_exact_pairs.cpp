@@ -151,7 +151,7 @@ Polygon Mirrored(const Polygon& polygon, Mirror mirror)
     std::vector<Vec2> points;
     for (int i = polygon.Count() - 1; i >= 0; --i)
     {
-        points.push_back(mirror(polygon.vertices[i]));
+        points.push_back(mirror(polygon.Vertices()[i]));
     }
     return Poly(points);
 }
@@ -161,8 +161,8 @@ Polygon Mirrored(const Polygon& polygon, Mirror mirror)
 // the face's side planes. Contacts computed from another face lie elsewhere.
 void RequireContactsOfFace(const Manifold& m, const Polygon& ref, const Transform& xfRef, int face, double tolerance)
 {
-    const Vec2 v1 = TransformPoint(xfRef, ref.vertices[face]);
-    const Vec2 v2 = TransformPoint(xfRef, ref.vertices[(face + 1) % ref.Count()]);
+    const Vec2 v1 = TransformPoint(xfRef, ref.Vertices()[face]);
+    const Vec2 v2 = TransformPoint(xfRef, ref.Vertices()[(face + 1) % ref.Count()]);
     const Vec2 n = Rotate(xfRef.q, ref.Normal(face));
     const Vec2 tangent = LeftPerp(n);
     const double length = Dot(v2 - v1, tangent);
@@ -427,7 +427,7 @@ TEST_CASE("Mirrored lattice pairs tie exactly, and the reference face is A's, wi
             const Polygon shape = rng.Chance(0.6) ? LatticeRoof(rng) : LatticePolygon(rng);
             double low = std::numeric_limits<double>::infinity();
             double high = -low;
-            for (const Vec2& v : shape.vertices)
+            for (const Vec2& v : shape.Vertices())
             {
                 low = std::min(low, Dot(across, v));
                 high = std::max(high, Dot(across, v));
@@ -439,7 +439,7 @@ TEST_CASE("Mirrored lattice pairs tie exactly, and the reference face is A's, wi
             {
                 const double shift = rng.Int(first, last) * kLatticeStep;
                 std::vector<Vec2> points;
-                for (const Vec2& v : shape.vertices)
+                for (const Vec2& v : shape.Vertices())
                 {
                     points.push_back(v - shift * across);
                 }
@@ -479,9 +479,9 @@ TEST_CASE("Mirrored lattice pairs tie exactly, and the reference face is A's, wi
                 }
                 const Vec2 raw = RightPerp(ref.Edge(k));
                 Quad lowest = HUGE_VALQ;
-                for (const Vec2& v : inc.vertices)
+                for (const Vec2& v : inc.Vertices())
                 {
-                    const Vec2 d = v - ref.vertices[k]; // exact on the lattice
+                    const Vec2 d = v - ref.Vertices()[k]; // exact on the lattice
                     const Quad projection = AxisAligned(n) ? Quad(Dot(n, d)) : QDot({raw.x, raw.y}, {d.x, d.y});
                     lowest = projection < lowest ? projection : lowest;
                 }
@@ -658,13 +658,13 @@ TEST_CASE("Boxes that pass each other corner to corner graze: a miss, and a hair
         int cornerB = 0;
         for (int k = 1; k < 4; ++k)
         {
-            cornerA = Dot(left, a.vertices[k]) > Dot(left, a.vertices[cornerA]) ? k : cornerA;
-            cornerB = Dot(left, b.vertices[k]) < Dot(left, b.vertices[cornerB]) ? k : cornerB;
+            cornerA = Dot(left, a.Vertices()[k]) > Dot(left, a.Vertices()[cornerA]) ? k : cornerA;
+            cornerB = Dot(left, b.Vertices()[k]) < Dot(left, b.Vertices()[cornerB]) ? k : cornerB;
         }
         // The line through the corners along d separates the boxes at all times; they meet only where the corners
         // do, at t = 1/2. Cutting in, a little before and after.
         const bool cut = rng.Chance(0.5);
-        const Vec2 start = a.vertices[cornerA] - b.vertices[cornerB] - d - (cut ? s / 8.0 : 0.0) * left;
+        const Vec2 start = a.Vertices()[cornerA] - b.Vertices()[cornerB] - d - (cut ? s / 8.0 : 0.0) * left;
         const Transform xfA{LatticePoint(rng, -32, 32), Rot{}};
         const Transform xfB{xfA.p + start, Rot{}};
         const Vec2 v = 2.0 * d;
@@ -716,7 +716,7 @@ TEST_CASE("Circles touching a lattice polygon at a vertex or on an axis-aligned 
             {
                 continue;
             }
-            base = polygon.vertices[vertex];
+            base = polygon.Vertices()[vertex];
             ++vertexCases;
         }
         else
@@ -728,7 +728,7 @@ TEST_CASE("Circles touching a lattice polygon at a vertex or on an axis-aligned 
             }
             // Strictly inside the face: over an end the vertex's region begins, with the same normal.
             direction = polygon.Normal(face);
-            base = polygon.vertices[face] + (rng.Int(1, 7) / 8.0) * polygon.Edge(face);
+            base = polygon.Vertices()[face] + (rng.Int(1, 7) / 8.0) * polygon.Edge(face);
             ++faceCases;
         }
         const double length = onVertex ? Length(direction) : 1.0; // exact: a Pythagorean triple

@@ -82,7 +82,7 @@ TEST_CASE("Repair drops duplicates and collinear points and fixes the winding", 
     REQUIRE(result.Ok());
     CHECK(result.polygon.Count() == 4);
     const Polygon& p = result.polygon;
-    CHECK(SignedArea2(std::vector<Vec2>(p.vertices.begin(), p.vertices.end())) == 2.0);
+    CHECK(SignedArea2(std::vector<Vec2>(p.Vertices().begin(), p.Vertices().end())) == 2.0);
     // Non-convex stays an error.
     CHECK(MakePolygon<double>({{0, 0}, {2, 0}, {1, 0.5}, {2, 2}, {0, 2}}, repair).error == PolygonError::NotConvex);
 }
@@ -112,7 +112,7 @@ TEST_CASE("Convex hull of random point clouds", "[polygon][hull]")
             CHECK(hull.error == PolygonError::TooFewVertices);
             continue;
         }
-        const Vec2Span<double>& h = hull.polygon.vertices;
+        const Vec2Span<double>& h = hull.polygon.Vertices();
         const size_t m = h.size();
         INFO("trial " << trial);
         // Every point lies inside or on the hull, and every hull vertex is an input point.

@@ -364,9 +364,9 @@ TEST_CASE("Collide picks the first face of largest separation, A's on a tie", "[
     auto separation = [](const Polygon& p, Vec2 at, int i, const Polygon& q, Vec2 aq) {
         const Vec2 n = p.Normal(i);
         double low = std::numeric_limits<double>::infinity();
-        for (const Vec2& v : q.vertices)
+        for (const Vec2& v : q.Vertices())
         {
-            low = std::min(low, Dot(n, v + aq - (p.vertices[i] + at)));
+            low = std::min(low, Dot(n, v + aq - (p.Vertices()[i] + at)));
         }
         return low;
     };

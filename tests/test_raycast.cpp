@@ -115,8 +115,8 @@ TEST_CASE("RayCast against polygons above 32 vertices, whose crossing faces are 
             // against the segment.
             REQUIRE(got.edge >= 0);
             REQUIRE(got.edge < n);
-            const Vec2 v1 = TransformPoint(xf, polygon.vertices[got.edge]);
-            const Vec2 v2 = TransformPoint(xf, polygon.vertices[(got.edge + 1) % n]);
+            const Vec2 v1 = TransformPoint(xf, polygon.Vertices()[got.edge]);
+            const Vec2 v2 = TransformPoint(xf, polygon.Vertices()[(got.edge + 1) % n]);
             REQUIRE(std::abs(Cross(Normalize(v2 - v1), got.point - v1)) <= 1e-12 * (scale + Length(xf.p)));
             REQUIRE(Dot(got.normal, p2 - p1) < 0.0);
             ++hits;

@@ -42,7 +42,7 @@ TEST_CASE("A scene with every shape kind loads", "[scene]")
     CHECK(p.angle == 0.5);
     CHECK(p.velocity == Vec2{3, 4});
     CHECK(r.scene.bodies[1].name == "B");
-    CHECK(r.scene.bodies[1].shape.polygon.vertices[2] == Vec2{1.0, 0.5});
+    CHECK(r.scene.bodies[1].shape.polygon.Vertices()[2] == Vec2{1.0, 0.5});
     CHECK(r.scene.bodies[2].shape.polygon.Count() == 7);
     CHECK(r.scene.bodies[3].shape.type == ShapeType::Circle);
     CHECK(r.scene.bodies[3].shape.circle.radius == 0.25);
@@ -246,7 +246,7 @@ TEST_CASE("A saved scene reads back as the same scene, bit for bit", "[scene]")
                 REQUIRE(x.shape.polygon.Count() == y.shape.polygon.Count());
                 for (int k = 0; k < x.shape.polygon.Count(); ++k)
                 {
-                    CHECK(x.shape.polygon.vertices[k] == y.shape.polygon.vertices[k]);
+                    CHECK(x.shape.polygon.Vertices()[k] == y.shape.polygon.Vertices()[k]);
                     CHECK(x.shape.polygon.Normal(k) == y.shape.polygon.Normal(k));
                 }
             }
@@ -347,8 +347,8 @@ TEST_CASE("Saving a loaded scene keeps the file's form: $schema, shorthands, key
     // added after the file's own; an unnamed body that keeps its default name stays unnamed.
     Scene edited = loaded.scene;
     edited.bodies[0].position = {0.5, -1};
-    std::vector<Vec2> points(edited.bodies[1].shape.polygon.vertices.begin(),
-                             edited.bodies[1].shape.polygon.vertices.end());
+    std::vector<Vec2> points(edited.bodies[1].shape.polygon.Vertices().begin(),
+                             edited.bodies[1].shape.polygon.Vertices().end());
     points[0] = 1.5 * points[0];
     const PolygonResult reshaped = MakePolygon(points);
     REQUIRE(reshaped.Ok());
@@ -371,7 +371,7 @@ TEST_CASE("Saving a loaded scene keeps the file's form: $schema, shorthands, key
     REQUIRE(b.contains("polygon"));
     CHECK(std::next(b.begin()).key() == "polygon");
     CHECK(b["polygon"].size() == 7);
-    CHECK(again.scene.bodies[1].shape.polygon.vertices[0] == reshaped.polygon.vertices[0]);
+    CHECK(again.scene.bodies[1].shape.polygon.Vertices()[0] == reshaped.polygon.Vertices()[0]);
     CHECK(json["bodies"][2].dump() == R"({"polygon":[[0,0],[1,0],[0,1]],"velocity":[0.25,0]})");
     CHECK(json["bodies"][3].dump() == R"({"name":"D","circle":{"center":[0,1],"radius":2.5}})");
     CHECK(json["view"].dump() == R"({"size":[640,480],"zoom":40.0,"x:y":true,"center":[1.0,2.0],"step":4})");

@@ -214,8 +214,8 @@ OnFloor TouchingFloor(Rng& rng, int kind)
     }
     else
     {
-        lowest = Rotate(q, out.mover.polygon.vertices[0]);
-        for (const Vec2& v : out.mover.polygon.vertices)
+        lowest = Rotate(q, out.mover.polygon.Vertices()[0]);
+        for (const Vec2& v : out.mover.polygon.Vertices())
         {
             lowest = Dot(Rotate(q, v), out.up) < Dot(lowest, out.up) ? Rotate(q, v) : lowest;
         }
@@ -376,7 +376,7 @@ TEST_CASE("A circle touching an obstacle and pushed into it does not pass throug
         else
         {
             // A corner, the centre off it between the normals of its two faces (the two axes of its quadrant).
-            const Vec2 corner = box.polygon.vertices[rng.Int(0, 3)];
+            const Vec2 corner = box.polygon.Vertices()[rng.Int(0, 3)];
             const double turn =
                 std::atan2(corner.y > 0.0 ? 1.0 : -1.0, corner.x > 0.0 ? 1.0 : -1.0) + rng.Uniform(-0.7, 0.7);
             direction = Rotate(xfObstacle.q, Vec2{std::cos(turn), std::sin(turn)});

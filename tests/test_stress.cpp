@@ -496,7 +496,7 @@ Segment CastAt(Rng& rng, const Polygon& a, const Transform& xf, double scale, do
     const double direction = rng.Uniform(0.0, 2.0 * kPi);
     const double from = rng.Chance(0.2) ? scale * rng.Uniform(0.0, 1.0) : reach * rng.Uniform(0.0, 3.0);
     const Vec2 p1 = xf.p + Vec2{from * std::cos(direction), from * std::sin(direction)};
-    const Vec2 aim = rng.Chance(0.3) ? TransformPoint(xf, a.vertices[rng.Int(0, a.Count() - 1)])
+    const Vec2 aim = rng.Chance(0.3) ? TransformPoint(xf, a.Vertices()[rng.Int(0, a.Count() - 1)])
                                      : xf.p + scale * Vec2{rng.Uniform(-1.5, 1.5), rng.Uniform(-1.5, 1.5)};
     return {p1, p1 + rng.Uniform(0.2, 2.0) * (aim - p1)};
 }
@@ -520,7 +520,7 @@ double SignedGap(Rng& rng, double scale)
 RandomPair Against(Rng& rng, const Polygon& a, const Transform& xfA, const Polygon& b, int edge, double along,
                    double gap)
 {
-    const Vec2 point = a.vertices[edge] + along * a.Edge(edge);
+    const Vec2 point = a.Vertices()[edge] + along * a.Edge(edge);
     const Vec2 normal = a.Normal(edge);
     double angleB = rng.Uniform(-kPi, kPi);
     int touching = 0;
@@ -536,7 +536,7 @@ RandomPair Against(Rng& rng, const Polygon& a, const Transform& xfA, const Polyg
         double lowest = INFINITY;
         for (int k = 0; k < b.Count(); ++k)
         {
-            const double d = Dot(normal, Rotate(q, b.vertices[k]));
+            const double d = Dot(normal, Rotate(q, b.Vertices()[k]));
             if (d < lowest)
             {
                 lowest = d;
@@ -544,7 +544,7 @@ RandomPair Against(Rng& rng, const Polygon& a, const Transform& xfA, const Polyg
             }
         }
     }
-    const Vec2 positionInA = point - Rotate(MakeRot(angleB), b.vertices[touching]) + gap * normal;
+    const Vec2 positionInA = point - Rotate(MakeRot(angleB), b.Vertices()[touching]) + gap * normal;
     const double angleA = std::atan2(xfA.q.s, xfA.q.c);
     return {MakeShape(a), xfA, MakeShape(b), MakeTransform(TransformPoint(xfA, positionInA), angleA + angleB)};
 }
@@ -606,7 +606,7 @@ void TinyAndHuge()
             const RandomPair p = ContactPair(rng, rng.Int(3, 12), static_cast<PairCategory>(rng.Int(0, 2)));
             auto scaled = [&](const Shape& s) {
                 std::vector<Vec2> points;
-                for (const Vec2& v : s.polygon.vertices)
+                for (const Vec2& v : s.polygon.Vertices())
                 {
                     points.push_back(size * v);
                 }
@@ -713,7 +713,7 @@ void TinyGaps()
             const double angle = rng.Uniform(-0.2, 0.2);
             const Transform xfB0 = MakeTransform(Vec2{rng.Uniform(-1.0, 1.0), 0.0}, angle);
             double lowest = INFINITY;
-            for (const Vec2& v : b.polygon.vertices)
+            for (const Vec2& v : b.polygon.Vertices())
             {
                 lowest = std::min(lowest, TransformPoint(xfB0, v).y);
             }
@@ -741,7 +741,7 @@ void NearlyCollinear()
         for (int i = 0; i < kOutlines; ++i)
         {
             const Polygon hex = Built(MakeRegularPolygon(6, 1.0, rng.Uniform(0.0, 1.0)));
-            std::vector<Vec2> points(hex.vertices.begin(), hex.vertices.end());
+            std::vector<Vec2> points(hex.Vertices().begin(), hex.Vertices().end());
             const Vec2 mid = 0.5 * (points[0] + points[1]);
             points.insert(points.begin() + 1, mid + eps * hex.Normal(0));
             std::vector<Vec2T<S>> rounded;
@@ -836,7 +836,7 @@ double Lowest(const Shape& shape, Rot q, Vec2 up)
         return Dot(up, Rotate(q, shape.circle.center)) - shape.circle.radius;
     }
     double lowest = INFINITY;
-    for (const Vec2& v : shape.polygon.vertices)
+    for (const Vec2& v : shape.polygon.Vertices())
     {
         lowest = std::min(lowest, Dot(up, Rotate(q, v)));
     }

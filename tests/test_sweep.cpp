@@ -353,7 +353,7 @@ RandomPair LargeSweepPair(Rng& rng, int n, int nB, Vec2& v, bool& sliding)
             MakeShape(RandomPolygon(rng, nB, rng.Uniform(0.05, 1.5), rng.Chance(0.2) ? 0.05 : rng.Uniform(0.35, 1.0)));
     }
     const Vec2 toward =
-        TransformPoint(pair.xfA, pair.a.polygon.centroid) - TransformPoint(pair.xfB, pair.b.polygon.centroid);
+        TransformPoint(pair.xfA, pair.a.polygon.Centroid()) - TransformPoint(pair.xfB, pair.b.polygon.Centroid());
     pair.xfB.p = pair.xfB.p - rng.Uniform(0.0, 2.0) * toward;
     const double k = rng.Uniform(0.5, 3.0) * rng.LogUniform(-1.0, 3.0);
     const double angle = rng.Uniform(-kPi, kPi);
@@ -379,14 +379,14 @@ RandomPair LargeSweepPair(Rng& rng, int n, int nB, Vec2& v, bool& sliding)
         int lowest = 0;
         for (int j = 1; j < b.Count(); ++j)
         {
-            if (Dot(n, Rotate(pair.xfB.q, b.vertices[j])) < Dot(n, Rotate(pair.xfB.q, b.vertices[lowest])))
+            if (Dot(n, Rotate(pair.xfB.q, b.Vertices()[j])) < Dot(n, Rotate(pair.xfB.q, b.Vertices()[lowest])))
             {
                 lowest = j;
             }
         }
         const double gap = rng.Chance(0.3) ? 0.0 : rng.Uniform(-1e-9, 1e-9);
-        const Vec2 on = TransformPoint(pair.xfA, a.vertices[f]) + rng.Uniform(-2.0, 1.0) * edge + gap * n;
-        pair.xfB.p = on - Rotate(pair.xfB.q, b.vertices[lowest]);
+        const Vec2 on = TransformPoint(pair.xfA, a.Vertices()[f]) + rng.Uniform(-2.0, 1.0) * edge + gap * n;
+        pair.xfB.p = on - Rotate(pair.xfB.q, b.Vertices()[lowest]);
         v = rng.Uniform(0.5, 3.0) * (rng.Chance(0.5) ? 1.0 : -1.0) * edge;
     }
     return pair;
@@ -559,7 +559,7 @@ Touching OnFace(Rng& rng, const Polygon& a, const Shape& b, bool faceToFace)
     const Vec2 n = a.Normal(face);
     out.face = face;
     out.along = rng.Uniform(0.1, 0.9);
-    const Vec2 point = a.vertices[face] + out.along * a.Edge(face);
+    const Vec2 point = a.Vertices()[face] + out.along * a.Edge(face);
     double angleB = TouchAngle(rng);
     Vec2 origin; // B's body origin relative to the touching point, in A's frame
     if (b.type == ShapeType::Circle)
@@ -580,14 +580,14 @@ Touching OnFace(Rng& rng, const Polygon& a, const Shape& b, bool faceToFace)
         {
             for (int k = 1; k < pb.Count(); ++k)
             {
-                if (Dot(n, Rotate(MakeRot(angleB), pb.vertices[k])) <
-                    Dot(n, Rotate(MakeRot(angleB), pb.vertices[touching])))
+                if (Dot(n, Rotate(MakeRot(angleB), pb.Vertices()[k])) <
+                    Dot(n, Rotate(MakeRot(angleB), pb.Vertices()[touching])))
                 {
                     touching = k;
                 }
             }
         }
-        origin = -Rotate(MakeRot(angleB), pb.vertices[touching]);
+        origin = -Rotate(MakeRot(angleB), pb.Vertices()[touching]);
     }
     out.xfB = MakeTransform(TransformPoint(out.xfA, point + origin), angleA + angleB);
     out.normal = Rotate(out.xfA.q, n);
@@ -614,7 +614,7 @@ Touching OnVertex(Rng& rng, const Polygon& a, const Shape& disc)
     const Vec2 direction{std::cos(angle), std::sin(angle)};
     const double angleB = TouchAngle(rng);
     const Vec2 origin = disc.circle.radius * direction - Rotate(MakeRot(angleB), disc.circle.center);
-    out.xfB = MakeTransform(TransformPoint(out.xfA, a.vertices[k] + origin), angleA + angleB);
+    out.xfB = MakeTransform(TransformPoint(out.xfA, a.Vertices()[k] + origin), angleA + angleB);
     out.normal = Rotate(out.xfA.q, direction);
     out.tangent = LeftPerp(out.normal);
     return out;
@@ -853,15 +853,15 @@ TEST_CASE("A polygon landing on a face touches it at its lowest vertex or along 
         REQUIRE(r.status == SweepStatus::Hit);
         REQUIRE(std::abs(r.toi - tau) <= 1e-12 * scale / Length(v));
         // The face from its first vertex, and B's vertices on its line at the placement, along it.
-        const Vec2 start = TransformPoint(pair.xfA, a.vertices[pair.face]);
+        const Vec2 start = TransformPoint(pair.xfA, a.Vertices()[pair.face]);
         const auto along = [&](Vec2 world) { return Dot(world - start, pair.tangent); };
-        const double faceEnd = along(TransformPoint(pair.xfA, a.vertices[(pair.face + 1) % a.Count()]));
+        const double faceEnd = along(TransformPoint(pair.xfA, a.Vertices()[(pair.face + 1) % a.Count()]));
         double low = faceEnd;
         double high = 0.0;
         int onLine = 0;
         for (int k = 0; k < b.Count(); ++k)
         {
-            const Vec2 w = TransformPoint(pair.xfB, b.vertices[k]);
+            const Vec2 w = TransformPoint(pair.xfB, b.Vertices()[k]);
             if (Dot(w - start, pair.normal) <= 1e-12 * scale)
             {
                 ++onLine;
@@ -1274,10 +1274,10 @@ TEST_CASE("Boxes and circles never tunnel through a rotated thin wall", "[sweep]
             const Vec2 onFace = TransformPoint(xfWall, Vec2{-5e-4, rng.Uniform(-5.0, 5.0)});
             const Rot q = MakeRot(rng.Uniform(-kPi, kPi));
             // The projectile's origin when its leading point is on the face.
-            Vec2 lead = round ? -0.005 * outward : Rotate(q, box.polygon.vertices[0]);
+            Vec2 lead = round ? -0.005 * outward : Rotate(q, box.polygon.Vertices()[0]);
             if (!round)
             {
-                for (const Vec2& vertex : box.polygon.vertices)
+                for (const Vec2& vertex : box.polygon.Vertices())
                 {
                     lead = Dot(Rotate(q, vertex), outward) < Dot(lead, outward) ? Rotate(q, vertex) : lead;
                 }
@@ -1297,7 +1297,7 @@ TEST_CASE("Boxes and circles never tunnel through a rotated thin wall", "[sweep]
             }
             else
             {
-                for (const Vec2& vertex : box.polygon.vertices)
+                for (const Vec2& vertex : box.polygon.Vertices())
                 {
                     const Quad t = (face - localX(QTransform(start, vertex))) / rate;
                     expected = t < expected ? t : expected;

@@ -120,7 +120,7 @@ TEST_CASE("Overlap of polygons above 8 vertices stops when a vertex of B lies in
         INFO("pair " << i << ", " << n << " vertices");
         REQUIRE(overlap == Collide(a, pair.xfA, b, pair.xfB).overlap);
         // How far outside A each vertex of B lies (<= 0 inside).
-        auto depthOutside = [&](int j) { return DepthOutside(a, pair.xfA, TransformPoint(pair.xfB, b.vertices[j])); };
+        auto depthOutside = [&](int j) { return DepthOutside(a, pair.xfA, TransformPoint(pair.xfB, b.Vertices()[j])); };
         if (!overlap)
         {
             REQUIRE(trace.exit == TraceExit::SeparatingAxis);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The private search helpers of the walked face queries against brute force.
 
-#include "sat_impl.h"
+#include "sat/walked_faces.h"
 #include "support/builders.h"
 #include "support/random_shapes.h"
 #include "support/reference.h"
@@ -54,16 +54,16 @@ TEST_CASE("WedgeOf finds the wedge of the centroid's fan that holds a point, fro
         switch (rng.Int(0, 3))
         {
         case 0:
-            p = polygon.centroid + rng.Uniform(0.0, 2.0) * (polygon.vertices[v] - polygon.centroid);
+            p = polygon.Centroid() + rng.Uniform(0.0, 2.0) * (polygon.Vertices()[v] - polygon.Centroid());
             break;
         case 1:
-            p = polygon.vertices[v] + rng.Uniform(-1e-9, 1e-9) * Vec2{rng.Uniform(-1.0, 1.0), rng.Uniform(-1.0, 1.0)};
+            p = polygon.Vertices()[v] + rng.Uniform(-1e-9, 1e-9) * Vec2{rng.Uniform(-1.0, 1.0), rng.Uniform(-1.0, 1.0)};
             break;
         case 2:
             p = Vec2{rng.Uniform(-20.0, 20.0), rng.Uniform(-20.0, 20.0)};
             break;
         default:
-            p = polygon.centroid;
+            p = polygon.Centroid();
             break;
         }
         const int start = rng.Int(0, n - 1);
@@ -72,12 +72,12 @@ TEST_CASE("WedgeOf finds the wedge of the centroid's fan that holds a point, fro
         REQUIRE(wedge >= 0);
         REQUIRE(wedge < n);
         // The point's ray lies between the wedge's rays (up to rounding of the turns).
-        const Vec2 c = polygon.centroid;
-        const Vec2 r = polygon.vertices[0];
+        const Vec2 c = polygon.Centroid();
+        const Vec2 r = polygon.Vertices()[0];
         const long double turn = TurnFrom(c, r, p);
-        const long double from = wedge == 0 ? 0.0L : TurnFrom(c, r, polygon.vertices[wedge]);
+        const long double from = wedge == 0 ? 0.0L : TurnFrom(c, r, polygon.Vertices()[wedge]);
         const long double to =
-            wedge + 1 == n ? 2.0L * static_cast<long double>(kPi) : TurnFrom(c, r, polygon.vertices[wedge + 1]);
+            wedge + 1 == n ? 2.0L * static_cast<long double>(kPi) : TurnFrom(c, r, polygon.Vertices()[wedge + 1]);
         const long double slack = 1e-12L;
         if (Length(p - c) > 1e-9 * Length(r - c))
         {

@@ -170,7 +170,7 @@ TEST_CASE("A fast-spinning plank never ends a step through a thin wall", "[world
         {
             Step(world, kDt);
             const RigidBody& b = world.bodies[static_cast<size_t>(plank)];
-            for (const Vec2& v : b.shape.polygon.vertices)
+            for (const Vec2& v : b.shape.polygon.Vertices())
             {
                 reach = std::max(reach, TransformPoint(b.Xf(), v).x);
             }

@@ -71,7 +71,7 @@ ReferenceMass Reference(const std::vector<Vec2>& points, double density)
 
 std::vector<Vec2> Outline(const Polygon& polygon)
 {
-    return std::vector<Vec2>(polygon.vertices.begin(), polygon.vertices.end());
+    return std::vector<Vec2>(polygon.Vertices().begin(), polygon.Vertices().end());
 }
 
 Shape PolygonShape(const std::vector<Vec2>& points)
@@ -578,7 +578,7 @@ TEST_CASE("ComputeAabb is the tight box of the placed shape", "[world][broadphas
         {
             expected.min = {1e300, 1e300};
             expected.max = {-1e300, -1e300};
-            for (const Vec2& v : shape.polygon.vertices)
+            for (const Vec2& v : shape.polygon.Vertices())
             {
                 const Vec2 w = TransformPoint(xf, v);
                 expected.min = {std::min(expected.min.x, w.x), std::min(expected.min.y, w.y)};

@@ -827,8 +827,8 @@ bool SameVertices(const Polygon& polygon, const std::vector<Vec2>& points)
     }
     for (int i = 0; i < polygon.Count(); ++i)
     {
-        if (!SameDouble(polygon.vertices[i].x, points[static_cast<size_t>(i)].x) ||
-            !SameDouble(polygon.vertices[i].y, points[static_cast<size_t>(i)].y))
+        if (!SameDouble(polygon.Vertices()[i].x, points[static_cast<size_t>(i)].x) ||
+            !SameDouble(polygon.Vertices()[i].y, points[static_cast<size_t>(i)].y))
         {
             return false;
         }
@@ -839,7 +839,7 @@ bool SameVertices(const Polygon& polygon, const std::vector<Vec2>& points)
 bool SameVertices(const Polygon& polygon, const PolygonResult& made)
 {
     return made.Ok() &&
-           SameVertices(polygon, std::vector<Vec2>(made.polygon.vertices.begin(), made.polygon.vertices.end()));
+           SameVertices(polygon, std::vector<Vec2>(made.polygon.Vertices().begin(), made.polygon.Vertices().end()));
 }
 
 // The file's own shape field when it still describes the body's shape: a "box" or "regular" shorthand, or the
@@ -876,8 +876,8 @@ const Json* KeptShape(const Polygon& polygon, const Json* old, std::string& key)
         {
             const Json& p = (*points)[static_cast<size_t>(i)];
             if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number() ||
-                !SameDouble(p[0].get<double>(), polygon.vertices[i].x) ||
-                !SameDouble(p[1].get<double>(), polygon.vertices[i].y))
+                !SameDouble(p[0].get<double>(), polygon.Vertices()[i].x) ||
+                !SameDouble(p[1].get<double>(), polygon.Vertices()[i].y))
             {
                 return nullptr;
             }
@@ -911,7 +911,7 @@ Json BodyJson(const Body& body, const Json* old, size_t index, bool fromFile)
         else
         {
             Json vertices = Json::array();
-            for (const Vec2& v : body.shape.polygon.vertices)
+            for (const Vec2& v : body.shape.polygon.Vertices())
             {
                 vertices.push_back(Json::array({v.x, v.y}));
             }

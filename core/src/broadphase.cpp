@@ -17,11 +17,11 @@ Aabb ComputeAabb(const Shape& shape, const Transform& xf)
         return {{c.x - r, c.y - r}, {c.x + r, c.y + r}};
     }
     const Polygon& polygon = shape.polygon;
-    Vec2 lo = TransformPoint(xf, polygon.vertices[0]);
+    Vec2 lo = TransformPoint(xf, polygon.Vertices()[0]);
     Vec2 hi = lo;
     for (int i = 1; i < polygon.Count(); ++i)
     {
-        const Vec2 v = TransformPoint(xf, polygon.vertices[i]);
+        const Vec2 v = TransformPoint(xf, polygon.Vertices()[i]);
         lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)};
         hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
     }

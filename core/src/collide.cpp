@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 // satviz: the public entry points of the manifold query. Each one picks the tracer once per call (null, or the
-// recorder when a trace is requested) and runs the single template implementation in sat_impl.h.
+// recorder when a trace is requested) and runs the single template implementation in core/src/sat/.
 
 #include "entry.h"
-#include "sat_impl.h"
+#include "sat/circle_circle.h"
+#include "sat/polygon_circle.h"
+#include "sat/polygon_polygon.h"
 
 #include <satviz/collide.h>
 

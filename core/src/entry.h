@@ -2,8 +2,8 @@
 // satviz (private): what the public entry points share: choosing the tracer once per call and dispatching shapes.
 #pragma once
 
-#include "sat_impl.h"
-#include "tracer.h"
+#include "sat/cpu_dispatch.h"
+#include "sat/tracer.h"
 
 #include <satviz/shape.h>
 #include <satviz/trace.h>

@@ -29,7 +29,7 @@ MassProperties ComputeMass(const Shape& shape, double density)
     const Polygon& polygon = shape.polygon;
     const int n = polygon.Count();
     Vec2 apex{};
-    for (const Vec2& v : polygon.vertices)
+    for (const Vec2& v : polygon.Vertices())
     {
         apex = apex + v;
     }
@@ -40,8 +40,8 @@ MassProperties ComputeMass(const Shape& shape, double density)
     double second = 0.0;
     for (int i = 0; i < n; ++i)
     {
-        const Vec2 e1 = polygon.vertices[i] - apex;
-        const Vec2 e2 = polygon.vertices[i + 1 < n ? i + 1 : 0] - apex;
+        const Vec2 e1 = polygon.Vertices()[i] - apex;
+        const Vec2 e2 = polygon.Vertices()[i + 1 < n ? i + 1 : 0] - apex;
         const double d = Cross(e1, e2);
         area += 0.5 * d;
         first = first + (d / 6.0) * (e1 + e2);
@@ -66,7 +66,7 @@ double InnerRadius(const Shape& shape, Vec2 center)
     double inner = INFINITY;
     for (int i = 0; i < polygon.Count(); ++i)
     {
-        inner = std::min(inner, Dot(polygon.Normal(i), polygon.vertices[i] - center));
+        inner = std::min(inner, Dot(polygon.Normal(i), polygon.Vertices()[i] - center));
     }
     return std::max(0.0, inner);
 }
@@ -78,7 +78,7 @@ double OuterRadius(const Shape& shape, Vec2 center)
         return Length(center - shape.circle.center) + shape.circle.radius;
     }
     double outer2 = 0.0;
-    for (const Vec2& v : shape.polygon.vertices)
+    for (const Vec2& v : shape.polygon.Vertices())
     {
         outer2 = std::max(outer2, LengthSquared(v - center));
     }

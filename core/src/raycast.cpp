@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "sat_impl.h"
+#include "sat/support.h"
 
 #include <satviz/raycast.h>
 
@@ -26,7 +26,7 @@ int CrossingFace(const PolygonT<S>& polygon, int from, int to, bool falling, Vec
     const auto at = [n, from](int k) { return from + k < n ? from + k : from + k - n; };
     // Whether vertex `from + k` already lies on the far side.
     const auto past = [&](int k) {
-        const S side = Cross(d, polygon.vertices[at(k)] - q);
+        const S side = Cross(d, polygon.Vertices()[at(k)] - q);
         return falling ? side < S(0) : side >= S(0);
     };
     int lo = 0;
@@ -103,8 +103,8 @@ RayHitT<S> RayCast(const PolygonT<S>& polygon, const TransformT<S>& xf, Vec2T<S>
         const Vec2T<S> across = LeftPerp(d);
         const int left = detail::BisectSupport(polygon, across);
         const int right = detail::BisectSupport(polygon, -across);
-        const S leftSide = Cross(d, polygon.vertices[left] - q);
-        const S rightSide = Cross(d, polygon.vertices[right] - q);
+        const S leftSide = Cross(d, polygon.Vertices()[left] - q);
+        const S rightSide = Cross(d, polygon.Vertices()[right] - q);
         if (leftSide < S(0) || rightSide > S(0))
         {
             return out;
@@ -115,8 +115,8 @@ RayHitT<S> RayCast(const PolygonT<S>& polygon, const TransformT<S>& xf, Vec2T<S>
             const int away = CrossingFace(polygon, right, left, false, q, d);
             const Vec2T<S> nIn = polygon.Normal(in);
             const Vec2T<S> nAway = polygon.Normal(away);
-            const S sIn = Dot(nIn, q - polygon.vertices[in]);
-            const S sAway = Dot(nAway, q - polygon.vertices[away]);
+            const S sIn = Dot(nIn, q - polygon.Vertices()[in]);
+            const S sAway = Dot(nAway, q - polygon.Vertices()[away]);
             inside = sIn <= S(0) && sAway <= S(0);
             const S eIn = Dot(nIn, d);
             const S eAway = Dot(nAway, d);
@@ -132,7 +132,7 @@ RayHitT<S> RayCast(const PolygonT<S>& polygon, const TransformT<S>& xf, Vec2T<S>
     for (int i = 0; i < polygon.Count(); ++i)
     {
         const Vec2T<S> n = polygon.Normal(i);
-        const S s = Dot(n, q - polygon.vertices[i]);
+        const S s = Dot(n, q - polygon.Vertices()[i]);
         const S e = Dot(n, d);
         inside = inside && s <= S(0);
         if (e == S(0))

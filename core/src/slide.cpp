@@ -22,7 +22,7 @@ S DefaultSkin(const ShapeT<S>& mover, const TransformT<S>& xf)
     }
     else
     {
-        for (const Vec2T<S>& v : mover.polygon.vertices)
+        for (const Vec2T<S>& v : mover.polygon.Vertices())
         {
             size = std::max(size, Length(v));
         }

@@ -23,9 +23,9 @@ struct Placed
 
     bool IsPolygon() const { return shape->type == ShapeType::Polygon; }
     const PolygonT<S>& Polygon() const { return shape->polygon; }
-    Vec2T<S> Vertex(int i) const { return TransformPoint(xf, Polygon().vertices[i]); }
+    Vec2T<S> Vertex(int i) const { return TransformPoint(xf, Polygon().Vertices()[i]); }
     Vec2T<S> Normal(int i) const { return Rotate(xf.q, Polygon().Normal(i)); }
-    Vec2T<S> Center() const { return TransformPoint(xf, IsPolygon() ? Polygon().centroid : shape->circle.center); }
+    Vec2T<S> Center() const { return TransformPoint(xf, IsPolygon() ? Polygon().Centroid() : shape->circle.center); }
 
     // The projection interval [lo, hi] on u: every vertex's dot product, or the centre's plus and minus the radius.
     void Project(Vec2T<S> u, S& lo, S& hi) const
@@ -143,7 +143,7 @@ std::vector<Candidate<S>> DistinctAxes(const Placed<S>& a, const Placed<S>& b, b
         {
             const PolygonT<S>& polygon = shapes[side]->Polygon();
             S reach = S(0);
-            for (const Vec2T<S>& v : polygon.vertices)
+            for (const Vec2T<S>& v : polygon.Vertices())
             {
                 reach = std::max(reach, Length(v));
             }

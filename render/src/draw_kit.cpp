@@ -93,7 +93,7 @@ std::vector<ScreenPoint> ShapeOutline(const View& view, const Shape& shape, cons
     std::vector<ScreenPoint> points;
     if (shape.type == ShapeType::Polygon)
     {
-        const auto& vertices = shape.polygon.vertices;
+        const auto& vertices = shape.polygon.Vertices();
         points.reserve(vertices.size());
         for (const Vec2& v : vertices)
         {

@@ -55,7 +55,7 @@ std::vector<std::pair<Vec2, double>> PairPoints(const Scene& scene, const PairSt
             const Transform xf = BodyTransformAt(body, k);
             if (body.shape.type == ShapeType::Polygon)
             {
-                for (const Vec2& v : body.shape.polygon.vertices)
+                for (const Vec2& v : body.shape.polygon.Vertices())
                 {
                     points.push_back({TransformPoint(xf, v), 0.0});
                 }
@@ -121,7 +121,7 @@ void AxisLineSpan(double minA, double maxA, double minB, double maxB, double& lo
 
 Vec2 ShapeCenter(const Shape& shape, const Transform& xf)
 {
-    return TransformPoint(xf, shape.type == ShapeType::Polygon ? shape.polygon.centroid : shape.circle.center);
+    return TransformPoint(xf, shape.type == ShapeType::Polygon ? shape.polygon.Centroid() : shape.circle.center);
 }
 
 // Lowest and highest projection of a placed shape on a unit direction, with the points that reach them.
@@ -136,7 +136,7 @@ void Extremes(const Shape& shape, const Transform& xf, Vec2 d, Vec2& low, Vec2& 
     }
     double lo = INFINITY;
     double hi = -INFINITY;
-    for (const Vec2& v : shape.polygon.vertices)
+    for (const Vec2& v : shape.polygon.Vertices())
     {
         const Vec2 p = TransformPoint(xf, v);
         const double s = Dot(p, d);
@@ -586,7 +586,7 @@ class Painter
             const auto& poly = body.shape.polygon;
             for (int i = 0; i < poly.Count(); ++i)
             {
-                const Vec2 mid = TransformPoint(xf, poly.vertices[i] + 0.5 * poly.Edge(i));
+                const Vec2 mid = TransformPoint(xf, poly.Vertices()[i] + 0.5 * poly.Edge(i));
                 const Vec2 n = Rotate(xf.q, poly.Normal(i));
                 const ScreenPoint a = At(mid);
                 Arrow(canvas_, a, {a.x + 22.0f * static_cast<float>(n.x), a.y - 22.0f * static_cast<float>(n.y)},
@@ -634,7 +634,7 @@ class Painter
             const Transform xf = body.Xf();
             if (body.shape.type == ShapeType::Polygon)
             {
-                for (const Vec2& v : body.shape.polygon.vertices)
+                for (const Vec2& v : body.shape.polygon.Vertices())
                 {
                     out.push_back(TransformPoint(xf, v));
                 }
@@ -694,7 +694,7 @@ class Painter
         };
         const Vec2 origin = -1.0 * base;
         include(origin);
-        for (const Vec2& p : hull.polygon.vertices)
+        for (const Vec2& p : hull.polygon.Vertices())
         {
             include(p);
         }
@@ -710,7 +710,7 @@ class Painter
                                static_cast<float>(0.5 * (box.minY + box.maxY) + 8.0 - (p.y - middle.y) * scale)};
         };
         std::vector<ScreenPoint> screen;
-        for (const Vec2& p : hull.polygon.vertices)
+        for (const Vec2& p : hull.polygon.Vertices())
         {
             screen.push_back(at(p));
         }
@@ -795,8 +795,8 @@ class Painter
             }
             const auto& poly = body.shape.polygon;
             const Transform xf = body.Xf();
-            const Vec2 v1 = TransformPoint(xf, poly.vertices[ref.index]);
-            const Vec2 v2 = TransformPoint(xf, poly.vertices[(ref.index + 1) % poly.Count()]);
+            const Vec2 v1 = TransformPoint(xf, poly.Vertices()[ref.index]);
+            const Vec2 v2 = TransformPoint(xf, poly.Vertices()[(ref.index + 1) % poly.Count()]);
             canvas_.Segment(At(v1), At(v2), color, 4.0f);
             const ScreenPoint mid = At(0.5 * (v1 + v2));
             const Vec2 n = Rotate(xf.q, poly.Normal(ref.index));
@@ -811,7 +811,7 @@ class Painter
             {
                 return;
             }
-            const Vec2 v = TransformPoint(poly.Xf(), poly.shape.polygon.vertices[ref.index]);
+            const Vec2 v = TransformPoint(poly.Xf(), poly.shape.polygon.Vertices()[ref.index]);
             const Vec2 c = TransformPoint(circle.Xf(), circle.shape.circle.center);
             DashedSegment(canvas_, At(v), At(c), color, 2.0f, bounds_);
             canvas_.FillCircle(At(v), 4.0f, color);
@@ -1078,25 +1078,25 @@ class Painter
             if (body.shape.type == ShapeType::Polygon && body.shape.polygon.Count() <= 24)
             {
                 const auto& poly = body.shape.polygon;
-                const Vec2 centroid = TransformPoint(xf, poly.centroid);
+                const Vec2 centroid = TransformPoint(xf, poly.Centroid());
                 // Numbers crowd a shape only a few dozen pixels wide: they are left out there.
                 double extent = 0.0;
-                for (const Vec2& v : poly.vertices)
+                for (const Vec2& v : poly.Vertices())
                 {
-                    extent = std::max(extent, Length(v - poly.centroid) * view_.zoom);
+                    extent = std::max(extent, Length(v - poly.Centroid()) * view_.zoom);
                 }
                 const bool vertexNumbers = extent >= 45.0;
                 const bool edgeNumbers = extent >= 70.0 && poly.Count() <= 16;
                 for (int i = 0; vertexNumbers && i < poly.Count(); ++i)
                 {
-                    const Vec2 v = TransformPoint(xf, poly.vertices[i]);
+                    const Vec2 v = TransformPoint(xf, poly.Vertices()[i]);
                     const Vec2 out = v - centroid;
                     labels_.Place(At(v), std::to_string(i), TextStyle::Label, InkOf(s), static_cast<float>(out.x),
                                   static_cast<float>(-out.y), 4.0f, true);
                 }
                 for (int i = 0; edgeNumbers && i < poly.Count(); ++i)
                 {
-                    const Vec2 mid = TransformPoint(xf, poly.vertices[i] + 0.5 * poly.Edge(i));
+                    const Vec2 mid = TransformPoint(xf, poly.Vertices()[i] + 0.5 * poly.Edge(i));
                     const Vec2 n = Rotate(xf.q, poly.Normal(i));
                     labels_.Place(At(mid), "e" + std::to_string(i), TextStyle::Label, WithAlpha(InkOf(s), 0.75f),
                                   static_cast<float>(n.x), static_cast<float>(-n.y), 5.0f, true);
@@ -1446,7 +1446,7 @@ View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int
         const Transform xf = shifted.Xf();
         if (shifted.shape.type == ShapeType::Polygon)
         {
-            for (const Vec2& v : shifted.shape.polygon.vertices)
+            for (const Vec2& v : shifted.shape.polygon.Vertices())
             {
                 moved.push_back({TransformPoint(xf, v), 0.0});
             }

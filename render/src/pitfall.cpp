@@ -20,7 +20,7 @@ namespace
 std::vector<Vec2> World(const Body& body)
 {
     std::vector<Vec2> out;
-    for (const Vec2& v : body.shape.polygon.vertices)
+    for (const Vec2& v : body.shape.polygon.Vertices())
     {
         out.push_back(TransformPoint(body.Xf(), v));
     }
@@ -221,7 +221,7 @@ PitfallResult FloatWorld(const Scene& scene, int a, int b, const TextbookResult&
         const RotT<float> q = MakeRot(static_cast<float>(body.angle));
         const Vec2T<float> p = ConvertVec<float>(body.position);
         std::vector<Vec2T<float>> points;
-        for (const Vec2& v : body.shape.polygon.vertices)
+        for (const Vec2& v : body.shape.polygon.Vertices())
         {
             points.push_back(Rotate(q, ConvertVec<float>(v)) + p);
         }

@@ -374,7 +374,7 @@ int main(int argc, char** argv)
         size_t second = 0;
         for (const satviz::Body& body : loaded.scene.bodies)
         {
-            const size_t n = body.shape.type == satviz::ShapeType::Polygon ? body.shape.polygon.vertices.size() : 1;
+            const size_t n = body.shape.type == satviz::ShapeType::Polygon ? body.shape.polygon.Vertices().size() : 1;
             second = std::max(second, std::min(largest, n));
             largest = std::max(largest, n);
         }

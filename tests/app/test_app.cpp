@@ -230,7 +230,7 @@ struct Harness
 
 Vec2 Centroid(const Body& body)
 {
-    return TransformPoint(body.Xf(), body.shape.type == ShapeType::Polygon ? body.shape.polygon.centroid
+    return TransformPoint(body.Xf(), body.shape.type == ShapeType::Polygon ? body.shape.polygon.Centroid()
                                                                            : body.shape.circle.center);
 }
 
@@ -297,21 +297,23 @@ TEST_CASE("A vertex drag that would break convexity is refused and says why", "[
     // Select B, then drag its vertex 0 to the far side of the diagonal through vertices 1 and 3.
     h.Drag(h.OnScreen(Centroid(b)), h.OnScreen(Centroid(b)));
     REQUIRE(h.app->Selected() >= 0);
-    const Vec2 v0 = TransformPoint(b.Xf(), b.shape.polygon.vertices[0]);
-    const Vec2 v2 = TransformPoint(b.Xf(), b.shape.polygon.vertices[2]);
+    const Vec2 v0 = TransformPoint(b.Xf(), b.shape.polygon.Vertices()[0]);
+    const Vec2 v2 = TransformPoint(b.Xf(), b.shape.polygon.Vertices()[2]);
     const Vec2 beyond = v0 + 0.8 * (v2 - v0);
     h.Drag(h.OnScreen(v0), h.OnScreen(beyond));
     CHECK(h.app->StatusIsError());
     CHECK(h.app->Status().find("convex") != std::string::npos);
     const Body& kept = h.BodyNamed("B");
-    const Vec2 v0after = TransformPoint(kept.Xf(), kept.shape.polygon.vertices[0]);
+    const Vec2 v0after = TransformPoint(kept.Xf(), kept.shape.polygon.Vertices()[0]);
     CHECK(Length(v0after - beyond) > 0.1); // never accepted there
-    CHECK(MakePolygon(std::vector<Vec2>(kept.shape.polygon.vertices.begin(), kept.shape.polygon.vertices.end())).Ok());
+    CHECK(MakePolygon(std::vector<Vec2>(kept.shape.polygon.Vertices().begin(), kept.shape.polygon.Vertices().end()))
+              .Ok());
     // A small outward move is accepted.
     const Vec2 outward = v0 + 0.1 * (v0 - v2);
     h.Drag(h.OnScreen(v0after), h.OnScreen(outward));
     const Body& moved = h.BodyNamed("B");
-    CHECK(Length(TransformPoint(moved.Xf(), moved.shape.polygon.vertices[0]) - outward) < 2.0 / h.View().Camera().zoom);
+    CHECK(Length(TransformPoint(moved.Xf(), moved.shape.polygon.Vertices()[0]) - outward) <
+          2.0 / h.View().Camera().zoom);
 }
 
 TEST_CASE("The wheel zooms about the pointer and a drag on empty space pans", "[app]")
@@ -348,7 +350,7 @@ TEST_CASE("Shift-drag turns a body and the velocity handle sets its velocity", "
     // The velocity handle sits right of the selected body while it does not move.
     const Body& turned = h.BodyNamed("B");
     double extent = 0.0;
-    for (const Vec2& v : turned.shape.polygon.vertices)
+    for (const Vec2& v : turned.shape.polygon.Vertices())
     {
         extent = std::max(extent, Length(v));
     }

@@ -18,7 +18,7 @@
 #include "world_bench.h"
 
 // White-box: the benchmark instantiates the algorithm with some of its choices turned off (the variants).
-#include "sat_impl.h"
+#include "sat/polygon_polygon.h"
 
 #include <satviz/sat.h>
 
@@ -123,8 +123,8 @@ struct SatvizRecord
 void RaySegment(const Shape& sa, const Transform& xfA, const Shape& sb, const Transform& xfB, Vec2 velocity, Vec2& from,
                 Vec2& to)
 {
-    from = TransformPoint(xfB, sb.polygon.centroid) - 0.5 * velocity;
-    to = TransformPoint(xfA, sa.polygon.centroid);
+    from = TransformPoint(xfB, sb.polygon.Centroid()) - 0.5 * velocity;
+    to = TransformPoint(xfA, sa.polygon.Centroid());
 }
 
 struct FloatRecord
@@ -170,7 +170,7 @@ struct ChipmunkRecord
     {
         auto build = [](cpPolyShape& shape, const Polygon& polygon, const Transform& xf) {
             std::vector<cpVect> vertices;
-            for (const Vec2& v : polygon.vertices)
+            for (const Vec2& v : polygon.Vertices())
             {
                 vertices.push_back(cpv(v.x, v.y));
             }
@@ -222,7 +222,7 @@ void TouchBytes(const void* data, size_t bytes)
 template <typename S>
 void TouchPolygon(const PolygonT<S>& polygon)
 {
-    TouchBytes(polygon.vertices.data, sizeof(Vec2T<S>) * static_cast<size_t>(2 * polygon.Count() + 1));
+    TouchBytes(polygon.Vertices().data, sizeof(Vec2T<S>) * static_cast<size_t>(2 * polygon.Count() + 1));
 }
 
 void TouchRecord(const SatvizRecord& r)
@@ -305,7 +305,8 @@ b2PolygonShape ToBox2D(const Polygon& polygon)
     b2Vec2 centroid(0.0f, 0.0f);
     for (int i = 0; i < polygon.Count(); ++i)
     {
-        shape.m_vertices[i].Set(static_cast<float>(polygon.vertices[i].x), static_cast<float>(polygon.vertices[i].y));
+        shape.m_vertices[i].Set(static_cast<float>(polygon.Vertices()[i].x),
+                                static_cast<float>(polygon.Vertices()[i].y));
         shape.m_normals[i].Set(static_cast<float>(polygon.Normal(i).x), static_cast<float>(polygon.Normal(i).y));
         centroid += shape.m_vertices[i];
     }
@@ -376,7 +377,7 @@ BenchPair MakeBenchPair(const RandomPair& r, Rng& rng)
     p.xfA = r.xfA;
     p.xfB = r.xfB;
     // B heads roughly towards A and sometimes misses: v = k (cA - cB) + s perp(cA - cB).
-    const Vec2 toward = TransformPoint(p.xfA, p.sa.polygon.centroid) - TransformPoint(p.xfB, p.sb.polygon.centroid);
+    const Vec2 toward = TransformPoint(p.xfA, p.sa.polygon.Centroid()) - TransformPoint(p.xfB, p.sb.polygon.Centroid());
     p.velocity = rng.Uniform(0.2, 1.5) * toward + rng.Uniform(-0.5, 0.5) * LeftPerp(toward);
     const PolygonResultT<float> fa = ConvertPolygon<float>(p.sa.polygon);
     const PolygonResultT<float> fb = ConvertPolygon<float>(p.sb.polygon);
@@ -457,10 +458,6 @@ struct NoEarlyExit : detail::NullTracer
 struct NoParallelSkip : detail::NullTracer
 {
     static constexpr bool kSkipParallel = false;
-};
-struct WithPruning : detail::NullTracer
-{
-    static constexpr bool kPrune = true;
 };
 struct NoWalkedPruning : detail::NullTracer
 {
@@ -555,7 +552,6 @@ std::vector<Query> Queries()
         SatvizQuery("satviz Overlap, as compiled here", false, OverlapVariant<detail::NullTracer>),
         SatvizQuery("satviz Overlap, no early exit", false, OverlapVariant<NoEarlyExit>),
         SatvizQuery("satviz Overlap, no parallel skip", false, OverlapVariant<NoParallelSkip>),
-        SatvizQuery("satviz Overlap, with pruning", false, OverlapVariant<WithPruning>),
         SatvizQuery("satviz Overlap, walk only", false, OverlapVariant<WalkOnly>),
         SatvizQuery("satviz Overlap, walked unpruned", false, OverlapVariant<NoWalkedPruning>),
         SatvizQuery("satviz Collide, as compiled here", false, CollideVariant<detail::NullTracer>),
@@ -1080,7 +1076,6 @@ void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n,
     const SatvizRecord record{p.sa, p.sb, p.xfA, p.xfB, p.velocity, {}, {}};
     Record(acc["satviz Overlap, no early exit"], OverlapVariant<NoEarlyExit>(record) != 0.0, ref, 0.0, false);
     Record(acc["satviz Overlap, no parallel skip"], OverlapVariant<NoParallelSkip>(record) != 0.0, ref, 0.0, false);
-    Record(acc["satviz Overlap, with pruning"], OverlapVariant<WithPruning>(record) != 0.0, ref, 0.0, false);
     Record(acc["satviz Overlap, walk only"], OverlapVariant<WalkOnly>(record) != 0.0, ref, 0.0, false);
     Record(acc["satviz Overlap, walked unpruned"], OverlapVariant<NoWalkedPruning>(record) != 0.0, ref, 0.0, false);
     const auto collideVariant = [&](const char* name, auto variant) {
@@ -1139,7 +1134,7 @@ void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n,
     Vec2 rayFrom;
     Vec2 rayTo;
     RaySegment(p.sa, p.xfA, p.sb, p.xfB, p.velocity, rayFrom, rayTo);
-    const Vec2 corner = TransformPoint(p.xfA, p.sa.polygon.vertices[static_cast<size_t>(rng.Int(0, n - 1))]);
+    const Vec2 corner = TransformPoint(p.xfA, p.sa.polygon.Vertices()[static_cast<size_t>(rng.Int(0, n - 1))]);
     const Vec2 past = corner + (Radius(p.sa.polygon) * rng.Uniform(-0.1, 0.1)) * Normalize(LeftPerp(corner - rayFrom));
     const Vec2 rays[2][2] = {{rayFrom, rayTo}, {rayFrom, rayFrom + 1.5 * (past - rayFrom)}};
     for (const auto& ray : rays)
@@ -1211,7 +1206,7 @@ void RecordPair(std::map<std::string, Accuracy>& acc, const BenchPair& p, int n,
         const double skinDepth = manifold.pointCount > 0 ? Box2DDepth(manifold, p, box2dNormal, b2_polygonRadius) : 0.0;
         Record(acc["box2d+skin b2CollidePolygons"], manifold.pointCount > 0, ref, skinDepth, true, box2dNormal, scale);
         BenchPair recentred = p;
-        const Vec2 origin = TransformPoint(p.xfA, p.sa.polygon.vertices[0]);
+        const Vec2 origin = TransformPoint(p.xfA, p.sa.polygon.Vertices()[0]);
         recentred.bxfA = ToBox2D(Transform{p.xfA.p - origin, p.xfA.q});
         recentred.bxfB = ToBox2D(Transform{p.xfB.p - origin, p.xfB.q});
         Record(acc["box2d+recenter b2TestOverlap"], b2TestOverlap(&p.ba, 0, &p.bb, 0, recentred.bxfA, recentred.bxfB),
@@ -1586,8 +1581,6 @@ int main(int argc, char** argv)
     ratioRow("Overlap without early exit / Overlap", "satviz Overlap, no early exit",
              "satviz Overlap, as compiled here");
     ratioRow("Overlap without parallel skip / Overlap", "satviz Overlap, no parallel skip",
-             "satviz Overlap, as compiled here");
-    ratioRow("Overlap with back-face pruning / Overlap", "satviz Overlap, with pruning",
              "satviz Overlap, as compiled here");
     ratioRow("Overlap walking, not scanning / Overlap", "satviz Overlap, walk only",
              "satviz Overlap, as compiled here");

@@ -17,10 +17,10 @@ namespace satviz::bench
 /// World-space vertices of a placed polygon, in a reused buffer (no allocation once warm).
 inline const std::vector<Vec2>& WorldVertices(const Polygon& p, const Transform& xf, std::vector<Vec2>& out)
 {
-    out.resize(p.vertices.size());
+    out.resize(p.Vertices().size());
     for (int i = 0; i < p.Count(); ++i)
     {
-        out[static_cast<size_t>(i)] = TransformPoint(xf, p.vertices[i]);
+        out[static_cast<size_t>(i)] = TransformPoint(xf, p.Vertices()[i]);
     }
     return out;
 }

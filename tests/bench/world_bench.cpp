@@ -128,7 +128,7 @@ b2PolygonShape ToBox2D(const Polygon& polygon)
     b2Vec2 points[b2_maxPolygonVertices];
     for (int i = 0; i < polygon.Count(); ++i)
     {
-        points[i].Set(static_cast<float>(polygon.vertices[i].x), static_cast<float>(polygon.vertices[i].y));
+        points[i].Set(static_cast<float>(polygon.Vertices()[i].x), static_cast<float>(polygon.Vertices()[i].y));
     }
     b2PolygonShape shape;
     shape.Set(points, polygon.Count());

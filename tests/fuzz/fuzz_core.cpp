@@ -117,7 +117,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         }
         else
         {
-            for (const satviz::Vec2& v : shape->polygon.vertices)
+            for (const satviz::Vec2& v : shape->polygon.Vertices())
             {
                 extent = std::max(extent, satviz::Length(v));
             }

@@ -65,7 +65,7 @@ std::pair<double, double> Project(const Body& body, Vec2 d)
     }
     double lo = INFINITY;
     double hi = -INFINITY;
-    for (const Vec2& v : body.shape.polygon.vertices)
+    for (const Vec2& v : body.shape.polygon.Vertices())
     {
         const double s = Dot(TransformPoint(xf, v), d);
         lo = std::min(lo, s);
@@ -519,7 +519,7 @@ TEST_CASE("The verdict draws the MTV arrow to B moved out, and a dot on every co
         }
         // The arrow head's tip is B's centre moved by depth along the normal.
         const Body& b = scene.bodies[static_cast<size_t>(study.bodyB)];
-        const Vec2 center = TransformPoint(b.Xf(), b.shape.type == ShapeType::Polygon ? b.shape.polygon.centroid
+        const Vec2 center = TransformPoint(b.Xf(), b.shape.type == ShapeType::Polygon ? b.shape.polygon.Centroid()
                                                                                       : b.shape.circle.center);
         const ScreenPoint tip = ToScreen(view, center + study.manifold.depth * study.manifold.normal);
         bool found = false;

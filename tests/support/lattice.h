@@ -231,7 +231,7 @@ inline LatticePair TouchingLatticePair(Rng& rng, Contact contact, bool boxes = f
     pair.contact = contact;
     const Polygon& a = pair.a;
     pair.face = rng.Int(0, a.Count() - 1);
-    const Vec2 p = a.vertices[pair.face];
+    const Vec2 p = a.Vertices()[pair.face];
     const Vec2 e = a.Edge(pair.face);
     const Vec2 n = RightPerp(e);
     pair.normal = n;
@@ -251,7 +251,7 @@ inline LatticePair TouchingLatticePair(Rng& rng, Contact contact, bool boxes = f
             outline.push_back(p + (rng.Int(-8, 16) / 8.0) * e + (rng.Int(1, 8) / 8.0) * n);
         }
         const Polygon hull = LatticeHull(outline);
-        outline.assign(hull.vertices.begin(), hull.vertices.end());
+        outline.assign(hull.Vertices().begin(), hull.Vertices().end());
     }
     else
     {
@@ -260,14 +260,14 @@ inline LatticePair TouchingLatticePair(Rng& rng, Contact contact, bool boxes = f
         int deepest = 0;
         for (int k = 1; k < b.Count(); ++k)
         {
-            deepest = Dot(n, Rotate(turn, b.vertices[k])) < Dot(n, Rotate(turn, b.vertices[deepest])) ? k : deepest;
+            deepest = Dot(n, Rotate(turn, b.Vertices()[k])) < Dot(n, Rotate(turn, b.Vertices()[deepest])) ? k : deepest;
         }
         const bool end = contact != Contact::Interpenetrating && rng.Chance(0.2);
         const int eighth = end ? (rng.Chance(0.5) ? 0 : 8) : rng.Int(1, 7);
         const Vec2 target = p + (eighth / 8.0) * e;
-        for (const Vec2& v : b.vertices)
+        for (const Vec2& v : b.Vertices())
         {
-            outline.push_back(Rotate(turn, v) - Rotate(turn, b.vertices[deepest]) + target);
+            outline.push_back(Rotate(turn, v) - Rotate(turn, b.Vertices()[deepest]) + target);
         }
     }
     // Moved by 1/8 of a lattice vector: B's points stay on the lattice of 1/64.

@@ -59,7 +59,7 @@ inline Polygon RandomPolygon(Rng& rng, int n, double radius, double aspect)
 inline double Radius(const Polygon& polygon)
 {
     double radius = 0.0;
-    for (const Vec2& v : polygon.vertices)
+    for (const Vec2& v : polygon.Vertices())
     {
         radius = std::max(radius, Length(v));
     }
@@ -154,7 +154,7 @@ inline RandomPair ContactPair(Rng& rng, int n, PairCategory category, double sli
         pick -= Length(a.Edge(edge));
         ++edge;
     }
-    const Vec2 point = a.vertices[edge] + rng.Uniform(0.1, 0.9) * a.Edge(edge);
+    const Vec2 point = a.Vertices()[edge] + rng.Uniform(0.1, 0.9) * a.Edge(edge);
     const Vec2 normal = a.Normal(edge);
 
     // B's rotation relative to A, and the vertex of B that touches the point.
@@ -174,7 +174,7 @@ inline RandomPair ContactPair(Rng& rng, int n, PairCategory category, double sli
         double lowest = 1e300;
         for (int k = 0; k < n; ++k)
         {
-            const double d = Dot(normal, Rotate(q, b.vertices[k]));
+            const double d = Dot(normal, Rotate(q, b.Vertices()[k]));
             if (d < lowest)
             {
                 lowest = d;
@@ -196,7 +196,7 @@ inline RandomPair ContactPair(Rng& rng, int n, PairCategory category, double sli
         break;
     }
     const Rot qB = MakeRot(angleB);
-    const Vec2 positionInA = point - Rotate(qB, b.vertices[touching]) + delta * normal;
+    const Vec2 positionInA = point - Rotate(qB, b.Vertices()[touching]) + delta * normal;
 
     const double angleA = rng.Uniform(-kPi, kPi);
     pair.a = MakeShape(a);

@@ -78,7 +78,7 @@ inline QVec QTransform(const Transform& xf, Vec2 v)
 inline std::vector<QVec> QWorld(const Polygon& polygon, const Transform& xf)
 {
     std::vector<QVec> out;
-    for (const Vec2& v : polygon.vertices)
+    for (const Vec2& v : polygon.Vertices())
     {
         out.push_back(QTransform(xf, v));
     }
@@ -133,8 +133,8 @@ inline WorldPoint MakeWorldPoint(const Transform& xf, Vec2 v)
 inline std::vector<WorldPoint> WorldPoints(const Polygon& polygon, const Transform& xf)
 {
     std::vector<WorldPoint> out;
-    out.reserve(polygon.vertices.size());
-    for (const Vec2& v : polygon.vertices)
+    out.reserve(polygon.Vertices().size());
+    for (const Vec2& v : polygon.Vertices())
     {
         out.push_back(MakeWorldPoint(xf, v));
     }
@@ -302,8 +302,8 @@ inline long double DepthOutside(const Polygon& polygon, const Transform& xf, Vec
     long double worst = -1e300L;
     for (int k = 0; k < polygon.Count(); ++k)
     {
-        const Vec2 v1 = TransformPoint(xf, polygon.vertices[k]);
-        const Vec2 v2 = TransformPoint(xf, polygon.vertices[(k + 1) % polygon.Count()]);
+        const Vec2 v1 = TransformPoint(xf, polygon.Vertices()[k]);
+        const Vec2 v2 = TransformPoint(xf, polygon.Vertices()[(k + 1) % polygon.Count()]);
         const long double ex = static_cast<long double>(v2.x) - v1.x;
         const long double ey = static_cast<long double>(v2.y) - v1.y;
         const long double cross =

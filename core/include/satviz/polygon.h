@@ -27,6 +27,25 @@ struct Vec2Span
     const Vec2T<S>* end() const { return data + count; }
 };
 
+/// Options for MakePolygon.
+struct PolygonOptions
+{
+    /// Repair what can be repaired without changing the shape: drop repeated vertices and vertices collinear with
+    /// their neighbours, and reverse a clockwise outline. A non-convex outline is still an error.
+    bool repair = false;
+};
+
+/// The outcome of building a polygon (below).
+template <typename S>
+struct PolygonResultT;
+
+/// Validates a counter-clockwise convex outline and precomputes its edges and normals.
+/// Returns an error value (never asserts) for: fewer than 3 vertices, non-finite or too large coordinates,
+/// repeated consecutive vertices, collinear vertices, clockwise winding, a right turn (not convex), and outlines
+/// that wind around more than once (self-intersecting).
+template <typename S>
+PolygonResultT<S> MakePolygon(const std::vector<Vec2T<S>>& points, PolygonOptions options = {});
+
 /// A convex polygon in its body frame: counter-clockwise vertices (interior to the left of each edge), y up.
 /// Any vertex count from 3 upwards; there is no fixed cap. Edge i runs from vertex i to vertex i + 1 (mod count).
 /// Vertices and normals live in one block: inside the polygon itself up to kInlineVertices vertices, so a query on
@@ -40,9 +59,6 @@ class PolygonT
   public:
     /// Polygons with at most this many vertices keep their data inline.
     static constexpr int kInlineVertices = 8;
-
-    Vec2Span<S> vertices; ///< vertices in the body frame, counter-clockwise, strictly convex
-    Vec2T<S> centroid{};  ///< area centroid, body frame
 
     /// An empty polygon.
     PolygonT() = default;
@@ -72,27 +88,39 @@ class PolygonT
     /// Number of vertices.
     int Count() const { return m_count; }
 
+    /// The vertices in the body frame, counter-clockwise, strictly convex. The view stays valid while the polygon
+    /// lives unmoved; the polygon owns the data and only its builders write it, so its invariants (convexity, unit
+    /// normals matching the edges) hold for as long as it exists.
+    Vec2Span<S> Vertices() const { return m_vertices; }
+
+    /// The area centroid, body frame.
+    Vec2T<S> Centroid() const { return m_centroid; }
+
     /// The block of vertices (vertex 0 again after the last) and normals of a polygon kept inline (Count() at most
-    /// kInlineVertices): the same data as vertices.data, at an address known without reading that pointer, so that
+    /// kInlineVertices): the same data as Vertices().data, at an address known without reading that pointer, so that
     /// a query's loads from it need not wait for another load.
     const Vec2T<S>* InlineBlock() const { return m_inline; }
     /// Unit outward normal of edge i (0 <= i < Count()): RightPerp(Edge(i)) / |Edge(i)|.
-    const Vec2T<S>& Normal(int i) const { return vertices.data[m_count + 1 + i]; }
+    const Vec2T<S>& Normal(int i) const { return m_vertices.data[m_count + 1 + i]; }
 
     /// The unit outward normals of all edges, in edge order.
-    Vec2Span<S> Normals() const { return {vertices.data + m_count + 1, m_count}; }
+    Vec2Span<S> Normals() const { return {m_vertices.data + m_count + 1, m_count}; }
 
     /// Edge i (0 <= i < Count()): vertices[i + 1] - vertices[i], where vertex Count() is vertex 0. The block keeps
     /// a copy of vertex 0 after the last vertex, so no index wraps.
-    Vec2T<S> Edge(int i) const { return vertices.data[i + 1] - vertices.data[i]; }
+    Vec2T<S> Edge(int i) const { return m_vertices.data[i + 1] - m_vertices.data[i]; }
 
-    /// Takes validated data: `storage` holds the count vertices, vertex 0 again, then the count normals
-    /// (2 * count + 1 vectors). Used by the builders; callers outside them would break the invariants.
+  private:
+    template <typename T>
+    friend PolygonResultT<T> MakePolygon(const std::vector<Vec2T<T>>& points, PolygonOptions options);
+
+    // Takes validated data: `storage` holds the count vertices, vertex 0 again, then the count normals
+    // (2 * count + 1 vectors). Only MakePolygon, which validates them, builds a polygon from data.
     static PolygonT FromStorage(std::vector<Vec2T<S>> storage, Vec2T<S> centroid)
     {
         PolygonT polygon;
         polygon.m_count = static_cast<int>(storage.size() / 2);
-        polygon.centroid = centroid;
+        polygon.m_centroid = centroid;
         if (polygon.m_count <= kInlineVertices)
         {
             std::copy(storage.begin(), storage.end(), polygon.m_inline);
@@ -105,11 +133,10 @@ class PolygonT
         return polygon;
     }
 
-  private:
     void CopyFrom(const PolygonT& other)
     {
         m_count = other.m_count;
-        centroid = other.centroid;
+        m_centroid = other.m_centroid;
         std::copy(other.m_inline, other.m_inline + kInlineStorage, m_inline);
         m_heap = other.m_heap;
         Bind();
@@ -118,7 +145,7 @@ class PolygonT
     void MoveFrom(PolygonT& other)
     {
         m_count = other.m_count;
-        centroid = other.centroid;
+        m_centroid = other.m_centroid;
         std::copy(other.m_inline, other.m_inline + kInlineStorage, m_inline);
         m_heap = std::move(other.m_heap);
         Bind();
@@ -130,10 +157,12 @@ class PolygonT
     {
         const int n = m_count;
         const Vec2T<S>* base = n <= kInlineVertices ? m_inline : m_heap.data();
-        vertices = {base, n};
+        m_vertices = {base, n};
     }
 
     static constexpr int kInlineStorage = 2 * kInlineVertices + 1;
+    Vec2Span<S> m_vertices;
+    Vec2T<S> m_centroid{};
     int m_count = 0;
     Vec2T<S> m_inline[kInlineStorage]{};
     std::vector<Vec2T<S>> m_heap;
@@ -174,21 +203,6 @@ struct PolygonResultT
 /// Double-precision polygon result.
 using PolygonResult = PolygonResultT<double>;
 
-/// Options for MakePolygon.
-struct PolygonOptions
-{
-    /// Repair what can be repaired without changing the shape: drop repeated vertices and vertices collinear with
-    /// their neighbours, and reverse a clockwise outline. A non-convex outline is still an error.
-    bool repair = false;
-};
-
-/// Validates a counter-clockwise convex outline and precomputes its edges and normals.
-/// Returns an error value (never asserts) for: fewer than 3 vertices, non-finite or too large coordinates,
-/// repeated consecutive vertices, collinear vertices, clockwise winding, a right turn (not convex), and outlines
-/// that wind around more than once (self-intersecting).
-template <typename S>
-PolygonResultT<S> MakePolygon(const std::vector<Vec2T<S>>& points, PolygonOptions options = {});
-
 /// The convex hull of a point cloud (Andrew's monotone chain, O(n log n)), counter-clockwise, without collinear
 /// or repeated points. Errors: NotFinite, TooLarge, or TooFewVertices when the points span no area.
 template <typename S>
@@ -209,8 +223,8 @@ template <typename T, typename S>
 PolygonResultT<T> ConvertPolygon(const PolygonT<S>& polygon)
 {
     std::vector<Vec2T<T>> points;
-    points.reserve(polygon.vertices.size());
-    for (const Vec2T<S>& v : polygon.vertices)
+    points.reserve(polygon.Vertices().size());
+    for (const Vec2T<S>& v : polygon.Vertices())
     {
         points.push_back(ConvertVec<T>(v));
     }

@@ -29,9 +29,9 @@ struct AxisTestT
     int duplicateOf = -1; ///< with skipped: index in TraceT::axes of the test it repeats
     /// The axis was pruned: one point of the other polygon lies no farther out than `bound` on it, which bounds
     /// the separation from above and showed that this face could neither separate the shapes nor beat the best
-    /// face so far. The point is the other polygon's centroid for the back-face pruning of small polygons (an
-    /// option of the algorithm that the queries leave off), and for a large polygon, which the queries prune
-    /// always, a support point found earlier. `separation` and the intervals are computed for the view only.
+    /// face so far. The queries prune faces only against a polygon they walk (above 16 vertices), and the point is
+    /// then that polygon's support point found earlier. `separation` and the intervals are computed for the view
+    /// only.
     bool pruned = false;
     S bound{};     ///< with pruned: the point's separation, an upper bound of `separation`
     int best = -1; ///< index in TraceT::axes of the axis with the largest separation so far, this one included

@@ -1,20 +1,21 @@
 // SPDX-License-Identifier: MIT
-// satviz (private): eight lanes of double in one AVX-512 register, for the face loops of polygons of up to 8 faces:
-// all faces side by side, one operation where four lanes need two. Used only in code compiled for AVX-512
-// (RunWide512). Every operation is the same IEEE operation lane by lane as in Lanes, so they give the same bits.
+// satviz (private): eight lanes of a scalar in one register: of double on AVX-512, for the face loops of polygons of
+// up to 8 faces (all faces side by side, one operation where four lanes need two), used only in code compiled for
+// AVX-512 (RunWide512); of float on AVX2, for the face scans of float polygons, used only in code compiled for AVX2
+// (RunWide). Every operation is the same IEEE operation lane by lane as in Lanes, so they give the same bits.
 #pragma once
 
 #if defined(__x86_64__) && defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
-#define SATVIZ_LANES_AVX512 1
+#define SATVIZ_LANES8 1
 #else
-#define SATVIZ_LANES_AVX512 0
+#define SATVIZ_LANES8 0
 #endif
 
 namespace satviz::detail
 {
 
-#if SATVIZ_LANES_AVX512
+#if SATVIZ_LANES8
 /// Eight doubles in one AVX-512 register.
 struct Lanes8
 {
@@ -64,6 +65,45 @@ struct Lanes8
     [[gnu::target("avx512f")]] friend Lanes8 Min(const Lanes8& a, const Lanes8& b)
     {
         return {_mm512_mask_min_pd(a.v, static_cast<__mmask8>(0xFF), a.v, b.v)};
+    }
+};
+
+/// Eight floats in one AVX2 register: what the face scan (face_scan.h) needs of them.
+struct Lanes8F
+{
+    static constexpr int kCount = 8; ///< lanes
+    __m256 v;                        ///< the lanes
+
+    /// Every lane x.
+    [[gnu::target("avx2")]] static Lanes8F Fill(float x) { return {_mm256_set1_ps(x)}; }
+    /// Lanes p[0] to p[7] (p 32-byte aligned).
+    [[gnu::target("avx2")]] static Lanes8F Load(const float* p) { return {_mm256_load_ps(p)}; }
+    /// Stores the lanes at p[0] to p[7] (p 32-byte aligned).
+    [[gnu::target("avx2")]] void Store(float* p) const { _mm256_store_ps(p, v); }
+
+    [[gnu::target("avx2")]] friend Lanes8F operator+(const Lanes8F& a, const Lanes8F& b)
+    {
+        return {_mm256_add_ps(a.v, b.v)};
+    }
+    [[gnu::target("avx2")]] friend Lanes8F operator-(const Lanes8F& a, const Lanes8F& b)
+    {
+        return {_mm256_sub_ps(a.v, b.v)};
+    }
+    [[gnu::target("avx2")]] friend Lanes8F operator*(const Lanes8F& a, const Lanes8F& b)
+    {
+        return {_mm256_mul_ps(a.v, b.v)};
+    }
+    /// Per lane: a < b ? a : b (the second operand when either is NaN), as Min of Lanes.
+    [[gnu::target("avx2")]] friend Lanes8F Min(const Lanes8F& a, const Lanes8F& b) { return {_mm256_min_ps(a.v, b.v)}; }
+    /// Per lane: a > b ? a : b (the second operand when either is NaN), as Max of Lanes.
+    [[gnu::target("avx2")]] friend Lanes8F Max(const Lanes8F& a, const Lanes8F& b) { return {_mm256_max_ps(a.v, b.v)}; }
+    /// The smallest lane, the lanes combined in the order cheapest for the registers: the smallest number, but for
+    /// the sign of a zero and which NaN (as MinLaneAnyOrder of Lanes).
+    [[gnu::target("avx2")]] float MinLaneAnyOrder() const
+    {
+        __m128 half = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+        half = _mm_min_ps(half, _mm_movehl_ps(half, half));
+        return _mm_cvtss_f32(_mm_min_ss(half, _mm_shuffle_ps(half, half, 1)));
     }
 };
 #endif

@@ -3,6 +3,9 @@
 // a branch per face. Lanes<S, false> is portable (plain arrays; two SSE2 registers for double on x86-64);
 // Lanes<double, true> holds one AVX2 register and is used only in code compiled for AVX2 (RunWide). Every operation is
 // the same IEEE operation lane by lane in both, so they give the same bits.
+// The portable templates take the wide lanes only inside the functions compiled for AVX2 or AVX-512, into which
+// they are flattened: one left out of line would be compiled for the baseline and pass vector registers in a
+// convention the AVX code does not share. tests/wide_inlined.sh fails the build's tests when the library holds one.
 #pragma once
 
 #include <algorithm>
@@ -25,7 +28,8 @@ namespace satviz::detail
 template <typename S, bool kWide>
 struct Lanes
 {
-    S v[4]; ///< the lanes
+    static constexpr int kCount = 4; ///< lanes
+    S v[4];                          ///< the lanes
 
     /// Lanes a, b, c, d.
     static Lanes Set(S a, S b, S c, S d) { return {{a, b, c, d}}; }
@@ -146,6 +150,9 @@ struct Lanes
     S MaxLane() const { return std::max(std::max(v[0], v[1]), std::max(v[2], v[3])); }
     /// The smallest lane.
     S MinLane() const { return std::min(std::min(v[0], v[1]), std::min(v[2], v[3])); }
+    /// The smallest lane, the lanes combined in the order cheapest for the registers: the number MinLane gives, but
+    /// for the sign of a zero and which NaN (the face scans add +0 and take any NaN).
+    S MinLaneAnyOrder() const { return MinLane(); }
 };
 
 #if defined(__SSE2__)
@@ -153,8 +160,9 @@ struct Lanes
 template <>
 struct Lanes<double, false>
 {
-    __m128d lo; ///< lanes 0 and 1
-    __m128d hi; ///< lanes 2 and 3
+    static constexpr int kCount = 4; ///< lanes
+    __m128d lo;                      ///< lanes 0 and 1
+    __m128d hi;                      ///< lanes 2 and 3
 
     /// Lanes a, b, c, d.
     static Lanes Set(double a, double b, double c, double d) { return {_mm_setr_pd(a, b), _mm_setr_pd(c, d)}; }
@@ -272,6 +280,13 @@ struct Lanes<double, false>
         const __m128d pairs = _mm_min_pd(seconds, firsts);
         return _mm_cvtsd_f64(_mm_min_sd(_mm_unpackhi_pd(pairs, pairs), pairs));
     }
+    /// The smallest lane, the lanes combined in the order cheapest for the registers (lanes 0 and 2, 1 and 3, then
+    /// the two): the number MinLane gives, but for the sign of a zero and which NaN.
+    double MinLaneAnyOrder() const
+    {
+        const __m128d half = _mm_min_pd(lo, hi);
+        return _mm_cvtsd_f64(_mm_min_sd(half, _mm_unpackhi_pd(half, half)));
+    }
 };
 #endif
 
@@ -280,7 +295,8 @@ struct Lanes<double, false>
 template <>
 struct Lanes<float, false>
 {
-    __m128 v; ///< the lanes
+    static constexpr int kCount = 4; ///< lanes
+    __m128 v;                        ///< the lanes
 
     /// Lanes a, b, c, d.
     static Lanes Set(float a, float b, float c, float d) { return {_mm_setr_ps(a, b, c, d)}; }
@@ -348,19 +364,30 @@ struct Lanes<float, false>
     friend Lanes Min(const Lanes& a, const Lanes& b) { return {_mm_min_ps(a.v, b.v)}; }
     /// Per lane: a > b ? a : b (the second operand when either is NaN).
     friend Lanes Max(const Lanes& a, const Lanes& b) { return {_mm_max_ps(a.v, b.v)}; }
-    /// The largest lane (NaN lanes skipped when another is a number).
+    /// The largest lane, as std::max(std::max(v0, v1), std::max(v2, v3)) gives it, in registers: std::max(a, b) is
+    /// _mm_max_ps(b, a) (a unless a < b), so the same value for every input, NaN included.
     float MaxLane() const
     {
-        alignas(16) float out[4];
-        _mm_store_ps(out, v);
-        return std::max(std::max(out[0], out[1]), std::max(out[2], out[3]));
+        const __m128 firsts = _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 0, 2, 0));  // v0 v2
+        const __m128 seconds = _mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 1, 3, 1)); // v1 v3
+        const __m128 pairs = _mm_max_ps(seconds, firsts);
+        return _mm_cvtss_f32(_mm_max_ss(_mm_shuffle_ps(pairs, pairs, 1), pairs));
     }
-    /// The smallest lane.
+    /// The smallest lane, as std::min(std::min(v0, v1), std::min(v2, v3)) gives it, in registers: std::min(a, b)
+    /// is _mm_min_ps(b, a) (a unless b < a).
     float MinLane() const
     {
-        alignas(16) float out[4];
-        _mm_store_ps(out, v);
-        return std::min(std::min(out[0], out[1]), std::min(out[2], out[3]));
+        const __m128 firsts = _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 0, 2, 0));
+        const __m128 seconds = _mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 1, 3, 1));
+        const __m128 pairs = _mm_min_ps(seconds, firsts);
+        return _mm_cvtss_f32(_mm_min_ss(_mm_shuffle_ps(pairs, pairs, 1), pairs));
+    }
+    /// The smallest lane, the lanes combined in the order cheapest for the registers (lanes 0 and 2, 1 and 3, then
+    /// the two): the number MinLane gives, but for the sign of a zero and which NaN.
+    float MinLaneAnyOrder() const
+    {
+        const __m128 half = _mm_min_ps(v, _mm_movehl_ps(v, v));
+        return _mm_cvtss_f32(_mm_min_ss(half, _mm_shuffle_ps(half, half, 1)));
     }
 };
 #endif
@@ -370,7 +397,8 @@ struct Lanes<float, false>
 template <>
 struct Lanes<double, true>
 {
-    __m256d v; ///< the lanes
+    static constexpr int kCount = 4; ///< lanes
+    __m256d v;                       ///< the lanes
 
     /// Lanes a, b, c, d.
     [[gnu::target("avx2")]] static Lanes Set(double a, double b, double c, double d)
@@ -483,6 +511,13 @@ struct Lanes<double, true>
         const __m128d seconds = _mm_unpackhi_pd(lo, hi);
         const __m128d pairs = _mm_min_pd(seconds, firsts);
         return _mm_cvtsd_f64(_mm_min_sd(_mm_unpackhi_pd(pairs, pairs), pairs));
+    }
+    /// The smallest lane, the lanes combined in the order cheapest for the registers (lanes 0 and 2, 1 and 3, then
+    /// the two): the number MinLane gives, but for the sign of a zero and which NaN.
+    [[gnu::target("avx2")]] double MinLaneAnyOrder() const
+    {
+        const __m128d half = _mm_min_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
+        return _mm_cvtsd_f64(_mm_min_sd(half, _mm_unpackhi_pd(half, half)));
     }
 };
 #endif

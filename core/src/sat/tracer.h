@@ -30,7 +30,6 @@ struct AlgorithmChoices
 {
     static constexpr bool kEarlyExit = true;    ///< stop at the first separating axis
     static constexpr bool kSkipParallel = true; ///< skip faces of B anti-parallel to a face of A
-    static constexpr bool kPrune = false;       ///< back-face pruning with the centroid bound (scan only)
     /// Walked faces whose separation a single point of the other polygon (the witness) bounds too low to matter
     /// are not walked to: large polygons then walk only the faces near the contact.
     static constexpr bool kPruneWalked = true;
@@ -70,7 +69,7 @@ void ProjectShape(ShapeRef<S> shape, const TransformT<S>& xf, Vec2T<S> direction
     }
     lo = std::numeric_limits<S>::infinity();
     hi = -std::numeric_limits<S>::infinity();
-    for (const Vec2T<S>& v : shape.polygon->vertices)
+    for (const Vec2T<S>& v : shape.polygon->Vertices())
     {
         const S d = Dot(direction, TransformPoint(xf, v));
         lo = std::min(lo, d);
@@ -118,8 +117,8 @@ class TraceRecorder : public AlgorithmChoices
         const PolygonT<S>& ref = side == 0 ? *m_a.polygon : *m_b.polygon;
         const PolygonT<S>& inc = side == 0 ? *m_b.polygon : *m_a.polygon;
         const Vec2T<S> worldNormal = Rotate(own.q, normal);
-        const S separation =
-            Dot(worldNormal, TransformPoint(other, inc.vertices[support]) - TransformPoint(own, ref.vertices[face]));
+        const S separation = Dot(worldNormal, TransformPoint(other, inc.Vertices()[support]) -
+                                                  TransformPoint(own, ref.Vertices()[face]));
         FaceAxis(side, face, normal, separation, support, false);
         m_trace.axes.back().pruned = true;
         m_trace.axes.back().bound = bound / Length(normal);

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+// satviz (private), machinery: Overlap of two polygons of up to 8 vertices on 512-bit vectors (AVX-512F): all the
+// faces of a polygon in one register of eight lanes (Lanes8), the other polygon's vertices mapped into its frame and
+// held in registers. Used only in code compiled for AVX-512 (entry.h: RunWide512), where the processor has it
+// (cpu_dispatch.h). The same separations to the bit as SmallFacesSeparate (face_blocks.h).
+#pragma once
+
+#include "cpu_dispatch.h"
+#include "face_query.h"
+#include "lanes8.h"
+
+#include <satviz/polygon.h>
+
+#include <cstdint>
+
+namespace satviz::detail
+{
+
+#if SATVIZ_WIDE
+/// The vertices of a polygon of at most 8 vertices mapped by `xf` (as IncidentPolygon maps them, the same bits), one
+/// per lane, held in registers: lanes past the last vertex hold vertex 0 again.
+[[gnu::target("avx512f")]] inline void MapVertices512(const PolygonT<double>& polygon, const TransformT<double>& xf,
+                                                      Lanes8& x, Lanes8& y)
+{
+    Lanes8 vx;
+    Lanes8 vy;
+    Lanes8::LoadPoints(&polygon.InlineBlock()[0].x, vx, vy);
+    const Lanes8 c = Lanes8::Fill(xf.q.c);
+    const Lanes8 s = Lanes8::Fill(xf.q.s);
+    const int past = 0xFF & ~((1 << polygon.Count()) - 1);
+    x = ((c * vx - s * vy) + Lanes8::Fill(xf.p.x)).FillFromFirst(past);
+    y = ((s * vx + c * vy) + Lanes8::Fill(xf.p.y)).FillFromFirst(past);
+}
+
+/// Whether a face of `ref` (at most 8 faces, raw edge normals, all in one register of eight lanes) separates it from
+/// the N vertices of the other polygon, mapped into ref's frame and held in registers (MapVertices512), less the
+/// `skip`ped faces. The same products, sums and minimum per face, in the same order, as SmallFacesSeparate, so the
+/// same separations to the bit; the vertices come from registers, not from an array on the stack.
+template <int N>
+[[gnu::target("avx512f")]] bool FacesSeparate512(const PolygonT<double>& ref, const Lanes8& x, const Lanes8& y,
+                                                 uint64_t skip)
+{
+    Lanes8 vx;
+    Lanes8 vy;
+    Lanes8 wx;
+    Lanes8 wy;
+    Lanes8::LoadPoints(&ref.InlineBlock()[0].x, vx, vy);
+    Lanes8::LoadPoints(&ref.InlineBlock()[1].x, wx, wy);
+    const Lanes8 nx = wy - vy;
+    const Lanes8 ny = vx - wx;
+    const Lanes8 offset = nx * vx + ny * vy;
+    Lanes8 low = Lanes8::Fill(0.0);
+    for (int j = 0; j < N; ++j)
+    {
+        const Lanes8 projection = nx * x.Spread(j) + ny * y.Spread(j);
+        low = j == 0 ? projection : Min(low, projection);
+    }
+    const Lanes8 separation = (low - offset) + Lanes8::Fill(0.0);
+    const int live = static_cast<int>(((uint64_t(1) << ref.Count()) - 1) & ~skip);
+    return (separation.GreaterBits(Lanes8::Fill(0.0)) & live) != 0;
+}
+
+/// Overlap of two polygons of at most 8 vertices on AVX-512 (OverlapPolygons, step 0): each polygon's faces in one
+/// register against the other polygon's vertices mapped into its frame, held in registers, both decided at once.
+[[gnu::target("avx512f")]] inline bool SmallPolygonsOverlap512(const PolygonT<double>& a, const TransformT<double>& xfA,
+                                                               const PolygonT<double>& b, const TransformT<double>& xfB,
+                                                               bool skipParallel)
+{
+    const TransformT<double> bInA = InvMulTransforms(xfA, xfB);
+    const TransformT<double> aInB = InvMulTransforms(xfB, xfA);
+    Lanes8 bx;
+    Lanes8 by;
+    Lanes8 ax;
+    Lanes8 ay;
+    MapVertices512(b, bInA, bx, by);
+    MapVertices512(a, aInB, ax, ay);
+    const uint64_t skip = skipParallel ? AntiParallelFaces(a, b, InvMulRot(aInB.q, RotT<double>{})) : uint64_t(0);
+    const bool separatedA = b.Count() <= 4 ? FacesSeparate512<4>(a, bx, by, 0) : FacesSeparate512<8>(a, bx, by, 0);
+    const bool separatedB =
+        a.Count() <= 4 ? FacesSeparate512<4>(b, ax, ay, skip) : FacesSeparate512<8>(b, ax, ay, skip);
+    return !(separatedA | separatedB);
+}
+#endif
+
+} // namespace satviz::detail
