@@ -23,6 +23,8 @@ struct SatCache
 /// still separates, the answer is "no" at once. Otherwise the full query runs, and the cache keeps the separating
 /// face it finds (or is emptied when the polygons overlap). A face the cache reports separating separates the
 /// shapes, so the answer is Overlap's, except that shapes touching within rounding may get either answer.
+/// Cost: when the cached face still separates, one face and the climb of its support point, O(1) for a pair that
+/// moved a little; otherwise that plus Overlap's cost.
 template <typename S>
 bool Overlap(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b, const TransformT<S>& xfB,
              SatCache& cache);

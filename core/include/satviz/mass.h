@@ -19,16 +19,16 @@ struct MassProperties
 /// Polygon: the sum over the triangles that the centroid fans out to the edges, each triangle's area and second
 /// moment taken exactly (Ericson, Real-Time Collision Detection, and Catto's Box2D use the same fan; the fan's apex
 /// at a point inside the polygon keeps every triangle small, so the sums lose no digits far from the body origin).
-/// Circle: mass density pi r^2, inertia m r^2 / 2.
+/// Circle: mass density pi r^2, inertia m r^2 / 2. O(n) for an n-gon.
 MassProperties ComputeMass(const Shape& shape, double density);
 
 /// Radius of the largest circle about the centre of mass inside the shape: the distance from `center` to the
 /// nearest face of a polygon, the radius of a circle less the offset of `center` from the circle's centre. Used
-/// to decide whether a body moves far within a step compared with its size.
+/// to decide whether a body moves far within a step compared with its size. O(n) for an n-gon.
 double InnerRadius(const Shape& shape, Vec2 center);
 
 /// Largest distance from `center` to a point of the shape: the radius of the circle about `center` that holds it.
-/// Bounds how far a point of the shape moves when the body turns.
+/// Bounds how far a point of the shape moves when the body turns. O(n) for an n-gon.
 double OuterRadius(const Shape& shape, Vec2 center);
 
 } // namespace satviz

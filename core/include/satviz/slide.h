@@ -50,6 +50,8 @@ S DefaultSkin(const ShapeT<S>& mover, const TransformT<S>& xf);
 /// A mover that starts interpenetrating an obstacle is first pushed out along the minimum translation vector,
 /// `skin` beyond touching (a contact); one that starts touching an obstacle, or closer to it than `skin`, is lifted
 /// to `skin` from it (no contact). `skin` < 0 selects DefaultSkin. The mover keeps its orientation.
+/// Cost: at most maxContacts + 1 rounds, each one SweepTime against every obstacle (no broadphase: pass only the
+/// obstacles near the path). No heap allocation.
 template <typename S>
 SlideResultT<S> MoveAndSlide(const ShapeT<S>& mover, const TransformT<S>& xf, Vec2T<S> displacement,
                              const ObstacleT<S>* obstacles, int obstacleCount, S skin = S(-1), int maxContacts = 4);
