@@ -17,6 +17,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
+#include <string>
+#include <vector>
 
 namespace satviz
 {
@@ -78,6 +80,32 @@ void HelpMarker(const char* text)
         ImGui::PopTextWrapPos();
         ImGui::EndTooltip();
     }
+}
+
+// One number, or a point's two coordinates (`parts`), of the Numbers panel: on its label's line when that fits,
+// else on a line of its own below the label, a point's coordinates one per line when they do not fit together: no
+// number runs past the panel's edge or is broken inside its digits.
+void NumberLine(const std::string& label, const std::vector<std::string>& parts)
+{
+    const std::string value = parts.size() == 1 ? parts[0] : "(" + parts[0] + ", " + parts[1] + ")";
+    const std::string line = label + ": " + value;
+    if (ImGui::CalcTextSize(line.c_str()).x <= ImGui::GetContentRegionAvail().x)
+    {
+        ImGui::TextUnformatted(line.c_str());
+        return;
+    }
+    ImGui::TextUnformatted((label + ":").c_str());
+    ImGui::Indent();
+    if (parts.size() == 1 || ImGui::CalcTextSize(value.c_str()).x <= ImGui::GetContentRegionAvail().x)
+    {
+        ImGui::TextUnformatted(value.c_str());
+    }
+    else
+    {
+        ImGui::TextUnformatted(("(" + parts[0] + ",").c_str());
+        ImGui::TextUnformatted((" " + parts[1] + ")").c_str());
+    }
+    ImGui::Unindent();
 }
 
 } // namespace
@@ -569,7 +597,8 @@ void Panels::Inspector()
     auto full = [&](double v) {
         return study.singlePrecision ? ShortestDecimal(static_cast<float>(v)) : ShortestDecimal(v);
     };
-    auto point = [&](Vec2 p) { return "(" + full(p.x) + ", " + full(p.y) + ")"; };
+    auto number = [&](const std::string& label, double v) { NumberLine(label, {full(v)}); };
+    auto point = [&](const std::string& label, Vec2 p) { NumberLine(label, {full(p.x), full(p.y)}); };
     const Manifold& m = study.manifold;
     ImGui::Text("overlap: %s", m.overlap ? "yes" : "no");
     // The textbook view shows the MTV its own test found; the contact points come from Collide's clipping.
@@ -579,30 +608,29 @@ void Panels::Inspector()
     const Vec2 normal = textbook ? study.textbookResult.normal : m.normal;
     if (m.overlap)
     {
-        ImGui::Text("MTV length (depth): %s", full(depth).c_str());
+        number("MTV length (depth)", depth);
     }
     else
     {
-        ImGui::Text("gap on the separating axis: %s", full(gap).c_str());
+        number("gap on the separating axis", gap);
     }
-    ImGui::Text("%s: %s", m.overlap ? "MTV direction (A to B)" : "separating axis (A to B)", point(normal).c_str());
+    point(m.overlap ? "MTV direction (A to B)" : "separating axis (A to B)", normal);
     for (int i = 0; i < m.contactCount; ++i)
     {
         // In the order the figure labels them c1, c2, and satviz-query lists "contacts".
-        ImGui::Text(study.sweep ? "contact c%d at t = 0: %s" : "contact c%d: %s", i + 1,
-                    point(m.contacts[i].point).c_str());
+        point("contact c" + std::to_string(i + 1) + (study.sweep ? " at t = 0" : ""), m.contacts[i].point);
     }
     if (study.sweep)
     {
         const SweepResult& r = study.sweepResult;
         if (r.status == SweepStatus::Hit)
         {
-            ImGui::Text("time of impact: %s", full(r.toi).c_str());
-            ImGui::Text("normal at impact: %s", point(r.normal).c_str());
+            number("time of impact", r.toi);
+            point("normal at impact", r.normal);
             // The contacts the figure labels c1, c2 in a sweep (satviz-query's "toi_contacts", in that order).
             for (int i = 0; i < r.contactCount; ++i)
             {
-                ImGui::Text("contact c%d at impact: %s", i + 1, point(r.contacts[i].point).c_str());
+                point("contact c" + std::to_string(i + 1) + " at impact", r.contacts[i].point);
             }
         }
         else
