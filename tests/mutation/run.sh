@@ -115,7 +115,7 @@ check() {
 sync_sources() {
     local path
     mkdir -p "$work/src"
-    (cd "$root" && find CMakeLists.txt core tests tutorials/CMakeLists.txt tutorials/figures.cmake -type f \
+    (cd "$root" && find CMakeLists.txt cmake core tests tutorials/CMakeLists.txt tutorials/figures.cmake -type f \
         -not -path 'tests/fuzz/corpus/*' -not -path 'tests/data/*' -print) |
         while IFS= read -r path; do
             if ! cmp -s "$root/$path" "$work/src/$path"; then
