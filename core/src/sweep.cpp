@@ -130,11 +130,12 @@ class SweepRecorder
     }
 
     // The lanes took the pending faces in, in order: lane l holds the l-th face taken since the last call, with its
-    // rate, entry (-infinity: none) and exit as the lanes computed them. `ended`: the lane of the first face whose
-    // axis ended the test, or -1.
-    template <typename L, typename Axes>
-    void Flushed(const L& rates, const Axes& axes, int ended)
+    // rate, entry (-infinity: none) and exit as the lanes computed them, and `ends` the lanes whose axis ended the
+    // test. Returns the lane of the first such face (it ended the test), or -1.
+    template <typename L, typename Axes, typename Mask>
+    int Flushed(const L& rates, const Axes& axes, const Mask& ends)
     {
+        int ended = -1;
         for (int l = 0; l < m_pendingCount; ++l)
         {
             SweepAxisT<S>& axis = m_trace.axes[static_cast<size_t>(m_pending[l])];
@@ -143,9 +144,11 @@ class SweepRecorder
             axis.rate = rates.Get(l);
             axis.entry = never ? S(0) : std::max(axes.entry.Get(l), S(0));
             axis.exit = never ? kInfinity<S> : axes.leave.Get(l);
-            axis.endsTest = l == ended;
+            axis.endsTest = ended < 0 && ends.Get(l);
+            ended = axis.endsTest ? l : ended;
         }
         m_pendingCount = 0;
+        return ended;
     }
 
     // A face of a walked loop decided by the bound of a point of the other polygon, not walked to (see
@@ -553,6 +556,28 @@ struct WalkedSweep
     Vec2T<S> witness{};  // the point of inc that bounds the separations of ref's faces
 };
 
+// What the evaluation of a walked face loop (below) holds for the recorder: the recorder, its view and the pass. An
+// empty base for an untraced query, which then holds nothing more than it needs.
+template <typename S, typename Tracer, bool = Tracer::kEnabled>
+class EvaluationTrace
+{
+  protected:
+    EvaluationTrace(Tracer&, SweepState<S>&, bool) {}
+};
+
+template <typename S, typename Tracer>
+class EvaluationTrace<S, Tracer, true>
+{
+  protected:
+    EvaluationTrace(Tracer& tracer, SweepState<S>& view, bool exitPass)
+        : m_tracer(tracer), m_view(view), m_exitPass(exitPass)
+    {
+    }
+    Tracer& m_tracer;
+    SweepState<S>& m_view;
+    bool m_exitPass;
+};
+
 // The faces of a walked face loop that need their exact separation, evaluated in increasing face order four at a
 // time into the lanes (SweepLanes::Add): inc's support point for each (climbed from the one before, found by
 // bisection after a gap, or searched for between two that bracket it), its separation, and the axis times. `known`
@@ -560,13 +585,13 @@ struct WalkedSweep
 // take it in, and the faces decided without evaluation as the loop decides them (Bounded, Skipped); `view` learns
 // why an axis ended the test. `exitPass`: the second pass of a walked loop (SweepBoundedExits).
 template <typename L, typename S, typename Tracer>
-class WalkedEvaluation
+class WalkedEvaluation : EvaluationTrace<S, Tracer>
 {
   public:
     WalkedEvaluation(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
                      SweepLanes<L, S>& lanes, S& known, Tracer& tracer, SweepState<S>& view, bool exitPass = false)
-        : m_ref(ref), m_inc(inc), m_side(side), m_velocity(velocity), m_lanes(lanes), m_known(known), m_tracer(tracer),
-          m_view(view), m_exitPass(exitPass)
+        : EvaluationTrace<S, Tracer>(tracer, view, exitPass), m_ref(ref), m_inc(inc), m_side(side),
+          m_velocity(velocity), m_lanes(lanes), m_known(known)
     {
     }
 
@@ -579,7 +604,7 @@ class WalkedEvaluation
     void Bounded(int i, S bound, S rate, S known)
     {
         S boundTime;
-        if (m_exitPass)
+        if (this->m_exitPass)
         {
             if (!(rate > StillRate(m_velocity)))
             {
@@ -592,15 +617,15 @@ class WalkedEvaluation
             boundTime = bound < S(0) ? S(0) : bound / -rate;
         }
         const ViewedFace<S> shown = ViewFace<L>(m_ref, m_inc, i, m_velocity);
-        m_tracer.Bounded(m_side, i, shown.separation, shown.rate, shown.entry, shown.exit, bound, boundTime, known,
-                         m_exitPass);
+        this->m_tracer.Bounded(m_side, i, shown.separation, shown.rate, shown.entry, shown.exit, bound, boundTime,
+                               known, this->m_exitPass);
     }
 
     // For the trace: face i, never evaluated: the bisection showed it cannot decide.
     void Skipped(int i)
     {
         const ViewedFace<S> shown = ViewFace<L>(m_ref, m_inc, i, m_velocity);
-        m_tracer.Skipped(m_side, i, shown.separation, shown.rate, shown.entry, shown.exit);
+        this->m_tracer.Skipped(m_side, i, shown.separation, shown.rate, shown.entry, shown.exit);
     }
 
     // Evaluates face i (after the faces added before it); true when an axis ends the test.
@@ -648,25 +673,19 @@ class WalkedEvaluation
         const S base = S(m_side * kSideStride);
         const L faces = L::Set(base + S(m_faces[at(0)]), base + S(m_faces[at(1)]), base + S(m_faces[at(2)]),
                                base + S(m_faces[at(3)]));
-        [[maybe_unused]] const int count = m_count;
         m_count = 0;
-        const AxisLanes<L> axes(separations, rates, StillRate(m_velocity));
-        const typename L::Mask endsMask = m_lanes.Add(axes, faces);
-        const bool ends = endsMask.Any();
+        const bool ends = m_lanes.Add(AxisLanes<L>(separations, rates, StillRate(m_velocity)), faces).Any();
         m_known = std::max(m_known, m_lanes.first.MaxLane());
         if constexpr (Tracer::kEnabled)
         {
-            // The first face taken whose own axis ends the test: it never closes, or its entry is after t = 1 (a
-            // lane's latest entry was at most 1 before, or an earlier block would have ended the test).
-            int ended = -1;
-            for (int l = 0; l < count && ended < 0; ++l)
-            {
-                ended = endsMask.Get(l) ? l : -1;
-            }
-            m_tracer.Flushed(rates, axes, ended);
+            // The lanes' numbers again, and the lanes whose axis ended the test (SweepLanes::Add): it never closes,
+            // or its entry is after t = 1 (a lane's latest entry was at most 1 before, or an earlier block would
+            // have ended the test).
+            const AxisLanes<L> axes(separations, rates, StillRate(m_velocity));
+            const int ended = this->m_tracer.Flushed(rates, axes, axes.never | (m_lanes.first > L::Fill(S(1))));
             if (ended >= 0)
             {
-                m_view.exit = axes.never.Get(ended) ? SweepExit::NeverCloses : SweepExit::EntryAfterStep;
+                this->m_view.exit = axes.never.Get(ended) ? SweepExit::NeverCloses : SweepExit::EntryAfterStep;
             }
         }
         return ends;
@@ -683,7 +702,7 @@ class WalkedEvaluation
         m_separations[m_count] = m_inc.Separation(normal, m_ref.Vertices()[i], support);
         if constexpr (Tracer::kEnabled)
         {
-            m_tracer.Taken(m_side, i, m_separations[m_count], m_exitPass);
+            this->m_tracer.Taken(m_side, i, m_separations[m_count], this->m_exitPass);
         }
         ++m_count;
         return m_count == 4 && Flush();
@@ -697,9 +716,6 @@ class WalkedEvaluation
     Vec2T<S> m_velocity;
     SweepLanes<L, S>& m_lanes;
     S& m_known;
-    Tracer& m_tracer;
-    SweepState<S>& m_view;
-    bool m_exitPass;
     int m_support = 0;
     int m_last = -1;
     int m_count = 0;
