@@ -190,13 +190,14 @@ void Panels::Shortcuts()
     {
         app_.TogglePlay();
     }
+    // The arrows pass over the faces a sweep decided without evaluating them (PairStudy::NextStep).
     if (PressedNamed(ImGuiKey_RightArrow) && viewer.Step() < viewer.Setup().study.VerdictStep())
     {
-        app_.ShowStep(viewer.Step() + 1);
+        app_.ShowStep(viewer.Setup().study.NextStep(viewer.Step(), 1));
     }
     if (PressedNamed(ImGuiKey_LeftArrow) && viewer.Step() > 0)
     {
-        app_.ShowStep(viewer.Step() - 1);
+        app_.ShowStep(viewer.Setup().study.NextStep(viewer.Step(), -1));
     }
     if (PressedNamed(ImGuiKey_Delete))
     {
@@ -488,14 +489,14 @@ void Panels::StepControls()
     ImGui::BeginDisabled(step <= 0);
     if (ImGui::ArrowButton("##previous", ImGuiDir_Left))
     {
-        app_.ShowStep(step - 1);
+        app_.ShowStep(study.NextStep(step, -1));
     }
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::BeginDisabled(step >= last);
     if (ImGui::ArrowButton("##next", ImGuiDir_Right))
     {
-        app_.ShowStep(step + 1);
+        app_.ShowStep(study.NextStep(step, 1));
     }
     ImGui::EndDisabled();
     ImGui::SameLine();
@@ -525,7 +526,10 @@ void Panels::StepControls()
                    ? "Each row is one axis: the overlap of the two intervals on it (the shorter push that separates "
                      "them) or the gap between them. The test stops at the first axis with a gap (a separating axis)."
                    : "Each row is one face test: how far the other shape reaches behind the face, or how far beyond "
-                     "it it lies. The test stops at the first face with the other shape wholly beyond it.");
+                     "it it lies. The test stops at the first face with the other shape wholly beyond it.\n"
+                     "A sweep against a polygon above 16 vertices decides many faces without evaluating them: a "
+                     "vertex already found bounds their gap (not walked to), or bisection rules them out (not "
+                     "evaluated). Their rows are dimmed, and the arrows and Play pass over them.");
     const float rows = std::min<float>(static_cast<float>(study.StepCount()), 9.0f);
     if (ImGui::BeginChild("##axes", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 8.0f), true))
     {
@@ -541,9 +545,18 @@ void Panels::StepControls()
         {
             for (int k = clipper.DisplayStart; k < clipper.DisplayEnd; ++k)
             {
+                const bool decided = study.Decided(k);
+                if (decided)
+                {
+                    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+                }
                 if (ImGui::Selectable(StepTitle(studied, study, k).c_str(), k == viewer.Step()))
                 {
                     app_.ShowStep(k);
+                }
+                if (decided)
+                {
+                    ImGui::PopStyleColor();
                 }
             }
         }
@@ -869,7 +882,8 @@ void Panels::HelpOverlay()
         ImGui::BulletText("drag the arrow tip (or the small v handle): set the velocity over one step");
         ImGui::BulletText("drag empty space, or with the right button: pan;  wheel: zoom about the pointer");
         ImGui::TextUnformatted("Keys");
-        ImGui::BulletText("left / right: previous / next step;  space: play or pause");
+        ImGui::BulletText("left / right: previous / next step (past faces decided without evaluation);  space: play or "
+                          "pause");
         ImGui::BulletText("ctrl+z / ctrl+y: undo / redo;  del: delete the selected body;  f: fit the pair");
         ImGui::BulletText("ctrl+o: open;  ctrl+s: save;  ctrl+e: export a PNG;  ctrl+q: quit;  F1: this help");
         ImGui::TextUnformatted("Conventions");

@@ -165,7 +165,7 @@ void Viewer::TogglePlay()
     playClock_ = 0.0;
     if (playing_ && step_ >= setup_.study.VerdictStep())
     {
-        ShowStep(0);
+        ShowStep(setup_.study.NextStep(-1, 1));
     }
 }
 
@@ -181,7 +181,7 @@ void Viewer::Advance(double seconds)
         playClock_ = 0.0;
         if (step_ < setup_.study.VerdictStep())
         {
-            ShowStep(step_ + 1);
+            ShowStep(setup_.study.NextStep(step_, 1));
         }
         playing_ = step_ < setup_.study.VerdictStep();
     }

@@ -59,9 +59,11 @@ class Viewer
     void ShowStep(int step);
     /// True while stepping automatically.
     bool Playing() const { return playing_; }
-    /// Starts or stops stepping automatically; starting at the verdict starts from the first step.
+    /// Starts or stops stepping automatically; starting at the verdict starts from the first step (that is not a
+    /// face decided without evaluation, PairStudy::NextStep).
     void TogglePlay();
-    /// Lets `seconds` pass: while playing, a step every kPlayInterval, stopping at the verdict.
+    /// Lets `seconds` pass: while playing, a step every kPlayInterval (past the faces decided without evaluation,
+    /// PairStudy::NextStep), stopping at the verdict.
     void Advance(double seconds);
     /// Sweeps: the time at which the moving bodies are drawn, in [0, 1]; -1: not drawn.
     double Time() const { return time_; }

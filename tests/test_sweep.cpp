@@ -4,6 +4,7 @@
 #include "support/builders.h"
 #include "support/random_shapes.h"
 #include "support/reference.h"
+#include "support/sweep_oracle.h"
 
 #include <satviz/sat.h>
 
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 using namespace satviz;
@@ -238,7 +240,10 @@ TEST_CASE("Traced and untraced sweeps are bit-identical, the trace follows the e
         }
         if (plain.status == SweepStatus::Miss)
         {
-            REQUIRE(last.endsTest);
+            // One face ends the test; against a large polygon, faces evaluated with it or decided without
+            // evaluation may follow it.
+            REQUIRE(std::count_if(trace.axes.begin(), trace.axes.end(),
+                                  [](const SweepAxis& a) { return a.endsTest; }) == 1);
         }
         for (const SweepAxis& axis : trace.axes)
         {
@@ -330,12 +335,19 @@ TEST_CASE("Circle sweeps are traced axis by axis", "[sweep][circle][trace]")
 namespace
 {
 
-// Tallies of the large-polygon sweeps checked against their trace.
+// Tallies of the large-polygon sweeps checked against the full face loop.
 struct LargeSweepTally
 {
     int hits = 0;
     int misses = 0;
     int casts = 0;
+    long evaluated = 0;    // steps of faces evaluated by a walked or bisected loop
+    long bitwise = 0;      // of those, with the full loop's separation to the bit
+    long bounded[3] = {};  // steps of faces not walked to: overlapping at t = 0, entry bounded, exit bounded
+    long skipped = 0;      // steps of faces the bisection ruled out
+    long scanned = 0;      // steps of faces of a scanned loop
+    double worstTie = 0.0; // the largest difference from the full loop's separation, in units of its tolerance
+    int ties = 0;          // pairs whose verdict or latest entry the separations the sweep took change
 };
 
 // A pair for the large-polygon sweeps: A of `n` vertices near B (a random polygon of `nB` vertices in half of the
@@ -392,8 +404,232 @@ RandomPair LargeSweepPair(Rng& rng, int n, int nB, Vec2& v, bool& sliding)
     return pair;
 }
 
-// The sweep of a pair against its oracles: the trace, which replays every face in order with its exact separation
-// (the same time, to the bit, and the same face), and with `cast` the Minkowski-difference cast.
+// Which face loop takes the faces of `ref` against `inc`: scanned (both small), walked (inc above 16 vertices), or
+// bisected (ref above 256 faces).
+enum class FaceLoop
+{
+    Scanned,
+    Walked,
+    Bisected,
+};
+
+FaceLoop LoopOf(const Polygon& ref, const Polygon& inc)
+{
+    return ref.Count() > 256 ? FaceLoop::Bisected : inc.Count() > 16 ? FaceLoop::Walked : FaceLoop::Scanned;
+}
+
+bool SameBits(double x, double y)
+{
+    return std::memcmp(&x, &y, sizeof x) == 0;
+}
+
+// The trace of a polygon sweep against the full face loop (support/sweep_oracle.h), step by step:
+//   - every step is a face, with the full loop's rate to the bit, and its entry and exit as its separation and rate
+//     give them (to the bit). A scanned face has the full loop's separation to the bit. A face evaluated by a walked
+//     or bisected loop (and the numbers computed for the view of a flagged one) has the separation of one vertex of
+//     the other polygon, never below the full loop's least one and within 8 eps of the coordinates' scale above it
+//     (two vertices that tie on the normal up to rounding);
+//   - a face flagged bounded was not walked to: its bound is no less than its separation (to the bit: the bound is
+//     the same expression for one vertex), and what the bound showed holds: in the first pass, that it overlaps at
+//     t = 0, or that its entry is at most the entry bound, which is before an entry known then, itself no later than
+//     the latest entry; in the second pass, that it recedes and its exit is at least the exit bound, after the
+//     latest entry. A face flagged skipped was not evaluated: on a hit, its entry is not after the time of impact,
+//     nor its exit before the earliest exit the evaluated faces give;
+//   - the first pass shows each face once at most, and on a hit every face of either polygon; on a hit the second
+//     pass of a walked loop shows each face that recedes, once, and no other;
+//   - the latest entry and the earliest exit point at faces evaluated; on a hit, the last step's latest entry is the
+//     result's face at the time of impact, which are the full loop's; on a miss, one face evaluated ended the test
+//     and the full loop misses for the reason the trace gives. Where two vertices tie on a face's normal the sweep
+//     may take the other one: the verdict is that of the full loop with the separations the sweep took for the
+//     faces it evaluated (`decided`), which are within the tolerance of the least ones (checked above), and to the
+//     bit the same in all but a few faces (counted).
+void CheckTraceAgainstOracle(const RandomPair& pair, Vec2 v, const SweepResult& result, const SweepTrace& trace,
+                             LargeSweepTally& tally)
+{
+    const Polygon& a = pair.a.polygon;
+    const Polygon& b = pair.b.polygon;
+    const SweepOracle oracle = OracleSweep(a, pair.xfA, kStill, b, pair.xfB, v);
+    SweepOracle decided = oracle;
+    const int countA = a.Count();
+    const bool hit = result.status == SweepStatus::Hit;
+    const double infinity = std::numeric_limits<double>::infinity();
+    std::vector<int> firstPass(oracle.faces.size(), 0);
+    std::vector<int> exitPass(oracle.faces.size(), 0);
+    int ends = 0;
+    const SweepAxis& last = trace.axes.back();
+    const double earliestExit = last.earliestExit >= 0 ? trace.axes[last.earliestExit].exit : infinity;
+    for (size_t k = 0; k < trace.axes.size(); ++k)
+    {
+        const SweepAxis& step = trace.axes[k];
+        INFO("step " << k << ": face " << step.axis.index << " of " << (step.axis.shape == 0 ? "A" : "B")
+                     << (step.bounded ? ", bounded" : "") << (step.skipped ? ", skipped" : "")
+                     << (step.exitPass ? ", second pass" : ""));
+        REQUIRE(step.axis.kind == AxisKind::FaceNormal);
+        const int side = step.axis.shape;
+        const OracleFace& f = oracle.Face(side, step.axis.index, countA);
+        const size_t index = static_cast<size_t>(side == 0 ? step.axis.index : countA + step.axis.index);
+        const FaceLoop loop = side == 0 ? LoopOf(a, b) : LoopOf(b, a);
+        const bool flagged = step.bounded || step.skipped;
+        INFO("separation " << step.separation << ", full loop " << f.separation << ", rate " << f.rate << ", bound "
+                           << step.bound << ", bound time " << step.boundTime << ", known entry " << step.knownEntry);
+        REQUIRE_FALSE((step.bounded && step.skipped));
+        REQUIRE((!step.bounded || loop == FaceLoop::Walked));
+        REQUIRE((!step.exitPass || loop == FaceLoop::Walked));
+        REQUIRE((!step.skipped || loop == FaceLoop::Bisected));
+        REQUIRE((!flagged || !step.endsTest));
+        // The numbers of the step.
+        const double tolerance = 8.0 * std::numeric_limits<double>::epsilon() * f.scale;
+        REQUIRE(SameBits(step.rate, f.rate));
+        if (loop == FaceLoop::Scanned)
+        {
+            REQUIRE(SameBits(step.separation, f.separation));
+            ++tally.scanned;
+        }
+        else
+        {
+            REQUIRE(step.separation >= f.separation);
+            REQUIRE(step.separation - f.separation <= tolerance);
+            tally.worstTie = std::max(tally.worstTie, (step.separation - f.separation) / tolerance);
+            if (!flagged)
+            {
+                ++tally.evaluated;
+                tally.bitwise += SameBits(step.separation, f.separation) ? 1 : 0;
+                OracleFace& taken = decided.faces[index];
+                taken.separation = step.separation;
+                OracleTimes(taken.separation, taken.rate, taken.still, taken.entry, taken.exit, taken.never);
+            }
+        }
+        double entry;
+        double exit;
+        bool never;
+        OracleTimes(step.separation, step.rate, f.still, entry, exit, never);
+        REQUIRE(SameBits(step.entry, never ? 0.0 : std::max(entry, 0.0)));
+        REQUIRE(SameBits(step.exit, never ? infinity : exit));
+        // What a flag says.
+        if (step.bounded)
+        {
+            ++tally.bounded[step.exitPass ? 2 : step.bound < 0.0 ? 0 : 1];
+            REQUIRE(step.bound >= f.separation);
+            if (!step.exitPass && step.bound < 0.0)
+            {
+                REQUIRE(f.separation < 0.0);
+                REQUIRE(step.boundTime == 0.0);
+            }
+            else if (!step.exitPass)
+            {
+                REQUIRE(f.rate < -f.still);
+                REQUIRE(SameBits(step.boundTime, step.bound / -f.rate));
+                REQUIRE(f.entry <= step.boundTime);
+                REQUIRE(step.boundTime < step.knownEntry);
+                if (hit)
+                {
+                    REQUIRE(step.knownEntry <= result.toi);
+                }
+            }
+            else
+            {
+                REQUIRE(f.rate > f.still);
+                REQUIRE(SameBits(step.boundTime, -step.bound / f.rate));
+                REQUIRE(f.exit >= step.boundTime);
+                REQUIRE(step.boundTime > step.knownEntry);
+                if (hit)
+                {
+                    REQUIRE(step.knownEntry == result.toi);
+                }
+            }
+        }
+        if (step.skipped)
+        {
+            ++tally.skipped;
+            if (hit)
+            {
+                REQUIRE(f.entry <= result.toi);
+                REQUIRE(f.exit >= earliestExit);
+            }
+        }
+        (step.exitPass ? exitPass : firstPass)[index] += 1;
+        ends += step.endsTest ? 1 : 0;
+        // The latest entry and earliest exit so far are faces evaluated.
+        REQUIRE(step.latestEntry < static_cast<int>(k + 1));
+        REQUIRE(step.earliestExit < static_cast<int>(k + 1));
+        REQUIRE((step.latestEntry >= 0) == (step.earliestExit >= 0));
+        if (step.latestEntry >= 0)
+        {
+            REQUIRE_FALSE(trace.axes[step.latestEntry].bounded);
+            REQUIRE_FALSE(trace.axes[step.latestEntry].skipped);
+            REQUIRE_FALSE(trace.axes[step.earliestExit].bounded);
+            REQUIRE_FALSE(trace.axes[step.earliestExit].skipped);
+        }
+    }
+    // Every face once in the first pass (all of them on a hit); the receding faces of a walked loop in the second.
+    for (size_t i = 0; i < oracle.faces.size(); ++i)
+    {
+        const OracleFace& f = oracle.faces[i];
+        INFO("face " << f.face << " of " << (f.side == 0 ? "A" : "B"));
+        REQUIRE(firstPass[i] <= 1);
+        REQUIRE(exitPass[i] <= 1);
+        if (hit)
+        {
+            REQUIRE(firstPass[i] == 1);
+            const bool walked = f.side == 0 ? LoopOf(a, b) == FaceLoop::Walked : LoopOf(b, a) == FaceLoop::Walked;
+            REQUIRE(exitPass[i] == (walked && f.rate > f.still ? 1 : 0));
+        }
+    }
+    // The verdict, and why.
+    decided.Decide();
+    const bool tie = decided.Hit() != oracle.Hit() || decided.firstFace != oracle.firstFace ||
+                     !SameBits(decided.first, oracle.first) || decided.anyNever != oracle.anyNever;
+    tally.ties += tie ? 1 : 0;
+    INFO("full loop: latest entry " << oracle.first << " (face " << oracle.firstFace << "), earliest exit "
+                                    << oracle.last << ", never " << oracle.anyNever
+                                    << "; with the separations taken: " << decided.first << " (face "
+                                    << decided.firstFace << "), " << decided.last << ", never " << decided.anyNever);
+    REQUIRE(last.latestEntry >= 0);
+    if (hit)
+    {
+        ++tally.hits;
+        REQUIRE(trace.exit == SweepExit::AllAxesOverlap);
+        REQUIRE(ends == 0);
+        REQUIRE(decided.Hit());
+        const OracleFace& first = decided.faces[static_cast<size_t>(decided.firstFace)];
+        REQUIRE(SameBits(result.toi, decided.first + 0.0));
+        REQUIRE(result.axis.shape == first.side);
+        REQUIRE(result.axis.index == first.face);
+        const SweepAxis& latest = trace.axes[last.latestEntry];
+        REQUIRE(SameBits(latest.entry, result.toi));
+        REQUIRE(latest.axis.shape == result.axis.shape);
+        REQUIRE(latest.axis.index == result.axis.index);
+        return;
+    }
+    if (trace.exit == SweepExit::AllAxesOverlap)
+    {
+        // Every face overlaps at t = 0, and the static test found the shapes touching at most: no hit.
+        REQUIRE(decided.inside);
+        REQUIRE(ends == 0);
+        return;
+    }
+    ++tally.misses;
+    INFO("exit " << static_cast<int>(trace.exit) << ", steps " << trace.axes.size());
+    REQUIRE(ends == 1);
+    REQUIRE_FALSE(decided.Hit());
+    switch (trace.exit)
+    {
+    case SweepExit::NeverCloses:
+        REQUIRE(decided.anyNever);
+        break;
+    case SweepExit::EntryAfterStep:
+        REQUIRE(decided.first > 1.0);
+        break;
+    case SweepExit::EntryAfterExit:
+        REQUIRE(decided.first >= decided.last);
+        break;
+    default:
+        FAIL("a miss ends for a reason of its own");
+    }
+}
+
+// The sweep of a pair: traced and untraced alike to the bit, the trace against the full face loop, and with `cast`
+// the Minkowski-difference cast.
 void CheckLargeSweep(const RandomPair& pair, Vec2 v, bool cast, SweepTrace& trace, LargeSweepTally& tally)
 {
     const SweepResult plain = Sweep(pair.a, pair.xfA, kStill, pair.b, pair.xfB, v);
@@ -408,20 +644,7 @@ void CheckLargeSweep(const RandomPair& pair, Vec2 v, bool cast, SweepTrace& trac
         return;
     }
     REQUIRE_FALSE(trace.axes.empty());
-    const SweepAxis& last = trace.axes.back();
-    if (plain.status == SweepStatus::Hit)
-    {
-        ++tally.hits;
-        REQUIRE(trace.exit == SweepExit::AllAxesOverlap);
-        REQUIRE(trace.axes[last.latestEntry].entry == plain.toi);
-        REQUIRE(trace.axes[last.latestEntry].axis.shape == plain.axis.shape);
-        REQUIRE(trace.axes[last.latestEntry].axis.index == plain.axis.index);
-    }
-    else
-    {
-        ++tally.misses;
-        REQUIRE(last.endsTest);
-    }
+    CheckTraceAgainstOracle(pair, v, plain, trace, tally);
     if (!cast)
     {
         return;
@@ -498,6 +721,46 @@ TEST_CASE("Sweeps of polygons above 256 faces bisect to the faces that decide, a
     }
     CHECK(tally.hits > 300);
     CHECK(tally.misses > 300);
+}
+
+TEST_CASE(
+    "The trace of a large-polygon sweep shows the faces it evaluates and bounds the others as every face has them",
+    "[sweep][trace][properties]")
+{
+    // A of 17 to 4096 vertices, log-uniform (walked faces against a large B up to 256, bisected above), against B of
+    // 3 to 4096; either polygon may be the large one. The trace against the full face loop (CheckTraceAgainstOracle).
+    Rng rng(2718);
+    SweepTrace trace;
+    LargeSweepTally tally;
+    for (int i = 0; i < 1500; ++i)
+    {
+        const int n = static_cast<int>(rng.LogUniform(std::log10(17.0), std::log10(4097.0)));
+        const int nB = static_cast<int>(rng.LogUniform(std::log10(3.0), std::log10(4097.0)));
+        Vec2 v;
+        bool sliding = false;
+        RandomPair pair = LargeSweepPair(rng, n, nB, v, sliding);
+        if (rng.Chance(0.5))
+        {
+            std::swap(pair.a, pair.b);
+            std::swap(pair.xfA, pair.xfB);
+            v = -v;
+        }
+        INFO("pair " << i);
+        CheckLargeSweep(pair, v, false, trace, tally);
+    }
+    WARN(tally.hits << " hits, " << tally.misses << " misses; steps: " << tally.evaluated
+                    << " faces evaluated by walked or bisected loops (" << tally.bitwise
+                    << " with the full loop's separation to the bit), bounded: " << tally.bounded[0]
+                    << " overlapping at t = 0, " << tally.bounded[1] << " by their entry, " << tally.bounded[2]
+                    << " by their exit; " << tally.skipped << " skipped, " << tally.scanned
+                    << " scanned; the largest tie " << tally.worstTie << " of the tolerance; in " << tally.ties
+                    << " pairs these ties change the verdict or the latest entry");
+    CHECK(tally.hits > 300);
+    CHECK(tally.misses > 300);
+    CHECK(tally.bounded[0] > 1000);
+    CHECK(tally.bounded[1] > 1000);
+    CHECK(tally.bounded[2] > 1000);
+    CHECK(tally.skipped > 10000);
 }
 
 namespace

@@ -19,6 +19,7 @@
 #include <limits>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace satviz
 {
@@ -103,25 +104,6 @@ class SweepRecorder
         axis.entry = entry;
         axis.exit = exit;
         axis.endsTest = endsTest;
-        const int index = static_cast<int>(m_trace.axes.size());
-        axis.latestEntry = index;
-        axis.earliestExit = index;
-        if (index > 0)
-        {
-            // Only an axis apart at t = 0 (separation >= 0) has an entry; an overlapping one holds the latest entry
-            // only until an axis with an entry comes, as in the face loops.
-            const SweepAxisT<S>& previous = m_trace.axes.back();
-            const SweepAxisT<S>& latest = m_trace.axes[previous.latestEntry];
-            const bool latestEnters = latest.separation >= S(0);
-            if ((latestEnters && latest.entry >= entry) || (!latestEnters && !(separation >= S(0))))
-            {
-                axis.latestEntry = previous.latestEntry;
-            }
-            if (m_trace.axes[previous.earliestExit].exit <= exit)
-            {
-                axis.earliestExit = previous.earliestExit;
-            }
-        }
         m_trace.axes.push_back(axis);
     }
 
@@ -138,7 +120,112 @@ class SweepRecorder
         AxisWorld(ref, direction, separation, rate, entry, exit, !closes);
     }
 
-    void Finish(SweepExit exit) { m_trace.exit = exit; }
+    // A face of a large polygon's face loop taken for its exact separation (WalkedEvaluation): its step now, its
+    // rate, entry and exit when the lanes take it in (Flushed). `exitPass`: the second pass of a walked loop.
+    void Taken(int side, int face, S separation, bool exitPass)
+    {
+        m_pending[m_pendingCount++] = static_cast<int>(m_trace.axes.size());
+        Axis(side, face, separation, S(0), S(0), kInfinity<S>, false);
+        m_trace.axes.back().exitPass = exitPass;
+    }
+
+    // The lanes took the pending faces in, in order: lane l holds the l-th face taken since the last call, with its
+    // rate, entry (-infinity: none) and exit as the lanes computed them, and `ends` the lanes whose axis ended the
+    // test. Returns the lane of the first such face (it ended the test), or -1.
+    template <typename L, typename Axes, typename Mask>
+    int Flushed(const L& rates, const Axes& axes, const Mask& ends)
+    {
+        int ended = -1;
+        for (int l = 0; l < m_pendingCount; ++l)
+        {
+            SweepAxisT<S>& axis = m_trace.axes[static_cast<size_t>(m_pending[l])];
+            const bool never = axes.never.Get(l);
+            // As Replay: an overlapping axis (no entry) enters at 0, as its interval overlaps from t = 0.
+            axis.rate = rates.Get(l);
+            axis.entry = never ? S(0) : std::max(axes.entry.Get(l), S(0));
+            axis.exit = never ? kInfinity<S> : axes.leave.Get(l);
+            axis.endsTest = ended < 0 && ends.Get(l);
+            ended = axis.endsTest ? l : ended;
+        }
+        m_pendingCount = 0;
+        return ended;
+    }
+
+    // A face of a walked loop decided by the bound of a point of the other polygon, not walked to (see
+    // SweepAxisT::bounded); its separation, rate, entry and exit are for the view only.
+    void Bounded(int side, int face, S separation, S rate, S entry, S exit, S bound, S boundTime, S known,
+                 bool exitPass)
+    {
+        Axis(side, face, separation, rate, entry, exit, false);
+        SweepAxisT<S>& axis = m_trace.axes.back();
+        axis.bounded = true;
+        axis.bound = bound;
+        axis.boundTime = boundTime;
+        axis.knownEntry = known;
+        axis.exitPass = exitPass;
+    }
+
+    // A face of a bisected loop that the bisection ruled out, never evaluated (see SweepAxisT::skipped); its
+    // separation, rate, entry and exit are for the view only.
+    void Skipped(int side, int face, S separation, S rate, S entry, S exit)
+    {
+        Axis(side, face, separation, rate, entry, exit, false);
+        m_trace.axes.back().skipped = true;
+    }
+
+    // The test ended after a pass over a polygon's faces, on the latest entry against the earliest exit: the last
+    // face evaluated shows it.
+    void EndedAfterPass()
+    {
+        for (size_t k = m_trace.axes.size(); k-- > 0;)
+        {
+            SweepAxisT<S>& axis = m_trace.axes[k];
+            if (!axis.bounded && !axis.skipped)
+            {
+                axis.endsTest = true;
+                return;
+            }
+        }
+    }
+
+    // The test ended: why, and per step the axis of the latest entry and of the earliest exit so far, as the face
+    // loops keep them (SweepLanes::Add): the first face of the latest entry, where only an axis apart at t = 0
+    // (separation >= 0) has an entry and an overlapping one holds the latest entry only until an axis with an entry
+    // comes. Flagged faces were not evaluated and change neither.
+    void Finish(SweepExit exit)
+    {
+        m_trace.exit = exit;
+        int latest = -1;
+        int earliest = -1;
+        for (size_t k = 0; k < m_trace.axes.size(); ++k)
+        {
+            SweepAxisT<S>& axis = m_trace.axes[k];
+            if (!axis.bounded && !axis.skipped)
+            {
+                const int index = static_cast<int>(k);
+                if (latest < 0)
+                {
+                    latest = index;
+                    earliest = index;
+                }
+                else
+                {
+                    const SweepAxisT<S>& held = m_trace.axes[static_cast<size_t>(latest)];
+                    const bool heldEnters = held.separation >= S(0);
+                    if (!((heldEnters && held.entry >= axis.entry) || (!heldEnters && !(axis.separation >= S(0)))))
+                    {
+                        latest = index;
+                    }
+                    if (!(m_trace.axes[static_cast<size_t>(earliest)].exit <= axis.exit))
+                    {
+                        earliest = index;
+                    }
+                }
+            }
+            axis.latestEntry = latest;
+            axis.earliestExit = earliest;
+        }
+    }
 
   private:
     SweepTraceT<S>& m_trace;
@@ -147,6 +234,8 @@ class SweepRecorder
     TransformT<S> m_xfA;
     TransformT<S> m_xfB;
     Vec2T<S> m_velocity;
+    int m_pending[4] = {}; // the steps of the faces taken and not yet in the lanes
+    int m_pendingCount = 0;
 };
 
 template <typename S>
@@ -267,32 +356,32 @@ struct SweepLanes
 };
 
 // The recorder's face-by-face view of a block of faces i0 .. i0 + 3 (those below n), with the block's own numbers:
-// the latest entry and earliest exit so far, and the first face that ends the test (then `replayEnded`).
+// the latest entry and earliest exit so far, and the first face that ends the test (then `viewEnded`).
 template <typename L, typename S, typename Tracer>
-void Replay(Tracer& tracer, SweepState<S>& replay, bool& replayEnded, int side, int i0, int n, const L& separations,
+void Replay(Tracer& tracer, SweepState<S>& view, bool& viewEnded, int side, int i0, int n, const L& separations,
             const L& rates, const AxisLanes<L>& axes)
 {
-    for (int l = 0; l < 4 && i0 + l < n && !replayEnded; ++l)
+    for (int l = 0; l < 4 && i0 + l < n && !viewEnded; ++l)
     {
         const S entry = axes.entry.Get(l);
         const S leave = axes.leave.Get(l);
         const bool never = axes.never.Get(l);
-        if (entry > replay.first)
+        if (entry > view.first)
         {
-            replay.first = entry;
-            replay.firstSide = side;
-            replay.firstFace = i0 + l;
+            view.first = entry;
+            view.firstSide = side;
+            view.firstFace = i0 + l;
         }
-        replay.last = std::min(replay.last, leave);
-        replayEnded = never || replay.first > S(1) || replay.first >= replay.last;
+        view.last = std::min(view.last, leave);
+        viewEnded = never || view.first > S(1) || view.first >= view.last;
         // The trace shows an overlapping axis (no entry) as entering at 0, as its interval overlaps from t = 0.
         tracer.Axis(side, i0 + l, separations.Get(l), rates.Get(l), never ? S(0) : std::max(entry, S(0)),
-                    never ? kInfinity<S> : leave, replayEnded);
-        if (replayEnded)
+                    never ? kInfinity<S> : leave, viewEnded);
+        if (viewEnded)
         {
-            replay.exit = never                 ? SweepExit::NeverCloses
-                          : replay.first > S(1) ? SweepExit::EntryAfterStep
-                                                : SweepExit::EntryAfterExit;
+            view.exit = never               ? SweepExit::NeverCloses
+                        : view.first > S(1) ? SweepExit::EntryAfterStep
+                                            : SweepExit::EntryAfterExit;
         }
     }
 }
@@ -308,11 +397,11 @@ void Replay(Tracer& tracer, SweepState<S>& replay, bool& replayEnded, int side, 
 //   changes no bound. A block that holds an axis that never closes, or an entry after t = 1, ends the test; the
 //   latest entry against the earliest exit is compared once per polygon. Both bounds only tighten from face to
 //   face, so this ends with the same verdict as stopping at the first face that fails, and the lanes combine to
-//   the first face of the latest entry, as a face-by-face loop finds it. The recorder replays the faces in order
-//   up to that first failing face, with the same numbers.
+//   the first face of the latest entry, as a face-by-face loop finds it. The recorder has the faces in order up to
+//   that first failing face, with the lanes' numbers.
 template <int N, int kBlocks, typename L, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
+                SweepLanes<L, S>& lanes, SweepState<S>& view, Tracer& tracer)
 {
     static_assert(N > 0, "a scanned inc");
     constexpr bool kSmall = kBlocks > 0;
@@ -331,7 +420,7 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     // A small ref has exactly kBlocks blocks, so its loop unrolls.
     const int blocksEnd = kSmall ? 4 * kBlocks : n;
     typename L::Mask ends = L::Mask::Fill(false);
-    bool replayEnded = replay.exit != SweepExit::AllAxesOverlap;
+    bool viewEnded = view.exit != SweepExit::AllAxesOverlap;
     for (int i0 = 0; i0 < blocksEnd && !ends.Any(); i0 += 4)
     {
         // The block's normals and separations; the last block repeats the last face.
@@ -364,40 +453,61 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
         ends = lanes.Add(axes, L::Fill(S(side * kSideStride + i0)) + L::Set(S(0), S(1), S(2), S(3)));
         if constexpr (Tracer::kEnabled)
         {
-            Replay(tracer, replay, replayEnded, side, i0, n, separations, rates, axes);
+            Replay(tracer, view, viewEnded, side, i0, n, separations, rates, axes);
         }
     }
     // A latest entry after t = 1 ended its own block (`ends`), so what is left to compare is the latest entry
-    // against the earliest exit. Why the test ended is for the trace only, which the replay has.
+    // against the earliest exit. Why the test ended is for the trace only, which the view has.
     return !ends.Any() && !(lanes.first.MaxLane() >= lanes.last.MinLane());
 }
 
-// The recorder's view of the faces of `ref` against a walked `inc`: every face in order, its support point walked
-// to from the one before, with its exact separation, up to the first face that ends the test (Replay).
-template <typename L, typename S, typename Tracer>
-void ReplayWalked(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                  SweepState<S>& replay, Tracer& tracer)
+// For the trace only: face i of `ref` as the face loops would evaluate it, for a face they decided without
+// evaluating it: its exact separation (inc's support point searched for alone), its rate, and its entry and exit as
+// the lanes compute them (AxisLanes; the trace shows an overlapping axis as entering at 0, as Replay does).
+template <typename S>
+struct ViewedFace
 {
-    const int n = ref.Count();
-    bool replayEnded = replay.exit != SweepExit::AllAxesOverlap;
-    int support = 0;
-    for (int i0 = 0; i0 < n && !replayEnded; i0 += 4)
+    S separation;
+    S rate;
+    S entry;
+    S exit;
+};
+
+template <typename L, typename S>
+ViewedFace<S> ViewFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int i, Vec2T<S> velocity)
+{
+    const Vec2T<S> normal = ref.Normal(i);
+    const S separation = inc.Separation(normal, ref.Vertices()[i], inc.Support(normal));
+    const S rate = normal.x * velocity.x + normal.y * velocity.y;
+    const AxisLanes<L> axes(L::Fill(separation), L::Fill(rate), StillRate(velocity));
+    const bool never = axes.never.Get(0);
+    return {separation, rate, never ? S(0) : std::max(axes.entry.Get(0), S(0)),
+            never ? kInfinity<S> : axes.leave.Get(0)};
+}
+
+// The end of a pass over the faces of a polygon in a large polygon's face loop (walked or bisected): `going` is
+// whether the test goes on. For the trace, the face-by-face view of a scanned polygon after it (Replay) goes on from
+// the lanes' latest entry and earliest exit, and a pass that ended the test on the latest entry against the
+// earliest exit (a face that ends it on its own said so as the lanes took it in) shows it on its last face
+// evaluated.
+template <typename L, typename S, typename Tracer>
+bool EndPass(Tracer& tracer, SweepState<S>& view, const SweepLanes<L, S>& lanes, bool going)
+{
+    if constexpr (Tracer::kEnabled)
     {
-        const FaceBlock<L, S> block(ref, ref.Vertices().data, i0);
-        S separation[4];
-        for (int l = 0; l < 4; ++l)
+        SweepState<S> state;
+        lanes.Combine(state);
+        view.first = state.first;
+        view.firstSide = state.firstSide;
+        view.firstFace = state.firstFace;
+        view.last = state.last;
+        if (!going && view.exit == SweepExit::AllAxesOverlap)
         {
-            const int i = FaceBlock<L, S>::Face(n, i0, l);
-            const Vec2T<S> normal = ref.Normal(i);
-            const Vec2T<S> d = InvRotate(inc.xf.q, -normal);
-            support = i == 0 ? BisectSupport(inc.polygon, d) : WalkToSupport(inc.polygon, d, support);
-            separation[l] = inc.Separation(normal, ref.Vertices()[i], support);
+            view.exit = SweepExit::EntryAfterExit;
+            tracer.EndedAfterPass();
         }
-        const L separations = L::Set(separation[0], separation[1], separation[2], separation[3]);
-        const L rates = block.nx * L::Fill(velocity.x) + block.ny * L::Fill(velocity.y);
-        Replay(tracer, replay, replayEnded, side, i0, n, separations, rates,
-               AxisLanes<L>(separations, rates, StillRate(velocity)));
     }
+    return going;
 }
 
 // The faces (or vertices) of a polygon along a counter-clockwise chain from `from`, by their offset k from it.
@@ -446,18 +556,76 @@ struct WalkedSweep
     Vec2T<S> witness{};  // the point of inc that bounds the separations of ref's faces
 };
 
+// What the evaluation of a walked face loop (below) holds for the recorder: the recorder, its view and the pass. An
+// empty base for an untraced query, which then holds nothing more than it needs.
+template <typename S, typename Tracer, bool = Tracer::kEnabled>
+class EvaluationTrace
+{
+  protected:
+    EvaluationTrace(Tracer&, SweepState<S>&, bool) {}
+};
+
+template <typename S, typename Tracer>
+class EvaluationTrace<S, Tracer, true>
+{
+  protected:
+    EvaluationTrace(Tracer& tracer, SweepState<S>& view, bool exitPass)
+        : m_tracer(tracer), m_view(view), m_exitPass(exitPass)
+    {
+    }
+    Tracer& m_tracer;
+    SweepState<S>& m_view;
+    bool m_exitPass;
+};
+
 // The faces of a walked face loop that need their exact separation, evaluated in increasing face order four at a
 // time into the lanes (SweepLanes::Add): inc's support point for each (climbed from the one before, found by
 // bisection after a gap, or searched for between two that bracket it), its separation, and the axis times. `known`
-// rises to the latest entry seen.
-template <typename L, typename S>
-class WalkedEvaluation
+// rises to the latest entry seen. The recorder records each face as it is taken, with the lanes' numbers once they
+// take it in, and the faces decided without evaluation as the loop decides them (Bounded, Skipped); `view` learns
+// why an axis ended the test. `exitPass`: the second pass of a walked loop (SweepBoundedExits).
+template <typename L, typename S, typename Tracer>
+class WalkedEvaluation : EvaluationTrace<S, Tracer>
 {
   public:
     WalkedEvaluation(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                     SweepLanes<L, S>& lanes, S& known)
-        : m_ref(ref), m_inc(inc), m_side(side), m_velocity(velocity), m_lanes(lanes), m_known(known)
+                     SweepLanes<L, S>& lanes, S& known, Tracer& tracer, SweepState<S>& view, bool exitPass = false)
+        : EvaluationTrace<S, Tracer>(tracer, view, exitPass), m_ref(ref), m_inc(inc), m_side(side),
+          m_velocity(velocity), m_lanes(lanes), m_known(known)
     {
+    }
+
+    // The lower bound of the latest entry so far.
+    S Known() const { return m_known; }
+
+    // For the trace: face i, not walked to, whose separation the witness bounds by `bound`; `rate` is its rate and
+    // `known` the lower bound of the latest entry that the loop compared with. The second pass records only the
+    // faces that recede (the others have no exit to bound).
+    void Bounded(int i, S bound, S rate, S known)
+    {
+        S boundTime;
+        if (this->m_exitPass)
+        {
+            if (!(rate > StillRate(m_velocity)))
+            {
+                return;
+            }
+            boundTime = -bound / rate;
+        }
+        else
+        {
+            boundTime = bound < S(0) ? S(0) : bound / -rate;
+        }
+        const ViewedFace<S> shown = ViewFace<L>(m_ref, m_inc, i, m_velocity);
+        this->m_tracer.Bounded(m_side, i, shown.separation, shown.rate, shown.entry, shown.exit, bound, boundTime,
+                               known, this->m_exitPass);
+    }
+
+    // For the trace: face i, never evaluated: the bisection showed it cannot decide.
+    void Skipped(int i)
+    {
+        const ViewedFace<S> shown = ViewFace<L>(m_ref, m_inc, i, m_velocity);
+        this->m_tracer.Skipped(m_side, i, shown.separation, shown.rate, shown.entry, shown.exit);
     }
 
     // Evaluates face i (after the faces added before it); true when an axis ends the test.
@@ -508,6 +676,18 @@ class WalkedEvaluation
         m_count = 0;
         const bool ends = m_lanes.Add(AxisLanes<L>(separations, rates, StillRate(m_velocity)), faces).Any();
         m_known = std::max(m_known, m_lanes.first.MaxLane());
+        if constexpr (Tracer::kEnabled)
+        {
+            // The lanes' numbers again, and the lanes whose axis ended the test (SweepLanes::Add): it never closes,
+            // or its entry is after t = 1 (a lane's latest entry was at most 1 before, or an earlier block would
+            // have ended the test).
+            const AxisLanes<L> axes(separations, rates, StillRate(m_velocity));
+            const int ended = this->m_tracer.Flushed(rates, axes, axes.never | (m_lanes.first > L::Fill(S(1))));
+            if (ended >= 0)
+            {
+                this->m_view.exit = axes.never.Get(ended) ? SweepExit::NeverCloses : SweepExit::EntryAfterStep;
+            }
+        }
         return ends;
     }
 
@@ -520,6 +700,10 @@ class WalkedEvaluation
         m_last = i;
         m_faces[m_count] = i;
         m_separations[m_count] = m_inc.Separation(normal, m_ref.Vertices()[i], support);
+        if constexpr (Tracer::kEnabled)
+        {
+            this->m_tracer.Taken(m_side, i, m_separations[m_count], this->m_exitPass);
+        }
         ++m_count;
         return m_count == 4 && Flush();
     }
@@ -543,10 +727,11 @@ class WalkedEvaluation
 // distance d = Dot(n, w - v_i) bounds the separation s from above (s <= d), and r = Dot(n, velocity) is the rate.
 // `select(d, r)` returns the lanes to evaluate exactly (face `always` is evaluated in any case), which `evaluation`
 // takes in face order; the witness of each block is the support point of the last face evaluated (it turns with the
-// faces, so it bounds the next ones tightly), or `witness` before the first. True when an axis ends the test.
-template <typename L, typename S, typename Select>
+// faces, so it bounds the next ones tightly), or `witness` before the first. True when an axis ends the test. The
+// recorder has the faces not selected in face order among those evaluated, with their bounds.
+template <typename L, typename S, typename Tracer, typename Select>
 bool VisitBounds(const PolygonT<S>& ref, Vec2T<S> witness, Vec2T<S> velocity, Select&& select,
-                 WalkedEvaluation<L, S>& evaluation, int always = -1)
+                 WalkedEvaluation<L, S, Tracer>& evaluation, int always = -1)
 {
     const int n = ref.Count();
     const L vx = L::Fill(velocity.x);
@@ -557,16 +742,37 @@ bool VisitBounds(const PolygonT<S>& ref, Vec2T<S> witness, Vec2T<S> velocity, Se
         const FaceBlock<L, S> block(ref, ref.Vertices().data, i0);
         const L distance = block.nx * (L::Fill(w.x) - block.vx) + block.ny * (L::Fill(w.y) - block.vy);
         const L rate = block.nx * vx + block.ny * vy;
+        [[maybe_unused]] const S known = evaluation.Known(); // what `select` compares with
         int lanes = select(distance, rate).Bits() & (n - i0 >= 4 ? 0xF : (1 << (n - i0)) - 1);
         lanes |= always >= i0 && always < i0 + 4 ? 1 << (always - i0) : 0;
+        // For the trace: the faces of the block not selected, recorded up to the lane `end` (in face order).
+        [[maybe_unused]] int bounded = ~lanes & (n - i0 >= 4 ? 0xF : (1 << (n - i0)) - 1);
+        [[maybe_unused]] const auto record = [&](int end) {
+            if constexpr (Tracer::kEnabled)
+            {
+                for (; bounded != 0 && __builtin_ctz(static_cast<unsigned>(bounded)) < end; bounded &= bounded - 1)
+                {
+                    const int l = __builtin_ctz(static_cast<unsigned>(bounded));
+                    evaluation.Bounded(i0 + l, distance.Get(l), rate.Get(l), known);
+                }
+            }
+        };
         while (lanes != 0)
         {
             const int l = __builtin_ctz(static_cast<unsigned>(lanes));
             lanes &= lanes - 1;
+            if constexpr (Tracer::kEnabled)
+            {
+                record(l);
+            }
             if (evaluation.Add(i0 + l))
             {
                 return true;
             }
+        }
+        if constexpr (Tracer::kEnabled)
+        {
+            record(4);
         }
     }
     return false;
@@ -582,17 +788,13 @@ bool VisitBounds(const PolygonT<S>& ref, Vec2T<S> witness, Vec2T<S> velocity, Se
 // in. A face that approaches (r < 0) with entry bound d / -r below `known` cannot hold the latest entry, nor tie
 // with it. Every other face (d >= 0 and r >= 0: it may never close; or its entry may be the latest) is walked to,
 // in face order. So the latest entry, its first face and the verdict are those of the full loop, up to rounding
-// where a bound and a separation tie (two support points on an edge parallel to the face). The recorder replays
-// every face, walked for the view, in order.
+// where a bound and a separation tie (two support points on an edge parallel to the face). The recorder has the faces
+// walked to, with the lanes' numbers, and those not walked to, with their bounds, in face order.
 template <typename L, typename S, typename Tracer>
 bool SweepBoundedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                       SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known, WalkedSweep<S>& walk)
+                       SweepLanes<L, S>& lanes, SweepState<S>& view, Tracer& tracer, S& known, WalkedSweep<S>& walk)
 {
     const int n = ref.Count();
-    if constexpr (Tracer::kEnabled)
-    {
-        ReplayWalked<L>(ref, inc, side, velocity, replay, tracer);
-    }
     const int top = BisectSupport(ref, -velocity);
     const int before = Prev(top, n);
     const int seed = Dot(ref.Normal(top), velocity) <= Dot(ref.Normal(before), velocity) ? top : before;
@@ -607,7 +809,7 @@ bool SweepBoundedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
     {
         known = std::max(known, seedSeparation / -seedRate);
     }
-    WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
+    WalkedEvaluation<L, S, Tracer> evaluation(ref, inc, side, velocity, lanes, known, tracer, view);
     // Entry bound d / -r below known, without a division: d < known (1 - 4 eps) (-r) implies it despite the
     // rounding of the product and the quotient (not that of d itself). A face whose rate is within StillRate of 0
     // counts as parallel to the motion (AxisLanes): it is walked to, as it may never close.
@@ -618,19 +820,20 @@ bool SweepBoundedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
         return ~((zero > distance) | ((L::Fill(-still) > rate) & (L::Fill(known * shrink) * -rate > distance)));
     };
     const bool ends = VisitBounds<L>(ref, walk.witness, velocity, select, evaluation, seed) || evaluation.Flush();
-    return !ends && !(lanes.first.MaxLane() >= lanes.last.MinLane());
+    return EndPass(tracer, view, lanes, !ends && !(lanes.first.MaxLane() >= lanes.last.MinLane()));
 }
 
 // The second pass of a walked face loop, once the latest entry is known: every face that recedes (r > 0) and
 // whose exit bound -d / r does not clear the latest entry is walked to, so every exit that could come before the
 // latest entry is taken in. False when one exits no later than the latest entry (or an axis never closes): a miss.
-template <typename L, typename S>
+// The recorder has the faces walked to and the receding faces not walked to, in face order.
+template <typename L, typename S, typename Tracer>
 bool SweepBoundedExits(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                       SweepLanes<L, S>& lanes, const WalkedSweep<S>& walk)
+                       SweepLanes<L, S>& lanes, const WalkedSweep<S>& walk, SweepState<S>& view, Tracer& tracer)
 {
     const S first = lanes.first.MaxLane();
     S known = first;
-    WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
+    WalkedEvaluation<L, S, Tracer> evaluation(ref, inc, side, velocity, lanes, known, tracer, view, true);
     // Exit bound -d / r after the latest entry, without a division: -d > first (1 + 4 eps) r implies it despite
     // the rounding of the product and the quotient (not that of d itself).
     const S grow = S(1) + S(4) * std::numeric_limits<S>::epsilon();
@@ -643,9 +846,9 @@ bool SweepBoundedExits(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
     };
     if (VisitBounds<L>(ref, walk.witness, velocity, select, evaluation) || evaluation.Flush())
     {
-        return false;
+        return EndPass(tracer, view, lanes, false);
     }
-    return !(first >= lanes.last.MinLane());
+    return EndPass(tracer, view, lanes, !(first >= lanes.last.MinLane()));
 }
 
 // A run of `count` faces of ref (counter-clockwise from run.from) that all face against the motion (`facing`) or
@@ -695,16 +898,13 @@ int CrossingFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, Vec2T<S>
 //      up to rounding where two faces' times tie, and up to a face that rounding alone takes for parallel to the
 //      motion inside a run (nearly collinear faces). A NaN velocity leaves no face in either run: the faces
 //      evaluated then decide alone, a miss unless the shapes interpenetrate, as with every face.
-//   The recorder replays every face, walked for the view, in order.
+//   The recorder has the faces evaluated, with the lanes' numbers, and the others as skipped, in face order up to
+//   the last candidate, then the faces between the runs.
 template <typename L, typename S, typename Tracer>
 bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                        SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known)
+                        SweepLanes<L, S>& lanes, SweepState<S>& view, Tracer& tracer, S& known)
 {
     const int n = ref.Count();
-    if constexpr (Tracer::kEnabled)
-    {
-        ReplayWalked<L>(ref, inc, side, velocity, replay, tracer);
-    }
     const S still = StillRate(velocity);
     const auto facing = [&](int i) { return Dot(ref.Normal(i), velocity) < -still; };
     const auto away = [&](int i) { return Dot(ref.Normal(i), velocity) > still; };
@@ -782,15 +982,55 @@ bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
             std::swap(candidates[j - 1], candidates[j]);
         }
     }
-    WalkedEvaluation<L, S> evaluation(ref, inc, side, velocity, lanes, known);
+    WalkedEvaluation<L, S, Tracer> evaluation(ref, inc, side, velocity, lanes, known, tracer, view);
+    // For the trace: the faces to be evaluated (the candidates and the faces between the runs), and the next face in
+    // face order not yet recorded; `skipTo` records those before `end` that are not evaluated as skipped.
+    [[maybe_unused]] std::conditional_t<Tracer::kEnabled, std::vector<bool>, bool> evaluated{};
+    [[maybe_unused]] int unrecorded = 0;
+    [[maybe_unused]] const auto skipTo = [&](int end) {
+        if constexpr (Tracer::kEnabled)
+        {
+            for (; unrecorded < end; ++unrecorded)
+            {
+                if (!evaluated[static_cast<size_t>(unrecorded)])
+                {
+                    evaluation.Skipped(unrecorded);
+                }
+            }
+        }
+    };
+    if constexpr (Tracer::kEnabled)
+    {
+        evaluated.assign(static_cast<size_t>(n), false);
+        for (int c = 0; c < count; ++c)
+        {
+            evaluated[static_cast<size_t>(candidates[c].face)] = true;
+        }
+        for (int f = Next(frontLast, n), k = 0; f != backFirst && k < n; f = Next(f, n), ++k)
+        {
+            evaluated[static_cast<size_t>(f)] = true;
+        }
+        for (int f = Next(backLast, n), k = 0; f != frontFirst && k < n; f = Next(f, n), ++k)
+        {
+            evaluated[static_cast<size_t>(f)] = true;
+        }
+    }
     for (int c = 0; c < count; ++c)
     {
         const Candidate& candidate = candidates[c];
+        if constexpr (Tracer::kEnabled)
+        {
+            skipTo(candidate.face);
+        }
         if ((c == 0 || candidate.face != candidates[c - 1].face) &&
             evaluation.Add(candidate.face, candidate.lo, candidate.hi))
         {
-            return false;
+            return EndPass(tracer, view, lanes, false);
         }
+    }
+    if constexpr (Tracer::kEnabled)
+    {
+        skipTo(n);
     }
     // The faces between the runs: their rate counts as 0, so they have no entry and no exit (in any order), and end
     // the test when they never close.
@@ -798,32 +1038,32 @@ bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
     {
         if (evaluation.Add(f, frontLastSupport, frontLastSupport))
         {
-            return false;
+            return EndPass(tracer, view, lanes, false);
         }
     }
     for (int f = Next(backLast, n), k = 0; f != frontFirst && k < n; f = Next(f, n), ++k)
     {
         if (evaluation.Add(f, backLastSupport, backLastSupport))
         {
-            return false;
+            return EndPass(tracer, view, lanes, false);
         }
     }
-    return !evaluation.Flush() && !(lanes.first.MaxLane() >= lanes.last.MinLane());
+    return EndPass(tracer, view, lanes, !evaluation.Flush() && !(lanes.first.MaxLane() >= lanes.last.MinLane()));
 }
 
 // SweepFaces with inc's scan unrolled for its padded vertex count, and a ref of up to 8 faces in one pass.
 template <int N, typename L, typename S, typename Tracer>
 bool SweepFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                 SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer)
+                 SweepLanes<L, S>& lanes, SweepState<S>& view, Tracer& tracer)
 {
     switch ((ref.Count() + 3) / 4)
     {
     case 1:
-        return SweepFaces<N, 1>(ref, inc, side, velocity, lanes, replay, tracer);
+        return SweepFaces<N, 1>(ref, inc, side, velocity, lanes, view, tracer);
     case 2:
-        return SweepFaces<N, 2>(ref, inc, side, velocity, lanes, replay, tracer);
+        return SweepFaces<N, 2>(ref, inc, side, velocity, lanes, view, tracer);
     default:
-        return SweepFaces<N, 0>(ref, inc, side, velocity, lanes, replay, tracer);
+        return SweepFaces<N, 0>(ref, inc, side, velocity, lanes, view, tracer);
     }
 }
 
@@ -835,24 +1075,24 @@ constexpr int kBisectFaces = 256;
 
 template <typename L, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                SweepLanes<L, S>& lanes, SweepState<S>& replay, Tracer& tracer, S& known, WalkedSweep<S>& walk)
+                SweepLanes<L, S>& lanes, SweepState<S>& view, Tracer& tracer, S& known, WalkedSweep<S>& walk)
 {
     if (ref.Count() > kBisectFaces) [[unlikely]]
     {
-        return SweepBisectedFaces(ref, inc, side, velocity, lanes, replay, tracer, known);
+        return SweepBisectedFaces(ref, inc, side, velocity, lanes, view, tracer, known);
     }
     switch (inc.scan ? inc.padded : 0)
     {
     case 4:
-        return SweepFacesN<4>(ref, inc, side, velocity, lanes, replay, tracer);
+        return SweepFacesN<4>(ref, inc, side, velocity, lanes, view, tracer);
     case 8:
-        return SweepFacesN<8>(ref, inc, side, velocity, lanes, replay, tracer);
+        return SweepFacesN<8>(ref, inc, side, velocity, lanes, view, tracer);
     case 12:
-        return SweepFacesN<12>(ref, inc, side, velocity, lanes, replay, tracer);
+        return SweepFacesN<12>(ref, inc, side, velocity, lanes, view, tracer);
     case 16:
-        return SweepFacesN<16>(ref, inc, side, velocity, lanes, replay, tracer);
+        return SweepFacesN<16>(ref, inc, side, velocity, lanes, view, tracer);
     default:
-        return SweepBoundedFaces(ref, inc, side, velocity, lanes, replay, tracer, known, walk);
+        return SweepBoundedFaces(ref, inc, side, velocity, lanes, view, tracer, known, walk);
     }
 }
 
@@ -968,28 +1208,28 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     // the time without the copy).
     SweepResultT<S> result;
     SweepLanes<Lanes<S, Tracer::kWide && std::is_same_v<S, double>>, S> lanes;
-    SweepState<S> replay; // the recorder's face-by-face view
+    SweepState<S> view; // the recorder's view: the latest entry and earliest exit so far, and why the test ended
     const auto finish = [&]() {
         if constexpr (Tracer::kEnabled)
         {
-            tracer.Finish(replay.exit);
+            tracer.Finish(view.exit);
         }
     };
     // A lower bound of the latest entry, and what the bounded face loops leave for their second pass.
     S known = S(0);
     WalkedSweep<S> walkA;
     WalkedSweep<S> walkB;
-    if (!SweepFaces(a, incB, 0, velocityInA, lanes, replay, tracer, known, walkA))
+    if (!SweepFaces(a, incB, 0, velocityInA, lanes, view, tracer, known, walkA))
     {
         finish();
         return result;
     }
     // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
     const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, std::bool_constant<Tracer::kWide>{});
-    bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, replay, tracer, known, walkB);
+    bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, view, tracer, known, walkB);
     // Bounded face loops: the exits their first pass left, now that the latest entry is known.
-    going = going && !(walkA.walked && !SweepBoundedExits(a, incB, 0, velocityInA, lanes, walkA));
-    going = going && !(walkB.walked && !SweepBoundedExits(b, incA, 1, -velocityInB, lanes, walkB));
+    going = going && !(walkA.walked && !SweepBoundedExits(a, incB, 0, velocityInA, lanes, walkA, view, tracer));
+    going = going && !(walkB.walked && !SweepBoundedExits(b, incA, 1, -velocityInB, lanes, walkB, view, tracer));
     finish();
     if (!going)
     {

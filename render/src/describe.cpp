@@ -435,27 +435,101 @@ std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
     return text;
 }
 
+// Where the other shape lies from a face at t = 0: "0.25 beyond this face", "0.1 behind this face".
+std::string BeyondOrBehind(double separation)
+{
+    return separation > 0.0 ? FormatNumber(separation) + " beyond this face"
+                            : FormatNumber(-separation) + " behind this face";
+}
+
+// How the other shape moves against a face over the step, from its separation at t = 0, its rate, entry and exit.
+std::string SweepTimes(const SweepAxis& axis)
+{
+    if (axis.rate == 0.0)
+    {
+        return " and stays so (no motion along its normal).";
+    }
+    if (axis.separation > 0.0 && axis.rate > 0.0)
+    {
+        return " and moves away.";
+    }
+    return "; it is behind from " + (std::isinf(axis.entry) ? std::string("the start") : Time(axis.entry)) + " until " +
+           (std::isinf(axis.exit) ? std::string("the end") : Time(axis.exit)) + ".";
+}
+
+// A face of a walked loop not walked to: what the bound of the other shape's vertex showed.
+std::string BoundedFace(const std::string& other, const SweepAxis& axis)
+{
+    // The vertex's distance beyond the face bounds the gap between the projection intervals (or the overlap, from
+    // below), so a bound in time follows from the rate.
+    const std::string where =
+        "a vertex of " + other + " already found lies " + BeyondOrBehind(axis.bound) + ", so " +
+        (axis.bound > 0.0
+             ? "the gap between the projection intervals on this axis is at most " + FormatNumber(axis.bound)
+             : "the projection intervals on this axis overlap by at least " + FormatNumber(-axis.bound));
+    const std::string rate = FormatNumber(std::fabs(axis.rate)) + " per step";
+    if (axis.exitPass)
+    {
+        return "Second pass, for the exits, once the latest entry is known. Not walked to: " + where +
+               ", and they move apart by " + rate + ": they part no earlier than " + Time(axis.boundTime) +
+               ", after the latest entry (" + Time(axis.knownEntry) +
+               "), so this face cannot part them before every axis overlaps.";
+    }
+    if (axis.bound < 0.0)
+    {
+        return "Not walked to: " + where +
+               " from the start: this axis has no entry. Whether they part too early is checked in a second pass, "
+               "once the latest entry is known.";
+    }
+    return "Not walked to: " + where + ", and it closes by " + rate + ", so the intervals meet by " +
+           Time(axis.boundTime) + " at the latest, before an entry already found (" + Time(axis.knownEntry) +
+           "): this face's entry cannot be the latest.";
+}
+
+// A face of a bisected loop never evaluated: why it cannot decide.
+std::string SkippedFace(const SweepAxis& axis)
+{
+    const std::string text = "Not evaluated: bisection found the faces where the line of the motion enters and leaves "
+                             "the Minkowski difference, and this face is not beside either. ";
+    if (axis.rate < 0.0)
+    {
+        return text + "It faces the motion, and along such faces the entry times rise up to where the line enters "
+                      "and fall after it, so its entry cannot be the latest.";
+    }
+    return text + "It faces away from the motion, and along such faces the exit times fall to where the line "
+                  "leaves and rise after it, so its exit cannot be the earliest.";
+}
+
 std::string FaceSweepStep(const Scene& scene, const PairStudy& study, int step)
 {
     const SweepAxis& axis = study.sweepTrace.axes[static_cast<size_t>(step)];
     const bool face = axis.axis.kind == AxisKind::FaceNormal;
     const std::string other = face ? NameOf(scene, study, 1 - axis.axis.shape) : std::string("the other shape");
     std::string text = (face ? "Face test " : "Test ") + std::to_string(step + 1) + ": " +
-                       DescribeAxis(scene, study, axis.axis) + ". At t = 0 " + other + " is " +
-                       (axis.separation > 0.0 ? FormatNumber(axis.separation) + " beyond this face"
-                                              : FormatNumber(-axis.separation) + " behind this face");
-    if (axis.rate == 0.0)
+                       DescribeAxis(scene, study, axis.axis) + ". ";
+    if (axis.bounded || axis.skipped)
     {
-        text += " and stays so (no motion along its normal).";
+        // The numbers of a face decided without evaluation are the view's own.
+        text += axis.bounded ? BoundedFace(other, axis) : SkippedFace(axis);
+        const std::string times = SweepTimes(axis);
+        return text + " (For this view only: at t = 0 " + other + " is " + BeyondOrBehind(axis.separation) +
+               times.substr(0, times.size() - 1) + ".)";
     }
-    else if (axis.separation > 0.0 && axis.rate > 0.0)
+    if (axis.exitPass)
     {
-        text += " and moves away.";
+        text += "Second pass, for the exits, once the latest entry is known: this face recedes, and its exit may come "
+                "before that entry. ";
     }
-    else
+    text += "At t = 0 " + other + " is " + BeyondOrBehind(axis.separation) + SweepTimes(axis);
+    // A face evaluated after the one that ended the test: the faces are taken in four at a time.
+    for (int k = step - 1; k >= 0; --k)
     {
-        text += "; it is behind from " + (std::isinf(axis.entry) ? std::string("the start") : Time(axis.entry)) +
-                " until " + (std::isinf(axis.exit) ? std::string("the end") : Time(axis.exit)) + ".";
+        const SweepAxis& earlier = study.sweepTrace.axes[static_cast<size_t>(k)];
+        if (earlier.endsTest)
+        {
+            return text + " The test had already ended at face test " + std::to_string(k + 1) +
+                   ": this face was evaluated with it (the faces are taken in four at a time).";
+        }
     }
     if (axis.endsTest)
     {
@@ -489,6 +563,36 @@ std::string FaceSweepVerdict(const Scene& scene, const PairStudy& study)
         break;
     }
     return "Verdict: no hit during the step: " + SweepExitReason(study.sweepTrace.exit) + ".";
+}
+
+// Against a polygon above 16 vertices: how many face tests the sweep evaluated, and how many faces it decided without
+// evaluating them; nothing for smaller pairs.
+std::string DecidedNote(const PairStudy& study)
+{
+    int evaluated = 0;
+    int bounded = 0;
+    int skipped = 0;
+    for (const SweepAxis& axis : study.sweepTrace.axes)
+    {
+        evaluated += axis.bounded || axis.skipped ? 0 : 1;
+        bounded += axis.bounded ? 1 : 0;
+        skipped += axis.skipped ? 1 : 0;
+    }
+    if (bounded + skipped == 0)
+    {
+        return "";
+    }
+    std::string text = " The sweep evaluated " + std::to_string(evaluated) + " face tests";
+    if (bounded > 0)
+    {
+        text += "; " + std::to_string(bounded) +
+                " were decided without walking to the face, by a vertex of the other shape that bounds the gap";
+    }
+    if (skipped > 0)
+    {
+        text += "; " + std::to_string(skipped) + " faces were never evaluated: bisection ruled them out";
+    }
+    return text + ".";
 }
 
 } // namespace
@@ -605,7 +709,7 @@ std::string DescribeStep(const Scene& scene, const PairStudy& study, int step)
     }
     if (step == study.VerdictStep())
     {
-        return (study.sweep ? FaceSweepVerdict(scene, study) : FaceTestVerdict(scene, study)) +
+        return (study.sweep ? FaceSweepVerdict(scene, study) + DecidedNote(study) : FaceTestVerdict(scene, study)) +
                PrecisionNote(scene, study) + PitfallNote(study);
     }
     return study.sweep ? FaceSweepStep(scene, study, step) : FaceTestStep(scene, study, step);
@@ -680,8 +784,19 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
     if (study.sweep)
     {
         const SweepAxis& s = study.sweepTrace.axes[k];
-        return title + ", behind from " + (std::isinf(s.entry) ? std::string("the start") : FormatNumber(s.entry)) +
-               " to " + (std::isinf(s.exit) ? std::string("the end") : FormatNumber(s.exit));
+        if (s.skipped)
+        {
+            return title + ", not evaluated (bisection)";
+        }
+        if (s.bounded)
+        {
+            return title + (s.exitPass      ? ", not walked to (exit after " + FormatNumber(s.boundTime) + ")"
+                            : s.bound < 0.0 ? ", not walked to (overlaps at t = 0)"
+                                            : ", not walked to (entry by " + FormatNumber(s.boundTime) + ")");
+        }
+        return title + (s.exitPass ? ", exits: behind from " : ", behind from ") +
+               (std::isinf(s.entry) ? std::string("the start") : FormatNumber(s.entry)) + " to " +
+               (std::isinf(s.exit) ? std::string("the end") : FormatNumber(s.exit));
     }
     const AxisTest& test = study.trace.axes[k];
     if (test.skipped)

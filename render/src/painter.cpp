@@ -169,6 +169,12 @@ struct ShownAxis
     double windowEntry = 0.0, windowExit = 0.0; // latest entry and earliest exit so far
     bool separating = false;
     bool skipped = false;
+    // A face the sweep decided without evaluating it (not walked to, or ruled out by bisection): drawn faintly, its
+    // numbers computed for the view only. `boundAt`: with `bounded`, where on the axis the vertex that bounds the
+    // gap lies (the other shape's near end is no farther out).
+    bool decided = false;
+    bool bounded = false;
+    double boundAt = 0.0;
     int index = 0;
     // The band between the bars runs from leadMax to otherMin, separation = otherMin - leadMax: a gap when
     // positive, else an overlap of -separation. A face test measures it from the face's shape (the shape whose
@@ -251,6 +257,11 @@ ShownAxis FromSweep(const PairStudy& study, int index)
     s.entry = t.entry;
     s.exit = t.exit;
     s.separating = t.endsTest;
+    s.decided = t.bounded || t.skipped;
+    s.bounded = t.bounded;
+    // On the axis from A towards B: a vertex of B lies `bound` beyond A's face (at maxA), a vertex of A `bound`
+    // beyond B's face (at minB, beyond it being towards A).
+    s.boundAt = t.axis.shape == 0 ? t.maxA + t.bound : t.minB - t.bound;
     s.index = index;
     s.SetLead(false);
     if (t.latestEntry >= 0 && t.earliestExit >= 0)
@@ -352,6 +363,16 @@ int DecidingAxis(const PairStudy& study)
         if (study.sweepResult.status == SweepStatus::Hit && last.latestEntry >= 0)
         {
             return last.latestEntry;
+        }
+        // A polygon pair's miss: the axis that ended the test, which faces evaluated with it or decided without
+        // evaluation may follow (against a polygon above 16 vertices).
+        for (int k = study.AxisCount() - 1;
+             k >= 0 && !last.endsTest && study.sweepTrace.exit != SweepExit::RoundedOutline; --k)
+        {
+            if (study.sweepTrace.axes[static_cast<size_t>(k)].endsTest)
+            {
+                return k;
+            }
         }
         return study.AxisCount() - 1;
     }
@@ -838,15 +859,25 @@ class Painter
             lo = std::min(lo, axis_.sweptMinB);
             hi = std::max(hi, axis_.sweptMaxB);
         }
+        if (axis_.bounded)
+        {
+            lo = std::min(lo, axis_.boundAt);
+            hi = std::max(hi, axis_.boundAt);
+        }
+        // A face decided without evaluation is drawn faintly: its numbers are the view's, not the test's.
+        const float fade = axis_.decided ? 0.4f : 1.0f;
+        const auto faint = [fade](Color color, float alpha) { return WithAlpha(color, alpha * fade); };
         const double pad = kLinePad / view_.zoom;
         for (int f = 0; f < axis_.faceCount; ++f)
         {
-            AxisSource(axis_.faces[f], palette::kInk);
+            AxisSource(axis_.faces[f], faint(palette::kInk, 1.0f));
         }
-        Arrow(canvas_, At(Along(base, d, lo - pad)), At(Along(base, d, hi + pad)), palette::kMuted, 1.5f, 11.0f);
+        Arrow(canvas_, At(Along(base, d, lo - pad)), At(Along(base, d, hi + pad)), faint(palette::kMuted, 1.0f), 1.5f,
+              11.0f);
+        const std::string name = (axis_.textbook ? "axis " : "face test ") + std::to_string(axis_.index + 1);
         labels_.Place(At(Along(base, d, hi + pad)),
-                      (axis_.textbook ? "axis " : "face test ") + std::to_string(axis_.index + 1), TextStyle::Label,
-                      palette::kMuted, static_cast<float>(d.x), static_cast<float>(-d.y));
+                      !axis_.decided ? name : name + (axis_.bounded ? " (not walked to)" : " (not evaluated)"),
+                      TextStyle::Label, palette::kMuted, static_cast<float>(d.x), static_cast<float>(-d.y));
 
         // Projectors: from each shape's extreme points down to the axis line.
         const Transform xfA = bodyA_.Xf();
@@ -866,7 +897,7 @@ class Painter
         auto projector = [&](Vec2 from, double value, float offset, Color color) {
             ScreenPoint to = At(Along(base, d, value));
             to = {to.x - ox * offset, to.y - oy * offset};
-            DashedSegment(canvas_, At(from), to, WithAlpha(color, 0.55f), 1.0f, bounds_, 4.0f, 4.0f);
+            DashedSegment(canvas_, At(from), to, faint(color, 0.55f), 1.0f, bounds_, 4.0f, 4.0f);
         };
         projector(lowA, axis_.minA, 5.0f, palette::kShapeA);
         projector(highA, axis_.maxA, 5.0f, palette::kShapeA);
@@ -877,13 +908,21 @@ class Painter
         const Color mark = overlap ? palette::kOverlap : palette::kGap;
         const double from = axis_.leadMax;
         const double to = axis_.otherMin;
-        bar(from, to, 0.0f, overlap ? WithAlpha(mark, 0.6f) : mark, overlap ? 14.0f : 3.0f);
+        bar(from, to, 0.0f, faint(mark, overlap ? 0.6f : 1.0f), overlap ? 14.0f : 3.0f);
         if (axis_.swept)
         {
-            bar(axis_.sweptMinB, axis_.sweptMaxB, -5.0f, WithAlpha(palette::kShapeB, 0.35f), kBar);
+            bar(axis_.sweptMinB, axis_.sweptMaxB, -5.0f, faint(palette::kShapeB, 0.35f), kBar);
         }
-        bar(axis_.minA, axis_.maxA, 5.0f, palette::kShapeA, kBar);
-        bar(axis_.minB, axis_.maxB, -5.0f, palette::kShapeB, kBar);
+        bar(axis_.minA, axis_.maxA, 5.0f, faint(palette::kShapeA, 1.0f), kBar);
+        bar(axis_.minB, axis_.maxB, -5.0f, faint(palette::kShapeB, 1.0f), kBar);
+        if (axis_.bounded)
+        {
+            // The vertex that bounds the gap: the other shape's near end lies no farther out than this tick.
+            const ScreenPoint at = At(Along(base, d, axis_.boundAt));
+            canvas_.Segment({at.x - ox * 16.0f, at.y - oy * 16.0f}, {at.x + ox * 16.0f, at.y + oy * 16.0f},
+                            palette::kInk, 2.0f);
+            labels_.Place({at.x + ox * 18.0f, at.y + oy * 18.0f}, "bound", TextStyle::Label, palette::kInk, ox, oy);
+        }
 
         const ScreenPoint middle = At(Along(base, d, 0.5 * (from + to)));
         const std::string text = BandLabel(axis_);
@@ -1130,7 +1169,10 @@ class Painter
         const float lineRight = Width() - 28.0f;
         std::string title = verdict_ ? "deciding " : "";
         title += (axis_.textbook ? "axis " : "face test ") + std::to_string(axis_.index + 1) + ": projections on " +
-                 DescribeAxis(scene_, study_, axis_.Ref()) + " (number line)";
+                 DescribeAxis(scene_, study_, axis_.Ref()) +
+                 (!axis_.decided  ? " (number line)"
+                  : axis_.bounded ? " (not walked to: numbers for this view only)"
+                                  : " (not evaluated: numbers for this view only)");
         canvas_.Text({left, top + 8.0f}, title, TextStyle::Label, palette::kMuted);
         if (axis_.skipped)
         {
@@ -1144,6 +1186,11 @@ class Painter
         {
             lo = std::min(lo, axis_.sweptMinB);
             hi = std::max(hi, axis_.sweptMaxB);
+        }
+        if (axis_.bounded)
+        {
+            lo = std::min(lo, axis_.boundAt);
+            hi = std::max(hi, axis_.boundAt);
         }
         const double pad = 0.06 * std::max(hi - lo, 1e-12);
         lo -= pad;
@@ -1176,6 +1223,25 @@ class Painter
                     true);
         IntervalRow(x(axis_.minB), x(axis_.maxB), rowB, axis_.minB, axis_.maxB, palette::kShapeB, palette::kShapeBInk,
                     false);
+        if (axis_.bounded)
+        {
+            // The bound: a vertex of the other shape lies here, so the other shape's near end is no farther out.
+            // Its label goes under B's row, beside the tick on the side clear of B's end values.
+            const float bx = x(axis_.boundAt);
+            DashedSegment(canvas_, {bx, rowA - 14.0f}, {bx, rowB + 14.0f}, palette::kInk, 1.5f, bounds_, 4.0f, 3.0f);
+            const std::string text = "bound " + FormatNumber(axis_.boundAt);
+            const float width = canvas_.MeasureText(text, TextStyle::Label).x;
+            const float lowEnd = x(axis_.minB) - 3.0f;
+            const float lowStart = lowEnd - canvas_.MeasureText(FormatNumber(axis_.minB), TextStyle::Label).x;
+            const float highStart = x(axis_.maxB) + 3.0f;
+            const float highEnd = highStart + canvas_.MeasureText(FormatNumber(axis_.maxB), TextStyle::Label).x;
+            const auto clear = [&](float from) {
+                return (from + width < lowStart || from > lowEnd) && (from + width < highStart || from > highEnd);
+            };
+            const float tx = clear(bx + 4.0f) ? bx + 4.0f : clear(bx - 4.0f - width) ? bx - 4.0f - width : bx + 4.0f;
+            canvas_.Text({std::clamp(tx, lineLeft, lineRight - width), rowB + 16.0f}, text, TextStyle::Label,
+                         palette::kInk);
+        }
         if (axis_.swept)
         {
             TimeBar(top + 128.0f, lineLeft, lineRight);

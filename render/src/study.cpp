@@ -111,6 +111,12 @@ SweepTraceT<T> Widen(const SweepTraceT<S>& trace)
         b.latestEntry = a.latestEntry;
         b.earliestExit = a.earliestExit;
         b.endsTest = a.endsTest;
+        b.bounded = a.bounded;
+        b.bound = a.bound;
+        b.boundTime = a.boundTime;
+        b.knownEntry = a.knownEntry;
+        b.exitPass = a.exitPass;
+        b.skipped = a.skipped;
         out.axes.push_back(b);
     }
     out.exit = trace.exit;

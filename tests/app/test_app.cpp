@@ -290,6 +290,62 @@ TEST_CASE("Arrow keys and space step through the trace, edits keep the step wher
     CHECK(h.View().Step() == verdict);
 }
 
+TEST_CASE("The arrows and Play pass over the faces a large-polygon sweep decided without evaluating them", "[app]")
+{
+    // A 40-gon and a 100-gon thrown at it, in the face-test view: each polygon's faces are walked to only where they
+    // can decide, and the others are steps of their own, flagged.
+    const fs::path scene = ScratchCopy("many_sides.json").parent_path() / "walked_sweep.json";
+    {
+        std::ofstream out(scene);
+        out << R"({"bodies": [{"name": "wheel", "regular": {"sides": 40, "radius": 1.0}},
+                              {"name": "puck", "regular": {"sides": 100, "radius": 0.5}, "position": [2.2, 0.9],
+                               "velocity": [-2.0, -1.0]}],
+                   "view": {"query": "sweep", "steps": "faces"}})";
+    }
+    Harness h(scene.string());
+    REQUIRE(h.AwaitStudy());
+    const PairStudy& study = h.View().Setup().study;
+    REQUIRE(study.sweep);
+    REQUIRE_FALSE(study.Textbook());
+    std::vector<int> evaluated;
+    for (int k = 0; k < study.AxisCount(); ++k)
+    {
+        if (!study.Decided(k))
+        {
+            evaluated.push_back(k);
+        }
+    }
+    REQUIRE(evaluated.size() >= 2);
+    REQUIRE(study.AxisCount() > 10 * static_cast<int>(evaluated.size()));
+    // From the verdict the left arrow visits the faces evaluated, latest first, and stays at the first one.
+    CHECK(h.View().Step() == study.VerdictStep());
+    for (size_t k = evaluated.size(); k-- > 0;)
+    {
+        h.Key(kLeft);
+        CHECK(h.View().Step() == evaluated[k]);
+    }
+    h.Key(kLeft);
+    CHECK(h.View().Step() == evaluated.front());
+    h.Key(kRight);
+    CHECK(h.View().Step() == evaluated[1]);
+    // Play goes from the first face evaluated to the verdict through the faces evaluated alone.
+    h.app->ShowStep(study.VerdictStep());
+    h.Key(kSpace);
+    CHECK(h.View().Step() == evaluated.front());
+    std::vector<int> shown;
+    while (h.View().Playing() && shown.size() < evaluated.size() + 2)
+    {
+        const int step = h.View().Step();
+        if (shown.empty() || shown.back() != step)
+        {
+            shown.push_back(step);
+        }
+        h.Frames(1);
+    }
+    CHECK(h.View().Step() == study.VerdictStep());
+    CHECK(shown == evaluated);
+}
+
 TEST_CASE("A vertex drag that would break convexity is refused and says why", "[app]")
 {
     Harness h(ScratchCopy("overlapping_boxes.json").string());

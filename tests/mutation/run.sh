@@ -141,10 +141,12 @@ run_tests() {
         caught_by="(no answer within ${seconds} s)"
     else
         verdict="caught"
-        # Catch2's console reporter names the failing test case between the first two rules of dashes, wrapped
-        # over lines when it is long.
-        caught_by="$(awk '/^--------------------+$/ { if (rule++) exit; next } rule { printf "%s%s", sep, $0; sep = " " }' \
-            "$work/test.log")"
+        # Catch2's console reporter names a test case between two rules of dashes, wrapped over lines when it is
+        # long, before each of its failures and each of its warnings: the failing one is the last named before the
+        # first "FAILED:".
+        caught_by="$(awk '/^--------------------+$/ { if (open) { open = 0; name = text } else { open = 1; text = ""; sep = "" } next }
+            open { text = text sep $0; sep = " "; next }
+            /FAILED:$/ { print name; exit }' "$work/test.log")"
         [[ -n "$caught_by" ]] || caught_by="(exit status $status)"
     fi
 }

@@ -6,6 +6,7 @@
 #include <satviz/render/describe.h>
 #include <satviz/render/figure.h>
 #include <satviz/render/layers.h>
+#include <satviz/render/palette.h>
 #include <satviz/render/recording_canvas.h>
 
 #include <catch2/catch.hpp>
@@ -664,6 +665,89 @@ TEST_CASE("Random pairs paint every step with every layer, with finite coordinat
             }
         }
     }
+}
+
+TEST_CASE("Sweeps against large polygons draw the faces decided without evaluation faintly, with their bound",
+          "[painter][property]")
+{
+    // A polygon of 17 to 80 vertices (one pair in four up to 400, whose faces are bisected) thrown at another, in
+    // the face-test view: every step paints with finite coordinates; a face not walked to or not evaluated is drawn
+    // with faint bars, its caption says why with the bound's numbers, and the number line marks the bound.
+    testing::Rng rng(1729);
+    int bounded = 0;
+    int skipped = 0;
+    for (int i = 0; i < 24; ++i)
+    {
+        Scene scene;
+        for (int k = 0; k < 2; ++k)
+        {
+            Body body;
+            body.name = k == 0 ? "A" : "B";
+            const int n = k == 0 ? rng.Int(17, i % 4 == 0 ? 400 : 80) : rng.Int(3, 80);
+            body.shape = MakeShape(testing::RandomPolygon(rng, n, 1.0, rng.Uniform(0.4, 1.0)));
+            body.angle = rng.Uniform(-3.0, 3.0);
+            if (k == 1)
+            {
+                body.position = {rng.Uniform(2.2, 3.0), rng.Uniform(-1.0, 1.0)};
+                body.velocity = {-rng.Uniform(1.0, 4.0), rng.Uniform(-1.0, 1.0)};
+            }
+            scene.bodies.push_back(std::move(body));
+        }
+        FigureSetup setup = SetUpView(scene, StepView::Faces);
+        REQUIRE(setup.Ok());
+        REQUIRE(setup.study.sweep);
+        const int stride = setup.study.StepCount() > 300 ? 7 : 1;
+        for (int step = 0; step < setup.study.StepCount(); step += stride)
+        {
+            INFO("pair " << i << " step " << step);
+            const RecordingCanvas canvas = Paint(scene, setup, step, kAllLayers);
+            for (const DrawCommand& c : canvas.commands)
+            {
+                for (const ScreenPoint& p : c.points)
+                {
+                    REQUIRE(std::isfinite(p.x));
+                    REQUIRE(std::isfinite(p.y));
+                }
+            }
+            if (step == setup.study.VerdictStep())
+            {
+                continue;
+            }
+            const SweepAxis& axis = setup.study.sweepTrace.axes[static_cast<size_t>(step)];
+            const std::string caption = DescribeStep(scene, setup.study, step);
+            CHECK(setup.study.Decided(step) == (axis.bounded || axis.skipped));
+            if (!setup.study.Decided(step))
+            {
+                CHECK(FindBar(canvas, palette::kShapeA) != nullptr);
+                continue;
+            }
+            CHECK(FindBar(canvas, palette::kShapeA) == nullptr);
+            CHECK(FindBar(canvas, WithAlpha(palette::kShapeA, 0.4f)) != nullptr);
+            if (axis.skipped)
+            {
+                ++skipped;
+                CHECK(caption.find("Not evaluated: bisection") != std::string::npos);
+                continue;
+            }
+            ++bounded;
+            CHECK(caption.find("Not walked to") != std::string::npos);
+            CHECK(caption.find(FormatNumber(std::abs(axis.bound))) != std::string::npos);
+            if (axis.exitPass || axis.bound >= 0.0)
+            {
+                CHECK(caption.find(FormatNumber(axis.boundTime)) != std::string::npos);
+                CHECK(caption.find(FormatNumber(axis.knownEntry)) != std::string::npos);
+            }
+            const double boundAt = axis.axis.shape == 0 ? axis.maxA + axis.bound : axis.minB - axis.bound;
+            bool marked = false;
+            for (const std::string& text : canvas.Texts())
+            {
+                marked = marked || text == "bound " + FormatNumber(boundAt);
+            }
+            CHECK(marked);
+        }
+    }
+    CHECK(bounded > 100);
+    CHECK(skipped > 100);
 }
 
 TEST_CASE("View: world and screen round trip, zoom keeps the point under the pointer", "[view]")

@@ -32,9 +32,31 @@ struct SweepAxisT
     S rate{};              ///< change of the separation per unit of t (< 0: closing)
     S entry{};             ///< time the intervals start to overlap (0 if they already do)
     S exit{};              ///< time they stop overlapping (infinity if never)
-    int latestEntry = -1;  ///< index of the axis with the latest entry so far, this one included
-    int earliestExit = -1; ///< index of the axis with the earliest exit so far
+    int latestEntry = -1;  ///< index of the axis with the latest entry so far, this one included (-1: none yet)
+    int earliestExit = -1; ///< index of the axis with the earliest exit so far (-1: none yet)
     bool endsTest = false; ///< this axis ended the test: it never closes, or it proved a miss
+    /// Against a polygon above 16 vertices the sweep decides some faces without evaluating them: such a face is a
+    /// step of its own, flagged `bounded` or `skipped`, and its separation, rate, entry, exit and intervals are
+    /// computed for the view only. A flagged face changes neither latestEntry nor earliestExit, and never ends
+    /// the test.
+    /// The face was not walked to: a point of the other polygon (its support point for a face walked to before)
+    /// lies `bound` beyond the face (behind it when negative), so the separation is at most `bound`. In the first
+    /// pass this showed that the intervals overlap at t = 0 (bound < 0: no entry; the exit waits for the second
+    /// pass), or that the face approaches and its entry is at most `boundTime`, before `knownEntry`: it cannot be
+    /// the latest entry. In the second pass (`exitPass`) it showed that the face recedes and its exit is at least
+    /// `boundTime`, after the latest entry `knownEntry`: it cannot part the intervals before they all overlap.
+    bool bounded = false;
+    S bound{};      ///< with bounded: the bound of the separation, the point's distance beyond the face
+    S boundTime{};  ///< with bounded: the entry bound bound / -rate (0 when bound < 0) or the exit bound -bound / rate
+    S knownEntry{}; ///< with bounded: the latest entry known then (a lower bound of it; second pass: the latest)
+    /// Recorded by the second pass over the faces of a polygon against one above 16 vertices, which takes in the
+    /// exits that can come before the latest entry, once that entry is known.
+    bool exitPass = false;
+    /// The face was not evaluated (a polygon above 256 faces): bisection found the faces beside the places where
+    /// the line of the motion enters and leaves the Minkowski difference; the entries of the faces facing the
+    /// motion rise up to the first place and fall after it, the exits of those facing away fall to the second and
+    /// rise after it, so no other face holds the latest entry or the earliest exit.
+    bool skipped = false;
 };
 
 /// Why a sweep ended.
@@ -99,8 +121,10 @@ using SweepResult = SweepResultT<double>;
 /// visited one by one: only those beside the places where the line of the motion enters and leaves the Minkowski
 /// difference (found by bisection) are evaluated, O(log n log m) for n faces against m vertices
 /// (plus one step per face parallel to the motion).
-/// With a non-null `trace`, every axis is recorded (circle pairs: the polygon's faces or the line of centres, then
-/// the vertex axis of a hit on a rounded corner); the result is bit-identical either way.
+/// With a non-null `trace`, every axis is recorded in the order the test takes it (circle pairs: the polygon's faces
+/// or the line of centres, then the vertex axis of a hit on a rounded corner); against a polygon above 16 vertices
+/// the faces decided without evaluation are recorded too, flagged (SweepAxisT::bounded, SweepAxisT::skipped). The
+/// result is bit-identical either way.
 template <typename S>
 SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const ShapeT<S>& b,
                       const TransformT<S>& xfB, Vec2T<S> vB, SweepTraceT<S>* trace = nullptr);

@@ -58,6 +58,31 @@ struct PairStudy
     int StepCount() const { return AxisCount() + 1; }
     /// The step that shows the verdict.
     int VerdictStep() const { return AxisCount(); }
+    /// Step `step` shows a face that the swept test decided without evaluating it (in the face-test view, against a
+    /// polygon above 16 vertices: a face not walked to, or one the bisection ruled out).
+    bool Decided(int step) const
+    {
+        if (!sweep || Textbook() || step < 0 || step >= AxisCount())
+        {
+            return false;
+        }
+        const SweepAxis& axis = sweepTrace.axes[static_cast<size_t>(step)];
+        return axis.bounded || axis.skipped;
+    }
+    /// The first step after `step` (`direction` 1) or before it (-1) that is not Decided, as the step controls go:
+    /// a polygon of 4096 faces has thousands of faces decided without evaluation, and a few evaluated. Forwards
+    /// the verdict ends the search; backwards, with none before, `step` itself. NextStep(-1, 1) is the first step.
+    int NextStep(int step, int direction) const
+    {
+        for (int next = step + direction; next >= 0 && next <= VerdictStep(); next += direction)
+        {
+            if (!Decided(next))
+            {
+                return next;
+            }
+        }
+        return step < 0 ? 0 : step > VerdictStep() ? VerdictStep() : step;
+    }
 };
 
 /// Runs the queries on bodies a and b of the scene (indices). `query` Automatic sweeps when the pair moves
