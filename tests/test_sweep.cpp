@@ -404,6 +404,19 @@ RandomPair LargeSweepPair(Rng& rng, int n, int nB, Vec2& v, bool& sliding)
     return pair;
 }
 
+// The pair with A and B swapped half of the time, `v` (B's motion relative to A) turned with it, so that either
+// polygon may be the large one.
+RandomPair EitherWay(Rng& rng, RandomPair pair, Vec2& v)
+{
+    if (rng.Chance(0.5))
+    {
+        std::swap(pair.a, pair.b);
+        std::swap(pair.xfA, pair.xfB);
+        v = -v;
+    }
+    return pair;
+}
+
 // Which face loop takes the faces of `ref` against `inc`: scanned (both small), walked (inc above 16 vertices), or
 // bisected (ref above 256 faces).
 enum class FaceLoop
@@ -709,13 +722,7 @@ TEST_CASE("Sweeps of polygons above 256 faces bisect to the faces that decide, a
         const int nB = kind == 0 ? rng.Int(257, 500) : kind == 1 ? rng.Int(17, 256) : rng.Int(3, 16);
         Vec2 v;
         bool sliding = false;
-        RandomPair pair = LargeSweepPair(rng, rng.Int(257, 500), nB, v, sliding);
-        if (rng.Chance(0.5))
-        {
-            std::swap(pair.a, pair.b);
-            std::swap(pair.xfA, pair.xfB);
-            v = -v;
-        }
+        const RandomPair pair = EitherWay(rng, LargeSweepPair(rng, rng.Int(257, 500), nB, v, sliding), v);
         INFO("pair " << i);
         CheckLargeSweep(pair, v, false, trace, tally);
     }
@@ -738,13 +745,7 @@ TEST_CASE(
         const int nB = static_cast<int>(rng.LogUniform(std::log10(3.0), std::log10(4097.0)));
         Vec2 v;
         bool sliding = false;
-        RandomPair pair = LargeSweepPair(rng, n, nB, v, sliding);
-        if (rng.Chance(0.5))
-        {
-            std::swap(pair.a, pair.b);
-            std::swap(pair.xfA, pair.xfB);
-            v = -v;
-        }
+        const RandomPair pair = EitherWay(rng, LargeSweepPair(rng, n, nB, v, sliding), v);
         INFO("pair " << i);
         CheckLargeSweep(pair, v, false, trace, tally);
     }
