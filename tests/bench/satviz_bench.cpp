@@ -11,6 +11,7 @@
 // holds still while the machine's speed drifts. Native shapes are built before timing.
 // Accuracy: a separate pool, against the __float128 reference of tests/support/reference.h.
 
+#include "near_contact.h"
 #include "support/random_shapes.h"
 #include "support/reference.h"
 #include "support/reference_ray.h"
@@ -91,6 +92,14 @@ struct Settings
     int accuracyPairs = 3000;
     uint64_t seed = 20240601;
     std::vector<int> counts = {3, 4, 8, 16, 64, 1024, 4096};
+    // Near-contact pairs (TimeNear): pairs per pool, rounds (one fresh pool each), vertex counts, placement.
+    int nearPairs = 12000;
+    int nearRounds = 15;
+    std::vector<int> nearCounts = {3, 4, 5, 6, 7, 8};
+    // "direction": along a random direction, at a uniform distance from touching (bench::NearContactPair);
+    // "face": as the main pool, against a point of A's outline along A's normal there (ContactPair).
+    std::string placement = "direction";
+    bool nearOnly = false;
 };
 
 // A pair in every representation a query needs, built before timing.
@@ -450,6 +459,14 @@ struct Query
 
 volatile double g_sink = 0.0;
 
+// A yes/no answer as a number for the sink, without a branch on it. A branch here, mispredicted on the pairs whose
+// answer differs from the last ones, would make each library pay the whole latency of its query (the processor
+// cannot start the next query early): a cost of the caller, not of the query.
+inline double AsNumber(bool answer)
+{
+    return static_cast<double>(static_cast<int>(answer));
+}
+
 // Variants of Overlap, each with one of the algorithm's choices turned off, to measure what the choice buys.
 struct NoEarlyExit : detail::NullTracer
 {
@@ -472,7 +489,7 @@ template <typename Variant>
 double OverlapVariant(const SatvizRecord& p)
 {
     Variant variant;
-    return detail::OverlapPolygons(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, variant) ? 1.0 : 0.0;
+    return AsNumber(detail::OverlapPolygons(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, variant));
 }
 
 template <typename Variant>
@@ -522,16 +539,13 @@ std::vector<Query> Queries()
     static Trace trace;
     static SweepTrace sweepTrace;
     std::vector<Query> queries = {
+        SatvizQuery("satviz Overlap", false,
+                    [](const SatvizRecord& p) { return AsNumber(Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB)); }),
         SatvizQuery(
-            "satviz Overlap", false,
-            [](const SatvizRecord& p) { return Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB) ? 1.0 : 0.0; }),
-        SatvizQuery("satviz Overlap traced", false,
-                    [](const SatvizRecord& p) {
-                        return Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace) ? 1.0 : 0.0;
-                    }),
-        FloatQuery(
-            "satviz Overlap float", false,
-            [](const FloatRecord& p) { return Overlap(p.sa.polygon, p.fxfA, p.sb.polygon, p.fxfB) ? 1.0 : 0.0; }),
+            "satviz Overlap traced", false,
+            [](const SatvizRecord& p) { return AsNumber(Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB, &trace)); }),
+        FloatQuery("satviz Overlap float", false,
+                   [](const FloatRecord& p) { return AsNumber(Overlap(p.sa.polygon, p.fxfA, p.sb.polygon, p.fxfB)); }),
         SatvizQuery("satviz Collide", false,
                     [](const SatvizRecord& p) { return Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB).depth; }),
         SatvizQuery(
@@ -566,7 +580,7 @@ std::vector<Query> Queries()
                         for (int frame = 0; frame < kFrames; ++frame)
                         {
                             const Transform xfB{p.xfB.p + (0.005 * frame) * LeftPerp(p.velocity), p.xfB.q};
-                            hits += Overlap(p.sa.polygon, p.xfA, p.sb.polygon, xfB) ? 1.0 : 0.0;
+                            hits += AsNumber(Overlap(p.sa.polygon, p.xfA, p.sb.polygon, xfB));
                         }
                         return hits;
                     }),
@@ -577,13 +591,13 @@ std::vector<Query> Queries()
                         for (int frame = 0; frame < kFrames; ++frame)
                         {
                             const Transform xfB{p.xfB.p + (0.005 * frame) * LeftPerp(p.velocity), p.xfB.q};
-                            hits += Overlap(p.sa.polygon, p.xfA, p.sb.polygon, xfB, cache) ? 1.0 : 0.0;
+                            hits += AsNumber(Overlap(p.sa.polygon, p.xfA, p.sb.polygon, xfB, cache));
                         }
                         return hits;
                     }),
         SatvizQuery("textbook Overlap", false,
                     [](const SatvizRecord& p) {
-                        return bench::TextbookOverlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB) ? 1.0 : 0.0;
+                        return AsNumber(bench::TextbookOverlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB));
                     }),
         SatvizQuery("textbook MTV", false,
                     [](const SatvizRecord& p) {
@@ -631,7 +645,7 @@ std::vector<Query> Queries()
         return q;
     };
     queries.push_back(box2d("box2d b2TestOverlap", false, [](const Box2DRecord& p) {
-        return b2TestOverlap(&p.ba, 0, &p.bb, 0, p.bxfA, p.bxfB) ? 1.0 : 0.0;
+        return AsNumber(b2TestOverlap(&p.ba, 0, &p.bb, 0, p.bxfA, p.bxfB));
     }));
     queries.push_back(box2d("box2d b2CollidePolygons", false, [](const Box2DRecord& p) {
         b2Manifold manifold;
@@ -760,6 +774,28 @@ struct Timing
     }
 };
 
+// The records of a pair for satviz's queries.
+SatvizRecord MakeSatvizRecord(const BenchPair& p)
+{
+    SatvizRecord record{p.sa, p.sb, p.xfA, p.xfB, p.velocity, {}, {}};
+    RaySegment(p.sa, p.xfA, p.sb, p.xfB, p.velocity, record.rayFrom, record.rayTo);
+    return record;
+}
+
+#ifdef SATVIZ_HAVE_BOX2D
+// The records of a pair for Box2D's queries (n <= 8), with the segment cast of satviz's record.
+Box2DRecord MakeBox2DRecord(const BenchPair& p, const SatvizRecord& record)
+{
+    Box2DRecord box{p.ba, p.bb, p.bxfA, p.bxfB, p.bsweepA, p.bsweepB, p.velocity, {}, p.ba, p.bb};
+    box.ray.p1.Set(static_cast<float>(record.rayFrom.x), static_cast<float>(record.rayFrom.y));
+    box.ray.p2.Set(static_cast<float>(record.rayTo.x), static_cast<float>(record.rayTo.y));
+    box.ray.maxFraction = 1.0f;
+    box.skinA.m_radius = b2_polygonRadius;
+    box.skinB.m_radius = b2_polygonRadius;
+    return box;
+}
+#endif
+
 Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rng)
 {
     const int perSlice = n >= 1024 ? std::max(1, s.pairs / 10) : s.pairs;
@@ -778,8 +814,7 @@ Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rn
         for (const BenchPair& p : pool)
         {
             const bool apart = !Overlap(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB);
-            SatvizRecord record{p.sa, p.sb, p.xfA, p.xfB, p.velocity, {}, {}};
-            RaySegment(p.sa, p.xfA, p.sb, p.xfB, p.velocity, record.rayFrom, record.rayTo);
+            const SatvizRecord record = MakeSatvizRecord(p);
             slice.satviz.push_back(record);
             const FloatRecord single{MakeShape(p.fa),
                                      MakeShape(p.fb),
@@ -797,12 +832,7 @@ Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rn
 #ifdef SATVIZ_HAVE_BOX2D
             if (n <= b2_maxPolygonVertices)
             {
-                Box2DRecord box{p.ba, p.bb, p.bxfA, p.bxfB, p.bsweepA, p.bsweepB, p.velocity, {}, p.ba, p.bb};
-                box.ray.p1.Set(static_cast<float>(record.rayFrom.x), static_cast<float>(record.rayFrom.y));
-                box.ray.p2.Set(static_cast<float>(record.rayTo.x), static_cast<float>(record.rayTo.y));
-                box.ray.maxFraction = 1.0f;
-                box.skinA.m_radius = b2_polygonRadius;
-                box.skinB.m_radius = b2_polygonRadius;
+                const Box2DRecord box = MakeBox2DRecord(p, record);
                 slice.box2d.push_back(box);
                 if (apart)
                 {
@@ -920,6 +950,113 @@ Timing Time(const Settings& s, int n, const std::vector<Query>& queries, Rng& rn
                         timing.passes[q.name].push_back(pass(q, data));
                     }
                 }
+            }
+        });
+    }
+    return timing;
+}
+
+// The queries timed on near-contact pairs: satviz's four beside Box2D's and the textbook loop's.
+const char* const kNearQueries[] = {"satviz Overlap",
+                                    "satviz Collide",
+                                    "satviz Sweep",
+                                    "satviz SweepTime",
+                                    "textbook Overlap",
+                                    "textbook MTV",
+                                    "textbook TOI",
+                                    "box2d b2TestOverlap",
+                                    "box2d b2CollidePolygons",
+                                    "box2d b2TimeOfImpact",
+                                    "box2d b2TimeOfImpact + b2CollidePolygons at t"};
+
+// Near-contact pairs from pools that no pass replays: each round draws a fresh pool of `pairs` pairs per vertex
+// count, and every query makes one pass over it, in an order shuffled per round, so no query meets a pair twice and
+// no branch predictor learns a pool. The sweeps run on every pair (B moving roughly towards A; a third of the pairs
+// start overlapped). passes[name][k] is ns per query in round k: the rounds pair the queries for the ratios.
+Timing TimeNear(const Settings& s, int n, const std::vector<Query>& queries, Rng& rng)
+{
+    std::vector<const Query*> timed;
+    for (const char* name : kNearQueries)
+    {
+        for (const Query& q : queries)
+        {
+            if (q.name == name && !(q.box2d && n > 8))
+            {
+                timed.push_back(&q);
+            }
+        }
+    }
+    Timing timing;
+    std::mt19937 shuffler(static_cast<uint32_t>(s.seed + 7919 * static_cast<uint64_t>(n)));
+    for (int round = 0; round < s.nearRounds; ++round)
+    {
+        std::vector<SatvizRecord> satviz;
+#ifdef SATVIZ_HAVE_BOX2D
+        std::vector<Box2DRecord> box2d;
+#endif
+        for (int i = 0; i < s.nearPairs; ++i)
+        {
+            const PairCategory category = static_cast<PairCategory>(i % 3);
+            const RandomPair drawn = s.placement == "direction" ? bench::NearContactPair(rng, n, category)
+                                                                : EitherWay(ContactPair(rng, n, category), rng);
+            const BenchPair p = MakeBenchPair(drawn, rng);
+            satviz.push_back(MakeSatvizRecord(p));
+#ifdef SATVIZ_HAVE_BOX2D
+            if (n <= b2_maxPolygonVertices)
+            {
+                box2d.push_back(MakeBox2DRecord(p, satviz.back()));
+            }
+#endif
+        }
+        // The categories in a random order along the pool.
+        std::vector<uint32_t> order(satviz.size());
+        std::iota(order.begin(), order.end(), uint32_t(0));
+        std::shuffle(order.begin(), order.end(), shuffler);
+        std::vector<SatvizRecord> satvizShuffled;
+        for (const uint32_t i : order)
+        {
+            satvizShuffled.push_back(satviz[i]);
+        }
+        satviz.swap(satvizShuffled);
+#ifdef SATVIZ_HAVE_BOX2D
+        if (!box2d.empty())
+        {
+            std::vector<Box2DRecord> box2dShuffled;
+            for (const uint32_t i : order)
+            {
+                box2dShuffled.push_back(box2d[i]);
+            }
+            box2d.swap(box2dShuffled);
+        }
+#endif
+        std::shuffle(timed.begin(), timed.end(), shuffler);
+        const size_t shift = static_cast<size_t>(round * 4096 / s.nearRounds) & ~size_t(63);
+        AtStackShift(shift, [&]() {
+            for (const Query* q : timed)
+            {
+                double sink = 0.0;
+                size_t count = 0;
+                std::chrono::steady_clock::time_point start;
+                if (q->satviz)
+                {
+                    Touch(satviz.data(), satviz.size());
+                    start = std::chrono::steady_clock::now();
+                    sink = Stream(satviz.data(), satviz.size(), q->satviz);
+                    count = satviz.size();
+                }
+#ifdef SATVIZ_HAVE_BOX2D
+                else if (q->box2dRun)
+                {
+                    Touch(box2d.data(), box2d.size());
+                    start = std::chrono::steady_clock::now();
+                    sink = Stream(box2d.data(), box2d.size(), q->box2dRun);
+                    count = box2d.size();
+                }
+#endif
+                const auto stop = std::chrono::steady_clock::now();
+                g_sink = g_sink + sink;
+                timing.passes[q->name].push_back(std::chrono::duration<double, std::nano>(stop - start).count() /
+                                                 static_cast<double>(std::max<size_t>(1, count)));
             }
         });
     }
@@ -1335,6 +1472,94 @@ void PrintMachine(int argc, char** argv)
     std::printf("\n\n");
 }
 
+// The near-contact table: ns per query, then satviz's ratios to Box2D and to the textbook loop with the goals they
+// are held to, at every vertex count of the run. Returns whether every goal was met.
+bool PrintNear(const Settings& s, const std::map<int, Timing>& timings)
+{
+    std::printf("\nnear-contact pairs, placed %s: ns per query, median of %d rounds, each a fresh pool of %d pairs\n"
+                "that every query passes over once (no pass replays a pair); a third overlapping by up to half a\n"
+                "width, a third touching within 1e-9, a third apart by up to half a width; sweeps on every pair,\n"
+                "B moving roughly towards A; ratios: median over the rounds of the ratio of two passes\n\n",
+                s.placement == "direction" ? "along a random direction" : "along A's normal (as above)", s.nearRounds,
+                s.nearPairs);
+    std::printf("%-46s", "query");
+    for (int n : s.nearCounts)
+    {
+        std::printf(" %7s", ("n=" + std::to_string(n)).c_str());
+    }
+    std::printf("\n");
+    for (const char* name : kNearQueries)
+    {
+        std::printf("%-46s", name);
+        for (int n : s.nearCounts)
+        {
+            const Timing& t = timings.at(n);
+            if (t.Has(name))
+            {
+                std::printf(" %7.1f", t.Ns(name));
+            }
+            else
+            {
+                std::printf(" %7s", "-");
+            }
+        }
+        std::printf("\n");
+    }
+    bool met = true;
+    std::printf("\n%-40s %6s", "ratio (<1: faster)", "goal");
+    for (int n : s.nearCounts)
+    {
+        std::printf(" %7s", ("n=" + std::to_string(n)).c_str());
+    }
+    std::printf("\n");
+    auto goal = [&](const char* label, const char* numerator, const char* denominator, double limit) {
+        std::printf("%-40s %6.2f", label, limit);
+        bool rowMet = true;
+        for (int n : s.nearCounts)
+        {
+            const Timing& t = timings.at(n);
+            if (!t.Has(numerator) || !t.Has(denominator))
+            {
+                std::printf(" %7s", "-");
+                continue;
+            }
+            const double ratio = t.Ratio(numerator, denominator);
+            rowMet = rowMet && ratio <= limit;
+            std::printf(" %7.2f", ratio);
+        }
+        std::printf("  %s\n", rowMet ? "met" : "MISSED");
+        met = met && rowMet;
+    };
+#ifdef SATVIZ_HAVE_BOX2D
+    goal("Overlap / b2TestOverlap", "satviz Overlap", "box2d b2TestOverlap", 0.25);
+    goal("Collide / b2CollidePolygons", "satviz Collide", "box2d b2CollidePolygons", 0.6);
+    goal("SweepTime / b2TimeOfImpact (both: time)", "satviz SweepTime", "box2d b2TimeOfImpact", 0.25);
+    goal("Sweep (contacts) / b2TimeOfImpact (time)", "satviz Sweep", "box2d b2TimeOfImpact", 0.35);
+    goal("Sweep / b2TimeOfImpact + collide at t", "satviz Sweep", "box2d b2TimeOfImpact + b2CollidePolygons at t",
+         0.35);
+#endif
+    goal("Overlap / textbook Overlap", "satviz Overlap", "textbook Overlap", 1.0);
+    goal("Collide / textbook MTV", "satviz Collide", "textbook MTV", 1.0);
+    goal("Sweep / textbook TOI", "satviz Sweep", "textbook TOI", 1.0);
+    return met;
+}
+
+// Writes the near-contact figures as query,n,ns lines; false when writing failed.
+bool WriteNearCsv(const std::string& directory, const std::map<int, Timing>& timings)
+{
+    std::ofstream out(std::filesystem::path(directory) / "timing_near.csv");
+    out << "query,n,ns\n";
+    for (const auto& [n, timing] : timings)
+    {
+        for (const auto& [name, passes] : timing.passes)
+        {
+            out << CsvName(name) << ',' << n << ',' << timing.Ns(name) << '\n';
+        }
+    }
+    out.close();
+    return static_cast<bool>(out);
+}
+
 // The settings' own mistakes, found before anything runs: a one-line reason naming the option, or "" when the
 // settings can be run. A polygon of fewer than 3 vertices is never made (the pool would be drawn for ever), and no
 // pairs or no rounds would leave no pass to take a median of.
@@ -1358,6 +1583,25 @@ std::string CheckSettings(const Settings& s)
     if (s.rounds < 1)
     {
         return "--rounds: at least 1 round, got " + std::to_string(s.rounds);
+    }
+    for (int n : s.nearCounts)
+    {
+        if (n < 3)
+        {
+            return "--near-counts: a polygon has at least 3 vertices, got " + std::to_string(n);
+        }
+    }
+    if (s.nearPairs < 3)
+    {
+        return "--near-pairs: at least 3 pairs per pool (one of each kind), got " + std::to_string(s.nearPairs);
+    }
+    if (s.nearRounds < 1)
+    {
+        return "--near-rounds: at least 1 round, got " + std::to_string(s.nearRounds);
+    }
+    if (s.placement != "direction" && s.placement != "face")
+    {
+        return "--near-placement: 'direction' or 'face', got '" + s.placement + "'";
     }
     return "";
 }
@@ -1432,6 +1676,13 @@ int main(int argc, char** argv)
     app.add_option("--rounds", s.rounds, "Rounds (the figure is their median; at least 1)");
     app.add_option("--seed", s.seed, "Random seed");
     app.add_option("--counts", s.counts, "Vertex counts (each at least 3)");
+    app.add_option("--near-pairs", s.nearPairs, "Near-contact pairs: pairs per pool (each round draws a fresh one)");
+    app.add_option("--near-rounds", s.nearRounds, "Near-contact pairs: rounds (the figure is their median)");
+    app.add_option("--near-counts", s.nearCounts, "Near-contact pairs: vertex counts (each at least 3)");
+    app.add_option("--near-placement", s.placement,
+                   "Near-contact pairs: 'direction' (B along a random direction from A, the default) or 'face' (B "
+                   "against A's outline along A's normal, as the main pool places them)");
+    app.add_flag("--near-only", s.nearOnly, "Time only the near-contact pairs");
     std::string csv;
     app.add_option("--csv", csv,
                    "Also write timing.csv, accuracy.csv and accuracy_by_category.csv into this directory (for the "
@@ -1497,6 +1748,8 @@ int main(int argc, char** argv)
         s.rounds = 1;
         s.reps = 1;
         s.accuracyPairs = 300;
+        s.nearPairs = 300;
+        s.nearRounds = 1;
     }
 
     PrintMachine(argc, argv);
@@ -1506,6 +1759,21 @@ int main(int argc, char** argv)
     }
     Rng rng(s.seed);
     const std::vector<Query> queries = Queries();
+    std::map<int, Timing> nearTimings;
+    if (s.nearOnly)
+    {
+        for (int n : s.nearCounts)
+        {
+            nearTimings[n] = TimeNear(s, n, queries, rng);
+        }
+        PrintNear(s, nearTimings);
+        if (!csv.empty() && !WriteNearCsv(csv, nearTimings))
+        {
+            std::fprintf(stderr, "satviz-bench: --csv %s: writing timing_near.csv failed\n", csv.c_str());
+            return 1;
+        }
+        return 0;
+    }
     std::map<int, Timing> timings;
     std::map<int, std::map<std::string, double>> ns;
     for (int n : s.counts)
@@ -1612,6 +1880,12 @@ int main(int argc, char** argv)
     ratioRow("satviz Overlap / chipmunk count>0", "satviz Overlap", "chipmunk cpShapesCollide count>0");
     ratioRow("satviz Collide / chipmunk cpShapesCollide", "satviz Collide", "chipmunk cpShapesCollide");
 #endif
+
+    for (int n : s.nearCounts)
+    {
+        nearTimings[n] = TimeNear(s, n, queries, rng);
+    }
+    PrintNear(s, nearTimings);
 
     std::printf("\nscaling with the vertex count (time / time at n=8)\n");
     for (const char* name : {"satviz Overlap", "satviz Collide", "satviz Sweep", "satviz SweepTime", "satviz RayCast"})
@@ -1736,7 +2010,8 @@ int main(int argc, char** argv)
         byCategoryCsv.close();
         timing.close();
         accuracy.close();
-        if (byCategoryCsv && timing && accuracy)
+        const bool nearWritten = WriteNearCsv(csv, nearTimings);
+        if (byCategoryCsv && timing && accuracy && nearWritten)
         {
             std::fprintf(stderr, "satviz-bench: CSV files written to %s\n", csv.c_str());
         }

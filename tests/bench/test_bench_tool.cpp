@@ -89,6 +89,10 @@ TEST_CASE("satviz-bench refuses vertex counts below 3, no pairs and no rounds", 
     CheckRefused("--pairs 0", {"--pairs", "got 0"});
     CheckRefused("--pairs -3", {"--pairs", "got -3"});
     CheckRefused("--rounds 0", {"--rounds", "got 0"});
+    CheckRefused("--near-counts 3 2", {"--near-counts", "at least 3 vertices", "got 2"});
+    CheckRefused("--near-pairs 2", {"--near-pairs", "got 2"});
+    CheckRefused("--near-rounds 0", {"--near-rounds", "got 0"});
+    CheckRefused("--near-placement sideways", {"--near-placement", "sideways"});
     // Checked before --quick sets its own pool sizes.
     CheckRefused("--quick --pairs 0", {"--pairs", "got 0"});
 }
@@ -113,6 +117,10 @@ TEST_CASE("satviz-bench --quick says its figures are not measurements, and write
     CHECK(fs::is_regular_file(csv / "timing.csv"));
     CHECK(fs::is_regular_file(csv / "accuracy.csv"));
     CHECK(fs::is_regular_file(csv / "accuracy_by_category.csv"));
+    CHECK(fs::is_regular_file(csv / "timing_near.csv"));
+    // The near-contact table, with a figure for every query it names at the first count and its goals.
+    CHECK(run.out.find("near-contact pairs, placed along a random direction") != std::string::npos);
+    CHECK(run.out.find("Overlap / textbook Overlap") != std::string::npos);
     // The probe file of the check before the run is gone.
     int files = 0;
     for (const auto& entry : fs::directory_iterator(csv))
@@ -120,7 +128,7 @@ TEST_CASE("satviz-bench --quick says its figures are not measurements, and write
         CHECK(entry.path().filename().string().find("probe") == std::string::npos);
         ++files;
     }
-    CHECK(files == 3);
+    CHECK(files == 4);
 }
 
 TEST_CASE("satviz-bench --world refuses no bodies, too few steps, no rounds and unknown scenes", "[bench-tool]")

@@ -38,22 +38,74 @@ inline void Project(const std::vector<Vec2>& points, Vec2 axis, double& lo, doub
     }
 }
 
+/// A placed polygon's world-space vertices, on the stack up to 16 (no allocation, no thread-local buffer: the loops
+/// below are timed against the library, so they are given the data layout a hand-written loop would use).
+class Outline
+{
+  public:
+    /// The vertices of `polygon` placed by `xf`.
+    Outline(const Polygon& polygon, const Transform& xf) : m_count(polygon.Count())
+    {
+        if (m_count > kLocal)
+        {
+            m_heap.resize(static_cast<size_t>(m_count));
+        }
+        Vec2* out = m_count > kLocal ? m_heap.data() : m_local.vertices;
+        for (int i = 0; i < m_count; ++i)
+        {
+            out[i] = TransformPoint(xf, polygon.Vertices()[i]);
+        }
+        m_data = out;
+    }
+    Outline(const Outline&) = delete;
+    Outline& operator=(const Outline&) = delete;
+
+    /// The vertex count.
+    int Count() const { return m_count; }
+    /// Vertex i (0 <= i < Count()).
+    Vec2 operator[](int i) const { return m_data[i]; }
+    /// The edge normal of edge i (vertex i to i + 1), not normalised, pointing out of a counter-clockwise outline.
+    Vec2 EdgeNormal(int i) const { return RightPerp(m_data[i + 1 < m_count ? i + 1 : 0] - m_data[i]); }
+    /// Lowest and highest projection of the vertices on an axis.
+    void Project(Vec2 axis, double& lo, double& hi) const
+    {
+        lo = Dot(m_data[0], axis);
+        hi = lo;
+        for (int i = 1; i < m_count; ++i)
+        {
+            const double s = Dot(m_data[i], axis);
+            lo = std::min(lo, s);
+            hi = std::max(hi, s);
+        }
+    }
+
+  private:
+    static constexpr int kLocal = 16;
+    // Left uninitialised until the constructor writes the vertices it uses.
+    union Local
+    {
+        Local() {}
+        Vec2 vertices[kLocal];
+    };
+    int m_count;
+    Local m_local;
+    std::vector<Vec2> m_heap;
+    const Vec2* m_data = nullptr;
+};
+
 /// The tutorial's boolean test: stop at the first axis whose intervals do not overlap. Touching is overlap.
 inline bool TextbookOverlap(const Polygon& a, const Transform& xfA, const Polygon& b, const Transform& xfB)
 {
-    thread_local std::vector<Vec2> wa;
-    thread_local std::vector<Vec2> wb;
-    WorldVertices(a, xfA, wa);
-    WorldVertices(b, xfB, wb);
-    for (const std::vector<Vec2>* shape : {&wa, &wb})
+    const Outline wa(a, xfA);
+    const Outline wb(b, xfB);
+    for (const Outline* shape : {&wa, &wb})
     {
-        const std::vector<Vec2>& w = *shape;
-        for (size_t i = 0; i < w.size(); ++i)
+        for (int i = 0; i < shape->Count(); ++i)
         {
-            const Vec2 axis = RightPerp(w[(i + 1) % w.size()] - w[i]);
+            const Vec2 axis = shape->EdgeNormal(i);
             double loA, hiA, loB, hiB;
-            Project(wa, axis, loA, hiA);
-            Project(wb, axis, loB, hiB);
+            wa.Project(axis, loA, hiA);
+            wb.Project(axis, loB, hiB);
             if (hiA < loB || hiB < loA)
             {
                 return false;
@@ -67,20 +119,17 @@ inline bool TextbookOverlap(const Polygon& a, const Transform& xfA, const Polygo
 /// wins, oriented from A to B. Returns the depth (< 0: separated, minus the largest gap found).
 inline double TextbookMtv(const Polygon& a, const Transform& xfA, const Polygon& b, const Transform& xfB, Vec2& normal)
 {
-    thread_local std::vector<Vec2> wa;
-    thread_local std::vector<Vec2> wb;
-    WorldVertices(a, xfA, wa);
-    WorldVertices(b, xfB, wb);
+    const Outline wa(a, xfA);
+    const Outline wb(b, xfB);
     double best = std::numeric_limits<double>::infinity();
-    for (const std::vector<Vec2>* shape : {&wa, &wb})
+    for (const Outline* shape : {&wa, &wb})
     {
-        const std::vector<Vec2>& w = *shape;
-        for (size_t i = 0; i < w.size(); ++i)
+        for (int i = 0; i < shape->Count(); ++i)
         {
-            const Vec2 axis = Normalize(RightPerp(w[(i + 1) % w.size()] - w[i]));
+            const Vec2 axis = Normalize(shape->EdgeNormal(i));
             double loA, hiA, loB, hiB;
-            Project(wa, axis, loA, hiA);
-            Project(wb, axis, loB, hiB);
+            wa.Project(axis, loA, hiA);
+            wb.Project(axis, loB, hiB);
             const double pushB = hiA - loB; // moving B along +axis
             const double pushA = hiB - loA; // moving B along -axis
             const double overlap = std::min(pushB, pushA);
@@ -104,21 +153,18 @@ inline double TextbookMtv(const Polygon& a, const Transform& xfA, const Polygon&
 /// -1 for no hit.
 inline double TextbookToi(const Polygon& a, const Transform& xfA, const Polygon& b, const Transform& xfB, Vec2 v)
 {
-    thread_local std::vector<Vec2> wa;
-    thread_local std::vector<Vec2> wb;
-    WorldVertices(a, xfA, wa);
-    WorldVertices(b, xfB, wb);
+    const Outline wa(a, xfA);
+    const Outline wb(b, xfB);
     double enter = 0.0;
     double leave = 1.0;
-    for (const std::vector<Vec2>* shape : {&wa, &wb})
+    for (const Outline* shape : {&wa, &wb})
     {
-        const std::vector<Vec2>& w = *shape;
-        for (size_t i = 0; i < w.size(); ++i)
+        for (int i = 0; i < shape->Count(); ++i)
         {
-            const Vec2 axis = Normalize(RightPerp(w[(i + 1) % w.size()] - w[i]));
+            const Vec2 axis = Normalize(shape->EdgeNormal(i));
             double loA, hiA, loB, hiB;
-            Project(wa, axis, loA, hiA);
-            Project(wb, axis, loB, hiB);
+            wa.Project(axis, loA, hiA);
+            wb.Project(axis, loB, hiB);
             const double speed = Dot(v, axis);
             if (speed == 0.0)
             {
