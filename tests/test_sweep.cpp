@@ -4,6 +4,7 @@
 #include "support/builders.h"
 #include "support/random_shapes.h"
 #include "support/reference.h"
+#include "support/same_bits.h"
 #include "support/sweep_oracle.h"
 
 #include <satviz/sat.h>
@@ -305,6 +306,67 @@ TEST_CASE("SweepTime answers as Sweep, bit for bit, without contact points", "[s
         REQUIRE(std::memcmp(&timeF.normal, &sweepF.normal, sizeof timeF.normal) == 0);
     }
     CHECK(hits > 10000);
+}
+
+TEST_CASE("A start where the polygons interpenetrate reports Collide's manifold, bit for bit", "[sweep][properties]")
+{
+    // The sweep builds the static manifold from the separations its own face loops computed; Collide computes them
+    // again. Random overlapping contact pairs of every scanned size and a few walked ones, and exact pairs: boxes
+    // turned by multiples of 90 degrees (faces anti-parallel, which Collide's second pass skips) and the mirrored
+    // right triangles whose diagonals tie exactly.
+    Rng rng(20261126);
+    const auto check = [](const RandomPair& pair, Vec2 v) {
+        const Manifold m = Collide(pair.a, pair.xfA, pair.b, pair.xfB);
+        if (!(m.overlap && m.depth > 0.0))
+        {
+            return false;
+        }
+        SweepTrace trace;
+        for (const bool traced : {false, true})
+        {
+            INFO((traced ? "traced" : "untraced"));
+            const SweepResult sweep = Sweep(pair.a, pair.xfA, Vec2{}, pair.b, pair.xfB, v, traced ? &trace : nullptr);
+            const SweepResult time =
+                SweepTime(pair.a, pair.xfA, Vec2{}, pair.b, pair.xfB, v, traced ? &trace : nullptr);
+            for (const SweepResult& r : {sweep, time})
+            {
+                REQUIRE(r.status == SweepStatus::Overlapping);
+                REQUIRE(SameBits(r.initial, m));
+                REQUIRE(SameBits(r.normal, m.normal));
+                REQUIRE(r.axis.shape == m.axis.shape);
+                REQUIRE(r.axis.index == m.axis.index);
+            }
+        }
+        return true;
+    };
+    int checked = 0;
+    for (int i = 0; i < 20000; ++i)
+    {
+        const int counts[] = {3, 4, 5, 6, 7, 8, 11, 16, 24};
+        const RandomPair pair = ContactPair(rng, counts[rng.Int(0, 8)], PairCategory::Overlap, 0.05);
+        const Vec2 v{rng.Uniform(-2.0, 2.0), rng.Uniform(-2.0, 2.0)};
+        INFO("pair " << i);
+        checked += check(pair, v) ? 1 : 0;
+    }
+    for (int i = 0; i < 2000; ++i)
+    {
+        RandomPair pair;
+        pair.a = BoxShape(rng.Uniform(0.2, 1.5), rng.Uniform(0.2, 1.5));
+        pair.b = BoxShape(rng.Uniform(0.2, 1.5), rng.Uniform(0.2, 1.5));
+        const double quarter = 0.5 * kPi;
+        pair.xfA = At(rng.Uniform(-1.0, 1.0), rng.Uniform(-1.0, 1.0), quarter * rng.Int(0, 3));
+        pair.xfB =
+            At(pair.xfA.p.x + rng.Uniform(-1.0, 1.0), pair.xfA.p.y + rng.Uniform(-1.0, 1.0), quarter * rng.Int(0, 3));
+        INFO("box pair " << i);
+        checked += check(pair, Vec2{rng.Uniform(-2.0, 2.0), rng.Uniform(-2.0, 2.0)}) ? 1 : 0;
+    }
+    RandomPair triangles;
+    triangles.a = MakeShape(MakePolygon(std::vector<Vec2>{{0, 0}, {2, 0}, {0, 2}}).polygon);
+    triangles.b = MakeShape(MakePolygon(std::vector<Vec2>{{1, 0}, {3, 0}, {3, 2}}).polygon);
+    triangles.xfA = At(0, 0);
+    triangles.xfB = At(0, 0);
+    REQUIRE(check(triangles, Vec2{0.5, 0.25}));
+    CHECK(checked > 15000);
 }
 
 TEST_CASE("Circle sweeps are traced axis by axis", "[sweep][circle][trace]")

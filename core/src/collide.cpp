@@ -18,8 +18,13 @@ template <typename S>
 [[gnu::flatten]] ManifoldT<S> Collide(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b,
                                       const TransformT<S>& xfB, TraceT<S>* trace)
 {
-    return WithTracer(trace, a, xfA, b, xfB,
-                      [&](auto& tracer) { return detail::CollidePolygons(a, xfA, b, xfB, tracer); });
+    const auto query = [&](auto& tracer) { return detail::CollidePolygons(a, xfA, b, xfB, tracer); };
+    // The 512-bit face queries serve polygons of up to 8 vertices.
+    if (a.Count() <= PolygonT<S>::kInlineVertices && b.Count() <= PolygonT<S>::kInlineVertices)
+    {
+        return WithTracer<true, true>(trace, a, xfA, b, xfB, query);
+    }
+    return WithTracer(trace, a, xfA, b, xfB, query);
 }
 
 template <typename S>

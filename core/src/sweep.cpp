@@ -355,6 +355,18 @@ struct SweepLanes
     }
 };
 
+// The separations at t = 0 of the faces of a polygon of at most 8 faces, as its face loop computed them (the blocks
+// of SmallRefSeparations), kept for a start where the shapes interpenetrate: the static manifold's reference face is
+// the face of largest separation, as Collide finds it from the same numbers, so no face is tested twice.
+template <typename L>
+struct KeptSeparations
+{
+    L block0 = L::Fill(0); // faces 0 to 3
+    L block1 = L::Fill(0); // faces 4 to 7, or 0 to 3 again
+    bool kept = false;     // the face loop was that of a small polygon (else nothing is kept)
+    bool twoBlocks = false;
+};
+
 // The recorder's face-by-face view of a block of faces i0 .. i0 + 3 (those below n), with the block's own numbers:
 // the latest entry and earliest exit so far, and the first face that ends the test (then `viewEnded`).
 template <typename L, typename S, typename Tracer>
@@ -401,7 +413,7 @@ void Replay(Tracer& tracer, SweepState<S>& view, bool& viewEnded, int side, int 
 //   that first failing face, with the lanes' numbers.
 template <int N, int kBlocks, typename L, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                SweepLanes<L, S>& lanes, SweepState<S>& view, Tracer& tracer)
+                SweepLanes<L, S>& lanes, SweepState<S>& view, Tracer& tracer, KeptSeparations<L>& kept)
 {
     static_assert(N > 0, "a scanned inc");
     constexpr bool kSmall = kBlocks > 0;
@@ -416,6 +428,10 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
             return 0;
         }
     }();
+    if constexpr (kSmall)
+    {
+        kept = {small.block0, small.block1, true, kBlocks == 2};
+    }
     const int n = ref.Count();
     // A small ref has exactly kBlocks blocks, so its loop unrolls.
     const int blocksEnd = kSmall ? 4 * kBlocks : n;
@@ -1054,16 +1070,16 @@ bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
 // SweepFaces with inc's scan unrolled for its padded vertex count, and a ref of up to 8 faces in one pass.
 template <int N, typename L, typename S, typename Tracer>
 bool SweepFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                 SweepLanes<L, S>& lanes, SweepState<S>& view, Tracer& tracer)
+                 SweepLanes<L, S>& lanes, SweepState<S>& view, Tracer& tracer, KeptSeparations<L>& kept)
 {
     switch ((ref.Count() + 3) / 4)
     {
     case 1:
-        return SweepFaces<N, 1>(ref, inc, side, velocity, lanes, view, tracer);
+        return SweepFaces<N, 1>(ref, inc, side, velocity, lanes, view, tracer, kept);
     case 2:
-        return SweepFaces<N, 2>(ref, inc, side, velocity, lanes, view, tracer);
+        return SweepFaces<N, 2>(ref, inc, side, velocity, lanes, view, tracer, kept);
     default:
-        return SweepFaces<N, 0>(ref, inc, side, velocity, lanes, view, tracer);
+        return SweepFaces<N, 0>(ref, inc, side, velocity, lanes, view, tracer, kept);
     }
 }
 
@@ -1075,7 +1091,8 @@ constexpr int kBisectFaces = 256;
 
 template <typename L, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
-                SweepLanes<L, S>& lanes, SweepState<S>& view, Tracer& tracer, S& known, WalkedSweep<S>& walk)
+                SweepLanes<L, S>& lanes, SweepState<S>& view, Tracer& tracer, S& known, WalkedSweep<S>& walk,
+                KeptSeparations<L>& kept)
 {
     if (ref.Count() > kBisectFaces) [[unlikely]]
     {
@@ -1084,13 +1101,13 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     switch (inc.scan ? inc.padded : 0)
     {
     case 4:
-        return SweepFacesN<4>(ref, inc, side, velocity, lanes, view, tracer);
+        return SweepFacesN<4>(ref, inc, side, velocity, lanes, view, tracer, kept);
     case 8:
-        return SweepFacesN<8>(ref, inc, side, velocity, lanes, view, tracer);
+        return SweepFacesN<8>(ref, inc, side, velocity, lanes, view, tracer, kept);
     case 12:
-        return SweepFacesN<12>(ref, inc, side, velocity, lanes, view, tracer);
+        return SweepFacesN<12>(ref, inc, side, velocity, lanes, view, tracer, kept);
     case 16:
-        return SweepFacesN<16>(ref, inc, side, velocity, lanes, view, tracer);
+        return SweepFacesN<16>(ref, inc, side, velocity, lanes, view, tracer, kept);
     default:
         return SweepBoundedFaces(ref, inc, side, velocity, lanes, view, tracer, known, walk);
     }
@@ -1173,6 +1190,50 @@ int SweptContacts(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& in
     return edge ? 2 : 1;
 }
 
+// The static manifold of two polygons of at most 8 faces that interpenetrate at t = 0, from the separations their
+// face loops kept (KeptSeparations) and the incident polygons mapped for them: as CollidePolygons with the same
+// numbers, so the same manifold to the bit. Every separation is < 0 (the caller knows), so no face separates: the
+// reference face is the face of largest separation, A's on a tie, B's faces anti-parallel to one of A's skipped as
+// the second pass of Collide's face query skips them; its contacts are clipped as Collide clips them.
+template <bool kWide, typename L, typename S>
+ManifoldT<S> InterpenetratingManifold(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b,
+                                      const TransformT<S>& xfB, const IncidentPolygon<S>& incA,
+                                      const IncidentPolygon<S>& incB, KeptSeparations<L> keptA,
+                                      KeptSeparations<L> keptB)
+{
+    const auto largest = [](KeptSeparations<L>& kept, uint64_t skip, int n, int& face) {
+        if (kept.twoBlocks)
+        {
+            HideFaces<2>(skip, n, kept.block0, kept.block1);
+        }
+        else
+        {
+            HideFaces<1>(skip, n, kept.block0, kept.block1);
+        }
+        return LargestSeparation(kept.block0, kept.block1, n, face);
+    };
+    const uint64_t skip = SecondPassSkips<AlgorithmChoices::kSkipParallel>(b, incA, true);
+    int faceA = 0;
+    int faceB = 0;
+    const S largestA = largest(keptA, 0, a.Count(), faceA);
+    const S largestB = largest(keptB, skip, b.Count(), faceB);
+    const bool flip = largestB > largestA;
+    const PolygonT<S>& ref = SelectRef(flip, b, a);
+    const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
+    const TransformT<S>& xfRef = SelectRef(flip, xfB, xfA);
+    const int face = Select(flip, faceB, faceA);
+    const ClipResult<S> clip = ClipIncidentEdge<kWide>(ref, face, inc, -1, S(0));
+    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(face));
+    return {true,
+            -Select(flip, largestB, largestA),
+            S(0),
+            Select(flip, -worldNormal, worldNormal),
+            {WorldContact(clip, 0, xfRef), WorldContact(clip, 1, xfRef)},
+            clip.contactCount,
+            {AxisKind::FaceNormal, Select(flip, 1, 0), face},
+            clip.incidentEdge};
+}
+
 /// Swept SAT for two translating polygons (Ericson 5.5.2).
 /// Outline:
 ///   1. B's motion relative to A is v = vB - vA. On the unit normal n of a face of A, the face's separation (as in
@@ -1219,14 +1280,16 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     S known = S(0);
     WalkedSweep<S> walkA;
     WalkedSweep<S> walkB;
-    if (!SweepFaces(a, incB, 0, velocityInA, lanes, view, tracer, known, walkA))
+    KeptSeparations<decltype(lanes.first)> keptA;
+    KeptSeparations<decltype(lanes.first)> keptB;
+    if (!SweepFaces(a, incB, 0, velocityInA, lanes, view, tracer, known, walkA, keptA))
     {
         finish();
         return result;
     }
     // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
     const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, std::bool_constant<Tracer::kWide>{});
-    bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, view, tracer, known, walkB);
+    bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, view, tracer, known, walkB, keptB);
     // Bounded face loops: the exits their first pass left, now that the latest entry is known.
     going = going && !(walkA.walked && !SweepBoundedExits(a, incB, 0, velocityInA, lanes, walkA, view, tracer));
     going = going && !(walkB.walked && !SweepBoundedExits(b, incA, 1, -velocityInB, lanes, walkB, view, tracer));
@@ -1239,7 +1302,9 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     lanes.Combine(state);
     if (state.inside)
     {
-        result = Initial(Collide(a, xfA, b, xfB));
+        result = Initial(keptA.kept && keptB.kept
+                             ? InterpenetratingManifold<Tracer::kWide>(a, xfA, b, xfB, incA, incB, keptA, keptB)
+                             : Collide(a, xfA, b, xfB));
         return result;
     }
 

@@ -128,6 +128,39 @@ struct SmallRefSeparations
     }
 };
 
+/// The separations of a small ref's faces in blocks (SmallRefSeparations) with the faces that take no part set to
+/// -infinity: the `skip`ped ones (bits), and the lanes past the last of its n faces, which read the polygon's block
+/// beyond its vertices and normals. With one block, block1 repeats block0.
+template <int kBlocks, typename L>
+void HideFaces(uint64_t skip, int n, L& block0, L& block1)
+{
+    using S = std::decay_t<decltype(std::declval<L>().Get(0))>;
+    const uint64_t hidden = (skip | ~((uint64_t(1) << n) - 1)) & (kBlocks == 2 ? 0xFF : 0xF);
+    if (hidden != 0)
+    {
+        const auto mask = [](uint64_t bits) {
+            return L::Set(S(bits & 1), S(bits & 2), S(bits & 4), S(bits & 8)) > L::Fill(S(0));
+        };
+        const L below = L::Fill(-std::numeric_limits<S>::infinity());
+        block0 = Select(mask(hidden), below, block0);
+        block1 = kBlocks == 2 ? Select(mask(hidden >> 4), below, block1) : block0;
+    }
+}
+
+/// The largest separation over a small ref's n faces from its blocks (HideFaces applied), NaN ignored (no comparison
+/// holds for it), and in `face` its first face (none for NaN input: face 0).
+template <typename L, typename S = std::decay_t<decltype(std::declval<L>().Get(0))>>
+S LargestSeparation(const L& block0, const L& block1, int n, int& face)
+{
+    const L low = L::Fill(-std::numeric_limits<S>::infinity());
+    const L best0 = Select(block0 > low, block0, low);
+    const L best = Select(block1 > best0, block1, best0);
+    const S largest = best.MaxLane();
+    const int hits = ((block0 == L::Fill(largest)).Bits() | (block1 == L::Fill(largest)).Bits() << 4) & ((1 << n) - 1);
+    face = hits != 0 ? __builtin_ctz(static_cast<unsigned>(hits)) : 0;
+    return largest;
+}
+
 /// The face query of Collide (unit normals) for a ref of at most 8 faces against a scanned inc of N padded vertices,
 /// with the answer of the textbook loop (ScanFaces): the separations of all of ref's faces from one pass over inc's
 /// vertices, as SmallRefSeparations takes them (the same bits), then one branch for all of them. A separating face ends
@@ -142,7 +175,6 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
                                Tracer& tracer)
 {
     using L = Lanes<S, Tracer::kWide && std::is_same_v<S, double>>;
-    constexpr S kInfinity = std::numeric_limits<S>::infinity();
     const int n = ref.Count();
     const uint64_t skip = SecondPassSkips<Tracer::kSkipParallel>(ref, inc, second);
     // At most 8 faces: the polygon is kept inline, and its block is read without waiting for vertices.data. Faces
@@ -169,23 +201,9 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
     {
         block1 = (low1 - (n1x * v1x + n1y * v1y)) + L::Fill(S(0));
     }
-    // Faces that take no part: the skipped ones, and the lanes past the last face, which read the polygon's block
-    // beyond its vertices and normals.
-    const uint64_t hidden = (skip | ~((uint64_t(1) << n) - 1)) & (kBlocks == 2 ? 0xFF : 0xF);
-    if (hidden != 0)
-    {
-        const auto mask = [](uint64_t bits) {
-            return L::Set(S(bits & 1), S(bits & 2), S(bits & 4), S(bits & 8)) > L::Fill(S(0));
-        };
-        block0 = Select(mask(hidden), L::Fill(-kInfinity), block0);
-        block1 = kBlocks == 2 ? Select(mask(hidden >> 4), L::Fill(-kInfinity), block1) : block0;
-    }
-    const int live = (1 << n) - 1; // the faces
-    const auto bits = [live](const typename L::Mask& m0, const typename L::Mask& m1) {
-        return (m0.Bits() | m1.Bits() << 4) & live;
-    };
+    HideFaces<kBlocks>(skip, n, block0, block1);
     const L zero = L::Fill(S(0));
-    const int separating = bits(block0 > zero, block1 > zero);
+    const int separating = ((block0 > zero).Bits() | (block1 > zero).Bits() << 4) & ((1 << n) - 1);
     FaceQuery<S> query;
     query.face = 0;
     int replayed = n; // faces the recorder shows
@@ -199,15 +217,7 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
     }
     else
     {
-        // The largest separation over the faces, NaN ignored (no comparison holds for it), and its first face
-        // (none for NaN input: face 0).
-        const L low = L::Fill(-kInfinity);
-        const L best0 = Select(block0 > low, block0, low);
-        const L best = Select(block1 > best0, block1, best0);
-        const S largest = best.MaxLane();
-        const int hits = bits(block0 == L::Fill(largest), block1 == L::Fill(largest));
-        query.separation = largest;
-        query.face = hits != 0 ? __builtin_ctz(static_cast<unsigned>(hits)) : 0;
+        query.separation = LargestSeparation(block0, block1, n, query.face);
     }
     if constexpr (Tracer::kEnabled)
     {

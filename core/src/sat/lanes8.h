@@ -47,6 +47,33 @@ struct Lanes8
     {
         return static_cast<int>(_mm512_cmp_pd_mask(v, b.v, _CMP_GT_OQ));
     }
+    /// The lanes equal to b's, one bit each.
+    [[gnu::target("avx512f")]] int EqualBits(const Lanes8& b) const
+    {
+        return static_cast<int>(_mm512_cmp_pd_mask(v, b.v, _CMP_EQ_OQ));
+    }
+    /// These lanes, with x in the lanes whose bit is set in `bits`.
+    [[gnu::target("avx512f")]] Lanes8 Replace(int bits, double x) const
+    {
+        return {_mm512_mask_mov_pd(v, static_cast<__mmask8>(bits), _mm512_set1_pd(x))};
+    }
+    /// The largest lane (no lane NaN: then the order of the comparisons cannot change the answer). Halves, then
+    /// quarters, then pairs folded onto each other by permutations within the register (masked forms with every
+    /// lane set: GCC 12 warns that the 256-bit casts and the plain forms leave pass-through lanes undefined).
+    [[gnu::target("avx512f")]] double MaxLane() const
+    {
+        const __mmask8 all = 0xFF;
+        __m512d m = v;
+        m = _mm512_mask_max_pd(m, all, m,
+                               _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(4, 5, 6, 7, 0, 1, 2, 3), m));
+        m = _mm512_mask_max_pd(m, all, m,
+                               _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(2, 3, 0, 1, 6, 7, 4, 5), m));
+        m = _mm512_mask_max_pd(m, all, m,
+                               _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(1, 0, 3, 2, 5, 4, 7, 6), m));
+        return _mm512_cvtsd_f64(m);
+    }
+    /// Lane k (0 to 7).
+    [[gnu::target("avx512f")]] double Get(int k) const { return _mm512_cvtsd_f64(Spread(k).v); }
 
     [[gnu::target("avx512f")]] friend Lanes8 operator+(const Lanes8& a, const Lanes8& b)
     {

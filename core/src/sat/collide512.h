@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+// satviz (private), machinery: Collide of two polygons of up to 8 vertices on 512-bit vectors (AVX-512F): the face
+// queries of both polygons, each with all its faces in one register of eight lanes against the other polygon's
+// vertices held in registers, then one branch for the verdict. Used only in code compiled for AVX-512 (entry.h:
+// RunWide512), where the processor has it (cpu_dispatch.h). The same separations to the bit as SmallRefFaceQuery
+// (face_blocks.h), so the same manifold as the face loops of polygon_polygon.h.
+#pragma once
+
+#include "clip.h"
+#include "cpu_dispatch.h"
+#include "face_query.h"
+#include "incident_polygon.h"
+#include "lanes8.h"
+#include "overlap512.h"
+#include "select.h"
+
+#include <satviz/manifold.h>
+#include <satviz/polygon.h>
+
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+
+namespace satviz::detail
+{
+
+#if SATVIZ_WIDE
+/// The separations of the faces of `ref` (at most 8, unit normals, one per lane) from the first N of the other
+/// polygon's vertices, mapped into ref's frame and held in registers (MapVertices512; N is its padded count, 4 or
+/// 8): the products, sums and minimum of SmallRefSeparations, in the same order, so the same bits. The lanes past
+/// ref's last face and those of the `skip`ped faces hold -infinity, so that they take no part.
+template <int N>
+[[gnu::target("avx512f")]] Lanes8 FaceSeparations512(const PolygonT<double>& ref, const Lanes8& x, const Lanes8& y,
+                                                     uint64_t skip)
+{
+    const int n = ref.Count();
+    Lanes8 vx;
+    Lanes8 vy;
+    Lanes8 nx;
+    Lanes8 ny;
+    Lanes8::LoadPoints(&ref.InlineBlock()[0].x, vx, vy);
+    Lanes8::LoadPoints(&ref.InlineBlock()[n + 1].x, nx, ny);
+    Lanes8 low = nx * x.Spread(0) + ny * y.Spread(0);
+    for (int j = 1; j < N; ++j)
+    {
+        low = Min(low, nx * x.Spread(j) + ny * y.Spread(j));
+    }
+    const Lanes8 separation = (low - (nx * vx + ny * vy)) + Lanes8::Fill(0.0);
+    const int hidden = static_cast<int>((skip | ~((uint64_t(1) << n) - 1)) & 0xFF);
+    return separation.Replace(hidden, -std::numeric_limits<double>::infinity());
+}
+
+/// The largest separation over the n faces of a polygon (FaceSeparations512) and its first face, NaN ignored (no
+/// comparison holds for it; face 0 when no face has a number), as SmallRefFaceQuery finds them.
+[[gnu::target("avx512f")]] inline double LargestSeparation512(const Lanes8& separations, int n, int& face)
+{
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    const int numbers = separations.GreaterBits(Lanes8::Fill(-kInfinity));
+    const double largest = separations.Replace(~numbers & 0xFF, -kInfinity).MaxLane();
+    const int hits = separations.EqualBits(Lanes8::Fill(largest)) & ((1 << n) - 1);
+    face = hits != 0 ? __builtin_ctz(static_cast<unsigned>(hits)) : 0;
+    return largest;
+}
+
+/// Collide of two polygons of at most 8 vertices on AVX-512 (CollidePolygons, step 0). The face queries of A and B
+/// do not wait for each other: both polygons are mapped into the other's frame and every face of both is tested, then
+/// one branch decides between a separating face (A's first, else B's first: the face the textbook loop stops at) and
+/// the reference face (the largest separation, A's on a tie), where the face loops take a branch per polygon, each
+/// mispredicted on about half of the pairs near contact. The contacts are clipped as in CollidePolygons.
+[[gnu::target("avx2,avx512f")]] inline ManifoldT<double>
+SmallPolygonsCollide512(const PolygonT<double>& a, const TransformT<double>& xfA, const PolygonT<double>& b,
+                        const TransformT<double>& xfB, bool skipParallel)
+{
+    const IncidentPolygon<double> incB(b, xfA, xfB, kScanLimit, std::true_type{});
+    const IncidentPolygon<double> incA(a, xfB, xfA, kScanLimit, std::true_type{});
+    Lanes8 bx;
+    Lanes8 by;
+    Lanes8 ax;
+    Lanes8 ay;
+    MapVertices512(b, incB.xf, bx, by);
+    MapVertices512(a, incA.xf, ax, ay);
+    const uint64_t skip = skipParallel ? AntiParallelFaces(a, b, InvMulRot(incA.xf.q, RotT<double>{})) : uint64_t(0);
+    const Lanes8 sepA = b.Count() <= 4 ? FaceSeparations512<4>(a, bx, by, 0) : FaceSeparations512<8>(a, bx, by, 0);
+    const Lanes8 sepB =
+        a.Count() <= 4 ? FaceSeparations512<4>(b, ax, ay, skip) : FaceSeparations512<8>(b, ax, ay, skip);
+    const Lanes8 zero = Lanes8::Fill(0.0);
+    const int separatingA = sepA.GreaterBits(zero);
+    const int separatingB = sepB.GreaterBits(zero);
+    if ((separatingA | separatingB) != 0)
+    {
+        const bool byB = separatingA == 0;
+        const int face = __builtin_ctz(static_cast<unsigned>(Select(byB, separatingB, separatingA)));
+        const double separation = Select(byB, sepB.Get(face), sepA.Get(face));
+        const Vec2T<double> normal = Rotate(Select(byB, xfB.q, xfA.q), SelectRef(byB, b, a).Normal(face));
+        return {false,
+                0.0,
+                separation,
+                Select(byB, -normal, normal),
+                {},
+                0,
+                {AxisKind::FaceNormal, Select(byB, 1, 0), face},
+                -1};
+    }
+    int faceA = 0;
+    int faceB = 0;
+    const double largestA = LargestSeparation512(sepA, a.Count(), faceA);
+    const double largestB = LargestSeparation512(sepB, b.Count(), faceB);
+    // Reference face: B's only when strictly better, so ties (and skipped duplicates) keep A's face.
+    const bool flip = largestB > largestA;
+    const PolygonT<double>& ref = SelectRef(flip, b, a);
+    const IncidentPolygon<double>& inc = SelectRef(flip, incA, incB);
+    const TransformT<double>& xfRef = SelectRef(flip, xfB, xfA);
+    const int face = Select(flip, faceB, faceA);
+    const ClipResult<double> clip = ClipIncidentEdge<true>(ref, face, inc, -1, 0.0);
+    const Vec2T<double> worldNormal = Rotate(xfRef.q, ref.Normal(face));
+    return {true,
+            -Select(flip, largestB, largestA),
+            0.0,
+            Select(flip, -worldNormal, worldNormal),
+            {WorldContact(clip, 0, xfRef), WorldContact(clip, 1, xfRef)},
+            clip.contactCount,
+            {AxisKind::FaceNormal, Select(flip, 1, 0), face},
+            clip.incidentEdge};
+}
+#endif
+
+} // namespace satviz::detail
