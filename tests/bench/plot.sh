@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Plots satviz-bench's CSV files with gnuplot: run time against vertex count, and run time against error (from
-# timing.csv and accuracy.csv), and the world's time per step against the body count (from world.csv, written by
+# Plots satviz-bench's CSV files with gnuplot: run time against vertex count, on the main pool and on near-contact
+# pairs, and run time against error (from timing.csv, timing_near.csv and accuracy.csv), and the world's time per step against the body count (from world.csv, written by
 # satviz-bench --world). Each figure is drawn when its CSV file is in CSV_DIR.
-# Usage: tests/bench/plot.sh CSV_DIR OUT_DIR (writes OUT_DIR/time-vs-vertices.png, OUT_DIR/time-vs-error.png,
-# OUT_DIR/world-step-time.png).
+# Usage: tests/bench/plot.sh CSV_DIR OUT_DIR (writes OUT_DIR/time-vs-vertices.png, OUT_DIR/time-near-contact.png,
+# OUT_DIR/time-vs-error.png, OUT_DIR/world-step-time.png).
 set -euo pipefail
 csv=$1 out=$2
 command -v gnuplot > /dev/null || { echo "plot.sh: gnuplot is not installed (apt-get install gnuplot-nox)" >&2; exit 2; }
@@ -16,13 +16,14 @@ written=()
 # dotted Chipmunk, dash-dot textbook.
 palette=(e41a1c 377eb8 4daf4a 984ea3 ff7f00 a65628 f781bf 17becf 999999 000000 bcbd22 1f3a93 8c564b 2ca02c)
 
-# The gnuplot plot list of one panel of the vertex-count plot: one line per query named in the arguments.
+# The gnuplot plot list of one panel of a vertex-count plot: one line per query named in the arguments, from the
+# timing file TIMING_CSV (query,n,ns).
 panel() {
-  local prefix=$1 plots="" i=0 query
-  shift
+  local file=$1 prefix=$2 plots="" i=0 query
+  shift 2
   for query in "$@"; do
     i=$((i + 1))
-    awk -F, -v q="$query" '$1 == q { print $2, $3 }' "$csv/timing.csv" | sort -n > "$work/$prefix$i.dat"
+    awk -F, -v q="$query" '$1 == q { print $2, $3 }' "$file" | sort -n > "$work/$prefix$i.dat"
     [ -s "$work/$prefix$i.dat" ] || continue
     case "$query" in
       box2d*) dash=2 ;;
@@ -36,10 +37,10 @@ panel() {
   echo "${plots%, }"
 }
 if [ -f "$csv/timing.csv" ]; then
-static=$(panel s "satviz Overlap" "satviz Collide" "satviz Overlap float" "satviz Collide float" \
+static=$(panel "$csv/timing.csv" s "satviz Overlap" "satviz Collide" "satviz Overlap float" "satviz Collide float" \
   "textbook Overlap" "textbook MTV" "box2d b2TestOverlap" "box2d b2CollidePolygons" "chipmunk cpShapesCollide")
-moving=$(panel m "satviz Sweep" "satviz SweepTime" "satviz Sweep float" "satviz RayCast" "satviz RayCast float" \
-  "textbook TOI" "box2d b2TimeOfImpact" "box2d b2TimeOfImpact + b2CollidePolygons at t" \
+moving=$(panel "$csv/timing.csv" m "satviz Sweep" "satviz SweepTime" "satviz Sweep float" "satviz RayCast" \
+  "satviz RayCast float" "textbook TOI" "box2d b2TimeOfImpact" "box2d b2TimeOfImpact + b2CollidePolygons at t" \
   "box2d b2PolygonShape::RayCast")
 gnuplot << GNUPLOT
 set terminal pngcairo size 1400,640 font "DejaVu Sans,11"
@@ -57,6 +58,32 @@ plot $moving
 unset multiplot
 GNUPLOT
 written+=("$out/time-vs-vertices.png")
+fi
+
+# The near-contact pairs (timing_near.csv): 3 to 8 vertices, beside Box2D and the textbook loop.
+if [ -f "$csv/timing_near.csv" ]; then
+nearStatic=$(panel "$csv/timing_near.csv" ns "satviz Overlap" "satviz Collide" "textbook Overlap" "textbook MTV" \
+  "box2d b2TestOverlap" "box2d b2CollidePolygons")
+nearMoving=$(panel "$csv/timing_near.csv" nm "satviz Sweep" "satviz SweepTime" "textbook TOI" "box2d b2TimeOfImpact" \
+  "box2d b2TimeOfImpact + b2CollidePolygons at t")
+gnuplot << GNUPLOT
+set terminal pngcairo size 1400,640 font "DejaVu Sans,11"
+set output "$out/time-near-contact.png"
+set multiplot layout 1,2 title "Near-contact pairs from pools no pass replays: run time against vertex count"
+set logscale y
+set xrange [2.5:8.5]
+set xtics 1
+set xlabel "vertices per polygon"
+set ylabel "ns per query"
+set key top left font ",9"
+set grid
+set title "Overlap and contact queries"
+plot $nearStatic
+set title "Sweeps (a third of the pairs start overlapped)"
+plot $nearMoving
+unset multiplot
+GNUPLOT
+written+=("$out/time-near-contact.png")
 fi
 
 # Run time at n = 8 against the worst error and against the wrong answers: one point per query or variant, in the

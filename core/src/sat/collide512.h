@@ -71,15 +71,15 @@ template <int N>
 SmallPolygonsCollide512(const PolygonT<double>& a, const TransformT<double>& xfA, const PolygonT<double>& b,
                         const TransformT<double>& xfB, bool skipParallel)
 {
-    const IncidentPolygon<double> incB(b, xfA, xfB, kScanLimit, std::true_type{});
-    const IncidentPolygon<double> incA(a, xfB, xfA, kScanLimit, std::true_type{});
+    const TransformT<double> bInA = InvMulTransforms(xfA, xfB);
+    const TransformT<double> aInB = InvMulTransforms(xfB, xfA);
     Lanes8 bx;
     Lanes8 by;
     Lanes8 ax;
     Lanes8 ay;
-    MapVertices512(b, incB.xf, bx, by);
-    MapVertices512(a, incA.xf, ax, ay);
-    const uint64_t skip = skipParallel ? AntiParallelFaces(a, b, InvMulRot(incA.xf.q, RotT<double>{})) : uint64_t(0);
+    MapVertices512(b, bInA, bx, by);
+    MapVertices512(a, aInB, ax, ay);
+    const uint64_t skip = skipParallel ? AntiParallelFaces(a, b, InvMulRot(aInB.q, RotT<double>{})) : uint64_t(0);
     const Lanes8 sepA = b.Count() <= 4 ? FaceSeparations512<4>(a, bx, by, 0) : FaceSeparations512<8>(a, bx, by, 0);
     const Lanes8 sepB =
         a.Count() <= 4 ? FaceSeparations512<4>(b, ax, ay, skip) : FaceSeparations512<8>(b, ax, ay, skip);
@@ -108,8 +108,11 @@ SmallPolygonsCollide512(const PolygonT<double>& a, const TransformT<double>& xfA
     // Reference face: B's only when strictly better, so ties (and skipped duplicates) keep A's face.
     const bool flip = largestB > largestA;
     const PolygonT<double>& ref = SelectRef(flip, b, a);
-    const IncidentPolygon<double>& inc = SelectRef(flip, incA, incB);
     const TransformT<double>& xfRef = SelectRef(flip, xfB, xfA);
+    // The incident polygon mapped into the reference frame for the clipping, only now: a separated pair needs no
+    // mapped polygon, and an overlapping one only the incident one.
+    const IncidentPolygon<double> inc(SelectRef(flip, a, b), xfRef, SelectRef(flip, xfA, xfB), kScanLimit,
+                                      std::true_type{});
     const int face = Select(flip, faceB, faceA);
     const ClipResult<double> clip = ClipIncidentEdge<true>(ref, face, inc, -1, 0.0);
     const Vec2T<double> worldNormal = Rotate(xfRef.q, ref.Normal(face));
