@@ -3,6 +3,7 @@
 // 5.3.2 and 5.5.7 for the ray against a sphere and the rounded shapes of circles).
 
 #include "sat/clip.h"
+#include "sat/collide512.h"
 #include "sat/cpu_dispatch.h"
 #include "sat/face_blocks.h"
 #include "sat/incident_polygon.h"
@@ -35,12 +36,19 @@ struct NullSweepTracer
 {
     static constexpr bool kEnabled = false;
     static constexpr bool kWide = false;
+    static constexpr bool kWide512 = false; // the face loops of small polygons on 512-bit vectors (SmallSweep512)
 };
 
 // The null tracer of the sweep compiled for AVX2.
 struct WideNullSweepTracer : NullSweepTracer
 {
     static constexpr bool kWide = true;
+};
+
+// The null tracer of the sweep compiled for AVX-512.
+struct Wide512NullSweepTracer : WideNullSweepTracer
+{
+    static constexpr bool kWide512 = true;
 };
 
 // Entry and exit times of one axis whose separation is `separation` at t = 0 and changes by `rate` per unit of
@@ -72,6 +80,7 @@ class SweepRecorder
   public:
     static constexpr bool kEnabled = true;
     static constexpr bool kWide = false;
+    static constexpr bool kWide512 = false;
 
     SweepRecorder(SweepTraceT<S>& trace, ShapeRef<S> a, const TransformT<S>& xfA, ShapeRef<S> b,
                   const TransformT<S>& xfB, Vec2T<S> relativeVelocity)
@@ -1190,6 +1199,88 @@ int SweptContacts(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& in
     return edge ? 2 : 1;
 }
 
+#if SATVIZ_WIDE
+// What the face loops of two polygons of at most 8 faces decide, found from every face of both at once on 512-bit
+// vectors (SmallSweep512): whether the test goes on, the latest entry and its face, whether every separation is < 0,
+// and the separations themselves, for the static manifold of an interpenetrating start.
+struct SmallSweepVerdict
+{
+    bool going = false;
+    SweepState<double> state;
+    Lanes8 sepA;
+    Lanes8 sepB;
+};
+
+// The entry and exit times of the faces of `ref` (at most 8, one per lane) whose separations are `separations`
+// (FaceSeparations512; -infinity past the last face), moving at `velocity` (ref's frame, as SweepFaces takes it):
+// AxisLanes' rule lane by lane, with the same operations, so the same bits. A lane past the last face enters never
+// (-infinity) and exits never (+infinity): it takes no part. NaN entries and exits become -infinity and +infinity,
+// which the lanes of SweepLanes never take either. Returns the lanes of the faces that are apart (separation >= 0)
+// and, in `never`, those that never close.
+[[gnu::target("avx2,avx512f")]] inline int FaceTimes512(const PolygonT<double>& ref, const Lanes8& separations,
+                                                        Vec2T<double> velocity, Lanes8& entry, Lanes8& leave,
+                                                        int& never)
+{
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    const int n = ref.Count();
+    Lanes8 nx;
+    Lanes8 ny;
+    Lanes8::LoadPoints(&ref.InlineBlock()[n + 1].x, nx, ny);
+    const Lanes8 raw = nx * Lanes8::Fill(velocity.x) + ny * Lanes8::Fill(velocity.y);
+    const Lanes8 zero = Lanes8::Fill(0.0);
+    // Moving: a rate within StillRate of 0 is 0.
+    const Lanes8 rate = zero.Blend(Max(raw, -raw).GreaterBits(Lanes8::Fill(StillRate(velocity))), raw);
+    const int apart = separations.GreaterEqualBits(zero);
+    const Lanes8 q = separations / -rate;
+    const int numbers = q.GreaterEqualBits(Lanes8::Fill(-kInf));
+    entry = Lanes8::Fill(-kInf).Blend(apart & numbers, q);
+    leave = Lanes8::Fill(kInf).Blend(~apart & rate.GreaterBits(zero) & numbers & 0xFF, q);
+    never = apart & rate.GreaterEqualBits(zero);
+    return apart;
+}
+
+// The face loops of a sweep of two polygons of at most 8 faces (SweepFaces of A, then of B) on 512-bit vectors:
+// every face of both polygons at once, then one decision, where the face loops decide after each polygon. The same
+// verdict, latest entry and face: each bound only tightens from face to face, so a test that ends after A's faces
+// also ends after both; the latest entry is the largest entry of all, its face the first face that has it (A's
+// faces first), as SweepLanes::Combine finds them. `bInA`, `aInB`: each polygon's frame in the other's.
+[[gnu::target("avx2,avx512f")]] inline SmallSweepVerdict
+SmallSweep512(const PolygonT<double>& a, const PolygonT<double>& b, const TransformT<double>& bInA,
+              const TransformT<double>& aInB, Vec2T<double> velocityInA, Vec2T<double> velocityInB)
+{
+    Lanes8 bx;
+    Lanes8 by;
+    Lanes8 ax;
+    Lanes8 ay;
+    MapVertices512(b, bInA, bx, by);
+    MapVertices512(a, aInB, ax, ay);
+    SmallSweepVerdict out;
+    out.sepA = b.Count() <= 4 ? FaceSeparations512<4>(a, bx, by, 0) : FaceSeparations512<8>(a, bx, by, 0);
+    out.sepB = a.Count() <= 4 ? FaceSeparations512<4>(b, ax, ay, 0) : FaceSeparations512<8>(b, ax, ay, 0);
+    Lanes8 entryA;
+    Lanes8 leaveA;
+    Lanes8 entryB;
+    Lanes8 leaveB;
+    int neverA = 0;
+    int neverB = 0;
+    const int apartA = FaceTimes512(a, out.sepA, velocityInA, entryA, leaveA, neverA);
+    const int apartB = FaceTimes512(b, out.sepB, -velocityInB, entryB, leaveB, neverB);
+    const double first = std::max(entryA.MaxLane(), entryB.MaxLane());
+    const double last = std::min(leaveA.MinLane(), leaveB.MinLane());
+    const int hitsA = entryA.EqualBits(Lanes8::Fill(first)) & ((1 << a.Count()) - 1);
+    const int hitsB = entryB.EqualBits(Lanes8::Fill(first)) & ((1 << b.Count()) - 1);
+    out.state.first = first;
+    out.state.last = last;
+    out.state.firstSide = hitsA == 0 && hitsB != 0 ? 1 : 0;
+    out.state.firstFace = hitsA != 0   ? __builtin_ctz(static_cast<unsigned>(hitsA))
+                          : hitsB != 0 ? __builtin_ctz(static_cast<unsigned>(hitsB))
+                                       : 0;
+    out.state.inside = (apartA | apartB) == 0;
+    out.going = (neverA | neverB) == 0 && !(first > 1.0) && !(first >= last);
+    return out;
+}
+#endif
+
 // The static manifold of two polygons of at most 8 faces that interpenetrate at t = 0, from the separations their
 // face loops kept (KeptSeparations) and the incident polygons mapped for them: as CollidePolygons with the same
 // numbers, so the same manifold to the bit. Every separation is < 0 (the caller knows), so no face separates: the
@@ -1234,8 +1325,67 @@ ManifoldT<S> InterpenetratingManifold(const PolygonT<S>& a, const TransformT<S>&
             clip.incidentEdge};
 }
 
+// The result of a hit (SweepPolygons, step 5), written into `result`: the time of impact, the axis of the latest
+// entry (`state`) as the reference face, the normal and (kContacts) the contact points, with both polygons as the
+// face loops mapped them (`incA`: A in B's frame, `incB`: B in A's) and their velocities in each frame.
+template <bool kContacts, bool kWide, typename S>
+void HitResult(const PolygonT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const PolygonT<S>& b,
+               const TransformT<S>& xfB, Vec2T<S> vB, const IncidentPolygon<S>& incA, const IncidentPolygon<S>& incB,
+               Vec2T<S> velocityInA, Vec2T<S> velocityInB, const SweepState<S>& state, SweepResultT<S>& result)
+{
+    // The incident polygon at the time of impact is its mapping at t = 0 moved by its motion relative to the
+    // reference polygon over [0, first], in the reference frame: no polygon is mapped again.
+    const S first = state.first + S(0); // a touching start enters at 0 or -0: +0
+    const AxisRef firstAxis{AxisKind::FaceNormal, state.firstSide, state.firstFace};
+    const bool flip = firstAxis.shape == 1;
+    // Which polygon holds the reference face follows the geometry: every choice on it is a mask, not a branch.
+    const PolygonT<S>& ref = SelectRef(flip, b, a);
+    result.status = SweepStatus::Hit;
+    result.toi = first;
+    result.axis = firstAxis;
+    if constexpr (!kContacts)
+    {
+        // The same normal as below: translation leaves the reference polygon's rotation as it was.
+        const Vec2T<S> worldNormal = Rotate(Select(flip, xfB.q, xfA.q), ref.Normal(firstAxis.index));
+        result.normal = Select(flip, -worldNormal, worldNormal);
+        return;
+    }
+    const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
+    const TransformT<S>& xfRef0 = SelectRef(flip, xfB, xfA);
+    const Vec2T<S> worldNormal = Rotate(xfRef0.q, ref.Normal(firstAxis.index));
+    // At the time of impact the touching points are at zero distance up to rounding of either sign, which scales
+    // with the coordinates in the reference frame: the incident polygon's offset at t = 0, its motion over the step
+    // (together they bound its offset at any time in the step, and a fast shape is placed at the time of impact
+    // only to within the rounding of its motion), and the face's own size (its largest coordinate extent, within
+    // a factor sqrt(2) of its length and without a square root). None of these waits for the time of impact.
+    const Vec2T<S> motion = Select(flip, -velocityInB, velocityInA);
+    const Vec2T<S> face = ref.Vertices()[firstAxis.index];
+    const Vec2T<S> edge = ref.Edge(firstAxis.index);
+    const S scale = std::max({std::abs(inc.xf.p.x), std::abs(inc.xf.p.y), std::abs(motion.x), std::abs(motion.y),
+                              std::abs(face.x), std::abs(face.y), std::abs(edge.x), std::abs(edge.y)});
+    const S slop = S(64) * std::numeric_limits<S>::epsilon() * scale;
+    const Vec2T<S> shift = first * motion;
+    const Vec2T<S> vRef = Select(flip, vB, vA);
+    result.normal = Select(flip, -worldNormal, worldNormal);
+    if (inc.scan)
+    {
+        result.contactCount = SweptContacts<kWide>(ref, firstAxis.index, inc, shift, slop, xfRef0, vRef,
+                                                   Select(flip, vA, vB), first, result.contacts);
+        return;
+    }
+    const TransformT<S> xfRef = Moved(xfRef0, vRef, first);
+    const ClipResult<S> clip = ClipIncidentEdge<kWide>(ref, firstAxis.index, inc, -1, slop, &shift);
+    // At the time of impact the surfaces touch: the separation is 0, as SweptContacts gives it.
+    result.contacts[0] = {WorldContact(clip, 0, xfRef).point, S(0)};
+    result.contacts[1] = {WorldContact(clip, 1, xfRef).point, S(0)};
+    result.contactCount = clip.contactCount;
+    return;
+}
+
 /// Swept SAT for two translating polygons (Ericson 5.5.2).
-/// Outline:
+/// Outline (steps 1 to 4 run, untraced, for polygons of up to 8 vertices on a processor with AVX-512, with every
+/// face of each polygon in one register and one decision after both polygons: SmallSweep512, the same verdict, time
+/// and face to the bit):
 ///   1. B's motion relative to A is v = vB - vA. On the unit normal n of a face of A, the face's separation (as in
 ///      the static face query) changes linearly: s(t) = s0 + t Dot(n, v); on a face of B, s(t) = s0 - t Dot(n, v).
 ///      These are the face normals of the Minkowski difference, so they are all the axes translation needs.
@@ -1276,6 +1426,38 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
             tracer.Finish(view.exit);
         }
     };
+    // A hit: the time of impact, the axis and normal, and (kContacts) the contact points.
+    const auto hit = [&](const IncidentPolygon<S>& incA, const SweepState<S>& state) {
+        HitResult<kContacts, Tracer::kWide>(a, xfA, vA, b, xfB, vB, incA, incB, velocityInA, velocityInB, state,
+                                            result);
+    };
+#if SATVIZ_WIDE
+    if constexpr (Tracer::kWide512 && std::is_same_v<S, double>)
+    {
+        if (a.Count() <= 8 && b.Count() <= 8)
+        {
+            const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
+            const SmallSweepVerdict verdict = SmallSweep512(a, b, incB.xf, aInB, velocityInA, velocityInB);
+            if (!verdict.going)
+            {
+                return result;
+            }
+            if (verdict.state.inside)
+            {
+                // Collide's second pass skips B's faces anti-parallel to one of A's.
+                const uint64_t skip = AlgorithmChoices::kSkipParallel
+                                          ? AntiParallelFaces(a, b, InvMulRot(aInB.q, RotT<S>{}))
+                                          : uint64_t(0);
+                const Lanes8 sepB = verdict.sepB.Replace(static_cast<int>(skip & 0xFF), -kInfinity<S>);
+                result = Initial(ManifoldFromSeparations512(a, xfA, b, xfB, verdict.sepA, sepB));
+                return result;
+            }
+            const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, std::bool_constant<Tracer::kWide>{});
+            hit(incA, verdict.state);
+            return result;
+        }
+    }
+#endif
     // A lower bound of the latest entry, and what the bounded face loops leave for their second pass.
     S known = S(0);
     WalkedSweep<S> walkA;
@@ -1308,52 +1490,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
         return result;
     }
 
-    // The incident polygon at the time of impact is its mapping at t = 0 moved by its motion relative to the
-    // reference polygon over [0, first], in the reference frame: no polygon is mapped again.
-    const S first = state.first + S(0); // a touching start enters at 0 or -0: +0
-    const AxisRef firstAxis{AxisKind::FaceNormal, state.firstSide, state.firstFace};
-    const bool flip = firstAxis.shape == 1;
-    // Which polygon holds the reference face follows the geometry: every choice on it is a mask, not a branch.
-    const PolygonT<S>& ref = SelectRef(flip, b, a);
-    result.status = SweepStatus::Hit;
-    result.toi = first;
-    result.axis = firstAxis;
-    if constexpr (!kContacts)
-    {
-        // The same normal as below: translation leaves the reference polygon's rotation as it was.
-        const Vec2T<S> worldNormal = Rotate(Select(flip, xfB.q, xfA.q), ref.Normal(firstAxis.index));
-        result.normal = Select(flip, -worldNormal, worldNormal);
-        return result;
-    }
-    const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
-    const TransformT<S>& xfRef0 = SelectRef(flip, xfB, xfA);
-    const Vec2T<S> worldNormal = Rotate(xfRef0.q, ref.Normal(firstAxis.index));
-    // At the time of impact the touching points are at zero distance up to rounding of either sign, which scales
-    // with the coordinates in the reference frame: the incident polygon's offset at t = 0, its motion over the step
-    // (together they bound its offset at any time in the step, and a fast shape is placed at the time of impact
-    // only to within the rounding of its motion), and the face's own size (its largest coordinate extent, within
-    // a factor sqrt(2) of its length and without a square root). None of these waits for the time of impact.
-    const Vec2T<S> motion = Select(flip, -velocityInB, velocityInA);
-    const Vec2T<S> face = ref.Vertices()[firstAxis.index];
-    const Vec2T<S> edge = ref.Edge(firstAxis.index);
-    const S scale = std::max({std::abs(inc.xf.p.x), std::abs(inc.xf.p.y), std::abs(motion.x), std::abs(motion.y),
-                              std::abs(face.x), std::abs(face.y), std::abs(edge.x), std::abs(edge.y)});
-    const S slop = S(64) * std::numeric_limits<S>::epsilon() * scale;
-    const Vec2T<S> shift = first * motion;
-    const Vec2T<S> vRef = Select(flip, vB, vA);
-    result.normal = Select(flip, -worldNormal, worldNormal);
-    if (inc.scan)
-    {
-        result.contactCount = SweptContacts<Tracer::kWide>(ref, firstAxis.index, inc, shift, slop, xfRef0, vRef,
-                                                           Select(flip, vA, vB), first, result.contacts);
-        return result;
-    }
-    const TransformT<S> xfRef = Moved(xfRef0, vRef, first);
-    const ClipResult<S> clip = ClipIncidentEdge<Tracer::kWide>(ref, firstAxis.index, inc, -1, slop, &shift);
-    // At the time of impact the surfaces touch: the separation is 0, as SweptContacts gives it.
-    result.contacts[0] = {WorldContact(clip, 0, xfRef).point, S(0)};
-    result.contacts[1] = {WorldContact(clip, 1, xfRef).point, S(0)};
-    result.contactCount = clip.contactCount;
+    hit(incA, state);
     return result;
 }
 
@@ -1460,6 +1597,16 @@ template <bool kContacts, typename S>
     detail::WideNullSweepTracer tracer;
     return detail::SweepPolygons<kContacts>(a, xfA, vA, b, xfB, vB, tracer);
 }
+
+// The same for polygons of up to 8 vertices, whose face loops also take 512-bit vectors (AVX-512).
+template <bool kContacts>
+[[gnu::target("avx2,avx512f"), gnu::flatten]] SweepResultT<double>
+SweepPolygonsWide512(const PolygonT<double>& a, const TransformT<double>& xfA, Vec2T<double> vA,
+                     const PolygonT<double>& b, const TransformT<double>& xfB, Vec2T<double> vB)
+{
+    detail::Wide512NullSweepTracer tracer;
+    return detail::SweepPolygons<kContacts>(a, xfA, vA, b, xfB, vB, tracer);
+}
 #endif
 
 // Sweep (kContacts) and SweepTime: one body, the contact points of a hit computed or not.
@@ -1488,6 +1635,13 @@ SweepResultT<S> SweepShapes(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<
         if (trace == nullptr)
         {
 #if SATVIZ_WIDE
+            if constexpr (std::is_same_v<S, double>)
+            {
+                if (detail::HasWide512() && a.polygon.Count() <= 8 && b.polygon.Count() <= 8)
+                {
+                    return SweepPolygonsWide512<kContacts>(a.polygon, xfA, vA, b.polygon, xfB, vB);
+                }
+            }
             if (detail::HasWideVectors())
             {
                 return SweepPolygonsWide<kContacts>(a.polygon, xfA, vA, b.polygon, xfB, vB);

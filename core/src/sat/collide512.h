@@ -62,6 +62,38 @@ template <int N>
     return largest;
 }
 
+/// The manifold of two polygons of at most 8 vertices of which no face separates, from the separations of their
+/// faces (FaceSeparations512: B's skipped faces at -infinity): the reference face is the face of largest separation,
+/// A's on a tie; the incident polygon is mapped into its frame and clipped as in CollidePolygons.
+[[gnu::target("avx2,avx512f")]] inline ManifoldT<double>
+ManifoldFromSeparations512(const PolygonT<double>& a, const TransformT<double>& xfA, const PolygonT<double>& b,
+                           const TransformT<double>& xfB, const Lanes8& sepA, const Lanes8& sepB)
+{
+    int faceA = 0;
+    int faceB = 0;
+    const double largestA = LargestSeparation512(sepA, a.Count(), faceA);
+    const double largestB = LargestSeparation512(sepB, b.Count(), faceB);
+    // Reference face: B's only when strictly better, so ties (and skipped duplicates) keep A's face.
+    const bool flip = largestB > largestA;
+    const PolygonT<double>& ref = SelectRef(flip, b, a);
+    const TransformT<double>& xfRef = SelectRef(flip, xfB, xfA);
+    // The incident polygon mapped into the reference frame for the clipping, only now and only that one: the face
+    // queries took the vertices from registers.
+    const IncidentPolygon<double> inc(SelectRef(flip, a, b), xfRef, SelectRef(flip, xfA, xfB), kScanLimit,
+                                      std::true_type{});
+    const int face = Select(flip, faceB, faceA);
+    const ClipResult<double> clip = ClipIncidentEdge<true>(ref, face, inc, -1, 0.0);
+    const Vec2T<double> worldNormal = Rotate(xfRef.q, ref.Normal(face));
+    return {true,
+            -Select(flip, largestB, largestA),
+            0.0,
+            Select(flip, -worldNormal, worldNormal),
+            {WorldContact(clip, 0, xfRef), WorldContact(clip, 1, xfRef)},
+            clip.contactCount,
+            {AxisKind::FaceNormal, Select(flip, 1, 0), face},
+            clip.incidentEdge};
+}
+
 /// Collide of two polygons of at most 8 vertices on AVX-512 (CollidePolygons, step 0). The face queries of A and B
 /// do not wait for each other: both polygons are mapped into the other's frame and every face of both is tested, then
 /// one branch decides between a separating face (A's first, else B's first: the face the textbook loop stops at) and
@@ -101,29 +133,7 @@ SmallPolygonsCollide512(const PolygonT<double>& a, const TransformT<double>& xfA
                 {AxisKind::FaceNormal, Select(byB, 1, 0), face},
                 -1};
     }
-    int faceA = 0;
-    int faceB = 0;
-    const double largestA = LargestSeparation512(sepA, a.Count(), faceA);
-    const double largestB = LargestSeparation512(sepB, b.Count(), faceB);
-    // Reference face: B's only when strictly better, so ties (and skipped duplicates) keep A's face.
-    const bool flip = largestB > largestA;
-    const PolygonT<double>& ref = SelectRef(flip, b, a);
-    const TransformT<double>& xfRef = SelectRef(flip, xfB, xfA);
-    // The incident polygon mapped into the reference frame for the clipping, only now: a separated pair needs no
-    // mapped polygon, and an overlapping one only the incident one.
-    const IncidentPolygon<double> inc(SelectRef(flip, a, b), xfRef, SelectRef(flip, xfA, xfB), kScanLimit,
-                                      std::true_type{});
-    const int face = Select(flip, faceB, faceA);
-    const ClipResult<double> clip = ClipIncidentEdge<true>(ref, face, inc, -1, 0.0);
-    const Vec2T<double> worldNormal = Rotate(xfRef.q, ref.Normal(face));
-    return {true,
-            -Select(flip, largestB, largestA),
-            0.0,
-            Select(flip, -worldNormal, worldNormal),
-            {WorldContact(clip, 0, xfRef), WorldContact(clip, 1, xfRef)},
-            clip.contactCount,
-            {AxisKind::FaceNormal, Select(flip, 1, 0), face},
-            clip.incidentEdge};
+    return ManifoldFromSeparations512(a, xfA, b, xfB, sepA, sepB);
 }
 #endif
 

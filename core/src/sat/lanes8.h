@@ -72,6 +72,29 @@ struct Lanes8
                                _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(1, 0, 3, 2, 5, 4, 7, 6), m));
         return _mm512_cvtsd_f64(m);
     }
+    /// The smallest lane (no lane NaN), folded as MaxLane.
+    [[gnu::target("avx512f")]] double MinLane() const
+    {
+        const __mmask8 all = 0xFF;
+        __m512d m = v;
+        m = _mm512_mask_min_pd(m, all, m,
+                               _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(4, 5, 6, 7, 0, 1, 2, 3), m));
+        m = _mm512_mask_min_pd(m, all, m,
+                               _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(2, 3, 0, 1, 6, 7, 4, 5), m));
+        m = _mm512_mask_min_pd(m, all, m,
+                               _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(1, 0, 3, 2, 5, 4, 7, 6), m));
+        return _mm512_cvtsd_f64(m);
+    }
+    /// The lanes greater than or equal to b's, one bit each.
+    [[gnu::target("avx512f")]] int GreaterEqualBits(const Lanes8& b) const
+    {
+        return static_cast<int>(_mm512_cmp_pd_mask(v, b.v, _CMP_GE_OQ));
+    }
+    /// These lanes, with b's in the lanes whose bit is set in `bits`.
+    [[gnu::target("avx512f")]] Lanes8 Blend(int bits, const Lanes8& b) const
+    {
+        return {_mm512_mask_blend_pd(static_cast<__mmask8>(bits), v, b.v)};
+    }
     /// Lane k (0 to 7).
     [[gnu::target("avx512f")]] double Get(int k) const { return _mm512_cvtsd_f64(Spread(k).v); }
 
@@ -86,6 +109,21 @@ struct Lanes8
     [[gnu::target("avx512f")]] friend Lanes8 operator*(const Lanes8& a, const Lanes8& b)
     {
         return {_mm512_mul_pd(a.v, b.v)};
+    }
+    [[gnu::target("avx512f")]] friend Lanes8 operator/(const Lanes8& a, const Lanes8& b)
+    {
+        return {_mm512_div_pd(a.v, b.v)};
+    }
+    /// The sign flipped, as the unary minus of Lanes (a sign bit, so -0 from 0).
+    [[gnu::target("avx512f")]] friend Lanes8 operator-(const Lanes8& a)
+    {
+        return {_mm512_castsi512_pd(
+            _mm512_xor_si512(_mm512_castpd_si512(a.v), _mm512_set1_epi64(static_cast<long long>(0x8000000000000000ULL))))};
+    }
+    /// Per lane: a > b ? a : b (the second operand when either is NaN), as Max of Lanes.
+    [[gnu::target("avx512f")]] friend Lanes8 Max(const Lanes8& a, const Lanes8& b)
+    {
+        return {_mm512_mask_max_pd(a.v, static_cast<__mmask8>(0xFF), a.v, b.v)};
     }
     /// Per lane: a < b ? a : b (the second operand when either is NaN), as Min of Lanes. (The masked form with
     /// every lane set: GCC 12 warns that _mm512_min_pd's undefined pass-through may be used uninitialized.)
