@@ -1248,15 +1248,8 @@ struct SmallSweepVerdict
 SmallSweep512(const PolygonT<double>& a, const PolygonT<double>& b, const TransformT<double>& bInA,
               const TransformT<double>& aInB, Vec2T<double> velocityInA, Vec2T<double> velocityInB)
 {
-    Lanes8 bx;
-    Lanes8 by;
-    Lanes8 ax;
-    Lanes8 ay;
-    MapVertices512(b, bInA, bx, by);
-    MapVertices512(a, aInB, ax, ay);
     SmallSweepVerdict out;
-    out.sepA = b.Count() <= 4 ? FaceSeparations512<4>(a, bx, by, 0) : FaceSeparations512<8>(a, bx, by, 0);
-    out.sepB = a.Count() <= 4 ? FaceSeparations512<4>(b, ax, ay, 0) : FaceSeparations512<8>(b, ax, ay, 0);
+    PairSeparations512(a, b, MapPair512(a, b, bInA, aInB), 0, out.sepA, out.sepB);
     Lanes8 entryA;
     Lanes8 leaveA;
     Lanes8 entryB;

@@ -50,6 +50,16 @@ template <int N>
     return separation.Replace(hidden, -std::numeric_limits<double>::infinity());
 }
 
+/// The separations of every face of A from B and of every face of B from A (FaceSeparations512), B's `skip`ped faces
+/// at -infinity.
+[[gnu::target("avx512f")]] inline void PairSeparations512(const PolygonT<double>& a, const PolygonT<double>& b,
+                                                          const MappedPair512& m, uint64_t skip, Lanes8& sepA,
+                                                          Lanes8& sepB)
+{
+    sepA = b.Count() <= 4 ? FaceSeparations512<4>(a, m.bx, m.by, 0) : FaceSeparations512<8>(a, m.bx, m.by, 0);
+    sepB = a.Count() <= 4 ? FaceSeparations512<4>(b, m.ax, m.ay, skip) : FaceSeparations512<8>(b, m.ax, m.ay, skip);
+}
+
 /// The largest separation over the n faces of a polygon (FaceSeparations512) and its first face, NaN ignored (no
 /// comparison holds for it; face 0 when no face has a number), as SmallRefFaceQuery finds them.
 [[gnu::target("avx512f")]] inline double LargestSeparation512(const Lanes8& separations, int n, int& face)
@@ -105,16 +115,10 @@ SmallPolygonsCollide512(const PolygonT<double>& a, const TransformT<double>& xfA
 {
     const TransformT<double> bInA = InvMulTransforms(xfA, xfB);
     const TransformT<double> aInB = InvMulTransforms(xfB, xfA);
-    Lanes8 bx;
-    Lanes8 by;
-    Lanes8 ax;
-    Lanes8 ay;
-    MapVertices512(b, bInA, bx, by);
-    MapVertices512(a, aInB, ax, ay);
     const uint64_t skip = skipParallel ? AntiParallelFaces(a, b, InvMulRot(aInB.q, RotT<double>{})) : uint64_t(0);
-    const Lanes8 sepA = b.Count() <= 4 ? FaceSeparations512<4>(a, bx, by, 0) : FaceSeparations512<8>(a, bx, by, 0);
-    const Lanes8 sepB =
-        a.Count() <= 4 ? FaceSeparations512<4>(b, ax, ay, skip) : FaceSeparations512<8>(b, ax, ay, skip);
+    Lanes8 sepA;
+    Lanes8 sepB;
+    PairSeparations512(a, b, MapPair512(a, b, bInA, aInB), skip, sepA, sepB);
     const Lanes8 zero = Lanes8::Fill(0.0);
     const int separatingA = sepA.GreaterBits(zero);
     const int separatingB = sepB.GreaterBits(zero);

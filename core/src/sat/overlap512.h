@@ -32,6 +32,26 @@ namespace satviz::detail
     y = ((s * vx + c * vy) + Lanes8::Fill(xf.p.y)).FillFromFirst(past);
 }
 
+/// Two polygons of at most 8 vertices, each mapped into the other's frame and held in registers (MapVertices512).
+struct MappedPair512
+{
+    Lanes8 bx; ///< B's vertices in A's frame: x
+    Lanes8 by; ///< and y
+    Lanes8 ax; ///< A's vertices in B's frame: x
+    Lanes8 ay; ///< and y
+};
+
+/// B mapped by `bInA` (its frame in A's) and A by `aInB`.
+[[gnu::target("avx512f")]] inline MappedPair512 MapPair512(const PolygonT<double>& a, const PolygonT<double>& b,
+                                                           const TransformT<double>& bInA,
+                                                           const TransformT<double>& aInB)
+{
+    MappedPair512 out;
+    MapVertices512(b, bInA, out.bx, out.by);
+    MapVertices512(a, aInB, out.ax, out.ay);
+    return out;
+}
+
 /// Whether a face of `ref` (at most 8 faces, raw edge normals, all in one register of eight lanes) separates it from
 /// the N vertices of the other polygon, mapped into ref's frame and held in registers (MapVertices512), less the
 /// `skip`ped faces. The same products, sums and minimum per face, in the same order, as SmallFacesSeparate, so the
@@ -68,16 +88,12 @@ template <int N>
 {
     const TransformT<double> bInA = InvMulTransforms(xfA, xfB);
     const TransformT<double> aInB = InvMulTransforms(xfB, xfA);
-    Lanes8 bx;
-    Lanes8 by;
-    Lanes8 ax;
-    Lanes8 ay;
-    MapVertices512(b, bInA, bx, by);
-    MapVertices512(a, aInB, ax, ay);
+    const MappedPair512 m = MapPair512(a, b, bInA, aInB);
     const uint64_t skip = skipParallel ? AntiParallelFaces(a, b, InvMulRot(aInB.q, RotT<double>{})) : uint64_t(0);
-    const bool separatedA = b.Count() <= 4 ? FacesSeparate512<4>(a, bx, by, 0) : FacesSeparate512<8>(a, bx, by, 0);
+    const bool separatedA =
+        b.Count() <= 4 ? FacesSeparate512<4>(a, m.bx, m.by, 0) : FacesSeparate512<8>(a, m.bx, m.by, 0);
     const bool separatedB =
-        a.Count() <= 4 ? FacesSeparate512<4>(b, ax, ay, skip) : FacesSeparate512<8>(b, ax, ay, skip);
+        a.Count() <= 4 ? FacesSeparate512<4>(b, m.ax, m.ay, skip) : FacesSeparate512<8>(b, m.ax, m.ay, skip);
     return !(separatedA | separatedB);
 }
 #endif
