@@ -1282,19 +1282,21 @@ SmallSweep512(const PolygonT<double>& a, const PolygonT<double>& b, const Transf
 template <bool kWide, typename L, typename S>
 ManifoldT<S> InterpenetratingManifold(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b,
                                       const TransformT<S>& xfB, const IncidentPolygon<S>& incA,
-                                      const IncidentPolygon<S>& incB, KeptSeparations<L> keptA,
-                                      KeptSeparations<L> keptB)
+                                      const IncidentPolygon<S>& incB, const KeptSeparations<L>& keptA,
+                                      const KeptSeparations<L>& keptB)
 {
-    const auto largest = [](KeptSeparations<L>& kept, uint64_t skip, int n, int& face) {
+    const auto largest = [](const KeptSeparations<L>& kept, uint64_t skip, int n, int& face) {
+        L block0 = kept.block0;
+        L block1 = kept.block1;
         if (kept.twoBlocks)
         {
-            HideFaces<2>(skip, n, kept.block0, kept.block1);
+            HideFaces<2>(skip, n, block0, block1);
         }
         else
         {
-            HideFaces<1>(skip, n, kept.block0, kept.block1);
+            HideFaces<1>(skip, n, block0, block1);
         }
-        return LargestSeparation(kept.block0, kept.block1, n, face);
+        return LargestSeparation(block0, block1, n, face);
     };
     const uint64_t skip = SecondPassSkips<AlgorithmChoices::kSkipParallel>(b, incA, true);
     int faceA = 0;
