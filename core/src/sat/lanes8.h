@@ -62,27 +62,21 @@ struct Lanes8
     /// lane set: GCC 12 warns that the 256-bit casts and the plain forms leave pass-through lanes undefined).
     [[gnu::target("avx512f")]] double MaxLane() const
     {
-        const __mmask8 all = 0xFF;
         __m512d m = v;
-        m = _mm512_mask_max_pd(m, all, m,
-                               _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(4, 5, 6, 7, 0, 1, 2, 3), m));
-        m = _mm512_mask_max_pd(m, all, m,
-                               _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(2, 3, 0, 1, 6, 7, 4, 5), m));
-        m = _mm512_mask_max_pd(m, all, m,
-                               _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(1, 0, 3, 2, 5, 4, 7, 6), m));
+        for (int fold = 0; fold < 3; ++fold)
+        {
+            m = _mm512_mask_max_pd(m, static_cast<__mmask8>(0xFF), m, Folded(m, fold));
+        }
         return _mm512_cvtsd_f64(m);
     }
     /// The smallest lane (no lane NaN), folded as MaxLane.
     [[gnu::target("avx512f")]] double MinLane() const
     {
-        const __mmask8 all = 0xFF;
         __m512d m = v;
-        m = _mm512_mask_min_pd(m, all, m,
-                               _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(4, 5, 6, 7, 0, 1, 2, 3), m));
-        m = _mm512_mask_min_pd(m, all, m,
-                               _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(2, 3, 0, 1, 6, 7, 4, 5), m));
-        m = _mm512_mask_min_pd(m, all, m,
-                               _mm512_mask_permutexvar_pd(m, all, _mm512_setr_epi64(1, 0, 3, 2, 5, 4, 7, 6), m));
+        for (int fold = 0; fold < 3; ++fold)
+        {
+            m = _mm512_mask_min_pd(m, static_cast<__mmask8>(0xFF), m, Folded(m, fold));
+        }
         return _mm512_cvtsd_f64(m);
     }
     /// The lanes greater than or equal to b's, one bit each.
@@ -97,6 +91,15 @@ struct Lanes8
     }
     /// Lane k (0 to 7).
     [[gnu::target("avx512f")]] double Get(int k) const { return _mm512_cvtsd_f64(Spread(k).v); }
+
+    /// The lanes of m with their partner at fold 0 (four lanes away), 1 (two) or 2 (one), for the reductions.
+    [[gnu::target("avx512f")]] static __m512d Folded(__m512d m, int fold)
+    {
+        const __m512i partner = fold == 0   ? _mm512_setr_epi64(4, 5, 6, 7, 0, 1, 2, 3)
+                                : fold == 1 ? _mm512_setr_epi64(2, 3, 0, 1, 6, 7, 4, 5)
+                                            : _mm512_setr_epi64(1, 0, 3, 2, 5, 4, 7, 6);
+        return _mm512_mask_permutexvar_pd(m, static_cast<__mmask8>(0xFF), partner, m);
+    }
 
     [[gnu::target("avx512f")]] friend Lanes8 operator+(const Lanes8& a, const Lanes8& b)
     {
@@ -117,8 +120,8 @@ struct Lanes8
     /// The sign flipped, as the unary minus of Lanes (a sign bit, so -0 from 0).
     [[gnu::target("avx512f")]] friend Lanes8 operator-(const Lanes8& a)
     {
-        return {_mm512_castsi512_pd(
-            _mm512_xor_si512(_mm512_castpd_si512(a.v), _mm512_set1_epi64(static_cast<long long>(0x8000000000000000ULL))))};
+        return {_mm512_castsi512_pd(_mm512_xor_si512(
+            _mm512_castpd_si512(a.v), _mm512_set1_epi64(static_cast<long long>(0x8000000000000000ULL))))};
     }
     /// Per lane: a > b ? a : b (the second operand when either is NaN), as Max of Lanes.
     [[gnu::target("avx512f")]] friend Lanes8 Max(const Lanes8& a, const Lanes8& b)
