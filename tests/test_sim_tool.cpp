@@ -307,7 +307,7 @@ TEST_CASE("satviz-sim --counts adds what each step did with the pairs", "[sim]")
         keys.push_back(item.key());
     }
     CHECK(keys == std::vector<std::string>{"pairs", "static_pairs", "sleeping_pairs", "bounds_apart", "tested",
-                                           "touching", "swept", "hits", "awake", "sleeping"});
+                                           "touching", "speculative", "swept", "hits", "awake", "sleeping"});
     CHECK(line["counts"]["pairs"] == 3);
     CHECK(line["counts"]["awake"].get<int>() + line["counts"]["sleeping"].get<int>() == 2);
 }

@@ -419,7 +419,7 @@ struct Drifts
     int gainStep = -1;
     double energy0 = 0.0;
     double energy = 0.0;
-    int64_t touching = 0;
+    int64_t pushing = 0; // contacts, summed over the steps, whose normal impulse pushed: collisions
 };
 
 /// Half the width of the free-collision scenes.
@@ -444,7 +444,10 @@ Drifts RunFree(World world)
     for (int step = 0; step < 240; ++step)
     {
         Step(world, kDt);
-        d.touching += world.counts.touching;
+        for (const WorldContact& c : world.contacts)
+        {
+            d.pushing += c.points[0].normalImpulse > 0.0 || (c.pointCount == 2 && c.points[1].normalImpulse > 0.0);
+        }
         double scaleP = 0.0, scaleL = 0.0;
         for (const RigidBody& b : world.bodies)
         {
@@ -491,8 +494,8 @@ TEST_CASE("Free collisions without friction keep linear momentum", "[world][cons
         {
             const Drifts d = RunFree(FreeBodies(seed, lowest, 0.9));
             INFO("scene " << seed << ", restitutions from " << lowest << " to 0.9: momentum drift " << d.momentum
-                          << " of its scale; " << d.touching << " touching pairs over the run");
-            CHECK(d.touching > 100); // the bodies did collide
+                          << " of its scale; " << d.pushing << " pushing contacts over the run");
+            CHECK(d.pushing > 100); // the bodies did collide
             CHECK(d.momentum <= 1e-9);
             CHECK(d.energy < d.energy0);
             // The position correction moves the two bodies of a contact in inverse proportion to their masses, so
@@ -536,7 +539,7 @@ TEST_CASE("The impulses of free collisions keep angular momentum", "[world][cons
             const Drifts d = RunFree(world);
             INFO("scene " << seed << ", restitutions from " << lowest << " to 0.9: angular momentum drift "
                           << d.angularMomentum << " of its scale, largest at step " << d.angularStep);
-            CHECK(d.touching > 100);
+            CHECK(d.pushing > 100);
             CHECK(d.angularMomentum <= 1e-9);
         }
     }
@@ -803,30 +806,38 @@ TEST_CASE("Stepping with the solver's record on and off gives the same bits", "[
 TEST_CASE("The solver's record of a bounce: the restitution impulse is its factor times the compression impulse",
           "[world][trace][restitution]")
 {
-    // Without gravity a lone contact's restitution factor is its restitution, and the bounce leaves the pair
-    // separating at restitution times the approach speed.
-    for (double e : {0.25, 0.5, 0.9})
-    {
-        World world;
-        const Material material = MakeMaterial(e, 0.0, 0.0);
-        AddDynamic(world, DiscShape(0.5), {0.0, 0.0}, 0.0, {1.0, 0.0}, 0.0, material);
-        AddDynamic(world, DiscShape(0.5), {1.01, 0.0}, 0.0, {-1.0, 0.0}, 0.0, material);
-        ContactSolveTrace trace;
-        trace.bodyA = 0;
-        trace.bodyB = 1;
-        world.trace = &trace;
-        for (int i = 0; i < 60 && !trace.found; ++i)
+    // Without gravity a lone touching contact's restitution factor is its restitution; a speculative one, whose
+    // compression only slows the approach to the speed that closes its gap, has the factor that adds the rest: the
+    // bounce leaves the pair separating at restitution times the approach speed either way.
+    for (const double gap : {-0.001, 0.01})
+        for (double e : {0.25, 0.5, 0.9})
         {
-            Step(world, kDt);
+            World world;
+            const Material material = MakeMaterial(e, 0.0, 0.0);
+            AddDynamic(world, DiscShape(0.5), {0.0, 0.0}, 0.0, {1.0, 0.0}, 0.0, material);
+            AddDynamic(world, DiscShape(0.5), {1.0 + gap, 0.0}, 0.0, {-1.0, 0.0}, 0.0, material);
+            ContactSolveTrace trace;
+            trace.bodyA = 0;
+            trace.bodyB = 1;
+            world.trace = &trace;
+            for (int i = 0; i < 60 && !trace.found; ++i)
+            {
+                Step(world, kDt);
+            }
+            REQUIRE(trace.found);
+            REQUIRE(trace.pointCount == 1);
+            INFO("gap " << gap << ", restitution " << e << ": approach " << trace.approachSpeed[0] << ", gap speed "
+                        << trace.gapSpeed[0] << ", factor " << trace.restitutionFactor[0] << ", impulse "
+                        << trace.restitutionImpulse[0]);
+            const double approach = -trace.approachSpeed[0];
+            const double gapSpeed = std::max(gap, 0.0) / kDt;
+            CHECK(trace.gapSpeed[0] == Approx(gapSpeed).epsilon(1e-9));
+            CHECK(trace.restitutionFactor[0] ==
+                  Approx((e * approach + gapSpeed) / (approach - gapSpeed)).epsilon(1e-9));
+            const std::vector<ContactPointSolve> last = LastPasses(trace);
+            CHECK(trace.restitutionImpulse[0] ==
+                  Approx(trace.restitutionFactor[0] * last[0].normalImpulse).epsilon(1e-12));
+            const double separating = Dot(world.bodies[1].velocity - world.bodies[0].velocity, trace.normal);
+            CHECK(separating == Approx(-e * trace.approachSpeed[0]).epsilon(1e-9));
         }
-        REQUIRE(trace.found);
-        REQUIRE(trace.pointCount == 1);
-        INFO("restitution " << e << ": approach " << trace.approachSpeed[0] << ", factor "
-                            << trace.restitutionFactor[0] << ", impulse " << trace.restitutionImpulse[0]);
-        CHECK(trace.restitutionFactor[0] == Approx(e).epsilon(1e-12));
-        const std::vector<ContactPointSolve> last = LastPasses(trace);
-        CHECK(trace.restitutionImpulse[0] == Approx(e * last[0].normalImpulse).epsilon(1e-12));
-        const double separating = Dot(world.bodies[1].velocity - world.bodies[0].velocity, trace.normal);
-        CHECK(separating == Approx(-e * trace.approachSpeed[0]).epsilon(1e-9));
-    }
 }

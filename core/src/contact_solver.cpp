@@ -36,17 +36,20 @@ void PrepareContact(SolverContact& c, const SolverBody& a, const SolverBody& b, 
             const double e = c.material.restitution;
             const double v = approach[i];
             // Only the overlap this step's approach can have made counts: a deeper one was there before the impact
-            // and gravity's energy stored in it is not the impact's to return.
-            const double d = std::min(p.separation < 0.0 ? -p.separation : 0.0, -v * dt);
+            // and gravity's energy stored in it is not the impact's to return. A gap (a speculative contact) counts
+            // as a negative overlap: the fall through it adds to the speed at the surface.
+            const double d = p.separation < 0.0 ? std::min(-p.separation, -v * dt) : -p.separation;
             const double gdt = pull * dt;
             const double u2 = std::max(0.0, v * v - gdt * v - 2.0 * pull * d);
-            p.bounce = 0.5 * (std::sqrt(gdt * gdt + 4.0 * (2.0 * pull * d + e * e * u2)) - gdt);
+            p.bounce = 0.5 * (std::sqrt(gdt * gdt + 4.0 * std::max(0.0, 2.0 * pull * d + e * e * u2)) - gdt);
             if (e == 0.0)
             {
                 p.bounce = 0.0;
             }
-            const double stop = gdt - v;
-            p.restitutionFactor = p.bounce > 0.0 && stop > 0.0 ? p.bounce / stop : 0.0;
+            // The compression stops the point at -gapSpeed (its gap closed); the restitution impulse, a multiple of
+            // the compression impulse, must then bring it to the bounce speed.
+            const double compression = gdt - v - p.gapSpeed;
+            p.restitutionFactor = p.bounce > 0.0 && compression > 0.0 ? (p.bounce + p.gapSpeed) / compression : 0.0;
         }
     }
     c.block = false;
@@ -104,10 +107,26 @@ void ApplyRestitution(std::vector<SolverContact>& contacts, std::vector<SolverBo
     bool any = false;
     for (SolverContact& c : contacts)
     {
+        // At most what the contact alone would need to bring its points from the end of their compression (their
+        // gap closed) to their bounce speeds: a compression impulse raised by other contacts' loads is not the
+        // impact's to return.
+        double alone[2] = {0.0, 0.0};
+        const double u0 = c.points[0].bounce + c.points[0].gapSpeed;
+        const double u1 = c.points[1].bounce + c.points[1].gapSpeed;
+        if (c.block)
+        {
+            alone[0] = c.m11 * u0 + c.m12 * u1;
+            alone[1] = c.m12 * u0 + c.m22 * u1;
+        }
+        else
+        {
+            alone[0] = c.points[0].normalMass * u0;
+            alone[1] = c.points[1].normalMass * u1;
+        }
         for (int i = 0; i < c.count; ++i)
         {
             SolverPoint& p = c.points[i];
-            p.restitutionImpulse = p.restitutionFactor * p.normalImpulse;
+            p.restitutionImpulse = std::min(p.restitutionFactor * p.normalImpulse, std::max(0.0, alone[i]));
             any = any || p.restitutionImpulse > 0.0;
         }
     }
@@ -210,7 +229,7 @@ void ApplyRestitution(std::vector<SolverContact>& contacts, std::vector<SolverBo
             for (int i = 0; i < c.count; ++i)
             {
                 SolverPoint& p = c.points[i];
-                const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), c.normal);
+                const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), c.normal) + p.gapSpeed;
                 const double next = std::max(0.0, p.pushImpulse - p.normalMass * vn);
                 ApplyImpulse(a, b, p.rA, p.rB, (next - p.pushImpulse) * c.normal);
                 p.pushImpulse = next;

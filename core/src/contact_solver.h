@@ -25,7 +25,8 @@ struct SolverPoint
 {
     Vec2 rA{};                       ///< from A's centre of mass to the point
     Vec2 rB{};                       ///< from B's centre of mass to the point
-    double separation = 0.0;         ///< overlap (< 0) at the start of the step
+    double separation = 0.0;         ///< overlap (< 0) or gap (> 0, speculative) at the start of the step
+    double gapSpeed = 0.0;           ///< the approach speed that closes the gap within the step (0: touching)
     double normalMass = 0.0;         ///< effective mass along the normal
     double tangentMass = 0.0;        ///< effective mass along the tangent
     double bounce = 0.0;             ///< separating normal speed the restitution asks for alone (0: none)
@@ -43,6 +44,7 @@ struct SolverContact
     int a = -1;                             ///< first body
     int b = -1;                             ///< second body
     Vec2 normal{};                          ///< unit normal from a to b
+    int normalBody = 0;                     ///< the body whose turning turns the normal: 0 = a, 1 = b
     int count = 0;                          ///< points, 1 or 2
     SolverPoint points[2]{};                ///< the points
     ContactMaterial material{};             ///< restitution and frictions
@@ -82,15 +84,17 @@ inline void ApplyImpulse(SolverBody& a, SolverBody& b, Vec2 rA, Vec2 rB, Vec2 p)
     b.w += b.invInertia * Cross(rB, p);
 }
 
-/// Effective masses, restitution targets and the 2x2 block of a contact whose points have rA, rB and separation
-/// set. `approach[i]` is the relative normal velocity of point i before the step's gravity (< 0: approaching);
+/// Effective masses, restitution targets and the 2x2 block of a contact whose points have rA, rB, separation and
+/// gapSpeed set. `approach[i]` is the relative normal velocity of point i before the step's gravity (< 0: approaching);
 /// `pull` is how fast gravity closes the pair along the normal (units per time unit squared, >= 0 when it pulls the
 /// bodies together) and `dt` the step. Above the threshold the target separating speed is the one that leaves the
 /// pair, one step later, with restitution squared times the energy of the approach, counted at the surface: the
 /// overlap the point reached and the step's gravity are taken into account, so the bounce does not depend on the
 /// phase of the step at which the impact fell. Without gravity it is restitution times the approach speed.
-/// The restitution factor is that speed over the speed the point must lose to stop (its approach and the step's
-/// gravity): the multiple of the compression impulse that gives a lone contact exactly its target.
+/// The restitution factor is the speed the restitution must add (from the end of the compression, -gapSpeed, to
+/// the bounce) over the speed the compression takes away (the approach and the step's gravity, less gapSpeed): the
+/// multiple of the compression impulse that gives a lone contact exactly its target. A gap (a speculative contact)
+/// counts as a negative overlap: the fall through it adds to the speed at the surface.
 void PrepareContact(SolverContact& c, const SolverBody& a, const SolverBody& b, const double approach[2], double pull,
                     double dt, double restitutionThreshold);
 
@@ -102,7 +106,8 @@ void WarmStart(SolverContact& c, SolverBody& a, SolverBody& b);
 ///  1. Friction first, per point: the impulse that stops the slip, with the tangent's effective mass, added to the
 ///     accumulated one. Within staticFriction times the normal impulse it is taken whole (the point sticks);
 ///     beyond, the accumulated impulse is clamped to friction times the normal impulse (it slides).
-///  2. Normal: the impulse that stops the approach (compression), accumulated and clamped to be a push. Two points
+///  2. Normal: the impulse that stops the approach (compression), accumulated and clamped to be a push; a
+///     speculative point (a gap at the start of the step) may approach at the speed that closes its gap. Two points
 ///     are solved together as a 2x2 linear complementarity problem (each point's impulse positive with its speed
 ///     zero, or zero with its speed positive: four cases, the first that holds), so that a symmetric landing stays
 ///     symmetric whatever the order of the points.
@@ -145,7 +150,7 @@ void SolveContactVelocity(SolverContact& c, SolverBody& a, SolverBody& b, int pa
         {
             SolverPoint& p = c.points[i];
             const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), n);
-            const double wanted = p.normalImpulse - p.normalMass * vn;
+            const double wanted = p.normalImpulse - p.normalMass * (vn + p.gapSpeed);
             const double next = wanted > 0.0 ? wanted : 0.0;
             const double applied = next - p.normalImpulse;
             p.normalImpulse = next;
@@ -164,8 +169,8 @@ void SolveContactVelocity(SolverContact& c, SolverBody& a, SolverBody& b, int pa
         const double a1 = p1.normalImpulse;
         const double a2 = p2.normalImpulse;
         // b = vn - K a: the speeds the impulses x must bring to the targets, vn' = K x + b, to be brought to zero.
-        const double b1 = vn1 - (c.k11 * a1 + c.k12 * a2);
-        const double b2 = vn2 - (c.k12 * a1 + c.k22 * a2);
+        const double b1 = (vn1 + p1.gapSpeed) - (c.k11 * a1 + c.k12 * a2);
+        const double b2 = (vn2 + p2.gapSpeed) - (c.k12 * a1 + c.k22 * a2);
         double x1 = -(c.m11 * b1 + c.m12 * b2);
         double x2 = -(c.m12 * b1 + c.m22 * b2);
         if (!(x1 >= 0.0 && x2 >= 0.0))
@@ -217,8 +222,12 @@ inline double Energy(const SolverBody& b)
 /// Outline of restitution after the velocity passes (Poisson's hypothesis: the restitution impulse is a multiple of
 /// the compression impulse; Stronge, "Impact Mechanics", 2000, ch. 2; Mirtich, "Impulse-based Dynamic Simulation
 /// of Rigid Body Systems", 1996, ch. 2):
-///  1. The passes have left each point with the compression impulse that stops its approach.
-///  2. Each bouncing point's restitution impulse is its restitutionFactor times that impulse.
+///  1. The passes have left each point with the compression impulse that stops its approach (a speculative point:
+///     that lets it close its gap and no more).
+///  2. Each bouncing point's restitution impulse is its restitutionFactor times that impulse, at most the impulse
+///     its contact alone would need to reach its bounce speeds (a compression raised by the loads of other contacts
+///     is not the impact's to return: without the bound, a point whose gap nearly closed, whose factor is large,
+///     would fling a light body wedged in a pile).
 ///  3. The contacts are split into groups of bodies they join (static and sleeping bodies join nothing). With one
 ///     restitution e < 1 in a group the total impulse, (1 + e) times the inelastic one, always loses energy; with
 ///     different restitutions it can gain some. So in each group the restitution impulses are scaled by the

@@ -327,6 +327,26 @@ void Stepper::FindContacts()
     {
         xfs[i] = bodies[i].Xf();
     }
+    // How far each awake dynamic body can move within the step (its speed after gravity, and the turn of its
+    // farthest point), at most speculativeReach outer radii: a body that moves farther is a bullet, and the sweep
+    // finds its hits; none for a body turning more than speculativeTurn.
+    std::vector<double> bodyReach(static_cast<size_t>(n), 0.0);
+    if (settings.speculativeContacts)
+    {
+        const double fall = Length(settings.gravity) * dt;
+        for (int i = 0; i < n; ++i)
+        {
+            const RigidBody& body = bodies[i];
+            // A body that turns fast is left to the sweep: a contact found at the start of the step follows a
+            // turn only to first order.
+            if (IsAwakeDynamic(body) && std::fabs(body.angularVelocity) * dt <= settings.speculativeTurn)
+            {
+                const double move =
+                    dt * (Length(body.velocity) + fall + std::fabs(body.angularVelocity) * body.outerRadius);
+                bodyReach[static_cast<size_t>(i)] = std::min(move, settings.speculativeReach * body.outerRadius);
+            }
+        }
+    }
     PairFilter filter{&bodies, settings.skipStaticPairs};
     std::vector<std::pair<int, int>> candidates;
     if (settings.broadphase)
@@ -335,6 +355,10 @@ void Stepper::FindContacts()
         for (int i = 0; i < n; ++i)
         {
             boxes[i] = ComputeAabb(bodies[i].shape, xfs[i]);
+            // A body's box grows by the reach of its speculative contacts, so the pairs within it are found.
+            const double grow = bodyReach[static_cast<size_t>(i)];
+            boxes[i].min = boxes[i].min - Vec2{grow, grow};
+            boxes[i].max = boxes[i].max + Vec2{grow, grow};
         }
         FindPairs(world.broadphase, boxes, candidates, SkipPair, &filter);
         counts.broadphaseComparisons = world.broadphase.comparisons;
@@ -359,6 +383,7 @@ void Stepper::FindContacts()
     std::vector<WorldContact> previous = std::move(world.contacts);
     std::vector<WorldContact>& contacts = world.contacts;
     contacts.clear();
+    int64_t touching = 0, speculative = 0;
     contacts.reserve(previous.size() + 16);
     for (const auto& [i, j] : candidates)
     {
@@ -369,15 +394,21 @@ void Stepper::FindContacts()
             Collide(a.shape, xfs[i], b.shape, xfs[j]);
             continue;
         }
-        const Manifold m = Collide(a.shape, xfs[i], b.shape, xfs[j]);
-        if (!m.overlap || m.contactCount == 0)
+        // The pair's speculative margin: how far the two can close within the step.
+        const double margin = bodyReach[static_cast<size_t>(i)] + bodyReach[static_cast<size_t>(j)];
+        const Manifold m = margin > 0.0 ? CollideWithin(a.shape, xfs[i], b.shape, xfs[j], margin)
+                                        : Collide(a.shape, xfs[i], b.shape, xfs[j]);
+        if (m.contactCount == 0)
         {
             continue;
         }
+        touching += m.overlap;
+        speculative += !m.overlap;
         WorldContact c;
         c.a = i;
         c.b = j;
         c.normal = m.normal;
+        c.normalBody = m.axis.shape == 1 ? 1 : 0;
         c.pointCount = m.contactCount;
         c.material = CombineMaterials(a.material, b.material);
         const WorldContact* old = FindContact(previous, i, j);
@@ -431,7 +462,8 @@ void Stepper::FindContacts()
     // The contacts of pairs skipped because neither body was awake are kept as they were: neither body moved. Both
     // lists are in pair order, so a merge keeps the whole in order.
     const size_t found = contacts.size();
-    counts.touching = static_cast<int64_t>(found);
+    counts.touching = touching;
+    counts.speculative = speculative;
     for (const WorldContact& c : previous)
     {
         if (!awakeAtStart[c.a] && !awakeAtStart[c.b])
@@ -511,6 +543,7 @@ void Stepper::SolveVelocities()
         c.a = wc.a;
         c.b = wc.b;
         c.normal = wc.normal;
+        c.normalBody = wc.normalBody;
         c.count = wc.pointCount;
         c.material = wc.material;
         double approach[2] = {0.0, 0.0};
@@ -520,6 +553,7 @@ void Stepper::SolveVelocities()
             p.rA = wc.points[i].point - centers[wc.a];
             p.rB = wc.points[i].point - centers[wc.b];
             p.separation = wc.points[i].separation;
+            p.gapSpeed = std::max(0.0, p.separation) / dt;
             p.normalImpulse = wc.points[i].normalImpulse;
             p.tangentImpulse = wc.points[i].tangentImpulse;
             approach[i] = Dot(detail::RelativeVelocity(solverBodies[c.a], solverBodies[c.b], p.rA, p.rB), c.normal);
@@ -542,6 +576,7 @@ void Stepper::SolveVelocities()
             for (int i = 0; i < c.count; ++i)
             {
                 trace->approachSpeed[i] = approach[i];
+                trace->gapSpeed[i] = c.points[i].gapSpeed;
                 trace->bounceSpeed[i] = c.points[i].bounce;
                 trace->restitutionFactor[i] = c.points[i].restitutionFactor;
                 trace->normalMass[i] = c.points[i].normalMass;
@@ -639,9 +674,10 @@ void Stepper::Move()
 
 // Stage 5: overlap removed by moving the positions, not the velocities (nonlinear Gauss-Seidel: Catto, Box2D).
 // Each pass measures every point's overlap at the bodies' present positions, from the point's anchors on both bodies
-// and the normal turned with A, and moves the two bodies apart along the normal by correctionFactor times the overlap
-// beyond the slop (at most maxCorrection), weighted by their inverse masses and inertias. Passes see the moves of
-// the passes before them, so a body that sank during this step's move is lifted in the same step.
+// and the normal turned with the body whose face (or vertex) it is, as Box2D measures it from the reference face,
+// and moves the two bodies apart along the normal by correctionFactor times the overlap beyond the slop (at most
+// maxCorrection), weighted by their inverse masses and inertias. Passes see the moves of the passes before them, so
+// a body that sank during this step's move is lifted in the same step. Speculative points (a gap) are left alone.
 void Stepper::CorrectPositions()
 {
     std::vector<RigidBody>& bodies = world.bodies;
@@ -664,7 +700,8 @@ void Stepper::CorrectPositions()
             const SolverBody& sa = solverBodies[a];
             const SolverBody& sb = solverBodies[b];
             const Rot qa0 = xfs[a].q, qb0 = xfs[b].q;
-            const Vec2 n0 = Rotate(q[a], InvRotate(qa0, sc.normal));
+            const int owner = sc.normalBody == 1 ? b : a;
+            const Vec2 n0 = Rotate(q[owner], InvRotate(xfs[owner].q, sc.normal));
             for (int k = 0; k < sc.count; ++k)
             {
                 const detail::SolverPoint& p = sc.points[k];

@@ -67,6 +67,7 @@ Json StateJson(const satviz::World& world, const satviz::Scene& scene, long long
                           {"bounds_apart", c.boundsApart},
                           {"tested", c.tested},
                           {"touching", c.touching},
+                          {"speculative", c.speculative},
                           {"swept", c.swept},
                           {"hits", c.hits},
                           {"awake", c.awakeBodies},

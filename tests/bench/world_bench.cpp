@@ -575,6 +575,11 @@ Quality MeasureSatviz(const Scene& scene, int steps)
         // satviz's surfaces are its shapes as drawn: the depth at the end of the step.
         for (const WorldContact& c : world.contacts)
         {
+            // Speculative contacts of pairs still apart at the start of the step are not touching contacts.
+            if (c.points[0].separation > 0.0 && (c.pointCount < 2 || c.points[1].separation > 0.0))
+            {
+                continue;
+            }
             double deepest = 0.0, gap = 0.0;
             DrawnDepthAndGap(shapes[static_cast<size_t>(c.a)], xfs[static_cast<size_t>(c.a)],
                              shapes[static_cast<size_t>(c.b)], xfs[static_cast<size_t>(c.b)], deepest, gap);

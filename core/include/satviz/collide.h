@@ -74,4 +74,16 @@ template <typename S>
 ManifoldT<S> Collide(const ShapeT<S>& a, const TransformT<S>& xfA, const ShapeT<S>& b, const TransformT<S>& xfB,
                      TraceT<S>* trace = nullptr);
 
+/// Speculative contacts (Catto; Firth): Collide, and for shapes apart by at most `margin` (>= 0) also the contact
+/// points they would have if they touched, each with its separation (> 0: the gap still open), so that a solver
+/// can let the pair close its gap within a step and no more. `overlap`, `depth` and `gap` mean what they mean for
+/// Collide; a pair apart by at most the margin has overlap false and contactCount 1 or 2, and its normal, gap and
+/// axis are those of the reference face (the face of largest separation; for circles, their Voronoi axis), where
+/// Collide stops at the first separating axis. Costs Collide when the shapes overlap or when Collide's separating
+/// axis already holds them farther apart than the margin; otherwise, for two polygons, a face query of every face
+/// of both and a clipping, O(n m) for small polygons. Not traced.
+template <typename S>
+ManifoldT<S> CollideWithin(const ShapeT<S>& a, const TransformT<S>& xfA, const ShapeT<S>& b, const TransformT<S>& xfB,
+                           S margin);
+
 } // namespace satviz

@@ -28,12 +28,15 @@ struct ContactPointSolve
 /// The solver's record of one contact over one step: its setup and every pass.
 struct ContactSolveTrace
 {
-    int bodyA = -1;                        ///< the pair to record (set by the caller), a < b or b < a
-    int bodyB = -1;                        ///< see bodyA
-    bool found = false;                    ///< the pair touched during the step
-    Vec2 normal{};                         ///< unit contact normal from the lower-index body to the other
-    int pointCount = 0;                    ///< contact points
-    double approachSpeed[2]{};             ///< relative normal velocity per point before gravity and the solve
+    int bodyA = -1;            ///< the pair to record (set by the caller), a < b or b < a
+    int bodyB = -1;            ///< see bodyA
+    bool found = false;        ///< the pair had a contact in the step (touching, or speculative)
+    Vec2 normal{};             ///< unit contact normal from the lower-index body to the other
+    int pointCount = 0;        ///< contact points
+    double approachSpeed[2]{}; ///< relative normal velocity per point before gravity and the solve
+    /// Per point: a speculative point's gap (> 0 at the start of the step) over dt, the approach speed the passes
+    /// leave it, so that it closes the gap within the step and no more; 0 for a point already touching.
+    double gapSpeed[2]{};
     double restitution = 0.0;              ///< the contact's combined restitution
     double bounceSpeed[2]{};               ///< separating speed per point the restitution gives a lone contact:
                                            ///< restitution * approach without gravity, or 0 below the threshold

@@ -97,6 +97,20 @@ struct WorldSettings
     double sleepAngularSpeed = 0.035; ///< see sleepLinearSpeed
     double timeToSleep = 0.5;         ///< see sleepLinearSpeed
 
+    /// Speculative contacts (Catto; Firth): pairs not yet touching but within the distance their bodies can close
+    /// in the step (the sum of their reaches: a body's speed after gravity and the turn of its farthest point,
+    /// times dt) get contact points with their gap (CollideWithin), and the solver lets each point close its gap
+    /// within the step and no more. A body landing on a pile then stops at the surface instead of sinking into it
+    /// for a step, and a pile's bodies are solved together rather than hit by hit. Off: only touching pairs get
+    /// contacts.
+    bool speculativeContacts = true;
+    /// Most reach of a body, in its outer radii (2: its diameter). A body that moves farther within a step is a
+    /// bullet: its sweep finds its hits, and a long reach would give it contacts with faces it passes by.
+    double speculativeReach = 2.0;
+    /// Most turn of a body within a step, in radians, for it to have speculative contacts: a contact found at the
+    /// start of the step follows a turn only to first order, so a body that turns faster is left to the sweep,
+    /// which follows it exactly.
+    double speculativeTurn = 0.25;
     bool broadphase = true;      ///< sort and sweep; off: every pair goes to the narrowphase
     bool skipStaticPairs = true; ///< no pair of two static bodies is considered; off: they are tested too
     bool sweepOnlyFast = true;   ///< only fast bodies are swept; off: every moving dynamic body is
@@ -112,10 +126,12 @@ struct StepCounts
     int64_t sleepingPairs = 0; ///< skipped because neither body is awake (asleep or static, at least one asleep)
     int64_t boundsApart = 0;   ///< skipped by the broadphase: their bounding boxes do not overlap
     int64_t tested = 0;        ///< given to the narrowphase (Collide)
-    /// Of the tested, found touching or overlapping (contacts kept from sleeping pairs are not counted).
+    /// Of the tested, found touching or overlapping (contacts kept from sleeping pairs are not counted, nor the
+    /// speculative contacts of pairs still apart).
     int64_t touching = 0;
-    int64_t swept = 0;                 ///< pairs swept for a time of impact (fast bodies)
-    int64_t hits = 0;                  ///< time-ordered hits resolved within the step
+    int64_t speculative = 0; ///< of the tested, found apart but within reach: speculative contacts (WorldSettings)
+    int64_t swept = 0;       ///< pairs swept for a time of impact (fast bodies)
+    int64_t hits = 0;        ///< time-ordered hits resolved within the step
     int64_t broadphaseComparisons = 0; ///< box comparisons the broadphase made
     int awakeBodies = 0;               ///< dynamic bodies awake after the step
     int sleepingBodies = 0;            ///< dynamic bodies asleep after the step
@@ -125,7 +141,7 @@ struct StepCounts
 struct WorldContactPoint
 {
     Vec2 point{};                ///< world position (from Collide)
-    double separation = 0.0;     ///< < 0: overlap
+    double separation = 0.0;     ///< < 0: overlap; > 0: a gap (a speculative contact, see WorldSettings)
     double normalImpulse = 0.0;  ///< accumulated normal impulse of the last step
     double tangentImpulse = 0.0; ///< accumulated friction impulse of the last step
     bool stuck = false;          ///< static friction held this point in the last step
@@ -135,9 +151,12 @@ struct WorldContactPoint
 /// A touching pair of bodies: their manifold and the solver's state for it. Bodies a < b.
 struct WorldContact
 {
-    int a = -1;                    ///< first body
-    int b = -1;                    ///< second body
-    Vec2 normal{};                 ///< unit normal from a to b
+    int a = -1;    ///< first body
+    int b = -1;    ///< second body
+    Vec2 normal{}; ///< unit normal from a to b
+    /// The body whose turning turns the normal: 1 when b holds the reference face (or the vertex of a vertex-to-circle
+    /// axis), else 0 (a holds it, or the normal joins two circles' centres).
+    int normalBody = 0;
     WorldContactPoint points[2]{}; ///< contact points, valid up to pointCount
     int pointCount = 0;            ///< 1 or 2
     ContactMaterial material{};    ///< combined restitution and frictions

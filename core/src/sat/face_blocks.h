@@ -164,8 +164,9 @@ S LargestSeparation(const L& block0, const L& block1, int n, int& face)
 /// The face query of Collide (unit normals) for a ref of at most 8 faces against a scanned inc of N padded vertices,
 /// with the answer of the textbook loop (ScanFaces): the separations of all of ref's faces from one pass over inc's
 /// vertices, as SmallRefSeparations takes them (the same bits), then one branch for all of them. A separating face ends
-/// the query at the first such face; otherwise the largest separation is one reduction across the lanes and its first
-/// face the first lane equal to it, read from the comparison's bits. ref's normals and vertices are loaded four at
+/// the query at the first such face (without the early exit, the query reports the largest separation, as when no
+/// face separates); otherwise the largest separation is one reduction across the lanes and its first face the first
+/// lane equal to it, read from the comparison's bits. ref's normals and vertices are loaded four at
 /// a time, whole: a polygon of at most 8 vertices keeps them inline, so the lanes past its last face read its own
 /// block and are masked out. A skipped face (anti-parallel to one already tested) and a NaN separation take no
 /// part. The recorder replays the faces in order, up to the first separating one, with the same numbers. Against
@@ -207,16 +208,18 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
     FaceQuery<S> query;
     query.face = 0;
     int replayed = n; // faces the recorder shows
-    if (separating != 0)
+    if (separating != 0 && Tracer::kEarlyExit)
     {
         const int i = __builtin_ctz(static_cast<unsigned>(separating));
         query.separated = true;
         query.face = i;
         query.separation = i < 4 ? block0.Get(i) : block1.Get(i - 4);
-        replayed = Tracer::kEarlyExit ? i + 1 : n;
+        replayed = i + 1;
     }
     else
     {
+        // No face separates, or (without the early exit) every face counts: the largest separation.
+        query.separated = separating != 0;
         query.separation = LargestSeparation(block0, block1, n, query.face);
     }
     if constexpr (Tracer::kEnabled)
@@ -306,10 +309,11 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
             return query;
         }
     }
-    if (!query.separated)
+    if (!query.separated || !Tracer::kEarlyExit)
     {
-        // The first face of the largest separation: the smallest face index among the lanes that hold it (none
-        // for NaN input: face 0). A lane past the last face repeats it and comes after it.
+        // The first face of the largest separation (without the early exit, also when a face separates): the
+        // smallest face index among the lanes that hold it (none for NaN input: face 0). A lane past the last face
+        // repeats it and comes after it.
         const S largest = best.MaxLane();
         const S face =
             Select(best == L::Fill(largest), bestBlock + L::Set(S(0), S(1), S(2), S(3)), L::Fill(S(n))).MinLane();

@@ -98,7 +98,8 @@ bool RecordFace(FaceQuery<S>& query, const IncidentPolygon<S>& inc, int side, in
     }
     if (separating)
     {
-        if (!query.separated)
+        // With the early exit the query reports the first separating face; without it (kUnit), the largest.
+        if (!query.separated && (Tracer::kEarlyExit || !kUnit))
         {
             query.separation = separation;
             query.face = i;

@@ -28,7 +28,9 @@ struct ShapeRef
 /// override one to measure what it buys. Queries always use these defaults.
 struct AlgorithmChoices
 {
-    static constexpr bool kEarlyExit = true;    ///< stop at the first separating axis
+    /// Stop at the first separating axis; without it every face is tested and Collide's face queries report the
+    /// largest separation (speculative contacts need it; the benchmark measures what stopping saves).
+    static constexpr bool kEarlyExit = true;
     static constexpr bool kSkipParallel = true; ///< skip faces of B anti-parallel to a face of A
     /// Walked faces whose separation a single point of the other polygon (the witness) bounds too low to matter
     /// are not walked to: large polygons then walk only the faces near the contact.
