@@ -18,8 +18,9 @@ ManifoldT<S> CollideWithin(const ShapeT<S>& a, const TransformT<S>& xfA, const S
     const bool polygonA = a.type == ShapeType::Polygon;
     const bool polygonB = b.type == ShapeType::Polygon;
     // Collide's gap is the separation of the first separating axis it met, at most the largest one: beyond the
-    // margin it already proves the pair apart by more.
-    if (m.gap > margin || (m.overlap && !(polygonA && polygonB)))
+    // margin it already proves the pair apart by more. An overlapping pair with two contacts kept both ends of its
+    // clipped incident edge, and a circle has one contact: nothing is left to add.
+    if (m.gap > margin || (m.overlap && (m.contactCount == 2 || !(polygonA && polygonB))))
     {
         return m;
     }

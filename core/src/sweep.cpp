@@ -1404,7 +1404,6 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
                               const TransformT<S>& xfB, Vec2T<S> vB, Tracer& tracer)
 {
     const Vec2T<S> velocity = vB - vA;
-    const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, std::bool_constant<Tracer::kWide>{});
     const Vec2T<S> velocityInA = InvRotate(xfA.q, velocity);
     const Vec2T<S> velocityInB = InvRotate(xfB.q, velocity);
 
@@ -1413,26 +1412,15 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     // stalled store forwarding as often as the frame's layout made them straddle (Sweep of triangles took 0.95 of
     // the time without the copy).
     SweepResultT<S> result;
-    SweepLanes<Lanes<S, Tracer::kWide && std::is_same_v<S, double>>, S> lanes;
-    SweepState<S> view; // the recorder's view: the latest entry and earliest exit so far, and why the test ended
-    const auto finish = [&]() {
-        if constexpr (Tracer::kEnabled)
-        {
-            tracer.Finish(view.exit);
-        }
-    };
-    // A hit: the time of impact, the axis and normal, and (kContacts) the contact points.
-    const auto hit = [&](const IncidentPolygon<S>& incA, const SweepState<S>& state) {
-        HitResult<kContacts, Tracer::kWide>(a, xfA, vA, b, xfB, vB, incA, incB, velocityInA, velocityInB, state,
-                                            result);
-    };
 #if SATVIZ_WIDE
     if constexpr (Tracer::kWide512 && std::is_same_v<S, double>)
     {
         if (a.Count() <= 8 && b.Count() <= 8)
         {
+            // The verdict maps both polygons into registers; the incident polygons are built only for a hit.
+            const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
             const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
-            const SmallSweepVerdict verdict = SmallSweep512(a, b, incB.xf, aInB, velocityInA, velocityInB);
+            const SmallSweepVerdict verdict = SmallSweep512(a, b, bInA, aInB, velocityInA, velocityInB);
             if (!verdict.going)
             {
                 return result;
@@ -1447,12 +1435,28 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
                 result = Initial(ManifoldFromSeparations512(a, xfA, b, xfB, verdict.sepA, sepB));
                 return result;
             }
+            const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, std::bool_constant<Tracer::kWide>{});
             const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, std::bool_constant<Tracer::kWide>{});
-            hit(incA, verdict.state);
+            HitResult<kContacts, Tracer::kWide>(a, xfA, vA, b, xfB, vB, incA, incB, velocityInA, velocityInB,
+                                                verdict.state, result);
             return result;
         }
     }
 #endif
+    const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, std::bool_constant<Tracer::kWide>{});
+    SweepLanes<Lanes<S, Tracer::kWide && std::is_same_v<S, double>>, S> lanes;
+    SweepState<S> view; // the recorder's view: the latest entry and earliest exit so far, and why the test ended
+    const auto finish = [&]() {
+        if constexpr (Tracer::kEnabled)
+        {
+            tracer.Finish(view.exit);
+        }
+    };
+    // A hit: the time of impact, the axis and normal, and (kContacts) the contact points.
+    const auto hit = [&](const IncidentPolygon<S>& incA, const SweepState<S>& state) {
+        HitResult<kContacts, Tracer::kWide>(a, xfA, vA, b, xfB, vB, incA, incB, velocityInA, velocityInB, state,
+                                            result);
+    };
     // A lower bound of the latest entry, and what the bounded face loops leave for their second pass.
     S known = S(0);
     WalkedSweep<S> walkA;

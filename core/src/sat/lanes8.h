@@ -52,11 +52,8 @@ struct Lanes8
     {
         return static_cast<int>(_mm512_cmp_pd_mask(v, b.v, _CMP_EQ_OQ));
     }
-    /// These lanes, with x in the lanes whose bit is set in `bits`.
-    [[gnu::target("avx512f")]] Lanes8 Replace(int bits, double x) const
-    {
-        return {_mm512_mask_mov_pd(v, static_cast<__mmask8>(bits), _mm512_set1_pd(x))};
-    }
+    /// These lanes, with x in the lanes whose bit is set in `bits` (Blend with x in every lane).
+    [[gnu::target("avx512f")]] Lanes8 Replace(int bits, double x) const { return Blend(bits, Fill(x)); }
     /// The largest lane (no lane NaN: then the order of the comparisons cannot change the answer). Halves, then
     /// quarters, then pairs folded onto each other by permutations within the register (masked forms with every
     /// lane set: GCC 12 warns that the 256-bit casts and the plain forms leave pass-through lanes undefined).
