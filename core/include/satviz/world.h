@@ -192,13 +192,15 @@ std::string ValidateBodyDef(const BodyDef& def);
 
 /// Advances the world by `dt` (> 0) time units. One step, after Catto's sequential impulses (Box2D) with the
 /// hits of fast bodies taken in time order:
-///  1. Bounds: each body's box; the broadphase pairs the overlapping ones (skipping static-static and sleeping
-///     pairs); the narrowphase (Collide) turns the touching pairs into contacts, keeping the impulses of the points
-///     that persist from the last step (warm starting).
+///  1. Bounds: each body's box, grown by its reach (how far it can move in the step); the broadphase pairs the
+///     overlapping ones (skipping static-static and sleeping pairs); the narrowphase (CollideWithin) turns the
+///     touching pairs into contacts, and the pairs still apart but within their reaches into speculative contacts
+///     (points with a gap), keeping the impulses of the points that persist from the last step (warm starting).
 ///  2. Velocities: gravity, then the velocity passes, over the contacts from the highest to the lowest along
 ///     gravity (so the weight of a pile's upper rows reaches the rows below within one pass; without gravity, in
 ///     the order found): at each contact point a normal impulse that stops the
-///     approach (compression), accumulated and clamped to push only; and a friction impulse with its own effective
+///     approach (compression; a speculative point may approach at the speed that closes its gap within the step),
+///     accumulated and clamped to push only; and a friction impulse with its own effective
 ///     mass, held within static friction times the normal impulse while the point sticks, else the dynamic limit
 ///     (Coulomb's cone). Two-point contacts solve their normal impulses together (a 2x2 block), so a flat landing
 ///     does not spin. Then restitution (Poisson's rule): a point that approached faster than the restitution
@@ -207,7 +209,8 @@ std::string ValidateBodyDef(const BodyDef& def);
 ///     bounce impulses are scaled down as far as needed to return no more kinetic energy than the group had; and
 ///     push-only passes stop any approach a bounce made at another point.
 ///  3. Positions: each body moves with its velocity. A fast body (see WorldSettings::sweepFraction) is swept
-///     against the bodies its swept box meets: translation by Sweep, turning by conservative advancement (the
+///     against the bodies its swept box meets that it has no contact with (in practice bullets and fast spinners,
+///     which have no speculative contacts): translation by Sweep, turning by conservative advancement (the
 ///     distance bound of SAT divided by the fastest approach a turning point can make). The earliest hit of the
 ///     world comes first: its two bodies move to that time, the hit is resolved with the same impulses, their
 ///     later hits are found again, and the step goes on, so two hits in one step happen in order and no body
