@@ -1209,6 +1209,7 @@ struct SmallSweepVerdict
     SweepState<double> state;
     Lanes8 sepA;
     Lanes8 sepB;
+    MappedPair512 mapped; // both polygons, each mapped into the other's frame
 };
 
 // The entry and exit times of the faces of `ref` (at most 8, one per lane) whose separations are `separations`
@@ -1249,7 +1250,8 @@ SmallSweep512(const PolygonT<double>& a, const PolygonT<double>& b, const Transf
               const TransformT<double>& aInB, Vec2T<double> velocityInA, Vec2T<double> velocityInB)
 {
     SmallSweepVerdict out;
-    PairSeparations512(a, b, MapPair512(a, b, bInA, aInB), 0, out.sepA, out.sepB);
+    out.mapped = MapPair512(a, b, bInA, aInB);
+    PairSeparations512(a, b, out.mapped, 0, out.sepA, out.sepB);
     Lanes8 entryA;
     Lanes8 leaveA;
     Lanes8 entryB;
@@ -1417,7 +1419,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     {
         if (a.Count() <= 8 && b.Count() <= 8)
         {
-            // The verdict maps both polygons into registers; the incident polygons are built only for a hit.
+            // The verdict maps both polygons into registers; the incident polygons are built from them only for a hit.
             const TransformT<S> bInA = InvMulTransforms(xfA, xfB);
             const TransformT<S> aInB = InvMulTransforms(xfB, xfA);
             const SmallSweepVerdict verdict = SmallSweep512(a, b, bInA, aInB, velocityInA, velocityInB);
@@ -1432,11 +1434,12 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
                                           ? AntiParallelFaces(a, b, InvMulRot(aInB.q, RotT<S>{}))
                                           : uint64_t(0);
                 const Lanes8 sepB = verdict.sepB.Replace(static_cast<int>(skip & 0xFF), -kInfinity<S>);
-                result = Initial(ManifoldFromSeparations512(a, xfA, b, xfB, verdict.sepA, sepB));
+                result =
+                    Initial(ManifoldFromSeparations512(a, xfA, b, xfB, bInA, aInB, verdict.mapped, verdict.sepA, sepB));
                 return result;
             }
-            const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, std::bool_constant<Tracer::kWide>{});
-            const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, std::bool_constant<Tracer::kWide>{});
+            const IncidentPolygon<S> incB = MappedIncidentPolygon(b, bInA, verdict.mapped.bx, verdict.mapped.by);
+            const IncidentPolygon<S> incA = MappedIncidentPolygon(a, aInB, verdict.mapped.ax, verdict.mapped.ay);
             HitResult<kContacts, Tracer::kWide>(a, xfA, vA, b, xfB, vB, incA, incB, velocityInA, velocityInB,
                                                 verdict.state, result);
             return result;

@@ -60,6 +60,22 @@ template <int N>
     sepB = a.Count() <= 4 ? FaceSeparations512<4>(b, m.ax, m.ay, skip) : FaceSeparations512<8>(b, m.ax, m.ay, skip);
 }
 
+/// The incident polygon `p` of at most 8 vertices, which `xfInc` (its frame relative to the reference polygon)
+/// maps, built from its vertices as MapVertices512 mapped them and holds them in `x` and `y` (the same bits as
+/// IncidentPolygon maps them): the face loops mapped them already.
+[[gnu::target("avx512f")]] inline IncidentPolygon<double>
+MappedIncidentPolygon(const PolygonT<double>& p, const TransformT<double>& xfInc, const Lanes8& x, const Lanes8& y)
+{
+    static_assert(IncidentPolygon<double>::kCapacity >= 12, "8 vertices, then vertex 0 in the 4 entries after them");
+    return IncidentPolygon<double>(p, xfInc, [&](double* xs, double* ys) {
+        // Lanes past the last vertex hold vertex 0 already (MapVertices512).
+        x.Store(xs);
+        y.Store(ys);
+        x.StoreFirst4(xs + 8);
+        y.StoreFirst4(ys + 8);
+    });
+}
+
 /// The largest separation over the n faces of a polygon (FaceSeparations512) and its first face, NaN ignored (no
 /// comparison holds for it; face 0 when no face has a number), as SmallRefFaceQuery finds them.
 [[gnu::target("avx512f")]] inline double LargestSeparation512(const Lanes8& separations, int n, int& face)
@@ -77,7 +93,9 @@ template <int N>
 /// A's on a tie; the incident polygon is mapped into its frame and clipped as in CollidePolygons.
 [[gnu::target("avx2,avx512f")]] inline ManifoldT<double>
 ManifoldFromSeparations512(const PolygonT<double>& a, const TransformT<double>& xfA, const PolygonT<double>& b,
-                           const TransformT<double>& xfB, const Lanes8& sepA, const Lanes8& sepB)
+                           const TransformT<double>& xfB, const TransformT<double>& bInA,
+                           const TransformT<double>& aInB, const MappedPair512& m, const Lanes8& sepA,
+                           const Lanes8& sepB)
 {
     int faceA = 0;
     int faceB = 0;
@@ -87,10 +105,10 @@ ManifoldFromSeparations512(const PolygonT<double>& a, const TransformT<double>& 
     const bool flip = largestB > largestA;
     const PolygonT<double>& ref = SelectRef(flip, b, a);
     const TransformT<double>& xfRef = SelectRef(flip, xfB, xfA);
-    // The incident polygon mapped into the reference frame for the clipping, only now and only that one: the face
-    // queries took the vertices from registers.
-    const IncidentPolygon<double> inc(SelectRef(flip, a, b), xfRef, SelectRef(flip, xfA, xfB), kScanLimit,
-                                      std::true_type{});
+    // The incident polygon for the clipping: its vertices as the face queries mapped them, from the registers.
+    const int flipBits = Select(flip, 0xFF, 0);
+    const IncidentPolygon<double> inc = MappedIncidentPolygon(SelectRef(flip, a, b), Select(flip, aInB, bInA),
+                                                              m.bx.Blend(flipBits, m.ax), m.by.Blend(flipBits, m.ay));
     const int face = Select(flip, faceB, faceA);
     const ClipResult<double> clip = ClipIncidentEdge<true>(ref, face, inc, -1, 0.0);
     const Vec2T<double> worldNormal = Rotate(xfRef.q, ref.Normal(face));
@@ -118,7 +136,8 @@ SmallPolygonsCollide512(const PolygonT<double>& a, const TransformT<double>& xfA
     const uint64_t skip = skipParallel ? AntiParallelFaces(a, b, InvMulRot(aInB.q, RotT<double>{})) : uint64_t(0);
     Lanes8 sepA;
     Lanes8 sepB;
-    PairSeparations512(a, b, MapPair512(a, b, bInA, aInB), skip, sepA, sepB);
+    const MappedPair512 m = MapPair512(a, b, bInA, aInB);
+    PairSeparations512(a, b, m, skip, sepA, sepB);
     const Lanes8 zero = Lanes8::Fill(0.0);
     const int separatingA = sepA.GreaterBits(zero);
     const int separatingB = sepB.GreaterBits(zero);
@@ -137,7 +156,7 @@ SmallPolygonsCollide512(const PolygonT<double>& a, const TransformT<double>& xfA
                 {AxisKind::FaceNormal, Select(byB, 1, 0), face},
                 -1};
     }
-    return ManifoldFromSeparations512(a, xfA, b, xfB, sepA, sepB);
+    return ManifoldFromSeparations512(a, xfA, b, xfB, bInA, aInB, m, sepA, sepB);
 }
 #endif
 

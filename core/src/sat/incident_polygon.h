@@ -89,6 +89,16 @@ struct IncidentPolygon
         }
     }
 
+    /// `p`, whose vertices `xfInc` (its frame relative to the reference polygon) has already mapped: `store(x, y)`
+    /// writes them, then vertex 0 again up to entry count + 3, as the constructor above lays them out. For the
+    /// 512-bit face loops, which hold the mapped vertices in registers (collide512.h).
+    template <typename Store>
+    IncidentPolygon(const PolygonT<S>& p, const TransformT<S>& xfInc, Store&& store)
+        : polygon(p), xf(xfInc), scan(true), centroid(TransformPoint(xf, p.Centroid())), padded((p.Count() + 3) & ~3)
+    {
+        store(x, y);
+    }
+
     /// The separation of a reference face from this polygon's vertex `support`, its support point.
     S Separation(Vec2T<S> normal, Vec2T<S> v, int support) const
     {

@@ -86,6 +86,13 @@ struct Lanes8
     {
         return {_mm512_mask_blend_pd(static_cast<__mmask8>(bits), v, b.v)};
     }
+    /// Stores the lanes at p[0] to p[7] (any alignment).
+    [[gnu::target("avx512f")]] void Store(double* p) const { _mm512_storeu_pd(p, v); }
+    /// Stores lane 0 at p[0] to p[3] (any alignment; a masked store of four lanes).
+    [[gnu::target("avx512f")]] void StoreFirst4(double* p) const
+    {
+        _mm512_mask_storeu_pd(p, static_cast<__mmask8>(0x0F), Spread(0).v);
+    }
     /// Lane k (0 to 7).
     [[gnu::target("avx512f")]] double Get(int k) const { return _mm512_cvtsd_f64(Spread(k).v); }
 
