@@ -969,6 +969,111 @@ const char* const kNearQueries[] = {"satviz Overlap",
                                     "box2d b2TimeOfImpact",
                                     "box2d b2TimeOfImpact + b2CollidePolygons at t"};
 
+// The kinds of near-contact pair, in the order of PairCategory, as the breakdown names them.
+const char* const kNearKinds[] = {"overlapping", "touching", "apart"};
+
+// Where the time of Collide and SweepTime goes on near-contact pairs (the breakdown after the near-contact table):
+// each timed on the pairs of one kind alone, beside Box2D's peer, so that the branch on the kind of pair is
+// predicted as well as it can be; and satviz's again on the whole pool, chained: each query waits for the result of
+// the one before (B's position moved by 0 times its depth or time), so that the processor cannot start a query
+// before the one before has finished. As fast chained as not: the processor overlaps nothing of one query with the
+// next even when it could, and a query's time is its latency, the chain of dependent instructions from the
+// transforms to the result. `kinds[i]` is the kind of pair i.
+#ifdef SATVIZ_HAVE_BOX2D
+void TimeBreakdown(const std::vector<SatvizRecord>& satviz, const std::vector<Box2DRecord>& box2d,
+                   const std::vector<int>& kinds, Timing& timing)
+#else
+void TimeBreakdown(const std::vector<SatvizRecord>& satviz, const std::vector<int>& kinds, Timing& timing)
+#endif
+{
+    double sink = 0.0;
+    // Each pass over records in the cache (Touch), as the near-contact table times them.
+    const auto time = [&](const std::string& name, const auto& records, auto&& pass) {
+        Touch(records.data(), records.size());
+        const auto start = std::chrono::steady_clock::now();
+        pass();
+        const auto stop = std::chrono::steady_clock::now();
+        timing.passes[name].push_back(std::chrono::duration<double, std::nano>(stop - start).count() /
+                                      static_cast<double>(std::max<size_t>(1, records.size())));
+    };
+    for (int kind = 0; kind < 3; ++kind)
+    {
+        // The pairs of this kind, in the pool's order, side by side in memory.
+        std::vector<SatvizRecord> chosen;
+#ifdef SATVIZ_HAVE_BOX2D
+        std::vector<Box2DRecord> chosenBox2D;
+#endif
+        for (size_t i = 0; i < kinds.size(); ++i)
+        {
+            if (kinds[i] == kind)
+            {
+                chosen.push_back(satviz[i]);
+#ifdef SATVIZ_HAVE_BOX2D
+                if (!box2d.empty())
+                {
+                    chosenBox2D.push_back(box2d[i]);
+                }
+#endif
+            }
+        }
+        const std::string suffix = std::string(": ") + kNearKinds[kind];
+        time("satviz Collide" + suffix, chosen, [&]() {
+            for (const SatvizRecord& p : chosen)
+            {
+                sink += Collide(p.sa.polygon, p.xfA, p.sb.polygon, p.xfB).depth;
+            }
+        });
+        time("satviz SweepTime" + suffix, chosen, [&]() {
+            for (const SatvizRecord& p : chosen)
+            {
+                sink += SweepTime(p.sa, p.xfA, Vec2{}, p.sb, p.xfB, p.velocity).toi;
+            }
+        });
+#ifdef SATVIZ_HAVE_BOX2D
+        if (!chosenBox2D.empty())
+        {
+            time("box2d b2CollidePolygons" + suffix, chosenBox2D, [&]() {
+                for (const Box2DRecord& p : chosenBox2D)
+                {
+                    b2Manifold manifold;
+                    b2CollidePolygons(&manifold, &p.ba, p.bxfA, &p.bb, p.bxfB);
+                    sink += static_cast<double>(manifold.pointCount);
+                }
+            });
+            time("box2d b2TimeOfImpact" + suffix, chosenBox2D, [&]() {
+                for (const Box2DRecord& p : chosenBox2D)
+                {
+                    b2TOIOutput output;
+                    b2TimeOfImpact(&output, &Box2DTOIInput(p, p.ba, p.bb));
+                    sink += static_cast<double>(output.t);
+                }
+            });
+        }
+#endif
+    }
+    time("satviz Collide, chained", satviz, [&]() {
+        double wait = 0.0;
+        for (const SatvizRecord& p : satviz)
+        {
+            const Transform xfB{p.xfB.p + Vec2{wait, 0.0}, p.xfB.q};
+            const double depth = Collide(p.sa.polygon, p.xfA, p.sb.polygon, xfB).depth;
+            sink += depth;
+            wait = 0.0 * depth;
+        }
+    });
+    time("satviz SweepTime, chained", satviz, [&]() {
+        double wait = 0.0;
+        for (const SatvizRecord& p : satviz)
+        {
+            const Transform xfB{p.xfB.p + Vec2{wait, 0.0}, p.xfB.q};
+            const double toi = SweepTime(p.sa, p.xfA, Vec2{}, p.sb, xfB, p.velocity).toi;
+            sink += toi;
+            wait = 0.0 * toi;
+        }
+    });
+    g_sink = g_sink + sink;
+}
+
 // Near-contact pairs from pools that no pass replays: each round draws a fresh pool of `pairs` pairs per vertex
 // count, and every query makes one pass over it, in an order shuffled per round, so no query meets a pair twice and
 // no branch predictor learns a pool. The sweeps run on every pair (B moving roughly towards A; a third of the pairs
@@ -1029,6 +1134,11 @@ Timing TimeNear(const Settings& s, int n, const std::vector<Query>& queries, Rng
             box2d.swap(box2dShuffled);
         }
 #endif
+        std::vector<int> kinds;
+        for (const uint32_t i : order)
+        {
+            kinds.push_back(static_cast<int>(i % 3));
+        }
         std::shuffle(timed.begin(), timed.end(), shuffler);
         const size_t shift = static_cast<size_t>(round * 4096 / s.nearRounds) & ~size_t(63);
         AtStackShift(shift, [&]() {
@@ -1059,6 +1169,11 @@ Timing TimeNear(const Settings& s, int n, const std::vector<Query>& queries, Rng
                                                  static_cast<double>(std::max<size_t>(1, count)));
             }
         });
+#ifdef SATVIZ_HAVE_BOX2D
+        TimeBreakdown(satviz, box2d, kinds, timing);
+#else
+        TimeBreakdown(satviz, kinds, timing);
+#endif
     }
     return timing;
 }
@@ -1472,6 +1587,58 @@ void PrintMachine(int argc, char** argv)
     std::printf("\n\n");
 }
 
+// The breakdown after the near-contact table (TimeBreakdown): Collide and SweepTime, satviz's and Box2D's, on the
+// pairs of each kind alone and on all of them, then satviz's chained, and its time chained over its time unchained.
+void PrintBreakdown(const Settings& s, const std::map<int, Timing>& timings)
+{
+    std::printf("\nwhere the time goes: ns per query on the pairs of one kind alone (same rounds and pools), and\n"
+                "satviz's chained (each query waits for the result of the one before; as fast as unchained:\n"
+                "the processor overlaps nothing of one query with the next, so a query's time is its latency)\n\n");
+    std::printf("%-46s", "query");
+    for (int n : s.nearCounts)
+    {
+        std::printf(" %7s", ("n=" + std::to_string(n)).c_str());
+    }
+    std::printf("\n");
+    const auto row = [&](const std::string& name, const std::string& label) {
+        std::printf("%-46s", label.c_str());
+        for (int n : s.nearCounts)
+        {
+            const Timing& t = timings.at(n);
+            if (t.Has(name))
+            {
+                std::printf(" %7.1f", t.Ns(name));
+            }
+            else
+            {
+                std::printf(" %7s", "-");
+            }
+        }
+        std::printf("\n");
+    };
+    for (const std::string query : {"Collide", "SweepTime"})
+    {
+        const std::string peer = query == "Collide" ? "box2d b2CollidePolygons" : "box2d b2TimeOfImpact";
+        for (const std::string& who : {"satviz " + query, peer})
+        {
+            for (const char* kind : kNearKinds)
+            {
+                row(who + ": " + kind, who + ": " + kind);
+            }
+            row(who, who + ": all (as above)");
+        }
+        row("satviz " + query + ", chained", "satviz " + query + ", chained");
+    }
+    std::printf("%-46s", "chained / unchained: Collide, SweepTime");
+    for (int n : s.nearCounts)
+    {
+        const Timing& t = timings.at(n);
+        std::printf(" %3.2f,%3.2f", t.Ratio("satviz Collide, chained", "satviz Collide"),
+                    t.Ratio("satviz SweepTime, chained", "satviz SweepTime"));
+    }
+    std::printf("\n");
+}
+
 // The near-contact table: ns per query, then satviz's ratios to Box2D and to the textbook loop with the goals they
 // are held to, at every vertex count of the run. Returns whether every goal was met.
 bool PrintNear(const Settings& s, const std::map<int, Timing>& timings)
@@ -1541,6 +1708,7 @@ bool PrintNear(const Settings& s, const std::map<int, Timing>& timings)
     goal("Overlap / textbook Overlap", "satviz Overlap", "textbook Overlap", 1.0);
     goal("Collide / textbook MTV", "satviz Collide", "textbook MTV", 1.0);
     goal("Sweep / textbook TOI", "satviz Sweep", "textbook TOI", 1.0);
+    PrintBreakdown(s, timings);
     return met;
 }
 
