@@ -284,6 +284,15 @@ TEST_CASE("SweepTime answers as Sweep, bit for bit, without contact points", "[s
             REQUIRE(sweep.contactCount > 0);
             REQUIRE(time.contactCount == 0);
         }
+        if (sweep.status == SweepStatus::Overlapping)
+        {
+            // The static manifold's depth and normal, without its contact points.
+            REQUIRE(std::memcmp(&time.initial.depth, &sweep.initial.depth, sizeof time.initial.depth) == 0);
+            REQUIRE(std::memcmp(&time.initial.normal, &sweep.initial.normal, sizeof time.initial.normal) == 0);
+            REQUIRE(sweep.initial.contactCount > 0);
+            REQUIRE(time.initial.contactCount == 0);
+            REQUIRE(time.initial.incidentEdge == -1);
+        }
         if (traced)
         {
             REQUIRE(timeOnly.exit == full.exit);
@@ -308,12 +317,13 @@ TEST_CASE("SweepTime answers as Sweep, bit for bit, without contact points", "[s
     CHECK(hits > 10000);
 }
 
-TEST_CASE("A start where the polygons interpenetrate reports Collide's manifold, bit for bit", "[sweep][properties]")
+TEST_CASE("An interpenetrating start reports Collide's manifold, bit for bit, SweepTime without contacts",
+          "[sweep][properties]")
 {
     // The sweep builds the static manifold from the separations its own face loops computed; Collide computes them
-    // again. Random overlapping contact pairs of every scanned size and a few walked ones, and exact pairs: boxes
-    // turned by multiples of 90 degrees (faces anti-parallel, which Collide's second pass skips) and the mirrored
-    // right triangles whose diagonals tie exactly.
+    // again. SweepTime's carries no contact points. Random overlapping contact pairs of every scanned size and a few
+    // walked ones, and exact pairs: boxes turned by multiples of 90 degrees (faces anti-parallel, which Collide's
+    // second pass skips) and the mirrored right triangles whose diagonals tie exactly.
     Rng rng(20261126);
     const auto check = [](const RandomPair& pair, Vec2 v) {
         const Manifold m = Collide(pair.a, pair.xfA, pair.b, pair.xfB);
@@ -321,6 +331,11 @@ TEST_CASE("A start where the polygons interpenetrate reports Collide's manifold,
         {
             return false;
         }
+        Manifold withoutContacts = m;
+        withoutContacts.contacts[0] = {};
+        withoutContacts.contacts[1] = {};
+        withoutContacts.contactCount = 0;
+        withoutContacts.incidentEdge = -1;
         SweepTrace trace;
         for (const bool traced : {false, true})
         {
@@ -328,10 +343,11 @@ TEST_CASE("A start where the polygons interpenetrate reports Collide's manifold,
             const SweepResult sweep = Sweep(pair.a, pair.xfA, Vec2{}, pair.b, pair.xfB, v, traced ? &trace : nullptr);
             const SweepResult time =
                 SweepTime(pair.a, pair.xfA, Vec2{}, pair.b, pair.xfB, v, traced ? &trace : nullptr);
+            REQUIRE(SameBits(sweep.initial, m));
+            REQUIRE(SameBits(time.initial, withoutContacts));
             for (const SweepResult& r : {sweep, time})
             {
                 REQUIRE(r.status == SweepStatus::Overlapping);
-                REQUIRE(SameBits(r.initial, m));
                 REQUIRE(SameBits(r.normal, m.normal));
                 REQUIRE(r.axis.shape == m.axis.shape);
                 REQUIRE(r.axis.index == m.axis.index);

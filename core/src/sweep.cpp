@@ -253,8 +253,9 @@ TransformT<S> Moved(const TransformT<S>& xf, Vec2T<S> velocity, S t)
     return {xf.p + t * velocity, xf.q};
 }
 
-// The static verdict when nothing moves, or the shapes interpenetrate at t = 0.
-template <typename S>
+// The static verdict when nothing moves, or the shapes interpenetrate at t = 0. Without kContacts (SweepTime) the
+// static manifold carries no contact points and no incident edge.
+template <bool kContacts, typename S>
 SweepResultT<S> Initial(const ManifoldT<S>& manifold)
 {
     SweepResultT<S> result;
@@ -264,6 +265,13 @@ SweepResultT<S> Initial(const ManifoldT<S>& manifold)
         result.normal = manifold.normal;
         result.axis = manifold.axis;
         result.initial = manifold;
+        if constexpr (!kContacts)
+        {
+            result.initial.contacts[0] = {};
+            result.initial.contacts[1] = {};
+            result.initial.contactCount = 0;
+            result.initial.incidentEdge = -1;
+        }
     }
     return result;
 }
@@ -1280,8 +1288,9 @@ SmallSweep512(const PolygonT<double>& a, const PolygonT<double>& b, const Transf
 // face loops kept (KeptSeparations) and the incident polygons mapped for them: as CollidePolygons with the same
 // numbers, so the same manifold to the bit. Every separation is < 0 (the caller knows), so no face separates: the
 // reference face is the face of largest separation, A's on a tie, B's faces anti-parallel to one of A's skipped as
-// the second pass of Collide's face query skips them; its contacts are clipped as Collide clips them.
-template <bool kWide, typename L, typename S>
+// the second pass of Collide's face query skips them; its contacts are clipped as Collide clips them (kContacts; else
+// the depth, normal and reference face alone).
+template <bool kWide, bool kContacts, typename L, typename S>
 ManifoldT<S> InterpenetratingManifold(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b,
                                       const TransformT<S>& xfB, const IncidentPolygon<S>& incA,
                                       const IncidentPolygon<S>& incB, const KeptSeparations<L>& keptA,
@@ -1310,8 +1319,19 @@ ManifoldT<S> InterpenetratingManifold(const PolygonT<S>& a, const TransformT<S>&
     const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
     const TransformT<S>& xfRef = SelectRef(flip, xfB, xfA);
     const int face = Select(flip, faceB, faceA);
-    const ClipResult<S> clip = ClipIncidentEdge<kWide>(ref, face, inc, -1, S(0));
     const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(face));
+    if constexpr (!kContacts)
+    {
+        return {true,
+                -Select(flip, largestB, largestA),
+                S(0),
+                Select(flip, -worldNormal, worldNormal),
+                {},
+                0,
+                {AxisKind::FaceNormal, Select(flip, 1, 0), face},
+                -1};
+    }
+    const ClipResult<S> clip = ClipIncidentEdge<kWide>(ref, face, inc, -1, S(0));
     return {true,
             -Select(flip, largestB, largestA),
             S(0),
@@ -1434,8 +1454,8 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
                                           ? AntiParallelFaces(a, b, InvMulRot(aInB.q, RotT<S>{}))
                                           : uint64_t(0);
                 const Lanes8 sepB = verdict.sepB.Replace(static_cast<int>(skip & 0xFF), -kInfinity<S>);
-                result =
-                    Initial(ManifoldFromSeparations512(a, xfA, b, xfB, bInA, aInB, verdict.mapped, verdict.sepA, sepB));
+                result = Initial<kContacts>(ManifoldFromSeparations512<kContacts>(a, xfA, b, xfB, bInA, aInB,
+                                                                                  verdict.mapped, verdict.sepA, sepB));
                 return result;
             }
             const IncidentPolygon<S> incB = MappedIncidentPolygon(b, bInA, verdict.mapped.bx, verdict.mapped.by);
@@ -1486,9 +1506,9 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     lanes.Combine(state);
     if (state.inside)
     {
-        result = Initial(keptA.kept && keptB.kept
-                             ? InterpenetratingManifold<Tracer::kWide>(a, xfA, b, xfB, incA, incB, keptA, keptB)
-                             : Collide(a, xfA, b, xfB));
+        result = Initial<kContacts>(keptA.kept && keptB.kept ? InterpenetratingManifold<Tracer::kWide, kContacts>(
+                                                                   a, xfA, b, xfB, incA, incB, keptA, keptB)
+                                                             : Collide(a, xfA, b, xfB));
         return result;
     }
 
@@ -1629,7 +1649,7 @@ SweepResultT<S> SweepShapes(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<
         {
             trace->exit = SweepExit::NotMoving;
         }
-        return Initial(Collide(a, xfA, b, xfB));
+        return Initial<kContacts>(Collide(a, xfA, b, xfB));
     }
 
     if (a.type == ShapeType::Polygon && b.type == ShapeType::Polygon)
@@ -1664,7 +1684,7 @@ SweepResultT<S> SweepShapes(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<
         {
             trace->exit = SweepExit::AllAxesOverlap;
         }
-        return Initial(initial);
+        return Initial<kContacts>(initial);
     }
     const bool circleA = a.type == ShapeType::Circle;
     const CircleT<S>& circle = circleA ? a.circle : b.circle;

@@ -100,9 +100,11 @@ struct SweepResultT
     /// Hit: the contact points at the time of impact (world, shapes moved; separation 0): where the incident
     /// polygon touches the reference face, a vertex or the part of an edge along the face over the face's extent.
     ContactPointT<S> contacts[2]{};
-    int contactCount = 0;   ///< number of contact points
-    AxisRef axis{};         ///< the deciding axis: for a hit, the axis with the latest entry
-    ManifoldT<S> initial{}; ///< Overlapping: the static manifold at t = 0 (depth and MTV)
+    int contactCount = 0; ///< number of contact points
+    AxisRef axis{};       ///< the deciding axis: for a hit, the axis with the latest entry
+    /// Overlapping: the static manifold at t = 0 (depth and MTV; from Sweep also its contact points, from SweepTime
+    /// none: contactCount 0 and incidentEdge -1)
+    ManifoldT<S> initial{};
 };
 
 /// Double-precision sweep result.
@@ -132,8 +134,9 @@ SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
 /// Sweep without the contact points: the same status, time of impact, normal and axis, bit for bit, and a hit
 /// with no contacts (contactCount 0). For callers that need when and along which normal, not where: continuous
 /// collision that runs Collide at the time of impact anyway, and MoveAndSlide. Skips the contact points at the
-/// time of impact, about a quarter of a polygon sweep of 8-gons. Shapes overlapping at t = 0 still carry the
-/// static manifold.
+/// time of impact, about a quarter of a polygon sweep of 8-gons. Shapes overlapping at t = 0 carry the static
+/// manifold's depth, normal and axis, the same bits as Sweep's, but not its contact points (Sweep has them), which
+/// saves clipping the incident edge.
 /// With a non-null `trace`, the same trace as Sweep's.
 template <typename S>
 SweepResultT<S> SweepTime(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const ShapeT<S>& b,

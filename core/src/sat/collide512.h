@@ -90,8 +90,10 @@ MappedIncidentPolygon(const PolygonT<double>& p, const TransformT<double>& xfInc
 
 /// The manifold of two polygons of at most 8 vertices of which no face separates, from the separations of their
 /// faces (FaceSeparations512: B's skipped faces at -infinity): the reference face is the face of largest separation,
-/// A's on a tie; the incident polygon is mapped into its frame and clipped as in CollidePolygons.
-[[gnu::target("avx2,avx512f")]] inline ManifoldT<double>
+/// A's on a tie; the incident polygon, as the face loops mapped it (`m`), is clipped as in CollidePolygons.
+/// Without kContacts, the depth, normal and reference face alone: no contact points, no incident edge.
+template <bool kContacts = true>
+[[gnu::target("avx2,avx512f")]] ManifoldT<double>
 ManifoldFromSeparations512(const PolygonT<double>& a, const TransformT<double>& xfA, const PolygonT<double>& b,
                            const TransformT<double>& xfB, const TransformT<double>& bInA,
                            const TransformT<double>& aInB, const MappedPair512& m, const Lanes8& sepA,
@@ -105,11 +107,23 @@ ManifoldFromSeparations512(const PolygonT<double>& a, const TransformT<double>& 
     const bool flip = largestB > largestA;
     const PolygonT<double>& ref = SelectRef(flip, b, a);
     const TransformT<double>& xfRef = SelectRef(flip, xfB, xfA);
+    const int face = Select(flip, faceB, faceA);
+    if constexpr (!kContacts)
+    {
+        const Vec2T<double> worldNormal = Rotate(xfRef.q, ref.Normal(face));
+        return {true,
+                -Select(flip, largestB, largestA),
+                0.0,
+                Select(flip, -worldNormal, worldNormal),
+                {},
+                0,
+                {AxisKind::FaceNormal, Select(flip, 1, 0), face},
+                -1};
+    }
     // The incident polygon for the clipping: its vertices as the face queries mapped them, from the registers.
     const int flipBits = Select(flip, 0xFF, 0);
     const IncidentPolygon<double> inc = MappedIncidentPolygon(SelectRef(flip, a, b), Select(flip, aInB, bInA),
                                                               m.bx.Blend(flipBits, m.ax), m.by.Blend(flipBits, m.ay));
-    const int face = Select(flip, faceB, faceA);
     const ClipResult<double> clip = ClipIncidentEdge<true>(ref, face, inc, -1, 0.0);
     const Vec2T<double> worldNormal = Rotate(xfRef.q, ref.Normal(face));
     return {true,
