@@ -253,12 +253,11 @@ TransformT<S> Moved(const TransformT<S>& xf, Vec2T<S> velocity, S t)
     return {xf.p + t * velocity, xf.q};
 }
 
-// The static verdict when nothing moves, or the shapes interpenetrate at t = 0. Without kContacts (SweepTime) the
-// static manifold carries no contact points and no incident edge.
+// The static verdict when nothing moves, or the shapes interpenetrate at t = 0, written into a fresh `result`.
+// Without kContacts (SweepTime) the static manifold carries no contact points and no incident edge.
 template <bool kContacts, typename S>
-SweepResultT<S> Initial(const ManifoldT<S>& manifold)
+void SetInitial(const ManifoldT<S>& manifold, SweepResultT<S>& result)
 {
-    SweepResultT<S> result;
     if (manifold.overlap && manifold.depth > S(0))
     {
         result.status = SweepStatus::Overlapping;
@@ -273,6 +272,14 @@ SweepResultT<S> Initial(const ManifoldT<S>& manifold)
             result.initial.incidentEdge = -1;
         }
     }
+}
+
+// SetInitial into a result of its own.
+template <bool kContacts, typename S>
+SweepResultT<S> Initial(const ManifoldT<S>& manifold)
+{
+    SweepResultT<S> result;
+    SetInitial<kContacts>(manifold, result);
     return result;
 }
 
@@ -1454,8 +1461,9 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
                                           ? AntiParallelFaces(a, b, InvMulRot(aInB.q, RotT<S>{}))
                                           : uint64_t(0);
                 const Lanes8 sepB = verdict.sepB.Replace(static_cast<int>(skip & 0xFF), -kInfinity<S>);
-                result = Initial<kContacts>(ManifoldFromSeparations512<kContacts>(a, xfA, b, xfB, bInA, aInB,
-                                                                                  verdict.mapped, verdict.sepA, sepB));
+                SetInitial<kContacts>(ManifoldFromSeparations512<kContacts>(a, xfA, b, xfB, bInA, aInB, verdict.mapped,
+                                                                            verdict.sepA, sepB),
+                                      result);
                 return result;
             }
             const IncidentPolygon<S> incB = MappedIncidentPolygon(b, bInA, verdict.mapped.bx, verdict.mapped.by);
@@ -1506,9 +1514,10 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
     lanes.Combine(state);
     if (state.inside)
     {
-        result = Initial<kContacts>(keptA.kept && keptB.kept ? InterpenetratingManifold<Tracer::kWide, kContacts>(
-                                                                   a, xfA, b, xfB, incA, incB, keptA, keptB)
-                                                             : Collide(a, xfA, b, xfB));
+        SetInitial<kContacts>(keptA.kept && keptB.kept ? InterpenetratingManifold<Tracer::kWide, kContacts>(
+                                                             a, xfA, b, xfB, incA, incB, keptA, keptB)
+                                                       : Collide(a, xfA, b, xfB),
+                              result);
         return result;
     }
 
