@@ -75,10 +75,11 @@ set xrange [2.5:8.5]
 set xtics 1
 set xlabel "vertices per polygon"
 set ylabel "ns per query"
-set key top left font ",9"
+set key bottom left font ",9"
 set grid
 set title "Overlap and contact queries"
 plot $nearStatic
+set key bottom right
 set title "Sweeps (a third of the pairs start overlapped)"
 plot $nearMoving
 unset multiplot
