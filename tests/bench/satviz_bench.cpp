@@ -1587,6 +1587,37 @@ void PrintMachine(int argc, char** argv)
     std::printf("\n\n");
 }
 
+// The head of a near-contact table: "query", then a column per vertex count.
+void PrintNearHeader(const Settings& s)
+{
+    std::printf("%-46s", "query");
+    for (int n : s.nearCounts)
+    {
+        std::printf(" %7s", ("n=" + std::to_string(n)).c_str());
+    }
+    std::printf("\n");
+}
+
+// A row of a near-contact table: `label`, then the ns per query of `name` at each vertex count ("-" where not timed).
+void PrintNearRow(const Settings& s, const std::map<int, Timing>& timings, const std::string& name,
+                  const std::string& label)
+{
+    std::printf("%-46s", label.c_str());
+    for (int n : s.nearCounts)
+    {
+        const Timing& t = timings.at(n);
+        if (t.Has(name))
+        {
+            std::printf(" %7.1f", t.Ns(name));
+        }
+        else
+        {
+            std::printf(" %7s", "-");
+        }
+    }
+    std::printf("\n");
+}
+
 // The breakdown after the near-contact table (TimeBreakdown): Collide and SweepTime, satviz's and Box2D's, on the
 // pairs of each kind alone and on all of them, then satviz's chained, and its time chained over its time unchained.
 void PrintBreakdown(const Settings& s, const std::map<int, Timing>& timings)
@@ -1594,28 +1625,8 @@ void PrintBreakdown(const Settings& s, const std::map<int, Timing>& timings)
     std::printf("\nwhere the time goes: ns per query on the pairs of one kind alone (same rounds and pools), and\n"
                 "satviz's chained (each query waits for the result of the one before; as fast as unchained:\n"
                 "the processor overlaps nothing of one query with the next, so a query's time is its latency)\n\n");
-    std::printf("%-46s", "query");
-    for (int n : s.nearCounts)
-    {
-        std::printf(" %7s", ("n=" + std::to_string(n)).c_str());
-    }
-    std::printf("\n");
-    const auto row = [&](const std::string& name, const std::string& label) {
-        std::printf("%-46s", label.c_str());
-        for (int n : s.nearCounts)
-        {
-            const Timing& t = timings.at(n);
-            if (t.Has(name))
-            {
-                std::printf(" %7.1f", t.Ns(name));
-            }
-            else
-            {
-                std::printf(" %7s", "-");
-            }
-        }
-        std::printf("\n");
-    };
+    PrintNearHeader(s);
+    const auto row = [&](const std::string& name, const std::string& label) { PrintNearRow(s, timings, name, label); };
     for (const std::string query : {"Collide", "SweepTime"})
     {
         const std::string peer = query == "Collide" ? "box2d b2CollidePolygons" : "box2d b2TimeOfImpact";
@@ -1649,28 +1660,10 @@ bool PrintNear(const Settings& s, const std::map<int, Timing>& timings)
                 "B moving roughly towards A; ratios: median over the rounds of the ratio of two passes\n\n",
                 s.placement == "direction" ? "along a random direction" : "along A's normal (as above)", s.nearRounds,
                 s.nearPairs);
-    std::printf("%-46s", "query");
-    for (int n : s.nearCounts)
-    {
-        std::printf(" %7s", ("n=" + std::to_string(n)).c_str());
-    }
-    std::printf("\n");
+    PrintNearHeader(s);
     for (const char* name : kNearQueries)
     {
-        std::printf("%-46s", name);
-        for (int n : s.nearCounts)
-        {
-            const Timing& t = timings.at(n);
-            if (t.Has(name))
-            {
-                std::printf(" %7.1f", t.Ns(name));
-            }
-            else
-            {
-                std::printf(" %7s", "-");
-            }
-        }
-        std::printf("\n");
+        PrintNearRow(s, timings, name, name);
     }
     bool met = true;
     std::printf("\n%-40s %6s", "ratio (<1: faster)", "goal");
