@@ -1326,27 +1326,13 @@ ManifoldT<S> InterpenetratingManifold(const PolygonT<S>& a, const TransformT<S>&
     const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
     const TransformT<S>& xfRef = SelectRef(flip, xfB, xfA);
     const int face = Select(flip, faceB, faceA);
-    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(face));
+    const S separation = Select(flip, largestB, largestA);
     if constexpr (!kContacts)
     {
-        return {true,
-                -Select(flip, largestB, largestA),
-                S(0),
-                Select(flip, -worldNormal, worldNormal),
-                {},
-                0,
-                {AxisKind::FaceNormal, Select(flip, 1, 0), face},
-                -1};
+        return ReferenceFaceManifold(ref, xfRef, face, flip, separation);
     }
     const ClipResult<S> clip = ClipIncidentEdge<kWide>(ref, face, inc, -1, S(0));
-    return {true,
-            -Select(flip, largestB, largestA),
-            S(0),
-            Select(flip, -worldNormal, worldNormal),
-            {WorldContact(clip, 0, xfRef), WorldContact(clip, 1, xfRef)},
-            clip.contactCount,
-            {AxisKind::FaceNormal, Select(flip, 1, 0), face},
-            clip.incidentEdge};
+    return ReferenceFaceManifold(ref, xfRef, face, flip, separation, clip);
 }
 
 // The result of a hit (SweepPolygons, step 5), written into `result`: the time of impact, the axis of the latest

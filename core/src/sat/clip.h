@@ -302,6 +302,37 @@ ContactPointT<S> WorldContact(const ClipResult<S>& clip, int k, const TransformT
             Select(real, clip.contacts[k].separation, S(0))};
 }
 
+/// The manifold of two overlapping polygons from their reference face, face `face` of `ref` (B's when `flip`) with
+/// the separation `separation` (<= 0): the depth and the MTV's direction along the face's normal, from A to B; no
+/// contact points and no incident edge.
+template <typename S>
+ManifoldT<S> ReferenceFaceManifold(const PolygonT<S>& ref, const TransformT<S>& xfRef, int face, bool flip,
+                                   S separation)
+{
+    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(face));
+    return {true,
+            -separation,
+            S(0),
+            Select(flip, -worldNormal, worldNormal),
+            {},
+            0,
+            {AxisKind::FaceNormal, Select(flip, 1, 0), face},
+            -1};
+}
+
+/// The same with the contacts of `clip` (reference frame) in world space and its incident edge.
+template <typename S>
+ManifoldT<S> ReferenceFaceManifold(const PolygonT<S>& ref, const TransformT<S>& xfRef, int face, bool flip,
+                                   S separation, const ClipResult<S>& clip)
+{
+    ManifoldT<S> manifold = ReferenceFaceManifold(ref, xfRef, face, flip, separation);
+    manifold.contacts[0] = WorldContact(clip, 0, xfRef);
+    manifold.contacts[1] = WorldContact(clip, 1, xfRef);
+    manifold.contactCount = clip.contactCount;
+    manifold.incidentEdge = clip.incidentEdge;
+    return manifold;
+}
+
 /// The trace's view of a clipping, in world space.
 template <typename S>
 ClipTraceT<S> ClipTraceOf(const ClipResult<S>& r, const AxisRef& reference, const PolygonT<S>& ref,

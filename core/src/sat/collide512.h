@@ -108,32 +108,17 @@ ManifoldFromSeparations512(const PolygonT<double>& a, const TransformT<double>& 
     const PolygonT<double>& ref = SelectRef(flip, b, a);
     const TransformT<double>& xfRef = SelectRef(flip, xfB, xfA);
     const int face = Select(flip, faceB, faceA);
+    const double separation = Select(flip, largestB, largestA);
     if constexpr (!kContacts)
     {
-        const Vec2T<double> worldNormal = Rotate(xfRef.q, ref.Normal(face));
-        return {true,
-                -Select(flip, largestB, largestA),
-                0.0,
-                Select(flip, -worldNormal, worldNormal),
-                {},
-                0,
-                {AxisKind::FaceNormal, Select(flip, 1, 0), face},
-                -1};
+        return ReferenceFaceManifold(ref, xfRef, face, flip, separation);
     }
     // The incident polygon for the clipping: its vertices as the face queries mapped them, from the registers.
     const int flipBits = Select(flip, 0xFF, 0);
     const IncidentPolygon<double> inc = MappedIncidentPolygon(SelectRef(flip, a, b), Select(flip, aInB, bInA),
                                                               m.bx.Blend(flipBits, m.ax), m.by.Blend(flipBits, m.ay));
     const ClipResult<double> clip = ClipIncidentEdge<true>(ref, face, inc, -1, 0.0);
-    const Vec2T<double> worldNormal = Rotate(xfRef.q, ref.Normal(face));
-    return {true,
-            -Select(flip, largestB, largestA),
-            0.0,
-            Select(flip, -worldNormal, worldNormal),
-            {WorldContact(clip, 0, xfRef), WorldContact(clip, 1, xfRef)},
-            clip.contactCount,
-            {AxisKind::FaceNormal, Select(flip, 1, 0), face},
-            clip.incidentEdge};
+    return ReferenceFaceManifold(ref, xfRef, face, flip, separation, clip);
 }
 
 /// Collide of two polygons of at most 8 vertices on AVX-512 (CollidePolygons, step 0). The face queries of A and B

@@ -252,15 +252,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
 
     const ClipResult<S> clip =
         ClipIncidentEdge<Tracer::kWide>(ref, query.face, inc, inc.scan ? -1 : query.support, S(0));
-    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(query.face));
-    const ManifoldT<S> manifold{true,
-                                -query.separation,
-                                S(0),
-                                Select(flip, -worldNormal, worldNormal),
-                                {WorldContact(clip, 0, xfRef), WorldContact(clip, 1, xfRef)},
-                                clip.contactCount,
-                                {AxisKind::FaceNormal, Select(flip, 1, 0), query.face},
-                                clip.incidentEdge};
+    const ManifoldT<S> manifold = ReferenceFaceManifold(ref, xfRef, query.face, flip, query.separation, clip);
 
     if constexpr (Tracer::kEnabled)
     {
