@@ -116,7 +116,6 @@ void Panels::Draw()
     CanvasWindow();
     SidePanel();
     StatusBar();
-    Popups();
     if (showHelp_)
     {
         HelpOverlay();
@@ -124,6 +123,30 @@ void Panels::Draw()
     if (app_.LessonShown())
     {
         LessonWindow();
+    }
+    // The popups come last: a window that appears after a modal popup has been begun in the same frame ends
+    // Dear ImGui 1.86 on an assertion (no blocking modal found for it, as the modal is not yet active), and the
+    // menus and the lesson window both open windows and ask questions in one frame (Help > Lessons with unsaved
+    // changes shows the lesson and asks before opening its scene).
+    Popups();
+}
+
+// Prints, once, where the item just built is on the screen ("satviz: WHAT at X,Y", its centre), for scripts that
+// drive the window (the end-to-end test clicks menus and buttons there), as the canvas prints its place. Only once
+// the item has stayed put for a frame: a popup is placed and sized over its first frames.
+void Panels::Announce(const std::string& what)
+{
+    const ImVec2 low = ImGui::GetItemRectMin();
+    const ImVec2 high = ImGui::GetItemRectMax();
+    const ImVec2 center((low.x + high.x) * 0.5f, (low.y + high.y) * 0.5f);
+    const auto seen = announceAt_.find(what);
+    const bool still = seen != announceAt_.end() && seen->second.x == center.x && seen->second.y == center.y;
+    announceAt_[what] = center;
+    if (still && !announced_[what])
+    {
+        announced_[what] = true;
+        std::printf("satviz: %s at %.0f,%.0f\n", what.c_str(), center.x, center.y);
+        std::fflush(stdout);
     }
 }
 
@@ -330,6 +353,10 @@ void Panels::MenuBar()
         LessonsMenu();
         ImGui::EndMenu();
     }
+    else
+    {
+        Announce("menu Help");
+    }
     ImGui::EndMainMenuBar();
 }
 
@@ -338,12 +365,15 @@ void Panels::LessonsMenu()
     const std::vector<Lesson>& lessons = app_.Lessons();
     if (!ImGui::BeginMenu("Lessons", !lessons.empty()))
     {
+        Announce("menu Help > Lessons");
         return;
     }
     for (size_t i = 0; i < lessons.size(); ++i)
     {
-        if (ImGui::MenuItem(lessons[i].title.c_str(), nullptr,
-                            static_cast<int>(i) == app_.CurrentLesson() && app_.LessonShown()))
+        const bool chosen = ImGui::MenuItem(lessons[i].title.c_str(), nullptr,
+                                            static_cast<int>(i) == app_.CurrentLesson() && app_.LessonShown());
+        Announce("menu Help > Lessons > " + std::to_string(i + 1));
+        if (chosen)
         {
             app_.OpenLesson(static_cast<int>(i));
         }
@@ -790,11 +820,17 @@ void Panels::Popups()
         openAfterSaveAs_ = false; // cancelled: the scene stays, nothing is opened
     }
     const std::string name = document.File().empty() ? "The scene" : document.File();
+    // A button of a question, announced for the scripts that answer it.
+    auto button = [this](const char* question, const char* label) {
+        const bool pressed = ImGui::Button(label);
+        Announce(std::string(question) + ": " + label);
+        return pressed;
+    };
     ImGui::SetNextWindowPos(center, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
     {
         ImGui::Text("%s has unsaved changes.", name.c_str());
-        if (ImGui::Button("Save and quit"))
+        if (button("Unsaved changes", "Save and quit"))
         {
             if (document.File().empty() || document.ReadOnly())
             {
@@ -812,13 +848,13 @@ void Panels::Popups()
             }
         }
         ImGui::SameLine();
-        if (ImGui::Button("Quit without saving"))
+        if (button("Unsaved changes", "Quit without saving"))
         {
             app_.ConfirmQuit();
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
-        if (ImGui::Button("Cancel"))
+        if (button("Unsaved changes", "Cancel"))
         {
             ImGui::CloseCurrentPopup();
         }
@@ -829,7 +865,7 @@ void Panels::Popups()
     {
         ImGui::Text("%s has unsaved changes.", name.c_str());
         ImGui::Text("Open %s?", app_.PendingOpen().c_str());
-        if (ImGui::Button("Save and open"))
+        if (button("Unsaved changes before opening", "Save and open"))
         {
             ImGui::CloseCurrentPopup();
             if (document.File().empty() || document.ReadOnly())
@@ -847,13 +883,13 @@ void Panels::Popups()
             }
         }
         ImGui::SameLine();
-        if (ImGui::Button("Open without saving"))
+        if (button("Unsaved changes before opening", "Open without saving"))
         {
             ImGui::CloseCurrentPopup();
             app_.Open(app_.PendingOpen());
         }
         ImGui::SameLine();
-        if (ImGui::Button("Cancel"))
+        if (button("Unsaved changes before opening", "Cancel"))
         {
             ImGui::CloseCurrentPopup();
         }

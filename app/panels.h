@@ -10,6 +10,8 @@
 #include <imgui.h>
 
 #include <cstddef>
+#include <map>
+#include <string>
 
 namespace satviz
 {
@@ -68,6 +70,7 @@ class Panels
     void CanvasWindow();
     void CanvasInput(ImVec2 origin, bool hovered);
     void Handles(ImDrawList* list, ImVec2 origin);
+    void Announce(const std::string& what);
 
     App& app_;
     DragKind drag_ = DragKind::None;
@@ -84,6 +87,9 @@ class Panels
     bool openAfterSaveAs_ = false; // the Save as popup was opened by "Save and open"
     bool lessonScrollTop_ = false;
     char pathBuffer_[1024] = {};
+    // Announce: where each item named was last frame, and whether its place was printed.
+    std::map<std::string, ImVec2> announceAt_;
+    std::map<std::string, bool> announced_;
 };
 
 } // namespace satviz

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# End-to-end test of the app in a real window under Xvfb, driven by xdotool: open a scene, drag body B, step
-# forward three times, save, export a PNG, quit; then satviz-render on the saved scene must give the same bytes.
+# End-to-end test of the app in a real window under Xvfb, driven by xdotool: open a scene, drag body B, open a
+# lesson from Help > Lessons (the lesson column appears and the app asks before its scene replaces the unsaved drag:
+# cancel), step forward three times, save, export a PNG, quit; then satviz-render on the saved scene must give the
+# same bytes.
 # Usage: e2e.sh SATVIZ SATVIZ_RENDER SCENE WORKDIR. Exits 77 (skipped) when Xvfb or xdotool is missing.
 set -euo pipefail
 app=$1 render=$2 scene=$3 work=$4
@@ -20,6 +22,30 @@ tap() {
   sleep 0.08
   xdotool keyup "$1"
   sleep 0.15
+}
+
+# Where the app announced an item of its interface ("satviz: WHAT at X,Y" on its output), once it is shown.
+place() {
+  for _ in $(seq 50); do grep -qF "satviz: $1 at " "$work/app.log" && break; sleep 0.1; done
+  grep -F "satviz: $1 at " "$work/app.log" | sed -n 's/.* at \([0-9]*\),\([0-9]*\)$/\1 \2/p' | head -n 1
+}
+
+# Clicks the item the app announced as WHAT; fails when it never showed.
+click() {
+  local x y
+  read -r x y < <(place "$1") || { echo "FAILED: the app never showed $1"; cat "$work/app.log"; exit 1; }
+  xdotool mousemove "$x" "$y"
+  sleep 0.2
+  xdotool click 1
+  sleep 0.3
+}
+
+alive() {
+  if ! kill -0 $pid 2> /dev/null; then
+    echo "FAILED: the app ended $1, and the unsaved drag with it:"
+    cat "$work/app.log"
+    exit 1
+  fi
 }
 
 rm -rf "$work"
@@ -48,6 +74,16 @@ done
 sleep 0.2
 xdotool mouseup 1
 sleep 0.3
+# Help > Lessons > the first lesson, with the drag unsaved and the lesson column closed: the column appears in the
+# frame that asks about the unsaved changes (Dear ImGui 1.86 once ended the app there on an assertion).
+click "menu Help"
+read -r lx ly < <(place "menu Help > Lessons") || { echo "FAILED: no Lessons menu"; exit 1; }
+xdotool mousemove "$lx" "$ly"
+sleep 0.3
+click "menu Help > Lessons > 1"
+alive "on opening a lesson with unsaved changes"
+click "Unsaved changes before opening: Cancel"
+alive "on cancelling the question"
 for _ in 1 2 3; do
   tap Right
 done

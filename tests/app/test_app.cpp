@@ -947,6 +947,37 @@ TEST_CASE("Help > Lessons lists the lessons, and opening one shows its text and 
     CHECK(h.app->CurrentLesson() == 3);
 }
 
+TEST_CASE("Opening a lesson with unsaved changes shows it and asks before its scene replaces them", "[app][lessons]")
+{
+    // The lesson window appears in the frame that opens the question: Dear ImGui 1.86 ends the program on an
+    // assertion when a window appears after a modal popup begun in the same frame.
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    Harness h(copy.string());
+    const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x + 30.0f, from.y));
+    REQUIRE(h.Doc().Dirty());
+    REQUIRE(!h.app->LessonShown());
+    const Vec2 moved = h.BodyNamed("B").position;
+    REQUIRE(h.app->OpenLesson(0));
+    h.Frames(3);
+    CHECK(h.app->LessonShown());
+    CHECK(Harness::Showing("Lesson###lesson"));
+    CHECK(Harness::Showing("Unsaved changes before opening"));
+    CHECK(h.Doc().File() == copy.string());
+    REQUIRE(h.ClickButton("Unsaved changes before opening", "Cancel"));
+    CHECK(h.Doc().Dirty());
+    CHECK(h.BodyNamed("B").position == moved);
+    // F1 and a lesson in the same frame as the question: the help window appears after it too.
+    h.app->CloseLesson();
+    h.Frames(2);
+    REQUIRE(!Harness::Showing("Lesson###lesson"));
+    REQUIRE(h.app->OpenLesson(1));
+    h.Key(h.app->Options().keys.f1);
+    CHECK(Harness::Showing("Unsaved changes before opening"));
+    CHECK(Harness::Showing("Lesson###lesson"));
+    CHECK(Harness::Showing("Help (F1 or Esc closes)"));
+}
+
 TEST_CASE("The bundled scenes are found from the program's folder: the data folder, else tutorials/ above it", "[app]")
 {
     const fs::path root = fs::temp_directory_path() / ("satviz-app-layout-" + std::to_string(::getpid()));
