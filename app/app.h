@@ -132,8 +132,9 @@ class App
     /// Deletes the selected body; refused (the status line says why) when none is selected or only two are left.
     void DeleteSelected();
 
-    // The viewer: what the canvas shows. Changes of the pair, query, step view, pitfall, precision and layers are
-    // edits: they mark the scene modified and go on the undo stack.
+    // The viewer: what the canvas shows. Changes of the pair, query, step view, pitfall, precision and layers go on
+    // the undo stack and a save writes them, but they leave the scene unmodified: they change how it is looked at,
+    // not the scene (Document::Dirty).
 
     /// The viewer: the choices, the step, the camera, the figure of the pair's test.
     const Viewer& GetViewer() const { return viewer_; }

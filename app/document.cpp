@@ -9,6 +9,24 @@
 namespace satviz
 {
 
+namespace
+{
+
+// What a change of the scene is measured on: the scene as its file would hold it, without the view block.
+std::string SceneContent(Scene scene)
+{
+    scene.hasView = false;
+    scene.view = SceneView{};
+    return SceneToJson(scene);
+}
+
+} // namespace
+
+void Document::Measure()
+{
+    dirty_ = SceneContent(scene_) != savedContent_;
+}
+
 OpenResult Document::Open(const std::string& path, const std::string& bundledDir)
 {
     OpenResult opened;
@@ -39,6 +57,7 @@ OpenResult Document::Open(const std::string& path, const std::string& bundledDir
     const auto canonical = std::filesystem::weakly_canonical(path, code);
     const auto bundled = std::filesystem::weakly_canonical(bundledDir, code);
     readOnly_ = !bundledDir.empty() && canonical.parent_path() == bundled;
+    savedContent_ = SceneContent(scene_);
     dirty_ = false;
     undo_.clear();
     redo_.clear();
@@ -56,6 +75,7 @@ bool Document::Save(Scene saved, const std::string& path, std::string& error)
     scene_ = std::move(saved);
     file_ = path;
     readOnly_ = false;
+    savedContent_ = SceneContent(scene_);
     dirty_ = false;
     return true;
 }
@@ -68,15 +88,18 @@ void Document::BeginEdit(const ViewChoices& choices)
     }
     editStart_ = {scene_, choices};
     editOpen_ = true;
+    editTouched_ = false;
 }
 
 void Document::AddBody(Body body)
 {
+    editTouched_ = true;
     scene_.bodies.push_back(std::move(body));
 }
 
 void Document::RemoveBody(size_t index)
 {
+    editTouched_ = true;
     scene_.bodies.erase(scene_.bodies.begin() + static_cast<std::ptrdiff_t>(index));
 }
 
@@ -93,7 +116,7 @@ bool Document::CommitEdit()
     }
     undo_.push_back(std::move(editStart_));
     redo_.clear();
-    dirty_ = true;
+    Measure(); // a drag back to where the file has the body is no change
     return true;
 }
 
@@ -101,7 +124,6 @@ void Document::RecordChoices(const ViewChoices& before)
 {
     undo_.push_back({scene_, before});
     redo_.clear();
-    dirty_ = true;
 }
 
 bool Document::Undo(ViewChoices& choices)
@@ -114,7 +136,7 @@ bool Document::Undo(ViewChoices& choices)
     scene_ = std::move(undo_.back().scene);
     choices = std::move(undo_.back().choices);
     undo_.pop_back();
-    dirty_ = true;
+    Measure();
     return true;
 }
 
@@ -128,7 +150,7 @@ bool Document::Redo(ViewChoices& choices)
     scene_ = std::move(redo_.back().scene);
     choices = std::move(redo_.back().choices);
     redo_.pop_back();
-    dirty_ = true;
+    Measure();
     return true;
 }
 

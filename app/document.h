@@ -41,8 +41,11 @@ class Document
     const std::string& File() const { return file_; }
     /// True for a bundled scene: saving asks for another file.
     bool ReadOnly() const { return readOnly_; }
-    /// True when there are changes since the scene was opened or saved.
-    bool Dirty() const { return dirty_; }
+    /// True when the scene differs from its file: its bodies, description or world, measured against the scene as
+    /// it was opened or last saved (undoing back to it is no change). The view block (pair, query, layers,
+    /// camera, step...) is how the scene is looked at, not a change of it. During an edit, true once the edit has
+    /// touched a body.
+    bool Dirty() const { return dirty_ || (editOpen_ && editTouched_); }
 
     /// Starts an edit of the bodies (a drag, a number being dragged): the scene now and the viewer's `choices` are
     /// kept until CommitEdit, so that the whole edit is undone in one step. Does nothing while an edit is open.
@@ -50,7 +53,11 @@ class Document
     /// True between BeginEdit and CommitEdit.
     bool EditOpen() const { return editOpen_; }
     /// Body `index`, to change in place while an edit is open.
-    Body& EditBody(size_t index) { return scene_.bodies[index]; }
+    Body& EditBody(size_t index)
+    {
+        editTouched_ = true;
+        return scene_.bodies[index];
+    }
     /// Adds `body` after the others, while an edit is open.
     void AddBody(Body body);
     /// Removes body `index`, while an edit is open.
@@ -80,10 +87,15 @@ class Document
         ViewChoices choices;
     };
 
+    // Measures dirty_: the scene against savedContent_.
+    void Measure();
+
     Scene scene_;
     std::string file_;
     bool readOnly_ = false;
+    std::string savedContent_; // the scene as opened or last saved, without its view block (SceneContent)
     bool dirty_ = false;
+    bool editTouched_ = false;
     std::vector<State> undo_;
     std::vector<State> redo_;
     bool editOpen_ = false;

@@ -440,7 +440,7 @@ TEST_CASE("Pair, query, step view, pitfall, precision and layer changes are edit
     {
         h.app->SetPair("right", "ball");
         CHECK(pair() == "right,ball");
-        CHECK(h.Doc().Dirty());
+        CHECK(!h.Doc().Dirty()); // how the scene is looked at, not a change of it
         CHECK(h.Doc().UndoDepth() == 1);
         CHECK(h.app->SceneForSaving().view.bodyA == "right");
         // ctrl+z and ctrl+y, as the user does it.
@@ -479,7 +479,7 @@ TEST_CASE("Pair, query, step view, pitfall, precision and layer changes are edit
         const LayerMask after = before | kLayerNormals | kLayerMinkowski;
         h.app->SetLayers(after);
         CHECK(h.View().Setup().figure.layers == after);
-        CHECK(h.Doc().Dirty());
+        CHECK(!h.Doc().Dirty());
         CHECK(h.app->SceneForSaving().view.layers ==
               std::vector<std::string>{"shapes", "labels", "normals", "swept", "ghost", "caption", "minkowski"});
         REQUIRE(h.app->Undo());
@@ -572,6 +572,59 @@ TEST_CASE("Undo takes back body edits and view changes one at a time, in the ord
     h.app->SetQuery(ViewQuery::Sweep);
     CHECK(h.Doc().RedoDepth() == 0);
     CHECK(h.Doc().UndoDepth() == 4);
+}
+
+TEST_CASE("Modified means differs from the file: undoing back to it, or changing only the view, is no change", "[app]")
+{
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    {
+        // The view alone: query, step view, layers, precision, camera, step.
+        Harness h(copy.string());
+        REQUIRE(!h.Doc().Dirty());
+        h.app->SetQuery(ViewQuery::Sweep);
+        h.app->SetStepView(StepView::Faces);
+        h.app->SetLayers(h.View().Choices().layers | kLayerNormals);
+        h.app->SetPrecision(true);
+        h.app->FitCamera();
+        h.Key(kLeft);
+        CHECK(!h.Doc().Dirty());
+        CHECK(h.app->RequestQuit());
+    }
+    {
+        // A drag, then undo: back to the file.
+        Harness h(copy.string());
+        const Vec2 start = h.BodyNamed("B").position;
+        const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+        h.Drag(from, ImVec2(from.x + 30.0f, from.y));
+        CHECK(h.Doc().Dirty());
+        h.app->SetLayers(h.View().Choices().layers | kLayerAxes);
+        h.Key(kZ, true);
+        CHECK(h.Doc().Dirty()); // the layers were undone, the drag is still there
+        h.Key(kZ, true);
+        CHECK(!h.Doc().Dirty());
+        CHECK(h.app->RequestQuit());
+        h.Key(kY, true);
+        CHECK(h.Doc().Dirty());
+        // A move back to where the file has the body is no change either.
+        h.app->MoveBody(1, start);
+        CHECK(h.Doc().UndoDepth() == 2);
+        CHECK(!h.Doc().Dirty());
+    }
+    {
+        // Saved, edited, and undone back to the state saved: no change; one undo more, a change from the file.
+        Harness h(copy.string());
+        const ImVec2 grab = h.OnScreen(Centroid(h.BodyNamed("A")));
+        h.Drag(grab, ImVec2(grab.x - 20.0f, grab.y));
+        h.Key('S', true);
+        REQUIRE(!h.Doc().Dirty());
+        h.Drag(h.OnScreen(Centroid(h.BodyNamed("A"))), ImVec2(grab.x, grab.y + 25.0f));
+        CHECK(h.Doc().Dirty());
+        h.Key(kZ, true);
+        CHECK(!h.Doc().Dirty());
+        h.Key(kZ, true);
+        CHECK(h.Doc().Dirty());
+        CHECK(!h.app->RequestQuit());
+    }
 }
 
 TEST_CASE("Saving writes the view, the export figure is what satviz-render draws from the saved file", "[app]")
