@@ -119,13 +119,16 @@ bool Viewer::TakeRetest()
 
 void Viewer::Adopt(FigureSetup fresh, Scene studied)
 {
+    // A student reading the verdict stays on it: the new test's verdict may be another step (a drag to overlap
+    // adds axes), and its number would now show an axis.
+    const bool onVerdict = setup_.Ok() && step_ == setup_.study.VerdictStep();
     setup_ = std::move(fresh);
     studied_ = std::move(studied);
     if (!setup_.Ok())
     {
         return;
     }
-    ShowStep(step_);
+    ShowStep(onVerdict ? setup_.study.VerdictStep() : step_);
     if (cameraFit_)
     {
         camera_ = setup_.figure.view;

@@ -33,9 +33,10 @@ class Viewer
     /// Takes other choices (a change in the panels, undo, redo); Refresh then tests the pair again.
     void SetChoices(const ViewChoices& choices) { choices_ = choices; }
 
-    /// Tests the pair of `scene` again, keeping the step where it still exists; a pair that no longer exists is
-    /// dropped from the choices (the first two bodies are shown). A pair of more vertices than the background
-    /// limit is tested on a worker thread, and the figure shows the last finished test until TakeFinishedTest.
+    /// Tests the pair of `scene` again, keeping the verdict shown if it was, else the step where it still exists; a
+    /// pair that no longer exists is dropped from the choices (the first two bodies are shown). A pair of more
+    /// vertices than the background limit is tested on a worker thread, and the figure shows the last finished
+    /// test until TakeFinishedTest.
     /// True when the new figure is in (false: it runs, or waits for the canvas's first frame).
     bool Refresh(const Scene& scene);
     /// Takes in the test that ran on the worker thread once it is done; true when it did.

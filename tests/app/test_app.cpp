@@ -290,6 +290,34 @@ TEST_CASE("Arrow keys and space step through the trace, edits keep the step wher
     CHECK(h.View().Step() == verdict);
 }
 
+TEST_CASE("A student reading the verdict stays on it through edits and changes of the view", "[app]")
+{
+    // The first axis separates the pair: the verdict is step 1. Moved onto the hexagon, the pair overlaps on every
+    // axis, and step 1 is now an axis.
+    Harness h(ScratchCopy("separated_triangle.json").string());
+    const int apart = h.View().Setup().study.VerdictStep();
+    REQUIRE(h.View().Step() == apart);
+    h.app->MoveBody(1, Vec2{0.2, 0.1});
+    const int verdict = h.View().Setup().study.VerdictStep();
+    REQUIRE(verdict > apart);
+    CHECK(h.View().Step() == verdict);
+    h.app->SetStepView(StepView::Faces);
+    CHECK(h.View().Step() == h.View().Setup().study.VerdictStep());
+    h.app->SetQuery(ViewQuery::Sweep);
+    CHECK(h.View().Step() == h.View().Setup().study.VerdictStep());
+    REQUIRE(h.app->Undo());
+    REQUIRE(h.app->Undo());
+    REQUIRE(h.app->Undo());
+    CHECK(h.View().Step() == apart);
+    // Off the verdict, an edit keeps the step where it still exists.
+    h.app->MoveBody(1, Vec2{0.2, 0.1});
+    h.Key(kLeft);
+    const int axis = h.View().Step();
+    REQUIRE(axis < verdict);
+    h.app->MoveBody(1, Vec2{0.25, 0.1});
+    CHECK(h.View().Step() == axis);
+}
+
 TEST_CASE("The arrows and Play pass over the faces a large-polygon sweep decided without evaluating them", "[app]")
 {
     // A 40-gon and a 100-gon thrown at it, in the face-test view: each polygon's faces are walked to only where they
