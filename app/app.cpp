@@ -193,6 +193,7 @@ bool App::Undo()
     viewer_.SetChoices(choices);
     selected_ = std::min(selected_, static_cast<int>(document_.GetScene().bodies.size()) - 1);
     Refresh();
+    ClearError();
     return true;
 }
 
@@ -206,6 +207,7 @@ bool App::Redo()
     viewer_.SetChoices(choices);
     selected_ = std::min(selected_, static_cast<int>(document_.GetScene().bodies.size()) - 1);
     Refresh();
+    ClearError();
     return true;
 }
 
@@ -288,8 +290,13 @@ bool App::MoveVertex(int index, int vertex, Vec2 world)
     PolygonResult result = MakePolygon(vertices);
     if (!result.Ok())
     {
-        SetStatus("Vertex " + std::to_string(vertex) + " stays where it was: the " +
-                      DescribePolygonError(result.error, result.vertex),
+        // During a drag the vertex has followed the pointer as far as the polygon stayed convex: it stays there,
+        // which is where it was only when the first move was refused. The error's advice in brackets is for
+        // someone listing vertices, not dragging one.
+        std::string why = DescribePolygonError(result.error, result.vertex);
+        why = why.substr(0, why.find(" ("));
+        SetStatus("Vertex " + std::to_string(vertex) +
+                      " stays at its last position that keeps the polygon convex: at the pointer, the " + why,
                   true);
         Refresh();
         return false;
@@ -301,10 +308,7 @@ bool App::MoveVertex(int index, int vertex, Vec2 world)
     {
         EndEdit();
     }
-    if (statusIsError_)
-    {
-        SetStatus("", false);
-    }
+    ClearError();
     Refresh();
     return true;
 }
@@ -487,6 +491,15 @@ void App::SetStatus(const std::string& message, bool error)
 {
     status_ = message;
     statusIsError_ = error;
+}
+
+void App::ClearError()
+{
+    // An error said why an edit was refused or failed: after an undo or a redo it no longer describes the scene.
+    if (statusIsError_ && viewer_.Setup().Ok())
+    {
+        SetStatus("", false);
+    }
 }
 
 } // namespace satviz

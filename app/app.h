@@ -125,7 +125,8 @@ class App
     /// Sets body `index`'s velocity (world units per time unit: its displacement over one step).
     void SetVelocity(int index, Vec2 velocity);
     /// Moves vertex `vertex` of polygon body `index` to world point `world`; refused, and the status line says
-    /// why, when the polygon would no longer be strictly convex and counter-clockwise. True when it moved.
+    /// why, when the polygon would no longer be strictly convex and counter-clockwise: the vertex stays where it
+    /// last was (during a drag, as far as it followed the pointer). True when it moved.
     bool MoveVertex(int index, int vertex, Vec2 world);
     /// Adds a body of `shape` at the camera's centre, named `stem` with the first free number, and selects it.
     void AddBody(Shape shape, const std::string& stem);
@@ -205,6 +206,7 @@ class App
     void Refresh();
     void TakeFinishedTest();
     void ChangeChoices(const ViewChoices& choices);
+    void ClearError();
     bool BodyExists(int index) const;
 
     FigureFonts fonts_;

@@ -392,6 +392,21 @@ TEST_CASE("A vertex drag that would break convexity is refused and says why", "[
     CHECK(Length(v0after - beyond) > 0.1); // never accepted there
     CHECK(MakePolygon(std::vector<Vec2>(kept.shape.polygon.Vertices().begin(), kept.shape.polygon.Vertices().end()))
               .Ok());
+    // It followed the pointer while the box stayed convex, about half way to vertex 2 (there it would lie on the
+    // diagonal), and the message says so rather than "where it was".
+    const double along = Dot(v0after - v0, v2 - v0) / Dot(v2 - v0, v2 - v0);
+    CHECK(along > 0.35);
+    CHECK(along < 0.5);
+    CHECK(h.app->Status().find("stays at its last position that keeps the polygon convex") != std::string::npos);
+    CHECK(h.app->Status().find("where it was") == std::string::npos);
+    // Undo takes the drag back, and the message with it.
+    h.Key(kZ, true);
+    CHECK(!h.app->StatusIsError());
+    CHECK(h.app->Status().empty());
+    const Body& undone = h.BodyNamed("B");
+    CHECK(Length(TransformPoint(undone.Xf(), undone.shape.polygon.Vertices()[0]) - v0) < 1e-12);
+    h.Key(kY, true);
+    CHECK(!h.app->StatusIsError());
     // A small outward move is accepted.
     const Vec2 outward = v0 + 0.1 * (v0 - v2);
     h.Drag(h.OnScreen(v0after), h.OnScreen(outward));
