@@ -72,6 +72,19 @@ void App::Frame()
     panels_.Draw();
 }
 
+double App::SecondsUntilChange() const
+{
+    if (viewer_.Studying())
+    {
+        return 0.03; // the worker thread's figure is taken in by a frame
+    }
+    if (viewer_.Playing())
+    {
+        return viewer_.SecondsUntilNextStep();
+    }
+    return -1.0;
+}
+
 // [SECTION] Files
 
 bool App::Open(const std::string& path)

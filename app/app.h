@@ -66,6 +66,10 @@ class App
 
     /// Builds the whole user interface for one ImGui frame (between NewFrame and Render).
     void Frame();
+    /// Seconds until the app changes without input, so that the window system can wait for events until then: the
+    /// next step while the steps play, a short while when a test runs on the worker thread; -1 when nothing
+    /// changes without input.
+    double SecondsUntilChange() const;
 
     // Files.
 

@@ -3,6 +3,7 @@
 // loop, and turns the app's export requests into PNG files with the same drawing and OpenGL2 backend as
 // satviz-render. Links GLFW and libGL, never OSMesa.
 #include "app.h"
+#include "key_queue.h"
 
 #include <satviz/render/figure_drawing.h>
 #include <satviz/render/png_file.h>
@@ -15,6 +16,7 @@
 
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl2.h>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -180,6 +182,58 @@ bool ExportWithRenderer(satviz::App& app, const std::string& renderer, const std
     return true;
 }
 
+/// The window's input between frames: key events queued so that no tap is lost (KeyQueue), and whether anything
+/// arrived at all, so that the frame loop can wait for events while nothing changes.
+class WindowInput
+{
+  public:
+    /// Installs, before ImGui's backend chains its own callbacks to them, the callbacks that only note input.
+    static void InstallBeforeBackend(GLFWwindow* window)
+    {
+        glfwSetMouseButtonCallback(window, [](GLFWwindow*, int, int, int) { events_ = true; });
+        glfwSetScrollCallback(window, [](GLFWwindow*, double, double) { events_ = true; });
+        glfwSetCharCallback(window, [](GLFWwindow*, unsigned int) { events_ = true; });
+        glfwSetWindowFocusCallback(window, [](GLFWwindow*, int) { events_ = true; });
+        glfwSetCursorEnterCallback(window, [](GLFWwindow*, int) { events_ = true; });
+    }
+    /// Installs the other callbacks on `window`, after ImGui's backend: the key callback replaces the backend's,
+    /// which is handed the keys from the queue; the others only note that something happened.
+    static void Install(GLFWwindow* window)
+    {
+        glfwSetKeyCallback(window, [](GLFWwindow*, int key, int scancode, int action, int mods) {
+            events_ = true;
+            if (action != GLFW_REPEAT) // ImGui 1.86 makes its own repeats from the time a key is down
+            {
+                keys_.Push({key, scancode, action == GLFW_PRESS, mods});
+            }
+        });
+        glfwSetCursorPosCallback(window, [](GLFWwindow*, double, double) { events_ = true; });
+        glfwSetWindowSizeCallback(window, [](GLFWwindow*, int, int) { events_ = true; });
+        glfwSetWindowRefreshCallback(window, [](GLFWwindow*) { events_ = true; });
+    }
+    /// Hands ImGui's backend the key events of this frame.
+    static void DeliverKeys(GLFWwindow* window)
+    {
+        keys_.TakeFrame([window](const satviz::KeyEvent& event) {
+            ImGui_ImplGlfw_KeyCallback(window, event.key, event.scancode, event.press ? GLFW_PRESS : GLFW_RELEASE,
+                                       event.mods);
+        });
+    }
+    /// True while key events wait for a frame.
+    static bool KeysWaiting() { return keys_.Waiting(); }
+    /// True, once, when input arrived since the last call.
+    static bool TakeEvents()
+    {
+        const bool events = events_;
+        events_ = false;
+        return events;
+    }
+
+  private:
+    static inline satviz::KeyQueue keys_;
+    static inline bool events_ = false;
+};
+
 /// The directory of this program's file, from /proc/self/exe; empty where that cannot be read.
 std::filesystem::path ProgramDir()
 {
@@ -307,7 +361,9 @@ int main(int argc, char** argv)
         return 1;
     }
     io.FontDefault = fonts.body;
+    WindowInput::InstallBeforeBackend(window);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
+    WindowInput::Install(window);
     ImGui_ImplOpenGL2_Init();
 
     satviz::AppOptions options;
@@ -339,9 +395,36 @@ int main(int argc, char** argv)
     using Clock = std::chrono::steady_clock;
     Clock::time_point measureStart;
     int frame = 0;
+    // Frames still to run after the last input: Dear ImGui places and sizes a window over its first frames, and a
+    // click asks a question from the next frame on.
+    constexpr int kSettleFrames = 8;
+    int settle = kSettleFrames;
     while (true)
     {
-        glfwPollEvents();
+        if (measuring)
+        {
+            glfwPollEvents();
+        }
+        else if (settle > 0 || WindowInput::KeysWaiting())
+        {
+            glfwPollEvents();
+        }
+        else
+        {
+            // Nothing changes until the user does something or the app's next change (a step played): no frames, no
+            // CPU. Woken twice a second all the same, for a text field's blinking cursor.
+            const double change = app.SecondsUntilChange();
+            glfwWaitEventsTimeout(change >= 0.0 ? std::min(change, 0.5) + 0.001 : 0.5);
+        }
+        if (WindowInput::TakeEvents())
+        {
+            settle = kSettleFrames;
+        }
+        else if (settle > 0)
+        {
+            --settle;
+        }
+        WindowInput::DeliverKeys(window);
         if (glfwWindowShouldClose(window))
         {
             if (app.RequestQuit())

@@ -10,6 +10,7 @@
 #include <satviz/render/view.h>
 #include <satviz/scene.h>
 
+#include <algorithm>
 #include <atomic>
 #include <memory>
 
@@ -66,6 +67,8 @@ class Viewer
     /// Lets `seconds` pass: while playing, a step every kPlayInterval (past the faces decided without evaluation,
     /// PairStudy::NextStep), stopping at the verdict.
     void Advance(double seconds);
+    /// While playing, the seconds until Advance shows the next step.
+    double SecondsUntilNextStep() const { return std::max(0.0, kPlayInterval - playClock_); }
     /// Sweeps: the time at which the moving bodies are drawn, in [0, 1]; -1: not drawn.
     double Time() const { return time_; }
     /// Draws the moving bodies at time `time` in [0, 1]; -1: not drawn.

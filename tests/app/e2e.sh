@@ -16,11 +16,10 @@ if [ -z "${SATVIZ_E2E_DISPLAY:-}" ]; then
   exec xvfb-run -a -s "-screen 0 1280x800x24" env SATVIZ_E2E_DISPLAY=1 bash "$0" "$@"
 fi
 
-# A key held for a few frames: ImGui 1.86 polls key state once per frame and would miss a faster tap.
+# A short tap, as xdotool types (press and release a few milliseconds apart): ImGui 1.86 reads the keys once per
+# frame, and the app queues key events so that a tap between two frames is still seen.
 tap() {
-  xdotool keydown "$1"
-  sleep 0.08
-  xdotool keyup "$1"
+  xdotool key "$1"
   sleep 0.15
 }
 

@@ -2,6 +2,7 @@
 // The app's logic without a window: ImGui frames with input set through its io fields, as the window system
 // would. Drags move bodies, keys step through the trace, undo restores, refused edits say why.
 #include "app.h"
+#include "key_queue.h"
 
 #include <satviz/collide.h>
 #include <satviz/render/describe.h>
@@ -413,6 +414,38 @@ TEST_CASE("A vertex drag that would break convexity is refused and says why", "[
     const Body& moved = h.BodyNamed("B");
     CHECK(Length(TransformPoint(moved.Xf(), moved.shape.polygon.Vertices()[0]) - outward) <
           2.0 / h.View().Camera().zoom);
+}
+
+TEST_CASE("A key tapped between two frames is seen down for a frame, and every event keeps its order", "[app]")
+{
+    KeyQueue queue;
+    std::vector<std::string> frame;
+    auto take = [&]() {
+        frame.clear();
+        queue.TakeFrame([&](const KeyEvent& e) { frame.push_back((e.press ? "+" : "-") + std::to_string(e.key)); });
+        return frame;
+    };
+    // ctrl+q as xdotool types it (ctrl released before q), then a right arrow tapped twice, all before the next
+    // frame: each press is seen with the keys held at that moment.
+    for (const KeyEvent& e : {KeyEvent{341, 0, true, 0}, KeyEvent{81, 0, true, 2}, KeyEvent{341, 0, false, 2},
+                              KeyEvent{81, 0, false, 0}, KeyEvent{262, 0, true, 0}, KeyEvent{262, 0, false, 0},
+                              KeyEvent{262, 0, true, 0}, KeyEvent{262, 0, false, 0}})
+    {
+        queue.Push(e);
+    }
+    CHECK(take() == std::vector<std::string>{"+341", "+81"});
+    CHECK(queue.Waiting());
+    CHECK(take() == std::vector<std::string>{"-341", "-81", "+262"});
+    CHECK(take() == std::vector<std::string>{"-262", "+262"});
+    CHECK(take() == std::vector<std::string>{"-262"});
+    CHECK(!queue.Waiting());
+    CHECK(take().empty());
+    // A key held over frames is released in the frame its release comes.
+    queue.Push({65, 0, true, 0});
+    CHECK(take() == std::vector<std::string>{"+65"});
+    queue.Push({65, 0, false, 0});
+    queue.Push({66, 0, true, 0});
+    CHECK(take() == std::vector<std::string>{"-65", "+66"});
 }
 
 TEST_CASE("The wheel zooms about the pointer and a drag on empty space pans", "[app]")
