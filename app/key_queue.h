@@ -13,10 +13,10 @@ namespace satviz
 /// One key event as the window system reports it.
 struct KeyEvent
 {
-    int key = 0;         ///< key code
-    int scancode = 0;    ///< the system's scancode
-    bool press = false;  ///< pressed (true) or released (false); repeats are not queued
-    int mods = 0;        ///< modifier bits
+    int key = 0;        ///< key code
+    int scancode = 0;   ///< the system's scancode
+    bool press = false; ///< pressed (true) or released (false); repeats are not queued
+    int mods = 0;       ///< modifier bits
 };
 
 /// Key events kept until a frame can see them: each frame takes them in order until the first release after a

@@ -14,9 +14,9 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl2.h>
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>

@@ -427,9 +427,9 @@ TEST_CASE("A key tapped between two frames is seen down for a frame, and every e
     };
     // ctrl+q as xdotool types it (ctrl released before q), then a right arrow tapped twice, all before the next
     // frame: each press is seen with the keys held at that moment.
-    for (const KeyEvent& e : {KeyEvent{341, 0, true, 0}, KeyEvent{81, 0, true, 2}, KeyEvent{341, 0, false, 2},
-                              KeyEvent{81, 0, false, 0}, KeyEvent{262, 0, true, 0}, KeyEvent{262, 0, false, 0},
-                              KeyEvent{262, 0, true, 0}, KeyEvent{262, 0, false, 0}})
+    for (const KeyEvent& e :
+         {KeyEvent{341, 0, true, 0}, KeyEvent{81, 0, true, 2}, KeyEvent{341, 0, false, 2}, KeyEvent{81, 0, false, 0},
+          KeyEvent{262, 0, true, 0}, KeyEvent{262, 0, false, 0}, KeyEvent{262, 0, true, 0}, KeyEvent{262, 0, false, 0}})
     {
         queue.Push(e);
     }
