@@ -126,7 +126,8 @@ class App
     void MoveBody(int index, Vec2 position);
     /// Turns body `index` to `angle` radians, counter-clockwise.
     void TurnBody(int index, double angle);
-    /// Sets body `index`'s velocity (world units per time unit: its displacement over one step).
+    /// Sets body `index`'s velocity (world units per time unit: its displacement over one time unit, which is one
+    /// step when the scene's dt is 1).
     void SetVelocity(int index, Vec2 velocity);
     /// Moves vertex `vertex` of polygon body `index` to world point `world`; refused, and the status line says
     /// why, when the polygon would no longer be strictly convex and counter-clockwise: the vertex stays where it

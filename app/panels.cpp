@@ -68,6 +68,13 @@ bool PathPopup(const char* title, const char* prompt, const char* action, char* 
     return confirmed;
 }
 
+// A bullet of the help whose text wraps at the window's edge (BulletText would run past it).
+void HelpBullet(const char* text)
+{
+    ImGui::Bullet();
+    ImGui::TextWrapped("%s", text);
+}
+
 void HelpMarker(const char* text)
 {
     ImGui::SameLine();
@@ -913,20 +920,25 @@ void Panels::HelpOverlay()
                            "smallest push gives the minimum translation vector (MTV).");
         ImGui::Separator();
         ImGui::TextUnformatted("Mouse");
-        ImGui::BulletText("drag a body: move it;  shift-drag, or the round handle above it: turn it");
-        ImGui::BulletText("drag a vertex handle of the selected polygon: reshape it (it must stay convex)");
-        ImGui::BulletText("drag the arrow tip (or the small v handle): set the velocity over one step");
-        ImGui::BulletText("drag empty space, or with the right button: pan;  wheel: zoom about the pointer");
+        HelpBullet("drag a body: move it;  shift-drag, or the round handle above it: turn it");
+        HelpBullet("drag a vertex handle of the selected polygon: reshape it (it must stay convex)");
+        HelpBullet("drag the arrow tip (or the small v handle): set the velocity (the arrow: one time unit)");
+        HelpBullet("drag empty space, or with the right button: pan;  wheel: zoom about the pointer");
         ImGui::TextUnformatted("Keys");
-        ImGui::BulletText("left / right: previous / next step (past faces decided without evaluation);  space: play or "
-                          "pause");
-        ImGui::BulletText("ctrl+z / ctrl+y: undo / redo;  del: delete the selected body;  f: fit the pair");
-        ImGui::BulletText("ctrl+o: open;  ctrl+s: save;  ctrl+e: export a PNG;  ctrl+q: quit;  F1: this help");
+        HelpBullet("left / right: previous / next step (past faces decided without evaluation);  space: play or "
+                   "pause");
+        HelpBullet("ctrl+z / ctrl+y: undo / redo;  del: delete the selected body;  f: fit the pair");
+        HelpBullet("ctrl+o: open;  ctrl+s: save;  ctrl+e: export a PNG;  ctrl+q: quit;  F1: this help");
         ImGui::TextUnformatted("Conventions");
-        ImGui::BulletText("world y points up; angles are radians, counter-clockwise");
-        ImGui::BulletText("polygon vertices go counter-clockwise, the interior on their left");
-        ImGui::BulletText("the normal points from A to B: moving B by depth x normal separates the pair");
-        ImGui::BulletText("a velocity is the displacement over one step; t runs from 0 to 1");
+        HelpBullet("world y points up; angles are radians, counter-clockwise");
+        HelpBullet("polygon vertices go counter-clockwise, the interior on their left");
+        HelpBullet("the normal points from A to B: moving B by depth x normal separates the pair");
+        // As the scene format has it (README, "velocity" and "world"): units per time unit, a step lasting dt.
+        HelpBullet("a velocity is in units per time unit: its arrow and the swept test (t from 0 to 1) cover one "
+                   "time unit");
+        HelpBullet("without a world block a step lasts dt = 1, so a velocity is the displacement over one step; "
+                   "lessons 14 to 17 are in metres and seconds (m/s, steps of dt = 1/60 s), so t runs over one "
+                   "second, 60 steps");
     }
     ImGui::End();
 }

@@ -32,7 +32,7 @@ enum class DragKind
     Body,     ///< moves the selected body
     Rotate,   ///< turns the selected body about its centre
     Vertex,   ///< moves one vertex of the selected polygon (refused where it would break convexity)
-    Velocity, ///< sets the selected body's velocity (its displacement over one step)
+    Velocity, ///< sets the selected body's velocity (its displacement over one time unit)
 };
 
 /// The Dear ImGui interface of an app.
