@@ -498,7 +498,8 @@ void Panels::StepControls()
     {
         ImGui::SetTooltip("The textbook test projects both shapes on each distinct axis and compares the intervals.\n"
                           "The fast queries test faces instead: does the other shape lie wholly beyond this face?\n"
-                          "Each axis is two face tests, one per side; both give the same verdict and MTV.");
+                          "One face test per edge of both shapes, each about one side of its edge only, where the\n"
+                          "textbook test checks both sides of each distinct axis; both give the same verdict and MTV.");
     }
     // A classic mistake beside the right answer: the library never takes it, the view shows what it would do.
     int pitfall = static_cast<int>(choices.pitfall);
@@ -550,7 +551,20 @@ void Panels::StepControls()
     ImGui::Text("step %d of %d", viewer.Step() + 1, study.StepCount());
     ImGui::SetNextItemWidth(-1.0f);
     int shown = viewer.Step();
-    const std::string sliderText = viewer.Step() == last ? "verdict" : "axis " + std::to_string(viewer.Step() + 1);
+    // Named as the step list and the sentence name the step: an axis of the textbook test, else a face test (or a
+    // circle's test, along no face).
+    std::string sliderText = "verdict";
+    if (viewer.Step() != last)
+    {
+        const size_t k = static_cast<size_t>(viewer.Step());
+        const AxisKind kind = study.Textbook() ? AxisKind::FaceNormal
+                              : study.sweep    ? study.sweepTrace.axes[k].axis.kind
+                                               : study.trace.axes[k].axis.kind;
+        sliderText = (study.Textbook()               ? "axis "
+                      : kind == AxisKind::FaceNormal ? "face test "
+                                                     : "test ") +
+                     std::to_string(viewer.Step() + 1);
+    }
     if (ImGui::SliderInt("##step", &shown, 0, last, sliderText.c_str()) && shown != viewer.Step())
     {
         app_.ShowStep(shown);

@@ -353,6 +353,31 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
     return "Verdict: no hit during the step: " + SweepExitReason(trace.exit) + ".";
 }
 
+// Where the count of FaceTestStep's "Face test 1 of N" comes from, in words that add up to it: one test per edge,
+// each asking about one side of its edge, where the textbook test checks both sides of an axis at once (two boxes
+// have 2 distinct axes and 8 face tests).
+std::string FaceTestsCounted(const Scene& scene, const PairStudy& study)
+{
+    const Shape& a = scene.bodies[static_cast<size_t>(study.bodyA)].shape;
+    const Shape& b = scene.bodies[static_cast<size_t>(study.bodyB)].shape;
+    const std::string total = std::to_string(CandidateCount(scene, study));
+    const std::string side = "a face test asks about one side of its edge only, where the textbook test checks both "
+                             "sides of an axis at once";
+    if (a.type == ShapeType::Circle && b.type == ShapeType::Circle)
+    {
+        return "Two circles have 1 test, along the line between their centres.";
+    }
+    if (a.type == ShapeType::Circle || b.type == ShapeType::Circle)
+    {
+        const int edges = a.type == ShapeType::Polygon ? a.polygon.Count() : b.polygon.Count();
+        return "One face test per edge of the polygon, and one from its nearest vertex to the circle's centre: " +
+               std::to_string(edges) + " + 1 = " + total + "; " + side + ".";
+    }
+    return "One face test per edge of both shapes: " + std::to_string(a.polygon.Count()) + " + " +
+           std::to_string(b.polygon.Count()) + " = " + total + "; " + side +
+           ". The face normals of both shapes are enough, since the MTV lies along one of them.";
+}
+
 std::string FaceTestStep(const Scene& scene, const PairStudy& study, int step)
 {
     const AxisTest& test = study.trace.axes[static_cast<size_t>(step)];
@@ -393,8 +418,7 @@ std::string FaceTestStep(const Scene& scene, const PairStudy& study, int step)
     }
     if (step == 0)
     {
-        text += " (Each axis is two face tests, one per side; the face normals of both shapes are enough, since the "
-                "MTV lies along one of them.)";
+        text += " (" + FaceTestsCounted(scene, study) + ")";
     }
     return text;
 }

@@ -241,7 +241,10 @@ TEST_CASE("A box above a floor: the textbook step shows a gap and stops, the fac
     INFO(face);
     CHECK(face.rfind("Face test 1 of 8: does box lie wholly beyond floor's edge 0? No:", 0) == 0);
     CHECK(face.find("1.55 behind it") != std::string::npos);
-    CHECK(face.find("Each axis is two face tests") != std::string::npos);
+    // The count agrees with its explanation: 2 distinct axes, but 8 faces, one test each.
+    CHECK(face.find("One face test per edge of both shapes: 4 + 4 = 8; a face test asks about one side of its edge "
+                    "only") != std::string::npos);
+    CHECK(face.find("two face tests") == std::string::npos);
     CHECK(face.find("Intervals") == std::string::npos);
 }
 
