@@ -223,13 +223,24 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
                                                : "";
     const std::string way = t.pushSign > 0 ? "along" : "against";
     const std::string depth = ShownOverlap(t);
-    text += "Verdict: " +
-            (r.axisCount == 1 ? std::string("the only axis overlaps")
-                              : "all " + std::to_string(r.axisCount) + " axes overlap") +
-            ", so the shapes collide. The smallest overlap is " + depth + ", on " + where + ": moving " + nameB + " " +
-            depth + " " + way + (t.faces[0].kind == AxisKind::FaceNormal ? " that normal" : " that axis") +
-            ", direction " + Pair(r.normal.x, r.normal.y) +
-            ", separates them. That is the minimum translation vector (MTV).";
+    const std::string that = t.faces[0].kind == AxisKind::FaceNormal ? "that normal" : "that axis";
+    if (depth == "0")
+    {
+        // Touching: no move of 0 separates anything; the intervals meet end to end on the deciding axis.
+        text += "Verdict: no axis has a gap, so the shapes are in contact. The smallest overlap is 0, on " + where +
+                ": there the intervals meet end to end. The shapes touch without overlapping: the MTV is zero, "
+                "direction " +
+                Pair(r.normal.x, r.normal.y) + ".";
+    }
+    else
+    {
+        text += "Verdict: " +
+                (r.axisCount == 1 ? std::string("the only axis overlaps")
+                                  : "all " + std::to_string(r.axisCount) + " axes overlap") +
+                ", so the shapes collide. The smallest overlap is " + depth + ", on " + where + ": moving " + nameB +
+                " " + depth + " " + way + " " + that + ", direction " + Pair(r.normal.x, r.normal.y) +
+                ", separates them. That is the minimum translation vector (MTV).";
+    }
     const int contacts = study.manifold.contactCount;
     text += contacts == 1 ? " 1 contact point" : " " + std::to_string(contacts) + " contact points";
     text += study.trace.hasClip ? ", clipped from the incident edge against the reference face, each halfway between "
@@ -451,10 +462,23 @@ std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
     }
     const bool face = m.axis.kind == AxisKind::FaceNormal;
     const std::string way = face && m.axis.shape == 1 ? "against" : "along";
-    text += "Verdict: no face test separates, so the shapes collide. The face the other shape reaches least far "
-            "behind is " +
-            DescribeAxis(scene, study, m.axis) + ": moving " + nameB + " by " + FormatNumber(m.depth) + " " + way +
-            " it, direction " + Pair(m.normal.x, m.normal.y) + ", separates them (the MTV).";
+    const std::string depth = FormatNumber(m.depth);
+    if (depth == "0")
+    {
+        // Touching: the other shape reaches the face and not behind it.
+        text += "Verdict: no face test separates, so the shapes are in contact. The face the other shape reaches "
+                "least far behind is " +
+                DescribeAxis(scene, study, m.axis) +
+                ", and only just: 0 behind it. The shapes touch without overlapping: the MTV is zero, direction " +
+                Pair(m.normal.x, m.normal.y) + ".";
+    }
+    else
+    {
+        text += "Verdict: no face test separates, so the shapes collide. The face the other shape reaches least far "
+                "behind is " +
+                DescribeAxis(scene, study, m.axis) + ": moving " + nameB + " by " + depth + " " + way +
+                " it, direction " + Pair(m.normal.x, m.normal.y) + ", separates them (the MTV).";
+    }
     text += m.contactCount == 1 ? " 1 contact point." : " " + std::to_string(m.contactCount) + " contact points.";
     return text;
 }

@@ -248,6 +248,29 @@ TEST_CASE("A box above a floor: the textbook step shows a gap and stops, the fac
     CHECK(face.find("Intervals") == std::string::npos);
 }
 
+TEST_CASE("A box resting on a floor touches it: the verdict says so, not that a move of 0 separates them", "[painter]")
+{
+    // The floor's top at y = 0.25, the box's bottom at 0.25: exactly touching.
+    const SceneResult loaded = ParseScene(R"({"bodies": [{"name": "floor", "box": [4, 0.5]},
+                                                         {"name": "box", "box": [1, 1], "position": [0.5, 0.75]}],
+                                              "view": {"query": "collide"}})",
+                                          "touch.json");
+    REQUIRE(loaded.Ok());
+    for (const StepView view : {StepView::Textbook, StepView::Faces})
+    {
+        const FigureSetup setup = SetUpView(loaded.scene, view);
+        REQUIRE(setup.Ok());
+        REQUIRE(setup.study.manifold.overlap);
+        REQUIRE(setup.study.manifold.depth == 0.0);
+        const std::string verdict = DescribeStep(loaded.scene, setup.study, setup.study.VerdictStep());
+        INFO(verdict);
+        CHECK(verdict.find("The shapes touch without overlapping: the MTV is zero") != std::string::npos);
+        CHECK(verdict.find("separates them") == std::string::npos);
+        CHECK(verdict.find("collide") == std::string::npos);
+        CHECK(verdict.find("direction (0.00, 1.00)") != std::string::npos);
+    }
+}
+
 TEST_CASE("Numbers as figures print them: no -0, exponents as written, full values that read back", "[painter]")
 {
     CHECK(FormatNumber(-0.0) == "0");
