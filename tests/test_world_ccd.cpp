@@ -189,3 +189,105 @@ TEST_CASE("A fast-spinning plank never ends a step through a thin wall", "[world
         CHECK(reach < kWall);
     }
 }
+
+TEST_CASE("A ball at 1000 between walls 6 apart, within reach of a wall at the start of a step, stays in and follows "
+          "the reflected path",
+          "[world][ccd]")
+{
+    // Radius 0.25, no gravity, restitution 1, no friction: it bounces about three times a step. In the steps that
+    // start within its reach (two radii) of a wall it used to get a speculative contact, bounce at the start of the
+    // step instead of at the wall, and then pass through that wall after the bounce off the other one.
+    const double r = 0.25;
+    const double face = 3.0;
+    const double a = face - r;
+    World world;
+    const Material elastic = MakeMaterial(1.0, 0.0, 0.0);
+    AddStatic(world, BoxShape(0.5, 50.0), {-face - 0.5, 0.0}, 0.0, elastic);
+    AddStatic(world, BoxShape(0.5, 50.0), {face + 0.5, 0.0}, 0.0, elastic);
+    const double vx = 1000.0, x0 = 0.0;
+    const int body = AddDynamic(world, DiscShape(r), {x0, 0.0}, 0.0, {vx, 0.0}, 0.0, elastic);
+    double worst = 0.0;
+    int withinReach = 0;
+    for (int step = 1; step <= 600; ++step)
+    {
+        const double before = world.bodies[static_cast<size_t>(body)].position.x;
+        withinReach += (a - std::abs(before) < 2.0 * r) ? 1 : 0;
+        Step(world, kDt);
+        const RigidBody& b = world.bodies[static_cast<size_t>(body)];
+        const Folded f = Fold(x0, vx * step * kDt, -a, a);
+        worst = std::max(worst, std::abs(b.position.x - f.x));
+        INFO("step " << step << ": at " << b.position.x << ", expected " << f.x);
+        REQUIRE(std::abs(b.position.x) < face);
+        REQUIRE(std::abs(b.position.x - f.x) <= 1e-6);
+    }
+    INFO("worst position error " << worst << "; " << withinReach << " steps started within reach of a wall");
+    CHECK(withinReach > 10);
+}
+
+TEST_CASE("A ball at 714 bouncing between floor and ceiling under gravity never leaves through the floor",
+          "[world][ccd]")
+{
+    // Radius 0.27, restitution 1, friction 0.2, a little sideways motion, in a closed 10 x 6 box with walls 0.01
+    // thick: it bounces between floor and ceiling about twice a step, and used to leave through the floor in the
+    // step in which it first started within reach of it.
+    World world = WorldWithGravity(kGravity);
+    const Material material = MakeMaterial(1.0, 0.2, 0.2);
+    const double t = 0.01;
+    AddStatic(world, BoxShape(0.5 * t, 3.0 + t), {-5.0 - 0.5 * t, 0.0}, 0.0, material);
+    AddStatic(world, BoxShape(0.5 * t, 3.0 + t), {5.0 + 0.5 * t, 0.0}, 0.0, material);
+    AddStatic(world, BoxShape(5.0 + t, 0.5 * t), {0.0, -3.0 - 0.5 * t}, 0.0, material);
+    AddStatic(world, BoxShape(5.0 + t, 0.5 * t), {0.0, 3.0 + 0.5 * t}, 0.0, material);
+    const int body = AddDynamic(world, DiscShape(0.27), {0.3, -1.0}, 0.0, {2.0, 714.0}, 0.0, material);
+    int64_t hits = 0;
+    for (int step = 1; step <= 600; ++step)
+    {
+        Step(world, kDt);
+        hits += world.counts.hits;
+        const RigidBody& b = world.bodies[static_cast<size_t>(body)];
+        INFO("step " << step << ": at " << b.position.x << ", " << b.position.y << ", velocity " << b.velocity.x << ", "
+                     << b.velocity.y);
+        REQUIRE(std::abs(b.position.x) < 5.0);
+        REQUIRE(std::abs(b.position.y) < 3.0);
+    }
+    CHECK(hits > 600);
+}
+
+TEST_CASE("An elastic ball bouncing several times a step follows the reflected path to 1e-6, in every step",
+          "[world][ccd][property]")
+{
+    // Random widths, radii, speeds (2 to 12 bounces a step) and starting points, 120 steps each, no gravity: the
+    // position after every step is where the unfolded straight path puts it, also in the steps that start within
+    // the ball's reach of a wall.
+    double worst = 0.0;
+    int withinReach = 0;
+    for (int k = 0; k < 200; ++k)
+    {
+        Rng rng(0xb0c0000u + static_cast<uint64_t>(k));
+        const double half = rng.Uniform(0.5, 5.0);
+        const double r = rng.Uniform(0.05, 0.4) * half;
+        const double a = half - r;
+        World world;
+        const Material elastic = MakeMaterial(1.0, 0.0, 0.0);
+        AddStatic(world, BoxShape(kWall, 1e4), {-half - kWall, 0.0}, 0.0, elastic);
+        AddStatic(world, BoxShape(kWall, 1e4), {half + kWall, 0.0}, 0.0, elastic);
+        const double vx = rng.Uniform(2.0, 12.0) * 2.0 * a / kDt * (rng.Chance(0.5) ? 1.0 : -1.0);
+        const double x0 = rng.Uniform(-a, a);
+        const int body = AddDynamic(world, DiscShape(r), {x0, 0.0}, 0.0, {vx, 0.0}, 0.0, elastic);
+        for (int step = 1; step <= 120; ++step)
+        {
+            const double before = world.bodies[static_cast<size_t>(body)].position.x;
+            withinReach += (a - std::abs(before) < 2.0 * r) ? 1 : 0;
+            Step(world, kDt);
+            const RigidBody& b = world.bodies[static_cast<size_t>(body)];
+            // The unfolded path runs forwards from -a; a ball starting leftwards is the mirror image.
+            const double sign = vx > 0.0 ? 1.0 : -1.0;
+            const Folded f = Fold(sign * x0, std::abs(vx) * step * kDt, -a, a);
+            const double error = std::abs(b.position.x - sign * f.x);
+            worst = std::max(worst, error);
+            INFO("case " << k << ", step " << step << ": at " << b.position.x << ", expected " << sign * f.x);
+            REQUIRE(error <= 1e-6);
+        }
+    }
+    INFO("worst position error " << worst << "; " << withinReach << " steps started within reach of a wall");
+    CHECK(withinReach > 1000);
+}

@@ -85,4 +85,13 @@ double OuterRadius(const Shape& shape, Vec2 center)
     return std::sqrt(outer2);
 }
 
+double TurnRadius(const Shape& shape, Vec2 center)
+{
+    if (shape.type == ShapeType::Circle)
+    {
+        return Length(center - shape.circle.center);
+    }
+    return OuterRadius(shape, center);
+}
+
 } // namespace satviz

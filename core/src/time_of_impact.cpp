@@ -7,6 +7,7 @@
 #include <satviz/sweep.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace satviz::detail
@@ -20,15 +21,6 @@ bool IsAwakeDynamic(const RigidBody& body)
     return body.type == BodyType::Dynamic && body.awake;
 }
 
-bool InContact(const std::vector<WorldContact>& contacts, int a, int b)
-{
-    auto it = std::lower_bound(contacts.begin(), contacts.end(), std::make_pair(a, b),
-                               [](const WorldContact& c, const std::pair<int, int>& key) {
-                                   return c.a < key.first || (c.a == key.first && c.b < key.second);
-                               });
-    return it != contacts.end() && it->a == a && it->b == b;
-}
-
 bool SkipSlowPair(const void* context, int i, int j)
 {
     const std::vector<uint8_t>& fast = *static_cast<const std::vector<uint8_t>*>(context);
@@ -39,6 +31,20 @@ bool SkipSlowPair(const void* context, int i, int j)
 constexpr int kMaxAdvances = 64;
 
 } // namespace
+
+bool OutrunsBody(const WorldSettings& settings, const RigidBody& body, Vec2 v, double w, double span)
+{
+    return (Length(v) + std::fabs(w) * body.turnRadius) * span > settings.sweepFraction * body.innerRadius;
+}
+
+bool OutrunsPair(const WorldSettings& settings, const RigidBody& a, Vec2 va, double wa, const RigidBody& b, Vec2 vb,
+                 double wb, double span)
+{
+    const double relative = (Length(vb - va) + std::fabs(wa) * a.turnRadius + std::fabs(wb) * b.turnRadius) * span;
+    const double size = std::min(a.type == BodyType::Dynamic ? a.innerRadius : INFINITY,
+                                 b.type == BodyType::Dynamic ? b.innerRadius : INFINITY);
+    return relative > settings.sweepFraction * size;
+}
 
 TimeOfImpactStage::TimeOfImpactStage(World& world, double dt, const std::vector<Transform>& xfs,
                                      const std::vector<Vec2>& centers, const std::vector<SolverBody>& solverBodies)
@@ -95,7 +101,7 @@ Transform TimeOfImpactStage::PoseAt(int i, double t) const
 double TimeOfImpactStage::Speed(int i) const
 {
     const Motion& m = m_motion[i];
-    return Length(m.v) + std::fabs(m.w) * m_world.bodies[i].outerRadius;
+    return Length(m.v) + std::fabs(m.w) * m_world.bodies[i].turnRadius;
 }
 
 bool TimeOfImpactStage::IsFast(int i) const
@@ -104,12 +110,11 @@ bool TimeOfImpactStage::IsFast(int i) const
     {
         return false;
     }
-    const double travel = Speed(i) * m_dt;
     if (!m_world.settings.sweepOnlyFast)
     {
-        return travel > 0.0;
+        return Speed(i) > 0.0;
     }
-    return travel > m_world.settings.sweepFraction * m_world.bodies[i].innerRadius;
+    return OutrunsBody(m_world.settings, m_world.bodies[i], m_motion[i].v, m_motion[i].w, m_dt);
 }
 
 Aabb TimeOfImpactStage::Reach(int i, double speed) const
@@ -131,10 +136,14 @@ bool TimeOfImpactStage::Approaching(int i, int j, double t, Vec2 normal, const V
     const Motion& mi = m_motion[i];
     const Motion& mj = m_motion[j];
     const double scale = Speed(i) + Speed(j);
+    // A circle's spin moves no point of its outline along the normal; counted, the round-off of the point's
+    // offset times a fast spin would pass for an approach or a parting.
+    const double wi = m_world.bodies[i].turnRadius > 0.0 ? mi.w : 0.0;
+    const double wj = m_world.bodies[j].turnRadius > 0.0 ? mj.w : 0.0;
     for (int k = 0; k < count; ++k)
     {
-        const Vec2 vi = mi.v + mi.w * LeftPerp(points[k] - ci);
-        const Vec2 vj = mj.v + mj.w * LeftPerp(points[k] - cj);
+        const Vec2 vi = mi.v + wi * LeftPerp(points[k] - ci);
+        const Vec2 vj = mj.v + wj * LeftPerp(points[k] - cj);
         // Round-off of the solve leaves a resolved pair approaching by a few ulps of the speeds: that is not an
         // approach, and sweeping it again would find the same hit at the same time.
         if (Dot(vj - vi, normal) < -(1e-9 * scale + minSpeed))
@@ -169,7 +178,7 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
     const RigidBody& b = m_world.bodies[j];
     const Motion& mi = m_motion[i];
     const Motion& mj = m_motion[j];
-    const double approach = Length(mj.v - mi.v) + std::fabs(mi.w) * a.outerRadius + std::fabs(mj.w) * b.outerRadius;
+    const double approach = Length(mj.v - mi.v) + std::fabs(mi.w) * a.turnRadius + std::fabs(mj.w) * b.turnRadius;
     if (!(approach > 0.0))
     {
         return false;
@@ -188,12 +197,16 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
             {
                 points[k] = m.contacts[k].point;
             }
-            if (m.contactCount == 0 || !Approaching(i, j, t, m.normal, points, m.contactCount, CloseSpeed(t)))
+            if (m.contactCount > 0 && Approaching(i, j, t, m.normal, points, m.contactCount, CloseSpeed(t)))
             {
-                return false;
+                event = {t, i, j, m_stamp[i], m_stamp[j], m.normal, {points[0], points[1]}, m.contactCount};
+                return true;
             }
-            event = {t, i, j, m_stamp[i], m_stamp[j], m.normal, {points[0], points[1]}, m.contactCount};
-            return true;
+            // Parting where they touch (a hit just resolved): turning, another point of one can still meet the
+            // other within the step. Advance by a time in which no point moves farther than the slop, so a new
+            // approach is caught before the overlap grows beyond it.
+            t += tolerance / (approach * m_dt);
+            continue;
         }
         if (m.gap <= tolerance)
         {
@@ -229,9 +242,9 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
     return false;
 }
 
-void TimeOfImpactStage::SweepPair(int i, int j)
+void TimeOfImpactStage::SweepPair(int i, int j, bool afterHit)
 {
-    if (!m_fast[i] && !m_fast[j])
+    if (!afterHit && !m_fast[i] && !m_fast[j])
     {
         return;
     }
@@ -249,18 +262,13 @@ void TimeOfImpactStage::SweepPair(int i, int j)
     const Motion& mi = m_motion[i];
     const Motion& mj = m_motion[j];
     const double span = (1.0 - t0) * m_dt;
-    const double turning = (std::fabs(mi.w) * a.outerRadius + std::fabs(mj.w) * b.outerRadius) * span;
+    const double turning = (std::fabs(mi.w) * a.turnRadius + std::fabs(mj.w) * b.turnRadius) * span;
     // Bodies that move together (a pile falling as one) are not swept against each other: what counts is how far
     // a point of one can move relative to the other within the rest of the step.
-    if (m_world.settings.sweepOnlyFast)
+    if (!afterHit && m_world.settings.sweepOnlyFast &&
+        !OutrunsPair(m_world.settings, a, mi.v, mi.w, b, mj.v, mj.w, span))
     {
-        const double relative = Length(mj.v - mi.v) * span + turning;
-        const double size = std::min(a.type == BodyType::Dynamic ? a.innerRadius : INFINITY,
-                                     b.type == BodyType::Dynamic ? b.innerRadius : INFINITY);
-        if (!(relative > m_world.settings.sweepFraction * size))
-        {
-            return;
-        }
+        return;
     }
     ++m_world.counts.swept;
     Event event;
@@ -304,6 +312,21 @@ void TimeOfImpactStage::SweepPair(int i, int j)
 void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
 {
     World& world = m_world;
+    // Each hit's lever arms, from the centres of mass at the time of that hit. Hits taken together are at times a
+    // little apart, and a body's centre at the latest of them, seen from an earlier hit's point, would be off by
+    // how far it moved in between: for a ball spinning fast, enough to turn its spin into a false speed along the
+    // normal, which the solver would cancel instead of the ball's real approach.
+    std::vector<std::array<Vec2, 4>> arms(group.size());
+    for (size_t e = 0; e < group.size(); ++e)
+    {
+        const Event& event = group[e];
+        const Vec2 ci = CenterAt(event.i, event.t), cj = CenterAt(event.j, event.t);
+        for (int k = 0; k < event.count; ++k)
+        {
+            arms[e][2 * k] = event.points[k] - ci;
+            arms[e][2 * k + 1] = event.points[k] - cj;
+        }
+    }
     // The bodies of the hits move to the time of their hit; a sleeping body that is hit wakes.
     std::vector<int> bodies;
     for (const Event& event : group)
@@ -350,8 +373,10 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
     std::vector<SolverContact> contacts;
     std::vector<uint8_t> stopped(bodies.size(), 0);
     ContactSolveTrace* trace = world.trace;
-    for (const Event& event : group)
+    std::vector<int> contactOf(group.size(), -1);
+    for (size_t e = 0; e < group.size(); ++e)
     {
+        const Event& event = group[e];
         const int i = event.i, j = event.j;
         if (event.count == 0)
         {
@@ -369,8 +394,8 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
         double approach[2] = {0.0, 0.0};
         for (int k = 0; k < c.count; ++k)
         {
-            c.points[k].rA = event.points[k] - m_motion[i].center;
-            c.points[k].rB = event.points[k] - m_motion[j].center;
+            c.points[k].rA = arms[e][2 * k];
+            c.points[k].rB = arms[e][2 * k + 1];
             approach[k] = Dot(RelativeVelocity(solver[c.a], solver[c.b], c.points[k].rA, c.points[k].rB), c.normal);
         }
         // A hit within the step is taken at the surface (no overlap) with the velocities of the move.
@@ -385,6 +410,7 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
             }
             ++trace->hits;
         }
+        contactOf[e] = static_cast<int>(contacts.size());
         contacts.push_back(c);
         ++world.counts.hits;
     }
@@ -405,6 +431,27 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
         }
     }
     ApplyRestitution(contacts, solver, energyBefore, world.settings.velocityIterations);
+    // Whether each hit still approaches after the solve, measured at its own points and lever arms. Round-off of
+    // the solve leaves a resolved pair approaching by a few ulps of the speeds: that is not an approach.
+    std::vector<uint8_t> approaching(group.size(), 0);
+    for (size_t e = 0; e < group.size(); ++e)
+    {
+        if (contactOf[e] < 0)
+        {
+            continue;
+        }
+        const SolverContact& c = contacts[static_cast<size_t>(contactOf[e])];
+        const SolverBody& sa = solver[static_cast<size_t>(c.a)];
+        const SolverBody& sb = solver[static_cast<size_t>(c.b)];
+        // The speeds the hit began with set the scale of its round-off: a plank stopped dead is left with speeds
+        // of 1e-251, not an approach.
+        const double scale = Speed(group[e].i) + Speed(group[e].j);
+        for (int k = 0; k < c.count; ++k)
+        {
+            const double vn = Dot(RelativeVelocity(sa, sb, c.points[k].rA, c.points[k].rB), c.normal);
+            approaching[e] = approaching[e] || vn < -1e-9 * scale;
+        }
+    }
     for (const SolverContact& c : contacts)
     {
         if (c.traced)
@@ -441,23 +488,25 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
         const double speed = Speed(k);
         const Aabb reach = Reach(k, speed);
         const Aabb& drawn = m_reach[k];
-        if (reach.min.x < drawn.min.x || reach.min.y < drawn.min.y || reach.max.x > drawn.max.x ||
+        if (!m_connected[k] || reach.min.x < drawn.min.x || reach.min.y < drawn.min.y || reach.max.x > drawn.max.x ||
             reach.max.y > drawn.max.y)
         {
-            // It can now reach beyond the box its pairs were found with: find the bodies it can reach now.
+            // It can now reach beyond the box its pairs were found with, or it was slow and its pairs with slow
+            // bodies were never listed: find every body it can reach now.
             m_reach[k] = AabbUnion(drawn, reach);
+            m_connected[k] = 1;
             for (int o = 0; o < static_cast<int>(world.bodies.size()); ++o)
             {
-                if (o != k && AabbOverlap(m_reach[k], m_reach[o]) &&
-                    !InContact(world.contacts, std::min(k, o), std::max(k, o)))
+                if (o != k && AabbOverlap(m_reach[k], m_reach[o]))
                 {
                     Connect(k, o);
                 }
             }
         }
     }
-    // The pairs of the bodies that were hit are swept again from now. A pair that was just resolved is swept only
-    // while it still approaches.
+    // The pairs of the bodies that were hit are swept again from now, whatever their speeds: a hit can send a slow
+    // body into a wall it rested against, and the solver's contact with that wall held it only at the velocities of
+    // the start of the step. A pair that was just resolved is swept only while it still approaches.
     std::vector<std::pair<int, int>> swept;
     for (const int k : bodies)
     {
@@ -474,26 +523,24 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
             }
             swept.push_back(pair);
             bool resolved = false;
-            bool approaching = false;
-            for (const Event& event : group)
+            bool stillApproaching = false;
+            for (size_t e = 0; e < group.size(); ++e)
             {
-                if (event.i == pair.first && event.j == pair.second)
+                if (group[e].i == pair.first && group[e].j == pair.second)
                 {
                     resolved = true;
-                    approaching = approaching ||
-                                  (event.count > 0 &&
-                                   Approaching(event.i, event.j, event.t, event.normal, event.points, event.count));
+                    stillApproaching = stillApproaching || approaching[e];
                 }
             }
             // A pair that turns can meet again elsewhere within the step even when its contact points part.
-            const double turning = (std::fabs(m_motion[pair.first].w) * world.bodies[pair.first].outerRadius +
-                                    std::fabs(m_motion[pair.second].w) * world.bodies[pair.second].outerRadius) *
+            const double turning = (std::fabs(m_motion[pair.first].w) * world.bodies[pair.first].turnRadius +
+                                    std::fabs(m_motion[pair.second].w) * world.bodies[pair.second].turnRadius) *
                                    (1.0 - group.front().t) * m_dt;
-            if (resolved && !approaching && turning <= 0.25 * world.settings.linearSlop)
+            if (resolved && !stillApproaching && turning <= 0.25 * world.settings.linearSlop)
             {
                 continue;
             }
-            SweepPair(pair.first, pair.second);
+            SweepPair(pair.first, pair.second, true);
         }
     }
 }
@@ -521,20 +568,16 @@ void TimeOfImpactStage::Run()
         m_near.assign(n, {});
         for (const auto& [i, j] : pairs)
         {
-            if (!InContact(world.contacts, i, j))
-            {
-                m_near[i].push_back(j);
-                m_near[j].push_back(i);
-            }
+            m_near[i].push_back(j);
+            m_near[j].push_back(i);
         }
+        // A fast body's pairs with every body its reach meets are listed; a slow body's only those with fast ones.
+        m_connected = m_fast;
         m_stamp.assign(n, 0);
         m_hits.assign(n, 0);
         for (const auto& [i, j] : pairs)
         {
-            if (!InContact(world.contacts, i, j))
-            {
-                SweepPair(i, j);
-            }
+            SweepPair(i, j);
         }
         std::vector<Event> group;
         while (!m_queue.empty())

@@ -12,6 +12,16 @@
 namespace satviz::detail
 {
 
+/// The sweep's rule for one body (WorldSettings::sweepFraction): a point of it moving at (v, w) can travel more
+/// than sweepFraction of its inner radius within `span` time units.
+bool OutrunsBody(const WorldSettings& settings, const RigidBody& body, Vec2 v, double w, double span);
+
+/// The sweep's rule for a pair: a point of one body can travel, relative to the other, more than sweepFraction of
+/// the smaller inner radius of the pair's dynamic bodies within `span`. Bodies that move together (a pile falling
+/// as one) do not outrun each other. A body that does not move has velocities 0.
+bool OutrunsPair(const WorldSettings& settings, const RigidBody& a, Vec2 va, double wa, const RigidBody& b, Vec2 vb,
+                 double wb, double span);
+
 /// Moves every awake body over the step. Fast bodies are swept first and their hits resolved in time order.
 ///
 /// Outline (event-driven time of impact, after Mirtich's "Impulse-based dynamic simulation", 1996, and Catto's
@@ -20,7 +30,11 @@ namespace satviz::detail
 ///     straight line and turns at a constant rate between hits.
 ///  2. A body is fast when a point of it can move more than sweepFraction of its inner radius in the step. Its
 ///     reach (a box holding every place it can be within the step) is paired by sort and sweep with the bounds of
-///     the other bodies; pairs already in contact at the start of the step are left to the solver.
+///     the other bodies. Every such pair whose bodies outrun each other (OutrunsPair) is swept, in contact or not:
+///     the solver's contacts hold a pair only to first order, at the velocities it solved, while the sweep follows
+///     the pair to the end of the step and through the hits that change its velocities. (The step gives such a
+///     pair no speculative contact, so the solver does not take its bounce early; a contact it has is one of
+///     shapes already touching.)
 ///  3. Each such pair is swept from the later of the two bodies' times: by Sweep when the turning of both moves no
 ///     point more than a quarter of the slop (exact for translation), else by conservative advancement: the SAT
 ///     gap, a lower bound of the distance, divided by the fastest approach any two points can make (relative
@@ -42,6 +56,9 @@ class TimeOfImpactStage
                       const std::vector<SolverBody>& solverBodies);
     /// Moves the bodies to the end of the step.
     void Run();
+    /// Whether body i took a time-ordered hit in the step (after Run): its pose is the sweep's, not the one the
+    /// step's contacts were solved for.
+    bool TookHit(int i) const { return !m_hits.empty() && m_hits[static_cast<size_t>(i)] > 0; }
 
   private:
     struct Motion
@@ -77,7 +94,7 @@ class TimeOfImpactStage
     Aabb Reach(int i, double speed) const;
     bool Approaching(int i, int j, double t, Vec2 normal, const Vec2* points, int count, double minSpeed = 0.0) const;
     double CloseSpeed(double t) const;
-    void SweepPair(int i, int j);
+    void SweepPair(int i, int j, bool afterHit = false);
     bool Advance(int i, int j, double t0, Event& event);
     void Resolve(const std::vector<Event>& group);
     void Connect(int i, int j);
@@ -88,6 +105,7 @@ class TimeOfImpactStage
     std::vector<Motion> m_motion;
     std::vector<uint8_t> m_fast;
     std::vector<Aabb> m_reach;
+    std::vector<uint8_t> m_connected; // m_near lists every body the reach meets
     std::vector<uint32_t> m_stamp;
     std::vector<int> m_hits;
     std::vector<std::vector<int>> m_near;

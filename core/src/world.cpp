@@ -208,6 +208,7 @@ int AddBody(World& world, const BodyDef& def)
     }
     body.innerRadius = InnerRadius(def.shape, mass.center);
     body.outerRadius = OuterRadius(def.shape, mass.center);
+    body.turnRadius = TurnRadius(def.shape, mass.center);
     world.bodies.push_back(std::move(body));
     world.broadphase.order.clear();
     return static_cast<int>(world.bodies.size()) - 1;
@@ -285,15 +286,18 @@ struct Stepper
     const WorldSettings& settings;
     std::vector<SolverBody> solverBodies;
     std::vector<SolverContact> solverContacts;
-    std::vector<int> solveOrder;      // solverContacts' indices in the order the passes visit them, top down
-    std::vector<double> heights;      // per solver contact: how high its first point lies against gravity
-    std::vector<double> energyBefore; // per body, after gravity and before the contacts
-    std::vector<Transform> xfs;       // transforms at the start of the step (one sine and cosine per body)
-    std::vector<Vec2> centers;        // centres of mass at the start of the step
+    std::vector<SolverContact> guards; // the points of swept pairs: for the position passes only
+    std::vector<int> solveOrder;       // solverContacts' indices in the order the passes visit them, top down
+    std::vector<double> heights;       // per solver contact: how high its first point lies against gravity
+    std::vector<double> energyBefore;  // per body, after gravity and before the contacts
+    std::vector<Transform> xfs;        // transforms at the start of the step (one sine and cosine per body)
+    std::vector<Vec2> centers;         // centres of mass at the start of the step
+    std::vector<uint8_t> hit;          // per body: took a time-ordered hit in the step (Move)
 
     Stepper(World& w, double step) : world(w), dt(step), settings(w.settings) {}
 
     void FindContacts();
+    bool LeftToSweep(int i, int j) const;
     void SolveVelocities();
     void StoreImpulses();
     void Move();
@@ -301,6 +305,28 @@ struct Stepper
     void Sleep();
     void OrderTopDown();
 };
+
+// Whether the positions stage will sweep the pair (i, j), judged from the velocities the bodies would have after
+// the step's gravity: one of them outruns its own size and they outrun each other (detail::OutrunsBody,
+// OutrunsPair). Such a pair, still apart, gets no speculative contact: a speculative contact holds its pair at the
+// velocities the solver leaves, to first order, from the start of the step, so it would bounce a fast body off a
+// face it has not reached yet, and could not follow the body after a hit elsewhere changed its course. The sweep
+// finds the hit at its time instead. Its points are kept as a guard (WorldContact::swept): the velocity passes
+// ignore them, and the position passes, which push bodies out of each other, see that a ball skimming a floor
+// is there and do not push it through.
+bool Stepper::LeftToSweep(int i, int j) const
+{
+    const RigidBody& a = world.bodies[static_cast<size_t>(i)];
+    const RigidBody& b = world.bodies[static_cast<size_t>(j)];
+    const bool movesA = IsAwakeDynamic(a), movesB = IsAwakeDynamic(b);
+    const Vec2 va = movesA ? a.velocity + dt * settings.gravity : Vec2{};
+    const Vec2 vb = movesB ? b.velocity + dt * settings.gravity : Vec2{};
+    const double wa = movesA ? a.angularVelocity : 0.0;
+    const double wb = movesB ? b.angularVelocity : 0.0;
+    const bool fast = (movesA && detail::OutrunsBody(settings, a, va, wa, dt)) ||
+                      (movesB && detail::OutrunsBody(settings, b, vb, wb, dt));
+    return fast && detail::OutrunsPair(settings, a, va, wa, b, vb, wb, dt);
+}
 
 // Stage 1: bounds, broadphase, narrowphase, warm starting, waking.
 void Stepper::FindContacts()
@@ -339,10 +365,11 @@ void Stepper::FindContacts()
             const RigidBody& body = bodies[i];
             // A body that turns fast is left to the sweep: a contact found at the start of the step follows a
             // turn only to first order.
-            if (IsAwakeDynamic(body) && std::fabs(body.angularVelocity) * dt <= settings.speculativeTurn)
+            if (IsAwakeDynamic(body) &&
+                (body.turnRadius == 0.0 || std::fabs(body.angularVelocity) * dt <= settings.speculativeTurn))
             {
                 const double move =
-                    dt * (Length(body.velocity) + fall + std::fabs(body.angularVelocity) * body.outerRadius);
+                    dt * (Length(body.velocity) + fall + std::fabs(body.angularVelocity) * body.turnRadius);
                 bodyReach[static_cast<size_t>(i)] = std::min(move, settings.speculativeReach * body.outerRadius);
             }
         }
@@ -402,9 +429,11 @@ void Stepper::FindContacts()
         {
             continue;
         }
-        touching += m.overlap;
-        speculative += !m.overlap;
         WorldContact c;
+        // A pair still apart that the sweep takes gets no speculative contact, only a guard (see LeftToSweep).
+        c.swept = !m.overlap && LeftToSweep(i, j);
+        touching += m.overlap;
+        speculative += !m.overlap && !c.swept;
         c.a = i;
         c.b = j;
         c.normal = m.normal;
@@ -420,7 +449,7 @@ void Stepper::FindContacts()
             p.point = m.contacts[k].point;
             p.separation = m.contacts[k].separation;
             p.key = FeatureKey(m, k);
-            if (old != nullptr)
+            if (old != nullptr && !c.swept)
             {
                 bool matched = false;
                 for (int l = 0; l < old->pointCount; ++l)
@@ -532,11 +561,29 @@ void Stepper::SolveVelocities()
     ContactSolveTrace* trace = world.trace;
     solverContacts.clear();
     solverContacts.reserve(world.contacts.size());
+    guards.clear();
     for (size_t k = 0; k < world.contacts.size(); ++k)
     {
         const WorldContact& wc = world.contacts[k];
         if (!IsAwakeDynamic(bodies[wc.a]) && !IsAwakeDynamic(bodies[wc.b]))
         {
+            continue;
+        }
+        if (wc.swept)
+        {
+            SolverContact g;
+            g.a = wc.a;
+            g.b = wc.b;
+            g.normal = wc.normal;
+            g.normalBody = wc.normalBody;
+            g.count = wc.pointCount;
+            for (int i = 0; i < g.count; ++i)
+            {
+                g.points[i].rA = wc.points[i].point - centers[wc.a];
+                g.points[i].rB = wc.points[i].point - centers[wc.b];
+                g.points[i].separation = wc.points[i].separation;
+            }
+            guards.push_back(g);
             continue;
         }
         SolverContact c;
@@ -670,6 +717,11 @@ void Stepper::Move()
     }
     detail::TimeOfImpactStage stage(world, dt, xfs, centers, solverBodies);
     stage.Run();
+    hit.assign(static_cast<size_t>(n), 0);
+    for (int i = 0; i < n; ++i)
+    {
+        hit[static_cast<size_t>(i)] = stage.TookHit(i) ? 1 : 0;
+    }
 }
 
 // Stage 5: overlap removed by moving the positions, not the velocities (nonlinear Gauss-Seidel: Catto, Box2D).
@@ -691,45 +743,139 @@ void Stepper::CorrectPositions()
         q[i] = MakeRot(angle[i]);
         c[i] = bodies[i].position + Rotate(q[i], bodies[i].localCenter);
     }
+    // Moves bodies a and b apart along n0 at a point with lever arms rA, rB and separation sep, by `factor` of the
+    // overlap beyond the slop.
+    const auto push = [&](int a, int b, Vec2 n0, Vec2 rA, Vec2 rB, double sep, double factor) {
+        const SolverBody& sa = solverBodies[a];
+        const SolverBody& sb = solverBodies[b];
+        double C = factor * (sep + settings.linearSlop);
+        C = std::max(-settings.maxCorrection, std::min(0.0, C));
+        const double rnA = Cross(rA, n0), rnB = Cross(rB, n0);
+        const double K = sa.invMass + sb.invMass + sa.invInertia * rnA * rnA + sb.invInertia * rnB * rnB;
+        if (!(K > 0.0) || C == 0.0)
+        {
+            return;
+        }
+        const Vec2 P = (-C / K) * n0;
+        const double turnA = -sa.invInertia * Cross(rA, P);
+        const double turnB = sb.invInertia * Cross(rB, P);
+        c[a] = c[a] - sa.invMass * P;
+        angle[a] += turnA;
+        q[a] = TurnBy(q[a], turnA);
+        c[b] = c[b] + sb.invMass * P;
+        angle[b] += turnB;
+        q[b] = TurnBy(q[b], turnB);
+    };
+    // One contact's points moved apart by `factor` of their overlap beyond the slop.
+    const auto correct = [&](const SolverContact& sc, double factor) {
+        const int a = sc.a, b = sc.b;
+        // A body that took a hit went where the sweep sent it, which may be far from where this contact was
+        // found: the contact's anchors and normal no longer describe its surroundings (measured from them, a
+        // ball that crossed the room would seem deep in the wall it started beside, and be pushed through the
+        // floor). The sweep leaves its bodies apart; the next step finds their contacts afresh.
+        if (hit[static_cast<size_t>(a)] || hit[static_cast<size_t>(b)])
+        {
+            return;
+        }
+        const SolverBody& sa = solverBodies[a];
+        const SolverBody& sb = solverBodies[b];
+        const Rot qa0 = xfs[a].q, qb0 = xfs[b].q;
+        // A circle turning about its centre stays where it is: its anchor and a normal it holds do not turn with
+        // it (a ball spinning a full turn in a step would otherwise be pushed along a normal turned any which
+        // way). Between two circles the normal joins their centres.
+        const bool turnsA = bodies[a].turnRadius > 0.0, turnsB = bodies[b].turnRadius > 0.0;
+        const int owner = sc.normalBody == 1 ? b : a;
+        Vec2 n0 = sc.normal;
+        if (!turnsA && !turnsB)
+        {
+            const Vec2 d = c[b] - c[a];
+            const double length = Length(d);
+            if (length > 0.0)
+            {
+                n0 = (1.0 / length) * d;
+            }
+        }
+        else if (owner == a ? turnsA : turnsB)
+        {
+            n0 = Rotate(q[owner], InvRotate(xfs[owner].q, sc.normal));
+        }
+        for (int k = 0; k < sc.count; ++k)
+        {
+            const detail::SolverPoint& p = sc.points[k];
+            const Vec2 rA = turnsA ? Rotate(q[a], InvRotate(qa0, p.rA)) : p.rA;
+            const Vec2 rB = turnsB ? Rotate(q[b], InvRotate(qb0, p.rB)) : p.rB;
+            const double sep = p.separation + Dot((c[b] + rB) - (c[a] + rA), n0);
+            // A bounce that carries the point out of this much overlap within the step is left to do so: the
+            // separating speed the velocity passes left at the point, not the one the restitution asked for,
+            // which other contacts may have taken back.
+            const double C = std::max(-settings.maxCorrection, std::min(0.0, factor * (sep + settings.linearSlop)));
+            if (p.bounce > 0.0 && Dot(detail::RelativeVelocity(sa, sb, p.rA, p.rB), sc.normal) * dt >= -C)
+            {
+                continue;
+            }
+            push(a, b, n0, rA, rB, sep, factor);
+        }
+    };
+    // A guard's pair moved fast against each other: anchors found at the start of the step say nothing of where
+    // they are now, so its overlap is measured afresh, by Collide at the present positions.
+    const auto guard = [&](const SolverContact& g, double factor) {
+        const int a = g.a, b = g.b;
+        if (hit[static_cast<size_t>(a)] || hit[static_cast<size_t>(b)])
+        {
+            return;
+        }
+        const auto pose = [&](int i) {
+            Transform xf;
+            xf.q = q[i];
+            xf.p = c[i] - Rotate(q[i], bodies[i].localCenter);
+            return xf;
+        };
+        const Manifold m = Collide(bodies[a].shape, pose(a), bodies[b].shape, pose(b));
+        if (!m.overlap)
+        {
+            return;
+        }
+        for (int k = 0; k < m.contactCount; ++k)
+        {
+            const Vec2 point = m.contacts[k].point;
+            push(a, b, m.normal, point - c[a], point - c[b], m.contacts[k].separation, factor);
+        }
+    };
     for (int pass = 0; pass < settings.positionIterations; ++pass)
     {
         for (const int k : solveOrder)
         {
-            const SolverContact& sc = solverContacts[static_cast<size_t>(k)];
-            const int a = sc.a, b = sc.b;
-            const SolverBody& sa = solverBodies[a];
-            const SolverBody& sb = solverBodies[b];
-            const Rot qa0 = xfs[a].q, qb0 = xfs[b].q;
-            const int owner = sc.normalBody == 1 ? b : a;
-            const Vec2 n0 = Rotate(q[owner], InvRotate(xfs[owner].q, sc.normal));
-            for (int k = 0; k < sc.count; ++k)
+            correct(solverContacts[static_cast<size_t>(k)], settings.correctionFactor);
+        }
+        for (const SolverContact& g : guards)
+        {
+            guard(g, settings.correctionFactor);
+        }
+    }
+    // Last, the contacts with bodies that do not move (static or asleep) take out their whole overlap beyond the
+    // slop. The passes share each overlap between the bodies by their masses: a heavy body landing on a light
+    // sliver that lies on the floor pushes the sliver down as far as the floor pushes it up, and under enough
+    // weight it sinks into the floor, and through a thin one. Nothing can push back a static body, so its overlap
+    // is the one that must go.
+    const auto fixed = [&](const SolverContact& sc) {
+        const SolverBody& sa = solverBodies[sc.a];
+        const SolverBody& sb = solverBodies[sc.b];
+        return (sa.invMass == 0.0 && sa.invInertia == 0.0) || (sb.invMass == 0.0 && sb.invInertia == 0.0);
+    };
+    if (settings.positionIterations > 0)
+    {
+        for (const int k : solveOrder)
+        {
+            if (fixed(solverContacts[static_cast<size_t>(k)]))
             {
-                const detail::SolverPoint& p = sc.points[k];
-                const Vec2 rA = Rotate(q[a], InvRotate(qa0, p.rA));
-                const Vec2 rB = Rotate(q[b], InvRotate(qb0, p.rB));
-                const double sep = p.separation + Dot((c[b] + rB) - (c[a] + rA), n0);
-                double C = settings.correctionFactor * (sep + settings.linearSlop);
-                C = std::max(-settings.maxCorrection, std::min(0.0, C));
-                // A bounce that carries the point out of this much overlap within the step is left to do so.
-                if (p.bounce * dt >= -C)
-                {
-                    continue;
-                }
-                const double rnA = Cross(rA, n0), rnB = Cross(rB, n0);
-                const double K = sa.invMass + sb.invMass + sa.invInertia * rnA * rnA + sb.invInertia * rnB * rnB;
-                if (!(K > 0.0) || C == 0.0)
-                {
-                    continue;
-                }
-                const Vec2 P = (-C / K) * n0;
-                const double turnA = -sa.invInertia * Cross(rA, P);
-                const double turnB = sb.invInertia * Cross(rB, P);
-                c[a] = c[a] - sa.invMass * P;
-                angle[a] += turnA;
-                q[a] = TurnBy(q[a], turnA);
-                c[b] = c[b] + sb.invMass * P;
-                angle[b] += turnB;
-                q[b] = TurnBy(q[b], turnB);
+                correct(solverContacts[static_cast<size_t>(k)], 1.0);
+            }
+        }
+        for (const SolverContact& g : guards)
+        {
+            if (fixed(g))
+            {
+                guard(g, 1.0);
             }
         }
     }

@@ -31,4 +31,9 @@ double InnerRadius(const Shape& shape, Vec2 center);
 /// Bounds how far a point of the shape moves when the body turns. O(n) for an n-gon.
 double OuterRadius(const Shape& shape, Vec2 center);
 
+/// Bounds how far the outline of the shape moves, per radian, when the body turns about `center`: OuterRadius for a
+/// polygon; for a circle the offset of its centre from `center` alone, since turning about its own centre leaves a
+/// circle where it is (a spinning ball reaches no farther than a still one). O(n) for an n-gon.
+double TurnRadius(const Shape& shape, Vec2 center);
+
 } // namespace satviz

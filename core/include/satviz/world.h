@@ -53,7 +53,8 @@ struct RigidBody
     double invInertia = 0.0;           ///< 1 / inertia, 0 for a static body
     Vec2 localCenter{};                ///< centre of mass in the body frame
     double innerRadius = 0.0;          ///< InnerRadius about the centre of mass: the body's size for the sweep rule
-    double outerRadius = 0.0;          ///< OuterRadius about the centre of mass: bounds a turning point's motion
+    double outerRadius = 0.0;          ///< OuterRadius about the centre of mass: how far the shape reaches
+    double turnRadius = 0.0;           ///< TurnRadius about the centre of mass: bounds how far turning moves it
     bool awake = true;                 ///< false while asleep: not moved, not solved, until something touches it
     double sleepTime = 0.0;            ///< how long the body has been slower than the sleep thresholds
 
@@ -160,6 +161,9 @@ struct WorldContact
     WorldContactPoint points[2]{}; ///< contact points, valid up to pointCount
     int pointCount = 0;            ///< 1 or 2
     ContactMaterial material{};    ///< combined restitution and frictions
+    /// The pair is still apart and left to the sweep (fast against each other, see Step): the velocity passes
+    /// ignore these points, which keep only the position passes from pushing one body into the other.
+    bool swept = false;
 };
 
 /// The world: bodies, settings and what the last step found.
@@ -208,15 +212,17 @@ std::string ValidateBodyDef(const BodyDef& def);
 ///     multiple that gives a lone contact its bounce speed; in a group of contacts that mixes restitutions the
 ///     bounce impulses are scaled down as far as needed to return no more kinetic energy than the group had; and
 ///     push-only passes stop any approach a bounce made at another point.
-///  3. Positions: each body moves with its velocity. A fast body (see WorldSettings::sweepFraction) is swept
-///     against the bodies its swept box meets that it has no contact with (in practice bullets and fast spinners,
-///     which have no speculative contacts): translation by Sweep, turning by conservative advancement (the
-///     distance bound of SAT divided by the fastest approach a turning point can make). The earliest hit of the
-///     world comes first: its two bodies move to that time, the hit is resolved with the same impulses, their
-///     later hits are found again, and the step goes on, so two hits in one step happen in order and no body
-///     passes through another at any speed.
+///  3. Positions: each body moves with its velocity. A pair whose bodies move fast against each other (see
+///     WorldSettings::sweepFraction) is swept, in contact or not (such a pair, still apart, gets no speculative
+///     contact in stage 1, only a guard for the position passes): translation by Sweep, turning by conservative
+///     advancement (the distance bound of SAT divided by the fastest approach a turning point can make). The
+///     earliest hit of the world comes first: its two bodies move to that time, the hit is resolved with the same
+///     impulses, every pair of the two bodies is swept again from that time whatever its speed, and the step goes
+///     on, so two hits in one step happen in order and a hit cannot push a body through what it rests on.
 ///  4. Overlap: nonlinear Gauss-Seidel on the positions (Catto; Box2D 2.4): each pass measures a point's overlap at
-///     the bodies' present positions and moves them apart by correctionFactor times the overlap beyond the slop.
+///     the bodies' present positions and moves them apart by correctionFactor times the overlap beyond the slop;
+///     a last pass takes out the whole overlap beyond the slop at the contacts with bodies that do not move. The
+///     contacts of a body that took a hit are left out: the sweep put it where it is.
 ///     It changes positions only, so removing overlap adds no kinetic energy; a bouncing point whose bounce
 ///     carries it out of the overlap within the step is left to do so. Chosen over split impulses (pseudo-velocities
 ///     from the overlap at the start of the step) because it sees the overlap after the move: a body that sank during
