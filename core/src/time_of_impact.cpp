@@ -21,6 +21,15 @@ bool IsAwakeDynamic(const RigidBody& body)
     return body.type == BodyType::Dynamic && body.awake;
 }
 
+bool InContact(const std::vector<WorldContact>& contacts, int a, int b)
+{
+    auto it = std::lower_bound(contacts.begin(), contacts.end(), std::make_pair(a, b),
+                               [](const WorldContact& c, const std::pair<int, int>& key) {
+                                   return c.a < key.first || (c.a == key.first && c.b < key.second);
+                               });
+    return it != contacts.end() && it->a == a && it->b == b && !it->guard;
+}
+
 bool SkipSlowPair(const void* context, int i, int j)
 {
     const std::vector<uint8_t>& fast = *static_cast<const std::vector<uint8_t>*>(context);
@@ -32,15 +41,19 @@ constexpr int kMaxAdvances = 64;
 
 } // namespace
 
+// Speeds by std::sqrt rather than Length's std::hypot: these only decide which pairs to sweep, and run for every
+// candidate pair of every step.
 bool OutrunsBody(const WorldSettings& settings, const RigidBody& body, Vec2 v, double w, double span)
 {
-    return (Length(v) + std::fabs(w) * body.turnRadius) * span > settings.sweepFraction * body.innerRadius;
+    return (std::sqrt(LengthSquared(v)) + std::fabs(w) * body.turnRadius) * span >
+           settings.sweepFraction * body.innerRadius;
 }
 
 bool OutrunsPair(const WorldSettings& settings, const RigidBody& a, Vec2 va, double wa, const RigidBody& b, Vec2 vb,
                  double wb, double span)
 {
-    const double relative = (Length(vb - va) + std::fabs(wa) * a.turnRadius + std::fabs(wb) * b.turnRadius) * span;
+    const double relative =
+        (std::sqrt(LengthSquared(vb - va)) + std::fabs(wa) * a.turnRadius + std::fabs(wb) * b.turnRadius) * span;
     const double size = std::min(a.type == BodyType::Dynamic ? a.innerRadius : INFINITY,
                                  b.type == BodyType::Dynamic ? b.innerRadius : INFINITY);
     return relative > settings.sweepFraction * size;
@@ -115,6 +128,11 @@ bool TimeOfImpactStage::IsFast(int i) const
         return Speed(i) > 0.0;
     }
     return OutrunsBody(m_world.settings, m_world.bodies[i], m_motion[i].v, m_motion[i].w, m_dt);
+}
+
+bool TimeOfImpactStage::TurnsFast(int i) const
+{
+    return m_world.bodies[i].turnRadius > 0.0 && std::fabs(m_motion[i].w) * m_dt > m_world.settings.speculativeTurn;
 }
 
 Aabb TimeOfImpactStage::Reach(int i, double speed) const
@@ -203,9 +221,15 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
                 return true;
             }
             // Parting where they touch (a hit just resolved): turning, another point of one can still meet the
-            // other within the step. Advance by a time in which no point moves farther than the slop, so a new
-            // approach is caught before the overlap grows beyond it.
-            t += tolerance / (approach * m_dt);
+            // other within the step. Advance by a time in which the overlap along the normal cannot grow by more
+            // than the slop (see the closing speed below), so a new approach is caught before it does.
+            const double closing = std::max(0.0, -Dot(mj.v - mi.v, m.normal)) + std::fabs(mi.w) * a.turnRadius +
+                                   std::fabs(mj.w) * b.turnRadius;
+            if (!(closing > 0.0))
+            {
+                return false;
+            }
+            t += tolerance / (closing * m_dt);
             continue;
         }
         if (m.gap <= tolerance)
@@ -227,10 +251,18 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
                     return true;
                 }
             }
-            t += tolerance / (approach * m_dt);
-            continue;
         }
-        t += (m.gap - 0.5 * tolerance) / (approach * m_dt);
+        // The gap is the shapes' separation along the fixed direction m.normal; along it a point of B gains on a
+        // point of A at most at their relative speed along it plus what turning adds (a point at the turn radius
+        // moves at the angular speed times it, in any direction). Bodies sliding past each other close slowly
+        // along it however fast they move, and a pair that cannot close along it stays apart to the step's end.
+        const double closing = std::max(0.0, -Dot(mj.v - mi.v, m.normal)) + std::fabs(mi.w) * a.turnRadius +
+                               std::fabs(mj.w) * b.turnRadius;
+        if (!(closing > 0.0))
+        {
+            return false;
+        }
+        t += (m.gap <= tolerance ? tolerance : m.gap - 0.5 * tolerance) / (closing * m_dt);
     }
     if (t < 1.0)
     {
@@ -292,7 +324,10 @@ void TimeOfImpactStage::SweepPair(int i, int j, bool afterHit)
             {
                 event.points[k] = r.initial.contacts[k].point;
             }
-            if (!Approaching(i, j, t0, event.normal, event.points, event.count))
+            // Already touching (a contact of the step, or a pair just parted by a hit): a hit only if it closes
+            // faster than the contact could hold within the slop to the step's end; slower, the next step's
+            // contact takes it, and a resting pile does not turn into a string of tiny hits.
+            if (!Approaching(i, j, t0, event.normal, event.points, event.count, CloseSpeed(t0)))
             {
                 return;
             }
@@ -474,9 +509,17 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
         body.angularVelocity = solver[s].w;
         Motion& m = m_motion[k];
         ++m_stamp[k];
-        if (stopped[s] || ++m_hits[k] >= world.settings.maxHitsPerBody)
+        const bool wedged = ++m_hits[k] >= world.settings.maxHitsPerBody;
+        if (stopped[s] || wedged)
         {
-            // Stops where it is for the rest of the step.
+            // Stops where it is for the rest of the step. A body that took maxHitsPerBody hits is wedged, and
+            // stops at rest: kept, the speed it had would carry no motion this step and yet be counted, and under
+            // gravity it would gain energy the body never fell for.
+            if (wedged)
+            {
+                body.velocity = {};
+                body.angularVelocity = 0.0;
+            }
             m.v = {};
             m.w = 0.0;
             m_fast[k] = 0;
@@ -504,9 +547,8 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
             }
         }
     }
-    // The pairs of the bodies that were hit are swept again from now, whatever their speeds: a hit can send a slow
-    // body into a wall it rested against, and the solver's contact with that wall held it only at the velocities of
-    // the start of the step. A pair that was just resolved is swept only while it still approaches.
+    // The pairs of the bodies that were hit are swept again from now: the solver's contacts held them only at the
+    // velocities of the start of the step. A pair that was just resolved is swept only while it still approaches.
     std::vector<std::pair<int, int>> swept;
     for (const int k : bodies)
     {
@@ -540,7 +582,18 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
             {
                 continue;
             }
-            SweepPair(pair.first, pair.second, true);
+            // Against a static body, whatever the speeds: the hit may have sent a slow body into the wall it rests
+            // on, and nothing else would stop it there. Other pairs are swept only if fast against each other, and
+            // not if the step found them in contact: a slow body can sink into another by less than half its size,
+            // and the next step's contact undoes that (waking it, if it sleeps), where sweeping every neighbour of a
+            // body in a pile would pass each hit on through the whole pile, one pair at a time.
+            const bool wall =
+                world.bodies[pair.first].type == BodyType::Static || world.bodies[pair.second].type == BodyType::Static;
+            if (!wall && !resolved && InContact(world.contacts, pair.first, pair.second))
+            {
+                continue;
+            }
+            SweepPair(pair.first, pair.second, wall);
         }
     }
 }
@@ -577,6 +630,13 @@ void TimeOfImpactStage::Run()
         m_hits.assign(n, 0);
         for (const auto& [i, j] : pairs)
         {
+            // A pair the step's contacts hold is left to them until a hit changes one of its bodies' course, unless
+            // the solver left one of them turning faster than a contact follows (WorldSettings::speculativeTurn):
+            // a contact found at the start of the step follows a turn only to first order.
+            if (InContact(world.contacts, i, j) && !TurnsFast(i) && !TurnsFast(j))
+            {
+                continue;
+            }
             SweepPair(i, j);
         }
         std::vector<Event> group;

@@ -30,11 +30,11 @@ bool OutrunsPair(const WorldSettings& settings, const RigidBody& a, Vec2 va, dou
 ///     straight line and turns at a constant rate between hits.
 ///  2. A body is fast when a point of it can move more than sweepFraction of its inner radius in the step. Its
 ///     reach (a box holding every place it can be within the step) is paired by sort and sweep with the bounds of
-///     the other bodies. Every such pair whose bodies outrun each other (OutrunsPair) is swept, in contact or not:
-///     the solver's contacts hold a pair only to first order, at the velocities it solved, while the sweep follows
-///     the pair to the end of the step and through the hits that change its velocities. (The step gives such a
-///     pair no speculative contact, so the solver does not take its bounce early; a contact it has is one of
-///     shapes already touching.)
+///     the other bodies. Every such pair whose bodies outrun each other (OutrunsPair) is swept, except the pairs the
+///     step's contacts hold, which are left to them while neither body takes a hit nor turns faster than a contact
+///     follows (speculativeTurn): the solver's contacts hold a pair only to first order, at the velocities it
+///     solved. (The step gives a pair that outruns no speculative contact, so the solver does not take its bounce
+///     early; a contact it has is one of shapes already touching.)
 ///  3. Each such pair is swept from the later of the two bodies' times: by Sweep when the turning of both moves no
 ///     point more than a quarter of the slop (exact for translation), else by conservative advancement: the SAT
 ///     gap, a lower bound of the distance, divided by the fastest approach any two points can make (relative
@@ -91,6 +91,7 @@ class TimeOfImpactStage
     Vec2 CenterAt(int i, double t) const;
     double Speed(int i) const;
     bool IsFast(int i) const;
+    bool TurnsFast(int i) const;
     Aabb Reach(int i, double speed) const;
     bool Approaching(int i, int j, double t, Vec2 normal, const Vec2* points, int count, double minSpeed = 0.0) const;
     double CloseSpeed(double t) const;

@@ -293,6 +293,7 @@ struct Stepper
     std::vector<Transform> xfs;        // transforms at the start of the step (one sine and cosine per body)
     std::vector<Vec2> centers;         // centres of mass at the start of the step
     std::vector<uint8_t> hit;          // per body: took a time-ordered hit in the step (Move)
+    std::vector<uint8_t> bullets;      // per body: moves beyond its reach or turns fast (FindContacts)
 
     Stepper(World& w, double step) : world(w), dt(step), settings(w.settings) {}
 
@@ -306,16 +307,20 @@ struct Stepper
     void OrderTopDown();
 };
 
-// Whether the positions stage will sweep the pair (i, j), judged from the velocities the bodies would have after
-// the step's gravity: one of them outruns its own size and they outrun each other (detail::OutrunsBody,
-// OutrunsPair). Such a pair, still apart, gets no speculative contact: a speculative contact holds its pair at the
-// velocities the solver leaves, to first order, from the start of the step, so it would bounce a fast body off a
-// face it has not reached yet, and could not follow the body after a hit elsewhere changed its course. The sweep
-// finds the hit at its time instead. Its points are kept as a guard (WorldContact::swept): the velocity passes
-// ignore them, and the position passes, which push bodies out of each other, see that a ball skimming a floor
-// is there and do not push it through.
+// Whether the pair (i, j), still apart, is left to the sweep instead of given a speculative contact: one of its
+// bodies is a bullet (it moves farther within the step than its reach, speculativeReach outer radii, or turns
+// faster than speculativeTurn) and the two outrun each other (detail::OutrunsPair, the sweep's own rule), judged
+// from the velocities after the step's gravity. A speculative contact holds its pair at the velocities the solver
+// leaves, to first order, from the start of the step: it would bounce a bullet off a face it has not reached yet,
+// far short of where the exact hit would leave it. The sweep finds that hit at its time instead. The points are
+// kept as a guard (WorldContact::guard): the velocity passes ignore them, and the position passes, which push
+// bodies out of each other, see that a ball skimming a floor is there and do not push it through.
 bool Stepper::LeftToSweep(int i, int j) const
 {
+    if (!bullets[static_cast<size_t>(i)] && !bullets[static_cast<size_t>(j)])
+    {
+        return false;
+    }
     const RigidBody& a = world.bodies[static_cast<size_t>(i)];
     const RigidBody& b = world.bodies[static_cast<size_t>(j)];
     const bool movesA = IsAwakeDynamic(a), movesB = IsAwakeDynamic(b);
@@ -323,9 +328,7 @@ bool Stepper::LeftToSweep(int i, int j) const
     const Vec2 vb = movesB ? b.velocity + dt * settings.gravity : Vec2{};
     const double wa = movesA ? a.angularVelocity : 0.0;
     const double wb = movesB ? b.angularVelocity : 0.0;
-    const bool fast = (movesA && detail::OutrunsBody(settings, a, va, wa, dt)) ||
-                      (movesB && detail::OutrunsBody(settings, b, vb, wb, dt));
-    return fast && detail::OutrunsPair(settings, a, va, wa, b, vb, wb, dt);
+    return detail::OutrunsPair(settings, a, va, wa, b, vb, wb, dt);
 }
 
 // Stage 1: bounds, broadphase, narrowphase, warm starting, waking.
@@ -357,23 +360,33 @@ void Stepper::FindContacts()
     // farthest point), at most speculativeReach outer radii: a body that moves farther is a bullet, and the sweep
     // finds its hits; none for a body turning more than speculativeTurn.
     std::vector<double> bodyReach(static_cast<size_t>(n), 0.0);
+    bullets.assign(static_cast<size_t>(n), 0);
     if (settings.speculativeContacts)
     {
         const double fall = Length(settings.gravity) * dt;
         for (int i = 0; i < n; ++i)
         {
             const RigidBody& body = bodies[i];
+            if (!IsAwakeDynamic(body))
+            {
+                continue;
+            }
+            const double move = dt * (Length(body.velocity) + fall + std::fabs(body.angularVelocity) * body.turnRadius);
+            const double cap = settings.speculativeReach * body.outerRadius;
             // A body that turns fast is left to the sweep: a contact found at the start of the step follows a
             // turn only to first order.
-            if (IsAwakeDynamic(body) &&
-                (body.turnRadius == 0.0 || std::fabs(body.angularVelocity) * dt <= settings.speculativeTurn))
+            const bool turnsFast =
+                body.turnRadius > 0.0 && std::fabs(body.angularVelocity) * dt > settings.speculativeTurn;
+            bullets[static_cast<size_t>(i)] = turnsFast || move > cap ? 1 : 0;
+            if (!turnsFast)
             {
-                const double move =
-                    dt * (Length(body.velocity) + fall + std::fabs(body.angularVelocity) * body.turnRadius);
-                bodyReach[static_cast<size_t>(i)] = std::min(move, settings.speculativeReach * body.outerRadius);
+                bodyReach[static_cast<size_t>(i)] = std::min(move, cap);
             }
         }
     }
+    // How far the position passes can move a body in a step: a body beside a static one within this distance gets a
+    // guard, so that the passes, pushing it out of another body, do not push it into the static one.
+    const double correctionReach = settings.positionIterations * settings.maxCorrection;
     PairFilter filter{&bodies, settings.skipStaticPairs};
     std::vector<std::pair<int, int>> candidates;
     if (settings.broadphase)
@@ -382,8 +395,10 @@ void Stepper::FindContacts()
         for (int i = 0; i < n; ++i)
         {
             boxes[i] = ComputeAabb(bodies[i].shape, xfs[i]);
-            // A body's box grows by the reach of its speculative contacts, so the pairs within it are found.
-            const double grow = bodyReach[static_cast<size_t>(i)];
+            // A body's box grows by the reach of its speculative contacts, so the pairs within it are found; a
+            // static body's by how far the position passes can move a body, so its guards are found.
+            const double grow =
+                bodies[i].type == BodyType::Static ? correctionReach : bodyReach[static_cast<size_t>(i)];
             boxes[i].min = boxes[i].min - Vec2{grow, grow};
             boxes[i].max = boxes[i].max + Vec2{grow, grow};
         }
@@ -423,17 +438,27 @@ void Stepper::FindContacts()
         }
         // The pair's speculative margin: how far the two can close within the step.
         const double margin = bodyReach[static_cast<size_t>(i)] + bodyReach[static_cast<size_t>(j)];
-        const Manifold m = margin > 0.0 ? CollideWithin(a.shape, xfs[i], b.shape, xfs[j], margin)
-                                        : Collide(a.shape, xfs[i], b.shape, xfs[j]);
+        Manifold m = margin > 0.0 ? CollideWithin(a.shape, xfs[i], b.shape, xfs[j], margin)
+                                  : Collide(a.shape, xfs[i], b.shape, xfs[j]);
+        bool guard = false;
         if (m.contactCount == 0)
         {
-            continue;
+            // Beyond reach of a static body, but within what the position passes can move it: a guard.
+            if (correctionReach > 0.0 && (a.type == BodyType::Static) != (b.type == BodyType::Static))
+            {
+                m = CollideWithin(a.shape, xfs[i], b.shape, xfs[j], margin + correctionReach);
+                guard = m.contactCount > 0 && !m.overlap;
+            }
+            if (!guard)
+            {
+                continue;
+            }
         }
         WorldContact c;
         // A pair still apart that the sweep takes gets no speculative contact, only a guard (see LeftToSweep).
-        c.swept = !m.overlap && LeftToSweep(i, j);
+        c.guard = guard || (!m.overlap && LeftToSweep(i, j));
         touching += m.overlap;
-        speculative += !m.overlap && !c.swept;
+        speculative += !m.overlap && !c.guard;
         c.a = i;
         c.b = j;
         c.normal = m.normal;
@@ -449,7 +474,7 @@ void Stepper::FindContacts()
             p.point = m.contacts[k].point;
             p.separation = m.contacts[k].separation;
             p.key = FeatureKey(m, k);
-            if (old != nullptr && !c.swept)
+            if (old != nullptr && !c.guard)
             {
                 bool matched = false;
                 for (int l = 0; l < old->pointCount; ++l)
@@ -569,7 +594,7 @@ void Stepper::SolveVelocities()
         {
             continue;
         }
-        if (wc.swept)
+        if (wc.guard)
         {
             SolverContact g;
             g.a = wc.a;
@@ -737,11 +762,13 @@ void Stepper::CorrectPositions()
     std::vector<Vec2> c(n);
     std::vector<double> angle(n);
     std::vector<Rot> q(n);
+    std::vector<uint8_t> turns(n); // turning moves the outline: not a circle about its centre
     for (int i = 0; i < n; ++i)
     {
         angle[i] = bodies[i].angle;
         q[i] = MakeRot(angle[i]);
         c[i] = bodies[i].position + Rotate(q[i], bodies[i].localCenter);
+        turns[i] = bodies[i].turnRadius > 0.0 ? 1 : 0;
     }
     // Moves bodies a and b apart along n0 at a point with lever arms rA, rB and separation sep, by `factor` of the
     // overlap beyond the slop.
@@ -783,7 +810,7 @@ void Stepper::CorrectPositions()
         // A circle turning about its centre stays where it is: its anchor and a normal it holds do not turn with
         // it (a ball spinning a full turn in a step would otherwise be pushed along a normal turned any which
         // way). Between two circles the normal joins their centres.
-        const bool turnsA = bodies[a].turnRadius > 0.0, turnsB = bodies[b].turnRadius > 0.0;
+        const bool turnsA = turns[a] != 0, turnsB = turns[b] != 0;
         const int owner = sc.normalBody == 1 ? b : a;
         Vec2 n0 = sc.normal;
         if (!turnsA && !turnsB)
@@ -816,11 +843,22 @@ void Stepper::CorrectPositions()
             push(a, b, n0, rA, rB, sep, factor);
         }
     };
-    // A guard's pair moved fast against each other: anchors found at the start of the step say nothing of where
-    // they are now, so its overlap is measured afresh, by Collide at the present positions.
-    const auto guard = [&](const SolverContact& g, double factor) {
+    // A guard's pair may have moved far against each other: anchors found at the start of the step say nothing of
+    // where they are now, so its overlap is measured afresh, by Collide at the present positions, once its bodies
+    // may have crossed the gap it started with (each point of a body has moved at most the distance of its centre
+    // plus the turn radius times the chord of its turn).
+    const auto guard = [&](const SolverContact& g, double factor, bool straight) {
         const int a = g.a, b = g.b;
         if (hit[static_cast<size_t>(a)] || hit[static_cast<size_t>(b)])
+        {
+            return;
+        }
+        const auto moved = [&](int i) {
+            return Length(c[i] - centers[i]) +
+                   bodies[i].turnRadius * Length(Vec2{q[i].c - xfs[i].q.c, q[i].s - xfs[i].q.s});
+        };
+        const double gap = std::min(g.points[0].separation, g.count > 1 ? g.points[1].separation : INFINITY);
+        if (gap - moved(a) - moved(b) > -settings.linearSlop)
         {
             return;
         }
@@ -830,9 +868,69 @@ void Stepper::CorrectPositions()
             xf.p = c[i] - Rotate(q[i], bodies[i].localCenter);
             return xf;
         };
+        // Beside a static body, once Collide finds them overlapping, the axis is the guard's normal, fixed as the
+        // static body is: the moving body's deepest point along it against the static body's extent. Measured so,
+        // a body pushed past the middle of a thin wall is still pushed back the way it came; Collide's own normal
+        // would push it on through.
         const Manifold m = Collide(bodies[a].shape, pose(a), bodies[b].shape, pose(b));
         if (!m.overlap)
         {
+            return;
+        }
+        const int fixedBody = bodies[a].type == BodyType::Static ? a : (bodies[b].type == BodyType::Static ? b : -1);
+        if (fixedBody >= 0)
+        {
+            const int moving = fixedBody == a ? b : a;
+            // The axis turns with the body whose face it is: fixed if the static body's, as found now if the moving
+            // body's (a plank's face turning on a peg).
+            const int owner = g.normalBody == 1 ? b : a;
+            const Vec2 axis = owner == fixedBody ? g.normal : m.normal;
+            const Vec2 n = fixedBody == a ? axis : -1.0 * axis; // from the static body to the moving one
+            const Transform xs = pose(fixedBody), xm = pose(moving);
+            const Shape& shapeS = bodies[fixedBody].shape;
+            const Shape& shapeM = bodies[moving].shape;
+            double top = -INFINITY;
+            if (shapeS.type == ShapeType::Circle)
+            {
+                top = Dot(n, TransformPoint(xs, shapeS.circle.center)) + shapeS.circle.radius;
+            }
+            else
+            {
+                for (const Vec2& v : shapeS.polygon.Vertices())
+                {
+                    top = std::max(top, Dot(n, TransformPoint(xs, v)));
+                }
+            }
+            Vec2 deepest{};
+            double bottom = INFINITY;
+            if (shapeM.type == ShapeType::Circle)
+            {
+                deepest = TransformPoint(xm, shapeM.circle.center) - shapeM.circle.radius * n;
+                bottom = Dot(n, deepest);
+            }
+            else
+            {
+                for (const Vec2& v : shapeM.polygon.Vertices())
+                {
+                    const Vec2 w = TransformPoint(xm, v);
+                    if (Dot(n, w) < bottom)
+                    {
+                        bottom = Dot(n, w);
+                        deepest = w;
+                    }
+                }
+            }
+            const Vec2 normal = fixedBody == a ? n : -1.0 * n;
+            if (straight)
+            {
+                // Straight out, without turning: every point of the body rises by the same amount, so the deepest
+                // one comes out and no other goes in (pushed at one corner, a sliver lying in the floor would turn
+                // its other end down).
+                const double C = std::max(-settings.maxCorrection, std::min(0.0, bottom - top + settings.linearSlop));
+                c[moving] = c[moving] - C * n;
+                return;
+            }
+            push(a, b, normal, deepest - c[a], deepest - c[b], bottom - top, factor);
             return;
         }
         for (int k = 0; k < m.contactCount; ++k)
@@ -849,7 +947,7 @@ void Stepper::CorrectPositions()
         }
         for (const SolverContact& g : guards)
         {
-            guard(g, settings.correctionFactor);
+            guard(g, settings.correctionFactor, false);
         }
     }
     // Last, the contacts with bodies that do not move (static or asleep) take out their whole overlap beyond the
@@ -866,16 +964,28 @@ void Stepper::CorrectPositions()
     {
         for (const int k : solveOrder)
         {
-            if (fixed(solverContacts[static_cast<size_t>(k)]))
+            const SolverContact& sc = solverContacts[static_cast<size_t>(k)];
+            if (!fixed(sc))
             {
-                correct(solverContacts[static_cast<size_t>(k)], 1.0);
+                continue;
+            }
+            // Against a static body, measured afresh as a guard is, and lifted straight out: a contact's anchors see
+            // only the points found at the start of the step, and a sliver that turned can poke another corner into
+            // the wall.
+            if (bodies[sc.a].type == BodyType::Static || bodies[sc.b].type == BodyType::Static)
+            {
+                guard(sc, 1.0, true);
+            }
+            else
+            {
+                correct(sc, 1.0);
             }
         }
         for (const SolverContact& g : guards)
         {
             if (fixed(g))
             {
-                guard(g, 1.0);
+                guard(g, 1.0, true);
             }
         }
     }

@@ -89,8 +89,8 @@ struct WorldSettings
     /// of one can move, relative to the other, more than this fraction of the smaller inner radius of the dynamic
     /// bodies of the pair within a step. Bodies that fall together are not swept against each other.
     double sweepFraction = 0.5;
-    /// Most time-ordered hits a body takes in one step; after that it stops at its last hit for the rest of the
-    /// step (a body wedged between two walls cannot stall the step).
+    /// Most time-ordered hits a body takes in one step; after that it stops at its last hit, at rest, for the rest
+    /// of the step (a body wedged between two walls cannot stall the step).
     int maxHitsPerBody = 16;
     /// Below these speeds (units and radians per time unit) a body counts as resting; an island of bodies resting
     /// for timeToSleep goes to sleep.
@@ -161,9 +161,10 @@ struct WorldContact
     WorldContactPoint points[2]{}; ///< contact points, valid up to pointCount
     int pointCount = 0;            ///< 1 or 2
     ContactMaterial material{};    ///< combined restitution and frictions
-    /// The pair is still apart and left to the sweep (fast against each other, see Step): the velocity passes
-    /// ignore these points, which keep only the position passes from pushing one body into the other.
-    bool swept = false;
+    /// A guard, not a contact: the pair is still apart and either left to the sweep (fast against each other) or
+    /// a body beside a static one beyond its reach (see Step). The velocity passes ignore its points; they keep the
+    /// position passes from pushing one body into the other.
+    bool guard = false;
 };
 
 /// The world: bodies, settings and what the last step found.
