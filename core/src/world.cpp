@@ -384,9 +384,11 @@ void Stepper::FindContacts()
             }
         }
     }
-    // How far the position passes can move a body in a step: a body beside a static one within this distance gets a
-    // guard, so that the passes, pushing it out of another body, do not push it into the static one.
-    const double correctionReach = settings.positionIterations * settings.maxCorrection;
+    // How far a pass of the position correction can move a body at a point (maxCorrection): a body beside a static
+    // one within this distance beyond its reach gets a guard, so that the passes, pushing it out of another body,
+    // do not push it into the static one. (Several passes can move it farther, but only out of an overlap that
+    // deep, which the sweep and the contacts leave rare.)
+    const double correctionReach = settings.positionIterations > 0 ? settings.maxCorrection : 0.0;
     PairFilter filter{&bodies, settings.skipStaticPairs};
     std::vector<std::pair<int, int>> candidates;
     if (settings.broadphase)
@@ -854,8 +856,8 @@ void Stepper::CorrectPositions()
             return;
         }
         const auto moved = [&](int i) {
-            return Length(c[i] - centers[i]) +
-                   bodies[i].turnRadius * Length(Vec2{q[i].c - xfs[i].q.c, q[i].s - xfs[i].q.s});
+            return std::sqrt(LengthSquared(c[i] - centers[i])) +
+                   bodies[i].turnRadius * std::sqrt(LengthSquared(Vec2{q[i].c - xfs[i].q.c, q[i].s - xfs[i].q.s}));
         };
         const double gap = std::min(g.points[0].separation, g.count > 1 ? g.points[1].separation : INFINITY);
         if (gap - moved(a) - moved(b) > -settings.linearSlop)

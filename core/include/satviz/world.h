@@ -201,6 +201,9 @@ std::string ValidateBodyDef(const BodyDef& def);
 ///     overlapping ones (skipping static-static and sleeping pairs); the narrowphase (CollideWithin) turns the
 ///     touching pairs into contacts, and the pairs still apart but within their reaches into speculative contacts
 ///     (points with a gap), keeping the impulses of the points that persist from the last step (warm starting).
+///     A bullet (a body that moves beyond its reach, or turns faster than speculativeTurn) gets no speculative
+///     contact with what it moves fast against: the sweep takes that pair. Such pairs, and a body within
+///     maxCorrection of a static body beyond its reach, get guards instead (WorldContact::guard).
 ///  2. Velocities: gravity, then the velocity passes, over the contacts from the highest to the lowest along
 ///     gravity (so the weight of a pile's upper rows reaches the rows below within one pass; without gravity, in
 ///     the order found): at each contact point a normal impulse that stops the
@@ -214,16 +217,18 @@ std::string ValidateBodyDef(const BodyDef& def);
 ///     bounce impulses are scaled down as far as needed to return no more kinetic energy than the group had; and
 ///     push-only passes stop any approach a bounce made at another point.
 ///  3. Positions: each body moves with its velocity. A pair whose bodies move fast against each other (see
-///     WorldSettings::sweepFraction) is swept, in contact or not (such a pair, still apart, gets no speculative
-///     contact in stage 1, only a guard for the position passes): translation by Sweep, turning by conservative
-///     advancement (the distance bound of SAT divided by the fastest approach a turning point can make). The
-///     earliest hit of the world comes first: its two bodies move to that time, the hit is resolved with the same
-///     impulses, every pair of the two bodies is swept again from that time whatever its speed, and the step goes
-///     on, so two hits in one step happen in order and a hit cannot push a body through what it rests on.
+///     WorldSettings::sweepFraction) is swept, unless the step's contacts hold it (they do until a hit changes one
+///     of its bodies, or the solver leaves one turning faster than speculativeTurn): translation by Sweep, turning
+///     by conservative advancement (the distance bound of SAT divided by the fastest the shapes can close along
+///     it). The earliest hit of the world comes first: its two bodies move to that time, the hit is resolved with
+///     the same impulses, their pairs are swept again from that time (with static bodies whatever their speeds, so
+///     a hit cannot push a body through the wall it rests on), and the step goes on, so two hits in one step happen
+///     in order.
 ///  4. Overlap: nonlinear Gauss-Seidel on the positions (Catto; Box2D 2.4): each pass measures a point's overlap at
 ///     the bodies' present positions and moves them apart by correctionFactor times the overlap beyond the slop;
-///     a last pass takes out the whole overlap beyond the slop at the contacts with bodies that do not move. The
-///     contacts of a body that took a hit are left out: the sweep put it where it is.
+///     guards count too, their overlap measured afresh by Collide; a last pass lifts each body straight out of the
+///     static bodies it overlaps beyond the slop. The contacts of a body that took a hit are left out: the sweep put
+///     it where it is.
 ///     It changes positions only, so removing overlap adds no kinetic energy; a bouncing point whose bounce
 ///     carries it out of the overlap within the step is left to do so. Chosen over split impulses (pseudo-velocities
 ///     from the overlap at the start of the step) because it sees the overlap after the move: a body that sank during
