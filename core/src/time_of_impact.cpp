@@ -21,13 +21,19 @@ bool IsAwakeDynamic(const RigidBody& body)
     return body.type == BodyType::Dynamic && body.awake;
 }
 
-bool InContact(const std::vector<WorldContact>& contacts, int a, int b)
+// The step's contact of the pair (a, b), a < b, if it has one (a guard is not a contact).
+const WorldContact* ContactOf(const std::vector<WorldContact>& contacts, int a, int b)
 {
     auto it = std::lower_bound(contacts.begin(), contacts.end(), std::make_pair(a, b),
                                [](const WorldContact& c, const std::pair<int, int>& key) {
                                    return c.a < key.first || (c.a == key.first && c.b < key.second);
                                });
-    return it != contacts.end() && it->a == a && it->b == b && !it->guard;
+    return it != contacts.end() && it->a == a && it->b == b && !it->guard ? &*it : nullptr;
+}
+
+bool InContact(const std::vector<WorldContact>& contacts, int a, int b)
+{
+    return ContactOf(contacts, a, b) != nullptr;
 }
 
 bool SkipSlowPair(const void* context, int i, int j)
@@ -512,13 +518,18 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
         const bool wedged = ++m_hits[k] >= world.settings.maxHitsPerBody;
         if (stopped[s] || wedged)
         {
-            // Stops where it is for the rest of the step. A body that took maxHitsPerBody hits is wedged, and
-            // stops at rest: kept, the speed it had would carry no motion this step and yet be counted, and under
-            // gravity it would gain energy the body never fell for.
+            // Stops where it is for the rest of the step. Wedged (it took maxHitsPerBody hits), at rest. Short of a
+            // contact conservative advancement could not reach in its passes (a fast spinner beside a wall), its
+            // clock stops: it keeps its velocity as of now, without the gravity of the rest of the step, for it
+            // does not fall for the rest of the step. Either way the energy it is left with is what it had.
             if (wedged)
             {
                 body.velocity = {};
                 body.angularVelocity = 0.0;
+            }
+            else
+            {
+                body.velocity = body.velocity - ((1.0 - m.t) * m_dt) * world.settings.gravity;
             }
             m.v = {};
             m.w = 0.0;
@@ -630,12 +641,23 @@ void TimeOfImpactStage::Run()
         m_hits.assign(n, 0);
         for (const auto& [i, j] : pairs)
         {
-            // A pair the step's contacts hold is left to them until a hit changes one of its bodies' course, unless
-            // the solver left one of them turning faster than a contact follows (WorldSettings::speculativeTurn):
-            // a contact found at the start of the step follows a turn only to first order.
-            if (InContact(world.contacts, i, j) && !TurnsFast(i) && !TurnsFast(j))
+            // A pair the step's contacts hold is left to them until a hit changes one of its bodies' course. They
+            // hold it if the solver left its points closing no faster than the slop allows to the step's end, and
+            // neither body turning faster than a contact follows (WorldSettings::speculativeTurn): a contact found
+            // at the start of the step follows a turn only to first order, and the passes do not always bring a
+            // small body pressed by a heavy one to a stop against the floor.
+            const WorldContact* contact = ContactOf(world.contacts, i, j);
+            if (contact != nullptr && !TurnsFast(i) && !TurnsFast(j))
             {
-                continue;
+                Vec2 points[2];
+                for (int k = 0; k < contact->pointCount; ++k)
+                {
+                    points[k] = contact->points[k].point;
+                }
+                if (!Approaching(i, j, 0.0, contact->normal, points, contact->pointCount, CloseSpeed(0.0)))
+                {
+                    continue;
+                }
             }
             SweepPair(i, j);
         }
@@ -648,9 +670,14 @@ void TimeOfImpactStage::Run()
             {
                 continue;
             }
-            // The hits within a millionth of the step of this one are taken with it.
+            // The hits within a millionth of the step of this one are taken with it, if their bodies cannot move
+            // a quarter of the slop in between: a body at 1e5 units a step moves 0.1 in a millionth of it, and
+            // taken at the later time, the earlier hit would find it deep in the wall.
             group.assign(1, event);
-            while (!m_queue.empty() && m_queue.top().t <= event.t + 1e-6)
+            const auto near = [&](const Event& e) {
+                return (e.t - event.t) * m_dt * (Speed(e.i) + Speed(e.j)) <= 0.25 * world.settings.linearSlop;
+            };
+            while (!m_queue.empty() && m_queue.top().t <= event.t + 1e-6 && near(m_queue.top()))
             {
                 const Event next = m_queue.top();
                 m_queue.pop();

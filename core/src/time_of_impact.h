@@ -44,9 +44,9 @@ bool OutrunsPair(const WorldSettings& settings, const RigidBody& a, Vec2 va, dou
 ///     solver's impulses (restitution, static and dynamic friction), their stamps change (so their older hits are
 ///     dropped), and their pairs are swept again from that time.
 ///     Hits within a millionth of the step of each other are resolved together, as one step's contacts are.
-///  5. A body that takes maxHitsPerBody hits stops where it is for the rest of the step, and so does a pair that
-///     conservative advancement cannot bring within the slop in kMaxAdvances passes. When the queue is empty,
-///     every body moves on to the end of the step.
+///  5. A body that takes maxHitsPerBody hits stops where it is, at rest, for the rest of the step, and so does a
+///     pair that conservative advancement cannot bring within the slop in kMaxAdvances passes. When the queue is
+///     empty, every body moves on to the end of the step.
 class TimeOfImpactStage
 {
   public:
