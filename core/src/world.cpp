@@ -596,23 +596,6 @@ void Stepper::SolveVelocities()
         {
             continue;
         }
-        if (wc.guard)
-        {
-            SolverContact g;
-            g.a = wc.a;
-            g.b = wc.b;
-            g.normal = wc.normal;
-            g.normalBody = wc.normalBody;
-            g.count = wc.pointCount;
-            for (int i = 0; i < g.count; ++i)
-            {
-                g.points[i].rA = wc.points[i].point - centers[wc.a];
-                g.points[i].rB = wc.points[i].point - centers[wc.b];
-                g.points[i].separation = wc.points[i].separation;
-            }
-            guards.push_back(g);
-            continue;
-        }
         SolverContact c;
         c.a = wc.a;
         c.b = wc.b;
@@ -620,13 +603,21 @@ void Stepper::SolveVelocities()
         c.normalBody = wc.normalBody;
         c.count = wc.pointCount;
         c.material = wc.material;
+        for (int i = 0; i < c.count; ++i)
+        {
+            c.points[i].rA = wc.points[i].point - centers[wc.a];
+            c.points[i].rB = wc.points[i].point - centers[wc.b];
+            c.points[i].separation = wc.points[i].separation;
+        }
+        if (wc.guard)
+        {
+            guards.push_back(c);
+            continue;
+        }
         double approach[2] = {0.0, 0.0};
         for (int i = 0; i < c.count; ++i)
         {
             detail::SolverPoint& p = c.points[i];
-            p.rA = wc.points[i].point - centers[wc.a];
-            p.rB = wc.points[i].point - centers[wc.b];
-            p.separation = wc.points[i].separation;
             p.gapSpeed = std::max(0.0, p.separation) / dt;
             p.normalImpulse = wc.points[i].normalImpulse;
             p.tangentImpulse = wc.points[i].tangentImpulse;
