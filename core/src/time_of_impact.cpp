@@ -207,6 +207,12 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
     {
         return false;
     }
+    // How fast the shapes can close along a fixed direction n (from A to B): along it a point of B gains on a
+    // point of A at most at their relative speed along it plus what turning adds (a point at the turn radius moves
+    // at the angular speed times it, in any direction). The gap of Collide is the separation along its normal.
+    const auto closingAlong = [&](Vec2 n) {
+        return std::max(0.0, -Dot(mj.v - mi.v, n)) + std::fabs(mi.w) * a.turnRadius + std::fabs(mj.w) * b.turnRadius;
+    };
     const double tolerance = m_world.settings.linearSlop;
     double t = t0;
     for (int pass = 0; pass < kMaxAdvances && t < 1.0; ++pass)
@@ -228,9 +234,8 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
             }
             // Parting where they touch (a hit just resolved): turning, another point of one can still meet the
             // other within the step. Advance by a time in which the overlap along the normal cannot grow by more
-            // than the slop (see the closing speed below), so a new approach is caught before it does.
-            const double closing = std::max(0.0, -Dot(mj.v - mi.v, m.normal)) + std::fabs(mi.w) * a.turnRadius +
-                                   std::fabs(mj.w) * b.turnRadius;
+            // than the slop, so a new approach is caught before it does.
+            const double closing = closingAlong(m.normal);
             if (!(closing > 0.0))
             {
                 return false;
@@ -258,12 +263,9 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
                 }
             }
         }
-        // The gap is the shapes' separation along the fixed direction m.normal; along it a point of B gains on a
-        // point of A at most at their relative speed along it plus what turning adds (a point at the turn radius
-        // moves at the angular speed times it, in any direction). Bodies sliding past each other close slowly
-        // along it however fast they move, and a pair that cannot close along it stays apart to the step's end.
-        const double closing = std::max(0.0, -Dot(mj.v - mi.v, m.normal)) + std::fabs(mi.w) * a.turnRadius +
-                               std::fabs(mj.w) * b.turnRadius;
+        // Bodies sliding past each other close slowly along the normal however fast they move, and a pair that
+        // cannot close along it stays apart to the step's end.
+        const double closing = closingAlong(m.normal);
         if (!(closing > 0.0))
         {
             return false;
@@ -280,9 +282,9 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
     return false;
 }
 
-void TimeOfImpactStage::SweepPair(int i, int j, bool afterHit)
+void TimeOfImpactStage::SweepPair(int i, int j, bool anySpeed)
 {
-    if (!afterHit && !m_fast[i] && !m_fast[j])
+    if (!anySpeed && !m_fast[i] && !m_fast[j])
     {
         return;
     }
@@ -303,7 +305,7 @@ void TimeOfImpactStage::SweepPair(int i, int j, bool afterHit)
     const double turning = (std::fabs(mi.w) * a.turnRadius + std::fabs(mj.w) * b.turnRadius) * span;
     // Bodies that move together (a pile falling as one) are not swept against each other: what counts is how far
     // a point of one can move relative to the other within the rest of the step.
-    if (!afterHit && m_world.settings.sweepOnlyFast &&
+    if (!anySpeed && m_world.settings.sweepOnlyFast &&
         !OutrunsPair(m_world.settings, a, mi.v, mi.w, b, mj.v, mj.w, span))
     {
         return;

@@ -95,7 +95,7 @@ class TimeOfImpactStage
     Aabb Reach(int i, double speed) const;
     bool Approaching(int i, int j, double t, Vec2 normal, const Vec2* points, int count, double minSpeed = 0.0) const;
     double CloseSpeed(double t) const;
-    void SweepPair(int i, int j, bool afterHit = false);
+    void SweepPair(int i, int j, bool anySpeed = false); // anySpeed: also a pair that is not fast
     bool Advance(int i, int j, double t0, Event& event);
     void Resolve(const std::vector<Event>& group);
     void Connect(int i, int j);
