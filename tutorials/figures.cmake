@@ -23,6 +23,7 @@ set(SATVIZ_FIGURE_SCENES
   l05_naive_push
   l06_plank_over_ledge
   l06_tilted_plank
+  l07_voronoi
   l09_landing
   l09_stuck
   l10_ray_miss

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "draw_kit.h"
+#include "voronoi_view.h"
 
 #include <satviz/render/describe.h>
 #include <satviz/render/painter.h>
@@ -408,6 +409,10 @@ class Painter
                          palette::kBackground);
         Grid();
         ReserveBands();
+        if (Has(figure_, kLayerVoronoi))
+        {
+            PaintVoronoiRegions(canvas_, view_, scene_, study_);
+        }
         if (Has(figure_, kLayerAxes))
         {
             CandidateAxes();
@@ -447,6 +452,10 @@ class Painter
         if (verdict_ && Has(figure_, kLayerContacts))
         {
             Contacts();
+        }
+        if (Has(figure_, kLayerVoronoi))
+        {
+            MarkVoronoiRegions(canvas_, labels_, view_, scene_, study_);
         }
         if (Has(figure_, kLayerLabels))
         {

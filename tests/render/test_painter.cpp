@@ -402,10 +402,11 @@ TEST_CASE("The layer table is what scene files accept, and its names and bits ar
     }
     CHECK(LayerNames(kAllLayers) == names);
     CHECK(LayersFromNames(names) == kAllLayers);
-    CHECK(kDefaultLayers == (kAllLayers & ~(kLayerNormals | kLayerAxes | kLayerMinkowski)));
+    CHECK(kDefaultLayers == (kAllLayers & ~(kLayerNormals | kLayerAxes | kLayerMinkowski | kLayerVoronoi)));
     CHECK(LayerFromName("mvt") == 0);
     CHECK(LayerNameList() ==
-          "shapes, labels, normals, axes, projection, exit, best, mtv, contacts, swept, ghost, caption, minkowski");
+          "shapes, labels, normals, axes, projection, exit, best, mtv, contacts, swept, ghost, caption, minkowski, "
+          "voronoi");
     // Every name loads from a scene file's view block and gives back its own bit; an unknown one is one line naming
     // the file and the field.
     const std::string two = R"({"bodies": [{"box": [1, 1]}, {"box": [1, 1]}], "view": {"layers": [")";
@@ -438,6 +439,7 @@ TEST_CASE("A layer that is off draws nothing, and each layer draws only its own 
         {kLayerGhost, {"ghost", "labels"}},
         {kLayerCaption, {"caption"}},
         {kLayerMinkowski, {"minkowski"}},
+        {kLayerVoronoi, {"voronoi", "labels"}},
     };
     std::set<std::string> seen;
     for (const std::string& file : TutorialScenes())
@@ -462,7 +464,7 @@ TEST_CASE("A layer that is off draws nothing, and each layer draws only its own 
     }
     // Every view appears somewhere in the example scenes.
     for (const char* group : {"shapes", "labels", "normals", "axes", "projection", "panel", "timebar", "exit", "best",
-                              "mtv", "contacts", "swept", "ghost", "caption", "minkowski"})
+                              "mtv", "contacts", "swept", "ghost", "caption", "minkowski", "voronoi"})
     {
         INFO(group);
         CHECK(seen.count(group) == 1);
@@ -609,6 +611,61 @@ TEST_CASE("The time bar marks each sweep axis's entry time", "[painter]")
         }
     }
     CHECK(checked >= 6);
+}
+
+TEST_CASE("The Voronoi layer names the region of the box that holds the ball's centre: its nearest feature",
+          "[painter]")
+{
+    // The oracle: the nearest point of the box [-1, 1] x [-1, 1] to the centre is the centre clamped to the box. Both
+    // coordinates clamped: a corner, so a vertex region; one: a point inside an edge, so that face's region.
+    const char* corners[] = {"vertex 1", "vertex 2", "vertex 3", "vertex 0"}; // (1, -1), (1, 1), (-1, 1), (-1, -1)
+    int checked = 0;
+    for (double x = -2.25; x <= 2.25; x += 0.5)
+    {
+        for (double y = -2.25; y <= 2.25; y += 0.5)
+        {
+            const bool clampX = std::abs(x) > 1.0;
+            const bool clampY = std::abs(y) > 1.0;
+            if (!clampX && !clampY)
+            {
+                continue;
+            }
+            std::string expected;
+            if (clampX && clampY)
+            {
+                expected = corners[x > 0.0 ? (y > 0.0 ? 1 : 0) : (y > 0.0 ? 2 : 3)];
+            }
+            else if (clampX)
+            {
+                expected = x > 0.0 ? "face e1" : "face e3";
+            }
+            else
+            {
+                expected = y > 0.0 ? "face e2" : "face e0";
+            }
+            const std::string text =
+                R"({"bodies": [{"name": "box", "box": [2, 2]}, {"name": "ball", "circle": {"radius": 0.2},
+                "position": [)" +
+                std::to_string(x) + ", " + std::to_string(y) + R"(]}], "view": {"zoom": 60}})";
+            const SceneResult loaded = ParseScene(text, "s.json");
+            REQUIRE(loaded.Ok());
+            FigureSetup setup = SetUpFigure(loaded.scene, {});
+            REQUIRE(setup.Ok());
+            const RecordingCanvas canvas = Paint(loaded.scene, setup, setup.study.VerdictStep(), kLayerVoronoi);
+            std::vector<std::string> marked;
+            for (const DrawCommand* c : canvas.InGroup("labels"))
+            {
+                if (c->kind == DrawCommand::Kind::Text && c->text.rfind("the centre's region: ", 0) == 0)
+                {
+                    marked.push_back(c->text.substr(21));
+                }
+            }
+            INFO("centre (" << x << ", " << y << ")");
+            CHECK(marked == std::vector<std::string>{expected});
+            ++checked;
+        }
+    }
+    CHECK(checked == 100 - 16);
 }
 
 TEST_CASE("Labels of the example figures do not cover each other", "[painter]")

@@ -35,6 +35,9 @@ enum Layer : LayerMask
     /// An inset of the Minkowski difference A - B: the origin inside it exactly when the shapes overlap, the MTV as
     /// the origin's shortest way out, and for sweeps the relative motion as a ray from the origin.
     kLayerMinkowski = 1u << 12,
+    /// The Voronoi regions of the pair's polygon (a face region in front of each edge, a vertex region at each
+    /// corner), and the one that holds the other shape's centre.
+    kLayerVoronoi = 1u << 13,
 };
 
 /// One drawing layer: a row of kLayerTable.
@@ -48,7 +51,7 @@ struct LayerInfo
 
 /// Every drawing layer, in drawing order: the one list of layer names, bits and descriptions (render/README.md and
 /// the top-level README's "view block" table describe them for users).
-inline constexpr std::array<LayerInfo, 13> kLayerTable = {{
+inline constexpr std::array<LayerInfo, 14> kLayerTable = {{
     {"shapes", kLayerShapes, true, "the bodies, filled and outlined"},
     {"labels", kLayerLabels, true, "body names, vertex and edge numbers"},
     {"normals", kLayerNormals, false, "every outward edge normal"},
@@ -63,6 +66,7 @@ inline constexpr std::array<LayerInfo, 13> kLayerTable = {{
     {"caption", kLayerCaption, true, "the step's sentence above the figure"},
     {"minkowski", kLayerMinkowski, false,
      "the Minkowski difference A - B in an inset: the origin inside it exactly when they overlap"},
+    {"voronoi", kLayerVoronoi, false, "the polygon's face and vertex regions, and the one holding the other's centre"},
 }};
 
 /// True when every row of the table has its own single bit, in drawing order (row i has bit i).
@@ -95,7 +99,8 @@ constexpr LayerMask LayerTableMask(bool defaultsOnly)
 
 /// Every layer.
 constexpr LayerMask kAllLayers = LayerTableMask(false);
-/// The layers drawn when a scene does not choose: all but the normals, the candidate axes and the Minkowski inset.
+/// The layers drawn when a scene does not choose: all but the normals, the candidate axes, the Minkowski inset and
+/// the Voronoi regions.
 constexpr LayerMask kDefaultLayers = LayerTableMask(true);
 
 /// The row of the layer named `name` ("shapes", "labels", ...), or null for an unknown name.
