@@ -4,9 +4,9 @@
 
 #include <satviz/render/describe.h>
 #include <satviz/render/painter.h>
+#include <satviz/render/wrap.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
 namespace satviz
@@ -1354,44 +1354,11 @@ class Painter
         }
     }
 
-    // Greedy word wrap to the band width. A bracketed pair such as "[-0.25, 0.25]" or "(0.96, 0.30)" is one word,
-    // so that no number is split from its partner across lines.
+    // Greedy word wrap to the band width, between the words of WrapWords only: a bracketed pair such as
+    // "[-0.25, 0.25]" or "(0.96, 0.30)" is one word, so that no number is split from its partner across lines.
     std::vector<std::string> Wrap(const std::string& text, TextStyle style) const
     {
-        std::vector<std::string> words;
-        int depth = 0;
-        size_t start = 0;
-        while (start <= text.size())
-        {
-            size_t end = text.find(' ', start);
-            if (end == std::string::npos)
-            {
-                end = text.size();
-            }
-            const std::string word = text.substr(start, end - start);
-            // "t = 0.438" stays on one line: "=" joins the words on both sides of it.
-            const bool glued = depth > 0 || word == "=" ||
-                               (!words.empty() && words.back().size() >= 2 &&
-                                words.back().compare(words.back().size() - 2, 2, " =") == 0);
-            if (glued && !words.empty())
-            {
-                words.back() += " " + word;
-            }
-            else if (!word.empty())
-            {
-                words.push_back(word);
-            }
-            for (size_t i = 0; i < word.size(); ++i)
-            {
-                // Only a bracket that opens a number ("[-0.25," or "(0.96,") groups; prose in parentheses wraps.
-                const bool number = i + 1 < word.size() &&
-                                    (std::isdigit(static_cast<unsigned char>(word[i + 1])) || word[i + 1] == '-');
-                depth += ((word[i] == '[' || word[i] == '(') && number) ? 1 : 0;
-                depth -= (word[i] == ']' || word[i] == ')') && depth > 0 ? 1 : 0;
-            }
-            depth = std::max(depth, 0);
-            start = end + 1;
-        }
+        const std::vector<std::string> words = WrapWords(text);
         std::vector<std::string> lines;
         std::string line;
         const float maxWidth = Width() - 2.0f * kPad - 4.0f;

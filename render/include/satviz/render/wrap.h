@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: MIT
+// satviz render: text wrapped between words only, for the figures' captions and the app's panels alike, so that a
+// number is never broken inside its digits nor split from its partner in a bracketed pair.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace satviz
+{
+
+/// The words of `text` that a line may break between: the text split at its spaces, where a bracketed pair of
+/// numbers ("[-0.25, 0.25]", "(0.96, 0.30)") and an equation's sides ("t = 0.438") stay one word. Prose in
+/// parentheses still splits.
+std::vector<std::string> WrapWords(const std::string& text);
+
+/// `text` broken into lines no wider than `width` as `measure` measures them, greedily, between the words of
+/// WrapWords only: a word wider than `width` gets a line of its own rather than being broken. A newline in `text`
+/// always ends a line (an empty line stays empty); leading spaces of a line are kept on its first line.
+std::vector<std::string> WrapLines(const std::string& text, float width,
+                                   const std::function<float(const std::string&)>& measure);
+
+} // namespace satviz
