@@ -201,29 +201,84 @@ std::string TextbookAxisStep(const Scene& scene, const PairStudy& study, int ste
            ".";
 }
 
+// Of the faces on one axis, the one the verdict's picture marks: where the shapes meet, the contact's reference face
+// when it lies on this axis; else A's face turned towards B (`towardB`: from A's interval to B's on the axis), else
+// B's face turned towards A. Kind None when no face lies on the axis (a circle's axis).
+AxisRef FacingFace(const Scene& scene, const PairStudy& study, const AxisRef* faces, int count, Vec2 towardB)
+{
+    const ClipTrace& clip = study.trace.clip;
+    for (int f = 0; f < count && study.trace.hasClip && !study.sweep; ++f)
+    {
+        if (faces[f].kind == AxisKind::FaceNormal && faces[f].shape == clip.reference.shape &&
+            faces[f].index == clip.reference.index && clip.reference.kind == AxisKind::FaceNormal)
+        {
+            return faces[f];
+        }
+    }
+    for (int shape = 0; shape < 2; ++shape)
+    {
+        for (int f = 0; f < count; ++f)
+        {
+            if (faces[f].kind != AxisKind::FaceNormal || faces[f].shape != shape)
+            {
+                continue;
+            }
+            const Body& body = scene.bodies[static_cast<size_t>(shape == 0 ? study.bodyA : study.bodyB)];
+            const double facing = Dot(Rotate(body.Xf().q, body.shape.polygon.Normal(faces[f].index)), towardB);
+            if (shape == 0 ? facing > 0.0 : facing < 0.0)
+            {
+                return faces[f];
+            }
+        }
+    }
+    return AxisRef{};
+}
+
+// "floor's edge 3"
+std::string FaceName(const Scene& scene, const PairStudy& study, const AxisRef& face)
+{
+    return Possessive(NameOf(scene, study, face.shape)) + " edge " + std::to_string(face.index);
+}
+
 std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
 {
     const TextbookResult& r = study.textbookResult;
+    const std::string& nameA = NameOf(scene, study, 0);
     const std::string& nameB = NameOf(scene, study, 1);
     if (r.axis < 0)
     {
         return "Verdict: no axis could be tested.";
     }
     const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(r.axis)];
-    const std::string where =
-        "axis " + std::to_string(r.axis + 1) + " (" + DescribeAxis(scene, study, t.faces[0]) + ")";
+    const std::string axis = "axis " + std::to_string(r.axis + 1);
+    // The face named is the one the picture marks: where the shapes meet (the reference face), or, apart, the face
+    // turned towards the other shape; the number line's direction is faces[0]'s normal, whichever face is named.
+    const bool bAhead = t.separating ? t.minB - t.maxA > 0.0 : t.pushSign > 0;
+    const AxisRef face = FacingFace(scene, study, t.faces, t.faceCount, bAhead ? t.direction : -t.direction);
+    const bool named = face.kind == AxisKind::FaceNormal;
     if (!r.overlap)
     {
-        return "Verdict: " + where + " separates the shapes with a gap of " + ShownGap(t) +
-               ", so they do not collide. The test stopped after " + std::to_string(r.axesTested) + " of " +
-               std::to_string(r.axisCount) + " axes.";
+        if (named)
+        {
+            const std::string& other = face.shape == 0 ? nameB : nameA;
+            return "Verdict: " + axis + " separates the shapes: " + other + " lies " + ShownGap(t) + " beyond " +
+                   FaceName(scene, study, face) + ", so they do not collide. The test stopped after " +
+                   std::to_string(r.axesTested) + " of " + std::to_string(r.axisCount) + " axes.";
+        }
+        return "Verdict: " + axis + " (" + DescribeAxis(scene, study, t.faces[0]) +
+               ") separates the shapes with a gap of " + ShownGap(t) + ", so they do not collide. The test stopped "
+               "after " +
+               std::to_string(r.axesTested) + " of " + std::to_string(r.axisCount) + " axes.";
     }
     std::string text = study.startsOverlapping ? "The shapes already overlap at t = 0, so there is no time of "
                                                  "impact. "
                                                : "";
-    const std::string way = t.pushSign > 0 ? "along" : "against";
+    const std::string where = named ? axis + ", at " + FaceName(scene, study, face)
+                                    : axis + " (" + DescribeAxis(scene, study, t.faces[0]) + ")";
+    // B moves along A's face's outward normal, or against B's own face's.
+    const std::string way = named ? (face.shape == 0 ? "along" : "against") : (t.pushSign > 0 ? "along" : "against");
     const std::string depth = ShownOverlap(t);
-    const std::string that = t.faces[0].kind == AxisKind::FaceNormal ? "that normal" : "that axis";
+    const std::string that = named ? "that face's normal" : "that axis";
     if (depth == "0")
     {
         // Touching: no move of 0 separates anything; the intervals meet end to end on the deciding axis.
@@ -468,16 +523,18 @@ std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
         // Touching: the other shape reaches the face and not behind it.
         text += "Verdict: no face test separates, so the shapes are in contact. The face the other shape reaches "
                 "least far behind is " +
-                DescribeAxis(scene, study, m.axis) +
+                (face ? FaceName(scene, study, m.axis) : DescribeAxis(scene, study, m.axis)) +
                 ", and only just: 0 behind it. The shapes touch without overlapping: the MTV is zero, direction " +
                 Pair(m.normal.x, m.normal.y) + ".";
     }
     else
     {
+        // A face is named as a face (the picture marks it as the reference face), its normal as its normal.
         text += "Verdict: no face test separates, so the shapes collide. The face the other shape reaches least far "
                 "behind is " +
-                DescribeAxis(scene, study, m.axis) + ": moving " + nameB + " by " + depth + " " + way +
-                " it, direction " + Pair(m.normal.x, m.normal.y) + ", separates them (the MTV).";
+                (face ? FaceName(scene, study, m.axis) : DescribeAxis(scene, study, m.axis)) + ": moving " + nameB +
+                " by " + depth + " " + way + (face ? " its normal" : " it") + ", direction " +
+                Pair(m.normal.x, m.normal.y) + ", separates them (the MTV).";
     }
     text += m.contactCount == 1 ? " 1 contact point." : " " + std::to_string(m.contactCount) + " contact points.";
     return text;
