@@ -1,13 +1,9 @@
 // SPDX-License-Identifier: MIT
+#include <satviz/render/atomic_file.h>
 #include <satviz/render/png_file.h>
 
 #include <stb_image_write.h>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <unistd.h>
 
 namespace satviz
 {
@@ -47,31 +43,8 @@ bool WritePngFile(const std::string& path, const std::vector<unsigned char>& rgb
         error = path + ": PNG encoding failed";
         return false;
     }
-    const std::string temporary = path + ".tmp." + std::to_string(::getpid());
-    std::FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (file == nullptr)
-    {
-        error = path + ": cannot write (" + std::strerror(errno) + ")";
-        return false;
-    }
-    const bool written = std::fwrite(png.data(), 1, png.size(), file) == png.size();
-    const bool flushed = std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
-    const bool closed = std::fclose(file) == 0;
-    if (!written || !flushed || !closed)
-    {
-        error = path + ": write failed (" + std::strerror(errno) + ")";
-        std::remove(temporary.c_str());
-        return false;
-    }
-    std::error_code code;
-    std::filesystem::rename(temporary, path, code);
-    if (code)
-    {
-        error = path + ": cannot replace the file (" + code.message() + ")";
-        std::remove(temporary.c_str());
-        return false;
-    }
-    return true;
+    return WriteFileAtomically(
+        path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()), error);
 }
 
 } // namespace satviz

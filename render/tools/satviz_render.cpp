@@ -8,6 +8,8 @@
 #include <satviz/render/imgui_canvas.h>
 #include <satviz/render/layers.h>
 #include <satviz/render/png_file.h>
+#include <satviz/render/svg_canvas.h>
+#include <satviz/render/atomic_file.h>
 #include <satviz/scene.h>
 #include <satviz/scene_world.h>
 
@@ -18,6 +20,7 @@
 #include <algorithm>
 #include <backends/imgui_impl_opengl2.h>
 #include <cctype>
+#include <cfloat>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -84,6 +87,8 @@ class HeadlessRenderer
         {
             return false;
         }
+        // Built now, so that SVG figures can measure text before any PNG is drawn.
+        io.Fonts->Build();
         if (!ImGui_ImplOpenGL2_Init())
         {
             error = "ImGui: the OpenGL2 backend did not initialise";
@@ -120,6 +125,24 @@ class HeadlessRenderer
         return true;
     }
 
+    /// Paints one figure as an SVG document, its text measured by the figure fonts (the PNG's layout).
+    std::string RenderSvg(const satviz::Scene& scene, const satviz::FigureSetup& setup) const
+    {
+        const satviz::FigureFonts fonts = fonts_;
+        satviz::SvgCanvas canvas(setup.figure.view.width, setup.figure.view.height,
+                                 [fonts](std::string_view text, satviz::TextStyle style) {
+                                     ImFont* font = style == satviz::TextStyle::Label
+                                                        ? fonts.label
+                                                        : (style == satviz::TextStyle::Heading ? fonts.heading
+                                                                                               : fonts.body);
+                                     const ImVec2 size = font->CalcTextSizeA(font->FontSize, FLT_MAX, 0.0f,
+                                                                             text.data(), text.data() + text.size());
+                                     return satviz::ScreenPoint{size.x, size.y};
+                                 });
+        satviz::PaintFigure(canvas, scene, setup.study, setup.figure);
+        return canvas.Document();
+    }
+
   private:
     bool Resize(int width, int height)
     {
@@ -150,6 +173,12 @@ struct Job
     int step = -1; // -1: the scene's own choice
     std::string output;
 };
+
+/// Figures in a directory: "name.png" or "name.svg".
+std::string FigureName(const std::string& name, bool svg)
+{
+    return name + (svg ? ".svg" : ".png");
+}
 
 bool ParseSize(const std::string& text, int& width, int& height)
 {
@@ -196,18 +225,26 @@ bool ParseLayers(const std::string& text, satviz::LayerMask& mask, std::string& 
     return true;
 }
 
-/// True when `output` names one PNG file rather than a directory: its extension is .png in any case (.PNG too).
-bool IsPngFile(const std::string& output)
+/// The extension of `output` in lower case (".png", ".svg", or anything else).
+std::string LowerExtension(const std::string& output)
 {
     std::string extension = std::filesystem::path(output).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension == ".png";
+    return extension;
+}
+
+/// True when `output` names one figure file rather than a directory: its extension is .png or .svg in any case.
+bool IsFigureFile(const std::string& output)
+{
+    const std::string extension = LowerExtension(output);
+    return extension == ".png" || extension == ".svg";
 }
 
 /// Figures in a directory are named after their scene file: two scenes of one file name (a/x.json and b/x.json,
 /// or one file given twice) would write the same figures. Returns a one-line reason naming both, or "".
-std::string SameFigureNames(const std::vector<std::string>& scenes, const std::string& output, bool allSteps)
+std::string SameFigureNames(const std::vector<std::string>& scenes, const std::string& output, bool allSteps,
+                            bool svg)
 {
     std::map<std::string, std::string> byStem;
     for (const std::string& file : scenes)
@@ -217,7 +254,7 @@ std::string SameFigureNames(const std::vector<std::string>& scenes, const std::s
         if (!inserted)
         {
             return first->second + " and " + file + " would both write " +
-                   (allSteps ? stem + "-stepN.png" : stem + ".png") + " in " + output +
+                   FigureName(allSteps ? stem + "-stepN" : stem, svg) + " in " + output +
                    "; figures are named after the scene file: render them to separate directories";
         }
     }
@@ -228,7 +265,7 @@ std::string SameFigureNames(const std::vector<std::string>& scenes, const std::s
 
 int main(int argc, char** argv)
 {
-    CLI::App app{"satviz-render: draws scene files and each step of their SAT trace to PNG, without a display"};
+    CLI::App app{"satviz-render: draws scene files and each step of their SAT trace to PNG or SVG, without a display"};
     app.set_version_flag("--version", std::string("satviz-render ") + SATVIZ_VERSION);
     std::vector<std::string> scenes;
     std::string output;
@@ -239,11 +276,15 @@ int main(int argc, char** argv)
     bool quiet = false;
     app.add_option("scenes", scenes, "Scene files (JSON)")->required();
     app.add_option("-o,--output", output,
-                   "Output: a .png file (any case: .PNG too) for a single figure, else a directory (created if "
-                   "missing) that receives SCENE.png, or SCENE-stepN.png (N from 1) with --all-steps, named after "
-                   "each scene file without its extension; two scenes of the same file name (a/x.json, b/x.json) are "
-                   "refused")
+                   "Output: a .png or .svg file (any case: .PNG too) for a single figure, its format from the "
+                   "extension, else a directory (created if missing) that receives SCENE.png, or SCENE-stepN.png (N "
+                   "from 1) with --all-steps, named after each scene file without its extension; two scenes of the "
+                   "same file name (a/x.json, b/x.json) are refused")
         ->required();
+    std::string format;
+    app.add_option("--format", format,
+                   "png or svg: the format of the figures written to a directory (default png); a single file's "
+                   "format is its extension's. SVG keeps text as text, in the same font and layout as the PNG");
     std::string viewName;
     auto* stepOption = app.add_option(
         "--step", step, "Trace step to draw, counted from 1 (1 = the first axis; the last is the verdict)");
@@ -300,16 +341,29 @@ int main(int argc, char** argv)
         }
         options.setLayers = true;
     }
-    const bool singleFile = IsPngFile(output);
+    const bool singleFile = IsFigureFile(output);
+    if (!format.empty() && format != "png" && format != "svg")
+    {
+        std::fprintf(stderr, "satviz-render: --format: expected png or svg, got \"%s\"\n", format.c_str());
+        return 2;
+    }
+    if (singleFile && !format.empty() && "." + format != LowerExtension(output))
+    {
+        std::fprintf(stderr, "satviz-render: --format %s: the output %s says otherwise; give a directory, or a file "
+                     "name ending in .%s\n", format.c_str(), output.c_str(), format.c_str());
+        return 2;
+    }
+    const bool svg = singleFile ? LowerExtension(output) == ".svg" : format == "svg";
     if (singleFile && (scenes.size() != 1 || allSteps))
     {
         std::fprintf(stderr,
-                     "satviz-render: -o %s: a .png output takes exactly one figure; give a directory for "
+                     "satviz-render: -o %s: a %s output takes exactly one figure; give a directory for "
                      "several scenes or --all-steps\n",
-                     output.c_str());
+                     output.c_str(), svg ? ".svg" : ".png");
         return 2;
     }
-    if (const std::string clash = singleFile ? "" : SameFigureNames(scenes, output, allSteps); !clash.empty())
+    if (const std::string clash = singleFile ? "" : SameFigureNames(scenes, output, allSteps, svg);
+        !clash.empty())
     {
         std::fprintf(stderr, "satviz-render: %s\n", clash.c_str());
         return 2;
@@ -417,17 +471,23 @@ int main(int argc, char** argv)
             const std::string path =
                 singleFile ? output
                            : (std::filesystem::path(output) /
-                              (allSteps ? stem + "-step" + std::to_string(k + 1) + ".png" : stem + ".png"))
+                              FigureName(allSteps ? stem + "-step" + std::to_string(k + 1) : stem, svg))
                                  .string();
             const auto t0 = Clock::now();
-            if (!renderer.Render(loaded.scene, setup, rgb, error))
+            std::string document;
+            if (svg)
+            {
+                document = renderer.RenderSvg(loaded.scene, setup);
+            }
+            else if (!renderer.Render(loaded.scene, setup, rgb, error))
             {
                 std::fprintf(stderr, "satviz-render: %s: %s\n", file.c_str(), error.c_str());
                 sceneFailed = true;
                 break;
             }
             const auto t1 = Clock::now();
-            if (!satviz::WritePngFile(path, rgb, setup.figure.view.width, setup.figure.view.height, true, error))
+            if (svg ? !satviz::WriteFileAtomically(path, document, error)
+                    : !satviz::WritePngFile(path, rgb, setup.figure.view.width, setup.figure.view.height, true, error))
             {
                 std::fprintf(stderr, "satviz-render: %s\n", error.c_str());
                 sceneFailed = true;
@@ -452,8 +512,8 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "satviz-render: %d figure%s written in %.2f s", written, written == 1 ? "" : "s", total);
     if (timed > 0)
     {
-        std::fprintf(stderr, "; after the first, per figure: %.1f ms drawing, %.1f ms PNG, %.1f ms in all",
-                     1e3 * paintAndGl / timed, 1e3 * png / timed, 1e3 * (paintAndGl + png) / timed);
+        std::fprintf(stderr, "; after the first, per figure: %.1f ms drawing, %.1f ms %s, %.1f ms in all",
+                     1e3 * paintAndGl / timed, 1e3 * png / timed, svg ? "SVG" : "PNG", 1e3 * (paintAndGl + png) / timed);
     }
     if (failedScenes > 0)
     {

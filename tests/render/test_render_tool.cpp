@@ -2,6 +2,8 @@
 // satviz-render as a program: a batch survives a bad scene, errors are one line naming the file and the field,
 // output is written atomically, and the same input gives the same bytes.
 
+#include "support/xml_check.h"
+
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -255,6 +257,48 @@ TEST_CASE("satviz-render: -o with .png in any case is a file, not a directory", 
     REQUIRE(two.errLines.size() == 1);
     CHECK(two.errLines[0].find(".png output takes exactly one figure") != std::string::npos);
     CHECK(!fs::exists(dir / "two.PNG"));
+}
+
+TEST_CASE("satviz-render: -o FIG.svg writes the figure as well-formed SVG, the committed bytes", "[render-tool]")
+{
+    const fs::path dir = FreshDirectory("render-svg");
+    const Run run = Render(Scene("l14_head_on.json") + " -q -o " + (dir / "Head_On.SVG").string());
+    INFO(Joined(run.errLines));
+    REQUIRE(run.exitCode == 0);
+    const std::string svg = Bytes(dir / "Head_On.SVG");
+    const auto parsed = satviz::test::ParseXml(svg);
+    INFO(parsed.error);
+    REQUIRE(parsed.root != nullptr);
+    CHECK(parsed.root->name == "svg");
+    // The caption is text, in the figure's font: selectable, searchable.
+    std::vector<const satviz::test::XmlElement*> elements;
+    satviz::test::CollectElements(*parsed.root, elements);
+    bool caption = false;
+    for (const auto* element : elements)
+    {
+        caption = caption || (element->name == "text" && element->text.find("Before: A (mass 1.571)") == 0);
+    }
+    CHECK(caption);
+    const fs::path golden = fs::path(SATVIZ_SOURCE_DIR) / "tests/render/golden/l14_head_on.svg";
+    INFO("a changed figure: compare " << (dir / "Head_On.SVG").string() << " with " << golden.string()
+                                      << ", and copy it over when the change is meant");
+    CHECK(svg == Bytes(golden));
+
+    // A directory takes --format svg; the same scene again gives the same bytes.
+    const Run batch = Render(Scene("l14_head_on.json") + " -q --format svg -o " + dir.string());
+    REQUIRE(batch.exitCode == 0);
+    CHECK(Bytes(dir / "l14_head_on.svg") == svg);
+
+    // A format the file name contradicts, or an unknown one, is refused in one line.
+    const Run contradiction = Render(Scene("l14_head_on.json") + " --format png -o " + (dir / "x.svg").string());
+    CHECK(contradiction.exitCode == 2);
+    REQUIRE(contradiction.errLines.size() == 1);
+    CHECK(contradiction.errLines[0].find("--format png") != std::string::npos);
+    const Run unknown = Render(Scene("l14_head_on.json") + " --format pdf -o " + dir.string());
+    CHECK(unknown.exitCode == 2);
+    REQUIRE(unknown.errLines.size() == 1);
+    CHECK(unknown.errLines[0].find("expected png or svg") != std::string::npos);
+    CHECK(!fs::exists(dir / "x.svg"));
 }
 
 TEST_CASE("satviz-render --version prints its name and the project version", "[render-tool]")
