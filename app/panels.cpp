@@ -9,11 +9,13 @@
 // [SECTION] Status bar, popups and help
 // [SECTION] Lesson window
 #include "app.h"
+#include "wrapped_text.h"
 
 #include <satviz/render/describe.h>
 #include <satviz/render/layers.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
@@ -72,7 +74,7 @@ bool PathPopup(const char* title, const char* prompt, const char* action, char* 
 void HelpBullet(const char* text)
 {
     ImGui::Bullet();
-    ImGui::TextWrapped("%s", text);
+    WrappedText(text);
 }
 
 void HelpMarker(const char* text)
@@ -82,9 +84,7 @@ void HelpMarker(const char* text)
     if (ImGui::IsItemHovered())
     {
         ImGui::BeginTooltip();
-        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
-        ImGui::TextUnformatted(text);
-        ImGui::PopTextWrapPos();
+        ImGui::TextUnformatted(WrapToWidth(text, ImGui::GetFontSize() * 28.0f).c_str());
         ImGui::EndTooltip();
     }
 }
@@ -424,9 +424,7 @@ void Panels::SidePanel()
     ImGui::TextUnformatted(title.c_str());
     if (!document.GetScene().description.empty())
     {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("%s", document.GetScene().description.c_str());
-        ImGui::PopStyleColor();
+        WrappedTextDisabled(document.GetScene().description);
     }
     ImGui::Separator();
     if (app_.GetViewer().Setup().Ok())
@@ -548,28 +546,20 @@ void Panels::StepControls()
         app_.ShowStep(last);
     }
     ImGui::SameLine();
-    ImGui::Text("step %d of %d", viewer.Step() + 1, study.StepCount());
     ImGui::SetNextItemWidth(-1.0f);
     int shown = viewer.Step();
-    // Named as the step list and the sentence name the step: an axis of the textbook test, else a face test (or a
-    // circle's test, along no face).
-    std::string sliderText = "verdict";
-    if (viewer.Step() != last)
+    // Named as the step list and the sentence name the step ("axis 2 of 4", "face test 2 of 8", "verdict"), so
+    // that the slider speaks of the view's own steps.
+    std::string sliderText = StepName(studied, study, viewer.Step());
+    if (!sliderText.empty())
     {
-        const size_t k = static_cast<size_t>(viewer.Step());
-        const AxisKind kind = study.Textbook() ? AxisKind::FaceNormal
-                              : study.sweep    ? study.sweepTrace.axes[k].axis.kind
-                                               : study.trace.axes[k].axis.kind;
-        sliderText = (study.Textbook()               ? "axis "
-                      : kind == AxisKind::FaceNormal ? "face test "
-                                                     : "test ") +
-                     std::to_string(viewer.Step() + 1);
+        sliderText[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(sliderText[0])));
     }
     if (ImGui::SliderInt("##step", &shown, 0, last, sliderText.c_str()) && shown != viewer.Step())
     {
         app_.ShowStep(shown);
     }
-    ImGui::TextWrapped("%s", DescribeStep(studied, study, viewer.Step()).c_str());
+    WrappedText(DescribeStep(studied, study, viewer.Step()));
 
     ImGui::Separator();
     ImGui::TextUnformatted(study.Textbook() ? "Axes tested (click one)" : "Face tests run (click one)");
@@ -655,7 +645,7 @@ void Panels::Inspector()
     const PairStudy& study = viewer.Setup().study;
     if (single && !study.singlePrecision)
     {
-        ImGui::TextWrapped("A polygon is not valid once rounded to float: the numbers are double.");
+        WrappedText("A polygon is not valid once rounded to float: the numbers are double.");
     }
     // Every number in full, as the shortest decimal that reads back as the same value.
     auto full = [&](double v) {
@@ -664,6 +654,37 @@ void Panels::Inspector()
     auto number = [&](const std::string& label, double v) { NumberLine(label, {full(v)}); };
     auto point = [&](const std::string& label, Vec2 p) { NumberLine(label, {full(p.x), full(p.y)}); };
     const Manifold& m = study.manifold;
+    // A sweep's numbers first, as its verdict gives them; then the static test where the bodies start (t = 0),
+    // under a heading of its own, since its gap or overlap is not the sweep's answer.
+    if (study.sweep)
+    {
+        ImGui::TextUnformatted("Swept test (t from 0 to 1):");
+        ImGui::Indent();
+        const bool textbookSweep = study.Textbook();
+        const SweepStatus status = textbookSweep ? study.textbookSweepResult.status : study.sweepResult.status;
+        if (status == SweepStatus::Hit)
+        {
+            const SweepResult& r = study.sweepResult;
+            number("time of impact t", textbookSweep ? study.textbookSweepResult.toi : r.toi);
+            point("normal at impact (A to B)", textbookSweep ? study.textbookSweepResult.normal : r.normal);
+            // The contacts the figure labels c1, c2 in a sweep (satviz-query's "toi_contacts", in that order).
+            for (int i = 0; i < r.contactCount; ++i)
+            {
+                point("contact c" + std::to_string(i + 1) + " at impact", r.contacts[i].point);
+            }
+        }
+        else
+        {
+            WrappedText("no hit during the step: no time of impact");
+        }
+        ImGui::Unindent();
+        ImGui::TextUnformatted("Static test at t = 0 (the start):");
+        ImGui::Indent();
+    }
+    else if (study.startsOverlapping)
+    {
+        WrappedText("Moving, but overlapping at t = 0: no time of impact; the static test at t = 0:");
+    }
     ImGui::Text("overlap: %s", m.overlap ? "yes" : "no");
     // The textbook view shows the MTV its own test found; the contact points come from Collide's clipping.
     const bool textbook = study.Textbook();
@@ -681,30 +702,14 @@ void Panels::Inspector()
     point(m.overlap ? "MTV direction (A to B)" : "separating axis (A to B)", normal);
     for (int i = 0; i < m.contactCount; ++i)
     {
-        // In the order the figure labels them c1, c2, and satviz-query lists "contacts".
-        point("contact c" + std::to_string(i + 1) + (study.sweep ? " at t = 0" : ""), m.contacts[i].point);
+        // In the order the figure labels them c1, c2, and satviz-query lists "contacts"; in a sweep the figure's
+        // c1 and c2 are the contacts at the time of impact, so these are only numbered.
+        point(study.sweep ? "contact " + std::to_string(i + 1) : "contact c" + std::to_string(i + 1),
+              m.contacts[i].point);
     }
     if (study.sweep)
     {
-        const SweepResult& r = study.sweepResult;
-        if (r.status == SweepStatus::Hit)
-        {
-            number("time of impact", r.toi);
-            point("normal at impact", r.normal);
-            // The contacts the figure labels c1, c2 in a sweep (satviz-query's "toi_contacts", in that order).
-            for (int i = 0; i < r.contactCount; ++i)
-            {
-                point("contact c" + std::to_string(i + 1) + " at impact", r.contacts[i].point);
-            }
-        }
-        else
-        {
-            ImGui::TextUnformatted("time of impact: none (no hit in this step)");
-        }
-    }
-    else if (study.startsOverlapping)
-    {
-        ImGui::TextUnformatted("moving, but overlapping at t = 0: no time of impact");
+        ImGui::Unindent();
     }
     const int selected = app_.Selected();
     const std::vector<Body>& bodies = app_.GetDocument().GetScene().bodies;
@@ -927,7 +932,7 @@ void Panels::HelpOverlay()
     if (ImGui::Begin("Help (F1 or Esc closes)", &showHelp_,
                      ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoResize))
     {
-        ImGui::TextWrapped("The Separating Axis Theorem: two convex shapes do not touch if and only if some axis "
+        WrappedText("The Separating Axis Theorem: two convex shapes do not touch if and only if some axis "
                            "exists on which their projections (intervals) do not overlap. For polygons it is "
                            "enough to try the normals of their edges. The test projects both shapes on each axis "
                            "in turn and stops at the first gap. When every axis overlaps, the axis needing the "
@@ -1000,11 +1005,18 @@ void Panels::LessonWindow()
     ImGui::TextDisabled("lesson %d of %d", current + 1, count);
     if (!lesson.scenes.empty())
     {
+        // The buttons go on in a row, and on the next line where the next one would pass the column's edge.
         ImGui::TextUnformatted("Scenes:");
+        const ImGuiStyle& style = ImGui::GetStyle();
         for (const std::string& scene : lesson.scenes)
         {
-            ImGui::SameLine();
             const std::string name = std::filesystem::path(scene).stem().string();
+            const float width = ImGui::CalcTextSize(name.c_str()).x + 2.0f * style.FramePadding.x;
+            ImGui::SameLine();
+            if (width > ImGui::GetContentRegionAvail().x)
+            {
+                ImGui::NewLine();
+            }
             if (ImGui::SmallButton(name.c_str()))
             {
                 app_.RequestOpen(scene);
@@ -1025,29 +1037,28 @@ void Panels::LessonWindow()
         case LessonBlock::Kind::Heading:
             ImGui::Spacing();
             ImGui::PushFont(app_.Fonts().heading);
-            ImGui::TextWrapped("%s", block.text.c_str());
+            WrappedText(block.text);
             ImGui::PopFont();
             break;
         case LessonBlock::Kind::Paragraph:
-            ImGui::TextWrapped("%s", block.text.c_str());
+            WrappedText(block.text);
             ImGui::Spacing();
             break;
         case LessonBlock::Kind::Item:
             ImGui::Indent(static_cast<float>(block.level - 1) * 14.0f);
             ImGui::Bullet();
-            ImGui::TextWrapped("%s", block.text.c_str());
+            WrappedText(block.text);
             ImGui::Unindent(static_cast<float>(block.level - 1) * 14.0f);
             break;
         case LessonBlock::Kind::Code:
-            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            ImGui::TextUnformatted(block.text.c_str());
-            ImGui::PopStyleColor();
+            // Each line wraps between its words, its indentation kept on its first line.
+            WrappedTextDisabled(block.text);
             ImGui::Spacing();
             break;
         case LessonBlock::Kind::Figure:
         {
             // The figure is the canvas: a figure of a scene opens that scene there.
-            ImGui::TextDisabled("Figure: %s", block.text.c_str());
+            WrappedTextDisabled("Figure: " + block.text);
             const std::string stem = SceneOfFigure(block.target);
             const std::string scene =
                 (std::filesystem::path(app_.Options().lessonsDir) / "scenes" / (stem + ".json")).string();

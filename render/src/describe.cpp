@@ -186,8 +186,7 @@ std::string TextbookAxisStep(const Scene& scene, const PairStudy& study, int ste
     const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(step)];
     const std::string& nameA = NameOf(scene, study, 0);
     const std::string& nameB = NameOf(scene, study, 1);
-    std::string text = "Axis " + std::to_string(step + 1) + " of " + std::to_string(study.textbookResult.axisCount) +
-                       ": " + DescribeFaces(scene, study, t.faces, t.faceCount) + ". " + nameA + " projects to " +
+    std::string text = StepName(scene, study, step) + ": " + DescribeFaces(scene, study, t.faces, t.faceCount) + ". " + nameA + " projects to " +
                        Interval(t.minA, t.maxA) + ", " + nameB + " to " + Interval(t.minB, t.maxB) + ". ";
     if (t.separating)
     {
@@ -309,7 +308,7 @@ std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, in
     const TextbookSweepAxis& t = study.textbookSweep.axes[static_cast<size_t>(step)];
     const std::string& nameA = NameOf(scene, study, 0);
     const std::string& nameB = NameOf(scene, study, 1);
-    std::string text = "Axis " + std::to_string(step + 1) + ": " + DescribeFaces(scene, study, t.faces, t.faceCount) +
+    std::string text = StepName(scene, study, step) + ": " + DescribeFaces(scene, study, t.faces, t.faceCount) +
                        ". At t = 0 " + nameA + " projects to " + Interval(t.minA, t.maxA) + ", " + nameB + " to " +
                        Interval(t.minB, t.maxB) + "; ";
     if (t.never)
@@ -448,8 +447,7 @@ std::string FaceTestStep(const Scene& scene, const PairStudy& study, int step)
 {
     const AxisTest& test = study.trace.axes[static_cast<size_t>(step)];
     const bool face = test.axis.kind == AxisKind::FaceNormal;
-    std::string text = (face ? "Face test " : "Test ") + std::to_string(step + 1) + " of " +
-                       std::to_string(CandidateCount(scene, study)) + ": ";
+    std::string text = StepName(scene, study, step) + ": ";
     const int owner = face ? test.axis.shape : 0;
     const std::string& own = NameOf(scene, study, owner);
     const std::string& other = NameOf(scene, study, 1 - owner);
@@ -610,8 +608,7 @@ std::string FaceSweepStep(const Scene& scene, const PairStudy& study, int step)
     const SweepAxis& axis = study.sweepTrace.axes[static_cast<size_t>(step)];
     const bool face = axis.axis.kind == AxisKind::FaceNormal;
     const std::string other = face ? NameOf(scene, study, 1 - axis.axis.shape) : std::string("the other shape");
-    std::string text = (face ? "Face test " : "Test ") + std::to_string(step + 1) + ": " +
-                       DescribeAxis(scene, study, axis.axis) + ". ";
+    std::string text = StepName(scene, study, step) + ": " + DescribeAxis(scene, study, axis.axis) + ". ";
     if (axis.bounded || axis.skipped)
     {
         // The numbers of a face decided without evaluation are the view's own.
@@ -795,6 +792,28 @@ std::string DescribeAxis(const Scene& scene, const PairStudy& study, const AxisR
         break;
     }
     return "no axis";
+}
+
+std::string StepName(const Scene& scene, const PairStudy& study, int step)
+{
+    if (step < 0 || step >= study.StepCount())
+    {
+        return "";
+    }
+    if (step == study.VerdictStep())
+    {
+        return "Verdict";
+    }
+    const size_t k = static_cast<size_t>(step);
+    const std::string number = std::to_string(step + 1);
+    if (study.Textbook())
+    {
+        // The static test counts the distinct axes it would test in all; a sweep's list ends where it is decided.
+        return "Axis " + number + (study.sweep ? "" : " of " + std::to_string(study.textbookResult.axisCount));
+    }
+    const AxisKind kind = study.sweep ? study.sweepTrace.axes[k].axis.kind : study.trace.axes[k].axis.kind;
+    const std::string name = (kind == AxisKind::FaceNormal ? "Face test " : "Test ") + number;
+    return study.sweep ? name : name + " of " + std::to_string(CandidateCount(scene, study));
 }
 
 std::string DescribeStep(const Scene& scene, const PairStudy& study, int step)

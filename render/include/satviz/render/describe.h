@@ -34,6 +34,11 @@ std::string ShortestDecimal(float value);
 /// Where an axis comes from, in words: "normal of B's edge 1", "from pentagon's vertex 2 to ball's centre".
 std::string DescribeAxis(const Scene& scene, const PairStudy& study, const AxisRef& axis);
 
+/// What a step is called, as its caption begins and the app's step controls name it: "Axis 3 of 8" (textbook),
+/// "Face test 2 of 8" or "Test 9 of 9" (a circle's axis, along no face) in the face tests, without the count in a
+/// sweep, "Verdict" for the verdict; empty for a step that does not exist.
+std::string StepName(const Scene& scene, const PairStudy& study, int step);
+
 /// The caption of a step, one or two plain sentences with the step's numbers, e.g. "Axis 3 of 8: normal of B's
 /// edge 1. Intervals [0.10, 1.32] and [1.20, 2.05] overlap by 0.12."
 std::string DescribeStep(const Scene& scene, const PairStudy& study, int step);
