@@ -115,9 +115,11 @@ void Panels::CanvasWindow()
     const Viewer& viewer = app_.GetViewer();
     if (!canvasAnnounced_)
     {
-        // One line for scripts that drive the window (the end-to-end test).
-        std::printf("satviz: canvas at %.0f,%.0f size %dx%d\n", origin.x, origin.y, viewer.CanvasWidth(),
-                    viewer.CanvasHeight());
+        // One line for scripts that drive the window (the end-to-end test): where the canvas is, and its camera
+        // (a scene's own framing is scaled to the canvas), so that they can find a world point on the screen.
+        const View& camera = viewer.Camera();
+        std::printf("satviz: canvas at %.0f,%.0f size %dx%d camera %.17g,%.17g zoom %.17g\n", origin.x, origin.y,
+                    viewer.CanvasWidth(), viewer.CanvasHeight(), camera.center.x, camera.center.y, camera.zoom);
         std::fflush(stdout);
         canvasAnnounced_ = true;
     }

@@ -8,6 +8,31 @@
 namespace satviz
 {
 
+namespace
+{
+
+// The camera that shows in a figure of `width` x `height` what `frame` (a view block's centre and zoom, for a
+// figure of its own size) showed in its scene area: the same world rectangle, scaled to fit the new scene area and
+// centred in it. The scene area is what lies between the caption band and the number line, which keep their
+// sizes in pixels.
+View Reframe(const SceneView& frame, const PairStudy& study, LayerMask layers, bool titled, int width, int height)
+{
+    const FigureLayout from = LayoutFigure(study, layers, frame.width, frame.height, titled);
+    const FigureLayout to = LayoutFigure(study, layers, width, height, titled);
+    const double fromHeight = std::max(1.0, static_cast<double>(from.sceneBottom - from.sceneTop));
+    const double toHeight = std::max(1.0, static_cast<double>(to.sceneBottom - to.sceneTop));
+    View view;
+    view.width = width;
+    view.height = height;
+    view.zoom = frame.zoom * std::min(static_cast<double>(width) / frame.width, toHeight / fromHeight);
+    // The world point at the middle of the scene area stays at its middle.
+    const double middle = frame.center.y - (0.5 * (from.sceneTop + from.sceneBottom) - 0.5 * frame.height) / frame.zoom;
+    view.center = {frame.center.x, middle + (0.5 * (to.sceneTop + to.sceneBottom) - 0.5 * height) / view.zoom};
+    return view;
+}
+
+} // namespace
+
 Viewer::Viewer(int backgroundVertices) : backgroundVertices_(backgroundVertices) {}
 
 void Viewer::Reset(const Scene& scene)
@@ -15,6 +40,11 @@ void Viewer::Reset(const Scene& scene)
     choices_ = ChoicesOfView(scene.view);
     playing_ = false;
     cameraFit_ = scene.view.fit;
+    // A scene that frames itself (the lessons' scenes) was framed for a figure of its own size, 800 x 600 unless
+    // it says otherwise; the canvas left beside the panels and a lesson is another size, so each figure scales
+    // that framing to fit it (Adopt).
+    framed_ = !cameraFit_;
+    frame_ = scene.view;
     if (!cameraFit_)
     {
         camera_.center = scene.view.center;
@@ -133,6 +163,11 @@ void Viewer::Adopt(FigureSetup fresh, Scene studied)
     {
         camera_ = setup_.figure.view;
     }
+    else if (framed_)
+    {
+        camera_ = Reframe(frame_, setup_.study, choices_.layers, !studied_.view.caption.empty(), canvasWidth_,
+                          canvasHeight_);
+    }
     camera_.width = canvasWidth_;
     camera_.height = canvasHeight_;
     setup_.figure.view = camera_;
@@ -201,18 +236,21 @@ void Viewer::SetCamera(Vec2 center, double zoom)
     camera_.center = center;
     camera_.zoom = zoom;
     cameraFit_ = false;
+    framed_ = false;
 }
 
 void Viewer::PanCamera(float dx, float dy)
 {
     camera_ = Pan(camera_, dx, dy);
     cameraFit_ = false;
+    framed_ = false;
 }
 
 void Viewer::ZoomCamera(ScreenPoint fixed, double factor)
 {
     camera_ = ZoomAbout(camera_, fixed, factor);
     cameraFit_ = false;
+    framed_ = false;
 }
 
 bool Viewer::PlaceCanvas(ScreenPoint origin, int width, int height)

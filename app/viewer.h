@@ -78,8 +78,15 @@ class Viewer
     const View& Camera() const { return camera_; }
     /// True while the camera follows the fit of the pair (until the user pans or zooms).
     bool CameraFit() const { return cameraFit_; }
+    /// True while the camera shows the framing of the scene's view block (its centre and zoom, made for a figure
+    /// of its width and height) scaled to fit the canvas, until the user pans, zooms or fits the pair.
+    bool CameraFramed() const { return framed_; }
     /// Lets the camera follow the fit of the pair again, from the next Refresh.
-    void FitCamera() { cameraFit_ = true; }
+    void FitCamera()
+    {
+        cameraFit_ = true;
+        framed_ = false;
+    }
     /// Holds the camera where it is (the scene changes under the pointer).
     void HoldCamera() { cameraFit_ = false; }
     /// Puts the camera's centre at world point `center`, `zoom` pixels per unit, and holds it there.
@@ -130,6 +137,8 @@ class Viewer
     double time_ = -1.0;
     View camera_;
     bool cameraFit_ = true;
+    bool framed_ = false;
+    SceneView frame_; // the scene's own framing, while framed_
     ScreenPoint canvasOrigin_{};
     int canvasWidth_ = 800;
     int canvasHeight_ = 600;

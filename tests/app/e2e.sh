@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# End-to-end test of the app in a real window under Xvfb, driven by xdotool: open a scene, drag body B, open a
-# lesson from Help > Lessons (the lesson column appears and the app asks before its scene replaces the unsaved drag:
-# cancel), step forward three times, save, export a PNG, quit; then satviz-render on the saved scene must give the
-# same bytes.
+# End-to-end test of the app in a real window under Xvfb, driven by xdotool: open a scene (its own framing scaled to
+# the canvas), drag body B, open a lesson from Help > Lessons (the lesson column appears and the app asks before its
+# scene replaces the unsaved drag: cancel; the framing scales down to the narrower canvas), step forward three
+# times, save, export a PNG, quit; then satviz-render on the saved scene must give the same bytes.
 # Usage: e2e.sh SATVIZ SATVIZ_RENDER SCENE WORKDIR. Exits 77 (skipped) when Xvfb or xdotool is missing.
 set -euo pipefail
 app=$1 render=$2 scene=$3 work=$4
@@ -56,12 +56,16 @@ pid=$!
 trap 'kill $pid 2> /dev/null || true' EXIT
 xdotool search --sync --onlyvisible --name '^satviz$' > /dev/null
 for _ in $(seq 50); do grep -q "canvas at" "$work/app.log" && break; sleep 0.1; done
-read -r cx cy cw ch < <(sed -n 's/^satviz: canvas at \([0-9]*\),\([0-9]*\) size \([0-9]*\)x\([0-9]*\)$/\1 \2 \3 \4/p' "$work/app.log")
-echo "canvas at $cx,$cy size ${cw}x$ch"
+read -r cx cy cw ch vx vy zoom < <(sed -n 's/^satviz: canvas at \([0-9]*\),\([0-9]*\) size \([0-9]*\)x\([0-9]*\) camera \([-0-9.e]*\),\([-0-9.e]*\) zoom \([-0-9.e]*\)$/\1 \2 \3 \4 \5 \6 \7/p' "$work/app.log")
+echo "canvas at $cx,$cy size ${cw}x$ch, camera at $vx,$vy zoom $zoom"
+# The scene frames itself for an 800 x 600 figure (centre (0.5, 0), 120 pixels per unit): the canvas, another size,
+# shows that framing scaled to fit it, and the same world centre.
+awk -v vx="$vx" -v zoom="$zoom" -v cw="$cw" 'BEGIN { exit !(vx == 0.5 && zoom > 0 && zoom * 800 / 120 <= cw + 0.5) }' ||
+  { echo "FAILED: the scene's framing (centre x 0.5, 800 pixels at 120 per unit) is not kept on the canvas"; exit 1; }
 
-# Body B's origin on screen, from the scene's fixed camera (centre (0.5, 0), 120 pixels per unit).
-bx=$(awk -v cx="$cx" -v cw="$cw" 'BEGIN { printf "%d", cx + cw / 2 + (1.3 - 0.5) * 120 }')
-by=$(awk -v cy="$cy" -v ch="$ch" 'BEGIN { printf "%d", cy + ch / 2 - 0.6 * 120 }')
+# Body B's origin (1.3, 0.6) on screen, from the camera.
+bx=$(awk -v cx="$cx" -v cw="$cw" -v vx="$vx" -v z="$zoom" 'BEGIN { printf "%d", cx + cw / 2 + (1.3 - vx) * z }')
+by=$(awk -v cy="$cy" -v ch="$ch" -v vy="$vy" -v z="$zoom" 'BEGIN { printf "%d", cy + ch / 2 - (0.6 - vy) * z }')
 xdotool mousemove "$bx" "$by"
 sleep 0.3
 xdotool mousedown 1
@@ -101,13 +105,20 @@ fi
 cat "$work/app.log"
 
 grep -q '"step":4' "$work/scene.json" || { echo "FAILED: the saved scene is not at step 4 (three steps on from the first, counted from 1):"; cat "$work/scene.json"; exit 1; }
-python3 - "$work/scene.json" << 'PY' || exit 1
+python3 - "$work/scene.json" "$zoom" << 'PY' || exit 1
 import json, sys
 body = json.load(open(sys.argv[1]))["bodies"][1]
 x, y = body["position"]
-# dragged by (30, -12) pixels at 120 pixels per unit: (+0.25, +0.1); the boxes still overlap, so step 4 exists
-if abs(x - 1.55) > 0.02 or abs(y - 0.7) > 0.02:
-    sys.exit(f"FAILED: body B is at {x}, {y}, expected about 1.55, 0.7 after the drag")
+zoom = float(sys.argv[2])
+# dragged by (30, -12) pixels at `zoom` pixels per unit; the boxes still overlap, so step 4 exists
+ex, ey = 1.3 + 30 / zoom, 0.6 + 12 / zoom
+if abs(x - ex) > 2 / zoom or abs(y - ey) > 2 / zoom:
+    sys.exit(f"FAILED: body B is at {x}, {y}, expected about {ex:.3f}, {ey:.3f} after the drag")
+# Saved beside the lesson column, in the narrower canvas: the same framing, scaled down to its width.
+view = json.load(open(sys.argv[1]))["view"]
+width = view["size"][0]
+if not (width < 900 and view["center"][0] == 0.5 and abs(view["zoom"] * 800 / 120 - width) <= 0.5):
+    sys.exit(f"FAILED: the view saved beside the lesson column does not keep the scene's framing: {view}")
 PY
 [ -f "$work/export.png" ] || { echo "FAILED: no exported PNG"; exit 1; }
 "$render" -q "$work/scene.json" -o "$work/render.png"

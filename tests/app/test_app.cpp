@@ -3,14 +3,18 @@
 // would. Drags move bodies, keys step through the trace, undo restores, refused edits say why.
 #include "app.h"
 #include "key_queue.h"
+#include "wrapped_text.h"
 
 #include <satviz/collide.h>
 #include <satviz/render/describe.h>
+#include <satviz/render/wrap.h>
 
 #include <catch2/catch.hpp>
 #include <imgui_internal.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -1105,6 +1109,164 @@ TEST_CASE("Opening a lesson with unsaved changes shows it and asks before its sc
     CHECK(Harness::Showing("Unsaved changes before opening"));
     CHECK(Harness::Showing("Lesson###lesson"));
     CHECK(Harness::Showing("Help (F1 or Esc closes)"));
+}
+
+TEST_CASE("A scene that frames itself keeps its framing, scaled to the canvas left beside a lesson", "[app][lessons]")
+{
+    // The lessons' scenes frame their figures for 800 x 600 pixels; beside the lesson column and the side panel the
+    // canvas is narrower. Every point of the pair that the scene's own figure shows in its scene area must show in
+    // the canvas's scene area, and the figure's scene area must fill the canvas's in width or in height.
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    REQUIRE(h.app->OpenLesson(16));
+    h.Frames(3);
+    REQUIRE(h.app->LessonShown());
+    int framed = 0;
+    for (const std::string& file : h.app->BundledScenes())
+    {
+        INFO(file);
+        REQUIRE(h.app->RequestOpen(file));
+        h.Frames(3);
+        const Scene& scene = h.Doc().GetScene();
+        if (scene.view.fit)
+        {
+            continue;
+        }
+        ++framed;
+        const Viewer& viewer = h.View();
+        REQUIRE(viewer.Setup().Ok());
+        CHECK(viewer.CameraFramed());
+        CHECK(viewer.CanvasWidth() < scene.view.width);
+        View authored;
+        authored.center = scene.view.center;
+        authored.zoom = scene.view.zoom;
+        authored.width = scene.view.width;
+        authored.height = scene.view.height;
+        const bool titled = !scene.view.caption.empty();
+        const PairStudy& study = viewer.Setup().study;
+        const LayerMask layers = viewer.Choices().layers;
+        const FigureLayout from = LayoutFigure(study, layers, authored.width, authored.height, titled);
+        const FigureLayout to = LayoutFigure(study, layers, viewer.CanvasWidth(), viewer.CanvasHeight(), titled);
+        const View& camera = viewer.Camera();
+        std::vector<Vec2> points;
+        for (const int index : {study.bodyA, study.bodyB})
+        {
+            const Body& body = scene.bodies[static_cast<size_t>(index)];
+            if (body.shape.type == ShapeType::Polygon)
+            {
+                for (const Vec2& v : body.shape.polygon.Vertices())
+                {
+                    points.push_back(TransformPoint(body.Xf(), v));
+                }
+            }
+            else
+            {
+                const Vec2 c = TransformPoint(body.Xf(), body.shape.circle.center);
+                const double r = body.shape.circle.radius;
+                for (const Vec2 d : {Vec2{r, 0.0}, Vec2{-r, 0.0}, Vec2{0.0, r}, Vec2{0.0, -r}})
+                {
+                    points.push_back(c + d);
+                }
+            }
+        }
+        for (const Vec2& p : points)
+        {
+            const ScreenPoint before = ToScreen(authored, p);
+            if (before.x < 0.0f || before.x > static_cast<float>(authored.width) || before.y < from.sceneTop ||
+                before.y > from.sceneBottom)
+            {
+                continue; // not in the scene's own figure either
+            }
+            const ScreenPoint now = ToScreen(camera, p);
+            INFO("(" << p.x << ", " << p.y << ") at " << now.x << ", " << now.y);
+            CHECK(now.x >= -0.5f);
+            CHECK(now.x <= static_cast<float>(viewer.CanvasWidth()) + 0.5f);
+            CHECK(now.y >= to.sceneTop - 0.5f);
+            CHECK(now.y <= to.sceneBottom + 0.5f);
+        }
+        // The corners of the figure's scene area, on the canvas: inside it, and as wide or as high as it.
+        const ScreenPoint low = ToScreen(camera, ToWorld(authored, {0.0f, from.sceneBottom}));
+        const ScreenPoint high = ToScreen(camera, ToWorld(authored, {static_cast<float>(authored.width), from.sceneTop}));
+        CHECK(low.x >= -0.5f);
+        CHECK(high.x <= static_cast<float>(viewer.CanvasWidth()) + 0.5f);
+        CHECK(high.y >= to.sceneTop - 0.5f);
+        CHECK(low.y <= to.sceneBottom + 0.5f);
+        const bool fillsWidth = high.x - low.x >= static_cast<float>(viewer.CanvasWidth()) - 1.0f;
+        const bool fillsHeight = low.y - high.y >= to.sceneBottom - to.sceneTop - 1.0f;
+        CHECK((fillsWidth || fillsHeight));
+    }
+    CHECK(framed >= 20);
+
+    // l17_skips: the tested wall, at the far right of the scene's figure, is on the canvas.
+    REQUIRE(h.app->RequestOpen(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/l17_skips.json"));
+    h.Frames(3);
+    const double narrow = h.View().Camera().zoom;
+    const Body& wall = h.BodyNamed("right wall");
+    for (const Vec2& v : wall.shape.polygon.Vertices())
+    {
+        const ScreenPoint p = ToScreen(h.View().Camera(), TransformPoint(wall.Xf(), v));
+        CHECK(p.x >= 0.0f);
+        CHECK(p.x <= static_cast<float>(h.View().CanvasWidth()));
+    }
+    // Closing the lesson widens the canvas, and the framing grows with it; a drag of the view takes it over.
+    h.app->CloseLesson();
+    h.Frames(3);
+    CHECK(h.View().Camera().zoom > narrow);
+    CHECK(h.View().CameraFramed());
+    const ImVec2 empty(h.CanvasOrigin().x + 20.0f, h.CanvasOrigin().y + 300.0f);
+    h.Drag(empty, ImVec2(empty.x + 40.0f, empty.y));
+    CHECK(!h.View().CameraFramed());
+    const double held = h.View().Camera().zoom;
+    REQUIRE(h.app->OpenLesson(16));
+    h.Frames(3);
+    CHECK(h.View().Camera().zoom == held);
+}
+
+TEST_CASE("Text in the panels wraps between words only: a number is never split, nor a bracketed pair", "[app]")
+{
+    // Dear ImGui's own wrapping breaks after '.' and ',' too ("direction (0." / "00, 1.00)"). The sentences of every
+    // step of the bundled scenes, wrapped at many widths: the lines joined by spaces give the sentence back (breaks
+    // only at spaces), a bracket that opens a number closes on its line, and only a line of one word is too wide.
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    ImGui::NewFrame();
+    int lines = 0;
+    for (const std::string& file : h.app->BundledScenes())
+    {
+        const SceneResult loaded = LoadScene(file);
+        REQUIRE(loaded.Ok());
+        const FigureSetup setup = SetUpFigure(loaded.scene, {});
+        REQUIRE(setup.Ok());
+        for (int step = 0; step < setup.study.StepCount(); ++step)
+        {
+            const std::string text = DescribeStep(loaded.scene, setup.study, step);
+            for (float width = 60.0f; width <= 420.0f; width += 40.0f)
+            {
+                const std::string wrapped = WrapToWidth(text, width);
+                std::string joined = wrapped;
+                std::replace(joined.begin(), joined.end(), '\n', ' ');
+                INFO(file << " step " << step + 1 << " at " << width << " px:\n" << wrapped);
+                REQUIRE(joined == text);
+                std::stringstream in(wrapped);
+                for (std::string line; std::getline(in, line); ++lines)
+                {
+                    int open = 0;
+                    for (size_t i = 0; i + 1 < line.size(); ++i)
+                    {
+                        const bool number = std::isdigit(static_cast<unsigned char>(line[i + 1])) || line[i + 1] == '-';
+                        open += (line[i] == '[' || line[i] == '(') && number ? 1 : 0;
+                        open -= (line[i + 1] == ']' || line[i + 1] == ')') && open > 0 ? 1 : 0;
+                    }
+                    CHECK((open == 0 || ImGui::CalcTextSize(line.c_str()).x > width));
+                    // Too wide only as one unbreakable word: a word, a bracketed pair, an equation ("t = 0.517").
+                    CHECK((ImGui::CalcTextSize(line.c_str()).x <= width || WrapWords(line).size() == 1));
+                }
+            }
+        }
+    }
+    ImGui::EndFrame();
+    CHECK(lines > 1000);
+    // A code line keeps its indentation on its first line; a newline always ends a line.
+    CHECK(WrapToWidth("  satviz-query --trace", 1000.0f) == "  satviz-query --trace");
+    CHECK(WrapToWidth("a\n\nb", 1000.0f) == "a\n\nb");
 }
 
 TEST_CASE("The bundled scenes are found from the program's folder: the data folder, else tutorials/ above it", "[app]")
