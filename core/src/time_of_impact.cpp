@@ -117,6 +117,19 @@ Transform TimeOfImpactStage::PoseAt(int i, double t) const
     return xf;
 }
 
+Aabb TimeOfImpactStage::PathBox(int i, double t) const
+{
+    const Motion& m = m_motion[i];
+    const RigidBody& body = m_world.bodies[i];
+    if (!m.moves)
+    {
+        return ComputeAabb(body.shape, PoseAt(i, t));
+    }
+    const Vec2 c0 = CenterAt(i, t), c1 = CenterAt(i, 1.0);
+    const double r = body.outerRadius;
+    return {{std::min(c0.x, c1.x) - r, std::min(c0.y, c1.y) - r}, {std::max(c0.x, c1.x) + r, std::max(c0.y, c1.y) + r}};
+}
+
 double TimeOfImpactStage::Speed(int i) const
 {
     const Motion& m = m_motion[i];
@@ -154,7 +167,7 @@ Aabb TimeOfImpactStage::Reach(int i, double speed) const
 }
 
 bool TimeOfImpactStage::Approaching(int i, int j, double t, Vec2 normal, const Vec2* points, int count,
-                                    double minSpeed) const
+                                    double minSpeed, const double* gaps) const
 {
     const Vec2 ci = CenterAt(i, t), cj = CenterAt(j, t);
     const Motion& mi = m_motion[i];
@@ -169,8 +182,11 @@ bool TimeOfImpactStage::Approaching(int i, int j, double t, Vec2 normal, const V
         const Vec2 vi = mi.v + wi * LeftPerp(points[k] - ci);
         const Vec2 vj = mj.v + wj * LeftPerp(points[k] - cj);
         // Round-off of the solve leaves a resolved pair approaching by a few ulps of the speeds: that is not an
-        // approach, and sweeping it again would find the same hit at the same time.
-        if (Dot(vj - vi, normal) < -(1e-9 * scale + minSpeed))
+        // approach, and sweeping it again would find the same hit at the same time. A point with a gap (a
+        // speculative contact) may close by the gap within the rest of the step: the contact allows that much.
+        const double allowed = gaps != nullptr ? minSpeed + std::max(0.0, gaps[k]) / (std::max(1.0 - t, 1e-12) * m_dt)
+                                               : minSpeed;
+        if (Dot(vj - vi, normal) < -(1e-9 * scale + allowed))
         {
             return true;
         }
@@ -307,6 +323,14 @@ void TimeOfImpactStage::SweepPair(int i, int j, bool anySpeed)
     // a point of one can move relative to the other within the rest of the step.
     if (!anySpeed && m_world.settings.sweepOnlyFast &&
         !OutrunsPair(m_world.settings, a, mi.v, mi.w, b, mj.v, mj.w, span))
+    {
+        return;
+    }
+    // Where each body can be over the rest of the step: the box of its outer circle along the path of its centre
+    // (a body at rest, its own box). The swept broadphase drew its boxes about the centre at the start, grown by the
+    // whole step's speed in every direction; these follow the path from now, and most pairs of a body just hit
+    // are apart by them.
+    if (!AabbOverlap(PathBox(i, t0), PathBox(j, t0)))
     {
         return;
     }
@@ -644,19 +668,22 @@ void TimeOfImpactStage::Run()
         for (const auto& [i, j] : pairs)
         {
             // A pair the step's contacts hold is left to them until a hit changes one of its bodies' course. They
-            // hold it if the solver left its points closing no faster than the slop allows to the step's end, and
-            // neither body turning faster than a contact follows (WorldSettings::speculativeTurn): a contact found
+            // hold it if the solver left its points closing no faster than the slop (and a speculative point's gap)
+            // allows to the step's end, and neither body turning faster than a contact follows
+            // (WorldSettings::speculativeTurn): a contact found
             // at the start of the step follows a turn only to first order, and the passes do not always bring a
             // small body pressed by a heavy one to a stop against the floor.
             const WorldContact* contact = ContactOf(world.contacts, i, j);
             if (contact != nullptr && !TurnsFast(i) && !TurnsFast(j))
             {
                 Vec2 points[2];
+                double gaps[2];
                 for (int k = 0; k < contact->pointCount; ++k)
                 {
                     points[k] = contact->points[k].point;
+                    gaps[k] = contact->points[k].separation;
                 }
-                if (!Approaching(i, j, 0.0, contact->normal, points, contact->pointCount, CloseSpeed(0.0)))
+                if (!Approaching(i, j, 0.0, contact->normal, points, contact->pointCount, CloseSpeed(0.0), gaps))
                 {
                     continue;
                 }

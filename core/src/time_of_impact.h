@@ -93,7 +93,9 @@ class TimeOfImpactStage
     bool IsFast(int i) const;
     bool TurnsFast(int i) const;
     Aabb Reach(int i, double speed) const;
-    bool Approaching(int i, int j, double t, Vec2 normal, const Vec2* points, int count, double minSpeed = 0.0) const;
+    Aabb PathBox(int i, double t) const;
+    bool Approaching(int i, int j, double t, Vec2 normal, const Vec2* points, int count, double minSpeed = 0.0,
+                     const double* gaps = nullptr) const;
     double CloseSpeed(double t) const;
     void SweepPair(int i, int j, bool anySpeed = false); // anySpeed: also a pair that is not fast
     bool Advance(int i, int j, double t0, Event& event);

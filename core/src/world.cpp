@@ -754,14 +754,18 @@ void Stepper::CorrectPositions()
     const int n = static_cast<int>(bodies.size());
     std::vector<Vec2> c(n);
     std::vector<double> angle(n);
-    std::vector<Rot> q(n);
+    // Each body's turn since the start of the step, as a rotation: the anchors found then turn by it. A circle
+    // turning about its centre keeps the identity, for its turning moves no point of its outline (a ball spinning
+    // a full turn in a step would otherwise be pushed along a normal turned any which way).
+    std::vector<Rot> turn(n);
     std::vector<uint8_t> turns(n); // turning moves the outline: not a circle about its centre
     for (int i = 0; i < n; ++i)
     {
         angle[i] = bodies[i].angle;
-        q[i] = MakeRot(angle[i]);
-        c[i] = bodies[i].position + Rotate(q[i], bodies[i].localCenter);
+        const Rot q = MakeRot(angle[i]);
+        c[i] = bodies[i].position + Rotate(q, bodies[i].localCenter);
         turns[i] = bodies[i].turnRadius > 0.0 ? 1 : 0;
+        turn[i] = turns[i] ? InvMulRot(xfs[i].q, q) : Rot{};
     }
     // Moves bodies a and b apart along n0 at a point with lever arms rA, rB and separation sep, by `factor` of the
     // overlap beyond the slop.
@@ -781,10 +785,16 @@ void Stepper::CorrectPositions()
         const double turnB = sb.invInertia * Cross(rB, P);
         c[a] = c[a] - sa.invMass * P;
         angle[a] += turnA;
-        q[a] = TurnBy(q[a], turnA);
         c[b] = c[b] + sb.invMass * P;
         angle[b] += turnB;
-        q[b] = TurnBy(q[b], turnB);
+        if (turns[a])
+        {
+            turn[a] = TurnBy(turn[a], turnA);
+        }
+        if (turns[b])
+        {
+            turn[b] = TurnBy(turn[b], turnB);
+        }
     };
     // One contact's points moved apart by `factor` of their overlap beyond the slop.
     const auto correct = [&](const SolverContact& sc, double factor) {
@@ -799,31 +809,22 @@ void Stepper::CorrectPositions()
         }
         const SolverBody& sa = solverBodies[a];
         const SolverBody& sb = solverBodies[b];
-        const Rot qa0 = xfs[a].q, qb0 = xfs[b].q;
-        // A circle turning about its centre stays where it is: its anchor and a normal it holds do not turn with
-        // it (a ball spinning a full turn in a step would otherwise be pushed along a normal turned any which
-        // way). Between two circles the normal joins their centres.
-        const bool turnsA = turns[a] != 0, turnsB = turns[b] != 0;
-        const int owner = sc.normalBody == 1 ? b : a;
-        Vec2 n0 = sc.normal;
-        if (!turnsA && !turnsB)
+        // The normal turns with the body that holds it; between two circles it joins their centres.
+        Vec2 n0 = Rotate(turn[sc.normalBody == 1 ? b : a], sc.normal);
+        if (!turns[a] && !turns[b])
         {
             const Vec2 d = c[b] - c[a];
-            const double length = Length(d);
+            const double length = std::sqrt(LengthSquared(d));
             if (length > 0.0)
             {
                 n0 = (1.0 / length) * d;
             }
         }
-        else if (owner == a ? turnsA : turnsB)
-        {
-            n0 = Rotate(q[owner], InvRotate(xfs[owner].q, sc.normal));
-        }
         for (int k = 0; k < sc.count; ++k)
         {
             const detail::SolverPoint& p = sc.points[k];
-            const Vec2 rA = turnsA ? Rotate(q[a], InvRotate(qa0, p.rA)) : p.rA;
-            const Vec2 rB = turnsB ? Rotate(q[b], InvRotate(qb0, p.rB)) : p.rB;
+            const Vec2 rA = Rotate(turn[a], p.rA);
+            const Vec2 rB = Rotate(turn[b], p.rB);
             const double sep = p.separation + Dot((c[b] + rB) - (c[a] + rA), n0);
             // A bounce that carries the point out of this much overlap within the step is left to do so: the
             // separating speed the velocity passes left at the point, not the one the restitution asked for,
@@ -846,9 +847,11 @@ void Stepper::CorrectPositions()
         {
             return;
         }
+        // The chord of a turn by `turn` is |turn - 1| (a circle's turn is kept as the identity, and its turn radius
+        // is 0 anyway).
         const auto moved = [&](int i) {
             return std::sqrt(LengthSquared(c[i] - centers[i])) +
-                   bodies[i].turnRadius * std::sqrt(LengthSquared(Vec2{q[i].c - xfs[i].q.c, q[i].s - xfs[i].q.s}));
+                   bodies[i].turnRadius * std::sqrt(LengthSquared(Vec2{turn[i].c - 1.0, turn[i].s}));
         };
         const double gap = std::min(g.points[0].separation, g.count > 1 ? g.points[1].separation : INFINITY);
         if (gap - moved(a) - moved(b) > -settings.linearSlop)
@@ -857,8 +860,9 @@ void Stepper::CorrectPositions()
         }
         const auto pose = [&](int i) {
             Transform xf;
-            xf.q = q[i];
-            xf.p = c[i] - Rotate(q[i], bodies[i].localCenter);
+            const Rot q0 = xfs[i].q, d = turn[i];
+            xf.q = {q0.c * d.c - q0.s * d.s, q0.s * d.c + q0.c * d.s};
+            xf.p = c[i] - Rotate(xf.q, bodies[i].localCenter);
             return xf;
         };
         // Beside a static body, once Collide finds them overlapping, the axis is the guard's normal, fixed as the
