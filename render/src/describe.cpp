@@ -653,8 +653,11 @@ std::string FaceSweepVerdict(const Scene& scene, const PairStudy& study)
     {
     case SweepStatus::Hit:
     {
-        std::string text = "Verdict: first contact at t = " + FormatNumber(r.toi) + " on " +
-                           DescribeAxis(scene, study, r.axis) + ", normal " + Pair(r.normal.x, r.normal.y) + ".";
+        // The face the other shape reaches at that time, which the picture marks; a circle's axis by its name.
+        const std::string where = r.axis.kind == AxisKind::FaceNormal ? "at " + FaceName(scene, study, r.axis)
+                                                                       : "along " + DescribeAxis(scene, study, r.axis);
+        std::string text = "Verdict: first contact at t = " + FormatNumber(r.toi) + ", " + where + ", normal " +
+                           Pair(r.normal.x, r.normal.y) + ".";
         text += r.contactCount == 1 ? " 1 contact point." : " " + std::to_string(r.contactCount) + " contact points.";
         return text;
     }
