@@ -441,6 +441,13 @@ class Painter
         {
             AxisInScene();
         }
+        else if (hasAxis_ && Has(figure_, kLayerProjection))
+        {
+            // A face skipped as anti-parallel to one already tested: its caption names it, so it is marked faintly,
+            // without an axis line (its axis was tested with the other face).
+            canvas_.BeginGroup("projection");
+            AxisSource(axis_.Ref(), WithAlpha(palette::kInk, 0.4f));
+        }
         if (hasAxis_ && Has(figure_, kLayerExit) && axis_.separating && !axis_.swept)
         {
             SeparatingLine();
@@ -1185,7 +1192,7 @@ class Painter
         canvas_.Text({left, top + 8.0f}, title, TextStyle::Label, palette::kMuted);
         if (axis_.skipped)
         {
-            canvas_.Text({left, top + 36.0f}, "skipped: parallel to an axis already tested", TextStyle::Body,
+            canvas_.Text({left, top + 36.0f}, "skipped: anti-parallel to a face already tested (the same axis)", TextStyle::Body,
                          palette::kMuted);
             return;
         }

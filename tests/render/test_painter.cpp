@@ -397,10 +397,7 @@ TEST_CASE("The face a sentence names is the face its picture marks, over random 
                 }
                 INFO("pose " << i << (view == StepView::Faces ? ", faces" : ", textbook") << ", step " << step + 1
                              << ": " << text);
-                // A face test skipped as anti-parallel to one already run draws no axis: its number line says so.
-                const bool skipped = !study.Textbook() && !study.sweep && step < study.VerdictStep() &&
-                                     study.trace.axes[static_cast<size_t>(step)].skipped;
-                if (named.first < 0 || skipped)
+                if (named.first < 0)
                 {
                     continue;
                 }
