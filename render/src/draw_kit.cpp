@@ -69,14 +69,14 @@ void DashedSegment(Canvas& canvas, ScreenPoint a, ScreenPoint b, Color color, fl
     }
 }
 
-void Arrow(Canvas& canvas, ScreenPoint a, ScreenPoint b, Color color, float thickness, float head)
+ScreenRect Arrow(Canvas& canvas, ScreenPoint a, ScreenPoint b, Color color, float thickness, float head)
 {
     const float dx = b.x - a.x;
     const float dy = b.y - a.y;
     const float length = std::sqrt(dx * dx + dy * dy);
     if (length < 1e-3f)
     {
-        return;
+        return {b.x, b.y, b.x, b.y};
     }
     const float ux = dx / length;
     const float uy = dy / length;
@@ -86,6 +86,12 @@ void Arrow(Canvas& canvas, ScreenPoint a, ScreenPoint b, Color color, float thic
     const ScreenPoint tip[3] = {
         b, {base.x - uy * h * 0.45f, base.y + ux * h * 0.45f}, {base.x + uy * h * 0.45f, base.y - ux * h * 0.45f}};
     canvas.FillConvex(tip, 3, color);
+    ScreenRect rect{tip[0].x, tip[0].y, tip[0].x, tip[0].y};
+    for (const ScreenPoint& p : tip)
+    {
+        rect = {std::min(rect.minX, p.x), std::min(rect.minY, p.y), std::max(rect.maxX, p.x), std::max(rect.maxY, p.y)};
+    }
+    return rect;
 }
 
 std::vector<ScreenPoint> ShapeOutline(const View& view, const Shape& shape, const Transform& xf)
@@ -132,82 +138,6 @@ void DashedOutline(Canvas& canvas, const std::vector<ScreenPoint>& outline, Colo
     {
         DashedSegment(canvas, outline[i], outline[(i + 1) % outline.size()], color, thickness, bounds, 6.0f, 4.0f);
     }
-}
-
-LabelPlacer::LabelPlacer(Canvas& canvas, float width, float height) : canvas_(canvas), width_(width), height_(height) {}
-
-void LabelPlacer::Reserve(const ScreenRect& rect)
-{
-    taken_.push_back(rect);
-}
-
-namespace
-{
-
-constexpr float kLabelSpacing = 3.0f; // pixels kept free beside a label
-
-} // namespace
-
-void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
-                        float distance, bool optional)
-{
-    const ScreenPoint size = canvas_.MeasureText(text, style);
-    const float length = std::sqrt(dx * dx + dy * dy);
-    const double start = length > 0.0f ? std::atan2(dy, dx) : 0.0;
-    ScreenRect chosen{};
-    bool found = false;
-    // Labels side by side read as one ("gap 0.60" and "0" as "gap 0.600"): a space's width is kept between them
-    // where the room allows, and given up before a label has to cover another.
-    for (int pass = 0; pass < 2 && !found; ++pass)
-    {
-        const float spacing = pass == 0 ? kLabelSpacing : 0.0f;
-        for (int i = 0; i < 24 && !found; ++i)
-        {
-            const float reach = distance + static_cast<float>(i / 8) * 9.0f;
-            // Preferred direction first, then alternately either side of it.
-            const int k = (i % 8 + 1) / 2 * (i % 2 == 1 ? 1 : -1);
-            const double angle = start + k * 0.78539816339744831;
-            const float ux = static_cast<float>(std::cos(angle));
-            const float uy = static_cast<float>(std::sin(angle));
-            // The rectangle's point nearest the anchor sits `distance` away along the direction.
-            const float cx = anchor.x + ux * (reach + 0.5f * size.x * std::fabs(ux));
-            const float cy = anchor.y + uy * (reach + 0.5f * size.y * std::fabs(uy));
-            ScreenRect rect{std::round(cx - 0.5f * size.x), std::round(cy - 0.5f * size.y), 0.0f, 0.0f};
-            rect.maxX = rect.minX + size.x;
-            rect.maxY = rect.minY + size.y;
-            if (i == 0 && pass == 0)
-            {
-                chosen = rect;
-            }
-            const bool inside =
-                rect.minX >= 2.0f && rect.minY >= 2.0f && rect.maxX <= width_ - 2.0f && rect.maxY <= height_ - 2.0f;
-            const ScreenRect spaced{rect.minX - spacing, rect.minY, rect.maxX + spacing, rect.maxY};
-            const bool free = std::none_of(taken_.begin(), taken_.end(),
-                                           [&](const ScreenRect& other) { return other.Overlaps(spaced); });
-            if (inside && free)
-            {
-                chosen = rect;
-                found = true;
-            }
-        }
-    }
-    if (!found && optional)
-    {
-        return;
-    }
-    taken_.push_back(chosen);
-    labels_.push_back({chosen, std::string(text), style, color});
-}
-
-void LabelPlacer::Flush(Color halo)
-{
-    canvas_.BeginGroup("labels");
-    for (const Label& label : labels_)
-    {
-        canvas_.FillRect({label.rect.minX - 2.0f, label.rect.minY}, {label.rect.maxX + 2.0f, label.rect.maxY}, halo);
-        canvas_.Text({label.rect.minX, label.rect.minY}, label.text, label.style, label.color);
-    }
-    labels_.clear();
 }
 
 } // namespace satviz

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "draw_kit.h"
+#include "label_placer.h"
 #include "voronoi_view.h"
 
 #include <satviz/render/describe.h>
@@ -524,11 +525,37 @@ class Painter
         }
     }
 
+    // Where the Minkowski inset goes: the scene's top right corner.
+    ScreenRect InsetBox() const
+    {
+        const float side = std::min(220.0f, 0.42f * std::min(Width(), layout_.sceneBottom - layout_.sceneTop));
+        const float right = Width() - 10.0f;
+        const float top = layout_.sceneTop + 10.0f;
+        return {right - side, top, right, top + side};
+    }
+
+    // An arrow whose head and shaft no label may cover.
+    void MarkedArrow(ScreenPoint a, ScreenPoint b, Color color, float thickness, float head)
+    {
+        labels_.Reserve(Arrow(canvas_, a, b, color, thickness, head));
+        labels_.ReserveLine(a, b, thickness + 2.0f);
+    }
+
+    static ScreenRect Disc(ScreenPoint center, float radius)
+    {
+        return {center.x - radius, center.y - radius, center.x + radius, center.y + radius};
+    }
+
     void ReserveBands()
     {
+        if (Has(figure_, kLayerMinkowski))
+        {
+            labels_.Reserve(InsetBox());
+        }
         if (Has(figure_, kLayerCaption))
         {
-            labels_.Reserve({0.0f, 0.0f, Width(), layout_.sceneTop});
+            caption_ = LayOutCaption();
+            labels_.Reserve({0.0f, 0.0f, Width(), caption_.bottom + 1.0f});
         }
         if (layout_.panelTop < Height())
         {
@@ -626,8 +653,9 @@ class Painter
                 const Vec2 mid = TransformPoint(xf, poly.Vertices()[i] + 0.5 * poly.Edge(i));
                 const Vec2 n = Rotate(xf.q, poly.Normal(i));
                 const ScreenPoint a = At(mid);
-                Arrow(canvas_, a, {a.x + 22.0f * static_cast<float>(n.x), a.y - 22.0f * static_cast<float>(n.y)},
-                      InkOf(s), 1.5f, 7.0f);
+                MarkedArrow(a,
+                                      {a.x + 22.0f * static_cast<float>(n.x), a.y - 22.0f * static_cast<float>(n.y)},
+                                      InkOf(s), 1.5f, 7.0f);
             }
         }
     }
@@ -651,10 +679,10 @@ class Painter
                               bounds_);
             }
             const Vec2 c = ShapeCenter(body.shape, body.Xf());
-            Arrow(canvas_, At(c), At(c + body.velocity), InkOf(s), 2.0f, 11.0f);
+            MarkedArrow(At(c), At(c + body.velocity), InkOf(s), 2.0f, 11.0f);
             const ScreenPoint tip = At(c + body.velocity);
             labels_.Place(tip, "v", TextStyle::Heading, InkOf(s), static_cast<float>(body.velocity.x),
-                          static_cast<float>(-body.velocity.y));
+                          static_cast<float>(-body.velocity.y), 6.0f, LabelRank::Note);
         }
     }
 
@@ -689,10 +717,8 @@ class Painter
         };
         const std::vector<Vec2> a = outline(bodyA_);
         const std::vector<Vec2> b = outline(bodyB_);
-        const float side = std::min(220.0f, 0.42f * std::min(Width(), layout_.sceneBottom - layout_.sceneTop));
-        const float right = Width() - 10.0f;
-        const float top = layout_.sceneTop + 10.0f;
-        const ScreenRect box{right - side, top, right, top + side};
+        const ScreenRect box = InsetBox();
+        const float side = box.maxX - box.minX;
         canvas_.FillRect({box.minX, box.minY}, {box.maxX, box.maxY}, WithAlpha(palette::kPanel, 0.95f));
         canvas_.Polyline(
             std::vector<ScreenPoint>{
@@ -807,7 +833,7 @@ class Painter
                 {
                     top = p.y < top.y ? p : top;
                 }
-                labels_.Place(top, label, TextStyle::Label, InkOf(s), 0.0f, -1.0f, 3.0f);
+                labels_.Place(top, label, TextStyle::Label, InkOf(s), 0.0f, -1.0f, 3.0f, LabelRank::Verdict);
             }
         };
         if (r.status == SweepStatus::Hit)
@@ -837,8 +863,9 @@ class Painter
             canvas_.Segment(At(v1), At(v2), color, 4.0f);
             const ScreenPoint mid = At(0.5 * (v1 + v2));
             const Vec2 n = Rotate(xf.q, poly.Normal(ref.index));
-            Arrow(canvas_, mid, {mid.x + 30.0f * static_cast<float>(n.x), mid.y - 30.0f * static_cast<float>(n.y)},
-                  color, 2.0f, 9.0f);
+            MarkedArrow(mid,
+                                  {mid.x + 30.0f * static_cast<float>(n.x), mid.y - 30.0f * static_cast<float>(n.y)},
+                                  color, 2.0f, 9.0f);
         }
         else if (ref.kind == AxisKind::VertexToCenter && ref.shape >= 0)
         {
@@ -852,6 +879,7 @@ class Painter
             const Vec2 c = TransformPoint(circle.Xf(), circle.shape.circle.center);
             DashedSegment(canvas_, At(v), At(c), color, 2.0f, bounds_);
             canvas_.FillCircle(At(v), 4.0f, color);
+            labels_.Reserve(Disc(At(v), 4.0f));
         }
         else if (ref.kind == AxisKind::CenterToCenter)
         {
@@ -888,12 +916,13 @@ class Painter
         {
             AxisSource(axis_.faces[f], faint(palette::kInk, 1.0f));
         }
-        Arrow(canvas_, At(Along(base, d, lo - pad)), At(Along(base, d, hi + pad)), faint(palette::kMuted, 1.0f), 1.5f,
-              11.0f);
+        MarkedArrow(At(Along(base, d, lo - pad)), At(Along(base, d, hi + pad)),
+                              faint(palette::kMuted, 1.0f), 1.5f, 11.0f);
         const std::string name = (axis_.textbook ? "axis " : "face test ") + std::to_string(axis_.index + 1);
         labels_.Place(At(Along(base, d, hi + pad)),
                       !axis_.decided ? name : name + (axis_.bounded ? " (not walked to)" : " (not evaluated)"),
-                      TextStyle::Label, palette::kMuted, static_cast<float>(d.x), static_cast<float>(-d.y));
+                      TextStyle::Label, palette::kMuted, static_cast<float>(d.x), static_cast<float>(-d.y), 6.0f,
+                      LabelRank::Note);
 
         // Projectors: from each shape's extreme points down to the axis line.
         const Transform xfA = bodyA_.Xf();
@@ -937,13 +966,14 @@ class Painter
             const ScreenPoint at = At(Along(base, d, axis_.boundAt));
             canvas_.Segment({at.x - ox * 16.0f, at.y - oy * 16.0f}, {at.x + ox * 16.0f, at.y + oy * 16.0f},
                             palette::kInk, 2.0f);
-            labels_.Place({at.x + ox * 18.0f, at.y + oy * 18.0f}, "bound", TextStyle::Label, palette::kInk, ox, oy);
+            labels_.Place({at.x + ox * 18.0f, at.y + oy * 18.0f}, "bound", TextStyle::Label, palette::kInk, ox, oy,
+                          6.0f, LabelRank::Note);
         }
 
         const ScreenPoint middle = At(Along(base, d, 0.5 * (from + to)));
         const std::string text = BandLabel(axis_);
         labels_.Place({middle.x - ox * 14.0f, middle.y - oy * 14.0f}, text, TextStyle::Label,
-                      overlap ? 0x8E3F6CFFu : 0x006E50FFu, -ox, -oy, 4.0f);
+                      overlap ? 0x8E3F6CFFu : 0x006E50FFu, -ox, -oy, 4.0f, LabelRank::Verdict);
     }
 
     // The separating line of a separating axis: perpendicular to it, through the middle of the gap.
@@ -959,7 +989,8 @@ class Painter
         const double reach = discRadius_;
         DashedSegment(canvas_, At(point - reach * n), At(point + reach * n), palette::kGap, 2.5f, bounds_, 10.0f, 6.0f);
         const Vec2 end = n.y >= 0.0 ? point + reach * n : point - reach * n;
-        labels_.Place(At(end), "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f);
+        labels_.Place(At(end), "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f, 6.0f,
+                      LabelRank::Verdict);
     }
 
     // The best axis so far (the smallest push; for sweeps, the latest entry), when it is not the current one.
@@ -1024,31 +1055,42 @@ class Painter
         const std::string depth = hasAxis_ && axis_.separation <= 0.0
                                       ? ShownDifference(axis_.leadMax, axis_.otherMin, -axis_.separation)
                                       : FormatNumber(m.depth);
+        // The arrow is drawn over the labels: none may lie under it.
+        labels_.ReserveLine(from, to, 3.0f);
+        labels_.Reserve({to.x - 12.0f, to.y - 12.0f, to.x + 12.0f, to.y + 12.0f});
         labels_.Place(to, "MTV " + depth, TextStyle::Heading, palette::kResult, static_cast<float>(m.normal.x),
-                      static_cast<float>(-m.normal.y));
+                      static_cast<float>(-m.normal.y), 6.0f, LabelRank::Verdict);
+        // A pitfall's push beside the right one, dashed, so that the two can be compared.
+        const PitfallResult& pitfall = study_.pitfall;
+        if (pitfall.ran && pitfall.overlap && !study_.sweep && pitfall.depth > 0.0)
+        {
+            pitfallFrom_ = from;
+            pitfallTo_ = At(c + pitfall.depth * pitfall.normal);
+            if (std::hypot(pitfallTo_.x - from.x, pitfallTo_.y - from.y) < 20.0f)
+            {
+                pitfallTo_ = {from.x + 20.0f * static_cast<float>(pitfall.normal.x),
+                              from.y - 20.0f * static_cast<float>(pitfall.normal.y)};
+            }
+            hasPitfallArrow_ = true;
+            labels_.ReserveLine(from, pitfallTo_, 2.0f);
+            labels_.Reserve({pitfallTo_.x - 10.0f, pitfallTo_.y - 10.0f, pitfallTo_.x + 10.0f, pitfallTo_.y + 10.0f});
+            labels_.Place(pitfallTo_, "pitfall " + FormatNumber(pitfall.depth), TextStyle::Label, palette::kInk,
+                          static_cast<float>(pitfall.normal.x), static_cast<float>(-pitfall.normal.y), 6.0f,
+                          LabelRank::Verdict);
+        }
     }
 
     void MtvArrow()
     {
         canvas_.BeginGroup("mtv");
         Arrow(canvas_, mtvFrom_, mtvTo_, palette::kResult, 3.0f, 12.0f);
-        // A pitfall's push beside the right one, dashed, so that the two can be compared.
-        const PitfallResult& pitfall = study_.pitfall;
-        if (pitfall.ran && pitfall.overlap && !study_.sweep && pitfall.depth > 0.0)
+        if (hasPitfallArrow_)
         {
-            const Vec2 c = ShapeCenter(bodyB_.shape, bodyB_.Xf());
-            const ScreenPoint from = At(c);
-            ScreenPoint to = At(c + pitfall.depth * pitfall.normal);
-            if (std::hypot(to.x - from.x, to.y - from.y) < 20.0f)
-            {
-                to = {from.x + 20.0f * static_cast<float>(pitfall.normal.x),
-                      from.y - 20.0f * static_cast<float>(pitfall.normal.y)};
-            }
+            const ScreenPoint from = pitfallFrom_;
+            const ScreenPoint to = pitfallTo_;
             DashedSegment(canvas_, from, to, palette::kInk, 2.0f, bounds_, 6.0f, 4.0f);
             Arrow(canvas_, {to.x - 0.01f * (to.x - from.x), to.y - 0.01f * (to.y - from.y)}, to, palette::kInk, 2.0f,
                   10.0f);
-            canvas_.Text({to.x + 6.0f, to.y + 4.0f}, "pitfall " + FormatNumber(pitfall.depth), TextStyle::Label,
-                         palette::kInk);
         }
     }
 
@@ -1085,17 +1127,19 @@ class Painter
             screen[i] = At(points[i].point);
             canvas_.FillCircle(screen[i], 5.5f, palette::kResult);
             canvas_.Circle(screen[i], 5.5f, palette::kBackground, 1.5f);
+            labels_.Reserve(Disc(screen[i], 6.5f));
         }
         // Two contacts closer on screen than a label is wide share one label, placed between them.
         if (count == 2 && std::hypot(screen[0].x - screen[1].x, screen[0].y - screen[1].y) < 16.0f)
         {
             const ScreenPoint middle{0.5f * (screen[0].x + screen[1].x), 0.5f * (screen[0].y + screen[1].y)};
-            labels_.Place(middle, "c1, c2", TextStyle::Label, palette::kResult, 1.0f, -1.0f);
+            labels_.Place(middle, "c1, c2", TextStyle::Label, palette::kResult, 1.0f, -1.0f, 6.0f, LabelRank::Verdict);
             return;
         }
         for (int i = 0; i < count; ++i)
         {
-            labels_.Place(screen[i], "c" + std::to_string(i + 1), TextStyle::Label, palette::kResult, 1.0f, -1.0f);
+            labels_.Place(screen[i], "c" + std::to_string(i + 1), TextStyle::Label, palette::kResult, 1.0f, -1.0f, 6.0f,
+                          LabelRank::Verdict);
         }
     }
 
@@ -1114,13 +1158,15 @@ class Painter
         }
         canvas_.Segment(r1, r2, InkOf(referenceShape), 5.0f);
         labels_.Place(At(0.5 * (clip.referenceV1 + clip.referenceV2)), "reference face", TextStyle::Label,
-                      InkOf(referenceShape), static_cast<float>(n.x), static_cast<float>(-n.y), 10.0f);
+                      InkOf(referenceShape), static_cast<float>(n.x), static_cast<float>(-n.y), 10.0f,
+                      LabelRank::Verdict);
         const ScreenPoint i1 = At(clip.incidentV1);
         const ScreenPoint i2 = At(clip.incidentV2);
         canvas_.Segment(i1, i2, InkOf(clip.incidentShape), 5.0f);
         canvas_.Segment(i1, i2, palette::kBackground, 1.5f);
         labels_.Place(At(0.5 * (clip.incidentV1 + clip.incidentV2)), "incident edge", TextStyle::Label,
-                      InkOf(clip.incidentShape), static_cast<float>(-n.x), static_cast<float>(n.y), 10.0f);
+                      InkOf(clip.incidentShape), static_cast<float>(-n.x), static_cast<float>(n.y), 10.0f,
+                      LabelRank::Verdict);
     }
 
     void Labels()
@@ -1147,14 +1193,14 @@ class Painter
                     const Vec2 v = TransformPoint(xf, poly.Vertices()[i]);
                     const Vec2 out = v - centroid;
                     labels_.Place(At(v), std::to_string(i), TextStyle::Label, InkOf(s), static_cast<float>(out.x),
-                                  static_cast<float>(-out.y), 4.0f, true);
+                                  static_cast<float>(-out.y), 4.0f, LabelRank::Vertex);
                 }
                 for (int i = 0; edgeNumbers && i < poly.Count(); ++i)
                 {
                     const Vec2 mid = TransformPoint(xf, poly.Vertices()[i] + 0.5 * poly.Edge(i));
                     const Vec2 n = Rotate(xf.q, poly.Normal(i));
                     labels_.Place(At(mid), "e" + std::to_string(i), TextStyle::Label, WithAlpha(InkOf(s), 0.75f),
-                                  static_cast<float>(n.x), static_cast<float>(-n.y), 5.0f, true);
+                                  static_cast<float>(n.x), static_cast<float>(-n.y), 5.0f, LabelRank::Edge);
                 }
             }
         }
@@ -1162,7 +1208,7 @@ class Painter
         {
             const Body& body = BodyOf(s);
             labels_.Place(At(ShapeCenter(body.shape, body.Xf())), body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f,
-                          -7.0f);
+                          -7.0f, LabelRank::Name);
         }
     }
 
@@ -1189,7 +1235,7 @@ class Painter
                  (!axis_.decided  ? " (number line)"
                   : axis_.bounded ? " (not walked to: numbers for this view only)"
                                   : " (not evaluated: numbers for this view only)");
-        canvas_.Text({left, top + 8.0f}, title, TextStyle::Label, palette::kMuted);
+        canvas_.Text({left, top + 6.0f}, title, TextStyle::Label, palette::kMuted);
         if (axis_.skipped)
         {
             canvas_.Text({left, top + 36.0f}, "skipped: anti-parallel to a face already tested (the same axis)", TextStyle::Body,
@@ -1294,7 +1340,7 @@ class Painter
             canvas_.Segment({x(t), y - 5.0f}, {x(t), y + 5.0f}, palette::kMuted, 1.5f);
             const std::string text = t == 0.0 ? "t = 0" : (t == 1.0 ? "1" : "0.5");
             const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
-            canvas_.Text({x(t) - 0.5f * size.x, y + 8.0f}, text, TextStyle::Label, palette::kMuted);
+            canvas_.Text({x(t) - 0.5f * size.x, y + 10.0f}, text, TextStyle::Label, palette::kMuted);
         }
         // The common window of all axes so far: a hit needs it to be non-empty and to start within [0, 1].
         const double w0 = std::max(axis_.windowEntry, 0.0);
@@ -1314,7 +1360,7 @@ class Painter
                                      FormatNumber(axis_.windowEntry);
             const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
             // A row of its own, under the entry and exit labels.
-            canvas_.Text({std::clamp(0.5f * (a + b) - 0.5f * size.x, left, right - size.x), y + 40.0f}, text,
+            canvas_.Text({std::clamp(0.5f * (a + b) - 0.5f * size.x, left, right - size.x), y + 42.0f}, text,
                          TextStyle::Label, 0xA04000FFu);
         }
         auto marker = [&](double t, const std::string& name, bool up) {
@@ -1324,7 +1370,7 @@ class Painter
                                          : t < 0.0     ? name + ": overlapping from the start"
                                                        : name + ": they never part";
                 const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
-                canvas_.Text({right - size.x, up ? y - 10.0f - size.y : y + 22.0f}, text, TextStyle::Label,
+                canvas_.Text({right - size.x, up ? y - 10.0f - size.y : y + 24.0f}, text, TextStyle::Label,
                              palette::kInk);
                 return;
             }
@@ -1341,7 +1387,7 @@ class Painter
             const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
             const float tx =
                 std::clamp(px - 0.5f * size.x, std::max(left - 40.0f, labelsFrom), Width() - size.x - 4.0f);
-            canvas_.Text({tx, up ? y - 10.0f - size.y : y + 22.0f}, text, TextStyle::Label, palette::kInk);
+            canvas_.Text({tx, up ? y - 10.0f - size.y : y + 24.0f}, text, TextStyle::Label, palette::kInk);
         };
         if (!std::isinf(axis_.entry) || axis_.separation > 0.0 || axis_.never)
         {
@@ -1357,7 +1403,8 @@ class Painter
         if (verdict_ && status == SweepStatus::Hit)
         {
             const float px = x(study_.Textbook() ? study_.textbookSweepResult.toi : study_.sweepResult.toi);
-            canvas_.Segment({px, y - 12.0f}, {px, y + 12.0f}, palette::kResult, 3.0f);
+            // Short enough to keep clear of the entry label above and the tick labels below.
+            canvas_.Segment({px, y - 9.0f}, {px, y + 8.0f}, palette::kResult, 3.0f);
         }
     }
 
@@ -1389,53 +1436,69 @@ class Painter
         return lines;
     }
 
-    // The step's explanation under the scene's own title (its caption), in the band the layout reserves: at body
-    // size, else at label size (the band grows over the scene's top when even that does not fit), and in small
-    // figures, where it does not fit, the step's short title, so that the scene stays in view.
-    void Caption()
+    // The caption's lines and where its band ends, worked out before the labels are placed so that none goes under
+    // a band that grows.
+    struct CaptionLines
     {
-        canvas_.BeginGroup("caption");
+        std::vector<std::pair<std::string, TextStyle>> rows; // the scene's own title
+        std::vector<std::string> lines;                      // the step's explanation
+        TextStyle style = TextStyle::Body;
+        float height = kLineHeight;
+        float bottom = 0.0f;
+    };
+
+    CaptionLines LayOutCaption() const
+    {
+        CaptionLines c;
         const std::string text = DescribeStep(scene_, study_, figure_.step);
-        float y = kPad - 2.0f;
+        const float y = kPad - 2.0f;
         const float room = layout_.sceneTop - 6.0f;
-        std::vector<std::pair<std::string, TextStyle>> rows;
         float used = 0.0f;
         if (!figure_.caption.empty())
         {
             for (const std::string& l : Wrap(figure_.caption, TextStyle::Heading))
             {
-                rows.push_back({l, TextStyle::Heading});
+                c.rows.push_back({l, TextStyle::Heading});
                 used += kLineHeight;
             }
         }
         auto fits = [&](const std::vector<std::string>& lines, float height) {
             return y + used + height * static_cast<float>(lines.size()) <= room + 1.0f;
         };
-        TextStyle style = TextStyle::Body;
-        float height = kLineHeight;
-        std::vector<std::string> lines = Wrap(text, style);
-        if (!fits(lines, height))
+        c.lines = Wrap(text, c.style);
+        if (!fits(c.lines, c.height))
         {
-            style = TextStyle::Label;
-            height = kLabelLineHeight;
-            lines = Wrap(text, style);
+            c.style = TextStyle::Label;
+            c.height = kLabelLineHeight;
+            c.lines = Wrap(text, c.style);
         }
-        if (!fits(lines, height) && view_.width < kSmallFigure)
+        if (!fits(c.lines, c.height) && view_.width < kSmallFigure)
         {
-            lines = Wrap(StepTitle(scene_, study_, figure_.step), style);
+            c.lines = Wrap(StepTitle(scene_, study_, figure_.step), c.style);
         }
-        const float bottom = std::max(layout_.sceneTop, y + used + height * static_cast<float>(lines.size()) + 6.0f);
-        canvas_.FillRect({0.0f, 0.0f}, {Width(), bottom}, palette::kPanel);
-        canvas_.Segment({0.0f, bottom}, {Width(), bottom}, palette::kFaint, 1.0f);
-        for (const auto& [l, rowStyle] : rows)
+        c.bottom = std::max(layout_.sceneTop, y + used + c.height * static_cast<float>(c.lines.size()) + 6.0f);
+        return c;
+    }
+
+    // The step's explanation under the scene's own title (its caption), in the band the layout reserves: at body
+    // size, else at label size (the band grows over the scene's top when even that does not fit), and in small
+    // figures, where it does not fit, the step's short title, so that the scene stays in view.
+    void Caption()
+    {
+        canvas_.BeginGroup("caption");
+        const CaptionLines& c = caption_;
+        canvas_.FillRect({0.0f, 0.0f}, {Width(), c.bottom}, palette::kPanel);
+        canvas_.Segment({0.0f, c.bottom}, {Width(), c.bottom}, palette::kFaint, 1.0f);
+        float y = kPad - 2.0f;
+        for (const auto& [l, rowStyle] : c.rows)
         {
             canvas_.Text({kPad, y}, l, rowStyle, palette::kInk);
             y += kLineHeight;
         }
-        for (const std::string& l : lines)
+        for (const std::string& l : c.lines)
         {
-            canvas_.Text({kPad, y}, l, style, palette::kInk);
-            y += height;
+            canvas_.Text({kPad, y}, l, c.style, palette::kInk);
+            y += c.height;
         }
     }
 
@@ -1459,6 +1522,10 @@ class Painter
     bool hasMtvArrow_ = false;
     ScreenPoint mtvFrom_{};
     ScreenPoint mtvTo_{};
+    CaptionLines caption_;
+    bool hasPitfallArrow_ = false;
+    ScreenPoint pitfallFrom_{};
+    ScreenPoint pitfallTo_{};
 };
 
 } // namespace

@@ -246,7 +246,8 @@ void MarkVoronoiRegions(Canvas& canvas, LabelPlacer& labels, const View& view, c
                 labels.Place(ToScreen(view, at),
                              (faceHolds ? "the centre's region: face e" : "face e") + std::to_string(i),
                              TextStyle::Label, faceHolds ? palette::kResult : ink, static_cast<float>(n.x),
-                             static_cast<float>(-n.y), 0.0f, !faceHolds);
+                             static_cast<float>(-n.y), 0.0f,
+                             faceHolds ? LabelRank::Verdict : LabelRank::Vertex);
             }
             if (vertexHolds == (pass == 0))
             {
@@ -254,7 +255,8 @@ void MarkVoronoiRegions(Canvas& canvas, LabelPlacer& labels, const View& view, c
                 labels.Place(ToScreen(view, at),
                              (vertexHolds ? "the centre's region: vertex " : "vertex ") + std::to_string(i),
                              TextStyle::Label, vertexHolds ? palette::kResult : ink, static_cast<float>(bisector.x),
-                             static_cast<float>(-bisector.y), 0.0f, !vertexHolds);
+                             static_cast<float>(-bisector.y), 0.0f,
+                             vertexHolds ? LabelRank::Verdict : LabelRank::Vertex);
             }
         }
     }

@@ -6,7 +6,7 @@
 // centre is nearest, and so which axis SAT needs against a circle (lesson 7).
 #pragma once
 
-#include "draw_kit.h"
+#include "label_placer.h"
 
 #include <satviz/render/study.h>
 #include <satviz/scene.h>

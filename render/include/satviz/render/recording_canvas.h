@@ -35,7 +35,8 @@ struct DrawCommand
     TextStyle style = TextStyle::Label; ///< text calls: the style
 };
 
-/// Records every call. Text is measured as 0.6 x size per character, size high.
+/// Records every call. Text is measured with the advance widths of the figures' fonts (DejaVu Sans, bold for
+/// headings), size high, so that labels land where they do in the rendered figures.
 class RecordingCanvas : public Canvas
 {
   public:

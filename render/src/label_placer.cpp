@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: MIT
+#include "label_placer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace satviz
+{
+
+namespace
+{
+
+constexpr float kLabelSpacing = 3.0f; // pixels kept free beside a label where the room allows
+constexpr float kHalo = 2.0f;         // the halo reaches this far left and right of the text
+constexpr float kMargin = 2.0f;       // pixels kept between a label and the image's edge
+constexpr double kPi = 3.14159265358979323846;
+
+// The rectangle of a label `size` big whose point nearest the anchor lies `reach` pixels away along `angle`.
+ScreenRect Around(ScreenPoint anchor, ScreenPoint size, double angle, float reach)
+{
+    const float ux = static_cast<float>(std::cos(angle));
+    const float uy = static_cast<float>(std::sin(angle));
+    const float cx = anchor.x + ux * (reach + 0.5f * size.x * std::fabs(ux));
+    const float cy = anchor.y + uy * (reach + 0.5f * size.y * std::fabs(uy));
+    ScreenRect rect{std::round(cx - 0.5f * size.x), std::round(cy - 0.5f * size.y), 0.0f, 0.0f};
+    rect.maxX = rect.minX + size.x;
+    rect.maxY = rect.minY + size.y;
+    return rect;
+}
+
+// What a label covers: its text and the halo beside it.
+ScreenRect Footprint(const ScreenRect& text)
+{
+    return {text.minX - kHalo, text.minY, text.maxX + kHalo, text.maxY};
+}
+
+} // namespace
+
+LabelPlacer::LabelPlacer(Canvas& canvas, float width, float height) : canvas_(canvas), width_(width), height_(height) {}
+
+void LabelPlacer::Reserve(const ScreenRect& rect)
+{
+    taken_.push_back(rect);
+}
+
+void LabelPlacer::ReserveLine(ScreenPoint a, ScreenPoint b, float thickness)
+{
+    lines_.push_back({a, b, thickness});
+}
+
+void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
+                        float distance, LabelRank rank)
+{
+    labels_.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank});
+}
+
+bool LabelPlacer::Inside(const ScreenRect& rect) const
+{
+    return rect.minX - kHalo >= 0.0f && rect.minY >= kMargin && rect.maxX + kHalo <= width_ &&
+           rect.maxY <= height_ - kMargin;
+}
+
+bool LabelPlacer::Free(const ScreenRect& rect, float spacing) const
+{
+    const ScreenRect foot = Footprint(rect);
+    const ScreenRect spaced{foot.minX - spacing, foot.minY, foot.maxX + spacing, foot.maxY};
+    if (std::any_of(taken_.begin(), taken_.end(), [&](const ScreenRect& other) { return other.Overlaps(spaced); }))
+    {
+        return false;
+    }
+    for (const Line& line : lines_)
+    {
+        const float r = 0.5f * line.thickness;
+        ScreenPoint a = line.a;
+        ScreenPoint b = line.b;
+        if (ClipSegment(a, b, {foot.minX - r, foot.minY - r, foot.maxX + r, foot.maxY + r}))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+void LabelPlacer::Flush(Color halo)
+{
+    // The most important first; labels of one rank in the order they were added.
+    std::vector<const Label*> order;
+    for (const Label& label : labels_)
+    {
+        order.push_back(&label);
+    }
+    std::stable_sort(order.begin(), order.end(), [](const Label* a, const Label* b) { return a->rank > b->rank; });
+    struct Placed
+    {
+        const Label* label;
+        ScreenRect rect;
+        bool leader;
+    };
+    std::vector<Placed> placed;
+    for (const Label* label : order)
+    {
+        const ScreenPoint size = canvas_.MeasureText(label->text, label->style);
+        const bool directed = label->dx != 0.0f || label->dy != 0.0f;
+        const double start = directed ? std::atan2(label->dy, label->dx) : 0.0;
+        ScreenRect chosen{};
+        bool found = false;
+        bool leader = false;
+        // Near the anchor: eight directions at three distances, the preferred direction first; turning a label 45
+        // degrees away from it costs about as much as moving it 12 pixels farther out. A space's width is kept from
+        // other labels ("gap 0.60" beside "0" reads "gap 0.600") and given up before a label has to move farther.
+        struct Candidate
+        {
+            int turn;
+            int ring;
+        };
+        std::vector<Candidate> candidates;
+        for (int ring = 0; ring < 3; ++ring)
+        {
+            for (int turn : {0, 1, -1, 2, -2, 3, -3, 4})
+            {
+                candidates.push_back({turn, ring});
+            }
+        }
+        std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+            return 4 * std::abs(a.turn) + 3 * a.ring < 4 * std::abs(b.turn) + 3 * b.ring;
+        });
+        for (int pass = 0; pass < 2 && !found; ++pass)
+        {
+            for (const Candidate& c : candidates)
+            {
+                const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
+                const ScreenRect rect = Around(label->anchor, size, start + c.turn * 0.25 * kPi, reach);
+                if (Inside(rect) && Free(rect, pass == 0 ? kLabelSpacing : 0.0f))
+                {
+                    chosen = rect;
+                    found = true;
+                    break;
+                }
+            }
+        }
+        // Farther out, on a leader line back to the anchor: sixteen directions, at growing distances.
+        for (int ring = 0; ring < 5 && !found; ++ring)
+        {
+            const float reach = std::max(label->distance, 0.0f) + 28.0f + 16.0f * static_cast<float>(ring);
+            for (int i = 0; i < 16 && !found; ++i)
+            {
+                const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
+                const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
+                if (Inside(rect) && Free(rect, 0.0f))
+                {
+                    chosen = rect;
+                    found = true;
+                    leader = true;
+                }
+            }
+        }
+        if (!found)
+        {
+            if (label->rank <= LabelRank::Edge)
+            {
+                continue;
+            }
+            // No free place: the preferred one, kept inside the image.
+            chosen = Around(label->anchor, size, start, label->distance);
+            const float shiftX = std::clamp(chosen.minX, kHalo, std::max(kHalo, width_ - kHalo - size.x)) - chosen.minX;
+            const float shiftY =
+                std::clamp(chosen.minY, kMargin, std::max(kMargin, height_ - kMargin - size.y)) - chosen.minY;
+            chosen = {chosen.minX + shiftX, chosen.minY + shiftY, chosen.maxX + shiftX, chosen.maxY + shiftY};
+        }
+        taken_.push_back(Footprint(chosen));
+        placed.push_back({label, chosen, leader});
+    }
+    canvas_.BeginGroup("labels");
+    for (const Placed& p : placed)
+    {
+        if (p.leader)
+        {
+            // From just beside the anchor to the nearest point of the label.
+            const ScreenPoint a = p.label->anchor;
+            const ScreenPoint b{std::clamp(a.x, p.rect.minX, p.rect.maxX), std::clamp(a.y, p.rect.minY, p.rect.maxY)};
+            const float length = std::hypot(b.x - a.x, b.y - a.y);
+            if (length > 4.0f)
+            {
+                const ScreenPoint from{a.x + (b.x - a.x) * 3.0f / length, a.y + (b.y - a.y) * 3.0f / length};
+                canvas_.Segment(from, b, WithAlpha(p.label->color, 0.7f), 1.0f);
+            }
+        }
+    }
+    for (const Placed& p : placed)
+    {
+        canvas_.FillRect({p.rect.minX - kHalo, p.rect.minY}, {p.rect.maxX + kHalo, p.rect.maxY}, halo);
+        canvas_.Text({p.rect.minX, p.rect.minY}, p.label->text, p.label->style, p.label->color);
+    }
+    labels_.clear();
+}
+
+} // namespace satviz

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+// satviz render, private: where a figure's labels go. Labels are collected first and placed last, the most
+// important first, so that none covers another label, an arrow head, a mark or a panel, and none leaves the image.
+#pragma once
+
+#include "draw_kit.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace satviz
+{
+
+/// How much a label matters. Places are handed out from the most important down; when no room is left near its
+/// anchor, a vertex number is left out first, then an edge name; the others are always drawn.
+enum class LabelRank
+{
+    Vertex,  ///< a vertex number
+    Edge,    ///< an edge name (e0, e1, ...)
+    Note,    ///< what an axis line, a bound or a moving body's arrow is
+    Name,    ///< a body's name
+    Verdict, ///< what the verdict shows: the MTV, contact points, the band's size, reference and incident faces
+};
+
+/// Collects a figure's labels and places them: each tries eight directions around its anchor at three distances,
+/// then farther places joined to the anchor by a thin leader line; a label that finds no free place is left out
+/// when it is a vertex number or an edge name, and otherwise drawn at its preferred place inside the image.
+class LabelPlacer
+{
+  public:
+    /// A placer for an image of the given size.
+    LabelPlacer(Canvas& canvas, float width, float height);
+    /// Marks a region no label may cover: a panel, the caption, an inset, an arrow head, a contact point.
+    void Reserve(const ScreenRect& rect);
+    /// Marks a line no label may cover (a line drawn over the labels), `thickness` pixels wide.
+    void ReserveLine(ScreenPoint a, ScreenPoint b, float thickness);
+    /// Adds `text` near `anchor`, `distance` pixels away, preferring the direction (dx, dy) (any length).
+    void Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
+               float distance = 6.0f, LabelRank rank = LabelRank::Note);
+    /// Places every label added and draws them, in the group "labels": leader lines first, then each label on a
+    /// faint halo of the background.
+    void Flush(Color halo);
+
+  private:
+    struct Label
+    {
+        ScreenPoint anchor;
+        std::string text;
+        TextStyle style;
+        Color color;
+        float dx, dy, distance;
+        LabelRank rank;
+    };
+    struct Line
+    {
+        ScreenPoint a, b;
+        float thickness;
+    };
+    bool Free(const ScreenRect& rect, float spacing) const;
+    bool Inside(const ScreenRect& rect) const;
+    Canvas& canvas_;
+    float width_;
+    float height_;
+    std::vector<ScreenRect> taken_;
+    std::vector<Line> lines_;
+    std::vector<Label> labels_;
+};
+
+} // namespace satviz

@@ -1,0 +1,385 @@
+// SPDX-License-Identifier: MIT
+// Every figure of the course, drawn through a recording canvas: no text covers another text, an arrow head or a
+// mark, nothing drawn after a text covers it, and every text lies inside the image. The figures are those that
+// tutorials/figures.cmake lists, drawn as satviz-render draws them; the checks look only at what was drawn.
+#include <satviz/render/figure.h>
+#include <satviz/render/recording_canvas.h>
+#include <satviz/scene_world.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+using namespace satviz;
+
+namespace
+{
+
+struct Box
+{
+    float minX, minY, maxX, maxY;
+    bool Overlaps(const Box& o) const { return minX < o.maxX && o.minX < maxX && minY < o.maxY && o.minY < maxY; }
+};
+
+// The lists of tutorials/figures.cmake: set(NAME scene scene ...) blocks, by name.
+std::map<std::string, std::vector<std::string>> FigureLists()
+{
+    std::ifstream in(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/figures.cmake");
+    REQUIRE(in);
+    std::map<std::string, std::vector<std::string>> lists;
+    std::string line;
+    std::string current;
+    while (std::getline(in, line))
+    {
+        if (line.rfind("set(SATVIZ_", 0) == 0)
+        {
+            current = line.substr(4);
+            current = current.substr(0, current.find_first_of(" )"));
+            lists[current];
+            continue;
+        }
+        if (!current.empty())
+        {
+            std::istringstream words(line);
+            std::string word;
+            while (words >> word)
+            {
+                if (word == ")")
+                {
+                    current.clear();
+                    break;
+                }
+                lists[current].push_back(word);
+            }
+        }
+    }
+    return lists;
+}
+
+bool Opaque(Color color)
+{
+    return (color & 0xFFu) >= 0xC0u;
+}
+
+Box Bounds(const std::vector<ScreenPoint>& points)
+{
+    Box box{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (const ScreenPoint& p : points)
+    {
+        box = {std::min(box.minX, p.x), std::min(box.minY, p.y), std::max(box.maxX, p.x), std::max(box.maxY, p.y)};
+    }
+    return box;
+}
+
+// A mark a label must leave visible: an arrow head or a time marker (a small opaque triangle), a contact point or
+// a vertex dot (an opaque disc of a few pixels).
+bool IsMark(const DrawCommand& c)
+{
+    if (c.kind == DrawCommand::Kind::FillConvex && c.points.size() == 3 && Opaque(c.color))
+    {
+        const Box b = Bounds(c.points);
+        return b.maxX - b.minX <= 20.0f && b.maxY - b.minY <= 20.0f;
+    }
+    return c.kind == DrawCommand::Kind::FillCircle && c.radius >= 3.5f && Opaque(c.color);
+}
+
+// Whether the segment ab, `thickness` wide, crosses the box (touching its border does not count).
+bool SegmentCovers(ScreenPoint a, ScreenPoint b, float thickness, const Box& box)
+{
+    const float r = 0.5f * thickness - 0.5f;
+    const double x0 = box.minX - r, y0 = box.minY - r, x1 = box.maxX + r, y1 = box.maxY + r;
+    double t0 = 0.0, t1 = 1.0;
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double p[4] = {-dx, dx, -dy, dy};
+    const double q[4] = {a.x - x0, x1 - a.x, a.y - y0, y1 - a.y};
+    for (int i = 0; i < 4; ++i)
+    {
+        if (p[i] == 0.0)
+        {
+            if (q[i] <= 0.0)
+            {
+                return false;
+            }
+            continue;
+        }
+        const double t = q[i] / p[i];
+        if (p[i] < 0.0)
+        {
+            t0 = std::max(t0, t);
+        }
+        else
+        {
+            t1 = std::min(t1, t);
+        }
+    }
+    return t0 < t1;
+}
+
+// Whether a convex polygon shares interior with the box: no separating axis among the box's and the polygon's.
+bool ConvexCovers(const std::vector<ScreenPoint>& points, const Box& box)
+{
+    const Box b = Bounds(points);
+    if (!b.Overlaps(box))
+    {
+        return false;
+    }
+    const ScreenPoint corners[4] = {{box.minX, box.minY}, {box.maxX, box.minY}, {box.maxX, box.maxY},
+                                    {box.minX, box.maxY}};
+    for (size_t i = 0; i < points.size(); ++i)
+    {
+        const ScreenPoint& p = points[i];
+        const ScreenPoint& q = points[(i + 1) % points.size()];
+        const double nx = q.y - p.y, ny = p.x - q.x;
+        double lo = INFINITY, hi = -INFINITY, clo = INFINITY, chi = -INFINITY;
+        for (const ScreenPoint& v : points)
+        {
+            lo = std::min(lo, nx * v.x + ny * v.y);
+            hi = std::max(hi, nx * v.x + ny * v.y);
+        }
+        for (const ScreenPoint& v : corners)
+        {
+            clo = std::min(clo, nx * v.x + ny * v.y);
+            chi = std::max(chi, nx * v.x + ny * v.y);
+        }
+        if (hi - lo > 0.0 && (chi <= lo || hi <= clo))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Whether a command drawn after a text covers the box of that text.
+bool Covers(const DrawCommand& c, const Box& box)
+{
+    switch (c.kind)
+    {
+    case DrawCommand::Kind::Segment:
+        return SegmentCovers(c.points[0], c.points[1], c.thickness, box);
+    case DrawCommand::Kind::Polyline:
+        for (size_t i = 0; i + 1 < c.points.size() + (c.closed ? 1 : 0); ++i)
+        {
+            if (SegmentCovers(c.points[i], c.points[(i + 1) % c.points.size()], c.thickness, box))
+            {
+                return true;
+            }
+        }
+        return false;
+    case DrawCommand::Kind::FillConvex:
+        return ConvexCovers(c.points, box);
+    case DrawCommand::Kind::Circle:
+    case DrawCommand::Kind::FillCircle:
+    {
+        const float x = std::clamp(c.points[0].x, box.minX, box.maxX);
+        const float y = std::clamp(c.points[0].y, box.minY, box.maxY);
+        return std::hypot(x - c.points[0].x, y - c.points[0].y) < c.radius;
+    }
+    case DrawCommand::Kind::FillRect:
+        return Box{c.points[0].x, c.points[0].y, c.points[1].x, c.points[1].y}.Overlaps(box);
+    case DrawCommand::Kind::Text:
+        return false;
+    }
+    return false;
+}
+
+std::string Describe(const DrawCommand& c)
+{
+    static const char* kinds[] = {"segment", "polyline", "fill", "circle", "disc", "rectangle", "text"};
+    std::string s = std::string(kinds[static_cast<int>(c.kind)]) + " in \"" + c.group + "\"";
+    if (c.kind == DrawCommand::Kind::Text)
+    {
+        s += " \"" + c.text + "\"";
+    }
+    if (!c.points.empty())
+    {
+        s += " at (" + std::to_string(static_cast<int>(c.points[0].x)) + ", " +
+             std::to_string(static_cast<int>(c.points[0].y)) + ")";
+    }
+    return s;
+}
+
+// Every way the texts of a recording are hidden or cut: one line each.
+std::vector<std::string> HiddenTexts(const RecordingCanvas& canvas, int width, int height)
+{
+    RecordingCanvas measure;
+    std::vector<std::string> problems;
+    const std::vector<DrawCommand>& commands = canvas.commands;
+    std::vector<std::pair<size_t, Box>> texts;
+    for (size_t i = 0; i < commands.size(); ++i)
+    {
+        const DrawCommand& c = commands[i];
+        if (c.kind != DrawCommand::Kind::Text)
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(c.text, c.style);
+        const Box box{c.points[0].x, c.points[0].y, c.points[0].x + size.x, c.points[0].y + size.y};
+        if (box.minX < 0.0f || box.minY < 0.0f || box.maxX > static_cast<float>(width) ||
+            box.maxY > static_cast<float>(height))
+        {
+            problems.push_back(Describe(c) + " leaves the image");
+        }
+        texts.push_back({i, box});
+    }
+    for (size_t a = 0; a < texts.size(); ++a)
+    {
+        for (size_t b = a + 1; b < texts.size(); ++b)
+        {
+            if (texts[a].second.Overlaps(texts[b].second))
+            {
+                problems.push_back(Describe(commands[texts[a].first]) + " and " + Describe(commands[texts[b].first]) +
+                                   " overlap");
+            }
+        }
+    }
+    for (const auto& [index, box] : texts)
+    {
+        for (size_t j = 0; j < commands.size(); ++j)
+        {
+            const DrawCommand& c = commands[j];
+            const bool mark = IsMark(c) && Covers(c, box);
+            const bool later = j > index && Covers(c, box);
+            if (mark || later)
+            {
+                problems.push_back(Describe(commands[index]) + (mark ? " lies on the mark " : " lies under ") +
+                                   Describe(c));
+            }
+        }
+    }
+    return problems;
+}
+
+struct Drawn
+{
+    std::string name;
+    std::vector<std::string> problems;
+};
+
+// Draws one scene as satviz-render does (its view's sim_steps first), every step or the view's step.
+std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool faces)
+{
+    const std::string file = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + stem + ".json";
+    SceneResult loaded = LoadScene(file);
+    INFO(loaded.error);
+    REQUIRE(loaded.Ok());
+    REQUIRE(SimulateScene(loaded.scene, loaded.scene.view.simSteps).empty());
+    FigureOptions options;
+    if (faces)
+    {
+        options.setSteps = true;
+        options.steps = StepView::Faces;
+    }
+    FigureSetup setup = SetUpFigure(loaded.scene, options);
+    REQUIRE(setup.Ok());
+    std::vector<int> steps;
+    for (int k = allSteps ? 0 : setup.figure.step; k < (allSteps ? setup.study.StepCount() : setup.figure.step + 1);
+         ++k)
+    {
+        steps.push_back(k);
+    }
+    std::vector<Drawn> drawn;
+    for (int k : steps)
+    {
+        setup.figure.step = k;
+        RecordingCanvas canvas;
+        PaintFigure(canvas, loaded.scene, setup.study, setup.figure);
+        drawn.push_back({(faces ? "faces/" : "") + stem + (allSteps ? "-step" + std::to_string(k + 1) : "") + ".png",
+                         HiddenTexts(canvas, setup.figure.view.width, setup.figure.view.height)});
+    }
+    return drawn;
+}
+
+} // namespace
+
+TEST_CASE("The label check finds a label on a label, on an arrow head, under a later line and cut at the edge",
+          "[labels]")
+{
+    RecordingCanvas canvas;
+    canvas.Text({10.0f, 10.0f}, "e1", TextStyle::Label, palette::kInk);
+    canvas.Text({18.0f, 12.0f}, "box", TextStyle::Heading, palette::kInk);
+    CHECK(HiddenTexts(canvas, 200, 100).size() == 1);
+
+    RecordingCanvas head;
+    head.Text({50.0f, 50.0f}, "axis 2", TextStyle::Label, palette::kInk);
+    const ScreenPoint tip[3] = {{60.0f, 55.0f}, {52.0f, 60.0f}, {52.0f, 50.0f}};
+    head.FillConvex(tip, 3, palette::kInk);
+    CHECK(HiddenTexts(head, 200, 100).size() == 1);
+    RecordingCanvas faint;
+    faint.Text({50.0f, 50.0f}, "axis 2", TextStyle::Label, palette::kInk);
+    faint.FillConvex(tip, 3, WithAlpha(palette::kShapeA, 0.2f)); // a body's translucent fill, drawn after: covers
+    CHECK(HiddenTexts(faint, 200, 100).size() == 1);
+    RecordingCanvas under;
+    under.FillConvex(tip, 3, WithAlpha(palette::kShapeA, 0.2f)); // ... but not drawn before
+    under.Text({50.0f, 50.0f}, "axis 2", TextStyle::Label, palette::kInk);
+    CHECK(HiddenTexts(under, 200, 100).empty());
+
+    RecordingCanvas line;
+    line.Text({50.0f, 50.0f}, "MTV 0.10", TextStyle::Heading, palette::kInk);
+    line.Segment({40.0f, 40.0f}, {120.0f, 70.0f}, palette::kResult, 3.0f);
+    line.Segment({40.0f, 80.0f}, {120.0f, 80.0f}, palette::kResult, 3.0f); // below it: clear
+    CHECK(HiddenTexts(line, 200, 100).size() == 1);
+
+    RecordingCanvas edge;
+    edge.Text({190.0f, 40.0f}, "e1", TextStyle::Label, palette::kInk);
+    CHECK(HiddenTexts(edge, 200, 100).size() == 1);
+    CHECK(HiddenTexts(edge, 220, 100).empty());
+}
+
+TEST_CASE("No label of any figure of the course covers another, an arrow head or a mark, or leaves the image",
+          "[labels]")
+{
+    const auto lists = FigureLists();
+    REQUIRE(lists.count("SATVIZ_FIGURE_SCENES") == 1);
+    REQUIRE(lists.count("SATVIZ_STEP_SCENES") == 1);
+    REQUIRE(lists.count("SATVIZ_FACE_STEP_SCENES") == 1);
+    std::vector<Drawn> drawn;
+    for (const std::string& stem : lists.at("SATVIZ_FIGURE_SCENES"))
+    {
+        for (Drawn& d : DrawFigures(stem, false, false))
+        {
+            drawn.push_back(std::move(d));
+        }
+    }
+    for (const std::string& stem : lists.at("SATVIZ_STEP_SCENES"))
+    {
+        for (Drawn& d : DrawFigures(stem, true, false))
+        {
+            drawn.push_back(std::move(d));
+        }
+    }
+    for (const std::string& stem : lists.at("SATVIZ_FACE_STEP_SCENES"))
+    {
+        for (Drawn& d : DrawFigures(stem, true, true))
+        {
+            drawn.push_back(std::move(d));
+        }
+    }
+    // As many figures as tutorials/figures/ holds.
+    size_t committed = 0;
+    for (const auto& dir : {"/tutorials/figures", "/tutorials/figures/faces"})
+    {
+        for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + dir))
+        {
+            committed += entry.path().extension() == ".png" ? 1 : 0;
+        }
+    }
+    CHECK(drawn.size() == committed);
+    int failing = 0;
+    for (const Drawn& d : drawn)
+    {
+        INFO(d.name);
+        for (const std::string& problem : d.problems)
+        {
+            UNSCOPED_INFO(problem);
+        }
+        CHECK(d.problems.empty());
+        failing += d.problems.empty() ? 0 : 1;
+    }
+    INFO(failing << " of " << drawn.size() << " figures");
+    CHECK(failing == 0);
+}
