@@ -35,12 +35,6 @@ float Opacity(Color color)
 
 } // namespace
 
-ScreenPoint ApproximateTextSize(std::string_view text, TextStyle style)
-{
-    const float size = TextSize(style);
-    return {0.6f * size * static_cast<float>(text.size()), size};
-}
-
 float SvgFontSize(TextStyle style)
 {
     return TextSize(style) * kUnitsPerEm / (kAscent + kDescent);
@@ -52,7 +46,7 @@ float SvgBaseline(TextStyle style)
 }
 
 SvgCanvas::SvgCanvas(int width, int height, TextMeasure measure)
-    : width_(width), height_(height), measure_(measure ? std::move(measure) : TextMeasure(ApproximateTextSize))
+    : width_(width), height_(height), measure_(measure ? std::move(measure) : TextMeasure(FontTextSize))
 {
 }
 

@@ -21,6 +21,10 @@ enum class TextStyle
 /// Pixel height of a text style.
 float TextSize(TextStyle style);
 
+/// Width and height of one line of text in the figures' fonts (DejaVu Sans, bold for headings) from their advance
+/// widths, as the ImGui canvas measures it: for canvases that have no font of their own (recordings, SVG).
+ScreenPoint FontTextSize(std::string_view text, TextStyle style);
+
 /// A surface the painter draws on: an ImGui draw list (the app and satviz-render), or a recording (tests).
 /// Implementations must accept polygons in either winding.
 class Canvas

@@ -17,15 +17,12 @@ namespace satviz
 /// painter places labels by these sizes, so the SVG's layout matches the PNG's only when they agree.
 using TextMeasure = std::function<ScreenPoint(std::string_view text, TextStyle style)>;
 
-/// Text measured as 0.6 x size per character, size high: the recording canvas's rule, for tests.
-ScreenPoint ApproximateTextSize(std::string_view text, TextStyle style);
-
 /// Records drawing calls as SVG elements. Each BeginGroup opens a <g class="NAME">, so a figure's layers can be
 /// picked out (and hidden) in an editor.
 class SvgCanvas : public Canvas
 {
   public:
-    /// A width x height canvas whose text is measured by `measure` (ApproximateTextSize when empty).
+    /// A width x height canvas whose text is measured by `measure` (FontTextSize when empty).
     SvgCanvas(int width, int height, TextMeasure measure = {});
 
     void Segment(ScreenPoint a, ScreenPoint b, Color color, float thickness) override;
