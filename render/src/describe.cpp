@@ -303,6 +303,27 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
     return text;
 }
 
+// Why a textbook sweep's axis rules out a hit when the intervals never close: they stay apart (or only touch) and
+// do not move, or their overlap lies wholly before the step and they move apart during it.
+std::string NeverClosesReason(const TextbookSweepAxis& t)
+{
+    if (t.never)
+    {
+        const bool touching = std::max(t.minB - t.maxA, t.minA - t.maxB) == 0.0;
+        return touching ? "on this axis the intervals only touch and do not move (touching is not a hit), so the "
+                          "shapes cannot interpenetrate"
+                        : "on this axis the intervals are apart and do not move, so the shapes cannot interpenetrate";
+    }
+    return "on this axis the intervals overlap only before the step (from " + Time(t.entry) + " until " +
+           Time(t.exit) + ") and move apart during it, so the shapes cannot interpenetrate";
+}
+
+// The reason a textbook sweep ended on axis `t`.
+std::string TextbookExitReason(const TextbookSweepTrace& trace, const TextbookSweepAxis& t)
+{
+    return trace.exit == SweepExit::NeverCloses ? NeverClosesReason(t) : SweepExitReason(trace.exit);
+}
+
 std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, int step)
 {
     const TextbookSweepAxis& t = study.textbookSweep.axes[static_cast<size_t>(step)];
@@ -337,7 +358,7 @@ std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, in
     }
     if (t.endsTest)
     {
-        return text + " This ends the test: " + SweepExitReason(study.textbookSweep.exit) + ".";
+        return text + " This ends the test: " + TextbookExitReason(study.textbookSweep, t) + ".";
     }
     if (t.latestEntry >= 0 && t.earliestExit >= 0 && step > 0)
     {
@@ -414,6 +435,13 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
                    std::to_string(last.latestEntry + 1) + " meet at " + Time(entry.entry) +
                    ", so the shapes never overlap on all axes at once.";
         }
+    }
+    if (trace.exit == SweepExit::NeverCloses && trace.result.axis >= 0)
+    {
+        // "on this axis" names the axis: the verdict comes after every axis step.
+        const std::string reason = NeverClosesReason(trace.axes[static_cast<size_t>(trace.result.axis)]);
+        return "Verdict: no hit during the step: on axis " + std::to_string(trace.result.axis + 1) +
+               reason.substr(std::string("on this axis").size()) + ".";
     }
     return "Verdict: no hit during the step: " + SweepExitReason(trace.exit) + ".";
 }

@@ -43,6 +43,12 @@ void LabelPlacer::Reserve(const ScreenRect& rect)
     taken_.push_back(rect);
 }
 
+void LabelPlacer::ReserveBand(const ScreenRect& rect)
+{
+    taken_.push_back(rect);
+    bands_.push_back(rect);
+}
+
 void LabelPlacer::ReserveLine(ScreenPoint a, ScreenPoint b, float thickness)
 {
     lines_.push_back({a, b, thickness});
@@ -51,6 +57,16 @@ void LabelPlacer::ReserveLine(ScreenPoint a, ScreenPoint b, float thickness)
 void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
                         float distance, LabelRank rank)
 {
+    // A number whose vertex or edge cannot be seen would name nothing.
+    const bool hidden = anchor.x < 0.0f || anchor.y < 0.0f || anchor.x > width_ || anchor.y > height_ ||
+                        std::any_of(bands_.begin(), bands_.end(), [&](const ScreenRect& band) {
+                            return anchor.x >= band.minX && anchor.x <= band.maxX && anchor.y >= band.minY &&
+                                   anchor.y <= band.maxY;
+                        });
+    if (hidden && rank <= LabelRank::Edge)
+    {
+        return;
+    }
     labels_.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank});
 }
 

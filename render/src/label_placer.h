@@ -33,6 +33,9 @@ class LabelPlacer
     LabelPlacer(Canvas& canvas, float width, float height);
     /// Marks a region no label may cover: a panel, the caption, an inset, an arrow head, a contact point.
     void Reserve(const ScreenRect& rect);
+    /// Marks a band that hides what lies under it (the caption, the number-line panel, an inset): no label may
+    /// cover it, and a vertex number or an edge name whose anchor it hides is left out.
+    void ReserveBand(const ScreenRect& rect);
     /// Marks a line no label may cover (a line drawn over the labels), `thickness` pixels wide.
     void ReserveLine(ScreenPoint a, ScreenPoint b, float thickness);
     /// Adds `text` near `anchor`, `distance` pixels away, preferring the direction (dx, dy) (any length).
@@ -63,6 +66,7 @@ class LabelPlacer
     float width_;
     float height_;
     std::vector<ScreenRect> taken_;
+    std::vector<ScreenRect> bands_;
     std::vector<Line> lines_;
     std::vector<Label> labels_;
 };

@@ -550,16 +550,16 @@ class Painter
     {
         if (Has(figure_, kLayerMinkowski))
         {
-            labels_.Reserve(InsetBox());
+            labels_.ReserveBand(InsetBox());
         }
         if (Has(figure_, kLayerCaption))
         {
             caption_ = LayOutCaption();
-            labels_.Reserve({0.0f, 0.0f, Width(), caption_.bottom + 1.0f});
+            labels_.ReserveBand({0.0f, 0.0f, Width(), caption_.bottom + 1.0f});
         }
         if (layout_.panelTop < Height())
         {
-            labels_.Reserve({0.0f, layout_.panelTop, Width(), Height()});
+            labels_.ReserveBand({0.0f, layout_.panelTop, Width(), Height()});
         }
     }
 
@@ -1389,17 +1389,27 @@ class Painter
                 std::clamp(px - 0.5f * size.x, std::max(left - 40.0f, labelsFrom), Width() - size.x - 4.0f);
             canvas_.Text({tx, up ? y - 10.0f - size.y : y + 24.0f}, text, TextStyle::Label, palette::kInk);
         };
-        if (!std::isinf(axis_.entry) || axis_.separation > 0.0 || axis_.never)
-        {
-            marker(axis_.entry, "entry", true);
-        }
-        const bool noCommonTime =
-            !(w0 <= w1 && axis_.windowEntry <= 1.0) && axis_.windowExit < axis_.windowEntry && axis_.windowExit <= 1.0;
-        if (!(noCommonTime && std::isinf(axis_.exit)) && !axis_.never)
-        {
-            marker(axis_.exit, "exit", false);
-        }
         const SweepStatus status = study_.Textbook() ? study_.textbookSweepResult.status : study_.sweepResult.status;
+        // A hit's verdict is the common window, as its sentence says: the latest entry and the earliest exit of all
+        // axes (the deciding axis's own exit may come later).
+        if (verdict_ && status == SweepStatus::Hit)
+        {
+            marker(axis_.windowEntry, "latest entry", true);
+            marker(axis_.windowExit, "earliest exit", false);
+        }
+        else
+        {
+            if (!std::isinf(axis_.entry) || axis_.separation > 0.0 || axis_.never)
+            {
+                marker(axis_.entry, "entry", true);
+            }
+            const bool noCommonTime = !(w0 <= w1 && axis_.windowEntry <= 1.0) &&
+                                      axis_.windowExit < axis_.windowEntry && axis_.windowExit <= 1.0;
+            if (!(noCommonTime && std::isinf(axis_.exit)) && !axis_.never)
+            {
+                marker(axis_.exit, "exit", false);
+            }
+        }
         if (verdict_ && status == SweepStatus::Hit)
         {
             const float px = x(study_.Textbook() ? study_.textbookSweepResult.toi : study_.sweepResult.toi);
