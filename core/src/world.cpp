@@ -300,6 +300,8 @@ struct Stepper
     void FindContacts();
     bool LeftToSweep(int i, int j) const;
     void SolveVelocities();
+    template <typename SolvePass>
+    void LimitEnergyGain(const std::vector<SolverBody>& unsolved, const SolvePass& solvePass);
     void StoreImpulses();
     void Move();
     void CorrectPositions();
@@ -665,6 +667,7 @@ void Stepper::SolveVelocities()
     {
         energyBefore[i] = detail::Energy(solverBodies[i]);
     }
+    const std::vector<SolverBody> unsolved = solverBodies;
     for (SolverContact& c : solverContacts)
     {
         detail::WarmStart(c, solverBodies[c.a], solverBodies[c.b]);
@@ -672,9 +675,8 @@ void Stepper::SolveVelocities()
     OrderTopDown();
     detail::NullSolveRecorder quiet;
     detail::TraceSolveRecorder loud{trace};
-    for (int pass = 0; pass < settings.velocityIterations; ++pass)
-    {
-        for (const int k : solveOrder)
+    const auto solvePass = [&](const std::vector<int>& order, int pass) {
+        for (const int k : order)
         {
             SolverContact& c = solverContacts[static_cast<size_t>(k)];
             if (c.traced)
@@ -686,7 +688,12 @@ void Stepper::SolveVelocities()
                 detail::SolveContactVelocity(c, solverBodies[c.a], solverBodies[c.b], pass, quiet);
             }
         }
+    };
+    for (int pass = 0; pass < settings.velocityIterations; ++pass)
+    {
+        solvePass(solveOrder, pass);
     }
+    LimitEnergyGain(unsolved, solvePass);
     detail::ApplyRestitution(solverContacts, solverBodies, energyBefore, settings.velocityIterations);
     for (const SolverContact& c : solverContacts)
     {
@@ -694,6 +701,184 @@ void Stepper::SolveVelocities()
         {
             trace->restitutionImpulse[0] = c.points[0].restitutionImpulse;
             trace->restitutionImpulse[1] = c.points[1].restitutionImpulse;
+        }
+    }
+}
+
+// Warm starting guesses this step's impulses from the last step's. From zero impulses, each velocity pass over
+// inelastic contacts only takes kinetic energy away (projected Gauss-Seidel descends the energy, less what the
+// speculative gaps allow); from the guess, passes that have not converged (a light body wedged under a heavy,
+// spinning one) can leave more energy than the bodies had before the contacts acted. A group of bodies joined by
+// contacts that ends the passes with more kinetic energy than it had, beyond the drift the slop allows, gets more
+// passes (as many again at most) while it still gains; if it still does, every impulse of the group is scaled
+// down, by the same factor, until its energy is back within the allowance. Momentum is kept; an approach the
+// smaller impulses leave is the sweep's and the next step's to stop.
+template <typename SolvePass>
+void Stepper::LimitEnergyGain(const std::vector<SolverBody>& unsolved, const SolvePass& solvePass)
+{
+    const int n = static_cast<int>(solverBodies.size());
+    if (solverContacts.empty())
+    {
+        return;
+    }
+    std::vector<int> parent(n);
+    for (int i = 0; i < n; ++i)
+    {
+        parent[i] = i;
+    }
+    const auto moves = [&](int i) { return solverBodies[i].invMass > 0.0 || solverBodies[i].invInertia > 0.0; };
+    for (const SolverContact& c : solverContacts)
+    {
+        if (moves(c.a) && moves(c.b))
+        {
+            const int ra = FindRoot(parent, c.a), rb = FindRoot(parent, c.b);
+            parent[ra < rb ? rb : ra] = ra < rb ? ra : rb;
+        }
+    }
+    // What a group may gain: the energy of each body moving at the slop per step, the speed at which the contacts
+    // let a resting body drift within the slop.
+    const double drift = 0.5 * (2.0 * settings.linearSlop / dt) * (2.0 * settings.linearSlop / dt);
+    std::vector<double> before(n, 0.0), after(n, 0.0);
+    for (int i = 0; i < n; ++i)
+    {
+        if (moves(i))
+        {
+            const int r = FindRoot(parent, i);
+            const double mass = solverBodies[i].invMass > 0.0 ? 1.0 / solverBodies[i].invMass : 0.0;
+            before[r] += energyBefore[i] + mass * drift;
+            after[r] += detail::Energy(solverBodies[i]);
+        }
+    }
+    std::vector<uint8_t> gained(n, 0);
+    bool any = false;
+    for (int i = 0; i < n; ++i)
+    {
+        if (moves(i) && FindRoot(parent, i) == i && after[i] > before[i])
+        {
+            gained[i] = 1;
+            any = true;
+        }
+    }
+    if (!any)
+    {
+        return;
+    }
+    // More passes over the groups that gained, as many again at most, while they still gain: the passes converge
+    // towards impulses that take energy away.
+    std::vector<int> order;
+    for (const int k : solveOrder)
+    {
+        const SolverContact& c = solverContacts[static_cast<size_t>(k)];
+        if (gained[FindRoot(parent, moves(c.a) ? c.a : c.b)])
+        {
+            order.push_back(k);
+            if (c.traced)
+            {
+                world.trace->energyLimited = true;
+            }
+        }
+    }
+    for (int pass = 0; pass < settings.velocityIterations && any; ++pass)
+    {
+        solvePass(order, settings.velocityIterations + pass);
+        std::fill(after.begin(), after.end(), 0.0);
+        for (int i = 0; i < n; ++i)
+        {
+            if (moves(i) && gained[FindRoot(parent, i)])
+            {
+                after[FindRoot(parent, i)] += detail::Energy(solverBodies[i]);
+            }
+        }
+        any = false;
+        for (int r = 0; r < n; ++r)
+        {
+            if (gained[r])
+            {
+                gained[r] = after[r] > before[r] ? 1 : 0;
+                any = any || gained[r];
+            }
+        }
+        // Groups that no longer gain keep their passes; the next pass is only over those that still do.
+        order.erase(std::remove_if(order.begin(), order.end(),
+                                   [&](int k) {
+                                       const SolverContact& c = solverContacts[static_cast<size_t>(k)];
+                                       return !gained[FindRoot(parent, moves(c.a) ? c.a : c.b)];
+                                   }),
+                    order.end());
+    }
+    if (!any)
+    {
+        return;
+    }
+    // Per group: the energy as a function of the scale s of the contacts' impulses, E(s) = e0 + g s + h s^2, with
+    // e0 the energy before they acted; s = 1 is the solve as it stands. The largest s in [0, 1] with E(s) within
+    // the allowance scales every impulse of the group (momentum is kept, pair by pair).
+    std::vector<double> e0(n, 0.0), g(n, 0.0), h(n, 0.0);
+    for (int i = 0; i < n; ++i)
+    {
+        if (!moves(i) || !gained[FindRoot(parent, i)])
+        {
+            continue;
+        }
+        const int r = FindRoot(parent, i);
+        const SolverBody& u = unsolved[i];
+        const SolverBody& v = solverBodies[i];
+        const double mass = u.invMass > 0.0 ? 1.0 / u.invMass : 0.0;
+        const double inertia = u.invInertia > 0.0 ? 1.0 / u.invInertia : 0.0;
+        const Vec2 dv = v.v - u.v;
+        const double dw = v.w - u.w;
+        e0[r] += detail::Energy(u);
+        g[r] += mass * Dot(u.v, dv) + inertia * u.w * dw;
+        h[r] += 0.5 * (mass * Dot(dv, dv) + inertia * dw * dw);
+    }
+    std::vector<double> scale(n, 1.0);
+    for (int r = 0; r < n; ++r)
+    {
+        if (!gained[r])
+        {
+            continue;
+        }
+        // E(s) = before[r] at the largest root; E(0) = e0 <= before, E(1) > before, so the root lies in (0, 1).
+        const double c = e0[r] - before[r];
+        double root = 0.0;
+        if (h[r] > 0.0)
+        {
+            const double disc = std::max(0.0, g[r] * g[r] - 4.0 * h[r] * c);
+            root = (-g[r] + std::sqrt(disc)) / (2.0 * h[r]);
+        }
+        else if (g[r] > 0.0)
+        {
+            root = -c / g[r];
+        }
+        scale[r] = std::max(0.0, std::min(1.0, root));
+    }
+    for (int i = 0; i < n; ++i)
+    {
+        if (moves(i) && gained[FindRoot(parent, i)])
+        {
+            const double f = scale[FindRoot(parent, i)];
+            const SolverBody& u = unsolved[i];
+            SolverBody& v = solverBodies[i];
+            v.v = u.v + f * (v.v - u.v);
+            v.w = u.w + f * (v.w - u.w);
+        }
+    }
+    for (SolverContact& c : solverContacts)
+    {
+        const int body = moves(c.a) ? c.a : c.b;
+        if (!gained[FindRoot(parent, body)])
+        {
+            continue;
+        }
+        const double f = scale[FindRoot(parent, body)];
+        for (int i = 0; i < c.count; ++i)
+        {
+            c.points[i].normalImpulse *= f;
+            c.points[i].tangentImpulse *= f;
+        }
+        if (c.traced)
+        {
+            world.trace->impulseScale = f;
         }
     }
 }

@@ -47,6 +47,12 @@ struct ContactSolveTrace
     double warmNormal[2]{};                ///< normal impulse carried over from the last step (warm start)
     double warmTangent[2]{};               ///< friction impulse carried over from the last step
     bool blockSolved = false;              ///< the two normal impulses were solved together
+    /// The passes left the contact's group of bodies (those its contacts join) with more kinetic energy than they
+    /// had before the contacts acted, beyond the drift the slop allows (passes from a warm start that have not
+    /// converged can): the group got more passes (recorded in `passes`, numbered on from velocityIterations), and if
+    /// it still gained, every impulse of the group, this contact's among them, was scaled by impulseScale.
+    bool energyLimited = false;
+    double impulseScale = 1.0; ///< the factor of energyLimited; 1 when the impulses were kept as solved
     std::vector<ContactPointSolve> passes; ///< every pass over every point, in order
     int hits = 0;                          ///< time-ordered hits between the pair within the step
     double hitTime = -1.0;                 ///< time of the first such hit within the step, in [0, 1] of the step, or -1
