@@ -5,6 +5,7 @@
 # SATVIZ_FACE_STEP_SCENES: the same in the face-test view (--view faces), in figures/faces/.
 # The committed figures double as the golden images of the render tests.
 set(SATVIZ_FIGURE_SCENES
+  l01_legend
   box_above_floor
   bullet_wall
   circle_and_polygon

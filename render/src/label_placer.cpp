@@ -58,11 +58,11 @@ void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
                         float distance, LabelRank rank)
 {
     // A number whose vertex or edge cannot be seen would name nothing.
-    const bool hidden = anchor.x < 0.0f || anchor.y < 0.0f || anchor.x > width_ || anchor.y > height_ ||
-                        std::any_of(bands_.begin(), bands_.end(), [&](const ScreenRect& band) {
-                            return anchor.x >= band.minX && anchor.x <= band.maxX && anchor.y >= band.minY &&
-                                   anchor.y <= band.maxY;
-                        });
+    const bool hidden =
+        anchor.x < 0.0f || anchor.y < 0.0f || anchor.x > width_ || anchor.y > height_ ||
+        std::any_of(bands_.begin(), bands_.end(), [&](const ScreenRect& band) {
+            return anchor.x >= band.minX && anchor.x <= band.maxX && anchor.y >= band.minY && anchor.y <= band.maxY;
+        });
     if (hidden && rank <= LabelRank::Edge)
     {
         return;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "draw_kit.h"
 #include "label_placer.h"
+#include "legend.h"
 #include "voronoi_view.h"
 
 #include <satviz/render/describe.h>
@@ -408,6 +409,22 @@ class Painter
         canvas_.BeginGroup("background");
         canvas_.FillRect({0.0f, 0.0f}, {static_cast<float>(view_.width), static_cast<float>(view_.height)},
                          palette::kBackground);
+        if ((figure_.layers & ~kLayerCaption) == kLayerLegend)
+        {
+            // The legend alone: the key to every mark, in the middle of the scene area.
+            const std::vector<LegendMark> marks = AllLegendMarks();
+            const ScreenPoint size = LegendSize(canvas_, marks);
+            PaintLegend(canvas_,
+                        {std::round(0.5f * (Width() - size.x)),
+                         std::round(0.5f * (layout_.sceneTop + layout_.sceneBottom - size.y))},
+                        marks);
+            if (Has(figure_, kLayerCaption))
+            {
+                caption_ = LayOutCaption();
+                Caption();
+            }
+            return;
+        }
         Grid();
         ReserveBands();
         if (Has(figure_, kLayerVoronoi))
@@ -469,6 +486,13 @@ class Painter
         {
             Labels();
         }
+        std::vector<LegendMark> legend;
+        ScreenPoint legendAt{};
+        if (Has(figure_, kLayerLegend))
+        {
+            legend = UsedMarks();
+            legendAt = LegendCorner(LegendSize(canvas_, legend));
+        }
         labels_.Flush(WithAlpha(palette::kBackground, 0.72f));
         if (hasMtvArrow_)
         {
@@ -478,6 +502,7 @@ class Painter
         {
             Minkowski();
         }
+        PaintLegend(canvas_, legendAt, legend);
         if (layout_.panelTop < static_cast<float>(view_.height))
         {
             Panel();
@@ -532,6 +557,105 @@ class Painter
         const float right = Width() - 10.0f;
         const float top = layout_.sceneTop + 10.0f;
         return {right - side, top, right, top + side};
+    }
+
+    // The marks this figure draws, in the key's order, for the legend.
+    std::vector<LegendMark> UsedMarks() const
+    {
+        std::vector<LegendMark> used = used_;
+        if (Has(figure_, kLayerShapes) && scene_.bodies.size() > 2)
+        {
+            used.push_back(LegendMark::Other);
+        }
+        if (hasAxis_ && Has(figure_, kLayerProjection) && !axis_.skipped)
+        {
+            for (int f = 0; f < axis_.faceCount; ++f)
+            {
+                if (axis_.faces[f].kind == AxisKind::FaceNormal)
+                {
+                    used.push_back(LegendMark::AxisFace);
+                }
+            }
+            used.push_back(!axis_.textbook ? LegendMark::Behind
+                                           : (axis_.separation > 0.0 ? LegendMark::Gap : LegendMark::Overlap));
+            if (axis_.swept)
+            {
+                used.push_back(LegendMark::Swept);
+            }
+        }
+        if (hasAxis_ && axis_.swept && layout_.panelTop < Height())
+        {
+            used.push_back(LegendMark::TimeMarks);
+        }
+        if (hasMtvArrow_)
+        {
+            used.push_back(LegendMark::Mtv);
+        }
+        std::sort(used.begin(), used.end());
+        used.erase(std::unique(used.begin(), used.end()), used.end());
+        return used;
+    }
+
+    // The corner of the scene area where the legend hides least of the pair (never the Minkowski inset's), kept
+    // free of labels.
+    ScreenPoint LegendCorner(ScreenPoint size)
+    {
+        ScreenRect pair{INFINITY, INFINITY, -INFINITY, -INFINITY};
+        for (const auto& [p, r] : points_)
+        {
+            const ScreenPoint q = At(p);
+            const float pr = ToPixels(view_, r);
+            pair = {std::min(pair.minX, q.x - pr), std::min(pair.minY, q.y - pr), std::max(pair.maxX, q.x + pr),
+                    std::max(pair.maxY, q.y + pr)};
+        }
+        // The axis line beside the pair and its bars.
+        ScreenRect line{INFINITY, INFINITY, -INFINITY, -INFINITY};
+        if (hasAxis_ && Has(figure_, kLayerProjection) && !axis_.skipped)
+        {
+            const Vec2 d = axis_.direction;
+            const Vec2 base = AxisLineBase(points_, d, kAxisGap / view_.zoom);
+            double lo = std::min(axis_.minA, axis_.minB) - kLinePad / view_.zoom;
+            double hi = std::max(axis_.maxA, axis_.maxB) + kLinePad / view_.zoom;
+            if (axis_.swept)
+            {
+                lo = std::min(lo, axis_.sweptMinB);
+                hi = std::max(hi, axis_.sweptMaxB);
+            }
+            for (const double u : {lo, hi})
+            {
+                const ScreenPoint q = At(Along(base, d, u));
+                line = {std::min(line.minX, q.x - 12.0f), std::min(line.minY, q.y - 12.0f),
+                        std::max(line.maxX, q.x + 12.0f), std::max(line.maxY, q.y + 12.0f)};
+            }
+        }
+        const auto covered = [&](ScreenPoint c, const ScreenRect& r) {
+            const float w = std::max(0.0f, std::min(c.x + size.x, r.maxX) - std::max(c.x, r.minX));
+            const float h = std::max(0.0f, std::min(c.y + size.y, r.maxY) - std::max(c.y, r.minY));
+            return w * h;
+        };
+        const float m = 8.0f;
+        const ScreenPoint corners[4] = {{m, layout_.sceneBottom - m - size.y},
+                                        {Width() - m - size.x, layout_.sceneBottom - m - size.y},
+                                        {m, layout_.sceneTop + m},
+                                        {Width() - m - size.x, layout_.sceneTop + m}};
+        ScreenPoint best = corners[0];
+        float least = INFINITY;
+        for (int k = 0; k < 4; ++k)
+        {
+            if (k == 3 && Has(figure_, kLayerMinkowski))
+            {
+                continue;
+            }
+            const float area = covered(corners[k], pair) + covered(corners[k], line);
+            if (area < least)
+            {
+                least = area;
+                best = corners[k];
+            }
+        }
+        best = {std::round(best.x), std::round(best.y)};
+        labels_.ReserveBand({best.x, best.y, best.x + size.x, best.y + size.y});
+        return best;
     }
 
     // An arrow whose head and shaft no label may cover.
@@ -653,9 +777,8 @@ class Painter
                 const Vec2 mid = TransformPoint(xf, poly.Vertices()[i] + 0.5 * poly.Edge(i));
                 const Vec2 n = Rotate(xf.q, poly.Normal(i));
                 const ScreenPoint a = At(mid);
-                MarkedArrow(a,
-                                      {a.x + 22.0f * static_cast<float>(n.x), a.y - 22.0f * static_cast<float>(n.y)},
-                                      InkOf(s), 1.5f, 7.0f);
+                MarkedArrow(a, {a.x + 22.0f * static_cast<float>(n.x), a.y - 22.0f * static_cast<float>(n.y)}, InkOf(s),
+                            1.5f, 7.0f);
             }
         }
     }
@@ -677,6 +800,7 @@ class Painter
                 const Transform end = BodyTransformAt(body, 1.0);
                 DashedOutline(canvas_, ShapeOutline(view_, body.shape, end), WithAlpha(ColorOf(s), 0.55f), 1.2f,
                               bounds_);
+                used_.push_back(LegendMark::Dashed);
             }
             const Vec2 c = ShapeCenter(body.shape, body.Xf());
             MarkedArrow(At(c), At(c + body.velocity), InkOf(s), 2.0f, 11.0f);
@@ -828,6 +952,7 @@ class Painter
                 const std::vector<ScreenPoint> outline = ShapeOutline(view_, body.shape, xf);
                 canvas_.FillConvex(outline.data(), static_cast<int>(outline.size()), WithAlpha(ColorOf(s), 0.10f));
                 DashedOutline(canvas_, outline, WithAlpha(InkOf(s), alpha), 1.8f, bounds_);
+                used_.push_back(LegendMark::Dashed);
                 ScreenPoint top = outline.front();
                 for (const ScreenPoint& p : outline)
                 {
@@ -863,9 +988,8 @@ class Painter
             canvas_.Segment(At(v1), At(v2), color, 4.0f);
             const ScreenPoint mid = At(0.5 * (v1 + v2));
             const Vec2 n = Rotate(xf.q, poly.Normal(ref.index));
-            MarkedArrow(mid,
-                                  {mid.x + 30.0f * static_cast<float>(n.x), mid.y - 30.0f * static_cast<float>(n.y)},
-                                  color, 2.0f, 9.0f);
+            MarkedArrow(mid, {mid.x + 30.0f * static_cast<float>(n.x), mid.y - 30.0f * static_cast<float>(n.y)}, color,
+                        2.0f, 9.0f);
         }
         else if (ref.kind == AxisKind::VertexToCenter && ref.shape >= 0)
         {
@@ -916,8 +1040,8 @@ class Painter
         {
             AxisSource(axis_.faces[f], faint(palette::kInk, 1.0f));
         }
-        MarkedArrow(At(Along(base, d, lo - pad)), At(Along(base, d, hi + pad)),
-                              faint(palette::kMuted, 1.0f), 1.5f, 11.0f);
+        MarkedArrow(At(Along(base, d, lo - pad)), At(Along(base, d, hi + pad)), faint(palette::kMuted, 1.0f), 1.5f,
+                    11.0f);
         const std::string name = (axis_.textbook ? "axis " : "face test ") + std::to_string(axis_.index + 1);
         labels_.Place(At(Along(base, d, hi + pad)),
                       !axis_.decided ? name : name + (axis_.bounded ? " (not walked to)" : " (not evaluated)"),
@@ -980,6 +1104,7 @@ class Painter
     void SeparatingLine()
     {
         canvas_.BeginGroup("exit");
+        used_.push_back(LegendMark::Separating);
         const Vec2 d = axis_.direction;
         const double lo = std::min(axis_.maxA, axis_.maxB);
         const double hi = std::max(axis_.minA, axis_.minB);
@@ -989,8 +1114,7 @@ class Painter
         const double reach = discRadius_;
         DashedSegment(canvas_, At(point - reach * n), At(point + reach * n), palette::kGap, 2.5f, bounds_, 10.0f, 6.0f);
         const Vec2 end = n.y >= 0.0 ? point + reach * n : point - reach * n;
-        labels_.Place(At(end), "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f, 6.0f,
-                      LabelRank::Verdict);
+        labels_.Place(At(end), "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f, 6.0f, LabelRank::Verdict);
     }
 
     // The best axis so far (the smallest push; for sweeps, the latest entry), when it is not the current one.
@@ -1010,6 +1134,7 @@ class Painter
         {
             return;
         }
+        used_.push_back(LegendMark::BestAxis);
         canvas_.BeginGroup("best");
         const ShownAxis shown = ShowAxis(study_, best);
         for (int f = 0; f < shown.faceCount; ++f)
@@ -1037,6 +1162,7 @@ class Painter
         Transform moved = bodyB_.Xf();
         moved.p = moved.p + shift;
         DashedOutline(canvas_, ShapeOutline(view_, bodyB_.shape, moved), palette::kShapeBInk, 1.8f, bounds_);
+        used_.push_back(LegendMark::Dashed);
         const Vec2 c = ShapeCenter(bodyB_.shape, bodyB_.Xf());
         const ScreenPoint from = At(c);
         ScreenPoint to = At(c + shift);
@@ -1126,6 +1252,7 @@ class Painter
         {
             screen[i] = At(points[i].point);
             canvas_.FillCircle(screen[i], 5.5f, palette::kResult);
+            used_.push_back(LegendMark::Contact);
             canvas_.Circle(screen[i], 5.5f, palette::kBackground, 1.5f);
             labels_.Reserve(Disc(screen[i], 6.5f));
         }
@@ -1164,6 +1291,8 @@ class Painter
         const ScreenPoint i2 = At(clip.incidentV2);
         canvas_.Segment(i1, i2, InkOf(clip.incidentShape), 5.0f);
         canvas_.Segment(i1, i2, palette::kBackground, 1.5f);
+        used_.push_back(LegendMark::Reference);
+        used_.push_back(LegendMark::Incident);
         labels_.Place(At(0.5 * (clip.incidentV1 + clip.incidentV2)), "incident edge", TextStyle::Label,
                       InkOf(clip.incidentShape), static_cast<float>(-n.x), static_cast<float>(n.y), 10.0f,
                       LabelRank::Verdict);
@@ -1238,8 +1367,8 @@ class Painter
         canvas_.Text({left, top + 6.0f}, title, TextStyle::Label, palette::kMuted);
         if (axis_.skipped)
         {
-            canvas_.Text({left, top + 36.0f}, "skipped: anti-parallel to a face already tested (the same axis)", TextStyle::Body,
-                         palette::kMuted);
+            canvas_.Text({left, top + 36.0f}, "skipped: anti-parallel to a face already tested (the same axis)",
+                         TextStyle::Body, palette::kMuted);
             return;
         }
         double lo = std::min(axis_.minA, axis_.minB);
@@ -1403,8 +1532,8 @@ class Painter
             {
                 marker(axis_.entry, "entry", true);
             }
-            const bool noCommonTime = !(w0 <= w1 && axis_.windowEntry <= 1.0) &&
-                                      axis_.windowExit < axis_.windowEntry && axis_.windowExit <= 1.0;
+            const bool noCommonTime = !(w0 <= w1 && axis_.windowEntry <= 1.0) && axis_.windowExit < axis_.windowEntry &&
+                                      axis_.windowExit <= 1.0;
             if (!(noCommonTime && std::isinf(axis_.exit)) && !axis_.never)
             {
                 marker(axis_.exit, "exit", false);
@@ -1533,6 +1662,7 @@ class Painter
     ScreenPoint mtvFrom_{};
     ScreenPoint mtvTo_{};
     CaptionLines caption_;
+    std::vector<LegendMark> used_; // marks drawn that only their drawing knows of
     bool hasPitfallArrow_ = false;
     ScreenPoint pitfallFrom_{};
     ScreenPoint pitfallTo_{};

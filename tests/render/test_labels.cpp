@@ -128,8 +128,8 @@ bool ConvexCovers(const std::vector<ScreenPoint>& points, const Box& box)
     {
         return false;
     }
-    const ScreenPoint corners[4] = {{box.minX, box.minY}, {box.maxX, box.minY}, {box.maxX, box.maxY},
-                                    {box.minX, box.maxY}};
+    const ScreenPoint corners[4] = {
+        {box.minX, box.minY}, {box.maxX, box.minY}, {box.maxX, box.maxY}, {box.minX, box.maxY}};
     for (size_t i = 0; i < points.size(); ++i)
     {
         const ScreenPoint& p = points[i];

@@ -550,11 +550,12 @@ TEST_CASE("The layer table is what scene files accept, and its names and bits ar
     }
     CHECK(LayerNames(kAllLayers) == names);
     CHECK(LayersFromNames(names) == kAllLayers);
-    CHECK(kDefaultLayers == (kAllLayers & ~(kLayerNormals | kLayerAxes | kLayerMinkowski | kLayerVoronoi)));
+    CHECK(kDefaultLayers ==
+          (kAllLayers & ~(kLayerNormals | kLayerAxes | kLayerMinkowski | kLayerVoronoi | kLayerLegend)));
     CHECK(LayerFromName("mvt") == 0);
     CHECK(LayerNameList() ==
           "shapes, labels, normals, axes, projection, exit, best, mtv, contacts, swept, ghost, caption, minkowski, "
-          "voronoi");
+          "voronoi, legend");
     // Every name loads from a scene file's view block and gives back its own bit; an unknown one is one line naming
     // the file and the field.
     const std::string two = R"({"bodies": [{"box": [1, 1]}, {"box": [1, 1]}], "view": {"layers": [")";

@@ -38,6 +38,8 @@ enum Layer : LayerMask
     /// The Voronoi regions of the pair's polygon (a face region in front of each edge, a vertex region at each
     /// corner), and the one that holds the other shape's centre.
     kLayerVoronoi = 1u << 13,
+    /// A key to the figure's colours and marks, in a corner of the scene; drawn alone, the key to every mark.
+    kLayerLegend = 1u << 14,
 };
 
 /// One drawing layer: a row of kLayerTable.
@@ -51,7 +53,7 @@ struct LayerInfo
 
 /// Every drawing layer, in drawing order: the one list of layer names, bits and descriptions (render/README.md and
 /// the top-level README's "view block" table describe them for users).
-inline constexpr std::array<LayerInfo, 14> kLayerTable = {{
+inline constexpr std::array<LayerInfo, 15> kLayerTable = {{
     {"shapes", kLayerShapes, true, "the bodies, filled and outlined"},
     {"labels", kLayerLabels, true, "body names, vertex and edge numbers"},
     {"normals", kLayerNormals, false, "every outward edge normal"},
@@ -67,6 +69,7 @@ inline constexpr std::array<LayerInfo, 14> kLayerTable = {{
     {"minkowski", kLayerMinkowski, false,
      "the Minkowski difference A - B in an inset: the origin inside it exactly when they overlap"},
     {"voronoi", kLayerVoronoi, false, "the polygon's face and vertex regions, and the one holding the other's centre"},
+    {"legend", kLayerLegend, false, "a key to the colours and marks the figure uses"},
 }};
 
 /// True when every row of the table has its own single bit, in drawing order (row i has bit i).

@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: MIT
+#include "legend.h"
+
+#include <satviz/render/palette.h>
+
+#include <algorithm>
+#include <string>
+
+namespace satviz
+{
+
+namespace
+{
+
+constexpr float kPadding = 8.0f; // inside the panel
+constexpr float kRow = 18.0f;    // row height
+constexpr float kSwatch = 28.0f; // swatch width
+constexpr float kGapAfterSwatch = 8.0f;
+
+const char* Meaning(LegendMark mark)
+{
+    switch (mark)
+    {
+    case LegendMark::AxisFace:
+        return "thick dark edge: the face whose normal is the axis";
+    case LegendMark::BestAxis:
+        return "light-blue edge: the best axis so far";
+    case LegendMark::Overlap:
+        return "purple band: the intervals overlap";
+    case LegendMark::Gap:
+        return "green band: a gap between the intervals";
+    case LegendMark::Behind:
+        return "band of a face test: how far behind (or beyond) the face";
+    case LegendMark::Swept:
+        return "pale bar: the interval swept during the step";
+    case LegendMark::TimeMarks:
+        return "dark triangles on the time bar: entry and exit";
+    case LegendMark::Other:
+        return "grey body: not in the tested pair (a wall, a mark)";
+    case LegendMark::Reference:
+        return "thick edge in a body's colour: the reference face";
+    case LegendMark::Incident:
+        return "doubled edge: the incident edge";
+    case LegendMark::Contact:
+        return "vermillion dot: a contact point";
+    case LegendMark::Mtv:
+        return "vermillion arrow: the minimum translation vector";
+    case LegendMark::Dashed:
+        return "dashed outline: a body at another time, or moved by the MTV";
+    case LegendMark::Separating:
+        return "green dashed line: a separating line";
+    }
+    return "";
+}
+
+void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
+{
+    const float x1 = x + kSwatch;
+    const float cy = y + 0.5f * kRow;
+    switch (mark)
+    {
+    case LegendMark::AxisFace:
+        canvas.Segment({x, cy}, {x1, cy}, palette::kInk, 4.0f);
+        break;
+    case LegendMark::BestAxis:
+        canvas.Segment({x, cy}, {x1, cy}, palette::kBest, 4.0f);
+        break;
+    case LegendMark::Overlap:
+        canvas.FillRect({x, y + 3.0f}, {x1, y + kRow - 3.0f}, WithAlpha(palette::kOverlap, 0.45f));
+        break;
+    case LegendMark::Gap:
+        canvas.FillRect({x, y + 3.0f}, {x1, y + kRow - 3.0f}, WithAlpha(palette::kGap, 0.45f));
+        break;
+    case LegendMark::Behind:
+        canvas.FillRect({x, y + 3.0f}, {x + 0.5f * kSwatch, y + kRow - 3.0f}, WithAlpha(palette::kOverlap, 0.45f));
+        canvas.FillRect({x + 0.5f * kSwatch, y + 3.0f}, {x1, y + kRow - 3.0f}, WithAlpha(palette::kGap, 0.45f));
+        break;
+    case LegendMark::Swept:
+        canvas.Segment({x, cy}, {x1, cy}, WithAlpha(palette::kShapeB, 0.35f), 8.0f);
+        break;
+    case LegendMark::TimeMarks:
+    {
+        const ScreenPoint down[3] = {{x + 8.0f, cy}, {x + 3.0f, cy - 7.0f}, {x + 13.0f, cy - 7.0f}};
+        const ScreenPoint up[3] = {{x + 20.0f, cy}, {x + 15.0f, cy + 7.0f}, {x + 25.0f, cy + 7.0f}};
+        canvas.Segment({x, cy}, {x1, cy}, palette::kMuted, 2.0f);
+        canvas.FillConvex(down, 3, palette::kInk);
+        canvas.FillConvex(up, 3, palette::kInk);
+        break;
+    }
+    case LegendMark::Other:
+        canvas.FillRect({x + 2.0f, y + 3.0f}, {x1 - 2.0f, y + kRow - 3.0f}, WithAlpha(palette::kOther, 0.18f));
+        {
+            const ScreenPoint box[4] = {
+                {x + 2.0f, y + 3.0f}, {x1 - 2.0f, y + 3.0f}, {x1 - 2.0f, y + kRow - 3.0f}, {x + 2.0f, y + kRow - 3.0f}};
+            canvas.Polyline(box, 4, true, palette::kOther, 2.0f);
+        }
+        break;
+    case LegendMark::Reference:
+        canvas.Segment({x, cy}, {x1, cy}, palette::kShapeA, 5.0f);
+        break;
+    case LegendMark::Incident:
+        canvas.Segment({x, cy}, {x1, cy}, palette::kShapeBInk, 5.0f);
+        canvas.Segment({x, cy}, {x1, cy}, palette::kBackground, 1.5f);
+        break;
+    case LegendMark::Contact:
+        canvas.FillCircle({x + 0.5f * kSwatch, cy}, 5.5f, palette::kResult);
+        canvas.Circle({x + 0.5f * kSwatch, cy}, 5.5f, palette::kBackground, 1.5f);
+        break;
+    case LegendMark::Mtv:
+        Arrow(canvas, {x, cy}, {x1, cy}, palette::kResult, 3.0f, 9.0f);
+        break;
+    case LegendMark::Dashed:
+        DashedSegment(canvas, {x, cy}, {x1, cy}, palette::kShapeBInk, 1.8f, {x - 1.0f, y, x1 + 1.0f, y + kRow}, 6.0f,
+                      4.0f);
+        break;
+    case LegendMark::Separating:
+        DashedSegment(canvas, {x, cy}, {x1, cy}, palette::kGap, 2.5f, {x - 1.0f, y, x1 + 1.0f, y + kRow}, 10.0f, 6.0f);
+        break;
+    }
+}
+
+} // namespace
+
+std::vector<LegendMark> AllLegendMarks()
+{
+    std::vector<LegendMark> marks;
+    for (int k = static_cast<int>(LegendMark::AxisFace); k <= static_cast<int>(LegendMark::Separating); ++k)
+    {
+        marks.push_back(static_cast<LegendMark>(k));
+    }
+    return marks;
+}
+
+ScreenPoint LegendSize(Canvas& canvas, const std::vector<LegendMark>& marks)
+{
+    float width = 0.0f;
+    for (LegendMark mark : marks)
+    {
+        width = std::max(width, canvas.MeasureText(Meaning(mark), TextStyle::Label).x);
+    }
+    return {2.0f * kPadding + kSwatch + kGapAfterSwatch + width,
+            2.0f * kPadding + kRow * static_cast<float>(marks.size())};
+}
+
+void PaintLegend(Canvas& canvas, ScreenPoint topLeft, const std::vector<LegendMark>& marks)
+{
+    if (marks.empty())
+    {
+        return;
+    }
+    canvas.BeginGroup("legend");
+    const ScreenPoint size = LegendSize(canvas, marks);
+    const ScreenPoint bottomRight{topLeft.x + size.x, topLeft.y + size.y};
+    canvas.FillRect(topLeft, bottomRight, WithAlpha(palette::kPanel, 0.95f));
+    const ScreenPoint frame[4] = {topLeft, {bottomRight.x, topLeft.y}, bottomRight, {topLeft.x, bottomRight.y}};
+    canvas.Polyline(frame, 4, true, palette::kFaint, 1.0f);
+    float y = topLeft.y + kPadding;
+    for (LegendMark mark : marks)
+    {
+        Swatch(canvas, mark, topLeft.x + kPadding, y);
+        const float textY = y + 0.5f * (kRow - TextSize(TextStyle::Label));
+        canvas.Text({topLeft.x + kPadding + kSwatch + kGapAfterSwatch, textY}, Meaning(mark), TextStyle::Label,
+                    palette::kInk);
+        y += kRow;
+    }
+}
+
+} // namespace satviz

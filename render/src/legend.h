@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// satviz render, private: the "legend" layer, a key to the colours and marks of a figure, each drawn as the
+// painter draws it beside one line that says what it means.
+#pragma once
+
+#include "draw_kit.h"
+
+#include <vector>
+
+namespace satviz
+{
+
+/// A colour or mark a figure can use, in the order the key lists them.
+enum class LegendMark
+{
+    AxisFace,   ///< the thick dark edge whose normal is the current axis
+    BestAxis,   ///< the light-blue edge of the best axis so far
+    Overlap,    ///< the purple band: the two intervals overlap
+    Gap,        ///< the green band: a gap between the intervals
+    Behind,     ///< the band of a face test: how far the other shape lies behind (or beyond) the face
+    Swept,      ///< the pale bar: the interval B sweeps during the step
+    TimeMarks,  ///< the dark triangles on the time bar: entry and exit
+    Other,      ///< a grey body: not in the tested pair (a wall, a mark)
+    Reference,  ///< the thick edge in a body's colour: the reference face
+    Incident,   ///< the doubled edge: the incident edge
+    Contact,    ///< the vermillion dots: contact points
+    Mtv,        ///< the vermillion arrow: the minimum translation vector
+    Dashed,     ///< a dashed outline: a body at another time, or moved out by the MTV
+    Separating, ///< the green dashed line: a separating line
+};
+
+/// Every mark, in the key's order.
+std::vector<LegendMark> AllLegendMarks();
+
+/// The size of the key to `marks`.
+ScreenPoint LegendSize(Canvas& canvas, const std::vector<LegendMark>& marks);
+
+/// Draws the key to `marks` with its top-left corner at `topLeft`, in the group "legend": a panel, and one row per
+/// mark, its swatch drawn as the figure draws it, then its meaning.
+void PaintLegend(Canvas& canvas, ScreenPoint topLeft, const std::vector<LegendMark>& marks);
+
+} // namespace satviz
