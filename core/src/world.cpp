@@ -294,6 +294,7 @@ struct Stepper
     std::vector<Vec2> centers;         // centres of mass at the start of the step
     std::vector<uint8_t> hit;          // per body: took a time-ordered hit in the step (Move)
     std::vector<uint8_t> bullets;      // per body: moves beyond its reach or turns fast (FindContacts)
+    std::vector<double> bodyReach;     // per body: how far FindContacts looked beyond its box
 
     Stepper(World& w, double step) : world(w), dt(step), settings(w.settings) {}
 
@@ -304,6 +305,7 @@ struct Stepper
     void LimitEnergyGain(const std::vector<SolverBody>& unsolved, const SolvePass& solvePass);
     void StoreImpulses();
     void Move();
+    void GuardAfterMove(const std::vector<Vec2>& c, const std::vector<Rot>& turn);
     void CorrectPositions();
     void Sleep();
     void OrderTopDown();
@@ -361,7 +363,7 @@ void Stepper::FindContacts()
     // How far each awake dynamic body can move within the step (its speed after gravity, and the turn of its
     // farthest point), at most speculativeReach outer radii: a body that moves farther is a bullet, and the sweep
     // finds its hits; none for a body turning more than speculativeTurn.
-    std::vector<double> bodyReach(static_cast<size_t>(n), 0.0);
+    bodyReach.assign(static_cast<size_t>(n), 0.0);
     bullets.assign(static_cast<size_t>(n), 0);
     if (settings.speculativeContacts)
     {
@@ -927,6 +929,89 @@ void Stepper::Move()
     }
 }
 
+// Guards for where the bodies went. FindContacts gave guards to the static bodies within reach of the position
+// passes of where each body could go at its speed at the start of the step; the velocity passes and the hits can
+// send a body farther (a light body struck by a heavy one), and the passes, pushing it out of the body that struck
+// it, would then push it on into a wall no guard watches. A body that moved beyond the reach it was given gets
+// guards with the static bodies within maxCorrection of its path.
+// c and turn: each body's centre of mass after the move, and its turn since the start of the step.
+void Stepper::GuardAfterMove(const std::vector<Vec2>& c, const std::vector<Rot>& turn)
+{
+    std::vector<RigidBody>& bodies = world.bodies;
+    const int n = static_cast<int>(bodies.size());
+    std::vector<int> statics;
+    for (int i = 0; i < n; ++i)
+    {
+        const RigidBody& body = bodies[i];
+        if (!IsAwakeDynamic(body))
+        {
+            continue;
+        }
+        const double reach = bodyReach[static_cast<size_t>(i)];
+        const double d2 = LengthSquared(c[i] - centers[i]);
+        if (d2 <= reach * reach && body.turnRadius == 0.0)
+        {
+            continue;
+        }
+        const double moved = std::sqrt(d2) + body.turnRadius * std::sqrt(LengthSquared(Vec2{turn[i].c - 1.0, turn[i].s}));
+        if (moved <= reach)
+        {
+            continue;
+        }
+        if (statics.empty())
+        {
+            for (int k = 0; k < n; ++k)
+            {
+                if (bodies[k].type == BodyType::Static)
+                {
+                    statics.push_back(k);
+                }
+            }
+            if (statics.empty())
+            {
+                return;
+            }
+        }
+        // The box of every place the body was in the step, grown by what a pass can move it.
+        const double margin = moved + settings.maxCorrection;
+        Aabb path = ComputeAabb(body.shape, xfs[i]);
+        path.min = path.min - Vec2{margin, margin};
+        path.max = path.max + Vec2{margin, margin};
+        for (const int s : statics)
+        {
+            if (!AabbOverlap(path, ComputeAabb(bodies[s].shape, xfs[s])))
+            {
+                continue;
+            }
+            const int a = std::min(i, s), b = std::max(i, s);
+            const WorldContact* existing = FindContact(world.contacts, a, b);
+            if (existing != nullptr)
+            {
+                continue;
+            }
+            const Manifold m = CollideWithin(bodies[a].shape, xfs[a], bodies[b].shape, xfs[b], margin);
+            if (m.contactCount == 0)
+            {
+                continue;
+            }
+            SolverContact g;
+            g.a = a;
+            g.b = b;
+            g.material = CombineMaterials(bodies[a].material, bodies[b].material);
+            g.normal = m.normal;
+            g.normalBody = m.axis.shape == 1 ? 1 : 0;
+            g.count = m.contactCount;
+            for (int k = 0; k < g.count; ++k)
+            {
+                g.points[k].rA = m.contacts[k].point - centers[a];
+                g.points[k].rB = m.contacts[k].point - centers[b];
+                g.points[k].separation = m.contacts[k].separation;
+            }
+            guards.push_back(g);
+        }
+    }
+}
+
 // Stage 5: overlap removed by moving the positions, not the velocities (nonlinear Gauss-Seidel: Catto, Box2D).
 // Each pass measures every point's overlap at the bodies' present positions, from the point's anchors on both bodies
 // and the normal turned with the body whose face (or vertex) it is, as Box2D measures it from the reference face,
@@ -951,6 +1036,10 @@ void Stepper::CorrectPositions()
         c[i] = bodies[i].position + Rotate(q, bodies[i].localCenter);
         turns[i] = bodies[i].turnRadius > 0.0 ? 1 : 0;
         turn[i] = turns[i] ? InvMulRot(xfs[i].q, q) : Rot{};
+    }
+    if (settings.positionIterations > 0)
+    {
+        GuardAfterMove(c, turn);
     }
     // Moves bodies a and b apart along n0 at a point with lever arms rA, rB and separation sep, by `factor` of the
     // overlap beyond the slop.
@@ -1007,10 +1096,15 @@ void Stepper::CorrectPositions()
         }
         for (int k = 0; k < sc.count; ++k)
         {
+            // Each body's anchor is the point of its own surface: the contact point lies halfway between them, a
+            // half separation along the normal from each. Turned with its body, an anchor off the surface would
+            // swing by the turn times that offset: a body turning towards the floor across a wide speculative gap
+            // would seem to reach it, and be lifted.
             const detail::SolverPoint& p = sc.points[k];
-            const Vec2 rA = Rotate(turn[a], p.rA);
-            const Vec2 rB = Rotate(turn[b], p.rB);
-            const double sep = p.separation + Dot((c[b] + rB) - (c[a] + rA), n0);
+            const Vec2 half = (0.5 * p.separation) * sc.normal;
+            const Vec2 rA = Rotate(turn[a], p.rA - half);
+            const Vec2 rB = Rotate(turn[b], p.rB + half);
+            const double sep = Dot((c[b] + rB) - (c[a] + rA), n0);
             // A bounce that carries the point out of this much overlap within the step is left to do so: the
             // separating speed the velocity passes left at the point, not the one the restitution asked for,
             // which other contacts may have taken back.
@@ -1028,7 +1122,11 @@ void Stepper::CorrectPositions()
     // plus the turn radius times the chord of its turn).
     const auto guard = [&](const SolverContact& g, double factor, bool straight) {
         const int a = g.a, b = g.b;
-        if (hit[static_cast<size_t>(a)] || hit[static_cast<size_t>(b)])
+        // The passes leave out a body that took a hit (see correct), but not the last lift out of a static body,
+        // measured afresh: a light body pressed into a wall by a heavy one takes a hit in every step, and the sweep
+        // lets it creep in by less than the slop each time.
+        const bool tookHit = hit[static_cast<size_t>(a)] || hit[static_cast<size_t>(b)];
+        if (tookHit && !straight)
         {
             return;
         }
@@ -1066,7 +1164,9 @@ void Stepper::CorrectPositions()
             // The axis turns with the body whose face it is: fixed if the static body's, as found now if the moving
             // body's (a plank's face turning on a peg).
             const int owner = g.normalBody == 1 ? b : a;
-            const Vec2 axis = owner == fixedBody ? g.normal : m.normal;
+            // A body that took a hit may be far from where the guard was found: its overlap is the one Collide
+            // finds now, shallow (the sweep left it touching), along Collide's normal.
+            const Vec2 axis = owner == fixedBody && !tookHit ? g.normal : m.normal;
             const Vec2 n = fixedBody == a ? axis : -1.0 * axis; // from the static body to the moving one
             const Transform xs = pose(fixedBody), xm = pose(moving);
             const Shape& shapeS = bodies[fixedBody].shape;
@@ -1110,6 +1210,25 @@ void Stepper::CorrectPositions()
                 // its other end down).
                 const double C = std::max(-settings.maxCorrection, std::min(0.0, bottom - top + settings.linearSlop));
                 c[moving] = c[moving] - C * n;
+                RigidBody& body = bodies[moving];
+                if (C < 0.0 && IsAwakeDynamic(body))
+                {
+                    // The body sank into the static one beyond the slop: the step's contacts and sweep missed it (a
+                    // corner brought down by a turn that a contact follows only to first order). Its approach at
+                    // the deepest point is taken as a hit would take it, with the pair's restitution, so that the
+                    // lift does not leave it moving on into the wall, to be lifted again: lifted while still
+                    // falling, it would gain the height for nothing.
+                    const Vec2 r = deepest - c[moving];
+                    const double vn = Dot(body.velocity + body.angularVelocity * LeftPerp(r), n);
+                    if (vn < 0.0)
+                    {
+                        const double rn = Cross(r, n);
+                        const double K = body.invMass + body.invInertia * rn * rn;
+                        const double j = -(1.0 + g.material.restitution) * vn / K;
+                        body.velocity = body.velocity + (j * body.invMass) * n;
+                        body.angularVelocity += body.invInertia * j * rn;
+                    }
+                }
                 return;
             }
             push(a, b, normal, deepest - c[a], deepest - c[b], bottom - top, factor);
@@ -1121,6 +1240,7 @@ void Stepper::CorrectPositions()
             push(a, b, m.normal, point - c[a], point - c[b], m.contacts[k].separation, factor);
         }
     };
+    const std::vector<Vec2> afterMove = c; // where the move left the centres, before the passes
     for (int pass = 0; pass < settings.positionIterations; ++pass)
     {
         for (const int k : solveOrder)
@@ -1130,6 +1250,43 @@ void Stepper::CorrectPositions()
         for (const SolverContact& g : guards)
         {
             guard(g, settings.correctionFactor, false);
+        }
+    }
+    // The passes move bodies too: pressed by a heavy body, a light one can be pushed right through a thin static
+    // body within them, and the lift below finds no overlap with a body already past it. A body the passes moved
+    // is swept, without turning, from where the move left it to where the passes put it, against each static body
+    // it has a contact or a guard with, and stops where it would touch it.
+    const auto stopAtStatic = [&](const SolverContact& sc) {
+        const bool staticA = bodies[sc.a].type == BodyType::Static;
+        if (staticA == (bodies[sc.b].type == BodyType::Static))
+        {
+            return;
+        }
+        const int s = staticA ? sc.a : sc.b, i = staticA ? sc.b : sc.a;
+        const Vec2 d = c[i] - afterMove[i];
+        if (!IsAwakeDynamic(bodies[i]) || LengthSquared(d) <= settings.linearSlop * settings.linearSlop)
+        {
+            return;
+        }
+        Transform from;
+        const Rot q0 = xfs[i].q, t = turn[i];
+        from.q = {q0.c * t.c - q0.s * t.s, q0.s * t.c + q0.c * t.s};
+        from.p = afterMove[i] - Rotate(from.q, bodies[i].localCenter);
+        const SweepResult r = Sweep(bodies[s].shape, xfs[s], Vec2{}, bodies[i].shape, from, d);
+        if (r.status == SweepStatus::Hit)
+        {
+            c[i] = afterMove[i] + r.toi * d;
+        }
+    };
+    if (settings.positionIterations > 0)
+    {
+        for (const int k : solveOrder)
+        {
+            stopAtStatic(solverContacts[static_cast<size_t>(k)]);
+        }
+        for (const SolverContact& g : guards)
+        {
+            stopAtStatic(g);
         }
     }
     // Last, the contacts with bodies that do not move (static or asleep) take out their whole overlap beyond the
