@@ -437,6 +437,37 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
         energyBefore[s] = Energy(solver[s]);
     }
     auto slot = [&](int k) { return static_cast<int>(std::find(bodies.begin(), bodies.end(), k) - bodies.begin()); };
+    // The record of the hits (World::stepTrace): the pair, lower index first, posed at the time of its hit, with the
+    // velocities it hit with; those it leaves with are added after the solve.
+    StepTrace* stepTrace = world.stepTrace;
+    const size_t firstRecord = stepTrace != nullptr ? stepTrace->hits.size() : 0;
+    if (stepTrace != nullptr)
+    {
+        for (const Event& event : group)
+        {
+            StepHit hit;
+            const bool swap = event.j < event.i;
+            const int order[2] = {swap ? event.j : event.i, swap ? event.i : event.j};
+            hit.time = event.t;
+            hit.a = order[0];
+            hit.b = order[1];
+            hit.normal = swap ? -1.0 * event.normal : event.normal;
+            hit.pointCount = event.count;
+            for (int k = 0; k < event.count; ++k)
+            {
+                hit.points[k] = event.points[k];
+            }
+            for (int side = 0; side < 2; ++side)
+            {
+                const Transform xf = PoseAt(order[side], event.t);
+                hit.position[side] = xf.p;
+                hit.angle[side] = std::atan2(xf.q.s, xf.q.c);
+                hit.velocityBefore[side] = solver[static_cast<size_t>(slot(order[side]))].v;
+                hit.spinBefore[side] = solver[static_cast<size_t>(slot(order[side]))].w;
+            }
+            stepTrace->hits.push_back(hit);
+        }
+    }
     std::vector<SolverContact> contacts;
     std::vector<uint8_t> stopped(bodies.size(), 0);
     ContactSolveTrace* trace = world.trace;
@@ -517,6 +548,18 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
         {
             const double vn = Dot(RelativeVelocity(sa, sb, c.points[k].rA, c.points[k].rB), c.normal);
             approaching[e] = approaching[e] || vn < -1e-9 * scale;
+        }
+    }
+    if (stepTrace != nullptr)
+    {
+        for (size_t e = 0; e < group.size(); ++e)
+        {
+            StepHit& hit = stepTrace->hits[firstRecord + e];
+            for (int side = 0; side < 2; ++side)
+            {
+                hit.velocityAfter[side] = solver[static_cast<size_t>(slot(side == 0 ? hit.a : hit.b))].v;
+                hit.spinAfter[side] = solver[static_cast<size_t>(slot(side == 0 ? hit.a : hit.b))].w;
+            }
         }
     }
     for (const SolverContact& c : contacts)

@@ -395,9 +395,15 @@ void Stepper::FindContacts()
     const double correctionReach = settings.positionIterations > 0 ? settings.maxCorrection : 0.0;
     PairFilter filter{&bodies, settings.skipStaticPairs};
     std::vector<std::pair<int, int>> candidates;
-    if (settings.broadphase)
+    StepTrace* stepTrace = world.stepTrace;
+    std::vector<Aabb> boxes;
+    if (settings.broadphase || stepTrace != nullptr)
     {
-        std::vector<Aabb> boxes(n);
+        boxes.resize(n);
+        if (stepTrace != nullptr)
+        {
+            stepTrace->grow.resize(n);
+        }
         for (int i = 0; i < n; ++i)
         {
             boxes[i] = ComputeAabb(bodies[i].shape, xfs[i]);
@@ -407,7 +413,14 @@ void Stepper::FindContacts()
                 bodies[i].type == BodyType::Static ? correctionReach : bodyReach[static_cast<size_t>(i)];
             boxes[i].min = boxes[i].min - Vec2{grow, grow};
             boxes[i].max = boxes[i].max + Vec2{grow, grow};
+            if (stepTrace != nullptr)
+            {
+                stepTrace->grow[i] = grow;
+            }
         }
+    }
+    if (settings.broadphase)
+    {
         FindPairs(world.broadphase, boxes, candidates, SkipPair, &filter);
         counts.broadphaseComparisons = world.broadphase.comparisons;
     }
@@ -425,6 +438,11 @@ void Stepper::FindContacts()
         }
     }
     counts.tested = static_cast<int64_t>(candidates.size());
+    if (stepTrace != nullptr)
+    {
+        stepTrace->bounds = std::move(boxes);
+        stepTrace->candidates = candidates;
+    }
     counts.boundsApart = counts.pairs - counts.staticPairs - counts.sleepingPairs - counts.tested;
 
     std::vector<int> wake;
@@ -642,6 +660,10 @@ void Stepper::SolveVelocities()
             trace->pointCount = c.count;
             trace->restitution = c.material.restitution;
             trace->blockSolved = c.block;
+            trace->velocityBefore[0] = solverBodies[c.a].v;
+            trace->velocityBefore[1] = solverBodies[c.b].v;
+            trace->spinBefore[0] = solverBodies[c.a].w;
+            trace->spinBefore[1] = solverBodies[c.b].w;
             for (int i = 0; i < c.count; ++i)
             {
                 trace->approachSpeed[i] = approach[i];
@@ -703,6 +725,10 @@ void Stepper::SolveVelocities()
         {
             trace->restitutionImpulse[0] = c.points[0].restitutionImpulse;
             trace->restitutionImpulse[1] = c.points[1].restitutionImpulse;
+            trace->velocityAfter[0] = solverBodies[c.a].v;
+            trace->velocityAfter[1] = solverBodies[c.b].v;
+            trace->spinAfter[0] = solverBodies[c.a].w;
+            trace->spinAfter[1] = solverBodies[c.b].w;
         }
     }
 }
@@ -1432,6 +1458,10 @@ void Step(World& world, double dt)
     if (world.trace != nullptr)
     {
         world.trace->Clear();
+    }
+    if (world.stepTrace != nullptr)
+    {
+        world.stepTrace->Clear();
     }
     Stepper stepper(world, dt);
     stepper.FindContacts();

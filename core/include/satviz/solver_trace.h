@@ -54,6 +54,14 @@ struct ContactSolveTrace
     bool energyLimited = false;
     double impulseScale = 1.0; ///< the factor of energyLimited; 1 when the impulses were kept as solved
     std::vector<ContactPointSolve> passes; ///< every pass over every point, in order
+    /// Velocities of the lower-index body (0) and the other (1) at the start of the step, before gravity and the
+    /// solve; 0 for a static body.
+    Vec2 velocityBefore[2]{};
+    double spinBefore[2]{}; ///< angular velocities, as velocityBefore
+    /// Velocities after the step's gravity, the velocity passes over every contact and the restitution: what the
+    /// bodies move with (unless a time-ordered hit changes them later in the step).
+    Vec2 velocityAfter[2]{};
+    double spinAfter[2]{}; ///< angular velocities, as velocityAfter
     int hits = 0;                          ///< time-ordered hits between the pair within the step
     double hitTime = -1.0;                 ///< time of the first such hit within the step, in [0, 1] of the step, or -1
     /// Empties the record, keeping the pair.

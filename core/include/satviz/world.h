@@ -8,6 +8,7 @@
 #include <satviz/material.h>
 #include <satviz/shape.h>
 #include <satviz/solver_trace.h>
+#include <satviz/step_trace.h>
 
 #include <cstdint>
 #include <string>
@@ -178,6 +179,9 @@ struct World
     /// When not null, the solver records what it does for the pair (trace->bodyA, trace->bodyB) during each step
     /// (cleared at the start of the step). Null: nothing is recorded and nothing is paid.
     ContactSolveTrace* trace = nullptr;
+    /// When not null, each step records there its grown boxes, the broadphase's pairs and its time-ordered hits
+    /// (cleared at the start of the step). Null: nothing is recorded and nothing is paid.
+    StepTrace* stepTrace = nullptr;
 
     /// The broadphase's box order, kept between steps so that sorting costs close to linear time. Working memory,
     /// not state: two worlds with the same bodies and contacts step alike whatever it holds.
