@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+#include "world_views.h"
+
 #include <satviz/render/figure.h>
 
 namespace satviz
@@ -24,6 +26,25 @@ int BodyIndex(const Scene& scene, const std::string& name, int fallback)
 }
 
 } // namespace
+
+bool FigurePair(const Scene& scene, int& a, int& b)
+{
+    a = -1;
+    b = -1;
+    if (scene.bodies.size() < 2)
+    {
+        return false;
+    }
+    const int first = BodyIndex(scene, scene.view.bodyA, 0);
+    const int second = BodyIndex(scene, scene.view.bodyB, 1);
+    if (first < 0 || second < 0 || first == second)
+    {
+        return false;
+    }
+    a = first;
+    b = second;
+    return true;
+}
 
 FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
 {
@@ -57,7 +78,10 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
     }
     else
     {
+        // The world's panels take the bottom of the image: the view's centre moves up by half their height, to the
+        // middle of what is left.
         figure.view.center = view.center;
+        figure.view.center.y -= 0.5 * WorldPanelsHeight(figure.layers) / view.zoom;
         figure.view.zoom = view.zoom;
         figure.view.width = width;
         figure.view.height = height;
@@ -73,6 +97,7 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
     figure.step = step < 0 ? setup.study.VerdictStep() : step;
     figure.time = view.time;
     figure.caption = view.caption;
+    figure.sim = options.sim;
     return setup;
 }
 

@@ -3,6 +3,7 @@
 #include "label_placer.h"
 #include "legend.h"
 #include "voronoi_view.h"
+#include "world_views.h"
 
 #include <satviz/render/describe.h>
 #include <satviz/render/painter.h>
@@ -443,6 +444,7 @@ class Painter
         {
             Normals();
         }
+        PaintWorldScene(canvas_, labels_, view_, scene_, figure_, bounds_);
         if (Has(figure_, kLayerSwept) && study_.sweep)
         {
             Motion();
@@ -503,10 +505,11 @@ class Painter
             Minkowski();
         }
         PaintLegend(canvas_, legendAt, legend);
-        if (layout_.panelTop < static_cast<float>(view_.height))
+        if (layout_.panelTop < layout_.worldTop)
         {
             Panel();
         }
+        PaintWorldPanels(canvas_, scene_, figure_, layout_.worldTop);
         if (Has(figure_, kLayerCaption))
         {
             Caption();
@@ -1346,7 +1349,7 @@ class Painter
     {
         canvas_.BeginGroup("panel");
         const float top = layout_.panelTop;
-        canvas_.FillRect({0.0f, top}, {Width(), Height()}, palette::kPanel);
+        canvas_.FillRect({0.0f, top}, {Width(), layout_.worldTop}, palette::kPanel);
         canvas_.Segment({0.0f, top}, {Width(), top}, palette::kFaint, 1.0f);
         if (!hasAxis_)
         {
@@ -1684,7 +1687,10 @@ FigureLayout LayoutFigure(const PairStudy& study, LayerMask layers, int width, i
                        ((layers & kLayerProjection) || (study.sweep && (layers & kLayerSwept)));
     const float panelHeight = panel ? (study.sweep ? kSweepPanel : kStaticPanel) : 0.0f;
     // Small images keep at least half their height for the scene.
-    layout.panelTop = panel ? std::max(h - panelHeight, layout.sceneTop + 0.5f * (h - layout.sceneTop)) : h;
+    layout.worldTop = h - WorldPanelsHeight(layers);
+    layout.panelTop =
+        panel ? std::max(layout.worldTop - panelHeight, layout.sceneTop + 0.5f * (layout.worldTop - layout.sceneTop))
+              : layout.worldTop;
     layout.sceneBottom = layout.panelTop;
     return layout;
 }

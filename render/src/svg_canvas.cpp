@@ -59,8 +59,8 @@ void SvgCanvas::Number(float value)
     }
     const double rounded = std::round(static_cast<double>(value) * 100.0) / 100.0;
     char text[48];
-    auto [end, code] = std::to_chars(text, text + sizeof(text), rounded == 0.0 ? 0.0 : rounded,
-                                     std::chars_format::fixed, 2);
+    auto [end, code] =
+        std::to_chars(text, text + sizeof(text), rounded == 0.0 ? 0.0 : rounded, std::chars_format::fixed, 2);
     (void)code;
     while (end > text && end[-1] == '0')
     {
@@ -259,8 +259,8 @@ void SvgCanvas::BeginGroup(std::string_view name)
     for (const char c : name)
     {
         // Group names are the painter's identifiers; anything else becomes '-' so the attribute stays valid.
-        const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
-                           c == '_';
+        const bool plain =
+            (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
         body_ += plain ? c : '-';
     }
     body_ += "\">\n";

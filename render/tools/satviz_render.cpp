@@ -2,6 +2,7 @@
 // satviz-render: scene files to PNG figures, headless. OSMesa (software OpenGL, no display) renders the painter's
 // ImGui draw lists through the ImGui OpenGL2 backend; stb_image_write encodes the PNG. This program links OSMesa
 // and never libGL: the app, which draws in a window, is a separate executable.
+#include <satviz/render/atomic_file.h>
 #include <satviz/render/describe.h>
 #include <satviz/render/figure.h>
 #include <satviz/render/figure_drawing.h>
@@ -9,9 +10,9 @@
 #include <satviz/render/layers.h>
 #include <satviz/render/png_file.h>
 #include <satviz/render/svg_canvas.h>
-#include <satviz/render/atomic_file.h>
 #include <satviz/scene.h>
 #include <satviz/scene_world.h>
+#include <satviz/sim_record.h>
 
 #include <CLI/CLI.hpp>
 #include <GL/osmesa.h>
@@ -129,16 +130,15 @@ class HeadlessRenderer
     std::string RenderSvg(const satviz::Scene& scene, const satviz::FigureSetup& setup) const
     {
         const satviz::FigureFonts fonts = fonts_;
-        satviz::SvgCanvas canvas(setup.figure.view.width, setup.figure.view.height,
-                                 [fonts](std::string_view text, satviz::TextStyle style) {
-                                     ImFont* font = style == satviz::TextStyle::Label
-                                                        ? fonts.label
-                                                        : (style == satviz::TextStyle::Heading ? fonts.heading
-                                                                                               : fonts.body);
-                                     const ImVec2 size = font->CalcTextSizeA(font->FontSize, FLT_MAX, 0.0f,
-                                                                             text.data(), text.data() + text.size());
-                                     return satviz::ScreenPoint{size.x, size.y};
-                                 });
+        satviz::SvgCanvas canvas(
+            setup.figure.view.width, setup.figure.view.height, [fonts](std::string_view text, satviz::TextStyle style) {
+                ImFont* font = style == satviz::TextStyle::Label
+                                   ? fonts.label
+                                   : (style == satviz::TextStyle::Heading ? fonts.heading : fonts.body);
+                const ImVec2 size =
+                    font->CalcTextSizeA(font->FontSize, FLT_MAX, 0.0f, text.data(), text.data() + text.size());
+                return satviz::ScreenPoint{size.x, size.y};
+            });
         satviz::PaintFigure(canvas, scene, setup.study, setup.figure);
         return canvas.Document();
     }
@@ -173,6 +173,13 @@ struct Job
     int step = -1; // -1: the scene's own choice
     std::string output;
 };
+
+/// A step of a strip, zero-padded to the digits of the last, so that the files sort in step order.
+std::string StepNumber(int step, int last)
+{
+    const std::string digits = std::to_string(step);
+    return std::string(std::to_string(last).size() - digits.size(), '0') + digits;
+}
 
 /// Figures in a directory: "name.png" or "name.svg".
 std::string FigureName(const std::string& name, bool svg)
@@ -243,8 +250,7 @@ bool IsFigureFile(const std::string& output)
 
 /// Figures in a directory are named after their scene file: two scenes of one file name (a/x.json and b/x.json,
 /// or one file given twice) would write the same figures. Returns a one-line reason naming both, or "".
-std::string SameFigureNames(const std::vector<std::string>& scenes, const std::string& output, bool allSteps,
-                            bool svg)
+std::string SameFigureNames(const std::vector<std::string>& scenes, const std::string& output, bool allSteps, bool svg)
 {
     std::map<std::string, std::string> byStem;
     for (const std::string& file : scenes)
@@ -301,6 +307,12 @@ int main(int argc, char** argv)
                                      "then draw the bodies where the world leaves them; default: the scene's "
                                      "view.sim_steps, else 0")
                           ->type_name("N");
+    int simEvery = 0;
+    auto* everyOption =
+        app.add_option("--sim-every", simEvery,
+                       "With --sim-steps N (or the scene's view.sim_steps): a strip of figures, one every K steps from "
+                       "step 0 to N (and N), each named SCENE-simS.png with S the step, zero-padded to N's digits")
+            ->type_name("K");
     CLI11_PARSE(app, argc, argv);
 
     satviz::FigureOptions options;
@@ -313,6 +325,12 @@ int main(int argc, char** argv)
     {
         std::fprintf(stderr, "satviz-render: --sim-steps: expected a whole number of steps from 0 to %d, got %d\n",
                      satviz::kMaxViewSimSteps, simSteps);
+        return 2;
+    }
+    if (everyOption->count() > 0 && (simEvery < 1 || simEvery > satviz::kMaxViewSimSteps))
+    {
+        std::fprintf(stderr, "satviz-render: --sim-every: expected a whole number of steps from 1 to %d, got %d\n",
+                     satviz::kMaxViewSimSteps, simEvery);
         return 2;
     }
     if (!viewName.empty())
@@ -349,21 +367,22 @@ int main(int argc, char** argv)
     }
     if (singleFile && !format.empty() && "." + format != LowerExtension(output))
     {
-        std::fprintf(stderr, "satviz-render: --format %s: the output %s says otherwise; give a directory, or a file "
-                     "name ending in .%s\n", format.c_str(), output.c_str(), format.c_str());
+        std::fprintf(stderr,
+                     "satviz-render: --format %s: the output %s says otherwise; give a directory, or a file "
+                     "name ending in .%s\n",
+                     format.c_str(), output.c_str(), format.c_str());
         return 2;
     }
     const bool svg = singleFile ? LowerExtension(output) == ".svg" : format == "svg";
-    if (singleFile && (scenes.size() != 1 || allSteps))
+    if (singleFile && (scenes.size() != 1 || allSteps || simEvery > 0))
     {
         std::fprintf(stderr,
                      "satviz-render: -o %s: a %s output takes exactly one figure; give a directory for "
-                     "several scenes or --all-steps\n",
+                     "several scenes, --all-steps or --sim-every\n",
                      output.c_str(), svg ? ".svg" : ".png");
         return 2;
     }
-    if (const std::string clash = singleFile ? "" : SameFigureNames(scenes, output, allSteps, svg);
-        !clash.empty())
+    if (const std::string clash = singleFile ? "" : SameFigureNames(scenes, output, allSteps, svg); !clash.empty())
     {
         std::fprintf(stderr, "satviz-render: %s\n", clash.c_str());
         return 2;
@@ -408,101 +427,148 @@ int main(int argc, char** argv)
             ++failedScenes;
             continue;
         }
-        // The world first, when asked: the figure then shows the bodies where the steps leave them.
+        // The world first, when asked: the figure then shows the bodies where the steps leave them. With
+        // --sim-every, one figure every K steps from 0 to N, each named by its step.
         const int sceneSteps = simOption->count() > 0 ? simSteps : loaded.scene.view.simSteps;
-        if (const std::string simError = satviz::SimulateScene(loaded.scene, sceneSteps); !simError.empty())
+        const bool worldLayers =
+            (options.setLayers ? options.layers : satviz::LayersFromNames(loaded.scene.view.layers)) &
+            (satviz::kLayerBroadphase | satviz::kLayerResponse | satviz::kLayerHits | satviz::kLayerPlots);
+        if (const std::string invalid = satviz::ValidateSceneWorld(loaded.scene);
+            !invalid.empty() && (sceneSteps > 0 || worldLayers))
         {
-            std::fprintf(stderr, "satviz-render: %s: %s\n", file.c_str(), simError.c_str());
+            std::fprintf(stderr, "satviz-render: %s: %s\n", file.c_str(), invalid.c_str());
             ++failedScenes;
             continue;
         }
-        satviz::FigureOptions first = options;
-        if (step >= 1)
+        std::vector<int> frames;
+        for (int k = 0; simEvery > 0 && k < sceneSteps; k += simEvery)
         {
-            first.setStep = true;
-            first.step = step - 1;
+            frames.push_back(k);
         }
-        // A trace records every face's intervals, so its cost grows with the square of the vertex count: say so
-        // before a long one, and how long it took after.
-        size_t largest = 0;
-        size_t second = 0;
-        for (const satviz::Body& body : loaded.scene.bodies)
+        frames.push_back(sceneSteps);
+        int pairA = -1, pairB = -1;
+        satviz::FigurePair(loaded.scene, pairA, pairB);
+        const bool recorded = worldLayers || simEvery > 0;
+        satviz::SimRecord record;
+        if (recorded)
         {
-            const size_t n = body.shape.type == satviz::ShapeType::Polygon ? body.shape.polygon.Vertices().size() : 1;
-            second = std::max(second, std::min(largest, n));
-            largest = std::max(largest, n);
+            record = satviz::StartRecord(loaded.scene, pairA, pairB);
         }
-        const bool slow = !quiet && largest + second > kSlowTrace;
-        const auto traceStart = Clock::now();
-        if (slow)
-        {
-            std::fprintf(stderr, "satviz-render: %s: tracing polygons of up to %zu vertices (every face's intervals)\n",
-                         file.c_str(), largest);
-        }
-        satviz::FigureSetup setup = satviz::SetUpFigure(loaded.scene, first);
-        if (slow)
-        {
-            std::fprintf(stderr, "satviz-render: %s: traced in %.1f s\n", file.c_str(),
-                         Seconds(Clock::now() - traceStart));
-        }
-        if (!setup.Ok())
-        {
-            std::fprintf(stderr, "satviz-render: %s: %s\n", file.c_str(), setup.error.c_str());
-            ++failedScenes;
-            continue;
-        }
-        std::vector<int> steps;
-        if (allSteps)
-        {
-            for (int k = 0; k < setup.study.StepCount(); ++k)
-            {
-                steps.push_back(k);
-            }
-        }
-        else
-        {
-            steps.push_back(setup.figure.step);
-        }
-        const std::string stem = std::filesystem::path(file).stem().string();
+        const satviz::Scene original = loaded.scene;
         bool sceneFailed = false;
-        for (int k : steps)
+        for (const int frame : frames)
         {
-            setup.figure.step = k;
-            const std::string path =
-                singleFile ? output
-                           : (std::filesystem::path(output) /
-                              FigureName(allSteps ? stem + "-step" + std::to_string(k + 1) : stem, svg))
-                                 .string();
-            const auto t0 = Clock::now();
-            std::string document;
-            if (svg)
+            if (recorded)
             {
-                document = renderer.RenderSvg(loaded.scene, setup);
+                while (record.steps < frame)
+                {
+                    satviz::StepRecord(record);
+                }
+                loaded.scene = original;
+                satviz::CopyWorldState(record.world, loaded.scene);
             }
-            else if (!renderer.Render(loaded.scene, setup, rgb, error))
+            else if (const std::string simError = satviz::SimulateScene(loaded.scene, sceneSteps); !simError.empty())
             {
-                std::fprintf(stderr, "satviz-render: %s: %s\n", file.c_str(), error.c_str());
+                std::fprintf(stderr, "satviz-render: %s: %s\n", file.c_str(), simError.c_str());
                 sceneFailed = true;
                 break;
             }
-            const auto t1 = Clock::now();
-            if (svg ? !satviz::WriteFileAtomically(path, document, error)
-                    : !satviz::WritePngFile(path, rgb, setup.figure.view.width, setup.figure.view.height, true, error))
+            satviz::FigureOptions first = options;
+            first.sim = recorded ? &record : nullptr;
+            if (step >= 1)
             {
-                std::fprintf(stderr, "satviz-render: %s\n", error.c_str());
+                first.setStep = true;
+                first.step = step - 1;
+            }
+            // A trace records every face's intervals, so its cost grows with the square of the vertex count: say so
+            // before a long one, and how long it took after.
+            size_t largest = 0;
+            size_t second = 0;
+            for (const satviz::Body& body : loaded.scene.bodies)
+            {
+                const size_t n =
+                    body.shape.type == satviz::ShapeType::Polygon ? body.shape.polygon.Vertices().size() : 1;
+                second = std::max(second, std::min(largest, n));
+                largest = std::max(largest, n);
+            }
+            const bool slow = !quiet && largest + second > kSlowTrace;
+            const auto traceStart = Clock::now();
+            if (slow)
+            {
+                std::fprintf(stderr,
+                             "satviz-render: %s: tracing polygons of up to %zu vertices (every face's intervals)\n",
+                             file.c_str(), largest);
+            }
+            satviz::FigureSetup setup = satviz::SetUpFigure(loaded.scene, first);
+            if (slow)
+            {
+                std::fprintf(stderr, "satviz-render: %s: traced in %.1f s\n", file.c_str(),
+                             Seconds(Clock::now() - traceStart));
+            }
+            if (!setup.Ok())
+            {
+                std::fprintf(stderr, "satviz-render: %s: %s\n", file.c_str(), setup.error.c_str());
                 sceneFailed = true;
                 break;
             }
-            const auto t2 = Clock::now();
-            if (written > 0)
+            std::vector<int> steps;
+            if (allSteps)
             {
-                paintAndGl += Seconds(t1 - t0);
-                png += Seconds(t2 - t1);
+                for (int k = 0; k < setup.study.StepCount(); ++k)
+                {
+                    steps.push_back(k);
+                }
             }
-            ++written;
-            if (!quiet && (scenes.size() > 1 || steps.size() > 1))
+            else
             {
-                std::fprintf(stderr, "satviz-render: [%zu/%zu] %s\n", s + 1, scenes.size(), path.c_str());
+                steps.push_back(setup.figure.step);
+            }
+            const std::string stem = std::filesystem::path(file).stem().string() +
+                                     (simEvery > 0 ? "-sim" + StepNumber(frame, sceneSteps) : "");
+            for (int k : steps)
+            {
+                setup.figure.step = k;
+                const std::string path =
+                    singleFile ? output
+                               : (std::filesystem::path(output) /
+                                  FigureName(allSteps ? stem + "-step" + std::to_string(k + 1) : stem, svg))
+                                     .string();
+                const auto t0 = Clock::now();
+                std::string document;
+                if (svg)
+                {
+                    document = renderer.RenderSvg(loaded.scene, setup);
+                }
+                else if (!renderer.Render(loaded.scene, setup, rgb, error))
+                {
+                    std::fprintf(stderr, "satviz-render: %s: %s\n", file.c_str(), error.c_str());
+                    sceneFailed = true;
+                    break;
+                }
+                const auto t1 = Clock::now();
+                if (svg ? !satviz::WriteFileAtomically(path, document, error)
+                        : !satviz::WritePngFile(path, rgb, setup.figure.view.width, setup.figure.view.height, true,
+                                                error))
+                {
+                    std::fprintf(stderr, "satviz-render: %s\n", error.c_str());
+                    sceneFailed = true;
+                    break;
+                }
+                const auto t2 = Clock::now();
+                if (written > 0)
+                {
+                    paintAndGl += Seconds(t1 - t0);
+                    png += Seconds(t2 - t1);
+                }
+                ++written;
+                if (!quiet && (scenes.size() > 1 || steps.size() > 1 || frames.size() > 1))
+                {
+                    std::fprintf(stderr, "satviz-render: [%zu/%zu] %s\n", s + 1, scenes.size(), path.c_str());
+                }
+            }
+            if (sceneFailed)
+            {
+                break;
             }
         }
         failedScenes += sceneFailed ? 1 : 0;
@@ -513,7 +579,8 @@ int main(int argc, char** argv)
     if (timed > 0)
     {
         std::fprintf(stderr, "; after the first, per figure: %.1f ms drawing, %.1f ms %s, %.1f ms in all",
-                     1e3 * paintAndGl / timed, 1e3 * png / timed, svg ? "SVG" : "PNG", 1e3 * (paintAndGl + png) / timed);
+                     1e3 * paintAndGl / timed, 1e3 * png / timed, svg ? "SVG" : "PNG",
+                     1e3 * (paintAndGl + png) / timed);
     }
     if (failedScenes > 0)
     {

@@ -550,12 +550,12 @@ TEST_CASE("The layer table is what scene files accept, and its names and bits ar
     }
     CHECK(LayerNames(kAllLayers) == names);
     CHECK(LayersFromNames(names) == kAllLayers);
-    CHECK(kDefaultLayers ==
-          (kAllLayers & ~(kLayerNormals | kLayerAxes | kLayerMinkowski | kLayerVoronoi | kLayerLegend)));
+    CHECK(kDefaultLayers == (kAllLayers & ~(kLayerNormals | kLayerAxes | kLayerMinkowski | kLayerVoronoi | kLayerLegend |
+                                            kLayerBroadphase | kLayerResponse | kLayerHits | kLayerPlots)));
     CHECK(LayerFromName("mvt") == 0);
     CHECK(LayerNameList() ==
           "shapes, labels, normals, axes, projection, exit, best, mtv, contacts, swept, ghost, caption, minkowski, "
-          "voronoi, legend");
+          "voronoi, legend, broadphase, response, hits, plots");
     // Every name loads from a scene file's view block and gives back its own bit; an unknown one is one line naming
     // the file and the field.
     const std::string two = R"({"bodies": [{"box": [1, 1]}, {"box": [1, 1]}], "view": {"layers": [")";

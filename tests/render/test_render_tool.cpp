@@ -301,6 +301,31 @@ TEST_CASE("satviz-render: -o FIG.svg writes the figure as well-formed SVG, the c
     CHECK(!fs::exists(dir / "x.svg"));
 }
 
+TEST_CASE("satviz-render --sim-every writes a strip of figures named by step, each the state --sim-steps draws",
+          "[render-tool]")
+{
+    const fs::path dir = FreshDirectory("render-strip");
+    const Run run = Render(Scene("l14_head_on.json") + " -q --sim-steps 25 --sim-every 10 --layers shapes,plots -o " +
+                           dir.string());
+    INFO(Joined(run.errLines));
+    REQUIRE(run.exitCode == 0);
+    for (const char* name : {"l14_head_on-sim00.png", "l14_head_on-sim10.png", "l14_head_on-sim20.png",
+                             "l14_head_on-sim25.png"})
+    {
+        CHECK(fs::is_regular_file(dir / name));
+    }
+    CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 4);
+    // A figure of the strip is the figure of its step alone.
+    REQUIRE(Render(Scene("l14_head_on.json") + " -q --sim-steps 20 --layers shapes,plots -o " +
+                   (dir / "alone.png").string())
+                .exitCode == 0);
+    CHECK(Bytes(dir / "alone.png") == Bytes(dir / "l14_head_on-sim20.png"));
+    const Run bad = Render(Scene("l14_head_on.json") + " --sim-steps 5 --sim-every 0 -o " + dir.string());
+    CHECK(bad.exitCode == 2);
+    REQUIRE(bad.errLines.size() == 1);
+    CHECK(bad.errLines[0].find("--sim-every") != std::string::npos);
+}
+
 TEST_CASE("satviz-render --version prints its name and the project version", "[render-tool]")
 {
     const Run run = Render("--version");

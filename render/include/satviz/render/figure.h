@@ -22,6 +22,8 @@ struct FigureOptions
     StepView steps = StepView::Textbook; ///< which algorithm the steps show
     bool setLayers = false;              ///< use `layers` instead of the scene's
     LayerMask layers = 0;                ///< layers to draw
+    /// The stepped world for the world's layers (not owned; see Figure::sim); null: the scene was not stepped.
+    const SimRecord* sim = nullptr;
 };
 
 /// A figure ready to paint, or why it cannot be made.
@@ -33,6 +35,10 @@ struct FigureSetup
     /// True when the figure can be painted.
     bool Ok() const { return error.empty(); }
 };
+
+/// The pair a figure of the scene pictures: view.pair's bodies, else the first two. False, with both -1, when the
+/// scene has fewer than two bodies or view.pair names no pair of distinct bodies.
+bool FigurePair(const Scene& scene, int& a, int& b);
 
 /// Sets up the figure of a scene: picks the pair (view.pair, or the first two bodies), runs the queries, frames
 /// the camera, resolves the step (-1: the verdict). Errors name the scene field at fault.

@@ -40,6 +40,13 @@ enum Layer : LayerMask
     kLayerVoronoi = 1u << 13,
     /// A key to the figure's colours and marks, in a corner of the scene; drawn alone, the key to every mark.
     kLayerLegend = 1u << 14,
+    /// What the world's broadphase skipped: each body's box grown by its reach, the pairs passed on as thin lines,
+    /// the step's counts, sleeping bodies hatched.
+    kLayerBroadphase = 1u << 15,
+    /// The solver's response to the chosen contact: impulse arrows at its points and a panel of its steps.
+    kLayerResponse = 1u << 16,
+    kLayerHits = 1u << 17,  ///< the step's time-ordered hits on a time bar, and the bodies at each hit
+    kLayerPlots = 1u << 18, ///< kinetic and potential energy, momentum and the deepest overlap over the steps
 };
 
 /// One drawing layer: a row of kLayerTable.
@@ -53,7 +60,7 @@ struct LayerInfo
 
 /// Every drawing layer, in drawing order: the one list of layer names, bits and descriptions (render/README.md and
 /// the top-level README's "view block" table describe them for users).
-inline constexpr std::array<LayerInfo, 15> kLayerTable = {{
+inline constexpr std::array<LayerInfo, 19> kLayerTable = {{
     {"shapes", kLayerShapes, true, "the bodies, filled and outlined"},
     {"labels", kLayerLabels, true, "body names, vertex and edge numbers"},
     {"normals", kLayerNormals, false, "every outward edge normal"},
@@ -70,6 +77,11 @@ inline constexpr std::array<LayerInfo, 15> kLayerTable = {{
      "the Minkowski difference A - B in an inset: the origin inside it exactly when they overlap"},
     {"voronoi", kLayerVoronoi, false, "the polygon's face and vertex regions, and the one holding the other's centre"},
     {"legend", kLayerLegend, false, "a key to the colours and marks the figure uses"},
+    {"broadphase", kLayerBroadphase, false,
+     "the world's boxes grown by their reach, the pairs tested, the step's counts; sleeping bodies hatched"},
+    {"response", kLayerResponse, false, "the solver's impulses on the pair's contact, step by step"},
+    {"hits", kLayerHits, false, "the step's time-ordered hits on a time bar, and the bodies at each"},
+    {"plots", kLayerPlots, false, "energy, momentum and the deepest overlap over the steps"},
 }};
 
 /// True when every row of the table has its own single bit, in drawing order (row i has bit i).
@@ -102,8 +114,8 @@ constexpr LayerMask LayerTableMask(bool defaultsOnly)
 
 /// Every layer.
 constexpr LayerMask kAllLayers = LayerTableMask(false);
-/// The layers drawn when a scene does not choose: all but the normals, the candidate axes, the Minkowski inset and
-/// the Voronoi regions.
+/// The layers drawn when a scene does not choose: all but the normals, the candidate axes, the Minkowski inset, the
+/// Voronoi regions and the world's layers (broadphase, response, hits, plots).
 constexpr LayerMask kDefaultLayers = LayerTableMask(true);
 
 /// The row of the layer named `name` ("shapes", "labels", ...), or null for an unknown name.

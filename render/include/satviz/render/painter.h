@@ -6,6 +6,7 @@
 #include <satviz/render/canvas.h>
 #include <satviz/render/layers.h>
 #include <satviz/render/study.h>
+#include <satviz/sim_record.h>
 
 #include <string>
 
@@ -20,6 +21,9 @@ struct Figure
     int step = 0;                      ///< trace step: 0 .. StepCount() - 1 (the last is the verdict)
     double time = -1.0;                ///< sweeps: also draw the bodies at this time in [0, 1]; -1: not drawn
     std::string caption;               ///< the figure's title, drawn above the step's explanation; empty: none
+    /// The stepped world the broadphase, response, hits and plots layers draw (not owned); null: the scene was
+    /// not stepped, and those layers say so.
+    const SimRecord* sim = nullptr;
 };
 
 /// Screen regions of a figure: the caption band on top, the number-line panel at the bottom, the scene between.
@@ -27,7 +31,8 @@ struct FigureLayout
 {
     float sceneTop = 0.0f;    ///< top of the scene area
     float sceneBottom = 0.0f; ///< bottom of the scene area
-    float panelTop = 0.0f;    ///< top of the panel (== height when there is none)
+    float panelTop = 0.0f;    ///< top of the panel (== worldTop when there is none)
+    float worldTop = 0.0f;    ///< top of the world's panels below it (== height when there are none)
 };
 
 /// Where the caption, the scene and the panel go for these layers and image size; `titled`: the figure has a

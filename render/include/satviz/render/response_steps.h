@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// satviz render: the solver's response to one contact, step by step, in a textbook's words (lessons 14 and 16):
+// each step one sentence whose numbers a student can check by hand from the ones before it. The figures' response
+// panel draws these; the app can list them beside its canvas.
+#pragma once
+
+#include <satviz/scene.h>
+#include <satviz/sim_record.h>
+
+#include <string>
+#include <vector>
+
+namespace satviz
+{
+
+/// One step of the response: a short title ("Approach", "Effective mass", ...) and its sentence.
+struct ResponseStep
+{
+    std::string title;    ///< two or three words
+    std::string sentence; ///< what the solver did, with its numbers
+};
+
+/// The passes of the solver over one point of the contact: the impulse each pass asked for and what it kept.
+struct ResponsePasses
+{
+    std::vector<double> wanted; ///< accumulated normal impulse each pass asked for, before the clamp
+    std::vector<double> kept;   ///< after the clamp to >= 0 (a contact only pushes)
+};
+
+/// The solver's work on the record's chosen pair in its last step, from the record alone (World's step, stage 2):
+/// the contact, the approach speed along the normal, the effective mass, the restitution target, the passes, the
+/// bounce, friction against its static and dynamic limits ("sticks" or "slides"), and each body's velocity and spin
+/// before and after. When the pair had no contact in the step, one step says so (and when they hit within it).
+std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& record);
+
+/// The normal impulse of every velocity pass over contact point `point` of the last step (empty without a contact).
+ResponsePasses ResponsePassesOf(const SimRecord& record, int point);
+
+} // namespace satviz

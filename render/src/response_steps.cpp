@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: MIT
+#include <satviz/render/describe.h>
+#include <satviz/render/response_steps.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace satviz
+{
+
+namespace
+{
+
+std::string N(double value)
+{
+    return FormatNumber(value);
+}
+
+std::string V(Vec2 v)
+{
+    return "(" + FormatNumber(v.x) + ", " + FormatNumber(v.y) + ")";
+}
+
+const ContactPointSolve* LastPass(const ContactSolveTrace& trace, int point)
+{
+    const ContactPointSolve* last = nullptr;
+    for (const ContactPointSolve& pass : trace.passes)
+    {
+        if (pass.point == point && pass.pass >= 0)
+        {
+            last = &pass;
+        }
+    }
+    return last;
+}
+
+const WorldContact* FindWorldContact(const World& world, int a, int b)
+{
+    for (const WorldContact& c : world.contacts)
+    {
+        if (c.a == a && c.b == b)
+        {
+            return &c;
+        }
+    }
+    return nullptr;
+}
+
+std::string Name(const Scene& scene, int body)
+{
+    return body >= 0 && static_cast<size_t>(body) < scene.bodies.size() ? scene.bodies[static_cast<size_t>(body)].name
+                                                                        : "body " + std::to_string(body);
+}
+
+} // namespace
+
+ResponsePasses ResponsePassesOf(const SimRecord& record, int point)
+{
+    ResponsePasses passes;
+    for (const ContactPointSolve& pass : record.contact.passes)
+    {
+        if (pass.point == point && pass.pass >= 0)
+        {
+            passes.wanted.push_back(pass.normalImpulseWanted);
+            passes.kept.push_back(pass.normalImpulse);
+        }
+    }
+    return passes;
+}
+
+std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& record)
+{
+    std::vector<ResponseStep> steps;
+    const ContactSolveTrace& trace = record.contact;
+    const int lo = std::min(trace.bodyA, trace.bodyB);
+    const int hi = std::max(trace.bodyA, trace.bodyB);
+    const std::string a = Name(scene, lo);
+    const std::string b = Name(scene, hi);
+    const std::string when = "step " + std::to_string(record.steps);
+    if (lo < 0 || hi >= static_cast<int>(record.world.bodies.size()) || lo == hi)
+    {
+        steps.push_back({"No pair", "No pair of bodies is chosen for the response."});
+        return steps;
+    }
+    if (!trace.found)
+    {
+        std::string sentence = "In " + when + " " + a + " and " + b + " had no contact: they were farther apart than " +
+                               "they could close within the step.";
+        if (trace.hits > 0)
+        {
+            sentence = "In " + when + " " + a + " and " + b + " had no contact at its start, but the sweep found " +
+                       std::to_string(trace.hits) + (trace.hits == 1 ? " hit" : " hits") + ", the first at " +
+                       N(trace.hitTime) + " of the step (see the hits layer).";
+        }
+        steps.push_back({"No contact", sentence});
+        return steps;
+    }
+    const RigidBody& bodyA = record.world.bodies[static_cast<size_t>(lo)];
+    const RigidBody& bodyB = record.world.bodies[static_cast<size_t>(hi)];
+    const WorldContact* contact = FindWorldContact(record.world, lo, hi);
+    const double separation = contact != nullptr ? contact->points[0].separation : 0.0;
+    const int points = trace.pointCount;
+    std::string kind =
+        separation > 0.0
+            ? "are " + N(separation) + " m apart, closer than they can move within the step: a " + "speculative contact"
+            : "touch";
+    steps.push_back({"Contact", "At the start of " + when + ", " + a + " and " + b + " " + kind +
+                                    "; the normal n = " + V(trace.normal) + " points from " + a + " to " + b + "; " +
+                                    std::to_string(points) + (points == 1 ? " contact point." : " contact points.")});
+
+    const double vn = trace.approachSpeed[0];
+    std::string approach =
+        "vn = (v" + b + " - v" + a + ") . n at the point = " + N(vn) + " m/s, before the step's " + "gravity: ";
+    approach += vn < 0.0 ? "they approach at " + N(-vn) + " m/s." : "they do not approach.";
+    if (points == 2)
+    {
+        approach += " At point 2: " + N(trace.approachSpeed[1]) + " m/s.";
+    }
+    steps.push_back({"Approach", approach});
+
+    // The turning terms from the point's lever arms at the start of the step (lesson 16): (r x n)^2 / I per body.
+    double turning = 0.0;
+    if (contact != nullptr && record.before.size() == record.world.bodies.size())
+    {
+        const RigidBody& startA = record.before[static_cast<size_t>(lo)];
+        const RigidBody& startB = record.before[static_cast<size_t>(hi)];
+        const Vec2 rA = contact->points[0].point - startA.WorldCenter();
+        const Vec2 rB = contact->points[0].point - startB.WorldCenter();
+        const double rnA = Cross(rA, trace.normal), rnB = Cross(rB, trace.normal);
+        turning = rnA * rnA * startA.invInertia + rnB * rnB * startB.invInertia;
+    }
+    std::string mass = "m_eff = 1 / (1/m" + a + " + 1/m" + b + " + (rA x n)^2/IA + (rB x n)^2/IB) = 1 / (" +
+                       N(bodyA.invMass) + " + " + N(bodyB.invMass) + " + " + N(turning) + ") = " +
+                       N(trace.normalMass[0]) + " kg";
+    mass += bodyA.invMass == 0.0 || bodyB.invMass == 0.0 ? " (a static body adds 0)." : ".";
+    steps.push_back({"Effective mass", mass});
+
+    const double threshold = record.world.settings.restitutionThreshold;
+    std::string target;
+    if (trace.bounceSpeed[0] > 0.0)
+    {
+        target = "e = " + N(trace.restitution) + " and the approach " + N(-vn) + " m/s is above the " + N(threshold) +
+                 " m/s threshold: the point is to leave at e x " + N(-vn) + " = " + N(trace.bounceSpeed[0]) + " m/s.";
+    }
+    else
+    {
+        target = "e = " + N(trace.restitution) +
+                 (trace.restitution > 0.0 && -vn > 0.0 && -vn <= threshold
+                      ? ", but the approach is below the " + N(threshold) + " m/s threshold"
+                      : "") +
+                 ": no bounce; the target is to stop approaching.";
+    }
+    steps.push_back({"Restitution target", target});
+
+    const ContactPointSolve* last = LastPass(trace, 0);
+    const double jn = last != nullptr ? last->normalImpulse : 0.0;
+    std::string compression = "Each pass adds what brings vn to its target and keeps the running total >= 0 (a "
+                              "contact only pushes): after " +
+                              std::to_string(ResponsePassesOf(record, 0).kept.size()) + " passes jn = " + N(jn) +
+                              " N s";
+    if (trace.gapSpeed[0] > 0.0)
+    {
+        compression += ", which leaves the point approaching at " + N(trace.gapSpeed[0]) +
+                       " m/s, the speed that closes its gap within the step";
+    }
+    compression +=
+        trace.warmNormal[0] > 0.0 ? " (the passes start from last step's " + N(trace.warmNormal[0]) + ")." : ".";
+    steps.push_back({"Normal impulse", compression});
+
+    if (trace.restitutionImpulse[0] > 0.0)
+    {
+        steps.push_back({"Bounce", "Restitution adds " + N(trace.restitutionFactor[0]) + " x " + N(jn) + " = " +
+                                       N(trace.restitutionImpulse[0]) + " N s: in all j = " + N(jn) + " + " +
+                                       N(trace.restitutionImpulse[0]) + " = " + N(jn + trace.restitutionImpulse[0]) +
+                                       " N s."});
+    }
+
+    if (last != nullptr)
+    {
+        const double needed = std::fabs(last->tangentImpulseWanted);
+        std::string friction = "Stopping the slip (" + N(last->tangentSpeed) + " m/s) needs |jt| = " + N(needed) +
+                               " N s; the static limit mu_s jn is " + N(last->staticLimit) + ": ";
+        friction += last->stuck ? "within it, so the point sticks, and friction takes " +
+                                      N(std::fabs(last->tangentImpulse)) + " N s."
+                                : "beyond it, so the point slides, and friction gives the dynamic limit mu jn = " +
+                                      N(last->dynamicLimit) + " N s.";
+        steps.push_back({last->stuck ? "Friction: sticks" : "Friction: slides", friction});
+    }
+
+    auto motion = [&](int side, const RigidBody& body, const std::string& name) {
+        if (body.type == BodyType::Static)
+        {
+            return name + " is static and does not move";
+        }
+        return name + ": v " + V(trace.velocityBefore[side]) + " -> " + V(trace.velocityAfter[side]) + " m/s, spin " +
+               N(trace.spinBefore[side]) + " -> " + N(trace.spinAfter[side]) + " rad/s";
+    };
+    std::string velocities = motion(0, bodyA, a) + "; " + motion(1, bodyB, b) + ".";
+    const Vec2 gdt = record.dt * record.world.settings.gravity;
+    if (gdt.x != 0.0 || gdt.y != 0.0)
+    {
+        velocities += " After includes the step's gravity, g dt = " + V(gdt) + " m/s.";
+    }
+    steps.push_back({"Velocities", velocities});
+    return steps;
+}
+
+} // namespace satviz

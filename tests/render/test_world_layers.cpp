@@ -1,0 +1,293 @@
+// SPDX-License-Identifier: MIT
+// The world's layers through a recording canvas: the broadphase's boxes and pairs, the response's steps and arrows,
+// the hits and the plots, each checked against numbers computed here from the bodies (lesson 14's worked example
+// for the response) rather than read back from the record the layers draw.
+#include <satviz/render/describe.h>
+#include <satviz/render/figure.h>
+#include <satviz/render/recording_canvas.h>
+#include <satviz/render/response_steps.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace satviz;
+
+namespace
+{
+
+struct Stepped
+{
+    Scene scene;
+    SimRecord record;
+    FigureSetup setup;
+};
+
+Stepped Step(const std::string& name, int steps)
+{
+    Stepped s;
+    SceneResult loaded = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + name);
+    INFO(loaded.error);
+    REQUIRE(loaded.Ok());
+    s.scene = loaded.scene;
+    int a = -1, b = -1;
+    REQUIRE(FigurePair(s.scene, a, b));
+    REQUIRE(SimulateSceneRecorded(s.scene, steps, a, b, s.record).empty());
+    return s;
+}
+
+RecordingCanvas Paint(Stepped& s, LayerMask layers, int width = 900, int height = 1000)
+{
+    FigureOptions options;
+    options.setLayers = true;
+    options.layers = layers;
+    options.width = width;
+    options.height = height;
+    options.sim = &s.record;
+    s.setup = SetUpFigure(s.scene, options);
+    REQUIRE(s.setup.Ok());
+    RecordingCanvas canvas;
+    PaintFigure(canvas, s.scene, s.setup.study, s.setup.figure);
+    return canvas;
+}
+
+// The text of a group, its lines joined by spaces (sentences are wrapped over several lines).
+std::string GroupText(const RecordingCanvas& canvas, const std::string& group)
+{
+    std::string text;
+    for (const DrawCommand* c : canvas.InGroup(group))
+    {
+        if (c->kind == DrawCommand::Kind::Text)
+        {
+            text += c->text + " ";
+        }
+    }
+    return text;
+}
+
+bool AnyTextContains(const RecordingCanvas& canvas, const std::string& part)
+{
+    const std::vector<std::string> texts = canvas.Texts();
+    return std::any_of(texts.begin(), texts.end(), [&](const std::string& t) { return t.find(part) != std::string::npos; });
+}
+
+bool Contains(const std::string& text, const std::string& part)
+{
+    return text.find(part) != std::string::npos;
+}
+
+struct Box
+{
+    float minX, minY, maxX, maxY;
+};
+
+Box TextBox(const DrawCommand& c)
+{
+    const float size = TextSize(c.style);
+    return {c.points[0].x, c.points[0].y, c.points[0].x + 0.6f * size * static_cast<float>(c.text.size()),
+            c.points[0].y + size};
+}
+
+} // namespace
+
+TEST_CASE("World layers: the response of lesson 14's head-on hit, step by step, with the lesson's numbers",
+          "[painter][world]")
+{
+    Stepped s = Step("l14_head_on.json", 23);
+    const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerLabels | kLayerResponse, 1400, 900);
+    const std::string panel = GroupText(canvas, "response panel");
+    INFO(panel);
+    // The lesson, by hand: mA = 2 pi 0.5^2 = pi / 2, mB = pi / 4; the effective mass 1 / (2/pi + 4/pi) = pi / 6; the
+    // impulse (pi / 6) (3.2 + 4) = 1.2 pi; A leaves at 3 - 1.2 pi / (pi / 2) = 0.6, B at -1 + 1.2 pi / (pi / 4) = 3.8.
+    const double pi = 3.141592653589793;
+    CHECK(Contains(panel, "= " + FormatNumber(pi / 6.0) + " kg"));
+    CHECK(Contains(panel, "1 / (" + FormatNumber(2.0 / pi) + " + " + FormatNumber(4.0 / pi) + " + 0)"));
+    CHECK(Contains(panel, "they approach at " + FormatNumber(4.0) + " m/s"));
+    CHECK(Contains(panel, "e x " + FormatNumber(4.0) + " = " + FormatNumber(3.2) + " m/s"));
+    CHECK(Contains(panel, "= " + FormatNumber(1.2 * pi) + " N s."));
+    CHECK(Contains(panel, "(" + FormatNumber(3.0) + ", 0) -> (" + FormatNumber(0.6) + ", 0) m/s"));
+    CHECK(Contains(panel, "(" + FormatNumber(-1.0) + ", 0) -> (" + FormatNumber(3.8) + ", 0) m/s"));
+    // The arrow of the impulse on B, along the normal (1, 0) from the contact point, labelled with it.
+    CHECK(AnyTextContains(canvas, "j = " + FormatNumber(1.2 * pi) + " N s"));
+    bool arrow = false;
+    for (const DrawCommand* c : canvas.InGroup("response"))
+    {
+        if (c->kind == DrawCommand::Kind::Segment && c->color == palette::kResult)
+        {
+            arrow = arrow || (c->points[1].x > c->points[0].x && std::fabs(c->points[1].y - c->points[0].y) < 0.5f);
+        }
+    }
+    CHECK(arrow);
+    // Every step of DescribeResponse is drawn, its title in the panel.
+    for (const ResponseStep& step : DescribeResponse(s.scene, s.record))
+    {
+        CHECK(Contains(panel, step.title));
+    }
+    // The passes' table: ten passes.
+    CHECK(ResponsePassesOf(s.record, 0).kept.size() == 10);
+}
+
+TEST_CASE("World layers: the response before the pair meets says there was no contact", "[painter][world]")
+{
+    Stepped s = Step("l14_head_on.json", 5);
+    const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerResponse);
+    CHECK(AnyTextContains(canvas, "had no contact"));
+    CHECK(canvas.InGroup("response").empty());
+}
+
+TEST_CASE("World layers: the broadphase draws a pair line between the boxes' centres for every pair tested, the "
+          "counts, and hatches the sleeping bodies",
+          "[painter][world]")
+{
+    Stepped s = Step("l17_skips.json", 60);
+    const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerBroadphase, 900, 700);
+    const View& view = s.setup.figure.view;
+    // The pairs: each a line from one box's centre to the other's; the centre of a box grown equally on every side
+    // is the centre of the body's own box at the start of the step.
+    std::vector<std::pair<ScreenPoint, ScreenPoint>> expected;
+    for (const auto& [i, j] : s.record.lastStep.candidates)
+    {
+        const RigidBody& a = s.record.before[static_cast<size_t>(i)];
+        const RigidBody& b = s.record.before[static_cast<size_t>(j)];
+        const Aabb boxA = ComputeAabb(a.shape, a.Xf());
+        const Aabb boxB = ComputeAabb(b.shape, b.Xf());
+        expected.push_back({ToScreen(view, 0.5 * (boxA.min + boxA.max)), ToScreen(view, 0.5 * (boxB.min + boxB.max))});
+    }
+    std::vector<const DrawCommand*> lines;
+    for (const DrawCommand* c : canvas.InGroup("broadphase"))
+    {
+        if (c->kind == DrawCommand::Kind::Segment && (c->color >> 8) == (palette::kGap >> 8))
+        {
+            lines.push_back(c);
+        }
+    }
+    REQUIRE(lines.size() == expected.size());
+    for (size_t k = 0; k < lines.size(); ++k)
+    {
+        CHECK(lines[k]->points[0].x == Approx(expected[k].first.x).margin(0.01));
+        CHECK(lines[k]->points[0].y == Approx(expected[k].first.y).margin(0.01));
+        CHECK(lines[k]->points[1].x == Approx(expected[k].second.x).margin(0.01));
+    }
+    const StepCounts& c = s.record.world.counts;
+    CHECK(AnyTextContains(canvas, std::to_string(c.tested) + " tested, " + std::to_string(c.touching) + " touching"));
+    CHECK(AnyTextContains(canvas, std::to_string(c.sleepingPairs) + " sleeping"));
+    // The sleeping crates are hatched: each hatch line lies within a sleeping body's box, and there are some.
+    int sleeping = 0;
+    for (const RigidBody& body : s.record.world.bodies)
+    {
+        sleeping += body.type == BodyType::Dynamic && !body.awake;
+    }
+    REQUIRE(sleeping > 0);
+    int hatches = 0;
+    for (const DrawCommand* cmd : canvas.InGroup("sleeping"))
+    {
+        REQUIRE(cmd->kind == DrawCommand::Kind::Segment);
+        const Vec2 mid = ToWorld(view, {0.5f * (cmd->points[0].x + cmd->points[1].x),
+                                        0.5f * (cmd->points[0].y + cmd->points[1].y)});
+        bool inside = false;
+        for (const RigidBody& body : s.record.world.bodies)
+        {
+            if (body.type == BodyType::Dynamic && !body.awake)
+            {
+                const Aabb box = ComputeAabb(body.shape, body.Xf());
+                const double slack = 1.0 / view.zoom;
+                inside = inside || (mid.x >= box.min.x - slack && mid.x <= box.max.x + slack &&
+                                    mid.y >= box.min.y - slack && mid.y <= box.max.y + slack);
+            }
+        }
+        CHECK(inside);
+        ++hatches;
+    }
+    CHECK(hatches >= sleeping);
+}
+
+TEST_CASE("World layers: a bullet's hit on the time bar and where the bodies were at it", "[painter][world]")
+{
+    Stepped s = Step("l17_bullet.json", 1);
+    REQUIRE(s.record.lastStep.hits.size() == 1);
+    const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerLabels | kLayerHits);
+    // The bullet starts 0.945 m from the wall's face and covers 100 000 / 60 m in the step: it hits at 0.945 / that.
+    const double t = 0.945 / (100000.0 / 60.0);
+    CHECK(AnyTextContains(canvas, "1: wall-bullet at " + FormatNumber(t)));
+    CHECK(AnyTextContains(canvas, "hit 1"));
+    int dots = 0;
+    for (const DrawCommand* c : canvas.InGroup("hits panel"))
+    {
+        dots += c->kind == DrawCommand::Kind::FillCircle;
+    }
+    CHECK(dots == 1);
+}
+
+TEST_CASE("World layers: the plots follow the energy over the steps, the current step marked", "[painter][world]")
+{
+    Stepped s = Step("l14_head_on.json", 30);
+    const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerPlots);
+    // Kinetic energy before and after the hit, by hand: 1/2 (pi/2) 3^2 + 1/2 (pi/4) 1^2 = 7.461 J before,
+    // 1/2 (pi/2) 0.6^2 + 1/2 (pi/4) 3.8^2 = 5.953 J after. On the plot, heights above the frame's bottom in that ratio.
+    const double pi = 3.141592653589793;
+    const double before = 0.5 * (pi / 2.0) * 9.0 + 0.5 * (pi / 4.0);
+    const double after = 0.5 * (pi / 2.0) * 0.36 + 0.5 * (pi / 4.0) * 3.8 * 3.8;
+    const DrawCommand* kinetic = nullptr;
+    const DrawCommand* frame = nullptr;
+    for (const DrawCommand* c : canvas.InGroup("plots"))
+    {
+        if (c->kind == DrawCommand::Kind::Polyline && c->closed && frame == nullptr)
+        {
+            frame = c;
+        }
+        if (c->kind == DrawCommand::Kind::Polyline && !c->closed && c->color == palette::kShapeA && kinetic == nullptr)
+        {
+            kinetic = c;
+        }
+    }
+    REQUIRE(frame != nullptr);
+    REQUIRE(kinetic != nullptr);
+    REQUIRE(kinetic->points.size() == 31);
+    const float bottom = frame->points[2].y;
+    const float h0 = bottom - kinetic->points.front().y;
+    const float h1 = bottom - kinetic->points.back().y;
+    CHECK(h1 / h0 == Approx(after / before).epsilon(1e-3));
+    CHECK(AnyTextContains(canvas, "step 30"));
+    CHECK(AnyTextContains(canvas, FormatNumber(before)));
+}
+
+TEST_CASE("World layers: no label of the world's layers overlaps another label of a simulation figure",
+          "[painter][world]")
+{
+    for (const auto& [name, steps] : std::vector<std::pair<std::string, int>>{
+             {"l14_head_on.json", 23}, {"l17_skips.json", 60}, {"l17_bullet.json", 1}, {"l14_slide.json", 10}})
+    {
+        INFO(name);
+        Stepped s = Step(name, steps);
+        const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerLabels | kLayerBroadphase | kLayerResponse |
+                                                    kLayerHits | kLayerPlots | kLayerCaption);
+        std::vector<const DrawCommand*> texts;
+        for (const DrawCommand& c : canvas.commands)
+        {
+            if (c.kind == DrawCommand::Kind::Text)
+            {
+                texts.push_back(&c);
+            }
+        }
+        const auto world = [](const DrawCommand* c) {
+            return c->group != "labels" && c->group != "caption" && c->group != "background";
+        };
+        for (size_t i = 0; i < texts.size(); ++i)
+        {
+            for (size_t j = i + 1; j < texts.size(); ++j)
+            {
+                if (!world(texts[i]) && !world(texts[j]))
+                {
+                    continue; // the pair's own labels are the painter's tests' concern
+                }
+                const Box a = TextBox(*texts[i]);
+                const Box b = TextBox(*texts[j]);
+                const bool overlap = a.minX < b.maxX - 0.5f && b.minX < a.maxX - 0.5f && a.minY < b.maxY - 0.5f &&
+                                     b.minY < a.maxY - 0.5f;
+                INFO("\"" << texts[i]->text << "\" and \"" << texts[j]->text << "\"");
+                CHECK(!overlap);
+            }
+        }
+    }
+}
