@@ -55,7 +55,7 @@ void PaintHitsScene(Canvas& canvas, LabelPlacer& labels, const View& view, const
             if (k == 0)
             {
                 labels.Place(at, "hit " + std::to_string(h + 1), TextStyle::Label, palette::kResult,
-                             static_cast<float>(-hit.normal.x), static_cast<float>(hit.normal.y), 6.0f, true);
+                             static_cast<float>(-hit.normal.x), static_cast<float>(hit.normal.y), 6.0f, LabelRank::Note);
             }
         }
     }

@@ -92,9 +92,10 @@ void PaintResponseScene(Canvas& canvas, LabelPlacer& labels, const View& view, c
             }
             const Vec2 d = impulse >= 0.0 ? direction : -1.0 * direction;
             const ScreenPoint tip{at.x + static_cast<float>(d.x) * length, at.y - static_cast<float>(d.y) * length};
-            Arrow(canvas, at, tip, color, 2.5f, 11.0f);
+            labels.Reserve(Arrow(canvas, at, tip, color, 2.5f, 11.0f));
+            labels.ReserveLine(at, tip, 4.5f);
             labels.Place(tip, name + " = " + FormatNumber(std::fabs(impulse)) + " N s", TextStyle::Label, color,
-                         static_cast<float>(d.x), static_cast<float>(-d.y));
+                         static_cast<float>(d.x), static_cast<float>(-d.y), 6.0f, LabelRank::Verdict);
         };
         const std::string suffix = trace.pointCount == 2 ? std::to_string(p + 1) : "";
         arrow(n, normal[p], palette::kResult, "j" + suffix);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "draw_kit.h"
+#include "label_placer.h"
 
 #include <satviz/render/painter.h>
 

@@ -84,9 +84,8 @@ struct Box
 
 Box TextBox(const DrawCommand& c)
 {
-    const float size = TextSize(c.style);
-    return {c.points[0].x, c.points[0].y, c.points[0].x + 0.6f * size * static_cast<float>(c.text.size()),
-            c.points[0].y + size};
+    const ScreenPoint size = FontTextSize(c.text, c.style);
+    return {c.points[0].x, c.points[0].y, c.points[0].x + size.x, c.points[0].y + size.y};
 }
 
 } // namespace
