@@ -94,8 +94,7 @@ std::string SweepExitReason(SweepExit exit)
     case SweepExit::NotMoving:
         return "nothing moves, so the static test decides";
     case SweepExit::NeverCloses:
-        return "on this axis the intervals never overlap during the step (at most they touch, and touching is not a "
-               "hit), so the shapes cannot interpenetrate";
+        return "on this axis the intervals never overlap during the step, so the shapes cannot interpenetrate";
     case SweepExit::EntryAfterStep:
         return "the intervals would only meet after the step ends";
     case SweepExit::EntryAfterExit:
@@ -316,6 +315,29 @@ std::string NeverClosesReason(const TextbookSweepAxis& t)
     }
     return "on this axis the intervals overlap only before the step (from " + Time(t.entry) + " until " +
            Time(t.exit) + ") and move apart during it, so the shapes cannot interpenetrate";
+}
+
+// Why a face of a face-test sweep rules out a hit: the other shape is beyond it or on it at t = 0 and does not
+// approach. Only a shape on the face (separation 0) touches it; one beyond it and moving away was behind it only
+// before the step.
+std::string FaceNeverClosesReason(const std::string& other, const std::string& face, const SweepAxis& axis)
+{
+    const std::string cannot = ", so the shapes cannot interpenetrate";
+    if (axis.separation > 0.0)
+    {
+        if (axis.rate > 0.0)
+        {
+            return other + " is beyond " + face + " at t = 0 and moves away from it (it was behind it only before the "
+                           "step, until " +
+                   Time(-axis.separation / axis.rate) + "): the face separates the shapes during the whole step" +
+                   cannot;
+        }
+        return other + " is beyond " + face + " and stays so: the face separates the shapes during the whole step" +
+               cannot;
+    }
+    return other + (axis.rate > 0.0 ? " touches " + face + " at t = 0 and moves away from it"
+                                    : " only touches " + face + " and does not move along its normal") +
+           " (touching is not a hit)" + cannot;
 }
 
 // The reason a textbook sweep ended on axis `t`.
@@ -663,7 +685,9 @@ std::string FaceSweepStep(const Scene& scene, const PairStudy& study, int step)
     }
     if (axis.endsTest)
     {
-        text += " This ends the test: " + SweepExitReason(study.sweepTrace.exit) + ".";
+        const bool never = face && axis.separation >= 0.0 && axis.rate >= 0.0;
+        text += " This ends the test: " +
+                (never ? FaceNeverClosesReason(other, "this face", axis) : SweepExitReason(study.sweepTrace.exit)) + ".";
     }
     else if (axis.latestEntry >= 0 && axis.earliestExit >= 0)
     {
@@ -694,6 +718,16 @@ std::string FaceSweepVerdict(const Scene& scene, const PairStudy& study)
                "): the static test's minimum translation vector applies.";
     case SweepStatus::Miss:
         break;
+    }
+    // The face that ended the test, named, when it never closes: what the picture's number line shows.
+    for (const SweepAxis& axis : study.sweepTrace.axes)
+    {
+        if (axis.endsTest && axis.separation >= 0.0 && axis.rate >= 0.0 && axis.axis.kind == AxisKind::FaceNormal)
+        {
+            const std::string other = NameOf(scene, study, 1 - axis.axis.shape);
+            return "Verdict: no hit during the step: " +
+                   FaceNeverClosesReason(other, FaceName(scene, study, axis.axis), axis) + ".";
+        }
     }
     return "Verdict: no hit during the step: " + SweepExitReason(study.sweepTrace.exit) + ".";
 }

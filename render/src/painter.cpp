@@ -268,6 +268,20 @@ ShownAxis FromSweep(const PairStudy& study, int index)
     s.boundAt = t.axis.shape == 0 ? t.maxA + t.bound : t.minB - t.bound;
     s.index = index;
     s.SetLead(false);
+    // A face the other shape is beyond (or on) and does not approach never closes: it has no entry or exit time
+    // (the trace's 0 and infinity are placeholders), and when it ends the test there is no common window.
+    if (t.axis.kind == AxisKind::FaceNormal && !s.decided && t.separation >= 0.0 && t.rate >= 0.0)
+    {
+        s.never = true;
+        s.entry = std::numeric_limits<double>::quiet_NaN();
+        s.exit = s.entry;
+        if (t.endsTest)
+        {
+            s.windowEntry = s.entry;
+            s.windowExit = s.entry;
+            return s;
+        }
+    }
     if (t.latestEntry >= 0 && t.earliestExit >= 0)
     {
         s.windowEntry = study.sweepTrace.axes[static_cast<size_t>(t.latestEntry)].entry;

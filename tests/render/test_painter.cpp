@@ -249,6 +249,41 @@ TEST_CASE("A box above a floor: the textbook step shows a gap and stops, the fac
     CHECK(face.find("Intervals") == std::string::npos);
 }
 
+TEST_CASE("A face sweep that ends on a face the other shape leaves says so, not that they touch", "[painter]")
+{
+    // B is 0.5 beyond A's right face (edge 1) and moves away at 2 per step: behind that face only before the step,
+    // until t = -0.5 / 2 = -0.25; at 0 beyond, it only touches.
+    for (const auto& [x, expected] : {std::pair<double, std::string>{2.5, "it was behind it only before the step, "
+                                                                           "until t = -0.25"},
+                                      std::pair<double, std::string>{2.0, "touches this face at t = 0 and moves "
+                                                                          "away from it (touching is not a hit)"}})
+    {
+        const SceneResult loaded = ParseScene(R"({"bodies": [{"name": "A", "box": [2, 2]},
+            {"name": "B", "box": [2, 2], "position": [)" + std::to_string(x) + R"(, 0], "velocity": [2, 0.5]}],
+            "view": {"steps": "faces"}})",
+                                              "s.json");
+        INFO(loaded.error);
+        REQUIRE(loaded.Ok());
+        const FigureSetup setup = SetUpView(loaded.scene, StepView::Faces);
+        REQUIRE(setup.Ok());
+        REQUIRE(setup.study.sweep);
+        int ending = -1;
+        for (size_t k = 0; k < setup.study.sweepTrace.axes.size(); ++k)
+        {
+            ending = setup.study.sweepTrace.axes[k].endsTest ? static_cast<int>(k) : ending;
+        }
+        REQUIRE(ending >= 0);
+        const std::string step = DescribeStep(loaded.scene, setup.study, ending);
+        const std::string verdict = DescribeStep(loaded.scene, setup.study, setup.study.VerdictStep());
+        INFO(step);
+        INFO(verdict);
+        CHECK(step.find(expected) != std::string::npos);
+        CHECK(verdict.find("A's edge 1") != std::string::npos);
+        CHECK((x > 2.0) == (verdict.find("touch") == std::string::npos));
+        CHECK(verdict.find("at most") == std::string::npos);
+    }
+}
+
 TEST_CASE("A box resting on a floor touches it: the verdict says so, not that a move of 0 separates them", "[painter]")
 {
     // The floor's top at y = 0.25, the box's bottom at 0.25: exactly touching.
