@@ -1353,8 +1353,30 @@ class Painter
         for (int s = 0; s < 2; ++s)
         {
             const Body& body = BodyOf(s);
-            labels_.Place(At(ShapeCenter(body.shape, body.Xf())), body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f,
-                          -7.0f, LabelRank::Name);
+            const Vec2 center = ShapeCenter(body.shape, body.Xf());
+            // A name wider or taller than its shape on screen would cover it: it goes beside the shape instead,
+            // to the right of a thin one, below a flat one.
+            Vec2 low, high, left, right;
+            Extremes(body.shape, body.Xf(), {0.0, 1.0}, low, high);
+            Extremes(body.shape, body.Xf(), {1.0, 0.0}, left, right);
+            const float wide = static_cast<float>((right.x - left.x) * view_.zoom);
+            const float tall = static_cast<float>((high.y - low.y) * view_.zoom);
+            const ScreenPoint text = canvas_.MeasureText(body.name, TextStyle::Heading);
+            if (wide >= text.x + 8.0f && tall >= text.y + 4.0f)
+            {
+                labels_.Place(At(center), body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f,
+                              LabelRank::Name);
+            }
+            else if (wide < text.x + 8.0f && tall >= 2.0f * text.y)
+            {
+                labels_.Place(At({right.x, center.y}), body.name, TextStyle::Heading, InkOf(s), 1.0f, 0.0f, 6.0f,
+                              LabelRank::Name);
+            }
+            else
+            {
+                labels_.Place(At({center.x, low.y}), body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, 6.0f,
+                              LabelRank::Name);
+            }
         }
     }
 
