@@ -34,14 +34,34 @@ std::string Coordinate(double value)
     return value == 0.0 ? "0.00" : FormatNumber(value);
 }
 
+// Two numbers written side by side with as many decimals each: "(-0.342, 0.940)", not "(-0.342, 0.94)". Only the
+// dropped trailing 0 of FormatNumber's fixed notation is put back, so the values read the same.
+std::string Matched(double x, double y, const char* open, const char* close)
+{
+    std::string a = Coordinate(x);
+    std::string b = Coordinate(y);
+    auto decimals = [](const std::string& t) {
+        const size_t dot = t.find('.');
+        return t.find('e') != std::string::npos || dot == std::string::npos ? -1 : static_cast<int>(t.size() - dot - 1);
+    };
+    const int da = decimals(a);
+    const int db = decimals(b);
+    if (da >= 0 && db >= 0)
+    {
+        a.append(static_cast<size_t>(std::max(0, db - da)), '0');
+        b.append(static_cast<size_t>(std::max(0, da - db)), '0');
+    }
+    return open + a + ", " + b + close;
+}
+
 std::string Pair(double x, double y)
 {
-    return "(" + Coordinate(x) + ", " + Coordinate(y) + ")";
+    return Matched(x, y, "(", ")");
 }
 
 std::string Interval(double low, double high)
 {
-    return "[" + Coordinate(low) + ", " + Coordinate(high) + "]";
+    return Matched(low, high, "[", "]");
 }
 
 // Number of face tests the fast test could run: every face of a polygon, one axis per circle pair.
