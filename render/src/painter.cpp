@@ -7,6 +7,7 @@
 
 #include <satviz/render/describe.h>
 #include <satviz/render/painter.h>
+#include <satviz/render/response_steps.h>
 #include <satviz/render/wrap.h>
 
 #include <algorithm>
@@ -1628,7 +1629,7 @@ class Painter
     CaptionLines LayOutCaption() const
     {
         CaptionLines c;
-        const std::string text = DescribeStep(scene_, study_, figure_.step);
+        const std::string text = WorldCaption().empty() ? DescribeStep(scene_, study_, figure_.step) : WorldCaption();
         const float y = kPad - 2.0f;
         const float room = layout_.sceneTop - 6.0f;
         float used = 0.0f;
@@ -1656,6 +1657,27 @@ class Painter
         }
         c.bottom = std::max(layout_.sceneTop, y + used + c.height * static_cast<float>(c.lines.size()) + 6.0f);
         return c;
+    }
+
+    // A figure of the world's layers is about the world's last step, not about a SAT test of the pair as the step
+    // left it (which can say "no hit" of a pair the step has just bounced): its explanation is the step's own.
+    // Empty when no world layer is drawn.
+    std::string WorldCaption() const
+    {
+        const LayerMask world = kLayerBroadphase | kLayerResponse | kLayerHits | kLayerPlots;
+        if (figure_.sim == nullptr || (figure_.layers & world) == 0)
+        {
+            return "";
+        }
+        const std::string step = std::to_string(figure_.sim->steps);
+        if (Has(figure_, kLayerResponse))
+        {
+            return "The panel below follows the solver's response to " + bodyA_.name + " and " + bodyB_.name +
+                   " in step " + step + ", one stage a line, each from the numbers before it.";
+        }
+        // The first stage says whether the pair had a contact in the step, and of which kind.
+        const std::vector<ResponseStep> response = DescribeResponse(scene_, *figure_.sim);
+        return response.empty() ? "Step " + step + " of the world." : response.front().sentence;
     }
 
     // The step's explanation under the scene's own title (its caption), in the band the layout reserves: at body

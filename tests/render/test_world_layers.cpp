@@ -127,6 +127,24 @@ TEST_CASE("World layers: the response of lesson 14's head-on hit, step by step, 
     CHECK(ResponsePassesOf(s.record, 0).kept.size() == 10);
 }
 
+TEST_CASE("World layers: the caption explains the world's step, not a SAT test of the pair it left behind",
+          "[painter][world]")
+{
+    // After step 23 of lesson 14's head-on hit the pair moves apart, so a sweep of it finds no hit; the step itself
+    // bounced them on a speculative contact.
+    Stepped s = Step("l14_head_on.json", 23);
+    const RecordingCanvas response = Paint(s, kLayerShapes | kLayerCaption | kLayerResponse, 1400, 900);
+    const std::string withPanel = GroupText(response, "caption");
+    INFO(withPanel);
+    CHECK(Contains(withPanel, "solver's response to A and B in step 23"));
+    CHECK_FALSE(Contains(withPanel, "no hit"));
+    const RecordingCanvas hits = Paint(s, kLayerShapes | kLayerCaption | kLayerHits, 1400, 900);
+    const std::string alone = GroupText(hits, "caption");
+    INFO(alone);
+    CHECK(Contains(alone, "speculative"));
+    CHECK_FALSE(Contains(alone, "no hit"));
+}
+
 TEST_CASE("World layers: the response before the pair meets says there was no contact", "[painter][world]")
 {
     Stepped s = Step("l14_head_on.json", 5);
