@@ -749,12 +749,28 @@ void Stepper::LimitEnergyGain(const std::vector<SolverBody>& unsolved, const Sol
     {
         return;
     }
+    const auto moves = [&](int i) { return solverBodies[i].invMass > 0.0 || solverBodies[i].invInertia > 0.0; };
+    // What a group may gain: the energy of each body moving at the slop per step, the speed at which the contacts
+    // let a resting body drift within the slop.
+    const double drift = 0.5 * (2.0 * settings.linearSlop / dt) * (2.0 * settings.linearSlop / dt);
+    const auto allowance = [&](int i) {
+        return energyBefore[i] + (solverBodies[i].invMass > 0.0 ? drift / solverBodies[i].invMass : 0.0);
+    };
+    // A group gains only if one of its bodies does: when none does, there is nothing to look at (the usual case).
+    bool anyBody = false;
+    for (int i = 0; i < n && !anyBody; ++i)
+    {
+        anyBody = moves(i) && detail::Energy(solverBodies[i]) > allowance(i);
+    }
+    if (!anyBody)
+    {
+        return;
+    }
     std::vector<int> parent(n);
     for (int i = 0; i < n; ++i)
     {
         parent[i] = i;
     }
-    const auto moves = [&](int i) { return solverBodies[i].invMass > 0.0 || solverBodies[i].invInertia > 0.0; };
     for (const SolverContact& c : solverContacts)
     {
         if (moves(c.a) && moves(c.b))
@@ -763,17 +779,13 @@ void Stepper::LimitEnergyGain(const std::vector<SolverBody>& unsolved, const Sol
             parent[ra < rb ? rb : ra] = ra < rb ? ra : rb;
         }
     }
-    // What a group may gain: the energy of each body moving at the slop per step, the speed at which the contacts
-    // let a resting body drift within the slop.
-    const double drift = 0.5 * (2.0 * settings.linearSlop / dt) * (2.0 * settings.linearSlop / dt);
     std::vector<double> before(n, 0.0), after(n, 0.0);
     for (int i = 0; i < n; ++i)
     {
         if (moves(i))
         {
             const int r = FindRoot(parent, i);
-            const double mass = solverBodies[i].invMass > 0.0 ? 1.0 / solverBodies[i].invMass : 0.0;
-            before[r] += energyBefore[i] + mass * drift;
+            before[r] += allowance(i);
             after[r] += detail::Energy(solverBodies[i]);
         }
     }
