@@ -3,7 +3,10 @@
 // and canvas.cpp.
 #include "app.h"
 
+#include <satviz/scene_world.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <utility>
 
@@ -69,6 +72,10 @@ void App::Frame()
     TakeFinishedTest();
     panels_.Shortcuts();
     viewer_.Advance(ImGui::GetIO().DeltaTime);
+    if (sim_.Advance(ImGui::GetIO().DeltaTime))
+    {
+        Refresh();
+    }
     panels_.Draw();
 }
 
@@ -78,11 +85,16 @@ double App::SecondsUntilChange() const
     {
         return 0.03; // the worker thread's figure is taken in by a frame
     }
+    double change = -1.0;
     if (viewer_.Playing())
     {
-        return viewer_.SecondsUntilNextStep();
+        change = viewer_.SecondsUntilNextStep();
     }
-    return -1.0;
+    if (sim_.Playing())
+    {
+        change = change < 0.0 ? sim_.SecondsUntilNextStep() : std::min(change, sim_.SecondsUntilNextStep());
+    }
+    return change;
 }
 
 // [SECTION] Files
@@ -97,13 +109,25 @@ bool App::Open(const std::string& path)
     }
     selected_ = -1;
     viewer_.Reset(document_.GetScene());
+    sim_ = Simulation{};
     Refresh();
-    recent_.Remember(path);
     const int simSteps = opened.simSteps;
+    if (simSteps > 0 && sim_.Error().empty())
+    {
+        // The view asks for the bodies where these steps leave them: the simulation takes them, so that the
+        // scene opens there, ready to play on or to go back to step 0.
+        while (sim_.Shown() < simSteps)
+        {
+            sim_.StepForward();
+        }
+        Refresh();
+    }
+    recent_.Remember(path);
     SetStatus("Opened " + path +
-                  (simSteps > 0 ? ", after " + std::to_string(simSteps) + " rigid-body step" +
-                                      (simSteps == 1 ? "" : "s") + " (its view's sim_steps)"
-                                : "") +
+                  (simSteps > 0
+                       ? ", after " + std::to_string(simSteps) + " rigid-body step" + (simSteps == 1 ? "" : "s") +
+                             " of the simulation (its view's sim_steps; Reset goes back to the scene as written)"
+                       : "") +
                   (document_.ReadOnly() ? " (a bundled scene: Save asks for a new file)" : ""),
               false);
     return true;
@@ -137,6 +161,8 @@ Scene App::SceneForSaving() const
 {
     Scene saved = document_.GetScene();
     viewer_.WriteView(saved);
+    // The step of the simulation shown: satviz-render steps the scene as far, to the same bits.
+    saved.view.simSteps = sim_.Error().empty() ? sim_.Shown() : 0;
     return saved;
 }
 
@@ -231,23 +257,63 @@ bool App::BodyExists(int index) const
 
 void App::BeginEdit()
 {
+    if (!document_.EditOpen())
+    {
+        stateTaken_ = false;
+        sim_.SetPlaying(false);
+    }
     document_.BeginEdit(viewer_.Choices());
 }
 
 void App::EndEdit()
 {
     document_.CommitEdit();
+    stateTaken_ = false;
+}
+
+void App::TakeShownState()
+{
+    if (stateTaken_ || sim_.Shown() == 0 || !sim_.Error().empty())
+    {
+        return;
+    }
+    stateTaken_ = true;
+    const int step = sim_.Shown();
+    const Scene& shown = sim_.ShownScene();
+    for (size_t i = 0; i < shown.bodies.size(); ++i)
+    {
+        Body& body = document_.EditBody(i);
+        body.position = shown.bodies[i].position;
+        body.angle = shown.bodies[i].angle;
+        body.velocity = shown.bodies[i].velocity;
+        body.angularVelocity = shown.bodies[i].angularVelocity;
+    }
+    SetStatus("Edited the bodies as they are at step " + std::to_string(step) +
+                  ": that state is now the scene, step 0 (ctrl+z goes back to step " + std::to_string(step) + ")",
+              false);
+}
+
+Body& App::EditBody(int index)
+{
+    TakeShownState();
+    return document_.EditBody(static_cast<size_t>(index));
+}
+
+const Scene& App::ShownScene() const
+{
+    return sim_.Shown() > 0 && sim_.Error().empty() ? sim_.ShownScene() : document_.GetScene();
 }
 
 void App::MoveBody(int index, Vec2 position)
 {
-    if (!BodyExists(index))
+    // No change is no edit: a click on a body at a later step leaves that step shown.
+    if (!BodyExists(index) || ShownScene().bodies[static_cast<size_t>(index)].position == position)
     {
         return;
     }
     const bool single = !document_.EditOpen();
     BeginEdit();
-    document_.EditBody(static_cast<size_t>(index)).position = position;
+    EditBody(index).position = position;
     if (single)
     {
         EndEdit();
@@ -257,13 +323,14 @@ void App::MoveBody(int index, Vec2 position)
 
 void App::TurnBody(int index, double angle)
 {
-    if (!BodyExists(index))
+    // No change is no edit: a click on a body at a later step leaves that step shown.
+    if (!BodyExists(index) || ShownScene().bodies[static_cast<size_t>(index)].angle == angle)
     {
         return;
     }
     const bool single = !document_.EditOpen();
     BeginEdit();
-    document_.EditBody(static_cast<size_t>(index)).angle = angle;
+    EditBody(index).angle = angle;
     if (single)
     {
         EndEdit();
@@ -273,13 +340,14 @@ void App::TurnBody(int index, double angle)
 
 void App::SetVelocity(int index, Vec2 velocity)
 {
-    if (!BodyExists(index))
+    // No change is no edit: a click on a body at a later step leaves that step shown.
+    if (!BodyExists(index) || ShownScene().bodies[static_cast<size_t>(index)].velocity == velocity)
     {
         return;
     }
     const bool single = !document_.EditOpen();
     BeginEdit();
-    document_.EditBody(static_cast<size_t>(index)).velocity = velocity;
+    EditBody(index).velocity = velocity;
     if (single)
     {
         EndEdit();
@@ -293,12 +361,16 @@ bool App::MoveVertex(int index, int vertex, Vec2 world)
     {
         return false;
     }
-    const Body& body = document_.GetScene().bodies[static_cast<size_t>(index)];
+    const Body& body = ShownScene().bodies[static_cast<size_t>(index)];
     if (body.shape.type != ShapeType::Polygon || vertex < 0 || vertex >= body.shape.polygon.Count())
     {
         return false;
     }
     std::vector<Vec2> vertices(body.shape.polygon.Vertices().begin(), body.shape.polygon.Vertices().end());
+    if (vertices[static_cast<size_t>(vertex)] == InvTransformPoint(body.Xf(), world))
+    {
+        return true;
+    }
     vertices[static_cast<size_t>(vertex)] = InvTransformPoint(body.Xf(), world);
     PolygonResult result = MakePolygon(vertices);
     if (!result.Ok())
@@ -316,7 +388,7 @@ bool App::MoveVertex(int index, int vertex, Vec2 world)
     }
     const bool single = !document_.EditOpen();
     BeginEdit();
-    document_.EditBody(static_cast<size_t>(index)).shape.polygon = std::move(result.polygon);
+    EditBody(index).shape.polygon = std::move(result.polygon);
     if (single)
     {
         EndEdit();
@@ -329,6 +401,7 @@ bool App::MoveVertex(int index, int vertex, Vec2 world)
 void App::AddBody(Shape shape, const std::string& stem)
 {
     BeginEdit();
+    TakeShownState();
     Body body;
     body.name = UniqueName(document_.GetScene(), stem);
     body.shape = std::move(shape);
@@ -354,6 +427,7 @@ void App::DeleteSelected()
         return;
     }
     BeginEdit();
+    TakeShownState();
     const std::string name = document_.GetScene().bodies[static_cast<size_t>(selected_)].name;
     document_.RemoveBody(static_cast<size_t>(selected_));
     selected_ = -1;
@@ -445,10 +519,118 @@ void App::PlaceCanvas(ScreenPoint origin, int width, int height)
 
 void App::Refresh()
 {
-    if (viewer_.Refresh(document_.GetScene()) && !viewer_.Setup().Ok())
+    const Scene& scene = document_.GetScene();
+    if (!sim_.StartedFrom(scene))
+    {
+        const int was = sim_.Shown();
+        sim_.Restart(scene, -1, -1);
+        if (was > 0 && sim_.Shown() > 0 && !document_.EditOpen())
+        {
+            SetStatus("Back at step " + std::to_string(sim_.Shown()) + " of the simulation", false);
+        }
+    }
+    bool fresh = false;
+    if (sim_.Shown() > 0 && sim_.Error().empty())
+    {
+        Scene shown = scene;
+        CopyWorldState(sim_.Record().world, shown);
+        // The scene's caption describes it as written, at step 0.
+        char caption[120];
+        std::snprintf(caption, sizeof caption, "After %d step%s of the simulation (time %.4g)", sim_.Shown(),
+                      sim_.Shown() == 1 ? "" : "s", sim_.Record().world.time);
+        shown.view.caption = caption;
+        fresh = viewer_.Refresh(shown);
+    }
+    else
+    {
+        fresh = viewer_.Refresh(scene);
+    }
+    if (viewer_.Setup().Ok())
+    {
+        sim_.ChoosePair(viewer_.Setup().study.bodyA, viewer_.Setup().study.bodyB);
+    }
+    viewer_.SetSim(sim_.Error().empty() ? &sim_.Record() : nullptr);
+    if (fresh && !viewer_.Setup().Ok())
     {
         SetStatus(viewer_.Setup().error, true);
     }
+}
+
+// [SECTION] The simulation
+
+void App::SimPlay(bool playing)
+{
+    sim_.SetPlaying(playing);
+    if (playing && !sim_.Error().empty())
+    {
+        SetStatus("This scene cannot be stepped as a world: " + sim_.Error(), true);
+    }
+}
+
+void App::SimForward()
+{
+    sim_.SetPlaying(false);
+    sim_.StepForward();
+    Refresh();
+}
+
+void App::SimBack()
+{
+    sim_.SetPlaying(false);
+    sim_.StepBack();
+    Refresh();
+}
+
+void App::SimShowStep(int step)
+{
+    sim_.SetPlaying(false);
+    sim_.ShowStep(step);
+    Refresh();
+}
+
+void App::SimReset()
+{
+    SimShowStep(0);
+}
+
+void App::SimSpeed(double stepsPerSecond)
+{
+    sim_.SetSpeed(stepsPerSecond);
+}
+
+void App::SimChooseContact(int a, int b)
+{
+    const Scene& scene = document_.GetScene();
+    if (a < 0 || b < 0 || a >= static_cast<int>(scene.bodies.size()) || b >= static_cast<int>(scene.bodies.size()))
+    {
+        return;
+    }
+    SetPair(scene.bodies[static_cast<size_t>(a)].name, scene.bodies[static_cast<size_t>(b)].name);
+}
+
+void App::SetMaterial(int index, bool isStatic, double density, const Material& material)
+{
+    if (!BodyExists(index))
+    {
+        return;
+    }
+    const Body& now = ShownScene().bodies[static_cast<size_t>(index)];
+    if (now.isStatic == isStatic && now.density == density && now.material.restitution == material.restitution &&
+        now.material.friction == material.friction && now.material.staticFriction == material.staticFriction)
+    {
+        return;
+    }
+    const bool single = !document_.EditOpen();
+    BeginEdit();
+    Body& body = EditBody(index);
+    body.isStatic = isStatic;
+    body.density = density;
+    body.material = material;
+    if (single)
+    {
+        EndEdit();
+    }
+    Refresh();
 }
 
 void App::TakeFinishedTest()

@@ -9,6 +9,7 @@
 #include "lessons.h"
 #include "panels.h"
 #include "recent_files.h"
+#include "simulation.h"
 #include "viewer.h"
 
 #include <satviz/render/figure.h>
@@ -27,12 +28,15 @@ namespace satviz
 /// fills them in (GLFW key codes in main.cpp), tests pick their own.
 struct AppKeys
 {
-    int s = 'S';  ///< ctrl+s saves
-    int o = 'O';  ///< ctrl+o opens
-    int e = 'E';  ///< ctrl+e exports a PNG
-    int q = 'Q';  ///< ctrl+q quits
-    int f = 'F';  ///< f frames the pair
-    int f1 = 290; ///< F1 shows the help
+    int s = 'S';      ///< ctrl+s saves
+    int o = 'O';      ///< ctrl+o opens
+    int e = 'E';      ///< ctrl+e exports a PNG
+    int q = 'Q';      ///< ctrl+q quits
+    int f = 'F';      ///< f frames the pair
+    int f1 = 290;     ///< F1 shows the help
+    int p = 'P';      ///< p plays or pauses the simulation
+    int period = '.'; ///< . shows the simulation's next step
+    int comma = ',';  ///< , shows the simulation's step before
 };
 
 /// Start-up choices of the app.
@@ -175,6 +179,32 @@ class App
     /// Places the canvas in the window (its first frame, a resize): a new size fits the figure to it.
     void PlaceCanvas(ScreenPoint origin, int width, int height);
 
+    // The simulation: the scene stepped as a world. Step 0 is the document's scene; an edit of the bodies at a
+    // later step is an edit of the state at that step: that state, with the change, becomes the scene (and undo
+    // brings back the run it was made in, at that step).
+
+    /// The simulation of the document's scene.
+    const Simulation& GetSimulation() const { return sim_; }
+    /// The scene as the canvas shows it: the document's scene with its bodies where the simulation has them at the
+    /// step shown.
+    const Scene& ShownScene() const;
+    /// Plays or pauses the simulation.
+    void SimPlay(bool playing);
+    /// Shows the simulation's next step, taking it when it is the latest; pauses.
+    void SimForward();
+    /// Shows the simulation's step before; pauses.
+    void SimBack();
+    /// Shows step `step` of the history (the time slider); pauses.
+    void SimShowStep(int step);
+    /// Goes back to step 0, the scene as written; pauses.
+    void SimReset();
+    /// Sets the simulation's speed in steps per second.
+    void SimSpeed(double stepsPerSecond);
+    /// Shows the solver's response on the contact of bodies `a` and `b` (the figure's pair becomes them).
+    void SimChooseContact(int a, int b);
+    /// Sets body `index`'s material, static or dynamic and density, as one edit.
+    void SetMaterial(int index, bool isStatic, double density, const Material& material);
+
     // Lessons.
 
     /// Opens lesson `index` of Lessons(): its text in the lesson window and its first scene (asking first when the
@@ -209,6 +239,9 @@ class App
     // AppOptions::backgroundVertices is tested on a worker thread: the figure keeps showing the last finished test
     // until Frame() takes the new one in.
     void Refresh();
+    // An edit at a later step than 0 starts from the state shown: it becomes the document's bodies, once per edit.
+    Body& EditBody(int index);
+    void TakeShownState();
     void TakeFinishedTest();
     void ChangeChoices(const ViewChoices& choices);
     void ClearError();
@@ -218,6 +251,8 @@ class App
     AppOptions options_;
     Document document_;
     Viewer viewer_;
+    Simulation sim_;
+    bool stateTaken_ = false; // this edit already took the simulation's state
     Panels panels_;
     RecentFiles recent_;
     int selected_ = -1;

@@ -142,7 +142,7 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
 {
     const ImGuiIO& io = ImGui::GetIO();
     const Viewer& viewer = app_.GetViewer();
-    const std::vector<Body>& bodies = app_.GetDocument().GetScene().bodies;
+    const std::vector<Body>& bodies = app_.ShownScene().bodies;
     const ScreenPoint mouse{io.MousePos.x - origin.x, io.MousePos.y - origin.y};
     const Vec2 world = ToWorld(viewer.Camera(), mouse);
     if (hovered && io.MouseWheel != 0.0f)
@@ -185,7 +185,7 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
         }
         if (drag_ == DragKind::None)
         {
-            const int hit = BodyAt(viewer, app_.GetDocument().GetScene(), world);
+            const int hit = BodyAt(viewer, app_.ShownScene(), world);
             app_.Select(hit);
             drag_ = hit < 0 ? DragKind::Pan : io.KeyShift ? DragKind::Rotate : DragKind::Body;
         }
@@ -255,7 +255,7 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
 void Panels::Handles(ImDrawList* list, ImVec2 origin)
 {
     const int selected = app_.Selected();
-    const std::vector<Body>& bodies = app_.GetDocument().GetScene().bodies;
+    const std::vector<Body>& bodies = app_.ShownScene().bodies;
     if (selected < 0 || selected >= static_cast<int>(bodies.size()))
     {
         return;

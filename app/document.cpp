@@ -41,16 +41,19 @@ OpenResult Document::Open(const std::string& path, const std::string& bundledDir
         opened.error = path + ": bodies: the app needs at least two bodies to test";
         return opened;
     }
-    // A view that asks for rigid-body steps is shown where they leave the bodies, as satviz-render draws it. The
-    // scene then holds that state, its sim_steps back to 0, so that a save or an export pictures what the canvas
-    // shows.
+    // A view that asks for rigid-body steps is shown where they leave the bodies, as satviz-render draws it: the
+    // app's simulation takes them from the scene as written, which the document keeps. A state they would leave
+    // beyond what a scene holds is refused here, as satviz-render refuses it.
     opened.simSteps = result.scene.view.simSteps;
-    if (const std::string error = SimulateScene(result.scene, opened.simSteps); !error.empty())
+    if (opened.simSteps > 0)
     {
-        opened.error = path + ": " + error;
-        return opened;
+        Scene stepped = result.scene;
+        if (const std::string error = SimulateScene(stepped, opened.simSteps); !error.empty())
+        {
+            opened.error = path + ": " + error;
+            return opened;
+        }
     }
-    result.scene.view.simSteps = 0;
     scene_ = std::move(result.scene);
     file_ = path;
     std::error_code code;

@@ -20,14 +20,15 @@ struct OpenResult
 {
     bool ok = false;   ///< the scene is open
     std::string error; ///< why not: one line naming the file and the field
-    int simSteps = 0;  ///< the rigid-body steps its view block asked for, taken before it was opened
+    int simSteps = 0;  ///< the rigid-body steps its view block asks for, which the simulation takes on opening
 };
 
 /// The scene being edited, its file, whether it has unsaved changes, and its undo and redo history.
 class Document
 {
   public:
-    /// Opens the scene file `path`, stepped by its view's sim_steps (which are then back at 0). A file in
+    /// Opens the scene file `path`, as written (its view's sim_steps are checked: they must leave a state a scene
+    /// holds). A file in
     /// `bundledDir` (the bundled scenes) opens read-only: saving asks for another file. On failure the document
     /// stays as it was.
     OpenResult Open(const std::string& path, const std::string& bundledDir);

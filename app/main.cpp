@@ -293,6 +293,9 @@ int main(int argc, char** argv)
         cli.add_option("--measure-fps", measureFrames,
                        "Run this many frames (at least 1) without waiting for the display, print the frame rate, "
                        "and exit; the scene is not added to the Recent list");
+    bool play = false;
+    cli.add_flag("--play", play,
+                 "Start the scene's simulation playing (with --measure-fps: the frame rate while it plays)");
     int lessonNumber = 0;
     const CLI::Option* lessonOption = cli.add_option(
         "--lesson", lessonNumber, "Open lesson N of tutorials/ (from 1) beside the canvas, with its first scene");
@@ -377,6 +380,9 @@ int main(int argc, char** argv)
     options.keys.q = GLFW_KEY_Q;
     options.keys.f = GLFW_KEY_F;
     options.keys.f1 = GLFW_KEY_F1;
+    options.keys.p = GLFW_KEY_P;
+    options.keys.period = GLFW_KEY_PERIOD;
+    options.keys.comma = GLFW_KEY_COMMA;
     satviz::App app(fonts, options);
     const std::string renderer = FindRenderer(programDir);
     const std::string initial = sceneFile.empty() ? options.scenesDir + "/overlapping_boxes.json" : sceneFile;
@@ -390,6 +396,11 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "satviz: --lesson: there are %zu lessons, no lesson %d\n", app.Lessons().size(),
                      lessonNumber);
         return 2;
+    }
+
+    if (play)
+    {
+        app.SimPlay(true);
     }
 
     using Clock = std::chrono::steady_clock;
@@ -485,9 +496,11 @@ int main(int argc, char** argv)
             if (frame == 10 + measureFrames)
             {
                 const double seconds = std::chrono::duration<double>(Clock::now() - measureStart).count();
-                std::printf("satviz: %d frames in %.3f s: %.1f frames per second (%zu bodies, %dx%d window)\n",
+                std::printf("satviz: %d frames in %.3f s: %.1f frames per second (%zu bodies, %dx%d window%s)\n",
                             measureFrames, seconds, measureFrames / seconds, app.GetDocument().GetScene().bodies.size(),
-                            framebufferWidth, framebufferHeight);
+                            framebufferWidth, framebufferHeight,
+                            play ? (", simulation at step " + std::to_string(app.GetSimulation().Shown())).c_str()
+                                 : "");
                 break;
             }
         }

@@ -13,9 +13,11 @@
 
 #include <satviz/render/describe.h>
 #include <satviz/render/layers.h>
+#include <satviz/render/response_steps.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
@@ -214,6 +216,18 @@ void Panels::Shortcuts()
             app_.RequestQuit();
         }
         return;
+    }
+    if (Pressed(k.p))
+    {
+        app_.SimPlay(!app_.GetSimulation().Playing());
+    }
+    if (Pressed(k.period))
+    {
+        app_.SimForward();
+    }
+    if (Pressed(k.comma))
+    {
+        app_.SimBack();
     }
     const Viewer& viewer = app_.GetViewer();
     if (PressedNamed(ImGuiKey_Space))
@@ -427,6 +441,7 @@ void Panels::SidePanel()
         WrappedTextDisabled(document.GetScene().description);
     }
     ImGui::Separator();
+    SimulationControls();
     if (app_.GetViewer().Setup().Ok())
     {
         StepControls();
@@ -712,7 +727,7 @@ void Panels::Inspector()
         ImGui::Unindent();
     }
     const int selected = app_.Selected();
-    const std::vector<Body>& bodies = app_.GetDocument().GetScene().bodies;
+    const std::vector<Body>& bodies = app_.ShownScene().bodies;
     if (selected < 0 || selected >= static_cast<int>(bodies.size()))
     {
         return;
@@ -762,6 +777,248 @@ void Panels::Inspector()
     if (ImGui::IsItemDeactivated())
     {
         app_.EndEdit();
+    }
+    Materials(selected);
+}
+
+// The selected body's material: static or dynamic, density, restitution and frictions, each field one edit from
+// the moment it is grabbed to the moment it is let go, within the values a scene file accepts.
+void Panels::Materials(int selected)
+{
+    const Body& body = app_.ShownScene().bodies[static_cast<size_t>(selected)];
+    bool isStatic = body.isStatic;
+    double density = body.density;
+    Material material = body.material;
+    bool changed = false;
+    bool single = false;
+    auto field = [&](const char* label, double* value, double low, double high, const char* tip) {
+        const bool moved = ImGui::DragScalar(label, ImGuiDataType_Double, value, 0.01f, &low, &high, "%.3g",
+                                             ImGuiSliderFlags_AlwaysClamp);
+        if (ImGui::IsItemHovered())
+        {
+            ImGui::SetTooltip("%s", tip);
+        }
+        if (ImGui::IsItemActivated())
+        {
+            app_.BeginEdit();
+        }
+        changed = changed || moved;
+        return ImGui::IsItemDeactivated();
+    };
+    if (ImGui::Checkbox("static (never moves)", &isStatic))
+    {
+        changed = true;
+        single = true;
+    }
+    bool ended = false;
+    if (!isStatic)
+    {
+        ended = field("density", &density, 1e-3, 1e6, "mass per unit area") || ended;
+    }
+    ended = field("restitution", &material.restitution, 0.0, 1.0,
+                  "bounce: the ratio of the separating to the approaching normal speed (0: a dead stop, 1: elastic)") ||
+            ended;
+    ended = field("friction", &material.friction, 0.0, 10.0,
+                  "dynamic friction: while sliding, the friction impulse is this times the normal impulse") ||
+            ended;
+    ended = field("static friction", &material.staticFriction, 0.0, 10.0,
+                  "a contact sticks while the friction impulse it needs is at most this times the normal impulse") ||
+            ended;
+    if (changed)
+    {
+        app_.SetMaterial(selected, isStatic, density, material);
+    }
+    if (ended && !single)
+    {
+        app_.EndEdit();
+    }
+}
+
+// [SECTION] Side panel: the simulation
+
+namespace
+{
+
+// The state of the world at the step shown, one line for scripts that drive the window (the end-to-end test
+// compares it with satviz-sim): every number printed so that it reads back as the same double.
+void PrintState(const Simulation& sim)
+{
+    std::string line = "satviz: state step " + std::to_string(sim.Shown());
+    char number[40];
+    for (const RigidBody& body : sim.Record().world.bodies)
+    {
+        for (const double v :
+             {body.position.x, body.position.y, body.angle, body.velocity.x, body.velocity.y, body.angularVelocity})
+        {
+            std::snprintf(number, sizeof number, " %.17g", v + 0.0);
+            line += number;
+        }
+    }
+    std::printf("%s\n", line.c_str());
+    std::fflush(stdout);
+}
+
+} // namespace
+
+void Panels::SimulationControls()
+{
+    const Simulation& sim = app_.GetSimulation();
+    if (!ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen))
+    {
+        return;
+    }
+    if (!sim.Error().empty())
+    {
+        WrappedTextDisabled("This scene cannot be stepped as a world: " + sim.Error());
+        return;
+    }
+    if (ImGui::Button("Reset"))
+    {
+        app_.SimReset();
+    }
+    Announce("simulation Reset");
+    ImGui::SameLine();
+    if (ImGui::Button("< Back"))
+    {
+        app_.SimBack();
+    }
+    Announce("simulation Back");
+    ImGui::SameLine();
+    if (ImGui::Button(sim.Playing() ? "Pause###play" : "Play###play", ImVec2(60.0f, 0.0f)))
+    {
+        app_.SimPlay(!sim.Playing());
+    }
+    Announce("simulation Play");
+    ImGui::SameLine();
+    if (ImGui::Button("Forward >"))
+    {
+        app_.SimForward();
+    }
+    Announce("simulation Forward");
+    ImGui::SameLine();
+    ImGui::TextDisabled("(P , .)");
+    if (ImGui::IsItemHovered())
+    {
+        ImGui::SetTooltip("P plays or pauses, ',' goes a step back, '.' a step forward");
+    }
+    int step = sim.Shown();
+    const int last = std::max(sim.Last(), sim.First() + 1);
+    if (ImGui::SliderInt("step", &step, sim.First(), last, "%d", ImGuiSliderFlags_AlwaysClamp))
+    {
+        app_.SimShowStep(step);
+    }
+    if (ImGui::IsItemHovered())
+    {
+        ImGui::SetTooltip("Scrubs through the steps taken so far (the last %d are kept)", sim.Last() - sim.First() + 1);
+    }
+    float speed = static_cast<float>(sim.Speed());
+    if (ImGui::SliderFloat("steps/s", &speed, 1.0f, 240.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
+    {
+        app_.SimSpeed(speed);
+    }
+    const SimRecord& record = sim.Record();
+    char line[160];
+    std::snprintf(line, sizeof line, "step %d, time %.4g (dt %.4g); %d step%s taken", sim.Shown(), record.world.time,
+                  record.dt, sim.Last(), sim.Last() == 1 ? "" : "s");
+    ImGui::TextUnformatted(line);
+    if (sim.First() > 0)
+    {
+        ImGui::TextDisabled("steps before %d are no longer held", sim.First());
+    }
+    if (!sim.Playing() && printedStep_ != sim.Shown())
+    {
+        printedStep_ = sim.Shown();
+        PrintState(sim);
+    }
+    if (sim.Playing())
+    {
+        printedStep_ = -1;
+    }
+    ResponseSteps();
+}
+
+// The step's contacts to choose from, and the solver's response on the chosen one, step by step (DescribeResponse:
+// the sentences the figure's response panel draws).
+void Panels::ResponseSteps()
+{
+    const Simulation& sim = app_.GetSimulation();
+    const SimRecord& record = sim.Record();
+    if (sim.Shown() == 0 || sim.Shown() == sim.First())
+    {
+        WrappedTextDisabled("Take a step to see the step's contacts and the solver's response.");
+        return;
+    }
+    const Scene& scene = app_.ShownScene();
+    const auto name = [&](int i) { return scene.bodies[static_cast<size_t>(i)].name; };
+    int shown = 0;
+    for (const WorldContact& contact : record.world.contacts)
+    {
+        shown += contact.guard ? 0 : 1;
+    }
+    ImGui::Text("Contacts of step %d: %d", sim.Shown(), shown);
+    const int chosenA = std::min(record.contact.bodyA, record.contact.bodyB);
+    const int chosenB = std::max(record.contact.bodyA, record.contact.bodyB);
+    if (shown > 0)
+    {
+        const float rows = static_cast<float>(std::min(shown, 5));
+        if (ImGui::BeginChild("##contacts", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 8.0f), true))
+        {
+            ImGuiListClipper clipper;
+            std::vector<const WorldContact*> list;
+            for (const WorldContact& contact : record.world.contacts)
+            {
+                if (!contact.guard)
+                {
+                    list.push_back(&contact);
+                }
+            }
+            clipper.Begin(static_cast<int>(list.size()));
+            while (clipper.Step())
+            {
+                for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i)
+                {
+                    const WorldContact& c = *list[static_cast<size_t>(i)];
+                    double separation = c.points[0].separation;
+                    for (int k = 1; k < c.pointCount; ++k)
+                    {
+                        separation = std::min(separation, c.points[k].separation);
+                    }
+                    char label[200];
+                    std::snprintf(label, sizeof label, "%s and %s: %d point%s, %s %.3g", name(c.a).c_str(),
+                                  name(c.b).c_str(), c.pointCount, c.pointCount == 1 ? "" : "s",
+                                  separation < 0.0 ? "overlap" : "gap", std::fabs(separation));
+                    if (ImGui::Selectable(label, c.a == chosenA && c.b == chosenB))
+                    {
+                        app_.SimChooseContact(c.a, c.b);
+                    }
+                    Announce("contact " + name(c.a) + " " + name(c.b));
+                }
+            }
+        }
+        ImGui::EndChild();
+    }
+    if (chosenA < 0)
+    {
+        return;
+    }
+    const std::vector<ResponseStep> steps = DescribeResponse(scene, record);
+    ImGui::Text("Response of %s and %s in step %d:", name(chosenA).c_str(), name(chosenB).c_str(), sim.Shown());
+    std::string printed;
+    for (const ResponseStep& step : steps)
+    {
+        ImGui::TextColored(ImVec4(0.2f, 0.35f, 0.6f, 1.0f), "%s", step.title.c_str());
+        ImGui::Indent();
+        WrappedText(step.sentence);
+        ImGui::Unindent();
+        printed += "satviz: response step " + std::to_string(sim.Shown()) + " " + name(chosenA) + " " + name(chosenB) +
+                   ": " + step.title + ": " + step.sentence + "\n";
+    }
+    if (!sim.Playing() && printed != printedResponse_)
+    {
+        // For scripts that drive the window: the steps shown, once per step and pair.
+        printedResponse_ = printed;
+        std::fputs(printed.c_str(), stdout);
+        std::fflush(stdout);
     }
 }
 
@@ -933,10 +1190,10 @@ void Panels::HelpOverlay()
                      ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoResize))
     {
         WrappedText("The Separating Axis Theorem: two convex shapes do not touch if and only if some axis "
-                           "exists on which their projections (intervals) do not overlap. For polygons it is "
-                           "enough to try the normals of their edges. The test projects both shapes on each axis "
-                           "in turn and stops at the first gap. When every axis overlaps, the axis needing the "
-                           "smallest push gives the minimum translation vector (MTV).");
+                    "exists on which their projections (intervals) do not overlap. For polygons it is "
+                    "enough to try the normals of their edges. The test projects both shapes on each axis "
+                    "in turn and stops at the first gap. When every axis overlaps, the axis needing the "
+                    "smallest push gives the minimum translation vector (MTV).");
         ImGui::Separator();
         ImGui::TextUnformatted("Mouse");
         HelpBullet("drag a body: move it;  shift-drag, or the round handle above it: turn it");

@@ -62,6 +62,9 @@ class Panels
     void LayerToggles();
     void SidePanel();
     void StepControls();
+    void SimulationControls();
+    void ResponseSteps();
+    void Materials(int selected);
     void Inspector();
     void StatusBar();
     void Popups();
@@ -90,6 +93,9 @@ class Panels
     // Announce: where each item named was last frame, and whether its place was printed.
     std::map<std::string, ImVec2> announceAt_;
     std::map<std::string, bool> announced_;
+    // The simulation's step and pair last printed for scripts (PrintShownState, ResponseSteps).
+    int printedStep_ = -1;
+    std::string printedResponse_;
 };
 
 } // namespace satviz

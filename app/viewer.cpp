@@ -165,8 +165,8 @@ void Viewer::Adopt(FigureSetup fresh, Scene studied)
     }
     else if (framed_)
     {
-        camera_ = Reframe(frame_, setup_.study, choices_.layers, !studied_.view.caption.empty(), canvasWidth_,
-                          canvasHeight_);
+        camera_ =
+            Reframe(frame_, setup_.study, choices_.layers, !studied_.view.caption.empty(), canvasWidth_, canvasHeight_);
     }
     camera_.width = canvasWidth_;
     camera_.height = canvasHeight_;
@@ -178,6 +178,7 @@ Figure Viewer::CurrentFigure() const
     Figure figure = setup_.figure;
     figure.view = camera_;
     figure.step = step_;
+    figure.sim = sim_;
     return figure;
 }
 

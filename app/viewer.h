@@ -52,8 +52,10 @@ class Viewer
     const FigureSetup& Setup() const { return setup_; }
     /// The scene that Setup() describes: the current one, or the one before the edits whose test still runs.
     const Scene& Studied() const { return studied_; }
-    /// The figure to paint now: the last test's, with the camera and the step.
+    /// The figure to paint now: the last test's, with the camera, the step and the stepped world.
     Figure CurrentFigure() const;
+    /// The stepped world the world's layers draw (not owned; it outlives the viewer's use of it); null: none.
+    void SetSim(const SimRecord* sim) { sim_ = sim; }
 
     /// The trace step shown, from 0.
     int Step() const { return step_; }
@@ -126,6 +128,7 @@ class Viewer
     void Adopt(FigureSetup fresh, Scene studied);
 
     int backgroundVertices_;
+    const SimRecord* sim_ = nullptr;
     ViewChoices choices_;
     FigureSetup setup_;
     Scene studied_;

@@ -7,7 +7,9 @@
 
 #include <satviz/collide.h>
 #include <satviz/render/describe.h>
+#include <satviz/render/response_steps.h>
 #include <satviz/render/wrap.h>
+#include <satviz/scene_world.h>
 
 #include <catch2/catch.hpp>
 #include <imgui_internal.h>
@@ -749,7 +751,8 @@ TEST_CASE("A scene that fails to load keeps the current one and shows the error"
     fs::remove(broken);
 }
 
-TEST_CASE("A scene whose view asks for sim_steps opens where the steps leave it, as satviz-render draws it", "[app]")
+TEST_CASE("A scene whose view asks for sim_steps opens at that step of its simulation, as satviz-render draws it",
+          "[app]")
 {
     Harness h(ScratchCopy("overlapping_boxes.json").string());
     const fs::path file = fs::temp_directory_path() / ("satviz-app-sim-" + std::to_string(::getpid()) + ".json");
@@ -761,12 +764,16 @@ TEST_CASE("A scene whose view asks for sim_steps opens where the steps leave it,
     h.Frames(2);
     CHECK(!h.app->StatusIsError());
     CHECK(h.app->Status().find("after 10 rigid-body steps") != std::string::npos);
-    CHECK(h.Doc().GetScene().bodies[1].position.y == Approx(-3.5).margin(1e-12));
-    CHECK(h.Doc().GetScene().bodies[1].velocity.y == Approx(-10.0).margin(1e-12));
-    // The scene holds the stepped state: saving or exporting it does not step it again.
-    CHECK(h.Doc().GetScene().view.simSteps == 0);
-    CHECK(h.app->SceneForSaving().view.simSteps == 0);
+    CHECK(h.app->GetSimulation().Shown() == 10);
+    CHECK(h.app->ShownScene().bodies[1].position.y == Approx(-3.5).margin(1e-12));
+    CHECK(h.app->ShownScene().bodies[1].velocity.y == Approx(-10.0).margin(1e-12));
+    CHECK(h.View().Studied().bodies[1].position.y == Approx(-3.5).margin(1e-12));
+    // The scene stays as written, and a save or an export asks for the same steps.
+    CHECK(h.Doc().GetScene().bodies[1].position.y == 2.0);
+    CHECK(h.app->SceneForSaving().view.simSteps == 10);
     CHECK(!h.Doc().Dirty());
+    h.app->SimReset();
+    CHECK(h.app->SceneForSaving().view.simSteps == 0);
     fs::remove(file);
 }
 
@@ -1185,7 +1192,8 @@ TEST_CASE("A scene that frames itself keeps its framing, scaled to the canvas le
         }
         // The corners of the figure's scene area, on the canvas: inside it, and as wide or as high as it.
         const ScreenPoint low = ToScreen(camera, ToWorld(authored, {0.0f, from.sceneBottom}));
-        const ScreenPoint high = ToScreen(camera, ToWorld(authored, {static_cast<float>(authored.width), from.sceneTop}));
+        const ScreenPoint high =
+            ToScreen(camera, ToWorld(authored, {static_cast<float>(authored.width), from.sceneTop}));
         CHECK(low.x >= -0.5f);
         CHECK(high.x <= static_cast<float>(viewer.CanvasWidth()) + 0.5f);
         CHECK(high.y >= to.sceneTop - 0.5f);
@@ -1291,4 +1299,219 @@ TEST_CASE("The bundled scenes are found from the program's folder: the data fold
     fs::create_directories(root / "elsewhere" / "bin");
     CHECK(FindBundledScenes(root / "elsewhere" / "bin", "../share/satviz").empty());
     fs::remove_all(root);
+}
+
+// [SECTION] The simulation
+
+namespace
+{
+
+// The world satviz-sim steps: MakeWorld of the scene file, then Step by its dt, `steps` times.
+World SteppedAsSatvizSim(const fs::path& file, int steps)
+{
+    const SceneResult loaded = LoadScene(file.string());
+    REQUIRE(loaded.Ok());
+    World world = MakeWorld(loaded.scene);
+    for (int i = 0; i < steps; ++i)
+    {
+        Step(world, loaded.scene.world.dt);
+    }
+    return world;
+}
+
+// True when both worlds hold the same bits in every body's position, angle, velocity and spin.
+bool SameState(const World& a, const World& b)
+{
+    if (a.bodies.size() != b.bodies.size() || a.time != b.time)
+    {
+        return false;
+    }
+    for (size_t i = 0; i < a.bodies.size(); ++i)
+    {
+        const RigidBody& p = a.bodies[i];
+        const RigidBody& q = b.bodies[i];
+        if (!(p.position == q.position) || p.angle != q.angle || !(p.velocity == q.velocity) ||
+            p.angularVelocity != q.angularVelocity)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+TEST_CASE("The simulation plays, pauses, steps back and forward, each step the bits satviz-sim's world has",
+          "[app][sim]")
+{
+    const fs::path file = ScratchCopy("l15_slope.json");
+    Harness h(file.string());
+    const Simulation& sim = h.app->GetSimulation();
+    REQUIRE(sim.Error().empty());
+    CHECK(sim.Shown() == 0);
+    h.Key('P');
+    CHECK(sim.Playing());
+    h.Frames(30); // 1/60 s a frame at 60 steps a second: about one step a frame
+    h.Key('P');
+    CHECK_FALSE(sim.Playing());
+    const int played = sim.Shown();
+    CHECK(played >= 25);
+    CHECK(SameState(sim.Record().world, SteppedAsSatvizSim(file, played)));
+    // The figure shows the bodies where the world has them, and its world layers draw this record.
+    const Body& box = h.View().Studied().bodies[1];
+    CHECK(box.position == sim.Record().world.bodies[1].position);
+    CHECK(h.View().CurrentFigure().sim == &sim.Record());
+    h.Key(',');
+    h.Key(',');
+    CHECK(sim.Shown() == played - 2);
+    CHECK(SameState(sim.Record().world, SteppedAsSatvizSim(file, played - 2)));
+    // The record of the step shown is the step before taken again: its boxes and pairs are there.
+    CHECK(sim.Record().steps == played - 2);
+    CHECK_FALSE(sim.Record().lastStep.bounds.empty());
+    h.Key('.');
+    CHECK(sim.Shown() == played - 1);
+    CHECK(SameState(sim.Record().world, SteppedAsSatvizSim(file, played - 1)));
+    for (int i = 0; i < 3; ++i)
+    {
+        h.Key('.');
+    }
+    CHECK(sim.Shown() == played + 2);
+    CHECK(sim.Last() == played + 2);
+    CHECK(SameState(sim.Record().world, SteppedAsSatvizSim(file, played + 2)));
+    h.app->SimShowStep(5);
+    CHECK(SameState(sim.Record().world, SteppedAsSatvizSim(file, 5)));
+    // A save at a step keeps the scene as written and asks for the steps: the file steps to the same bits.
+    CHECK(h.app->SceneForSaving().view.simSteps == 5);
+    CHECK_FALSE(h.Doc().Dirty());
+    h.app->SimReset();
+    CHECK(sim.Shown() == 0);
+    CHECK(h.View().Studied().bodies[1].position == h.Doc().GetScene().bodies[1].position);
+}
+
+TEST_CASE("A drag while paused at a step edits the state at that step, and undo brings that step back", "[app][sim]")
+{
+    const fs::path file = ScratchCopy("l15_slope.json");
+    Harness h(file.string());
+    const Simulation& sim = h.app->GetSimulation();
+    for (int i = 0; i < 20; ++i)
+    {
+        h.Key('.');
+    }
+    REQUIRE(sim.Shown() == 20);
+    const World at20 = SteppedAsSatvizSim(file, 20);
+    const Vec2 grabbed = at20.bodies[1].position;
+    REQUIRE_FALSE(grabbed == h.Doc().GetScene().bodies[1].position);
+    // Clicking the box selects it: no edit, the step stays.
+    h.MoveTo(h.OnScreen(grabbed));
+    ImGui::GetIO().MouseDown[0] = true;
+    h.Frames(1);
+    ImGui::GetIO().MouseDown[0] = false;
+    h.Frames(1);
+    CHECK(h.app->Selected() == 1);
+    CHECK(sim.Shown() == 20);
+    CHECK(h.Doc().UndoDepth() == 0);
+    // Dragging it: the scene becomes the state of step 20 with the box moved.
+    h.Drag(h.OnScreen(grabbed), h.OnScreen(grabbed + Vec2{0.0, 0.5}));
+    CHECK(h.Doc().Dirty());
+    CHECK(h.Doc().UndoDepth() == 1);
+    const Body& box = h.Doc().GetScene().bodies[1];
+    CHECK(box.position.x == Approx(grabbed.x).margin(0.02));
+    CHECK(box.position.y == Approx(grabbed.y + 0.5).margin(0.02));
+    CHECK(box.velocity == at20.bodies[1].velocity);
+    CHECK(sim.Shown() == 0);
+    // Undo: the scene as written, and the run it was made in, at step 20.
+    REQUIRE(h.app->Undo());
+    CHECK_FALSE(h.Doc().Dirty());
+    CHECK(sim.Shown() == 20);
+    CHECK(SameState(sim.Record().world, at20));
+    // Redo: the edited state again, at its step 0.
+    REQUIRE(h.app->Redo());
+    CHECK(sim.Shown() == 0);
+    CHECK(h.Doc().GetScene().bodies[1].position.y == Approx(grabbed.y + 0.5).margin(0.02));
+}
+
+TEST_CASE("The response of a contact chosen from the step's list is the world's record of that pair", "[app][sim]")
+{
+    const fs::path file = ScratchCopy("l16_peg.json");
+    Harness h(file.string());
+    const Simulation& sim = h.app->GetSimulation();
+    const SceneResult loaded = LoadScene(file.string());
+    REQUIRE(loaded.Ok());
+    // The first step with a contact of a dynamic body, found by stepping the world alone.
+    World world = MakeWorld(loaded.scene);
+    int hit = 0;
+    for (int i = 1; i <= 200 && hit == 0; ++i)
+    {
+        Step(world, loaded.scene.world.dt);
+        if (std::any_of(world.contacts.begin(), world.contacts.end(), [](const WorldContact& c) { return !c.guard; }))
+        {
+            hit = i;
+        }
+    }
+    REQUIRE(hit > 0);
+    const WorldContact contact =
+        *std::find_if(world.contacts.begin(), world.contacts.end(), [](const WorldContact& c) { return !c.guard; });
+    h.app->SimShowStep(hit); // past the history: shows the latest
+    while (sim.Shown() < hit)
+    {
+        h.app->SimForward();
+    }
+    h.app->SimChooseContact(contact.a, contact.b);
+    h.Frames(2);
+    const ContactSolveTrace& shown = sim.Record().contact;
+    REQUIRE(shown.found);
+    // The same step taken by a world of its own, recording that pair.
+    World again = MakeWorld(loaded.scene);
+    for (int i = 1; i < hit; ++i)
+    {
+        Step(again, loaded.scene.world.dt);
+    }
+    ContactSolveTrace trace;
+    trace.bodyA = contact.a;
+    trace.bodyB = contact.b;
+    again.trace = &trace;
+    Step(again, loaded.scene.world.dt);
+    CHECK(shown.approachSpeed[0] == trace.approachSpeed[0]);
+    CHECK(shown.normalMass[0] == trace.normalMass[0]);
+    CHECK(shown.velocityAfter[1] == trace.velocityAfter[1]);
+    // The panel's sentences quote it: the effective mass to three decimals.
+    const std::vector<ResponseStep> steps = DescribeResponse(h.app->ShownScene(), sim.Record());
+    char mass[32];
+    std::snprintf(mass, sizeof mass, "%.3f kg", trace.normalMass[0]);
+    CHECK(std::any_of(steps.begin(), steps.end(),
+                      [&](const ResponseStep& s) { return s.sentence.find(mass) != std::string::npos; }));
+    // The figure's pair is the chosen contact's, an edit of the view that undo takes back.
+    const Scene& scene = h.Doc().GetScene();
+    CHECK(h.View().Choices().bodyA == scene.bodies[static_cast<size_t>(contact.a)].name);
+}
+
+TEST_CASE("Materials of the selected body are edits that undo restores and a save writes", "[app][sim]")
+{
+    const fs::path file = ScratchCopy("l14_head_on.json");
+    Harness h(file.string());
+    Material material;
+    material.restitution = 0.25;
+    material.friction = 0.4;
+    material.staticFriction = 0.6;
+    const Body before = h.Doc().GetScene().bodies[1];
+    h.app->SetMaterial(1, false, 2.5, material);
+    CHECK(h.Doc().Dirty());
+    CHECK(h.Doc().GetScene().bodies[1].density == 2.5);
+    // The simulation starts over from the changed scene: B is now heavier.
+    CHECK(h.app->GetSimulation().Record().world.bodies[1].mass ==
+          Approx(2.5 * before.shape.circle.radius * before.shape.circle.radius * 3.141592653589793));
+    h.app->SetMaterial(0, true, 1.0, h.Doc().GetScene().bodies[0].material);
+    CHECK(h.Doc().GetScene().bodies[0].isStatic);
+    REQUIRE(h.app->Undo());
+    CHECK_FALSE(h.Doc().GetScene().bodies[0].isStatic);
+    REQUIRE(h.app->Save(file.string()));
+    const SceneResult saved = LoadScene(file.string());
+    REQUIRE(saved.Ok());
+    CHECK(saved.scene.bodies[1].density == 2.5);
+    CHECK(saved.scene.bodies[1].material.restitution == 0.25);
+    CHECK(saved.scene.bodies[1].material.friction == 0.4);
+    CHECK(saved.scene.bodies[1].material.staticFriction == 0.6);
+    REQUIRE(h.app->Undo());
+    CHECK(h.Doc().GetScene().bodies[1].density == before.density);
+    CHECK(h.Doc().GetScene().bodies[1].material.restitution == before.material.restitution);
 }

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+// satviz app: the simulation of the document's scene: its world stepped from the scene as written, a bounded
+// history of the world's states for the time slider and the step back, and the record of the step shown (its
+// boxes, pairs and hits, and the solver's work on the chosen pair) that the world's layers draw. No ImGui here.
+#pragma once
+
+#include <satviz/scene.h>
+#include <satviz/sim_record.h>
+#include <satviz/world.h>
+
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace satviz
+{
+
+/// A scene stepped as a world one step at a time, with the states it went through. Step 0 is the scene as written;
+/// step k is k steps of its dt later, the same bits satviz-sim prints for step k.
+class Simulation
+{
+  public:
+    /// Most world states the history holds; older ones are dropped, and the slider starts at the oldest held.
+    static constexpr int kMaxStates = 1000;
+    /// Most body states (bodies times steps) the history holds, so that a large world keeps fewer steps:
+    /// 500 bodies keep 400 steps, 2000 bodies 100.
+    static constexpr long long kMaxBodyStates = 200000;
+
+    /// Starts over from `scene` at step 0, paused, recording the solver's work on the pair (pairA, pairB). The run
+    /// it replaces is kept aside when it took steps, and comes back, at the step it showed, when a later Restart
+    /// gives the scene it started from (undoing an edit made at a step). A scene that is not a valid world leaves
+    /// the simulation empty, Error() saying why.
+    void Restart(const Scene& scene, int pairA, int pairB);
+    /// True when the simulation was started from a scene with the same bodies, materials and world as `scene`.
+    bool StartedFrom(const Scene& scene) const;
+    /// Why the scene cannot be stepped; empty when it can.
+    const std::string& Error() const { return error_; }
+
+    /// The step shown.
+    int Shown() const { return shown_; }
+    /// The oldest step the history still holds.
+    int First() const { return first_; }
+    /// The latest step taken.
+    int Last() const { return first_ + static_cast<int>(states_.size()) - 1; }
+    /// Shows step `step`, clamped to [First(), Last()].
+    void ShowStep(int step);
+    /// Shows the next step, taking it when it is the latest.
+    void StepForward();
+    /// Shows the step before, when the history holds it.
+    void StepBack();
+
+    /// True while playing.
+    bool Playing() const { return playing_; }
+    /// Plays or pauses.
+    void SetPlaying(bool playing);
+    /// Steps per second while playing.
+    double Speed() const { return speed_; }
+    /// Sets the steps per second, in [1, 240].
+    void SetSpeed(double stepsPerSecond);
+    /// Lets `seconds` pass: while playing, one step every 1 / Speed() seconds (at most four in one call, so that a
+    /// slow frame does not make the next one slower). True when the step shown changed.
+    bool Advance(double seconds);
+    /// While playing, the seconds until Advance takes the next step.
+    double SecondsUntilNextStep() const;
+
+    /// Records the solver's work on the pair (pairA, pairB) in the step shown.
+    void ChoosePair(int pairA, int pairB);
+    /// The world at the step shown, with the record of the step that led to it (none at step 0).
+    const SimRecord& Record() const { return record_; }
+    /// The scene with its bodies where the world has them at the step shown.
+    const Scene& ShownScene() const { return shownScene_; }
+    /// The world's state at step `step`, which the history must hold.
+    const World& StateAt(int step) const { return states_[static_cast<size_t>(step - first_)]; }
+
+  private:
+    /// One run: a start scene and the states it went through.
+    struct Run
+    {
+        Scene start;
+        std::deque<World> states;
+        std::vector<SimSample> samples;
+        int first = 0;
+        int shown = 0;
+    };
+
+    void Record(int step);
+    void Drop();
+
+    Scene start_;
+    std::string error_;
+    std::deque<World> states_;       // states_[i] is the world at step first_ + i
+    std::vector<SimSample> samples_; // the totals of every step from 0 to Last()
+    int first_ = 0;
+    int shown_ = 0;
+    int pairA_ = -1;
+    int pairB_ = -1;
+    bool playing_ = false;
+    double speed_ = 60.0;
+    double clock_ = 0.0;
+    SimRecord record_;
+    Scene shownScene_;
+    bool haveAside_ = false;
+    Run aside_;
+};
+
+/// True when both scenes make the same world: the same bodies (shapes, states, static or dynamic, densities,
+/// materials) in the same order, and the same gravity and dt.
+bool SameWorld(const Scene& a, const Scene& b);
+
+} // namespace satviz
