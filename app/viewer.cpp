@@ -31,6 +31,15 @@ View Reframe(const SceneView& frame, const PairStudy& study, LayerMask layers, b
     return view;
 }
 
+// True when the scene's own framing leaves its scene almost no room in a figure of its own size with these layers
+// (the world's layers take the bottom of the figure for their panels): scaled to the canvas, that sliver would
+// show nothing, so the figure fits the pair instead.
+bool FrameSqueezed(const SceneView& frame, const PairStudy& study, LayerMask layers, bool titled)
+{
+    const FigureLayout from = LayoutFigure(study, layers, frame.width, frame.height, titled);
+    return from.sceneBottom - from.sceneTop < 0.25 * frame.height;
+}
+
 } // namespace
 
 Viewer::Viewer(int backgroundVertices) : backgroundVertices_(backgroundVertices) {}
@@ -159,7 +168,7 @@ void Viewer::Adopt(FigureSetup fresh, Scene studied)
         return;
     }
     ShowStep(onVerdict ? setup_.study.VerdictStep() : step_);
-    if (cameraFit_)
+    if (cameraFit_ || (framed_ && FrameSqueezed(frame_, setup_.study, choices_.layers, !studied_.view.caption.empty())))
     {
         camera_ = setup_.figure.view;
     }

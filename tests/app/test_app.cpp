@@ -1515,3 +1515,27 @@ TEST_CASE("Materials of the selected body are edits that undo restores and a sav
     CHECK(h.Doc().GetScene().bodies[1].density == before.density);
     CHECK(h.Doc().GetScene().bodies[1].material.restitution == before.material.restitution);
 }
+
+TEST_CASE("The world's layers leave a framed scene room: its bodies stay on the canvas above their panels",
+          "[app][sim]")
+{
+    Harness h(ScratchCopy("l14_head_on.json").string());
+    h.app->SetLayers(kLayerShapes | kLayerLabels | kLayerCaption | kLayerBroadphase | kLayerResponse | kLayerHits |
+                     kLayerPlots);
+    for (int i = 0; i < 23; ++i)
+    {
+        h.app->SimForward();
+    }
+    h.Frames(2);
+    const Viewer& viewer = h.View();
+    const FigureLayout layout =
+        LayoutFigure(viewer.Setup().study, viewer.Choices().layers, viewer.CanvasWidth(), viewer.CanvasHeight(), true);
+    for (const Body& body : h.app->ShownScene().bodies)
+    {
+        const ScreenPoint p = ToScreen(viewer.Camera(), body.position);
+        CHECK(p.x > 0.0f);
+        CHECK(p.x < static_cast<float>(viewer.CanvasWidth()));
+        CHECK(p.y > layout.sceneTop);
+        CHECK(p.y < layout.sceneBottom);
+    }
+}
