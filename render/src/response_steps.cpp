@@ -86,7 +86,19 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
     {
         std::string sentence = "In " + when + " " + a + " and " + b + " had no contact: they were farther apart than " +
                                "they could close within the step.";
-        if (trace.hits > 0)
+        // A pair with no body awake keeps its contact from the step it fell asleep in, but the world neither tests
+        // nor solves it: saying they were apart would contradict the contact drawn.
+        const std::vector<RigidBody>& start = record.before.empty() ? record.world.bodies : record.before;
+        const auto resting = [&](int i) {
+            const RigidBody& body = start[static_cast<size_t>(i)];
+            return body.type == BodyType::Static || !body.awake;
+        };
+        if (resting(lo) && resting(hi))
+        {
+            sentence = "In " + when + " " + a + " and " + b + " were asleep (or static): the world neither tests " +
+                       "nor solves their contact, and they rest where they are until something touches them.";
+        }
+        else if (trace.hits > 0)
         {
             sentence = "In " + when + " " + a + " and " + b + " had no contact at its start, but the sweep found " +
                        std::to_string(trace.hits) + (trace.hits == 1 ? " hit" : " hits") + ", the first at " +

@@ -153,6 +153,21 @@ TEST_CASE("World layers: the response before the pair meets says there was no co
     CHECK(canvas.InGroup("response").empty());
 }
 
+TEST_CASE("World layers: the response of a sleeping pair says it sleeps, not that it had no contact",
+          "[painter][world]")
+{
+    Stepped s = Step("l15_slope.json", 82);
+    // The box fell asleep on the slope: its contact is kept, but the solver did not see it in the step.
+    REQUIRE_FALSE(s.record.world.bodies[1].awake);
+    REQUIRE(std::any_of(s.record.world.contacts.begin(), s.record.world.contacts.end(),
+                        [](const WorldContact& c) { return c.a == 0 && c.b == 1 && !c.guard; }));
+    REQUIRE_FALSE(s.record.contact.found);
+    const std::vector<ResponseStep> steps = DescribeResponse(s.scene, s.record);
+    REQUIRE(steps.size() == 1);
+    CHECK(steps[0].sentence.find("asleep") != std::string::npos);
+    CHECK(steps[0].sentence.find("had no contact") == std::string::npos);
+}
+
 TEST_CASE("World layers: the broadphase draws a pair line between the boxes' centres for every pair tested, the "
           "counts, and hatches the sleeping bodies",
           "[painter][world]")
