@@ -28,6 +28,11 @@ struct Reader
     LessonBlock image;
     bool inCell = false; // inside a table row: cells are joined
     bool firstCell = true;
+    int quoteDepth = 0;     // nesting of block quotes
+    int details = 0;        // the <details> section being read (0: none)
+    int detailsCount = 0;   // sections so far
+    bool inSummary = false; // inside <summary>: text is the section's title
+    std::string summary;
 
     void Begin(LessonBlock::Kind kind, int level)
     {
@@ -35,6 +40,9 @@ struct Reader
         current = LessonBlock{};
         current.kind = kind;
         current.level = level;
+        current.quote = quoteDepth > 0;
+        current.details = details;
+        current.summary = details > 0 ? summary : std::string();
         open = true;
     }
 
@@ -61,7 +69,11 @@ struct Reader
 
     void Append(const std::string& text)
     {
-        if (inImage)
+        if (inSummary)
+        {
+            summary += text;
+        }
+        else if (inImage)
         {
             image.text += text;
         }
@@ -119,6 +131,10 @@ int EnterBlock(MD_BLOCKTYPE type, void* detail, void* user)
         r.Begin(LessonBlock::Kind::Rule, 0);
         r.Finish();
         break;
+    case MD_BLOCK_QUOTE:
+        r.Finish();
+        ++r.quoteDepth;
+        break;
     case MD_BLOCK_TR:
         r.Begin(LessonBlock::Kind::Paragraph, 0);
         r.inCell = true;
@@ -158,6 +174,10 @@ int LeaveBlock(MD_BLOCKTYPE type, void*, void* user)
     case MD_BLOCK_UL:
     case MD_BLOCK_OL:
         --r.listDepth;
+        break;
+    case MD_BLOCK_QUOTE:
+        r.Finish();
+        --r.quoteDepth;
         break;
     case MD_BLOCK_TR:
         r.inCell = false;
@@ -210,7 +230,35 @@ int Text(MD_TEXTTYPE type, const MD_CHAR* text, MD_SIZE size, void* user)
     switch (type)
     {
     case MD_TEXT_HTML:
-        break; // the lessons' check marks and other HTML are not shown
+        // <details><summary>S</summary> ... </details>: a section shown collapsed under S. The lessons' check
+        // marks and other HTML are not shown.
+        if (s == "<details>")
+        {
+            // The paragraph the tags open holds the summary only: it is no block of its own.
+            r.Finish();
+            r.details = ++r.detailsCount;
+            r.summary.clear();
+        }
+        else if (s == "<summary>")
+        {
+            r.inSummary = true;
+        }
+        else if (s == "</summary>")
+        {
+            r.inSummary = false;
+            const size_t first = r.summary.find_first_not_of(' ');
+            r.summary = first == std::string::npos ? "Details" : r.summary.substr(first);
+            while (r.summary.back() == ' ')
+            {
+                r.summary.pop_back();
+            }
+        }
+        else if (s == "</details>")
+        {
+            r.Finish();
+            r.details = 0;
+        }
+        break;
     case MD_TEXT_BR:
         r.Append(r.current.kind == LessonBlock::Kind::Code ? "\n" : " ");
         break;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // satviz app: the lessons of tutorials/ as the app shows them: found on disk, parsed from Markdown with md4c into
-// blocks of text, headings, list items, code and figures. No drawing here (see Panels::LessonWindow).
+// blocks of text, headings, list items, code and figures, marked when they lie in a quote or a <details>
+// section. No drawing here (see Panels::LessonWindow).
 #pragma once
 
 #include <string>
@@ -43,10 +44,19 @@ struct LessonBlock
     int level = 0;               ///< heading level or list depth
     std::string text;            ///< the block's text, inline markup flattened (links keep their text)
     std::string target;          ///< a figure's file, relative to the lesson
+    /// The block lies in a block quote (the lessons' "> **In satviz.**" boxes of implementation detail): the panel
+    /// draws it in a marked box, apart from the method.
+    bool quote = false;
+    /// The block lies in the n-th `<details>` section of the lesson (1, 2, ...; 0 outside one): the panel shows it
+    /// collapsed under `summary` until the student opens it (the exercises' answers).
+    int details = 0;
+    std::string summary; ///< the `<summary>` text of that section ("Answers")
 };
 
 /// Parses a lesson's Markdown (CommonMark with tables, as md4c reads it) into blocks. HTML comments (the lessons'
-/// check marks) are dropped; a table becomes one paragraph per row, its cells separated by " | ".
+/// check marks) are dropped; a table becomes one paragraph per row, its cells separated by " | ". Blocks of a
+/// block quote are marked `quote`; those between `<details><summary>S</summary>` and `</details>` carry the
+/// section's number and S, which is not a block of its own.
 std::vector<LessonBlock> ParseLesson(const std::string& markdown);
 
 /// Reads and parses a lesson file; false with a one-line error naming the file when it cannot be read.

@@ -1287,8 +1287,70 @@ void Panels::LessonWindow()
         ImGui::SetScrollY(0.0f);
         lessonScrollTop_ = false;
     }
+    // A block quote ("In satviz": implementation detail) is drawn in a tinted box with a coloured bar on its
+    // left, behind its blocks (drawn first on channel 1, the box after on channel 0). A <details> section (the
+    // exercises' answers) is a collapsed header the student opens; its state is the lesson's own.
+    ImDrawList* drawList = ImGui::GetWindowDrawList();
+    const float quoteIndent = 14.0f;
+    const float quotePad = 4.0f;
+    bool inQuote = false;
+    float quoteTop = 0.0f;
+    auto endQuote = [&]() {
+        if (!inQuote)
+        {
+            return;
+        }
+        inQuote = false;
+        ImGui::EndGroup();
+        const float bottom = ImGui::GetItemRectMax().y + quotePad;
+        ImGui::Unindent(quoteIndent);
+        drawList->ChannelsSetCurrent(0);
+        const float left = ImGui::GetCursorScreenPos().x;
+        const float right = left + ImGui::GetContentRegionAvail().x;
+        const ImGuiStyle& style = ImGui::GetStyle();
+        ImVec4 tint = style.Colors[ImGuiCol_FrameBg];
+        tint.w = 0.35f;
+        drawList->AddRectFilled(ImVec2(left, quoteTop), ImVec2(right, bottom), ImGui::GetColorU32(tint), 3.0f);
+        drawList->AddRectFilled(ImVec2(left, quoteTop), ImVec2(left + 4.0f, bottom),
+                                ImGui::GetColorU32(ImGuiCol_CheckMark));
+        drawList->ChannelsMerge();
+        ImGui::Dummy(ImVec2(0.0f, quotePad));
+    };
+    int details = 0;
+    bool detailsOpen = true;
     for (const LessonBlock& block : app_.LessonBlocks())
     {
+        if (inQuote && (!block.quote || block.details != details))
+        {
+            endQuote();
+        }
+        if (block.details != details)
+        {
+            details = block.details;
+            if (details > 0)
+            {
+                ImGui::Spacing();
+                ImGui::PushID(current);
+                ImGui::PushID(details);
+                detailsOpen = ImGui::CollapsingHeader(block.summary.c_str());
+                ImGui::PopID();
+                ImGui::PopID();
+            }
+        }
+        if (details > 0 && !detailsOpen)
+        {
+            continue;
+        }
+        if (block.quote && !inQuote)
+        {
+            inQuote = true;
+            drawList->ChannelsSplit(2);
+            drawList->ChannelsSetCurrent(1);
+            quoteTop = ImGui::GetCursorScreenPos().y;
+            ImGui::Dummy(ImVec2(0.0f, quotePad));
+            ImGui::Indent(quoteIndent);
+            ImGui::BeginGroup();
+        }
         switch (block.kind)
         {
         case LessonBlock::Kind::Heading:
@@ -1336,6 +1398,7 @@ void Panels::LessonWindow()
             break;
         }
     }
+    endQuote();
     ImGui::EndChild();
     ImGui::End();
     if (go != current)

@@ -1058,6 +1058,67 @@ satviz tutorials/scenes/x.json
     CHECK(ParseLesson("t = (minA \u2212 maxB) / s \u2264 1 \u2248 2")[0].text == "t = (minA - maxB) / s <= 1 ~ 2");
 }
 
+TEST_CASE("A lesson's block quotes are marked, and its <details> sections carry their summary", "[app][lessons]")
+{
+    const std::vector<LessonBlock> blocks = ParseLesson(R"(Before.
+
+> **In satviz.** The queries run in A's frame
+> on every step.
+>
+> - one item
+
+Between.
+
+<details><summary>Answers</summary>
+
+1. The first answer.
+2. The second answer.
+
+> A quoted answer.
+
+</details>
+
+After.
+)");
+    REQUIRE(blocks.size() == 8);
+    CHECK(blocks[0].text == "Before.");
+    CHECK(!blocks[0].quote);
+    CHECK(blocks[1].text == "In satviz. The queries run in A's frame on every step.");
+    CHECK(blocks[1].quote);
+    CHECK(blocks[2].kind == LessonBlock::Kind::Item);
+    CHECK(blocks[2].quote);
+    CHECK(blocks[3].text == "Between.");
+    CHECK(!blocks[3].quote);
+    CHECK(blocks[3].details == 0);
+    // The summary is the section's title, not a paragraph of its own.
+    CHECK(blocks[4].text == "The first answer.");
+    CHECK(blocks[4].details == 1);
+    CHECK(blocks[4].summary == "Answers");
+    CHECK(blocks[5].details == 1);
+    CHECK(blocks[6].text == "A quoted answer.");
+    CHECK(blocks[6].quote);
+    CHECK(blocks[6].details == 1);
+    CHECK(blocks[7].text == "After.");
+    CHECK(blocks[7].details == 0);
+    CHECK(blocks[7].summary.empty());
+
+    // Every lesson's answers are in a section of their own, and no summary is left as text.
+    for (const Lesson& lesson : FindLessons(std::string(SATVIZ_SOURCE_DIR) + "/tutorials"))
+    {
+        INFO(lesson.file);
+        std::vector<LessonBlock> parsed;
+        std::string error;
+        REQUIRE(LoadLesson(lesson.file, parsed, error));
+        bool answers = false;
+        for (const LessonBlock& block : parsed)
+        {
+            CHECK(block.text != "Answers");
+            answers = answers || (block.details > 0 && block.summary == "Answers");
+        }
+        CHECK(answers);
+    }
+}
+
 TEST_CASE("Help > Lessons lists the lessons, and opening one shows its text and loads its scene", "[app][lessons]")
 {
     Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
