@@ -20,6 +20,9 @@
 //               its own trace (entry and exit times per axis); SweepTime, the same without contact points.
 //   slide.h     MoveAndSlide: move a shape through a step, stopping at surfaces and sliding along them.
 //   raycast.h   RayCast(shape, xf, p1, p2): where a segment first meets a shape (bullets, picking).
+//   decompose.h Decompose: a simple polygon (concave, either orientation) cut into convex pieces, fast (ear
+//               clipping, Hertel-Mehlhorn) or fewest (exact dynamic programme); internal edges flagged; an outline
+//               that is not simple is refused naming the two edges that meet.
 //   cache.h     SatCache: a pair's separating face from the previous frame, tested first by Overlap next frame.
 //   textbook.h  TextbookCollide and TextbookSweep: the test as textbooks teach it (intervals on each distinct
 //               axis), for reading and for the teaching views; the queries above answer the same, faster.
@@ -55,6 +58,7 @@
 
 #include <satviz/cache.h>
 #include <satviz/collide.h>
+#include <satviz/decompose.h>
 #include <satviz/manifold.h>
 #include <satviz/math.h>
 #include <satviz/polygon.h>
