@@ -23,6 +23,8 @@
 //   decompose.h Decompose: a simple polygon (concave, either orientation) cut into convex pieces, fast (ear
 //               clipping, Hertel-Mehlhorn) or fewest (exact dynamic programme); internal edges flagged; an outline
 //               that is not simple is refused naming the two edges that meet.
+//   concave.h   Concave: the pieces of a decomposition as one shape, in Overlap, Collide (one manifold per pair,
+//               contacts along internal edges dropped or re-tested on the surface axes), Sweep and RayCast.
 //   cache.h     SatCache: a pair's separating face from the previous frame, tested first by Overlap next frame.
 //   textbook.h  TextbookCollide and TextbookSweep: the test as textbooks teach it (intervals on each distinct
 //               axis), for reading and for the teaching views; the queries above answer the same, faster.
@@ -58,6 +60,7 @@
 
 #include <satviz/cache.h>
 #include <satviz/collide.h>
+#include <satviz/concave.h>
 #include <satviz/decompose.h>
 #include <satviz/manifold.h>
 #include <satviz/math.h>
