@@ -64,7 +64,8 @@ Concave TileFloor(int count)
     for (int k = 0; k < count; ++k)
     {
         ConvexPiece piece;
-        piece.polygon = MakePolygon(std::vector<Vec2>{{k + 0.0, -1}, {k + 1.0, -1}, {k + 1.0, 0}, {k + 0.0, 0}}).polygon;
+        piece.polygon =
+            MakePolygon(std::vector<Vec2>{{k + 0.0, -1}, {k + 1.0, -1}, {k + 1.0, 0}, {k + 0.0, 0}}).polygon;
         piece.source = {0, 1, 2, 3};
         piece.internal = {false, k + 1 < count, false, k > 0};
         pieces.push_back(piece);
@@ -91,8 +92,8 @@ TEST_CASE("Concave Overlap and Collide agree with an exact test of the concave o
         const Transform xfA = MakeTransform(Vec2{rng.Uniform(-1, 1), rng.Uniform(-1, 1)}, rng.Uniform(0, 2 * kPi));
         const Transform xfB = MakeTransform(Vec2{rng.Uniform(-3, 3), rng.Uniform(-3, 3)}, rng.Uniform(0, 2 * kPi));
         const Shape b = MakeShape(convex);
-        const bool expected = OutlinesOverlap(Placed(outline, xfA), Placed({convex.Vertices().begin(),
-                                                                             convex.Vertices().end()}, xfB));
+        const bool expected =
+            OutlinesOverlap(Placed(outline, xfA), Placed({convex.Vertices().begin(), convex.Vertices().end()}, xfB));
         INFO("trial " << trial);
         REQUIRE(Overlap(concave, xfA, b, xfB) == expected);
         REQUIRE(Overlap(b, xfB, concave, xfA) == expected);
@@ -158,8 +159,7 @@ TEST_CASE("A box in an L's notch or between a comb's teeth does not collide; the
             CHECK(!Collide(concave, Transform{}, box, xfBox).manifold.overlap);
             CHECK(Overlap(MakeShape(ComputeHull(*c.outline).polygon), Transform{}, box, xfBox));
             // Dropped onto the notch's floor, it hits the floor (normal up), not the hull's top.
-            const ConcaveSweepResult hit =
-                Sweep(concave, Transform{}, Vec2{}, box, xfBox, Vec2{0, -3});
+            const ConcaveSweepResult hit = Sweep(concave, Transform{}, Vec2{}, box, xfBox, Vec2{0, -3});
             REQUIRE(hit.result.status == SweepStatus::Hit);
             CHECK(hit.result.normal.y == Approx(1.0));
             CHECK(hit.result.toi == Approx((c.where.y - 0.4 - 1.0) / 3.0));

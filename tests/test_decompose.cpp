@@ -9,8 +9,8 @@
 #include <catch2/catch.hpp>
 
 #include <chrono>
-#include <numeric>
 #include <map>
+#include <numeric>
 
 using namespace satviz;
 using namespace satviz::testing;
@@ -248,7 +248,7 @@ TEST_CASE("Decompositions of random simple polygons are exact convex partitions"
     {
         const int n = rng.Int(3, 40);
         std::vector<Vec2> points = (trial % 2 == 0) ? RandomStarPolygon(rng, n, rng.LogUniform(-3, 3), 0.1)
-                                                   : RandomUntangledPolygon(rng, std::min(n, 25), 10.0);
+                                                    : RandomUntangledPolygon(rng, std::min(n, 25), 10.0);
         if (rng.Chance(0.5))
         {
             points = Reversed(points);
@@ -337,14 +337,14 @@ TEST_CASE("Decomposition of the hard outlines", "[decompose]")
         outlines["near-collinear"] = floor;
     }
     // Exactly collinear vertices and repeated ones, clockwise.
-    outlines["collinear and repeated"] = {{0, 0}, {0, 2}, {0, 2}, {1, 2}, {2, 2}, {2, 1}, {1, 1},
-                                          {1, 0.5}, {1, 0}, {0.5, 0}, {0, 0}};
+    outlines["collinear and repeated"] = {{0, 0}, {0, 2},   {0, 2}, {1, 2},   {2, 2}, {2, 1},
+                                          {1, 1}, {1, 0.5}, {1, 0}, {0.5, 0}, {0, 0}};
     // Huge coordinates: an L far from the origin.
     {
         const double f = 1e11;
         const Vec2 o{9e11, -9e11};
-        outlines["huge"] = {o, o + Vec2{f, 0}, o + Vec2{f, 0.3 * f}, o + Vec2{0.3 * f, 0.3 * f}, o + Vec2{0.3 * f, f},
-                            o + Vec2{0, f}};
+        outlines["huge"] = {
+            o, o + Vec2{f, 0}, o + Vec2{f, 0.3 * f}, o + Vec2{0.3 * f, 0.3 * f}, o + Vec2{0.3 * f, f}, o + Vec2{0, f}};
     }
     for (const auto& [name, points] : outlines)
     {

@@ -57,8 +57,8 @@ BoundsT<S> WorldBox(const Side<S>& side, int i)
     if (side.concave != nullptr)
     {
         const BoundsT<S>& local = side.concave->parts[i].bounds;
-        for (Vec2T<S> corner : {local.min, Vec2T<S>{local.max.x, local.min.y}, local.max,
-                                Vec2T<S>{local.min.x, local.max.y}})
+        for (Vec2T<S> corner :
+             {local.min, Vec2T<S>{local.max.x, local.min.y}, local.max, Vec2T<S>{local.min.x, local.max.y}})
         {
             box = Grow(box, TransformPoint(side.xf, corner));
         }
@@ -76,8 +76,7 @@ BoundsT<S> WorldBox(const Side<S>& side, int i)
         const S r = side.single->circle.radius;
         box = {{c.x - r, c.y - r}, {c.x + r, c.y + r}};
     }
-    const S magnitude = std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.max.x),
-                                  std::abs(box.max.y)});
+    const S magnitude = std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.max.x), std::abs(box.max.y)});
     const S pad = S(16) * std::numeric_limits<S>::epsilon() * magnitude;
     box.min = box.min - Vec2T<S>{pad, pad};
     box.max = box.max + Vec2T<S>{pad, pad};
@@ -570,20 +569,20 @@ ConcaveRayHitT<S> RayCast(const ConcaveT<S>& shape, const TransformT<S>& xf, Vec
 
 #define SATVIZ_CONCAVE_INSTANTIATE(S)                                                                                  \
     template ConcaveT<S> MakeConcave(const std::vector<ConvexPieceT<S>>&);                                             \
-    template bool Overlap(const ConcaveT<S>&, const TransformT<S>&, const ShapeT<S>&, const TransformT<S>&);          \
-    template bool Overlap(const ShapeT<S>&, const TransformT<S>&, const ConcaveT<S>&, const TransformT<S>&);          \
-    template bool Overlap(const ConcaveT<S>&, const TransformT<S>&, const ConcaveT<S>&, const TransformT<S>&);        \
-    template ConcaveManifoldT<S> Collide(const ConcaveT<S>&, const TransformT<S>&, const ShapeT<S>&,                  \
+    template bool Overlap(const ConcaveT<S>&, const TransformT<S>&, const ShapeT<S>&, const TransformT<S>&);           \
+    template bool Overlap(const ShapeT<S>&, const TransformT<S>&, const ConcaveT<S>&, const TransformT<S>&);           \
+    template bool Overlap(const ConcaveT<S>&, const TransformT<S>&, const ConcaveT<S>&, const TransformT<S>&);         \
+    template ConcaveManifoldT<S> Collide(const ConcaveT<S>&, const TransformT<S>&, const ShapeT<S>&,                   \
                                          const TransformT<S>&);                                                        \
-    template ConcaveManifoldT<S> Collide(const ShapeT<S>&, const TransformT<S>&, const ConcaveT<S>&,                  \
+    template ConcaveManifoldT<S> Collide(const ShapeT<S>&, const TransformT<S>&, const ConcaveT<S>&,                   \
                                          const TransformT<S>&);                                                        \
-    template ConcaveManifoldT<S> Collide(const ConcaveT<S>&, const TransformT<S>&, const ConcaveT<S>&,                \
+    template ConcaveManifoldT<S> Collide(const ConcaveT<S>&, const TransformT<S>&, const ConcaveT<S>&,                 \
                                          const TransformT<S>&);                                                        \
-    template ConcaveSweepResultT<S> Sweep(const ConcaveT<S>&, const TransformT<S>&, Vec2T<S>, const ShapeT<S>&,       \
+    template ConcaveSweepResultT<S> Sweep(const ConcaveT<S>&, const TransformT<S>&, Vec2T<S>, const ShapeT<S>&,        \
                                           const TransformT<S>&, Vec2T<S>);                                             \
-    template ConcaveSweepResultT<S> Sweep(const ShapeT<S>&, const TransformT<S>&, Vec2T<S>, const ConcaveT<S>&,       \
+    template ConcaveSweepResultT<S> Sweep(const ShapeT<S>&, const TransformT<S>&, Vec2T<S>, const ConcaveT<S>&,        \
                                           const TransformT<S>&, Vec2T<S>);                                             \
-    template ConcaveSweepResultT<S> Sweep(const ConcaveT<S>&, const TransformT<S>&, Vec2T<S>, const ConcaveT<S>&,     \
+    template ConcaveSweepResultT<S> Sweep(const ConcaveT<S>&, const TransformT<S>&, Vec2T<S>, const ConcaveT<S>&,      \
                                           const TransformT<S>&, Vec2T<S>);                                             \
     template ConcaveRayHitT<S> RayCast(const ConcaveT<S>&, const TransformT<S>&, Vec2T<S>, Vec2T<S>);
 
