@@ -4,6 +4,7 @@
 #include <satviz/scene_world.h>
 
 #include <algorithm>
+#include <chrono>
 #include <utility>
 
 namespace satviz
@@ -199,8 +200,14 @@ bool Simulation::Advance(double seconds)
     }
     clock_ += seconds;
     const double interval = 1.0 / speed_;
+    // Several steps in one frame keep the speed when the frames are slower than the steps, as long as they are
+    // cheap: past kStepBudget seconds of stepping the simulation runs slower instead, so that a large world does
+    // not slow the frames down further.
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
     int taken = 0;
-    while (clock_ >= interval && taken < 4)
+    while (clock_ >= interval && taken < 4 &&
+           (taken == 0 || std::chrono::duration<double>(Clock::now() - start).count() < kStepBudget))
     {
         clock_ -= interval;
         StepForward();

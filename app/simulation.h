@@ -25,6 +25,8 @@ class Simulation
     /// Most body states (bodies times steps) the history holds, so that a large world keeps fewer steps:
     /// 500 bodies keep 400 steps, 2000 bodies 100.
     static constexpr long long kMaxBodyStates = 200000;
+    /// Seconds of stepping in one frame beyond which Advance takes no further step in that frame.
+    static constexpr double kStepBudget = 0.004;
 
     /// Starts over from `scene` at step 0, paused, recording the solver's work on the pair (pairA, pairB). The run
     /// it replaces is kept aside when it took steps, and comes back, at the step it showed, when a later Restart
@@ -57,8 +59,9 @@ class Simulation
     double Speed() const { return speed_; }
     /// Sets the steps per second, in [1, 240].
     void SetSpeed(double stepsPerSecond);
-    /// Lets `seconds` pass: while playing, one step every 1 / Speed() seconds (at most four in one call, so that a
-    /// slow frame does not make the next one slower). True when the step shown changed.
+    /// Lets `seconds` pass: while playing, one step every 1 / Speed() seconds (at most four in one call, and more
+    /// than one only while they take less than kStepBudget, so that a slow frame does not make the next one
+    /// slower). True when the step shown changed.
     bool Advance(double seconds);
     /// While playing, the seconds until Advance takes the next step.
     double SecondsUntilNextStep() const;
