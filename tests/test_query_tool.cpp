@@ -3,6 +3,7 @@
 // --touching against a brute-force oracle.
 
 #include <satviz/collide.h>
+#include <satviz/concave.h>
 #include <satviz/polygon.h>
 #include <satviz/scene.h>
 #include <satviz/sweep.h>
@@ -146,7 +147,7 @@ TEST_CASE("satviz-query answers every pair, in the documented form", "[query]")
 TEST_CASE("satviz-query: bad files get one error line each, the others are answered", "[query]")
 {
     Write("bad_syntax.json", "{\"bodies\": [");
-    Write("bad_polygon.json", R"({"bodies": [{"polygon": [[0,0],[1,0],[1,1],[0.9,0.2]]}, {"box": [1, 1]}]})");
+    Write("bad_polygon.json", R"({"bodies": [{"polygon": [[0,0],[2,0],[0,2],[2,2]]}, {"box": [1, 1]}]})");
     const std::string good = SATVIZ_SOURCE_DIR "/tutorials/scenes/containment.json";
     const Run run = Query("bad_syntax.json " + good + " missing.json bad_polygon.json");
     CHECK(run.exitCode == 1);
@@ -154,8 +155,10 @@ TEST_CASE("satviz-query: bad files get one error line each, the others are answe
     CHECK(nlohmann::json::parse(run.out[0]).contains("error"));
     CHECK(nlohmann::json::parse(run.out[1])["pairs"].size() == 1);
     CHECK(nlohmann::json::parse(run.out[2])["error"] == "missing.json: cannot open: No such file or directory");
-    CHECK(nlohmann::json::parse(run.out[3])["error"] ==
-          "bad_polygon.json: bodies[0].polygon: polygon is not convex at vertex 3 (use a convex decomposition)");
+    CHECK(
+        nlohmann::json::parse(run.out[3])["error"] ==
+        "bad_polygon.json: bodies[0].polygon: polygon is not simple: edge 1 (vertex 1 to 2) meets edge 3 (vertex 3 to "
+        "0)");
     // Exactly one line on stderr per bad file.
     size_t lines = 0;
     for (char c : run.err)
@@ -438,4 +441,84 @@ TEST_CASE("satviz-query --touching equals the brute-force Overlap of every pair,
     const nlohmann::json bigLine = nlohmann::json::parse(big.out.at(0));
     CHECK(bigLine["bodies"] == 10000);
     CHECK(TouchingOf(bigLine) == Names(large.scene, near));
+}
+
+TEST_CASE("satviz-query answers for concave bodies with the same fields, the axis naming the piece", "[query]")
+{
+    // An L, a box in its notch (falling onto the floor of the notch), a box sunk into its foot, and a comb.
+    Write("concave.json", R"({"bodies": [
+        {"name": "L", "polygon": [[0,0],[4,0],[4,1],[1,1],[1,4],[0,4]]},
+        {"name": "notch", "box": [0.8, 0.8], "position": [2.5, 2.5], "velocity": [0, -3]},
+        {"name": "sunk", "box": [0.8, 0.8], "position": [2.5, 0.9], "angle": 0.1},
+        {"name": "comb", "polygon": [[0,0],[9,0],[9,4],[8,4],[8,1],[7,1],[7,4],[6,4],[6,1],[5,1],[5,4],[4,4],[4,1],
+                                     [3,1],[3,4],[2,4],[2,1],[1,1],[1,4],[0,4]],
+         "decompose": "fewest", "position": [10, 0]}]})");
+    const Run run = Query("concave.json");
+    REQUIRE(run.exitCode == 0);
+    const nlohmann::json pairs = nlohmann::json::parse(run.out[0])["pairs"];
+    SceneOptions options;
+    options.concave = true;
+    const SceneResult loaded = LoadScene("concave.json", options);
+    REQUIRE(loaded.Ok());
+    const std::vector<Body>& bodies = loaded.scene.bodies;
+    REQUIRE(pairs.size() == 6);
+    size_t k = 0;
+    for (size_t i = 0; i < bodies.size(); ++i)
+    {
+        for (size_t j = i + 1; j < bodies.size(); ++j, ++k)
+        {
+            const Body& a = bodies[i];
+            const Body& b = bodies[j];
+            const nlohmann::json& pair = pairs[k];
+            INFO(a.name << " " << b.name);
+            CHECK(pair["a"] == a.name);
+            // The library's answer, by the concave queries.
+            ConcaveManifold m;
+            if (a.IsConcave() && b.IsConcave())
+            {
+                m = Collide(a.concave, a.Xf(), b.concave, b.Xf());
+            }
+            else if (a.IsConcave())
+            {
+                m = Collide(a.concave, a.Xf(), b.shape, b.Xf());
+            }
+            else if (b.IsConcave())
+            {
+                m = Collide(a.shape, a.Xf(), b.concave, b.Xf());
+            }
+            else
+            {
+                m.manifold = Collide(a.shape, a.Xf(), b.shape, b.Xf());
+            }
+            CHECK(pair["overlap"] == m.manifold.overlap);
+            CHECK(pair["normal"][0].get<double>() == m.manifold.normal.x);
+            CHECK(pair["normal"][1].get<double>() == m.manifold.normal.y);
+            CHECK(pair["contacts"].size() == static_cast<size_t>(m.manifold.contactCount));
+            if (m.manifold.overlap)
+            {
+                CHECK(pair["depth"].get<double>() == m.manifold.depth);
+                const int piece = m.manifold.axis.shape == 0 ? m.pieceA : m.pieceB;
+                if (piece >= 0)
+                {
+                    CHECK(pair["axis"]["piece"] == piece);
+                }
+            }
+        }
+    }
+    // The box in the notch is clear of the L (its hull would hold it), and falls onto the notch's floor.
+    const nlohmann::json& notch = pairs[0];
+    CHECK(notch["overlap"] == false);
+    CHECK(notch["toi_status"] == "hit");
+    CHECK(notch["toi"].get<double>() == Approx(1.1 / 3));
+    CHECK(notch["toi_normal"][1].get<double>() == Approx(1.0));
+    // The sunk box is pushed up out of the L's foot, by the piece that holds the foot.
+    const nlohmann::json& sunk = pairs[1];
+    CHECK(sunk["overlap"] == true);
+    CHECK(sunk["normal"][1].get<double>() == Approx(1.0));
+    CHECK(sunk["axis"]["kind"] == "face");
+    CHECK(sunk["axis"].contains("piece"));
+    // --touching: only the sunk box touches the L; the box in the notch is inside the L's hull, not the L.
+    const Run touching = Query("--touching concave.json");
+    REQUIRE(touching.exitCode == 0);
+    CHECK(nlohmann::json::parse(touching.out[0])["touching"] == nlohmann::json::parse(R"([["L", "sunk"]])"));
 }

@@ -640,3 +640,46 @@ TEST_CASE("Saving a scene with NaN or infinite values built in code does not cra
     CHECK(!r.Ok());
     CHECK(r.error == "nan.json: bodies[0].angular_velocity: expected a number, got null");
 }
+
+TEST_CASE("A concave polygon is decomposed on load when the reader takes concave bodies", "[scene][concave]")
+{
+    const std::string text =
+        R"({"bodies": [{"name": "L", "polygon": [[0,0],[4,0],[4,1],[1,1],[1,4],[0,4]], "decompose": "fewest"},
+                       {"name": "W", "polygon": [[0,4],[1,4],[1,1],[4,1],[4,0],[0,0]]},
+                       {"name": "T", "polygon": [[0,0],[1,0],[0,1]], "decompose": "fast"}]})";
+    // Without the option, as before: refused as not convex.
+    const SceneResult plain = ParseScene(text, "s.json");
+    CHECK(plain.error == "s.json: bodies[0].polygon: polygon is not convex at vertex 3 (use a convex decomposition)");
+    SceneOptions options;
+    options.concave = true;
+    const SceneResult r = ParseScene(text, "s.json", options);
+    REQUIRE(r.Ok());
+    const Body& ell = r.scene.bodies[0];
+    REQUIRE(ell.IsConcave());
+    CHECK(ell.decompose == DecomposeMethod::Fewest);
+    CHECK(ell.concave.parts.size() == 2);
+    CHECK(ell.outline.size() == 6);
+    // The hull stands in as the shape: the L's outer corners.
+    CHECK(ell.shape.polygon.Count() == 5);
+    // Clockwise is accepted for a concave outline, and the decomposition is the same L's.
+    CHECK(r.scene.bodies[1].IsConcave());
+    CHECK(r.scene.bodies[1].concave.parts.size() == 2);
+    // A convex polygon stays a plain polygon.
+    CHECK(!r.scene.bodies[2].IsConcave());
+    CHECK(r.scene.bodies[2].shape.polygon.Count() == 3);
+
+    auto errorOf = [&](const std::string& body) {
+        return ParseScene(R"({"bodies": [)" + body + "]}", "s.json", options).error;
+    };
+    CHECK(errorOf(R"({"polygon": [[0,0],[2,0],[0,2],[2,2]]})") ==
+          "s.json: bodies[0].polygon: polygon is not simple: edge 1 (vertex 1 to 2) meets edge 3 (vertex 3 to 0)");
+    CHECK(errorOf(R"({"polygon": [[0,0],[4,0],[4,1],[1,1],[1,4],[0,4]], "decompose": "best"})") ==
+          "s.json: bodies[0].decompose: expected \"fast\" or \"fewest\", got \"best\"");
+    CHECK(errorOf(R"({"polygon": [[0,0],[4,0],[4,1],[1,1],[1,4],[0,4]], "decompose": 2})") ==
+          "s.json: bodies[0].decompose: expected \"fast\" or \"fewest\", got a number");
+    CHECK(errorOf(R"({"box": [1, 1], "decompose": "fast"})") ==
+          "s.json: bodies[0].decompose: applies to a \"polygon\" only");
+    // A convex outline written clockwise keeps its own error: one piece is not a concave body.
+    CHECK(errorOf(R"({"polygon": [[0,0],[0,1],[1,0]]})") ==
+          "s.json: bodies[0].polygon: polygon winds clockwise (list the vertices counter-clockwise, y up)");
+}

@@ -42,6 +42,84 @@ const char* ExitName(TraceExit exit)
     return "none";
 }
 
+// A swept pair's fields: "toi_status", "toi", "toi_normal", "toi_contacts".
+void SweepJson(Json& pair, const SweepResult& sweep)
+{
+    pair["toi_status"] = sweep.status == SweepStatus::Miss  ? "miss"
+                         : sweep.status == SweepStatus::Hit ? "hit"
+                                                            : "overlapping";
+    if (sweep.status == SweepStatus::Miss)
+    {
+        pair["toi"] = nullptr;
+        pair["toi_normal"] = nullptr;
+        pair["toi_contacts"] = Json::array();
+        return;
+    }
+    pair["toi"] = sweep.toi + 0.0; // -0 prints as 0
+    pair["toi_normal"] = Pair(sweep.normal);
+    Json contacts = Json::array();
+    const ContactPoint* points = sweep.status == SweepStatus::Hit ? sweep.contacts : sweep.initial.contacts;
+    const int count = sweep.status == SweepStatus::Hit ? sweep.contactCount : sweep.initial.contactCount;
+    for (int k = 0; k < count; ++k)
+    {
+        contacts.push_back(Pair(points[k].point));
+    }
+    pair["toi_contacts"] = contacts;
+}
+
+// The axis of a pair with a concave body names the piece its edge or vertex belongs to.
+void NamePiece(Json& axis, const AxisRef& ref, int pieceA, int pieceB)
+{
+    const int piece = ref.shape == 0 ? pieceA : (ref.shape == 1 ? pieceB : -1);
+    if (axis.is_object() && piece >= 0)
+    {
+        axis["piece"] = piece;
+    }
+}
+
+// A pair with a concave body: the same fields as a convex pair, from the concave queries (concave.h).
+Json ConcavePairJson(const Body& a, const Body& b, bool withTrace, StepView view)
+{
+    ConcaveManifold m;
+    if (a.IsConcave() && b.IsConcave())
+    {
+        m = Collide(a.concave, a.Xf(), b.concave, b.Xf());
+    }
+    else if (a.IsConcave())
+    {
+        m = Collide(a.concave, a.Xf(), b.shape, b.Xf());
+    }
+    else
+    {
+        m = Collide(a.shape, a.Xf(), b.concave, b.Xf());
+    }
+    Json pair = ManifoldJson(a.name, b.name, m.manifold);
+    NamePiece(pair["axis"], m.manifold.axis, m.pieceA, m.pieceB);
+    if (a.velocity != Vec2{} || b.velocity != Vec2{})
+    {
+        ConcaveSweepResult sweep;
+        if (a.IsConcave() && b.IsConcave())
+        {
+            sweep = Sweep(a.concave, a.Xf(), a.velocity, b.concave, b.Xf(), b.velocity);
+        }
+        else if (a.IsConcave())
+        {
+            sweep = Sweep(a.concave, a.Xf(), a.velocity, b.shape, b.Xf(), b.velocity);
+        }
+        else
+        {
+            sweep = Sweep(a.shape, a.Xf(), a.velocity, b.concave, b.Xf(), b.velocity);
+        }
+        SweepJson(pair, sweep.result);
+    }
+    if (withTrace)
+    {
+        pair["trace"] = {{"view", view == StepView::Faces ? "faces" : "textbook"},
+                         {"note", "a pair with a concave body is tested piece by piece; no step trace is recorded"}};
+    }
+    return pair;
+}
+
 } // namespace
 
 Json AxisJson(const AxisRef& axis)
@@ -250,36 +328,17 @@ Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace,
                 *progress << "satviz-query: " << file << ": tracing " << a.name << " and " << b.name << ", " << total
                           << " vertices (every face's intervals)" << std::endl;
             }
+            if (a.IsConcave() || b.IsConcave())
+            {
+                pairs.push_back(ConcavePairJson(a, b, withTrace, view));
+                continue;
+            }
             const Manifold manifold = Collide(a.shape, a.Xf(), b.shape, b.Xf(), withTrace ? &trace : nullptr);
             Json pair = ManifoldJson(a.name, b.name, manifold);
             // Only pairs where something moves are swept: a still pair has nothing to add.
             if (a.velocity != Vec2{} || b.velocity != Vec2{})
             {
-                const SweepResult sweep = Sweep(a.shape, a.Xf(), a.velocity, b.shape, b.Xf(), b.velocity);
-                pair["toi_status"] = sweep.status == SweepStatus::Miss  ? "miss"
-                                     : sweep.status == SweepStatus::Hit ? "hit"
-                                                                        : "overlapping";
-                if (sweep.status == SweepStatus::Miss)
-                {
-                    pair["toi"] = nullptr;
-                    pair["toi_normal"] = nullptr;
-                    pair["toi_contacts"] = Json::array();
-                }
-                else
-                {
-                    pair["toi"] = sweep.toi + 0.0; // -0 prints as 0
-                    pair["toi_normal"] = Pair(sweep.normal);
-                    Json contacts = Json::array();
-                    const ContactPoint* points =
-                        sweep.status == SweepStatus::Hit ? sweep.contacts : sweep.initial.contacts;
-                    const int count =
-                        sweep.status == SweepStatus::Hit ? sweep.contactCount : sweep.initial.contactCount;
-                    for (int k = 0; k < count; ++k)
-                    {
-                        contacts.push_back(Pair(points[k].point));
-                    }
-                    pair["toi_contacts"] = contacts;
-                }
+                SweepJson(pair, Sweep(a.shape, a.Xf(), a.velocity, b.shape, b.Xf(), b.velocity));
             }
             // The textbook test projects every vertex on every axis: past a budget the face tests are printed,
             // and the trace says why.
@@ -325,6 +384,16 @@ Json TouchingSceneJson(const Scene& scene, const std::string& file)
     Json touching = Json::array();
     for (const auto& [i, j] : TouchingPairs(shapes, transforms))
     {
+        // A concave body's shape is its hull: the pair touches when its pieces do.
+        const Body& a = scene.bodies[static_cast<size_t>(i)];
+        const Body& b = scene.bodies[static_cast<size_t>(j)];
+        if ((a.IsConcave() || b.IsConcave()) &&
+            !(a.IsConcave() && b.IsConcave() ? Overlap(a.concave, a.Xf(), b.concave, b.Xf())
+              : a.IsConcave()                ? Overlap(a.concave, a.Xf(), b.shape, b.Xf())
+                                             : Overlap(a.shape, a.Xf(), b.concave, b.Xf())))
+        {
+            continue;
+        }
         touching.push_back(
             Json::array({scene.bodies[static_cast<size_t>(i)].name, scene.bodies[static_cast<size_t>(j)].name}));
     }

@@ -226,7 +226,38 @@ Shape PolygonShape(const PolygonResult& result, const std::string& path)
     return MakeShape(result.polygon);
 }
 
-Body ParseBody(const Json& value, const std::string& path, size_t index)
+// A polygon that MakePolygon refuses for its shape (not convex, crossing itself, clockwise, or a vertex repeated or
+// on a line with its neighbours), read as a concave outline: decomposed, or refused naming the edges that cross.
+// An outline that is one convex piece keeps MakePolygon's error: a convex polygon is written as MakePolygon wants.
+bool ReadConcave(Body& body, const std::vector<Vec2>& vertices, const PolygonResult& made, const std::string& path)
+{
+    switch (made.error)
+    {
+    case PolygonError::NotConvex:
+    case PolygonError::SelfIntersecting:
+    case PolygonError::Clockwise:
+    case PolygonError::DuplicateVertex:
+    case PolygonError::CollinearVertex:
+        break;
+    default:
+        return false;
+    }
+    const Decomposition pieces = Decompose(vertices, body.decompose);
+    if (!pieces.Ok())
+    {
+        Fail(path, DescribeDecomposeError(pieces, vertices));
+    }
+    if (pieces.pieces.size() < 2)
+    {
+        return false;
+    }
+    body.concave = MakeConcave(pieces.pieces);
+    body.outline = vertices;
+    body.shape = MakeShape(ComputeHull(vertices).polygon);
+    return true;
+}
+
+Body ParseBody(const Json& value, const std::string& path, size_t index, const SceneOptions& options)
 {
     if (!value.is_object())
     {
@@ -234,9 +265,24 @@ Body ParseBody(const Json& value, const std::string& path, size_t index)
     }
     CheckKeys(value, path,
               {"name", "polygon", "box", "regular", "circle", "position", "angle", "velocity", "angular_velocity",
-               "static", "density", "restitution", "friction", "static_friction"});
+               "static", "density", "restitution", "friction", "static_friction", "decompose"});
 
     Body body;
+    if (value.contains("decompose"))
+    {
+        const Json& method = value["decompose"];
+        if (!value.contains("polygon"))
+        {
+            Fail(path + ".decompose", "applies to a \"polygon\" only");
+        }
+        if (!method.is_string() || (method.get<std::string>() != "fast" && method.get<std::string>() != "fewest"))
+        {
+            Fail(path + ".decompose",
+                 "expected \"fast\" or \"fewest\", got " +
+                     (method.is_string() ? "\"" + method.get<std::string>() + "\"" : TypeName(method)));
+        }
+        body.decompose = method.get<std::string>() == "fast" ? DecomposeMethod::Fast : DecomposeMethod::Fewest;
+    }
     if (value.contains("name"))
     {
         if (!value["name"].is_string() || value["name"].get<std::string>().empty())
@@ -274,7 +320,11 @@ Body ParseBody(const Json& value, const std::string& path, size_t index)
         {
             vertices.push_back(Point(points[i], p + "[" + std::to_string(i) + "]"));
         }
-        body.shape = PolygonShape(MakePolygon(vertices), p);
+        const PolygonResult made = MakePolygon(vertices);
+        if (made.Ok() || !options.concave || !ReadConcave(body, vertices, made, p))
+        {
+            body.shape = PolygonShape(made, p);
+        }
     }
     else if (value.contains("box"))
     {
@@ -586,7 +636,7 @@ SceneWorld ParseWorld(const Json& value)
     return world;
 }
 
-Scene ParseRoot(const Json& root)
+Scene ParseRoot(const Json& root, const SceneOptions& options)
 {
     if (!root.is_object())
     {
@@ -615,7 +665,7 @@ Scene ParseRoot(const Json& root)
     for (size_t i = 0; i < bodies.size(); ++i)
     {
         const std::string path = "bodies[" + std::to_string(i) + "]";
-        Body body = ParseBody(bodies[i], path, i);
+        Body body = ParseBody(bodies[i], path, i, options);
         if (!names.insert(body.name).second)
         {
             Fail(path + ".name", "\"" + body.name + "\" is already the name of another body");
@@ -657,7 +707,7 @@ std::string Location(std::string_view text, size_t offset)
 
 } // namespace
 
-SceneResult ParseScene(std::string_view text, const std::string& file)
+SceneResult ParseScene(std::string_view text, const std::string& file, SceneOptions options)
 {
     SceneResult result;
     Json root;
@@ -693,7 +743,7 @@ SceneResult ParseScene(std::string_view text, const std::string& file)
     }
     try
     {
-        result.scene = ParseRoot(root);
+        result.scene = ParseRoot(root, options);
         result.scene.source = std::make_shared<const SceneSource>(SceneSource{std::move(root), file});
     }
     catch (const SceneFault& fault)
@@ -707,7 +757,7 @@ SceneResult ParseScene(std::string_view text, const std::string& file)
     return result;
 }
 
-SceneResult LoadScene(const std::string& file)
+SceneResult LoadScene(const std::string& file, SceneOptions options)
 {
     std::error_code code;
     if (std::filesystem::is_directory(file, code))
@@ -731,7 +781,7 @@ SceneResult LoadScene(const std::string& file)
         result.error = file + ": cannot read: " + std::strerror(errno);
         return result;
     }
-    return ParseScene(text.str(), file);
+    return ParseScene(text.str(), file, options);
 }
 
 namespace

@@ -39,7 +39,10 @@ int main(int argc, char** argv)
     int failures = 0;
     for (const std::string& file : files)
     {
-        const satviz::SceneResult loaded = satviz::LoadScene(file);
+        // A polygon may be concave here: it is answered piece by piece.
+        satviz::SceneOptions options;
+        options.concave = true;
+        const satviz::SceneResult loaded = satviz::LoadScene(file, options);
         if (!loaded.Ok())
         {
             std::cerr << "satviz-query: " << loaded.error << "\n";

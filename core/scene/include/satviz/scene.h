@@ -2,6 +2,7 @@
 // satviz: scenes, read from JSON files shared by the tools, tests, figures and benchmarks.
 #pragma once
 
+#include <satviz/concave.h>
 #include <satviz/material.h>
 #include <satviz/shape.h>
 
@@ -16,8 +17,16 @@ namespace satviz
 /// A body of a scene: a named shape placed in the world, how it moves, and what a rigid-body world makes of it.
 struct Body
 {
-    std::string name;   ///< unique name within the scene
-    Shape shape;        ///< the shape, in the body frame
+    std::string name; ///< unique name within the scene
+    /// The shape, in the body frame. For a concave body (read with SceneOptions::concave), the convex hull of its
+    /// outline: a bound for broadphases; the queries take `concave`.
+    Shape shape;
+    /// A concave body: the pieces of its "polygon" (decomposed on load by "decompose"); empty for a convex body.
+    Concave concave;
+    std::vector<Vec2> outline;                         ///< a concave body's outline as written; else empty
+    DecomposeMethod decompose = DecomposeMethod::Fast; ///< how the outline was cut ("decompose": "fast" or "fewest")
+    /// True for a concave body.
+    bool IsConcave() const { return !concave.parts.empty(); }
     Vec2 position{};    ///< world position of the body origin
     double angle = 0.0; ///< rotation in radians, counter-clockwise
     /// Velocity of the centre of mass, world frame, in units per time unit. A step lasts the scene's world dt,
@@ -142,6 +151,15 @@ struct SceneResult
 /// friction, gravity or dt in a scene file.
 constexpr double kMaxSceneValue = 1e12;
 
+/// What a reader of scenes takes beyond convex bodies.
+struct SceneOptions
+{
+    /// A "polygon" may be concave (simple, either orientation): it is decomposed on load into convex pieces
+    /// (Body::concave), by the body's "decompose" ("fast", the default, or "fewest"). Tools that cannot answer for
+    /// concave bodies leave this off, and such a polygon is refused as not convex.
+    bool concave = false;
+};
+
 /// Parses a scene from JSON text. `file` names the source in error messages.
 /// Format (see core/scene/scene.schema.json): {"bodies": [{"name": "A", "polygon": [[x, y], ...], "position": [x, y],
 /// "angle": 0.0, "velocity": [vx, vy]}, {"name": "B", "circle": {"radius": 0.5}, ...}]}. A body has exactly one
@@ -150,10 +168,10 @@ constexpr double kMaxSceneValue = 1e12;
 /// false), "density" (> 0), "restitution" (in [0, 1]), "friction" and "static_friction" (>= 0); the scene may give
 /// "world": {"gravity": [x, y], "dt": s} (dt > 0). Unknown fields are errors, with a hint for misspellings, unless
 /// namespaced ("tool:field").
-SceneResult ParseScene(std::string_view text, const std::string& file);
+SceneResult ParseScene(std::string_view text, const std::string& file, SceneOptions options = {});
 
 /// Reads and parses a scene file.
-SceneResult LoadScene(const std::string& file);
+SceneResult LoadScene(const std::string& file, SceneOptions options = {});
 
 /// The scene as JSON text that ParseScene reads back to the same scene: bodies with their polygon vertices,
 /// circles, positions, angles, velocities and, where not at their defaults, angular velocities and physical
