@@ -183,6 +183,24 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
                 drag_ = DragKind::Velocity;
             }
         }
+        if (drag_ == DragKind::None && !io.KeyShift)
+        {
+            // A contact point of the simulation's step: its pair's response is shown (the panel and the layer).
+            const Simulation& sim = app_.GetSimulation();
+            for (const WorldContact& contact :
+                 sim.Shown() > sim.First() ? sim.Record().world.contacts : std::vector<WorldContact>{})
+            {
+                for (int k = 0; k < contact.pointCount && !contact.guard; ++k)
+                {
+                    if (drag_ == DragKind::None &&
+                        Distance(mouse, ToScreen(viewer.Camera(), contact.points[k].point)) <= kHandleRadius * 0.75f)
+                    {
+                        app_.SimChooseContact(contact.a, contact.b);
+                        drag_ = DragKind::Pan;
+                    }
+                }
+            }
+        }
         if (drag_ == DragKind::None)
         {
             const int hit = BodyAt(viewer, app_.ShownScene(), world);

@@ -1600,3 +1600,34 @@ TEST_CASE("The world's layers leave a framed scene room: its bodies stay on the 
         CHECK(p.y < layout.sceneBottom);
     }
 }
+
+TEST_CASE("Clicking a contact point of the step shown chooses its pair for the response", "[app][sim]")
+{
+    Harness h(ScratchCopy("l17_skips.json").string());
+    for (int i = 0; i < 5; ++i)
+    {
+        h.app->SimForward();
+    }
+    h.Frames(2);
+    const World& world = h.app->GetSimulation().Record().world;
+    // A contact not of the figure's pair, its point on the canvas.
+    const int shownA = h.View().Setup().study.bodyA;
+    const int shownB = h.View().Setup().study.bodyB;
+    const auto other = std::find_if(world.contacts.begin(), world.contacts.end(), [&](const WorldContact& c) {
+        return !c.guard && !(std::min(shownA, shownB) == c.a && std::max(shownA, shownB) == c.b);
+    });
+    REQUIRE(other != world.contacts.end());
+    const WorldContact contact = *other;
+    h.MoveTo(h.OnScreen(contact.points[0].point));
+    ImGui::GetIO().MouseDown[0] = true;
+    h.Frames(1);
+    ImGui::GetIO().MouseDown[0] = false;
+    h.Frames(2);
+    const SimRecord& record = h.app->GetSimulation().Record();
+    CHECK(std::min(record.contact.bodyA, record.contact.bodyB) == contact.a);
+    CHECK(std::max(record.contact.bodyA, record.contact.bodyB) == contact.b);
+    CHECK(record.contact.found);
+    // Nothing moved: the click chose, it did not drag.
+    CHECK(h.Doc().UndoDepth() == 1); // the pair's change, an edit of the view
+    CHECK_FALSE(h.Doc().Dirty());
+}
