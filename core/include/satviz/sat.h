@@ -25,6 +25,7 @@
 //               that is not simple is refused naming the two edges that meet.
 //   concave.h   Concave: the pieces of a decomposition as one shape, in Overlap, Collide (one manifold per pair,
 //               contacts along internal edges dropped or re-tested on the surface axes), Sweep and RayCast.
+//   disc_cast.h CastDisc(shape, xf, p1, p2, radius): thick bullets, a disc moved along a segment, like RayCast.
 //   cache.h     SatCache: a pair's separating face from the previous frame, tested first by Overlap next frame.
 //   textbook.h  TextbookCollide and TextbookSweep: the test as textbooks teach it (intervals on each distinct
 //               axis), for reading and for the teaching views; the queries above answer the same, faster.
@@ -62,6 +63,7 @@
 #include <satviz/collide.h>
 #include <satviz/concave.h>
 #include <satviz/decompose.h>
+#include <satviz/disc_cast.h>
 #include <satviz/manifold.h>
 #include <satviz/math.h>
 #include <satviz/polygon.h>
