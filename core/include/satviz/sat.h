@@ -26,6 +26,8 @@
 //   concave.h   Concave: the pieces of a decomposition as one shape, in Overlap, Collide (one manifold per pair,
 //               contacts along internal edges dropped or re-tested on the surface axes), Sweep and RayCast.
 //   disc_cast.h CastDisc(shape, xf, p1, p2, radius): thick bullets, a disc moved along a segment, like RayCast.
+//   slice.h     SliceConvex (a convex polygon cut by a line into two convex parts) and SliceAlongSegment (a
+//               simple polygon cut wherever a segment crosses it from outline to outline).
 //   cache.h     SatCache: a pair's separating face from the previous frame, tested first by Overlap next frame.
 //   textbook.h  TextbookCollide and TextbookSweep: the test as textbooks teach it (intervals on each distinct
 //               axis), for reading and for the teaching views; the queries above answer the same, faster.
@@ -69,6 +71,7 @@
 #include <satviz/polygon.h>
 #include <satviz/raycast.h>
 #include <satviz/shape.h>
+#include <satviz/slice.h>
 #include <satviz/slide.h>
 #include <satviz/sweep.h>
 #include <satviz/textbook.h>
