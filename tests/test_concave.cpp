@@ -137,7 +137,7 @@ TEST_CASE("Two concave shapes overlap exactly when their outlines do", "[concave
     }
 }
 
-TEST_CASE("A box in an L's notch or between a comb's teeth does not collide; the convex hull would", "[concave]")
+TEST_CASE("A box in an L's notch or between a comb's teeth does not collide, though the convex hull would", "[concave]")
 {
     const std::vector<Vec2> ell{{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 4}, {0, 4}};
     // Teeth over [0, 1], [2, 3], ..., [8, 9] standing on a spine [0, 9] x [0, 1].

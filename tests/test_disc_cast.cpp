@@ -127,7 +127,7 @@ TEST_CASE("A disc cast at a circle hits the circle grown by its radius", "[disc]
     CHECK(hit.point.x == Approx(0.5));
 }
 
-TEST_CASE("A disc wider than the gap between a comb's teeth rests on them; a narrower one falls through", "[disc]")
+TEST_CASE("A disc wider than the gap between a comb's teeth rests on them and a narrower one falls through", "[disc]")
 {
     const std::vector<Vec2> comb{{0, 0}, {9, 0}, {9, 4}, {8, 4}, {8, 1}, {7, 1}, {7, 4}, {6, 4}, {6, 1}, {5, 1},
                                  {5, 4}, {4, 4}, {4, 1}, {3, 1}, {3, 4}, {2, 4}, {2, 1}, {1, 1}, {1, 4}, {0, 4}};

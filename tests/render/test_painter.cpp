@@ -125,6 +125,9 @@ struct StepAxis
     bool separating = false;
     bool skipped = false;
     double entry = 0.0; // sweeps
+    /// A face test the other shape is on or beyond and does not approach: its entry is the trace's placeholder,
+    /// and the time bar shows none.
+    bool neverCloses = false;
 };
 
 StepAxis AxisOfStep(const PairStudy& study, int step)
@@ -151,9 +154,12 @@ StepAxis AxisOfStep(const PairStudy& study, int step)
     }
     else if (study.sweep)
     {
-        copy(study.sweepTrace.axes[k]);
-        out.separating = study.sweepTrace.axes[k].endsTest;
-        out.entry = study.sweepTrace.axes[k].entry;
+        const auto& t = study.sweepTrace.axes[k];
+        copy(t);
+        out.separating = t.endsTest;
+        out.entry = t.entry;
+        out.neverCloses = t.axis.kind == AxisKind::FaceNormal && !(t.bounded || t.skipped) && t.separation >= 0.0 &&
+                          t.rate >= 0.0;
     }
     else
     {
@@ -783,11 +789,11 @@ TEST_CASE("The time bar marks each sweep axis's entry time", "[painter]")
                 REQUIRE(segments.size() >= 1);
                 const float x0 = segments[0]->points[0].x;
                 const float x1 = segments[0]->points[1].x;
-                if (std::isfinite(axis.entry) && axis.entry >= 0.0 && axis.entry <= 1.0)
+                if (std::isfinite(axis.entry) && axis.entry >= 0.0 && axis.entry <= 1.0 && !axis.neverCloses)
                 {
+                    INFO(file << " view " << static_cast<int>(view) << " step " << step << " entry " << axis.entry);
                     REQUIRE(!markers.empty());
                     const double t = (markers[0]->points[0].x - x0) / (x1 - x0);
-                    INFO(file << " step " << step << " entry " << axis.entry);
                     CHECK(std::abs(t - axis.entry) < 1e-4);
                     ++checked;
                 }
