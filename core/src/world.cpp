@@ -1079,6 +1079,14 @@ void Stepper::CorrectPositions()
     {
         GuardAfterMove(c, turn);
     }
+    // Body i's transform with its centre of mass at `center`, turned as the passes have turned it so far.
+    const auto PoseAt = [&](int i, Vec2 center) {
+        Transform xf;
+        const Rot q0 = xfs[i].q, d = turn[i];
+        xf.q = {q0.c * d.c - q0.s * d.s, q0.s * d.c + q0.c * d.s};
+        xf.p = center - Rotate(xf.q, bodies[i].localCenter);
+        return xf;
+    };
     // Moves bodies a and b apart along n0 at a point with lever arms rA, rB and separation sep, by `factor` of the
     // overlap beyond the slop.
     const auto push = [&](int a, int b, Vec2 n0, Vec2 rA, Vec2 rB, double sep, double factor) {
@@ -1179,13 +1187,7 @@ void Stepper::CorrectPositions()
         {
             return;
         }
-        const auto pose = [&](int i) {
-            Transform xf;
-            const Rot q0 = xfs[i].q, d = turn[i];
-            xf.q = {q0.c * d.c - q0.s * d.s, q0.s * d.c + q0.c * d.s};
-            xf.p = c[i] - Rotate(xf.q, bodies[i].localCenter);
-            return xf;
-        };
+        const auto pose = [&](int i) { return PoseAt(i, c[i]); };
         // Beside a static body, once Collide finds them overlapping, the axis is the guard's normal, fixed as the
         // static body is: the moving body's deepest point along it against the static body's extent. Measured so,
         // a body pushed past the middle of a thin wall is still pushed back the way it came; Collide's own normal
@@ -1306,11 +1308,7 @@ void Stepper::CorrectPositions()
         {
             return;
         }
-        Transform from;
-        const Rot q0 = xfs[i].q, t = turn[i];
-        from.q = {q0.c * t.c - q0.s * t.s, q0.s * t.c + q0.c * t.s};
-        from.p = afterMove[i] - Rotate(from.q, bodies[i].localCenter);
-        const SweepResult r = Sweep(bodies[s].shape, xfs[s], Vec2{}, bodies[i].shape, from, d);
+        const SweepResult r = Sweep(bodies[s].shape, xfs[s], Vec2{}, bodies[i].shape, PoseAt(i, afterMove[i]), d);
         if (r.status == SweepStatus::Hit)
         {
             c[i] = afterMove[i] + r.toi * d;
