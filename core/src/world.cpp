@@ -1309,7 +1309,20 @@ void Stepper::CorrectPositions()
             return;
         }
         const SweepResult r = Sweep(bodies[s].shape, xfs[s], Vec2{}, bodies[i].shape, PoseAt(i, afterMove[i]), d);
-        if (r.status == SweepStatus::Hit)
+        if (r.status == SweepStatus::Overlapping)
+        {
+            // Already touching it (a body resting on the floor overlaps it by up to the slop): the sweep cannot
+            // say when it would go in, for it is in. The passes may slide it along the static body and lift it
+            // out, never take it deeper: the part of the displacement into the static body, along the normal of
+            // their overlap, is taken out.
+            const Vec2 out = r.initial.normal; // from the static body (A of the sweep) to the moving one
+            const double into = Dot(d, out);
+            if (into < 0.0)
+            {
+                c[i] = c[i] - into * out;
+            }
+        }
+        else if (r.status == SweepStatus::Hit)
         {
             c[i] = afterMove[i] + r.toi * d;
         }
