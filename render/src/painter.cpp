@@ -399,6 +399,35 @@ int DecidingAxis(const PairStudy& study)
     return last.separating || last.best < 0 ? study.AxisCount() - 1 : last.best;
 }
 
+// The verdict of a sweep shows the common window of all axes: the latest entry and the earliest exit as the last
+// step holds them. The deciding axis's own step holds them only so far, and a later axis can exit earlier (a
+// circle's verdict shows the face it reaches first, not the last one tested).
+void SetWholeWindow(const PairStudy& study, ShownAxis& shown)
+{
+    if (!study.sweep || study.AxisCount() == 0)
+    {
+        return;
+    }
+    if (study.Textbook())
+    {
+        const std::vector<TextbookSweepAxis>& axes = study.textbookSweep.axes;
+        const TextbookSweepAxis& last = axes.back();
+        if (study.textbookSweepResult.status == SweepStatus::Hit && last.latestEntry >= 0 && last.earliestExit >= 0)
+        {
+            shown.windowEntry = axes[static_cast<size_t>(last.latestEntry)].entry;
+            shown.windowExit = axes[static_cast<size_t>(last.earliestExit)].exit;
+        }
+        return;
+    }
+    const std::vector<SweepAxis>& axes = study.sweepTrace.axes;
+    const SweepAxis& last = axes.back();
+    if (study.sweepResult.status == SweepStatus::Hit && last.latestEntry >= 0 && last.earliestExit >= 0)
+    {
+        shown.windowEntry = axes[static_cast<size_t>(last.latestEntry)].entry;
+        shown.windowExit = axes[static_cast<size_t>(last.earliestExit)].exit;
+    }
+}
+
 class Painter
 {
   public:
@@ -417,6 +446,10 @@ class Painter
         {
             axis_ = ShowAxis(study, axisIndex_);
             hasAxis_ = true;
+            if (verdict_)
+            {
+                SetWholeWindow(study, axis_);
+            }
         }
     }
 

@@ -803,6 +803,156 @@ TEST_CASE("The time bar marks each sweep axis's entry time", "[painter]")
     CHECK(checked >= 6);
 }
 
+namespace
+{
+
+// The common window of a translating pair over the face normals of its polygons, computed here from the shapes.
+// The textbook test compares both ends on each normal: B's interval moves at its rate relative to A's and overlaps
+// it from one crossing of the ends to the other. A face test looks from one face towards the other shape (along
+// A's normal, or against B's): B's near end and A's far end cross once, an entry or an exit. The face tests of a
+// circle that hits a polygon's rounded corner add one on the axis from that corner to the centre, along the hit's
+// normal. Returns false for a pair without a face normal (two circles).
+bool FaceWindow(const Scene& scene, const PairStudy& study, double& latestEntry, double& earliestExit)
+{
+    const Body& a = scene.bodies[static_cast<size_t>(study.bodyA)];
+    const Body& b = scene.bodies[static_cast<size_t>(study.bodyB)];
+    // As the figures sweep them: a velocity is the displacement over the step.
+    const Vec2 velocity = b.velocity - a.velocity;
+    std::vector<Vec2> directions; // from A towards B
+    for (const Body* body : {&a, &b})
+    {
+        if (body->shape.type != ShapeType::Polygon)
+        {
+            continue;
+        }
+        const auto v = body->shape.polygon.Vertices();
+        for (size_t i = 0; i < v.size(); ++i)
+        {
+            const Vec2 edge = v[(i + 1) % v.size()] - v[i];
+            const Vec2 n = Rotate(body->Xf().q, Normalize(Vec2{edge.y, -edge.x}));
+            directions.push_back(body == &a ? n : -n);
+        }
+    }
+    if (directions.empty())
+    {
+        return false;
+    }
+    if (!study.Textbook() && study.sweepResult.axis.kind == AxisKind::VertexToCenter)
+    {
+        directions.push_back(study.sweepResult.normal);
+    }
+    latestEntry = -INFINITY;
+    earliestExit = INFINITY;
+    for (const Vec2& d : directions)
+    {
+        const auto [minA, maxA] = Project(a, d);
+        const auto [minB, maxB] = Project(b, d);
+        const double rate = Dot(d, velocity);
+        if (rate == 0.0)
+        {
+            continue;
+        }
+        // B's near end passes A's far end at `cross`: overlapping after it when B approaches, before it when B
+        // moves away. The textbook test adds the other ends: B's far end passes A's near end at `back`.
+        const double cross = (maxA - minB) / rate;
+        const double back = (minA - maxB) / rate;
+        if (study.Textbook())
+        {
+            latestEntry = std::max(latestEntry, std::min(cross, back));
+            earliestExit = std::min(earliestExit, std::max(cross, back));
+        }
+        else if (rate < 0.0)
+        {
+            latestEntry = std::max(latestEntry, cross);
+        }
+        else
+        {
+            earliestExit = std::min(earliestExit, cross);
+        }
+    }
+    return true;
+}
+
+// The number after `prefix` in the first text of the group that starts with it; NaN when there is none.
+double NumberAfter(const RecordingCanvas& canvas, const std::string& group, const std::string& prefix)
+{
+    for (const DrawCommand* c : canvas.InGroup(group))
+    {
+        if (c->kind == DrawCommand::Kind::Text && c->text.rfind(prefix, 0) == 0)
+        {
+            return std::strtod(c->text.c_str() + prefix.size(), nullptr);
+        }
+    }
+    return std::nan("");
+}
+
+} // namespace
+
+TEST_CASE("A hit's verdict marks the latest entry and the earliest exit of all the axes", "[painter]")
+{
+    // The tutorial scenes that sweep (a ray and a round bullet through a crate among them), and random pairs, a
+    // circle against a polygon half of the time: the time bar's numbers against the window computed here.
+    std::vector<Scene> scenes;
+    for (const std::string& file : TutorialScenes())
+    {
+        scenes.push_back(Load(file));
+    }
+    testing::Rng rng(20261127);
+    for (int i = 0; i < 300; ++i)
+    {
+        Scene scene;
+        for (int k = 0; k < 2; ++k)
+        {
+            Body body;
+            body.name = k == 0 ? "A" : "B";
+            body.shape = k == 1 && rng.Chance(0.5)
+                             ? MakeShape(Circle{{0.0, 0.0}, rng.Uniform(0.05, 1.0)})
+                             : MakeShape(testing::RandomPolygon(rng, rng.Int(3, 8), 1.0, rng.Uniform(0.3, 1.0)));
+            body.position = k == 0 ? Vec2{0.0, 0.0} : Vec2{rng.Uniform(-6.0, 6.0), rng.Uniform(-6.0, 6.0)};
+            body.angle = rng.Uniform(-3.0, 3.0);
+            // Towards A, past it by a random amount: some hits exit through a face before the step ends.
+            body.velocity = k == 0 ? Vec2{0.0, 0.0} : rng.Uniform(1.0, 2.5) * -body.position +
+                                                          Vec2{rng.Uniform(-1.0, 1.0), rng.Uniform(-1.0, 1.0)};
+            scene.bodies.push_back(std::move(body));
+        }
+        scenes.push_back(std::move(scene));
+    }
+    int checked = 0;
+    int exitsInStep = 0;
+    for (const Scene& scene : scenes)
+    {
+        for (StepView view : kViews)
+        {
+            FigureSetup setup = SetUpView(scene, view);
+            REQUIRE(setup.Ok());
+            const PairStudy& study = setup.study;
+            const SweepStatus status =
+                study.Textbook() ? study.textbookSweepResult.status : study.sweepResult.status;
+            double entry = 0.0;
+            double exit = 0.0;
+            if (!study.sweep || status != SweepStatus::Hit || !FaceWindow(scene, study, entry, exit))
+            {
+                continue;
+            }
+            const RecordingCanvas canvas = Paint(scene, setup, study.VerdictStep(), kLayerSwept);
+            const double shownEntry = NumberAfter(canvas, "timebar", "latest entry ");
+            const double shownExit = NumberAfter(canvas, "timebar", "earliest exit ");
+            INFO("view " << static_cast<int>(view) << " window [" << entry << ", " << exit << "], shown ["
+                         << shownEntry << ", " << shownExit << "]");
+            // The figures print two or three decimals.
+            CHECK(std::abs(shownEntry - entry) <= 0.0051 + 1e-9 * std::abs(entry));
+            if (std::isfinite(exit))
+            {
+                CHECK(std::abs(shownExit - exit) <= 0.0051 + 1e-9 * std::abs(exit));
+                exitsInStep += exit < 1.0 ? 1 : 0;
+            }
+            ++checked;
+        }
+    }
+    CHECK(checked >= 40);
+    CHECK(exitsInStep >= 10);
+}
+
 TEST_CASE("The Voronoi layer names the region of the box that holds the ball's centre: its nearest feature",
           "[painter]")
 {
