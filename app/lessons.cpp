@@ -24,6 +24,7 @@ struct Reader
     LessonBlock current;
     bool open = false;    // a text block is being read
     int listDepth = 0;    // nesting of lists
+    std::vector<int> listNumbers; // per open list, the next item's number (0: a bullet list)
     bool inImage = false; // inside an image span: text is its alternative text
     LessonBlock image;
     bool inCell = false; // inside a table row: cells are joined
@@ -118,11 +119,19 @@ int EnterBlock(MD_BLOCKTYPE type, void* detail, void* user)
         }
         break;
     case MD_BLOCK_UL:
+        ++r.listDepth;
+        r.listNumbers.push_back(0);
+        break;
     case MD_BLOCK_OL:
         ++r.listDepth;
+        r.listNumbers.push_back(static_cast<int>(static_cast<MD_BLOCK_OL_DETAIL*>(detail)->start));
         break;
     case MD_BLOCK_LI:
         r.Begin(LessonBlock::Kind::Item, r.listDepth);
+        if (!r.listNumbers.empty() && r.listNumbers.back() > 0)
+        {
+            r.current.number = r.listNumbers.back()++;
+        }
         break;
     case MD_BLOCK_CODE:
         r.Begin(LessonBlock::Kind::Code, 0);
@@ -174,6 +183,7 @@ int LeaveBlock(MD_BLOCKTYPE type, void*, void* user)
     case MD_BLOCK_UL:
     case MD_BLOCK_OL:
         --r.listDepth;
+        r.listNumbers.pop_back();
         break;
     case MD_BLOCK_QUOTE:
         r.Finish();

@@ -42,6 +42,8 @@ struct LessonBlock
     };
     Kind kind = Kind::Paragraph; ///< what the block is
     int level = 0;               ///< heading level or list depth
+    /// An item of a numbered list: its number as the list counts it (from the list's start); 0 for a bullet item.
+    int number = 0;
     std::string text;            ///< the block's text, inline markup flattened (links keep their text)
     std::string target;          ///< a figure's file, relative to the lesson
     /// The block lies in a block quote (the lessons' "> **In satviz.**" boxes of implementation detail): the panel

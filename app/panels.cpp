@@ -1326,6 +1326,12 @@ void Panels::LessonWindow()
         }
         if (block.details != details)
         {
+            if (details > 0)
+            {
+                // The end of a collapsible section: a rule keeps what follows from reading as part of it.
+                ImGui::Separator();
+                ImGui::Spacing();
+            }
             details = block.details;
             if (details > 0)
             {
@@ -1365,7 +1371,16 @@ void Panels::LessonWindow()
             break;
         case LessonBlock::Kind::Item:
             ImGui::Indent(static_cast<float>(block.level - 1) * 14.0f);
-            ImGui::Bullet();
+            if (block.number > 0)
+            {
+                // A numbered list keeps its numbers: the answers and the steps refer to them.
+                ImGui::TextUnformatted((std::to_string(block.number) + ".").c_str());
+                ImGui::SameLine();
+            }
+            else
+            {
+                ImGui::Bullet();
+            }
             WrappedText(block.text);
             ImGui::Unindent(static_cast<float>(block.level - 1) * 14.0f);
             break;
@@ -1399,6 +1414,10 @@ void Panels::LessonWindow()
         }
     }
     endQuote();
+    if (details > 0)
+    {
+        ImGui::Separator();
+    }
     ImGui::EndChild();
     ImGui::End();
     if (go != current)

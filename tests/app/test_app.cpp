@@ -1044,6 +1044,7 @@ satviz tutorials/scenes/x.json
     CHECK(blocks[1].text == "Some running text with a link and a check mark: 0.18.");
     CHECK(blocks[2].kind == LessonBlock::Kind::Item);
     CHECK(blocks[2].text == "first item");
+    CHECK(blocks[2].number == 0);
     CHECK(blocks[4].text == "nested");
     CHECK(blocks[4].level == 2);
     CHECK(blocks[5].kind == LessonBlock::Kind::Figure);
@@ -1054,6 +1055,14 @@ satviz tutorials/scenes/x.json
     CHECK(blocks[7].text == "a | b");
     CHECK(blocks[8].text == "1 | 2");
     CHECK(blocks.back().kind == LessonBlock::Kind::Rule);
+    // A numbered list keeps its numbers, from its start, and a list nested in it its bullets.
+    const std::vector<LessonBlock> numbered = ParseLesson("3. third\n4. fourth\n   - under it\n5. fifth\n");
+    REQUIRE(numbered.size() == 4);
+    CHECK(numbered[0].number == 3);
+    CHECK(numbered[1].number == 4);
+    CHECK(numbered[2].number == 0);
+    CHECK(numbered[2].level == 2);
+    CHECK(numbered[3].number == 5);
     // Signs beyond the fonts' Latin-1 are written as plain text writes them.
     CHECK(ParseLesson("t = (minA \u2212 maxB) / s \u2264 1 \u2248 2")[0].text == "t = (minA - maxB) / s <= 1 ~ 2");
 }
@@ -1092,6 +1101,8 @@ After.
     CHECK(blocks[3].details == 0);
     // The summary is the section's title, not a paragraph of its own.
     CHECK(blocks[4].text == "The first answer.");
+    CHECK(blocks[4].number == 1);
+    CHECK(blocks[5].number == 2);
     CHECK(blocks[4].details == 1);
     CHECK(blocks[4].summary == "Answers");
     CHECK(blocks[5].details == 1);
