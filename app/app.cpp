@@ -598,6 +598,18 @@ void App::SimSpeed(double stepsPerSecond)
     sim_.SetSpeed(stepsPerSecond);
 }
 
+void App::SimHand(int index, Vec2 position, Vec2 pointerVelocity)
+{
+    if (!BodyExists(index) || !sim_.Error().empty())
+    {
+        return;
+    }
+    // Simulated time runs Speed() * dt times as fast as the user's.
+    const double rate = sim_.Speed() * sim_.Record().dt;
+    sim_.Hand(index, position, rate > 0.0 ? (1.0 / rate) * pointerVelocity : pointerVelocity);
+    Refresh();
+}
+
 void App::SimChooseContact(int a, int b)
 {
     const Scene& scene = document_.GetScene();

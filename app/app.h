@@ -200,6 +200,11 @@ class App
     void SimReset();
     /// Sets the simulation's speed in steps per second.
     void SimSpeed(double stepsPerSecond);
+    /// A hand on body `index` while the simulation plays (a grab and a throw with the mouse): in the step shown
+    /// the body is at `position`, moving at `pointerVelocity` (world units per second of the user's time, which is
+    /// simulated time at 1 / dt steps a second and scales with the speed), without spin. Not an edit of the
+    /// scene: the simulation's history keeps it (Simulation::Hand).
+    void SimHand(int index, Vec2 position, Vec2 pointerVelocity);
     /// Shows the solver's response on the contact of bodies `a` and `b` (the figure's pair becomes them).
     void SimChooseContact(int a, int b);
     /// Sets body `index`'s material, static or dynamic and density, as one edit.

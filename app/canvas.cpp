@@ -13,6 +13,9 @@ namespace
 {
 
 constexpr float kHandleRadius = 8.0f; // pick distance of the handles, pixels
+// A thrown body leaves at the pointer's speed over this many seconds before the release: long enough to span a
+// few frames, short enough that a pause before letting go throws nothing.
+constexpr double kThrowWindow = 0.1;
 
 float Distance(ScreenPoint a, ScreenPoint b)
 {
@@ -153,10 +156,12 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
     {
         drag_ = DragKind::Pan;
     }
+    const bool playing = app_.GetSimulation().Playing();
     if (drag_ == DragKind::None && hovered && ImGui::IsMouseClicked(0))
     {
         const int selected = app_.Selected();
-        if (selected >= 0 && selected < static_cast<int>(bodies.size()))
+        // While the simulation plays, a body is grabbed and thrown: its handles edit the scene, which pauses.
+        if (!playing && selected >= 0 && selected < static_cast<int>(bodies.size()))
         {
             const Body& body = bodies[static_cast<size_t>(selected)];
             const View& camera = viewer.Camera();
@@ -183,7 +188,7 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
                 drag_ = DragKind::Velocity;
             }
         }
-        if (drag_ == DragKind::None && !io.KeyShift)
+        if (drag_ == DragKind::None && !io.KeyShift && !playing)
         {
             // A contact point of the simulation's step: its pair's response is shown (the panel and the layer).
             const Simulation& sim = app_.GetSimulation();
@@ -205,7 +210,19 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
         {
             const int hit = BodyAt(viewer, app_.ShownScene(), world);
             app_.Select(hit);
-            drag_ = hit < 0 ? DragKind::Pan : io.KeyShift ? DragKind::Rotate : DragKind::Body;
+            const bool dynamic = hit >= 0 && !bodies[static_cast<size_t>(hit)].isStatic;
+            if (hit < 0)
+            {
+                drag_ = DragKind::Pan;
+            }
+            else if (playing)
+            {
+                drag_ = dynamic ? DragKind::Throw : DragKind::Pan;
+            }
+            else
+            {
+                drag_ = io.KeyShift ? DragKind::Rotate : DragKind::Body;
+            }
         }
         if (drag_ != DragKind::Pan)
         {
@@ -215,7 +232,11 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
             grabOffset_ = world - body.position;
             const Vec2 arm = world - body.position;
             grabAngle_ = std::atan2(arm.y, arm.x) - body.angle;
-            app_.BeginEdit();
+            throwTrail_.clear();
+            if (drag_ != DragKind::Throw)
+            {
+                app_.BeginEdit();
+            }
         }
     }
     if (drag_ == DragKind::None)
@@ -254,13 +275,37 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
         case DragKind::Velocity:
             app_.SetVelocity(selected, world - body.position);
             break;
+        case DragKind::Throw:
+        {
+            // The body follows the pointer at the pointer's recent speed, so that what it pushes is pushed at
+            // that speed, and leaves at it on release.
+            const double now = ImGui::GetTime();
+            throwTrail_.emplace_back(now, world);
+            while (throwTrail_.size() > 2 && now - throwTrail_[1].first >= kThrowWindow)
+            {
+                throwTrail_.pop_front();
+            }
+            const double span = now - throwTrail_.front().first;
+            const Vec2 velocity = span > 1e-3 && span <= 2.0 * kThrowWindow
+                                      ? (1.0 / span) * (world - throwTrail_.front().second)
+                                      : Vec2{};
+            app_.SimHand(selected, world - grabOffset_, velocity);
+            if (!down)
+            {
+                const Body& thrown = app_.ShownScene().bodies[static_cast<size_t>(selected)];
+                std::printf("satviz: thrown %s at step %d velocity %.17g %.17g\n", thrown.name.c_str(),
+                            app_.GetSimulation().Shown(), thrown.velocity.x, thrown.velocity.y);
+                std::fflush(stdout);
+            }
+            break;
+        }
         default:
             break;
         }
     }
     if (!down)
     {
-        if (drag_ != DragKind::Pan)
+        if (drag_ != DragKind::Pan && drag_ != DragKind::Throw)
         {
             app_.EndEdit();
         }

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include <cstddef>
+#include <deque>
 #include <map>
 #include <string>
 
@@ -33,6 +34,7 @@ enum class DragKind
     Rotate,   ///< turns the selected body about its centre
     Vertex,   ///< moves one vertex of the selected polygon (refused where it would break convexity)
     Velocity, ///< sets the selected body's velocity (its displacement over one time unit)
+    Throw,    ///< while the simulation plays: holds the body at the pointer, and throws it on release
 };
 
 /// The Dear ImGui interface of an app.
@@ -80,6 +82,8 @@ class Panels
     int dragVertex_ = -1;
     Vec2 grabOffset_{};
     double grabAngle_ = 0.0;
+    // A throw: the pointer's world positions over the last kThrowWindow seconds, with their times.
+    std::deque<std::pair<double, Vec2>> throwTrail_;
     bool canvasAnnounced_ = false;
     bool showHelp_ = false;
     int newSides_ = 5;

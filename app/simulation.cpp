@@ -36,12 +36,38 @@ bool SameBody(const Body& a, const Body& b)
            a.material.staticFriction == b.material.staticFriction && SameShape(a.shape, b.shape);
 }
 
+void PutHand(World& world, int body, Vec2 position, Vec2 velocity)
+{
+    RigidBody& held = world.bodies[static_cast<size_t>(body)];
+    held.position = position;
+    held.velocity = velocity;
+    held.angularVelocity = 0.0;
+    held.awake = true;
+    held.sleepTime = 0.0;
+}
+
 } // namespace
 
 bool SameWorld(const Scene& a, const Scene& b)
 {
     return a.world.gravity == b.world.gravity && a.world.dt == b.world.dt &&
            std::equal(a.bodies.begin(), a.bodies.end(), b.bodies.begin(), b.bodies.end(), SameBody);
+}
+
+void Simulation::PutAside()
+{
+    aside_ = Run{
+        std::move(start_), std::move(states_), std::move(samples_), sampleFirst_, std::move(hands_), first_, shown_};
+}
+
+void Simulation::TakeBack(Run& run)
+{
+    start_ = std::move(run.start);
+    states_ = std::move(run.states);
+    samples_ = std::move(run.samples);
+    sampleFirst_ = run.sampleFirst;
+    hands_ = std::move(run.hands);
+    first_ = run.first;
 }
 
 void Simulation::Restart(const Scene& scene, int pairA, int pairB)
@@ -58,23 +84,22 @@ void Simulation::Restart(const Scene& scene, int pairA, int pairB)
         haveAside_ = tookSteps;
         if (tookSteps)
         {
-            aside_ = Run{std::move(start_), std::move(states_), std::move(samples_), first_, shown_};
+            PutAside();
         }
-        start_ = std::move(back.start);
-        states_ = std::move(back.states);
-        samples_ = std::move(back.samples);
-        first_ = back.first;
+        TakeBack(back);
         Record(back.shown);
         return;
     }
     if (tookSteps)
     {
-        aside_ = Run{std::move(start_), std::move(states_), std::move(samples_), first_, shown_};
+        PutAside();
         haveAside_ = true;
     }
     start_ = scene;
     states_.clear();
     samples_.clear();
+    sampleFirst_ = 0;
+    hands_.clear();
     first_ = 0;
     shown_ = 0;
     error_ = ValidateSceneWorld(scene);
@@ -86,7 +111,7 @@ void Simulation::Restart(const Scene& scene, int pairA, int pairB)
     }
     record_ = StartRecord(scene, pairA_, pairB_);
     states_.push_back(record_.world);
-    samples_ = record_.history;
+    samples_.assign(record_.history.begin(), record_.history.end());
     shownScene_ = scene;
 }
 
@@ -96,8 +121,8 @@ bool Simulation::StartedFrom(const Scene& scene) const
 }
 
 // Makes the record of step `step` (which the history holds): the step before it taken again from its stored
-// state, with the chosen pair recorded. The world is deterministic, so the step taken again gives the same bits
-// as the stored state of `step`.
+// state, with the chosen pair recorded, and the hands of step `step` put back. The world is deterministic, so the
+// step taken again gives the same bits as the stored state of `step`.
 void Simulation::Record(int step)
 {
     shown_ = std::clamp(step, first_, Last());
@@ -112,19 +137,43 @@ void Simulation::Record(int step)
     record_.before.clear();
     if (shown_ == first_)
     {
-        record_.world = StateAt(shown_);
+        record_.world = StateAt(shown_); // its hands are in the stored state
         record_.steps = shown_;
-        record_.history.assign(samples_.begin(), samples_.begin() + shown_ + 1);
     }
     else
     {
         record_.world = StateAt(shown_ - 1);
         record_.steps = shown_ - 1;
-        record_.history.assign(samples_.begin(), samples_.begin() + shown_);
         StepRecord(record_);
+        const auto hands = hands_.find(shown_);
+        if (hands != hands_.end())
+        {
+            for (const BodyHand& hand : hands->second)
+            {
+                PutHand(record_.world, hand.body, hand.position, hand.velocity);
+            }
+        }
     }
+    SampleHistory(shown_);
     shownScene_ = start_;
     CopyWorldState(record_.world, shownScene_);
+}
+
+// The record's history: the samples held from the oldest to step `step`.
+void Simulation::SampleHistory(int step)
+{
+    const size_t end = static_cast<size_t>(std::clamp(step - sampleFirst_ + 1, 0, static_cast<int>(samples_.size())));
+    record_.history.assign(samples_.begin(), samples_.begin() + static_cast<std::ptrdiff_t>(end));
+}
+
+void Simulation::TakeSample(const SimSample& sample)
+{
+    samples_.push_back(sample);
+    while (samples_.size() > static_cast<size_t>(kMaxSamples))
+    {
+        samples_.pop_front();
+        ++sampleFirst_;
+    }
 }
 
 void Simulation::ShowStep(int step)
@@ -153,9 +202,60 @@ void Simulation::StepForward()
     record_.contact.bodyB = pairB_;
     StepRecord(record_);
     states_.push_back(record_.world);
-    samples_.push_back(record_.history.back());
+    TakeSample(record_.history.back());
+    if (record_.history.size() > static_cast<size_t>(kMaxSamples))
+    {
+        record_.history.erase(record_.history.begin(),
+                              record_.history.end() - static_cast<std::ptrdiff_t>(kMaxSamples));
+    }
     shown_ = Last();
     Drop();
+    CopyWorldState(record_.world, shownScene_);
+}
+
+void Simulation::Hand(int body, Vec2 position, Vec2 velocity)
+{
+    if (states_.empty() || !error_.empty() || body < 0 || body >= static_cast<int>(record_.world.bodies.size()) ||
+        record_.world.bodies[static_cast<size_t>(body)].type == BodyType::Static)
+    {
+        return;
+    }
+    if (shown_ == 0)
+    {
+        StepForward(); // step 0 is the scene as written
+    }
+    // What came after the step shown came from the state without the hand: it is dropped.
+    while (Last() > shown_)
+    {
+        states_.pop_back();
+    }
+    while (!samples_.empty() && sampleFirst_ + static_cast<int>(samples_.size()) - 1 > shown_)
+    {
+        samples_.pop_back();
+    }
+    hands_.erase(hands_.upper_bound(shown_), hands_.end());
+    std::vector<BodyHand>& hands = hands_[shown_];
+    const auto same = std::find_if(hands.begin(), hands.end(), [&](const BodyHand& h) { return h.body == body; });
+    if (same != hands.end())
+    {
+        *same = BodyHand{body, position, velocity};
+    }
+    else
+    {
+        hands.push_back(BodyHand{body, position, velocity});
+    }
+    PutHand(states_.back(), body, position, velocity);
+    PutHand(record_.world, body, position, velocity);
+    // The plots' totals of this step are those of the state with the hand.
+    const SimSample sample = MeasureWorld(record_.world, shown_);
+    if (!samples_.empty() && sampleFirst_ + static_cast<int>(samples_.size()) - 1 == shown_)
+    {
+        samples_.back() = sample;
+    }
+    if (!record_.history.empty())
+    {
+        record_.history.back() = sample;
+    }
     CopyWorldState(record_.world, shownScene_);
 }
 
@@ -167,8 +267,8 @@ void Simulation::StepBack()
     }
 }
 
-// Drops the oldest states beyond the bounds (kMaxStates, kMaxBodyStates); the samples of every step stay for the
-// plots.
+// Drops the oldest states beyond the bounds (kMaxStates, kMaxBodyStates); the plots' samples have their own bound
+// (kMaxSamples).
 void Simulation::Drop()
 {
     const long long bodies = std::max<long long>(1, static_cast<long long>(start_.bodies.size()));
@@ -179,6 +279,8 @@ void Simulation::Drop()
         states_.pop_front();
         ++first_;
     }
+    // The state of the oldest step held has its hands in it; those of older steps are of no more use.
+    hands_.erase(hands_.begin(), hands_.lower_bound(first_ + 1));
 }
 
 void Simulation::SetPlaying(bool playing)

@@ -9,6 +9,7 @@
 #include <satviz/world.h>
 
 #include <deque>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ class Simulation
     static constexpr long long kMaxBodyStates = 200000;
     /// Seconds of stepping in one frame beyond which Advance takes no further step in that frame.
     static constexpr double kStepBudget = 0.004;
+    /// Most steps whose totals (SimSample) the plots keep: the latest ones, a minute at 60 steps a second; older
+    /// ones are dropped as new steps are taken.
+    static constexpr int kMaxSamples = 3600;
 
     /// Starts over from `scene` at step 0, paused, recording the solver's work on the pair (pairA, pairB). The run
     /// it replaces is kept aside when it took steps, and comes back, at the step it showed, when a later Restart
@@ -66,6 +70,13 @@ class Simulation
     /// While playing, the seconds until Advance takes the next step.
     double SecondsUntilNextStep() const;
 
+    /// A hand on body `body` (a grab and a throw with the mouse while playing): in the state of the step shown it
+    /// is at `position` moving at `velocity`, without spin, and awake; the steps taken from there start from that
+    /// state. A hand at step 0 (the scene as written) acts on step 1, taken first. The steps after the one shown
+    /// are dropped; the hand is kept with its step, so that stepping back and forward again shows the same
+    /// states. A static body, or a body that does not exist, takes no hand.
+    void Hand(int body, Vec2 position, Vec2 velocity);
+
     /// Records the solver's work on the pair (pairA, pairB) in the step shown.
     void ChoosePair(int pairA, int pairB);
     /// The world at the step shown, with the record of the step that led to it (none at step 0).
@@ -76,23 +87,39 @@ class Simulation
     const World& StateAt(int step) const { return states_[static_cast<size_t>(step - first_)]; }
 
   private:
+    /// A hand on a body at one step (Hand).
+    struct BodyHand
+    {
+        int body = -1;
+        Vec2 position{};
+        Vec2 velocity{};
+    };
+
     /// One run: a start scene and the states it went through.
     struct Run
     {
         Scene start;
         std::deque<World> states;
-        std::vector<SimSample> samples;
+        std::deque<SimSample> samples;
+        int sampleFirst = 0;
+        std::map<int, std::vector<BodyHand>> hands;
         int first = 0;
         int shown = 0;
     };
 
     void Record(int step);
     void Drop();
+    void TakeSample(const SimSample& sample);
+    void SampleHistory(int step);
+    void PutAside();
+    void TakeBack(Run& run);
 
     Scene start_;
     std::string error_;
-    std::deque<World> states_;       // states_[i] is the world at step first_ + i
-    std::vector<SimSample> samples_; // the totals of every step from 0 to Last()
+    std::deque<World> states_;      // states_[i] is the world at step first_ + i
+    std::deque<SimSample> samples_; // the totals of the steps from sampleFirst_ to Last(), at most kMaxSamples
+    int sampleFirst_ = 0;
+    std::map<int, std::vector<BodyHand>> hands_; // the hands each step took, by step
     int first_ = 0;
     int shown_ = 0;
     int pairA_ = -1;

@@ -1642,3 +1642,94 @@ TEST_CASE("Clicking a contact point of the step shown chooses its pair for the r
     CHECK(h.Doc().UndoDepth() == 1); // the pair's change, an edit of the view
     CHECK_FALSE(h.Doc().Dirty());
 }
+
+TEST_CASE("A body grabbed while the simulation plays follows the pointer and is thrown at its speed, and stepping "
+          "back and forward shows the same states",
+          "[app][sim]")
+{
+    const fs::path file = ScratchCopy("l15_slope.json");
+    Harness h(file.string());
+    const Simulation& sim = h.app->GetSimulation();
+    h.Key('P');
+    h.Frames(10);
+    REQUIRE(sim.Playing());
+    const Vec2 start = sim.Record().world.bodies[1].position;
+    // Grab the box and move the pointer 1 m up and to the left in 8 frames of 1/60 s, then let go.
+    const Vec2 move{-0.8, 0.6};
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = h.OnScreen(start);
+    io.MouseDown[0] = true;
+    h.Frames(1);
+    CHECK(h.app->Selected() == 1);
+    const Vec2 grabbedAt = ToWorld(h.View().Camera(), {io.MousePos.x - h.CanvasOrigin().x,
+                                                       io.MousePos.y - h.CanvasOrigin().y});
+    std::vector<std::pair<int, World>> held; // the states shown while the box was held
+    for (int i = 1; i <= 8; ++i)
+    {
+        io.MousePos = h.OnScreen(grabbedAt + (i / 8.0) * move);
+        h.Frames(1);
+        held.emplace_back(sim.Shown(), sim.Record().world);
+        // The box is where the pointer holds it, at the step shown.
+        const Vec2 at = sim.Record().world.bodies[1].position;
+        CHECK(at.x == Approx(start.x + i / 8.0 * move.x).margin(0.01));
+        CHECK(at.y == Approx(start.y + i / 8.0 * move.y).margin(0.01));
+    }
+    io.MouseDown[0] = false;
+    h.Frames(1);
+    REQUIRE(sim.Playing());
+    const int thrownAt = sim.Shown();
+    const World thrown = sim.Record().world;
+    // The pointer moved 1/8 of `move` each 1/60 s, and stood still in the release frame: over the last 0.1 s
+    // (six frames) it moved 5 or 6 eighths of `move` in 6 or 7 frames.
+    const Vec2 velocity = thrown.bodies[1].velocity;
+    const double speed = Length(move) / 8.0 * 60.0;
+    CHECK(Dot(velocity, move) / (Length(velocity) * Length(move)) == Approx(1.0).margin(1e-3));
+    CHECK(Length(velocity) >= 5.0 / 7.0 * speed * 0.99);
+    CHECK(Length(velocity) <= speed * 1.01);
+    CHECK(thrown.bodies[1].angularVelocity == 0.0);
+    // A throw is not an edit of the scene.
+    CHECK(h.Doc().UndoDepth() == 0);
+    CHECK_FALSE(h.Doc().Dirty());
+    h.Frames(6);
+    h.Key('P');
+    REQUIRE_FALSE(sim.Playing());
+    const int last = sim.Shown();
+    REQUIRE(last > thrownAt + 3);
+    // The step after the throw is the world's step from the thrown state, as Step takes it.
+    World after = thrown;
+    Step(after, 1.0 / 60.0);
+    h.app->SimShowStep(thrownAt + 1);
+    CHECK(SameState(sim.Record().world, after));
+    // Back to the steps the box was held in, and forward again: the same states, the hands kept with their steps.
+    for (const auto& [step, world] : held)
+    {
+        h.app->SimShowStep(step);
+        CHECK(sim.Shown() == step);
+        CHECK(SameState(sim.Record().world, world));
+    }
+    h.app->SimShowStep(thrownAt);
+    CHECK(SameState(sim.Record().world, thrown));
+    // Not the world satviz-sim steps from the scene as written: the hand changed it.
+    CHECK_FALSE(SameState(sim.Record().world, SteppedAsSatvizSim(file, thrownAt)));
+}
+
+TEST_CASE("The plots keep the totals of the latest kMaxSamples steps", "[app][sim]")
+{
+    const SceneResult loaded = LoadScene((fs::path(SATVIZ_SOURCE_DIR) / "tutorials/scenes/l14_head_on.json").string());
+    REQUIRE(loaded.Ok());
+    Simulation sim;
+    sim.Restart(loaded.scene, 0, 1);
+    const int steps = Simulation::kMaxSamples + 25;
+    for (int i = 0; i < steps; ++i)
+    {
+        sim.StepForward();
+    }
+    const std::vector<SimSample>& history = sim.Record().history;
+    REQUIRE(history.size() == static_cast<size_t>(Simulation::kMaxSamples));
+    CHECK(history.back().step == steps);
+    CHECK(history.front().step == steps - Simulation::kMaxSamples + 1);
+    // Stepping back shows the samples up to the step shown, from the same oldest.
+    sim.StepBack();
+    CHECK(sim.Record().history.back().step == steps - 1);
+    CHECK(sim.Record().history.front().step == steps - Simulation::kMaxSamples + 1);
+}
