@@ -5,6 +5,7 @@
 #include "voronoi_view.h"
 #include "world_views.h"
 
+#include <satviz/collide.h>
 #include <satviz/render/describe.h>
 #include <satviz/render/painter.h>
 #include <satviz/render/response_steps.h>
@@ -1249,6 +1250,29 @@ class Painter
                               from.y - 20.0f * static_cast<float>(pitfall.normal.y)};
             }
             hasPitfallArrow_ = true;
+            // Where the pitfall's push leaves B, and how deep B still lies in A there (or lies now, pushed the
+            // wrong way): the wrong depth the mistake is about, beside the MTV's outline that just clears A.
+            Transform pushed = bodyB_.Xf();
+            pushed.p = pushed.p + pitfall.depth * pitfall.normal;
+            const std::vector<ScreenPoint> outline = ShapeOutline(view_, bodyB_.shape, pushed);
+            DashedOutline(canvas_, outline, palette::kInk, 1.2f, bounds_);
+            const Manifold left = Collide(bodyA_.shape, bodyA_.Xf(), bodyB_.shape, pushed);
+            if (left.overlap && left.depth > 0.0)
+            {
+                // Anchored where the pushed outline still lies in A (between its contact points), away from B.
+                Vec2 inside{};
+                for (int k = 0; k < left.contactCount; ++k)
+                {
+                    inside = inside + (1.0 / left.contactCount) * left.contacts[k].point;
+                }
+                if (left.contactCount == 0)
+                {
+                    inside = ShapeCenter(bodyB_.shape, pushed);
+                }
+                labels_.Place(At(inside), "after the pitfall's push: " + std::string(Dot(pitfall.normal, m.normal) >= 0.0 ? "still " : "") +
+                                                  FormatNumber(left.depth) + " deep",
+                              TextStyle::Label, palette::kInk, 1.0f, 1.0f, 14.0f, LabelRank::Verdict);
+            }
             labels_.ReserveLine(from, pitfallTo_, 2.0f);
             labels_.Reserve({pitfallTo_.x - 10.0f, pitfallTo_.y - 10.0f, pitfallTo_.x + 10.0f, pitfallTo_.y + 10.0f});
             labels_.Place(pitfallTo_, "pitfall " + FormatNumber(pitfall.depth), TextStyle::Label, palette::kInk,

@@ -1310,6 +1310,20 @@ TEST_CASE("Each pitfall scene shows its mistake going wrong beside the right ans
         CHECK(p.overlap == setup.study.textbookResult.overlap);
         // It pushes sideways where the MTV goes up.
         CHECK(std::abs(Dot(p.normal, setup.study.textbookResult.normal)) < 1e-12);
+        // The figure shows the wrong depth at work: the crate pushed by it still lies in the floor. Both are boxes
+        // square to the axes, so the depth left is the smaller of the overlaps along x and along y.
+        FigureSetup drawn = SetUpFigure(scene, {});
+        const RecordingCanvas canvas = Paint(scene, drawn, drawn.study.VerdictStep(), kAllLayers);
+        const auto [fx0, fx1] = Project(scene.bodies[0], {1.0, 0.0});
+        const auto [fy0, fy1] = Project(scene.bodies[0], {0.0, 1.0});
+        Body pushed = scene.bodies[1];
+        pushed.position = pushed.position + p.depth * p.normal;
+        const auto [cx0, cx1] = Project(pushed, {1.0, 0.0});
+        const auto [cy0, cy1] = Project(pushed, {0.0, 1.0});
+        const double left = std::min(std::min(fx1, cx1) - std::max(fx0, cx0), std::min(fy1, cy1) - std::max(fy0, cy0));
+        REQUIRE(left > 0.0);
+        const double shown = NumberAfter(canvas, "labels", "after the pitfall's push: still ");
+        CHECK(std::abs(shown - left) < 0.0051);
     }
     {
         const Scene scene = Load(dir + "pitfall_direction.json");
