@@ -34,6 +34,50 @@ ScreenRect Footprint(const ScreenRect& text)
     return {text.minX - kHalo, text.minY, text.maxX + kHalo, text.maxY};
 }
 
+// Whether a point lies strictly inside a convex outline of either orientation.
+bool InsideConvex(const std::vector<ScreenPoint>& outline, ScreenPoint p)
+{
+    if (outline.size() < 3)
+    {
+        return false;
+    }
+    int sign = 0;
+    for (size_t i = 0; i < outline.size(); ++i)
+    {
+        const ScreenPoint& a = outline[i];
+        const ScreenPoint& b = outline[(i + 1) % outline.size()];
+        const float cross = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+        const int s = cross > 0.0f ? 1 : (cross < 0.0f ? -1 : 0);
+        if (s == 0 || (sign != 0 && s != sign))
+        {
+            return false;
+        }
+        sign = s;
+    }
+    return true;
+}
+
+// Whether a label's rectangle reads as lying in the outline: its centre inside it, or two of the points a quarter
+// in from its corners (a label astride the outline's edge reads as either body's).
+bool InOutline(const std::vector<ScreenPoint>& outline, const ScreenRect& rect)
+{
+    const float cx = 0.5f * (rect.minX + rect.maxX);
+    const float cy = 0.5f * (rect.minY + rect.maxY);
+    if (InsideConvex(outline, {cx, cy}))
+    {
+        return true;
+    }
+    const float qx = 0.25f * (rect.maxX - rect.minX);
+    const float qy = 0.25f * (rect.maxY - rect.minY);
+    int inside = 0;
+    for (const ScreenPoint p : {ScreenPoint{rect.minX + qx, rect.minY + qy}, ScreenPoint{rect.maxX - qx, rect.minY + qy},
+                                ScreenPoint{rect.minX + qx, rect.maxY - qy}, ScreenPoint{rect.maxX - qx, rect.maxY - qy}})
+    {
+        inside += InsideConvex(outline, p) ? 1 : 0;
+    }
+    return inside >= 2;
+}
+
 } // namespace
 
 LabelPlacer::LabelPlacer(Canvas& canvas, float width, float height) : canvas_(canvas), width_(width), height_(height) {}
@@ -67,7 +111,20 @@ void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
     {
         return;
     }
-    labels_.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank});
+    labels_.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}});
+}
+
+void LabelPlacer::PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoint anchor, std::string_view text,
+                               TextStyle style, Color color, float dx, float dy, float distance, LabelRank rank)
+{
+    const size_t before = labels_.size();
+    Place(anchor, text, style, color, dx, dy, distance, rank);
+    // An anchor inside the other body (a shape contained in the other, a corner pushed into it) has no outside
+    // near it: its label stays beside it rather than at the end of a long leader line.
+    if (labels_.size() > before && !InsideConvex(other, anchor))
+    {
+        labels_.back().avoid = other;
+    }
 }
 
 bool LabelPlacer::Inside(const ScreenRect& rect) const
@@ -146,7 +203,7 @@ void LabelPlacer::Flush(Color halo)
             {
                 const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
                 const ScreenRect rect = Around(label->anchor, size, start + c.turn * 0.25 * kPi, reach);
-                if (Inside(rect) && Free(rect, pass == 0 ? kLabelSpacing : 0.0f))
+                if (Inside(rect) && Free(rect, pass == 0 ? kLabelSpacing : 0.0f) && !InOutline(label->avoid, rect))
                 {
                     chosen = rect;
                     found = true;
@@ -162,7 +219,7 @@ void LabelPlacer::Flush(Color halo)
             {
                 const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
                 const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
-                if (Inside(rect) && Free(rect, 0.0f))
+                if (Inside(rect) && Free(rect, 0.0f) && !InOutline(label->avoid, rect))
                 {
                     chosen = rect;
                     found = true;

@@ -41,6 +41,11 @@ class LabelPlacer
     /// Adds `text` near `anchor`, `distance` pixels away, preferring the direction (dx, dy) (any length).
     void Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
                float distance = 6.0f, LabelRank rank = LabelRank::Note);
+    /// Place, kept out of `other` (a convex outline on screen, any orientation): the label of a body's vertex,
+    /// edge or face never sits inside the other body of the pair, where it would read as that body's, unless its
+    /// anchor lies inside that body.
+    void PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoint anchor, std::string_view text,
+                      TextStyle style, Color color, float dx, float dy, float distance, LabelRank rank);
     /// Places every label added and draws them, in the group "labels": leader lines first, then each label on a
     /// faint halo of the background.
     void Flush(Color halo);
@@ -54,6 +59,7 @@ class LabelPlacer
         Color color;
         float dx, dy, distance;
         LabelRank rank;
+        std::vector<ScreenPoint> avoid; // a convex outline the label's centre stays out of (empty: none)
     };
     struct Line
     {

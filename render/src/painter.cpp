@@ -572,6 +572,12 @@ class Painter
     Color ColorOf(int shape) const { return shape == 0 ? palette::kShapeA : palette::kShapeB; }
     Color InkOf(int shape) const { return shape == 0 ? palette::kShapeA : palette::kShapeBInk; }
     const Body& BodyOf(int shape) const { return shape == 0 ? bodyA_ : bodyB_; }
+    // A body of the pair's outline on screen, where it stands in the figure.
+    std::vector<ScreenPoint> OutlineOf(int shape) const
+    {
+        const Body& body = BodyOf(shape);
+        return ShapeOutline(view_, body.shape, body.Xf());
+    }
 
     // Faint world grid at a round spacing of at least 40 pixels, with the world axes a little stronger.
     void Grid()
@@ -1359,18 +1365,19 @@ class Painter
                           4.0f);
         }
         canvas_.Segment(r1, r2, InkOf(referenceShape), 5.0f);
-        labels_.Place(At(0.5 * (clip.referenceV1 + clip.referenceV2)), "reference face", TextStyle::Label,
-                      InkOf(referenceShape), static_cast<float>(n.x), static_cast<float>(-n.y), 10.0f,
-                      LabelRank::Verdict);
+        // Each name on its own body's side of the contact, out of the other body, where it reads as that body's.
+        labels_.PlaceOutside(OutlineOf(1 - referenceShape), At(0.5 * (clip.referenceV1 + clip.referenceV2)),
+                             "reference face", TextStyle::Label, InkOf(referenceShape), static_cast<float>(-n.x),
+                             static_cast<float>(n.y), 10.0f, LabelRank::Verdict);
         const ScreenPoint i1 = At(clip.incidentV1);
         const ScreenPoint i2 = At(clip.incidentV2);
         canvas_.Segment(i1, i2, InkOf(clip.incidentShape), 5.0f);
         canvas_.Segment(i1, i2, palette::kBackground, 1.5f);
         used_.push_back(LegendMark::Reference);
         used_.push_back(LegendMark::Incident);
-        labels_.Place(At(0.5 * (clip.incidentV1 + clip.incidentV2)), "incident edge", TextStyle::Label,
-                      InkOf(clip.incidentShape), static_cast<float>(-n.x), static_cast<float>(n.y), 10.0f,
-                      LabelRank::Verdict);
+        labels_.PlaceOutside(OutlineOf(1 - clip.incidentShape), At(0.5 * (clip.incidentV1 + clip.incidentV2)),
+                             "incident edge", TextStyle::Label, InkOf(clip.incidentShape), static_cast<float>(n.x),
+                             static_cast<float>(-n.y), 10.0f, LabelRank::Verdict);
     }
 
     void Labels()
@@ -1396,15 +1403,17 @@ class Painter
                 {
                     const Vec2 v = TransformPoint(xf, poly.Vertices()[i]);
                     const Vec2 out = v - centroid;
-                    labels_.Place(At(v), std::to_string(i), TextStyle::Label, InkOf(s), static_cast<float>(out.x),
-                                  static_cast<float>(-out.y), 4.0f, LabelRank::Vertex);
+                    labels_.PlaceOutside(OutlineOf(1 - s), At(v), std::to_string(i), TextStyle::Label, InkOf(s),
+                                         static_cast<float>(out.x), static_cast<float>(-out.y), 4.0f,
+                                         LabelRank::Vertex);
                 }
                 for (int i = 0; edgeNumbers && i < poly.Count(); ++i)
                 {
                     const Vec2 mid = TransformPoint(xf, poly.Vertices()[i] + 0.5 * poly.Edge(i));
                     const Vec2 n = Rotate(xf.q, poly.Normal(i));
-                    labels_.Place(At(mid), "e" + std::to_string(i), TextStyle::Label, WithAlpha(InkOf(s), 0.75f),
-                                  static_cast<float>(n.x), static_cast<float>(-n.y), 5.0f, LabelRank::Edge);
+                    labels_.PlaceOutside(OutlineOf(1 - s), At(mid), "e" + std::to_string(i), TextStyle::Label,
+                                         WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x),
+                                         static_cast<float>(-n.y), 5.0f, LabelRank::Edge);
                 }
             }
         }
