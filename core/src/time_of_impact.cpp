@@ -761,17 +761,21 @@ void TimeOfImpactStage::Run()
             Resolve(group);
         }
     }
+    m_rotation.resize(static_cast<size_t>(n));
     for (int i = 0; i < n; ++i)
     {
         Motion& m = m_motion[i];
         if (!m.moves)
         {
+            m_rotation[static_cast<size_t>(i)] = m_xfs[i].q;
             continue;
         }
         RigidBody& body = world.bodies[i];
         const Vec2 center = CenterAt(i, 1.0);
         body.angle = m.angle + (1.0 - m.t) * m_dt * m.w;
-        body.position = center - Rotate(MakeRot(body.angle), body.localCenter);
+        const Rot q = MakeRot(body.angle);
+        m_rotation[static_cast<size_t>(i)] = q;
+        body.position = center - Rotate(q, body.localCenter);
     }
 }
 

@@ -59,6 +59,9 @@ class TimeOfImpactStage
     /// Whether body i took a time-ordered hit in the step (after Run): its pose is the sweep's, not the one the
     /// step's contacts were solved for.
     bool TookHit(int i) const { return !m_hits.empty() && m_hits[static_cast<size_t>(i)] > 0; }
+    /// Body i's rotation at the end of the step (after Run): MakeRot of its angle, computed once here for the
+    /// position passes.
+    Rot Rotation(int i) const { return m_rotation[static_cast<size_t>(i)]; }
 
   private:
     struct Motion
@@ -106,6 +109,7 @@ class TimeOfImpactStage
     double m_dt;
     const std::vector<Transform>& m_xfs;
     std::vector<Motion> m_motion;
+    std::vector<Rot> m_rotation; // each body's rotation at the end of the step (Run)
     std::vector<uint8_t> m_fast;
     std::vector<Aabb> m_reach;
     std::vector<uint8_t> m_connected; // m_near lists every body the reach meets

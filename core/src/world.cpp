@@ -125,7 +125,11 @@ Rot TurnBy(Rot q, double angle)
 {
     const double c = q.c - angle * q.s;
     const double s = q.s + angle * q.c;
-    const double inv = 1.0 / std::sqrt(c * c + s * s);
+    // |(c, s)|^2 = 1 + x with x about angle^2. A pass turns a body by little, and for small x the series
+    // 1 - x/2 + 3x^2/8 of 1/sqrt(1 + x) is exact to rounding (its next term, 5x^3/16, is below 1e-16), without a
+    // square root or a division.
+    const double x = c * c + s * s - 1.0;
+    const double inv = std::fabs(x) < 1e-6 ? 1.0 - x * (0.5 - 0.375 * x) : 1.0 / std::sqrt(1.0 + x);
     return {c * inv, s * inv};
 }
 
@@ -295,6 +299,7 @@ struct Stepper
     std::vector<uint8_t> hit;          // per body: took a time-ordered hit in the step (Move)
     std::vector<uint8_t> bullets;      // per body: moves beyond its reach or turns fast (FindContacts)
     std::vector<double> bodyReach;     // per body: how far FindContacts looked beyond its box
+    std::vector<Rot> rotations;        // per body: MakeRot of its angle after Move
 
     Stepper(World& w, double step) : world(w), dt(step), settings(w.settings) {}
 
@@ -451,6 +456,27 @@ void Stepper::FindContacts()
     contacts.clear();
     int64_t touching = 0, speculative = 0;
     contacts.reserve(previous.size() + 16);
+    // The previous contacts are in pair order: those of body a are previous[firstOf[a]] up to firstOf[a + 1], a
+    // few to scan for b.
+    std::vector<int> firstOf(static_cast<size_t>(n) + 1, 0);
+    for (const WorldContact& c : previous)
+    {
+        ++firstOf[static_cast<size_t>(c.a) + 1];
+    }
+    for (int i = 0; i < n; ++i)
+    {
+        firstOf[static_cast<size_t>(i) + 1] += firstOf[static_cast<size_t>(i)];
+    }
+    const auto previousOf = [&](int a, int b) -> const WorldContact* {
+        for (int k = firstOf[static_cast<size_t>(a)]; k < firstOf[static_cast<size_t>(a) + 1]; ++k)
+        {
+            if (previous[static_cast<size_t>(k)].b == b)
+            {
+                return &previous[static_cast<size_t>(k)];
+            }
+        }
+        return nullptr;
+    };
     for (const auto& [i, j] : candidates)
     {
         RigidBody& a = bodies[i];
@@ -489,7 +515,7 @@ void Stepper::FindContacts()
         c.normalBody = m.axis.shape == 1 ? 1 : 0;
         c.pointCount = m.contactCount;
         c.material = CombineMaterials(a.material, b.material);
-        const WorldContact* old = FindContact(previous, i, j);
+        const WorldContact* old = previousOf(i, j);
         const double reach = 0.25 * std::min(a.type == BodyType::Dynamic ? a.innerRadius : INFINITY,
                                              b.type == BodyType::Dynamic ? b.innerRadius : INFINITY);
         for (int k = 0; k < m.contactCount; ++k)
@@ -961,9 +987,11 @@ void Stepper::Move()
     detail::TimeOfImpactStage stage(world, dt, xfs, centers, solverBodies);
     stage.Run();
     hit.assign(static_cast<size_t>(n), 0);
+    rotations.resize(static_cast<size_t>(n));
     for (int i = 0; i < n; ++i)
     {
         hit[static_cast<size_t>(i)] = stage.TookHit(i) ? 1 : 0;
+        rotations[static_cast<size_t>(i)] = stage.Rotation(i);
     }
 }
 
@@ -1070,7 +1098,7 @@ void Stepper::CorrectPositions()
     for (int i = 0; i < n; ++i)
     {
         angle[i] = bodies[i].angle;
-        const Rot q = MakeRot(angle[i]);
+        const Rot q = rotations[static_cast<size_t>(i)];
         c[i] = bodies[i].position + Rotate(q, bodies[i].localCenter);
         turns[i] = bodies[i].turnRadius > 0.0 ? 1 : 0;
         turn[i] = turns[i] ? InvMulRot(xfs[i].q, q) : Rot{};
@@ -1381,8 +1409,10 @@ void Stepper::CorrectPositions()
     {
         if (IsAwakeDynamic(bodies[i]))
         {
+            // The passes turned few bodies: the others keep the rotation Move computed for their angle.
+            const Rot q = angle[i] == bodies[i].angle ? rotations[static_cast<size_t>(i)] : MakeRot(angle[i]);
             bodies[i].angle = angle[i];
-            bodies[i].position = c[i] - Rotate(MakeRot(angle[i]), bodies[i].localCenter);
+            bodies[i].position = c[i] - Rotate(q, bodies[i].localCenter);
         }
     }
 }
