@@ -550,6 +550,11 @@ void App::Refresh()
         sim_.ChoosePair(viewer_.Setup().study.bodyA, viewer_.Setup().study.bodyB);
     }
     viewer_.SetSim(sim_.Error().empty() ? &sim_.Record() : nullptr);
+    // A hit chosen is one of its step's: another step shows every hit again.
+    viewer_.SetHit(sim_.Error().empty() && sim_.Shown() == simHitStep_ &&
+                           simHit_ < static_cast<int>(sim_.Record().lastStep.hits.size())
+                       ? simHit_
+                       : -1);
     if (fresh && !viewer_.Setup().Ok())
     {
         SetStatus(viewer_.Setup().error, true);
@@ -607,6 +612,15 @@ void App::SimHand(int index, Vec2 position, Vec2 pointerVelocity)
     // Simulated time runs Speed() * dt times as fast as the user's.
     const double rate = sim_.Speed() * sim_.Record().dt;
     sim_.Hand(index, position, rate > 0.0 ? (1.0 / rate) * pointerVelocity : pointerVelocity);
+    Refresh();
+}
+
+void App::SimChooseHit(int hit)
+{
+    sim_.SetPlaying(false);
+    const bool again = hit == simHit_ && simHitStep_ == sim_.Shown();
+    simHit_ = again ? -1 : hit;
+    simHitStep_ = sim_.Shown();
     Refresh();
 }
 

@@ -205,6 +205,9 @@ class App
     /// simulated time at 1 / dt steps a second and scales with the speed), without spin. Not an edit of the
     /// scene: the simulation's history keeps it (Simulation::Hand).
     void SimHand(int index, Vec2 position, Vec2 pointerVelocity);
+    /// Shows the instant of hit `hit` of the step shown (its index in the step's time order): its two bodies where
+    /// they touch; the same hit again, or -1, shows every hit. Pauses.
+    void SimChooseHit(int hit);
     /// Shows the solver's response on the contact of bodies `a` and `b` (the figure's pair becomes them).
     void SimChooseContact(int a, int b);
     /// Sets body `index`'s material, static or dynamic and density, as one edit.
@@ -258,6 +261,8 @@ class App
     Viewer viewer_;
     Simulation sim_;
     bool stateTaken_ = false; // this edit already took the simulation's state
+    int simHit_ = -1;         // the hit whose instant is shown, of step simHitStep_
+    int simHitStep_ = -1;
     Panels panels_;
     RecentFiles recent_;
     int selected_ = -1;

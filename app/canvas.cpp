@@ -134,8 +134,10 @@ void Panels::CanvasWindow()
     {
         ImDrawList* list = ImGui::GetWindowDrawList();
         ImDrawListCanvas canvas(list, app_.Fonts(), origin);
-        PaintFigure(canvas, viewer.Studied(), viewer.Setup().study, viewer.CurrentFigure());
+        const Figure figure = viewer.CurrentFigure();
+        PaintFigure(canvas, viewer.Studied(), viewer.Setup().study, figure);
         Handles(list, origin);
+        AnnounceHits(canvas, figure, origin);
     }
     ImGui::End();
     ImGui::PopStyleVar(2);
@@ -186,6 +188,24 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
             if (drag_ == DragKind::None && Distance(mouse, VelocityHandle(camera, body)) <= kHandleRadius)
             {
                 drag_ = DragKind::Velocity;
+            }
+        }
+        if (drag_ == DragKind::None && !io.KeyShift && viewer.Setup().Ok())
+        {
+            // A hit on the hits layer's time bar: the bodies at its instant.
+            ImDrawListCanvas measure(ImGui::GetWindowDrawList(), app_.Fonts(), origin);
+            const std::vector<HitMark> marks =
+                HitMarks(measure, viewer.Studied(), viewer.Setup().study, viewer.CurrentFigure());
+            for (size_t h = 0; h < marks.size() && drag_ == DragKind::None; ++h)
+            {
+                const HitMark& mark = marks[h];
+                if (Distance(mouse, mark.dot) <= kHandleRadius ||
+                    (mouse.x >= mark.labelMin.x && mouse.x <= mark.labelMax.x && mouse.y >= mark.labelMin.y &&
+                     mouse.y <= mark.labelMax.y))
+                {
+                    app_.SimChooseHit(static_cast<int>(h));
+                    drag_ = DragKind::Pan;
+                }
             }
         }
         if (drag_ == DragKind::None && !io.KeyShift && !playing)
@@ -312,6 +332,36 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
         drag_ = DragKind::None;
         dragVertex_ = -1;
     }
+}
+
+// Where the hits layer's time bar puts the hits of the step shown, once per step and hit chosen, for scripts that
+// drive the window (the end-to-end test); and the chosen hit's bodies at its instant.
+void Panels::AnnounceHits(Canvas& canvas, const Figure& figure, ImVec2 origin)
+{
+    const Simulation& sim = app_.GetSimulation();
+    const std::string key = std::to_string(sim.Shown()) + " " + std::to_string(figure.hit);
+    if (figure.sim == nullptr || key == announcedHits_)
+    {
+        return;
+    }
+    announcedHits_ = key;
+    const Viewer& viewer = app_.GetViewer();
+    const std::vector<HitMark> marks = HitMarks(canvas, viewer.Studied(), viewer.Setup().study, figure);
+    for (size_t h = 0; h < marks.size(); ++h)
+    {
+        std::printf("satviz: hit %zu of step %d at %.0f,%.0f\n", h + 1, sim.Shown(), marks[h].dot.x + origin.x,
+                    marks[h].dot.y + origin.y);
+    }
+    const std::vector<StepHit>& hits = figure.sim->lastStep.hits;
+    if (figure.hit >= 0 && static_cast<size_t>(figure.hit) < hits.size())
+    {
+        const StepHit& hit = hits[static_cast<size_t>(figure.hit)];
+        std::printf("satviz: hit %d of step %d shown: time %.17g bodies %d %d positions %.17g %.17g %.17g %.17g angles "
+                    "%.17g %.17g\n",
+                    figure.hit + 1, sim.Shown(), hit.time, hit.a, hit.b, hit.position[0].x, hit.position[0].y,
+                    hit.position[1].x, hit.position[1].y, hit.angle[0], hit.angle[1]);
+    }
+    std::fflush(stdout);
 }
 
 // The selected body's handles: its vertices, the turning handle above it, and its velocity arrow's tip.

@@ -1199,6 +1199,7 @@ void Panels::HelpOverlay()
         HelpBullet("drag a body: move it;  shift-drag, or the round handle above it: turn it");
         HelpBullet("drag a vertex handle of the selected polygon: reshape it (it must stay convex)");
         HelpBullet("drag the arrow tip (or the small v handle): set the velocity (the arrow: one time unit)");
+        HelpBullet("the hits layer: click a hit on its time bar to see its bodies at that instant (again: all hits)");
         HelpBullet("while the simulation plays, drag a body: it follows the pointer, and leaves at the pointer's "
                    "speed when you let go (a throw)");
         HelpBullet("drag empty space, or with the right button: pan;  wheel: zoom about the pointer");

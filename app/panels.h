@@ -6,6 +6,8 @@
 #pragma once
 
 #include <satviz/math.h>
+#include <satviz/render/canvas.h>
+#include <satviz/render/painter.h>
 
 #include <imgui.h>
 
@@ -75,6 +77,7 @@ class Panels
     void CanvasWindow();
     void CanvasInput(ImVec2 origin, bool hovered);
     void Handles(ImDrawList* list, ImVec2 origin);
+    void AnnounceHits(Canvas& canvas, const Figure& figure, ImVec2 origin);
     void Announce(const std::string& what);
 
     App& app_;
@@ -100,6 +103,7 @@ class Panels
     // The simulation's step and pair last printed for scripts (PrintShownState, ResponseSteps).
     int printedStep_ = -1;
     std::string printedResponse_;
+    std::string announcedHits_; // the step and hit whose time bar was last printed
 };
 
 } // namespace satviz

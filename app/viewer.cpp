@@ -188,6 +188,7 @@ Figure Viewer::CurrentFigure() const
     figure.view = camera_;
     figure.step = step_;
     figure.sim = sim_;
+    figure.hit = sim_ != nullptr ? hit_ : -1;
     return figure;
 }
 

@@ -56,6 +56,10 @@ class Viewer
     Figure CurrentFigure() const;
     /// The stepped world the world's layers draw (not owned; it outlives the viewer's use of it); null: none.
     void SetSim(const SimRecord* sim) { sim_ = sim; }
+    /// Shows the instant of hit `hit` of the stepped world's step (Figure::hit); -1: every hit.
+    void SetHit(int hit) { hit_ = hit; }
+    /// The hit whose instant is shown, -1 for none.
+    int Hit() const { return hit_; }
 
     /// The trace step shown, from 0.
     int Step() const { return step_; }
@@ -129,6 +133,7 @@ class Viewer
 
     int backgroundVertices_;
     const SimRecord* sim_ = nullptr;
+    int hit_ = -1;
     ViewChoices choices_;
     FigureSetup setup_;
     Scene studied_;

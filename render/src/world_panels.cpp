@@ -24,6 +24,25 @@ void PanelOrder(LayerMask layers, float top, float& counts, float& response, flo
 
 } // namespace
 
+float HitsPanelTop(LayerMask layers, float worldTop)
+{
+    float counts = 0.0f, response = 0.0f, hits = 0.0f, plots = 0.0f;
+    PanelOrder(layers & kWorldLayers, worldTop, counts, response, hits, plots);
+    return hits;
+}
+
+std::vector<HitMark> HitMarks(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure)
+{
+    if (figure.sim == nullptr || !(figure.layers & kLayerHits))
+    {
+        return {};
+    }
+    const FigureLayout layout =
+        LayoutFigure(study, figure.layers, figure.view.width, figure.view.height, !figure.caption.empty());
+    return LayOutHitMarks(canvas, scene, *figure.sim, static_cast<float>(figure.view.width),
+                          HitsPanelTop(figure.layers, layout.worldTop));
+}
+
 float WorldPanelsHeight(LayerMask layers)
 {
     return ((layers & kLayerBroadphase) ? kCountsPanel : 0.0f) + ((layers & kLayerResponse) ? kResponsePanel : 0.0f) +
@@ -44,7 +63,7 @@ void PaintWorldScene(Canvas& canvas, LabelPlacer& labels, const View& view, cons
     }
     if (figure.layers & kLayerHits)
     {
-        PaintHitsScene(canvas, labels, view, scene, sim, bounds);
+        PaintHitsScene(canvas, labels, view, scene, sim, figure.hit, bounds);
     }
     if (figure.layers & kLayerResponse)
     {
@@ -85,7 +104,7 @@ void PaintWorldPanels(Canvas& canvas, const Scene& scene, const Figure& figure, 
     if (layers & kLayerHits)
     {
         canvas.Segment({0.0f, hits}, {width, hits}, palette::kFaint, 1.0f);
-        PaintHitsPanel(canvas, scene, sim, width, hits);
+        PaintHitsPanel(canvas, scene, sim, figure.hit, width, hits);
     }
     if (layers & kLayerPlots)
     {

@@ -43,11 +43,17 @@ void PaintResponseScene(Canvas& canvas, LabelPlacer& labels, const View& view, c
 /// The response's steps, one sentence each, and the passes' impulses before and after the clamp.
 void PaintResponsePanel(Canvas& canvas, const Scene& scene, const SimRecord& sim, float width, float top);
 
-/// The bodies of each hit at its time, dashed and numbered.
+/// The bodies of each hit at its time, dashed and numbered; when `chosen` is a hit of the step, that hit's bodies
+/// alone, solid.
 void PaintHitsScene(Canvas& canvas, LabelPlacer& labels, const View& view, const Scene& scene, const SimRecord& sim,
-                    const ScreenRect& bounds);
-/// The hits on a time bar of the step, in the order resolved.
-void PaintHitsPanel(Canvas& canvas, const Scene& scene, const SimRecord& sim, float width, float top);
+                    int chosen, const ScreenRect& bounds);
+/// The hits on a time bar of the step, in the order resolved; `chosen` (a hit of the step, or -1) ringed, and its
+/// instant said.
+void PaintHitsPanel(Canvas& canvas, const Scene& scene, const SimRecord& sim, int chosen, float width, float top);
+/// Where the hits panel at `top` puts each hit's dot and label.
+std::vector<HitMark> LayOutHitMarks(Canvas& canvas, const Scene& scene, const SimRecord& sim, float width, float top);
+/// Top of the hits panel among the world's panels that start at `worldTop`.
+float HitsPanelTop(LayerMask layers, float worldTop);
 
 /// Energy, momentum and the deepest overlap over the steps, the current step marked.
 void PaintPlotsPanel(Canvas& canvas, const SimRecord& sim, float width, float top);

@@ -69,7 +69,8 @@ std::string GroupText(const RecordingCanvas& canvas, const std::string& group)
 bool AnyTextContains(const RecordingCanvas& canvas, const std::string& part)
 {
     const std::vector<std::string> texts = canvas.Texts();
-    return std::any_of(texts.begin(), texts.end(), [&](const std::string& t) { return t.find(part) != std::string::npos; });
+    return std::any_of(texts.begin(), texts.end(),
+                       [&](const std::string& t) { return t.find(part) != std::string::npos; });
 }
 
 bool Contains(const std::string& text, const std::string& part)
@@ -215,8 +216,8 @@ TEST_CASE("World layers: the broadphase draws a pair line between the boxes' cen
     for (const DrawCommand* cmd : canvas.InGroup("sleeping"))
     {
         REQUIRE(cmd->kind == DrawCommand::Kind::Segment);
-        const Vec2 mid = ToWorld(view, {0.5f * (cmd->points[0].x + cmd->points[1].x),
-                                        0.5f * (cmd->points[0].y + cmd->points[1].y)});
+        const Vec2 mid =
+            ToWorld(view, {0.5f * (cmd->points[0].x + cmd->points[1].x), 0.5f * (cmd->points[0].y + cmd->points[1].y)});
         bool inside = false;
         for (const RigidBody& body : s.record.world.bodies)
         {
@@ -249,6 +250,66 @@ TEST_CASE("World layers: a bullet's hit on the time bar and where the bodies wer
         dots += c->kind == DrawCommand::Kind::FillCircle;
     }
     CHECK(dots == 1);
+}
+
+TEST_CASE("World layers: a hit chosen on the time bar draws its bodies where they touch, at its instant",
+          "[painter][world]")
+{
+    // Lesson 17's corner: the ball from (0, 1) at (2, -1) per step (dt = 1) reaches the bottom cushion's top (y = 0)
+    // with its radius 0.25 at t = 0.75, at (1.5, 0.25); bouncing elastically it leaves at (2, 1) and reaches the
+    // right cushion's face (x = 2) at t = 0.875, at (1.75, 0.375).
+    Stepped s = Step("l17_corner.json", 1);
+    REQUIRE(s.record.lastStep.hits.size() == 2);
+    const RecordingCanvas all = Paint(s, kLayerShapes | kLayerLabels | kLayerHits);
+    Figure figure = s.setup.figure;
+    RecordingCanvas measure;
+    const std::vector<HitMark> marks = HitMarks(measure, s.scene, s.setup.study, figure);
+    REQUIRE(marks.size() == 2);
+    // The marks are where the panel draws its dots and labels, in time order along the bar.
+    std::vector<ScreenPoint> dots;
+    for (const DrawCommand* c : all.InGroup("hits panel"))
+    {
+        if (c->kind == DrawCommand::Kind::FillCircle)
+        {
+            dots.push_back(c->points[0]);
+        }
+        if (c->kind == DrawCommand::Kind::Text && c->text == marks[1].text)
+        {
+            CHECK(c->points[0].x == marks[1].labelMin.x);
+        }
+    }
+    REQUIRE(dots.size() == 2);
+    for (size_t h = 0; h < 2; ++h)
+    {
+        CHECK(dots[h].x == marks[h].dot.x);
+        CHECK(dots[h].y == marks[h].dot.y);
+    }
+    CHECK(marks[0].dot.x < marks[1].dot.x);
+    CHECK(marks[1].text == "2: right-ball at 0.875");
+
+    figure.hit = 1;
+    RecordingCanvas one;
+    PaintFigure(one, s.scene, s.setup.study, figure);
+    int outlines = 0;
+    for (const DrawCommand* c : one.InGroup("hits"))
+    {
+        if (c->kind != DrawCommand::Kind::Polyline || !c->closed)
+        {
+            continue;
+        }
+        ++outlines;
+        // The ball's outline about (1.75, 0.375), 0.25 m out.
+        const ScreenPoint center = ToScreen(figure.view, {1.75, 0.375});
+        for (const ScreenPoint& p : c->points)
+        {
+            CHECK(std::hypot(p.x - center.x, p.y - center.y) == Approx(0.25 * figure.view.zoom).margin(0.01));
+        }
+    }
+    CHECK(outlines == 1); // the cushions are static: the ball alone
+    CHECK(AnyTextContains(one, "hit 2 at t = 0.875"));
+    CHECK_FALSE(AnyTextContains(one, "hit 1"));
+    CHECK(Contains(GroupText(one, "hits panel"),
+                   "Hit 2 of step 1: right and ball touch at t = 0.875 of the step (time 0.875)"));
 }
 
 TEST_CASE("World layers: the plots follow the energy over the steps, the current step marked", "[painter][world]")

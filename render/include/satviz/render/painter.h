@@ -9,6 +9,7 @@
 #include <satviz/sim_record.h>
 
 #include <string>
+#include <vector>
 
 namespace satviz
 {
@@ -24,6 +25,9 @@ struct Figure
     /// The stepped world the broadphase, response, hits and plots layers draw (not owned); null: the scene was
     /// not stepped, and those layers say so.
     const SimRecord* sim = nullptr;
+    /// The hits layer: the hit of the step (an index into sim->lastStep.hits) whose instant is shown, its two
+    /// bodies solid where they touch; -1: every hit, dashed.
+    int hit = -1;
 };
 
 /// Screen regions of a figure: the caption band on top, the number-line panel at the bottom, the scene between.
@@ -42,6 +46,19 @@ FigureLayout LayoutFigure(const PairStudy& study, LayerMask layers, int width, i
 /// The camera that frames the pair (both shapes over the whole step when sweeping, and the room the axis line
 /// needs beside them) in the scene area; the same for every step, so stepping does not move the picture.
 View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int width, int height);
+
+/// A hit on the hits layer's time bar: its dot, and its label and the label's box, in figure pixels.
+struct HitMark
+{
+    ScreenPoint dot;      ///< the hit's dot on the bar, at its time within the step
+    ScreenPoint labelMin; ///< top-left corner of its label
+    ScreenPoint labelMax; ///< bottom-right corner of its label
+    std::string text;     ///< the label: number, bodies, time
+};
+
+/// Where the hits layer's time bar puts the figure's hits, in the order resolved (as many as it draws), with
+/// `canvas` measuring the labels; empty when the hits layer is off or the figure has no stepped world.
+std::vector<HitMark> HitMarks(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure);
 
 /// Paints the figure: the background, every body (the pair in colour, the others grey), the layers of the step.
 void PaintFigure(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure);
