@@ -12,7 +12,12 @@ namespace
 
 constexpr float kLabelSpacing = 3.0f; // pixels kept free beside a label where the room allows
 constexpr float kHalo = 2.0f;         // the halo reaches this far left and right of the text
-constexpr float kMargin = 2.0f;       // pixels kept between a label and the image's edge
+constexpr float kMargin = 2.0f;       // pixels kept between a label and the image's top and bottom edges
+constexpr float kSideMargin = 4.0f;   // and its left and right edges, beyond the halo: a glyph flush with it reads cut
+// What a label keeps clear around its text in any case: two labels on one line closer than two spaces read as one
+// ("-3.00 -3.00", "c2 1"), and stacked labels that touch read as one block.
+constexpr float kKeepX = 4.0f;
+constexpr float kKeepY = 1.0f;
 constexpr double kPi = 3.14159265358979323846;
 
 // The rectangle of a label `size` big whose point nearest the anchor lies `reach` pixels away along `angle`.
@@ -28,10 +33,10 @@ ScreenRect Around(ScreenPoint anchor, ScreenPoint size, double angle, float reac
     return rect;
 }
 
-// What a label covers: its text and the halo beside it.
+// What a label covers: its text, the halo beside it and the room it keeps from other labels.
 ScreenRect Footprint(const ScreenRect& text)
 {
-    return {text.minX - kHalo, text.minY, text.maxX + kHalo, text.maxY};
+    return {text.minX - kKeepX, text.minY - kKeepY, text.maxX + kKeepX, text.maxY + kKeepY};
 }
 
 // Whether a point lies strictly inside a convex outline of either orientation.
@@ -129,8 +134,41 @@ void LabelPlacer::PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoin
 
 bool LabelPlacer::Inside(const ScreenRect& rect) const
 {
-    return rect.minX - kHalo >= 0.0f && rect.minY >= kMargin && rect.maxX + kHalo <= width_ &&
+    return rect.minX >= kSideMargin && rect.minY >= kMargin && rect.maxX <= width_ - kSideMargin &&
            rect.maxY <= height_ - kMargin;
+}
+
+LabelPlacer::LeaderLine LabelPlacer::Leader(ScreenPoint anchor, const ScreenRect& rect)
+{
+    // From just beside the anchor to the nearest point of the label.
+    const ScreenPoint b{std::clamp(anchor.x, rect.minX, rect.maxX), std::clamp(anchor.y, rect.minY, rect.maxY)};
+    const float length = std::hypot(b.x - anchor.x, b.y - anchor.y);
+    if (length <= 4.0f)
+    {
+        return {};
+    }
+    return {{anchor.x + (b.x - anchor.x) * 3.0f / length, anchor.y + (b.y - anchor.y) * 3.0f / length}, b, true};
+}
+
+bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
+{
+    const LeaderLine line = Leader(anchor, rect);
+    if (!line.drawn)
+    {
+        return true;
+    }
+    // Under a label's halo the line would vanish and seem to lead to that label; under a band, from nowhere. A
+    // mark at the anchor itself (a contact point, an arrow head) is where the line starts.
+    const ScreenRect start{anchor.x - 0.5f, anchor.y - 0.5f, anchor.x + 0.5f, anchor.y + 0.5f};
+    return std::none_of(taken_.begin(), taken_.end(), [&](const ScreenRect& other) {
+        if (other.Overlaps(start))
+        {
+            return false;
+        }
+        ScreenPoint a = line.from;
+        ScreenPoint b = line.to;
+        return ClipSegment(a, b, other) && std::hypot(b.x - a.x, b.y - a.y) > 0.5f;
+    });
 }
 
 bool LabelPlacer::Free(const ScreenRect& rect, float spacing) const
@@ -219,7 +257,8 @@ void LabelPlacer::Flush(Color halo)
             {
                 const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
                 const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
-                if (Inside(rect) && Free(rect, 0.0f) && !InOutline(label->avoid, rect))
+                if (Inside(rect) && Free(rect, 0.0f) && !InOutline(label->avoid, rect) &&
+                    LeaderClear(label->anchor, rect))
                 {
                     chosen = rect;
                     found = true;
@@ -235,27 +274,34 @@ void LabelPlacer::Flush(Color halo)
             }
             // No free place: the preferred one, kept inside the image.
             chosen = Around(label->anchor, size, start, label->distance);
-            const float shiftX = std::clamp(chosen.minX, kHalo, std::max(kHalo, width_ - kHalo - size.x)) - chosen.minX;
+            const float shiftX =
+                std::clamp(chosen.minX, kSideMargin, std::max(kSideMargin, width_ - kSideMargin - size.x)) -
+                chosen.minX;
             const float shiftY =
                 std::clamp(chosen.minY, kMargin, std::max(kMargin, height_ - kMargin - size.y)) - chosen.minY;
             chosen = {chosen.minX + shiftX, chosen.minY + shiftY, chosen.maxX + shiftX, chosen.maxY + shiftY};
         }
         taken_.push_back(Footprint(chosen));
         placed.push_back({label, chosen, leader});
+        if (leader)
+        {
+            // Later labels keep off the leader line, which their halos would hide.
+            const LeaderLine line = Leader(label->anchor, chosen);
+            if (line.drawn)
+            {
+                lines_.push_back({line.from, line.to, 1.0f});
+            }
+        }
     }
     canvas_.BeginGroup("labels");
     for (const Placed& p : placed)
     {
         if (p.leader)
         {
-            // From just beside the anchor to the nearest point of the label.
-            const ScreenPoint a = p.label->anchor;
-            const ScreenPoint b{std::clamp(a.x, p.rect.minX, p.rect.maxX), std::clamp(a.y, p.rect.minY, p.rect.maxY)};
-            const float length = std::hypot(b.x - a.x, b.y - a.y);
-            if (length > 4.0f)
+            const LeaderLine line = Leader(p.label->anchor, p.rect);
+            if (line.drawn)
             {
-                const ScreenPoint from{a.x + (b.x - a.x) * 3.0f / length, a.y + (b.y - a.y) * 3.0f / length};
-                canvas_.Segment(from, b, WithAlpha(p.label->color, 0.7f), 1.0f);
+                canvas_.Segment(line.from, line.to, WithAlpha(p.label->color, 0.7f), 1.0f);
             }
         }
     }

@@ -66,6 +66,13 @@ class LabelPlacer
         ScreenPoint a, b;
         float thickness;
     };
+    struct LeaderLine
+    {
+        ScreenPoint from, to;
+        bool drawn = false; // false when the label sits too close to its anchor to need one
+    };
+    static LeaderLine Leader(ScreenPoint anchor, const ScreenRect& rect);
+    bool LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const;
     bool Free(const ScreenRect& rect, float spacing) const;
     bool Inside(const ScreenRect& rect) const;
     Canvas& canvas_;

@@ -502,10 +502,6 @@ class Painter
         {
             Ghosts();
         }
-        if (hasAxis_ && Has(figure_, kLayerBest))
-        {
-            BestSoFar();
-        }
         if (hasAxis_ && Has(figure_, kLayerProjection) && !axis_.skipped)
         {
             AxisInScene();
@@ -516,6 +512,11 @@ class Painter
             // without an axis line (its axis was tested with the other face).
             canvas_.BeginGroup("projection");
             AxisSource(axis_.Ref(), WithAlpha(palette::kInk, 0.4f));
+        }
+        // After the projection, whose bars would hide the best axis's arrow heads where they cross.
+        if (hasAxis_ && Has(figure_, kLayerBest))
+        {
+            BestSoFar();
         }
         if (hasAxis_ && Has(figure_, kLayerExit) && axis_.separating && !axis_.swept)
         {
@@ -719,8 +720,21 @@ class Painter
     // An arrow whose head and shaft no label may cover.
     void MarkedArrow(ScreenPoint a, ScreenPoint b, Color color, float thickness, float head)
     {
-        labels_.Reserve(Arrow(canvas_, a, b, color, thickness, head));
+        const ScreenRect tip = Arrow(canvas_, a, b, color, thickness, head);
+        labels_.Reserve(tip);
         labels_.ReserveLine(a, b, thickness + 2.0f);
+        heads_.push_back(tip);
+    }
+
+    // Whether the segment ab runs over an arrow head drawn so far.
+    bool CrossesHead(ScreenPoint a, ScreenPoint b, float thickness) const
+    {
+        return std::any_of(heads_.begin(), heads_.end(), [&](const ScreenRect& head) {
+            ScreenPoint p = a;
+            ScreenPoint q = b;
+            const float r = 0.5f * thickness + 1.0f;
+            return ClipSegment(p, q, {head.minX - r, head.minY - r, head.maxX + r, head.maxY + r});
+        });
     }
 
     static ScreenRect Disc(ScreenPoint center, float radius)
@@ -841,6 +855,26 @@ class Painter
         }
     }
 
+    // Whether two bodies' velocity arrows lie on one line on screen: parallel, and within a few pixels of it.
+    bool OnOneLine(const Body& a, const Body& b) const
+    {
+        const ScreenPoint a0 = At(ShapeCenter(a.shape, a.Xf()));
+        const ScreenPoint a1 = At(ShapeCenter(a.shape, a.Xf()) + a.velocity);
+        const ScreenPoint b0 = At(ShapeCenter(b.shape, b.Xf()));
+        const ScreenPoint b1 = At(ShapeCenter(b.shape, b.Xf()) + b.velocity);
+        const float la = std::hypot(a1.x - a0.x, a1.y - a0.y);
+        const float lb = std::hypot(b1.x - b0.x, b1.y - b0.y);
+        if (la < 1.0f || lb < 1.0f)
+        {
+            return false;
+        }
+        const float ux = (a1.x - a0.x) / la;
+        const float uy = (a1.y - a0.y) / la;
+        const float sine = std::abs(ux * (b1.y - b0.y) - uy * (b1.x - b0.x)) / lb;
+        const float apart = std::abs(ux * (b0.y - a0.y) - uy * (b0.x - a0.x));
+        return sine < 0.05f && apart < 6.0f;
+    }
+
     // Velocity arrows and each moving shape's outline at t = 1.
     void Motion()
     {
@@ -861,8 +895,19 @@ class Painter
                 used_.push_back(LegendMark::Dashed);
             }
             const Vec2 c = ShapeCenter(body.shape, body.Xf());
-            MarkedArrow(At(c), At(c + body.velocity), InkOf(s), 2.0f, 11.0f);
-            const ScreenPoint tip = At(c + body.velocity);
+            ScreenPoint from = At(c);
+            ScreenPoint tip = At(c + body.velocity);
+            // Two arrows on one line (a head-on pair) would hide each other: each moves aside, parallel, A's to
+            // the left of its motion and B's to the left of its own, so they pass.
+            const Body& other = BodyOf(1 - s);
+            if (other.velocity != Vec2{} && OnOneLine(body, other))
+            {
+                const float length = std::max(std::hypot(tip.x - from.x, tip.y - from.y), 1e-3f);
+                const ScreenPoint side{(tip.y - from.y) / length * 6.0f, -(tip.x - from.x) / length * 6.0f};
+                from = {from.x + side.x, from.y + side.y};
+                tip = {tip.x + side.x, tip.y + side.y};
+            }
+            MarkedArrow(from, tip, InkOf(s), 2.0f, 11.0f);
             labels_.Place(tip, "v", TextStyle::Heading, InkOf(s), static_cast<float>(body.velocity.x),
                           static_cast<float>(-body.velocity.y), 6.0f, LabelRank::Note);
         }
@@ -1101,7 +1146,15 @@ class Painter
         MarkedArrow(At(Along(base, d, lo - pad)), At(Along(base, d, hi + pad)), faint(palette::kMuted, 1.0f), 1.5f,
                     11.0f);
         const std::string name = (axis_.textbook ? "axis " : "face test ") + std::to_string(axis_.index + 1);
-        labels_.Place(At(Along(base, d, hi + pad)),
+        // Named at its head, or where the line leaves the scene when the caption or the panel hides the head.
+        ScreenPoint tail = At(Along(base, d, lo - pad));
+        ScreenPoint head = At(Along(base, d, hi + pad));
+        const ScreenRect scene{0.0f, layout_.sceneTop + 4.0f, Width(), layout_.sceneBottom - 4.0f};
+        if (!ClipSegment(tail, head, scene))
+        {
+            head = At(Along(base, d, hi + pad));
+        }
+        labels_.Place(head,
                       !axis_.decided ? name : name + (axis_.bounded ? " (not walked to)" : " (not evaluated)"),
                       TextStyle::Label, palette::kMuted, static_cast<float>(d.x), static_cast<float>(-d.y), 6.0f,
                       LabelRank::Note);
@@ -1171,8 +1224,15 @@ class Painter
         const Vec2 point = discCenter_ + (middle - Dot(discCenter_, d)) * d;
         const double reach = discRadius_;
         DashedSegment(canvas_, At(point - reach * n), At(point + reach * n), palette::kGap, 2.5f, bounds_, 10.0f, 6.0f);
-        const Vec2 end = n.y >= 0.0 ? point + reach * n : point - reach * n;
-        labels_.Place(At(end), "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f, 6.0f, LabelRank::Verdict);
+        // Named at its upper end as far as the scene shows it (the caption or the panel may hide its ends).
+        ScreenPoint a = At(point - reach * n);
+        ScreenPoint b = At(point + reach * n);
+        const ScreenRect scene{0.0f, layout_.sceneTop + 4.0f, Width(), layout_.sceneBottom - 4.0f};
+        if (ClipSegment(a, b, scene))
+        {
+            labels_.Place(a.y < b.y ? a : b, "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f, 6.0f,
+                          LabelRank::Verdict);
+        }
     }
 
     // The best axis so far (the smallest push; for sweeps, the latest entry), when it is not the current one.
@@ -1222,7 +1282,7 @@ class Painter
         DashedOutline(canvas_, ShapeOutline(view_, bodyB_.shape, moved), palette::kShapeBInk, 1.8f, bounds_);
         used_.push_back(LegendMark::Dashed);
         const Vec2 c = ShapeCenter(bodyB_.shape, bodyB_.Xf());
-        const ScreenPoint from = At(c);
+        ScreenPoint from = At(c);
         ScreenPoint to = At(c + shift);
         // A depth too small to see still gets a visible arrow in its direction.
         const float dx = to.x - from.x;
@@ -1230,6 +1290,15 @@ class Painter
         if (dx * dx + dy * dy < 400.0f)
         {
             to = {from.x + 20.0f * static_cast<float>(m.normal.x), from.y - 20.0f * static_cast<float>(m.normal.y)};
+        }
+        // An arrow along the same line (a face's normal from B's face) would vanish under the MTV's: the MTV
+        // moves aside, parallel, by a little more than the heads' width.
+        if (CrossesHead(from, to, 3.0f))
+        {
+            const float length = std::max(std::hypot(to.x - from.x, to.y - from.y), 1e-3f);
+            const ScreenPoint side{-(to.y - from.y) / length * 12.0f, (to.x - from.x) / length * 12.0f};
+            from = {from.x + side.x, from.y + side.y};
+            to = {to.x + side.x, to.y + side.y};
         }
         // The arrow is drawn over the labels (MtvArrow), so that B's name never hides its shaft.
         mtvFrom_ = from;
@@ -1470,7 +1539,8 @@ class Painter
                  (!axis_.decided  ? " (number line)"
                   : axis_.bounded ? " (not walked to: numbers for this view only)"
                                   : " (not evaluated: numbers for this view only)");
-        canvas_.Text({left, top + 6.0f}, title, TextStyle::Label, palette::kMuted);
+        // High enough to keep clear of the end values above A's bar.
+        canvas_.Text({left, top + 4.0f}, title, TextStyle::Label, palette::kMuted);
         if (axis_.skipped)
         {
             canvas_.Text({left, top + 36.0f}, "skipped: anti-parallel to a face already tested (the same axis)",
@@ -1528,9 +1598,9 @@ class Painter
             DashedSegment(canvas_, {bx, rowA - 14.0f}, {bx, rowB + 14.0f}, palette::kInk, 1.5f, bounds_, 4.0f, 3.0f);
             const std::string text = "bound " + FormatNumber(axis_.boundAt);
             const float width = canvas_.MeasureText(text, TextStyle::Label).x;
-            const float lowEnd = x(axis_.minB) - 3.0f;
+            const float lowEnd = x(axis_.minB) - 4.5f;
             const float lowStart = lowEnd - canvas_.MeasureText(FormatNumber(axis_.minB), TextStyle::Label).x;
-            const float highStart = x(axis_.maxB) + 3.0f;
+            const float highStart = x(axis_.maxB) + 4.5f;
             const float highEnd = highStart + canvas_.MeasureText(FormatNumber(axis_.maxB), TextStyle::Label).x;
             const auto clear = [&](float from) {
                 return (from + width < lowStart || from > lowEnd) && (from + width < highStart || from > highEnd);
@@ -1554,9 +1624,16 @@ class Painter
         const std::string s1 = FormatNumber(v1);
         const ScreenPoint size0 = canvas_.MeasureText(s0, TextStyle::Label);
         const float ty = above ? y - 9.0f - size0.y : y + 9.0f;
-        // End values sit outside their bar ends so that the two never collide.
-        canvas_.Text({x0 - size0.x - 3.0f, ty}, s0, TextStyle::Label, ink);
-        canvas_.Text({x1 + 3.0f, ty}, s1, TextStyle::Label, ink);
+        if (s0 == s1)
+        {
+            // Ends that print alike (a point, or an interval narrower than the printed digits): one value, over
+            // the bar, rather than the same number twice side by side.
+            canvas_.Text({0.5f * (x0 + x1) - 0.5f * size0.x, ty}, s0, TextStyle::Label, ink);
+            return;
+        }
+        // End values sit outside their bar ends, two spaces apart at least, so that they never read as one.
+        canvas_.Text({x0 - size0.x - 4.5f, ty}, s0, TextStyle::Label, ink);
+        canvas_.Text({x1 + 4.5f, ty}, s1, TextStyle::Label, ink);
     }
 
     // t from 0 to 1: this axis's entry and exit, and the window (latest entry, earliest exit) so far.
@@ -1564,8 +1641,9 @@ class Painter
     {
         canvas_.BeginGroup("timebar");
         canvas_.Text({24.0f, y - 8.0f}, "time", TextStyle::Heading, palette::kMuted);
-        // The bar and its marker labels keep clear of the heading (short body names leave the rows above a narrow
-        // margin), even for a time at or before 0.
+        // Rows under the bar: the tick labels (y + 10), the marker labels (y + 25, a gap of 2 pixels below the
+        // ticks') and a window that never opens (y + 43). The bar and its marker labels keep clear of the heading
+        // (short body names leave the rows above a narrow margin), even for a time at or before 0.
         const float labelsFrom = 24.0f + canvas_.MeasureText("time", TextStyle::Heading).x + 8.0f;
         const float left = std::max(barLeft, labelsFrom + 16.0f);
         auto x = [&](double t) { return static_cast<float>(left + std::clamp(t, -0.02, 1.02) * (right - left)); };
@@ -1595,7 +1673,7 @@ class Painter
                                      FormatNumber(axis_.windowEntry);
             const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
             // A row of its own, under the entry and exit labels.
-            canvas_.Text({std::clamp(0.5f * (a + b) - 0.5f * size.x, left, right - size.x), y + 42.0f}, text,
+            canvas_.Text({std::clamp(0.5f * (a + b) - 0.5f * size.x, left, right - size.x), y + 43.0f}, text,
                          TextStyle::Label, 0xA04000FFu);
         }
         auto marker = [&](double t, const std::string& name, bool up) {
@@ -1605,7 +1683,7 @@ class Painter
                                          : t < 0.0     ? name + ": overlapping from the start"
                                                        : name + ": they never part";
                 const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
-                canvas_.Text({right - size.x, up ? y - 10.0f - size.y : y + 24.0f}, text, TextStyle::Label,
+                canvas_.Text({right - size.x, up ? y - 10.0f - size.y : y + 25.0f}, text, TextStyle::Label,
                              palette::kInk);
                 return;
             }
@@ -1622,7 +1700,7 @@ class Painter
             const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
             const float tx =
                 std::clamp(px - 0.5f * size.x, std::max(left - 40.0f, labelsFrom), Width() - size.x - 4.0f);
-            canvas_.Text({tx, up ? y - 10.0f - size.y : y + 24.0f}, text, TextStyle::Label, palette::kInk);
+            canvas_.Text({tx, up ? y - 10.0f - size.y : y + 25.0f}, text, TextStyle::Label, palette::kInk);
         };
         const SweepStatus status = study_.Textbook() ? study_.textbookSweepResult.status : study_.sweepResult.status;
         // A hit's verdict is the common window, as its sentence says: the latest entry and the earliest exit of all
@@ -1791,6 +1869,7 @@ class Painter
     CaptionLines caption_;
     std::vector<LegendMark> used_; // marks drawn that only their drawing knows of
     bool hasPitfallArrow_ = false;
+    std::vector<ScreenRect> heads_; // the arrow heads drawn so far, which no later arrow may cover
     ScreenPoint pitfallFrom_{};
     ScreenPoint pitfallTo_{};
 };

@@ -203,6 +203,50 @@ std::string Describe(const DrawCommand& c)
     return s;
 }
 
+// How far a text keeps from the image's edge: a glyph's ink can reach a pixel or two past its advance box, and a
+// word flush with the edge reads as cut.
+constexpr float kEdgeMargin = 4.0f;
+// How far apart two texts keep: stacked texts that touch read as one block, and two numbers on one line closer
+// than two spaces read as one ("-3.00 -3.00").
+constexpr float kStackGap = 2.0f;
+constexpr float kLineGap = 8.0f;
+
+Box Grown(const Box& b, float dx, float dy)
+{
+    return {b.minX - dx, b.minY - dy, b.maxX + dx, b.maxY + dy};
+}
+
+// An arrow head: a small filled triangle, opaque or nearly (a faint one is a body's fill, not a mark).
+bool IsArrowHead(const DrawCommand& c)
+{
+    if (c.kind != DrawCommand::Kind::FillConvex || c.points.size() != 3 || (c.color & 0xFFu) < 0x80u)
+    {
+        return false;
+    }
+    const Box b = Bounds(c.points);
+    return b.maxX - b.minX <= 24.0f && b.maxY - b.minY <= 24.0f;
+}
+
+// Whether an opaque command drawn over an arrow head hides most of it: its tip and the middle of its base.
+bool HidesHead(const DrawCommand& c, const DrawCommand& head)
+{
+    if ((c.color & 0xFFu) < 0xC0u || (c.color >> 8) == (head.color >> 8) || c.kind == DrawCommand::Kind::Text)
+    {
+        return false;
+    }
+    // A line much thinner than the head crosses it and leaves it readable (the hit's time through its entry mark).
+    const float width = std::hypot(head.points[1].x - head.points[2].x, head.points[1].y - head.points[2].y);
+    if ((c.kind == DrawCommand::Kind::Segment || c.kind == DrawCommand::Kind::Polyline) && c.thickness < 0.4f * width)
+    {
+        return false;
+    }
+    const ScreenPoint tip = head.points[0];
+    const ScreenPoint base{0.5f * (head.points[1].x + head.points[2].x), 0.5f * (head.points[1].y + head.points[2].y)};
+    const ScreenPoint middle{0.5f * (tip.x + base.x), 0.5f * (tip.y + base.y)};
+    const Box spot{middle.x - 1.0f, middle.y - 1.0f, middle.x + 1.0f, middle.y + 1.0f};
+    return Covers(c, spot);
+}
+
 // Every way the texts of a recording are hidden or cut: one line each.
 std::vector<std::string> HiddenTexts(const RecordingCanvas& canvas, int width, int height)
 {
@@ -219,10 +263,10 @@ std::vector<std::string> HiddenTexts(const RecordingCanvas& canvas, int width, i
         }
         const ScreenPoint size = measure.MeasureText(c.text, c.style);
         const Box box{c.points[0].x, c.points[0].y, c.points[0].x + size.x, c.points[0].y + size.y};
-        if (box.minX < 0.0f || box.minY < 0.0f || box.maxX > static_cast<float>(width) ||
+        if (box.minX < kEdgeMargin || box.minY < 0.0f || box.maxX > static_cast<float>(width) - kEdgeMargin ||
             box.maxY > static_cast<float>(height))
         {
-            problems.push_back(Describe(c) + " leaves the image");
+            problems.push_back(Describe(c) + " leaves the image or touches its edge");
         }
         texts.push_back({i, box});
     }
@@ -230,10 +274,16 @@ std::vector<std::string> HiddenTexts(const RecordingCanvas& canvas, int width, i
     {
         for (size_t b = a + 1; b < texts.size(); ++b)
         {
-            if (texts[a].second.Overlaps(texts[b].second))
+            const Box& p = texts[a].second;
+            const Box& q = texts[b].second;
+            // Side by side on one line (sharing most of their height), or stacked.
+            const float shared = std::min(p.maxY, q.maxY) - std::max(p.minY, q.minY);
+            const bool oneLine = shared > 0.5f * std::min(p.maxY - p.minY, q.maxY - q.minY);
+            if (Grown(p, oneLine ? 0.5f * kLineGap : 0.5f * kStackGap, 0.5f * kStackGap).Overlaps(
+                    Grown(q, oneLine ? 0.5f * kLineGap : 0.5f * kStackGap, 0.5f * kStackGap)))
             {
                 problems.push_back(Describe(commands[texts[a].first]) + " and " + Describe(commands[texts[b].first]) +
-                                   " overlap");
+                                   (p.Overlaps(q) ? " overlap" : " touch"));
             }
         }
     }
@@ -242,12 +292,105 @@ std::vector<std::string> HiddenTexts(const RecordingCanvas& canvas, int width, i
         for (size_t j = 0; j < commands.size(); ++j)
         {
             const DrawCommand& c = commands[j];
-            const bool mark = IsMark(c) && Covers(c, box);
+            const bool mark = (IsMark(c) || IsArrowHead(c)) && Covers(c, box);
             const bool later = j > index && Covers(c, box);
             if (mark || later)
             {
                 problems.push_back(Describe(commands[index]) + (mark ? " lies on the mark " : " lies under ") +
                                    Describe(c));
+            }
+        }
+    }
+    // A leader line runs from its anchor to its own label only: over another text, the text's halo hides it and
+    // the text seems to be the one it leads to.
+    for (const DrawCommand& c : commands)
+    {
+        if (c.kind != DrawCommand::Kind::Segment || c.group != "labels")
+        {
+            continue;
+        }
+        for (const auto& [index, box] : texts)
+        {
+            const ScreenPoint end = c.points[1];
+            const bool own = end.x >= box.minX - 0.5f && end.x <= box.maxX + 0.5f && end.y >= box.minY - 0.5f &&
+                             end.y <= box.maxY + 0.5f;
+            if (!own && SegmentCovers(c.points[0], c.points[1], c.thickness, Grown(box, 2.0f, 0.0f)))
+            {
+                problems.push_back("the leader line at (" + std::to_string(static_cast<int>(c.points[0].x)) + ", " +
+                                   std::to_string(static_cast<int>(c.points[0].y)) + ") crosses " +
+                                   Describe(commands[index]));
+            }
+        }
+    }
+    // An arrow head stays in sight: no opaque line or fill of another colour drawn over it (an arrow over an arrow).
+    for (size_t i = 0; i < commands.size(); ++i)
+    {
+        if (!IsArrowHead(commands[i]))
+        {
+            continue;
+        }
+        for (size_t j = i + 1; j < commands.size(); ++j)
+        {
+            if (HidesHead(commands[j], commands[i]))
+            {
+                problems.push_back("the arrow head " + Describe(commands[i]) + " lies under " + Describe(commands[j]));
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
+// Whether a world point lies strictly inside a placed polygon body (a circle: inside its radius).
+bool InsideBody(const Body& body, Vec2 p)
+{
+    const Vec2 local = InvTransformPoint(body.Xf(), p);
+    if (body.shape.type == ShapeType::Circle)
+    {
+        return Length(local - body.shape.circle.center) < body.shape.circle.radius;
+    }
+    const Polygon& poly = body.shape.polygon;
+    for (int i = 0; i < poly.Count(); ++i)
+    {
+        if (Dot(poly.Normal(i), local - poly.Vertices()[i]) >= 0.0)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Labels of one body of a touching pair (no interpenetration: no vertex or face of one lies inside the other) that
+// sit inside the other body, where they read as the other's: in its colour, their middle inside the other body.
+std::vector<std::string> LabelsInOtherBody(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
+                                           const View& view)
+{
+    std::vector<std::string> problems;
+    if (study.sweep || !study.manifold.overlap || study.manifold.depth > 1e-9)
+    {
+        return problems;
+    }
+    RecordingCanvas measure;
+    const Body* bodies[2] = {&scene.bodies[static_cast<size_t>(study.bodyA)],
+                             &scene.bodies[static_cast<size_t>(study.bodyB)]};
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text)
+        {
+            continue;
+        }
+        for (int s = 0; s < 2; ++s)
+        {
+            if ((c->color >> 8) != (inks[s] >> 8))
+            {
+                continue;
+            }
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            const Vec2 middle = ToWorld(view, {c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y});
+            if (InsideBody(*bodies[1 - s], middle))
+            {
+                problems.push_back(Describe(*c) + ", of " + bodies[s]->name + ", lies inside " + bodies[1 - s]->name);
             }
         }
     }
@@ -288,8 +431,13 @@ std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool face
         setup.figure.step = k;
         RecordingCanvas canvas;
         PaintFigure(canvas, loaded.scene, setup.study, setup.figure);
+        std::vector<std::string> problems = HiddenTexts(canvas, setup.figure.view.width, setup.figure.view.height);
+        for (std::string& p : LabelsInOtherBody(canvas, loaded.scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
         drawn.push_back({(faces ? "faces/" : "") + stem + (allSteps ? "-step" + std::to_string(k + 1) : "") + ".png",
-                         HiddenTexts(canvas, setup.figure.view.width, setup.figure.view.height)});
+                         std::move(problems)});
     }
     return drawn;
 }
