@@ -1173,6 +1173,8 @@ class Painter
             p = {p.x - ox * offset, p.y - oy * offset};
             q = {q.x - ox * offset, q.y - oy * offset};
             canvas_.Segment(p, q, color, thickness);
+            // A label's halo over a bar would hide the interval it draws.
+            labels_.ReserveLine(p, q, thickness);
         };
         auto projector = [&](Vec2 from, double value, float offset, Color color) {
             ScreenPoint to = At(Along(base, d, value));
