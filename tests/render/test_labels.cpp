@@ -479,6 +479,55 @@ TEST_CASE("The label check finds a label on a label, on an arrow head, under a l
     edge.Text({190.0f, 40.0f}, "e1", TextStyle::Label, palette::kInk);
     CHECK(HiddenTexts(edge, 200, 100).size() == 1);
     CHECK(HiddenTexts(edge, 220, 100).empty());
+    // Flush with the edge, inside it by a pixel: it reads as cut.
+    CHECK(HiddenTexts(edge, 190 + static_cast<int>(FontTextSize("e1", TextStyle::Label).x) + 1, 100).size() == 1);
+
+    // Two numbers on one line, 6 pixels apart, read as one; 10 apart they do not.
+    const float width = FontTextSize("-3.00", TextStyle::Label).x;
+    RecordingCanvas pair;
+    pair.Text({20.0f, 20.0f}, "-3.00", TextStyle::Label, palette::kInk);
+    pair.Text({26.0f + width, 20.0f}, "-3.00", TextStyle::Label, palette::kInk);
+    CHECK(HiddenTexts(pair, 200, 100).size() == 1);
+    RecordingCanvas apart;
+    apart.Text({20.0f, 20.0f}, "-3.00", TextStyle::Label, palette::kInk);
+    apart.Text({30.0f + width, 20.0f}, "-3.00", TextStyle::Label, palette::kInk);
+    CHECK(HiddenTexts(apart, 200, 100).empty());
+    // Stacked texts that touch read as one block; 3 pixels apart they do not.
+    RecordingCanvas stacked;
+    stacked.Text({20.0f, 20.0f}, "gap 0.60", TextStyle::Label, palette::kInk);
+    stacked.Text({40.0f, 20.0f + TextSize(TextStyle::Label)}, "0", TextStyle::Label, palette::kInk);
+    CHECK(HiddenTexts(stacked, 200, 100).size() == 1);
+    RecordingCanvas spaced;
+    spaced.Text({20.0f, 20.0f}, "gap 0.60", TextStyle::Label, palette::kInk);
+    spaced.Text({40.0f, 23.0f + TextSize(TextStyle::Label)}, "0", TextStyle::Label, palette::kInk);
+    CHECK(HiddenTexts(spaced, 200, 100).empty());
+
+    // A leader line under another label; one that ends at its own label is fine.
+    RecordingCanvas leader;
+    leader.BeginGroup("labels");
+    leader.Segment({10.0f, 50.0f}, {100.0f, 50.0f}, palette::kInk, 1.0f);
+    leader.Text({40.0f, 44.0f}, "c1", TextStyle::Label, palette::kInk);
+    leader.Text({100.0f, 44.0f}, "MTV", TextStyle::Label, palette::kInk);
+    CHECK(HiddenTexts(leader, 200, 100).size() == 1);
+
+    // An arrow head under a later opaque disc of another colour; a thin line across it leaves it readable.
+    const ScreenPoint arrow[3] = {{60.0f, 55.0f}, {50.0f, 60.0f}, {50.0f, 50.0f}};
+    RecordingCanvas hidden;
+    hidden.FillConvex(arrow, 3, palette::kShapeBInk);
+    hidden.FillCircle({56.0f, 55.0f}, 5.5f, palette::kResult);
+    CHECK(HiddenTexts(hidden, 200, 100).size() == 1);
+    RecordingCanvas crossed;
+    crossed.FillConvex(arrow, 3, palette::kShapeBInk);
+    crossed.Segment({40.0f, 55.0f}, {80.0f, 55.0f}, palette::kResult, 2.0f);
+    CHECK(HiddenTexts(crossed, 200, 100).empty());
+
+    // A label over a thick bar drawn before it hides the interval.
+    RecordingCanvas bar;
+    bar.BeginGroup("projection");
+    bar.Segment({20.0f, 50.0f}, {150.0f, 50.0f}, palette::kShapeA, 8.0f);
+    bar.BeginGroup("labels");
+    bar.Text({60.0f, 44.0f}, "e0", TextStyle::Label, palette::kInk);
+    CHECK(HiddenTexts(bar, 200, 100).size() == 1);
 }
 
 TEST_CASE("No label of any figure of the course covers another, an arrow head or a mark, or leaves the image",
