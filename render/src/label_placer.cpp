@@ -157,18 +157,25 @@ bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
     {
         return true;
     }
-    // Under a label's halo the line would vanish and seem to lead to that label; under a band, from nowhere. A
-    // mark at the anchor itself (a contact point, an arrow head) is where the line starts.
-    const ScreenRect start{anchor.x - 0.5f, anchor.y - 0.5f, anchor.x + 0.5f, anchor.y + 0.5f};
-    return std::none_of(taken_.begin(), taken_.end(), [&](const ScreenRect& other) {
-        if (other.Overlaps(start))
+    // Under a label's halo the line would vanish and seem to lead to that label; under a band, from nowhere. The
+    // marks at the anchor (a contact point, two close ones that share a label, an arrow head) are where it starts.
+    const ScreenRect start{anchor.x - 8.0f, anchor.y - 8.0f, anchor.x + 8.0f, anchor.y + 8.0f};
+    for (size_t k = 0; k < taken_.size(); ++k)
+    {
+        const ScreenRect& other = taken_[k];
+        const bool label = k >= reserved_;
+        if (!label && other.Overlaps(start))
         {
-            return false;
+            continue;
         }
         ScreenPoint a = line.from;
         ScreenPoint b = line.to;
-        return ClipSegment(a, b, other) && std::hypot(b.x - a.x, b.y - a.y) > 0.5f;
-    });
+        if (ClipSegment(a, b, other) && std::hypot(b.x - a.x, b.y - a.y) > 0.5f)
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 bool LabelPlacer::Free(const ScreenRect& rect, float spacing) const
@@ -208,6 +215,7 @@ void LabelPlacer::Flush(Color halo)
         bool leader;
     };
     std::vector<Placed> placed;
+    reserved_ = taken_.size(); // the marks, panels and lines reserved; the labels' footprints follow
     for (const Label* label : order)
     {
         const ScreenPoint size = canvas_.MeasureText(label->text, label->style);
@@ -250,7 +258,7 @@ void LabelPlacer::Flush(Color halo)
             }
         }
         // Farther out, on a leader line back to the anchor: sixteen directions, at growing distances.
-        for (int ring = 0; ring < 5 && !found; ++ring)
+        for (int ring = 0; ring < 9 && !found; ++ring)
         {
             const float reach = std::max(label->distance, 0.0f) + 28.0f + 16.0f * static_cast<float>(ring);
             for (int i = 0; i < 16 && !found; ++i)

@@ -79,6 +79,7 @@ class LabelPlacer
     float width_;
     float height_;
     std::vector<ScreenRect> taken_;
+    size_t reserved_ = 0; // while placing: taken_ holds the reserved regions before this index, labels after it
     std::vector<ScreenRect> bands_;
     std::vector<Line> lines_;
     std::vector<Label> labels_;

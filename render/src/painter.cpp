@@ -1089,6 +1089,8 @@ class Painter
             const Vec2 v1 = TransformPoint(xf, poly.Vertices()[ref.index]);
             const Vec2 v2 = TransformPoint(xf, poly.Vertices()[(ref.index + 1) % poly.Count()]);
             canvas_.Segment(At(v1), At(v2), color, 4.0f);
+            // The face the axis comes from: its name goes beside the marked face, not on it.
+            labels_.ReserveLine(At(v1), At(v2), 4.0f);
             const ScreenPoint mid = At(0.5 * (v1 + v2));
             const Vec2 n = Rotate(xf.q, poly.Normal(ref.index));
             MarkedArrow(mid, {mid.x + 30.0f * static_cast<float>(n.x), mid.y - 30.0f * static_cast<float>(n.y)}, color,
@@ -1436,6 +1438,8 @@ class Painter
                           4.0f);
         }
         canvas_.Segment(r1, r2, InkOf(referenceShape), 5.0f);
+        // Labels go beside the reference face and the incident edge, not over them.
+        labels_.ReserveLine(r1, r2, 5.0f);
         // Each name on its own body's side of the contact, out of the other body, where it reads as that body's.
         labels_.PlaceOutside(OutlineOf(1 - referenceShape), At(0.5 * (clip.referenceV1 + clip.referenceV2)),
                              "reference face", TextStyle::Label, InkOf(referenceShape), static_cast<float>(-n.x),
@@ -1443,6 +1447,7 @@ class Painter
         const ScreenPoint i1 = At(clip.incidentV1);
         const ScreenPoint i2 = At(clip.incidentV2);
         canvas_.Segment(i1, i2, InkOf(clip.incidentShape), 5.0f);
+        labels_.ReserveLine(i1, i2, 5.0f);
         canvas_.Segment(i1, i2, palette::kBackground, 1.5f);
         used_.push_back(LegendMark::Reference);
         used_.push_back(LegendMark::Incident);

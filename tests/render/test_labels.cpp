@@ -292,8 +292,8 @@ std::vector<std::string> HiddenTexts(const RecordingCanvas& canvas, int width, i
         for (size_t j = 0; j < commands.size(); ++j)
         {
             const DrawCommand& c = commands[j];
-            // A thick opaque bar (a projection interval) drawn before a label is data its halo would hide.
-            const bool bar = c.kind == DrawCommand::Kind::Segment && c.thickness >= 6.0f && Opaque(c.color) &&
+            // A thick opaque bar (a projection interval, a marked face) drawn before a label is what its halo would hide.
+            const bool bar = c.kind == DrawCommand::Kind::Segment && c.thickness >= 4.0f && Opaque(c.color) &&
                              commands[index].group == "labels" && Covers(c, box);
             const bool mark = (IsMark(c) || IsArrowHead(c) || bar) && Covers(c, box);
             const bool later = j > index && Covers(c, box);
