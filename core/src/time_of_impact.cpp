@@ -3,6 +3,8 @@
 
 #include "time_of_impact.h"
 
+#include "world_lookup.h"
+
 #include <satviz/collide.h>
 #include <satviz/sweep.h>
 
@@ -16,24 +18,11 @@ namespace satviz::detail
 namespace
 {
 
-bool IsAwakeDynamic(const RigidBody& body)
-{
-    return body.type == BodyType::Dynamic && body.awake;
-}
-
 // The step's contact of the pair (a, b), a < b, if it has one (a guard is not a contact).
 const WorldContact* ContactOf(const std::vector<WorldContact>& contacts, int a, int b)
 {
-    auto it = std::lower_bound(contacts.begin(), contacts.end(), std::make_pair(a, b),
-                               [](const WorldContact& c, const std::pair<int, int>& key) {
-                                   return c.a < key.first || (c.a == key.first && c.b < key.second);
-                               });
-    return it != contacts.end() && it->a == a && it->b == b && !it->guard ? &*it : nullptr;
-}
-
-bool InContact(const std::vector<WorldContact>& contacts, int a, int b)
-{
-    return ContactOf(contacts, a, b) != nullptr;
+    const WorldContact* contact = FindContact(contacts, a, b);
+    return contact != nullptr && !contact->guard ? contact : nullptr;
 }
 
 bool SkipSlowPair(const void* context, int i, int j)
@@ -669,7 +658,7 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
             // body in a pile would pass each hit on through the whole pile, one pair at a time.
             const bool wall =
                 world.bodies[pair.first].type == BodyType::Static || world.bodies[pair.second].type == BodyType::Static;
-            if (!wall && !resolved && InContact(world.contacts, pair.first, pair.second))
+            if (!wall && !resolved && ContactOf(world.contacts, pair.first, pair.second) != nullptr)
             {
                 continue;
             }

@@ -3,6 +3,7 @@
 
 #include "contact_solver.h"
 #include "time_of_impact.h"
+#include "world_lookup.h"
 
 #include <satviz/collide.h>
 #include <satviz/sweep.h>
@@ -18,6 +19,8 @@ namespace satviz
 namespace
 {
 
+using detail::FindContact;
+using detail::IsAwakeDynamic;
 using detail::SolverBody;
 using detail::SolverContact;
 
@@ -35,11 +38,6 @@ uint32_t FeatureKey(const Manifold& m, int slot)
     const uint32_t index = static_cast<uint32_t>(m.axis.index + 1) & 0x1fffu;
     const uint32_t incident = static_cast<uint32_t>(m.incidentEdge + 1) & 0x1fffu;
     return kind | shape << 2 | index << 4 | incident << 17 | static_cast<uint32_t>(slot) << 30;
-}
-
-bool IsAwakeDynamic(const RigidBody& body)
-{
-    return body.type == BodyType::Dynamic && body.awake;
 }
 
 struct PairFilter
@@ -104,19 +102,6 @@ void WakeIslands(World& world, std::vector<int>& seeds)
             seeds.push_back(neighbours[k]);
         }
     }
-}
-
-const WorldContact* FindContact(const std::vector<WorldContact>& contacts, int a, int b)
-{
-    auto it = std::lower_bound(contacts.begin(), contacts.end(), std::make_pair(a, b),
-                               [](const WorldContact& c, const std::pair<int, int>& key) {
-                                   return c.a < key.first || (c.a == key.first && c.b < key.second);
-                               });
-    if (it != contacts.end() && it->a == a && it->b == b)
-    {
-        return &*it;
-    }
-    return nullptr;
 }
 
 // q turned by a small angle: the rotation by (1, angle) normalised, which costs no sine or cosine. The passes use
