@@ -13,7 +13,7 @@ namespace
 {
 
 /// Polygons up to this many vertices are cast against every face: below it, the pass costs less than the four
-/// bisections and their mispredicted branches (about 60 ns at 32 vertices against 130 ns for the bisections).
+/// bisections and their mispredicted branches (satviz-bench measures both sides of the limit).
 constexpr int kRayScanLimit = 32;
 
 /// The face of `polygon` where the line q + t d crosses the chain of vertices from `from` to `to` (counter-clockwise,

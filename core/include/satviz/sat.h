@@ -47,8 +47,10 @@
 //   (turns below a few ulps), whose turn direction rounding could not decide.
 //
 // COST
-//   Overlap and Collide run in O(n + m) for polygons of n and m vertices: the support point of one polygon turns
-//   with the normals of the other, so it is walked forward, not searched for each axis. Overlap of large polygons
+//   Overlap and Collide run in O(n + m) for polygons of n and m vertices. The vertices of a polygon of at most 16
+//   are scanned: each face of the other polygon is tested against all of them, without branches, the fastest way at
+//   that size; that is n m products, but with m at most 16. The support point of a larger polygon turns with the
+//   normals of the other, so it is walked forward, not searched for each axis. Overlap of large polygons
 //   tests only the faces that see one point of the other polygon (the others cannot separate): a bisection finds
 //   them, so a pair whose point lies inside costs O(log n + log m). No heap allocation per query. Faces of B
 //   exactly anti-parallel to a face of A lie on an axis already tested and are skipped; a face test is one side of

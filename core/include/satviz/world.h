@@ -71,8 +71,8 @@ struct RigidBody
 struct WorldSettings
 {
     Vec2 gravity{}; ///< acceleration, units per time unit squared
-    /// Sequential-impulse passes over the contacts for the velocities. Ten, not Box2D's eight: in piles 100 rows
-    /// deep eight left the bodies sunk deeper than Box2D's (README, the world against Box2D).
+    /// Sequential-impulse passes over the contacts for the velocities. Ten, not Box2D's eight: in deep piles eight
+    /// leave the bodies sunk deeper than Box2D's (satviz-bench --world measures both).
     int velocityIterations = 10;
     int positionIterations = 5; ///< passes of the position correction that removes overlap
     /// Overlap left in place, in units: contacts are kept touching by this much so that they persist from step to
@@ -236,7 +236,7 @@ std::string ValidateBodyDef(const BodyDef& def);
 ///     It changes positions only, so removing overlap adds no kinetic energy; a bouncing point whose bounce
 ///     carries it out of the overlap within the step is left to do so. Chosen over split impulses (pseudo-velocities
 ///     from the overlap at the start of the step) because it sees the overlap after the move: a body that sank during
-///     this step is lifted in this step (the README's world section has what that measured).
+///     this step is lifted in this step.
 ///  5. Sleep: islands of touching bodies that have rested for timeToSleep sleep; a body that touches a sleeping
 ///     one wakes its island.
 /// Deterministic: the same world stepped the same way gives the same bits, in every build.

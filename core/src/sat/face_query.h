@@ -117,7 +117,8 @@ bool RecordFace(FaceQuery<S>& query, const IncidentPolygon<S>& inc, int side, in
 ///      from the face to inc's support point in direction -n, which is inc's vertex of smallest projection on n:
 ///          separation_i = Dot(n, support(inc, -n) - v_i) = min_j Dot(n, w_j) - Dot(n, v_i),
 ///      over inc's vertices w_j, mapped into ref's frame once (IncidentPolygon). Each face takes one scan of them,
-///      without branches (FaceSeparation, face_scan.h): O(n m) with a tiny constant.
+///      without branches (FaceSeparation, face_scan.h): O(n m) with a tiny constant, and m is at most kScanLimit
+///      (larger polygons are walked, walked_faces.h), so linear in n: the O(n + m) of sat.h.
 ///   2. A separation > 0 is a separating axis: stop there (early exit).
 ///   3. Keep the largest separation and its face (kUnit): when no face separates, the face of least penetration.
 ///   4. Second pass only: a face of ref exactly anti-parallel to a face of inc repeats the test the first pass made

@@ -22,9 +22,8 @@ namespace satviz::detail
 #if SATVIZ_LANES8
 /// The lanes of a face scan of N entries, one register each time: with kWide (code compiled for AVX2) one AVX2
 /// register, of four doubles, or of eight floats when N is a multiple of 8; else one SSE2 register, of two doubles or
-/// four floats. These widths measured fastest (satviz-bench, on the pairs whose scans they run): eight floats rather
-/// than four took 0.90 of the time for Overlap in float of 16-gons (117 ns against 130); two doubles in one SSE2
-/// register rather than four in two, 0.95 for Overlap of 12-gons without the wide vectors (137 ns against 144).
+/// four floats. These widths measured fastest in satviz-bench on the pairs whose scans they run: eight floats rather
+/// than four for float scans, and without the wide vectors two doubles in one SSE2 register rather than four in two.
 template <typename S, bool kWide, int N>
 using ScanLanes =
     std::conditional_t<std::is_same_v<S, double>, std::conditional_t<kWide, Lanes<double, true>, Lanes2<double>>,

@@ -36,11 +36,11 @@ namespace satviz::detail
 /// Outline:
 ///   0. Both polygons of at most 8 vertices: A's faces against B mapped into A's frame, four faces at a time in
 ///      lanes (SmallFacesSeparate); a separating face ends the test; otherwise B's faces against A mapped into B's
-///      frame, anti-parallel faces skipped. One branch per polygon instead of one per face: on random pairs this
-///      took 0.78 of the time of steps 1 to 3 for 8-gons (satviz-bench), vertex shortcut included. With AVX-512
-///      (Tracer::kWide512, SmallPolygonsOverlap512) each polygon's faces fit one register and cost so little that
-///      both polygons are tested and decided by one branch: the branch between them, mispredicted on about half of
-///      the pairs, cost more than B's faces (8-gons without it: 0.87 to 0.94 of the time, on random contact pairs).
+///      frame, anti-parallel faces skipped. One branch per polygon instead of one per face, which measured faster
+///      than steps 1 to 3 on small polygons (satviz-bench). With AVX-512 (Tracer::kWide512,
+///      SmallPolygonsOverlap512) each polygon's faces fit one register and cost so little that both polygons are
+///      tested and decided by one branch: the branch between them, mispredicted on about half of the pairs near
+///      contact, costs more than B's faces.
 ///      Larger polygons:
 ///   1. Face query of A's faces against B mapped into A's frame, stopping at the first separating face. A walked A
 ///      tests only the run of faces that see the witness (B's support point for A's first face): every other face
