@@ -1212,7 +1212,8 @@ void Panels::HelpOverlay()
         HelpBullet("world y points up; angles are radians, counter-clockwise");
         HelpBullet("polygon vertices go counter-clockwise, the interior on their left");
         HelpBullet("the normal points from A to B: moving B by depth x normal separates the pair");
-        // As the scene format has it (README, "velocity" and "world"): units per time unit, a step lasting dt.
+        // As the scene format has it (core/scene/README.md, "velocity" and "world"): units per time unit, a step
+        // lasting dt.
         HelpBullet("a velocity is in units per time unit: its arrow and the swept test (t from 0 to 1) cover one "
                    "time unit");
         HelpBullet("without a world block a step lasts dt = 1, so a velocity is the displacement over one step; "

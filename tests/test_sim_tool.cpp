@@ -437,14 +437,14 @@ TEST_CASE("satviz-sim refuses bad arguments and scenes with one line naming the 
     CHECK(Sim(scene).exitCode != 0);
 }
 
-TEST_CASE("satviz-sim: the README's example line is what the program prints", "[sim]")
+TEST_CASE("satviz-sim: the example line of docs/programs.md is what the program prints", "[sim]")
 {
     WriteFile(kSim / "ball.json", R"({"bodies": [{"name": "ball", "circle": {"radius": 0.5}, "position": [0, 2],
         "angular_velocity": 1}], "world": {"gravity": [0, -9.81], "dt": 0.0166666}})");
     const SimRun run = Sim(kSim / "ball.json --steps 1");
     REQUIRE(run.exitCode == 0);
     REQUIRE(run.out.size() == 1);
-    std::istringstream readme(ReadAll(SATVIZ_SOURCE_DIR "/README.md"));
+    std::istringstream readme(ReadAll(SATVIZ_SOURCE_DIR "/docs/programs.md"));
     std::string example;
     for (std::string line; std::getline(readme, line);)
     {

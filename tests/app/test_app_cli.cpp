@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The app's command line, checked before any window opens: --version, --measure-fps refused below 1 frame, and the
-// options as README.md lists them. Runs the real program without a display, so a check that came too late would
+// options as docs/programs.md lists them. Runs the real program without a display, so a check that came too late would
 // fail at the window instead.
 
 #include <catch2/catch.hpp>
@@ -77,11 +77,11 @@ TEST_CASE("satviz refuses --measure-fps below 1 frame with one line, before open
     }
 }
 
-TEST_CASE("README.md lists the app's options as satviz --help prints them", "[app-cli]")
+TEST_CASE("docs/programs.md lists the app's options as satviz --help prints them", "[app-cli]")
 {
     const Run run = App("--help");
     CHECK(run.exitCode == 0);
-    std::ifstream in(std::string(SATVIZ_SOURCE_DIR) + "/README.md");
+    std::ifstream in(std::string(SATVIZ_SOURCE_DIR) + "/docs/programs.md");
     std::ostringstream text;
     text << in.rdbuf();
     const std::string readme = text.str();
@@ -90,7 +90,7 @@ TEST_CASE("README.md lists the app's options as satviz --help prints them", "[ap
     REQUIRE(begin != std::string::npos);
     const size_t end = readme.find("```\n", begin + start.size());
     REQUIRE(end != std::string::npos);
-    // CLI11 ends its help with an empty line, which the README leaves out.
+    // CLI11 ends its help with an empty line, which the page leaves out.
     CHECK(readme.substr(begin + 8, end - begin - 8) + "\n" == run.out);
 }
 
