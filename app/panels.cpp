@@ -12,7 +12,7 @@
 #include "wrapped_text.h"
 
 #include <satviz/render/describe.h>
-#include <satviz/render/layers.h>
+#include <satviz/layers.h>
 #include <satviz/render/response_steps.h>
 
 #include <algorithm>

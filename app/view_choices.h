@@ -3,7 +3,7 @@
 // a save writes them into the file, and each change of one is an edit that undo takes back.
 #pragma once
 
-#include <satviz/render/layers.h>
+#include <satviz/layers.h>
 #include <satviz/scene.h>
 
 #include <string>

@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: MIT
 // satviz: scene files. Every error names the file, the JSON path of the offending value and what is wrong.
 
+#include <satviz/layers.h>
 #include <satviz/scene.h>
-
-// The drawing layers' one table lives with the painter (standard library only); the loader checks names against it.
-#include <satviz/render/layers.h>
 
 #include <nlohmann/json.hpp>
 

@@ -7,7 +7,7 @@
 #include <satviz/render/figure.h>
 #include <satviz/render/figure_drawing.h>
 #include <satviz/render/imgui_canvas.h>
-#include <satviz/render/layers.h>
+#include <satviz/layers.h>
 #include <satviz/render/png_file.h>
 #include <satviz/render/svg_canvas.h>
 #include <satviz/scene.h>

@@ -5,7 +5,7 @@
 
 #include <satviz/render/describe.h>
 #include <satviz/render/figure.h>
-#include <satviz/render/layers.h>
+#include <satviz/layers.h>
 #include <satviz/render/palette.h>
 #include <satviz/render/recording_canvas.h>
 

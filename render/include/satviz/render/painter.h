@@ -4,7 +4,7 @@
 #pragma once
 
 #include <satviz/render/canvas.h>
-#include <satviz/render/layers.h>
+#include <satviz/layers.h>
 #include <satviz/render/study.h>
 #include <satviz/sim_record.h>
 

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
-// satviz render: the drawing layers, in one table. Each row gives a layer's name (in scene files' "view.layers" and
-// satviz-render's --layers), the bit the painter tests, whether a figure draws it when a scene does not choose, and
-// the one-line description the app shows beside its switch. Everything else about layers is derived from it.
+// satviz scene: the drawing layers a scene's view can choose, in one table. Each row gives a layer's name (in scene
+// files' "view.layers" and satviz-render's --layers), the bit the painter tests, whether a figure draws it when a
+// scene does not choose, and the one-line description the app shows beside its switch. Everything else about layers
+// is derived from it. It belongs to the scene format, which the loader checks against it; the painter, the renderer
+// and the app read it from here.
 #pragma once
 
 #include <array>
@@ -58,8 +60,8 @@ struct LayerInfo
     std::string_view description; ///< one line for the app's layer switches
 };
 
-/// Every drawing layer, in drawing order: the one list of layer names, bits and descriptions (render/README.md and
-/// the top-level README's "view block" table describe them for users).
+/// Every drawing layer, in drawing order: the one list of layer names, bits and descriptions (the "view block"
+/// section of core/scene/README.md describes them for users).
 inline constexpr std::array<LayerInfo, 19> kLayerTable = {{
     {"shapes", kLayerShapes, true, "the bodies, filled and outlined"},
     {"labels", kLayerLabels, true, "body names, vertex and edge numbers"},
