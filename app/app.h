@@ -51,6 +51,10 @@ struct AppOptions
     /// A pair with more vertices than this (A's and B's together) is tested on a worker thread: its traced
     /// queries and the camera fit grow with the square of the count, about 13 ms at 2048 vertices.
     int backgroundVertices = 2048;
+    /// Fills a draw command's ClipRect with the colour in its UserCallbackData by clearing (the window system's
+    /// scissored glClear): the figure's ground and panels and the big windows' backgrounds are drawn with it
+    /// instead of triangles, which a software rasterizer shades pixel by pixel. Null (the tests): triangles.
+    ImDrawCallback clearRect = nullptr;
 };
 
 /// The folder of the bundled scenes for the program in `programDir`, whose data folder (the lessons, and the scenes

@@ -112,7 +112,8 @@ void Panels::CanvasWindow()
     ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
     ImGui::Begin("##canvas", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
+                     ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse |
+                     ImGuiWindowFlags_NoBackground); // the figure paints its own ground
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     app_.PlaceCanvas({origin.x, origin.y}, static_cast<int>(size.x), static_cast<int>(size.y));
     const Viewer& viewer = app_.GetViewer();
@@ -134,6 +135,8 @@ void Panels::CanvasWindow()
     {
         ImDrawList* list = ImGui::GetWindowDrawList();
         ImDrawListCanvas canvas(list, app_.Fonts(), origin);
+        canvas.ClearLargeRects(app_.Options().clearRect);
+        canvas.PlainFillsUnderOutlines(true);
         const Figure figure = viewer.CurrentFigure();
         PaintFigure(canvas, viewer.Studied(), viewer.Setup().study, figure);
         Handles(list, origin);

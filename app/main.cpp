@@ -6,6 +6,7 @@
 #include "key_queue.h"
 
 #include <satviz/render/figure_drawing.h>
+#include <satviz/render/palette.h>
 #include <satviz/render/png_file.h>
 
 #include <CLI/CLI.hpp>
@@ -18,6 +19,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl2.h>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -277,6 +279,70 @@ std::string FindRenderer(const std::filesystem::path& programDir)
 
 } // namespace
 
+namespace
+{
+
+bool Intersect(const ImVec4& a, const ImVec4& b)
+{
+    return a.x < b.z && b.x < a.z && a.y < b.w && b.y < a.w;
+}
+
+// True when no command drawn before `command` in this frame reaches into its clip rectangle: every drawing stays
+// within its command's clip rectangle.
+bool NothingDrawnUnder(const ImDrawList* list, const ImDrawCmd* command)
+{
+    const ImDrawData* data = ImGui::GetDrawData();
+    for (int l = 0; l < data->CmdListsCount; ++l)
+    {
+        const ImDrawList* earlier = data->CmdLists[l];
+        for (const ImDrawCmd& c : earlier->CmdBuffer)
+        {
+            if (&c == command)
+            {
+                return true;
+            }
+            if ((c.ElemCount > 0 || c.UserCallback != nullptr) && Intersect(c.ClipRect, command->ClipRect))
+            {
+                return false;
+            }
+        }
+        if (earlier == list)
+        {
+            break;
+        }
+    }
+    return false;
+}
+
+// AppOptions::clearRect: fills the command's clip rectangle with the colour in its callback data by a scissored
+// clear. The rectangle's pixels are those whose centres it holds, as for the two triangles it replaces.
+void ClearRect(const ImDrawList* list, const ImDrawCmd* command)
+{
+    const ImDrawData* data = ImGui::GetDrawData();
+    const ImVec2 scale = data->FramebufferScale;
+    const float height = data->DisplaySize.y * scale.y;
+    const auto pixel = [](float v) { return static_cast<int>(std::ceil(v - 0.5f)); };
+    const int x0 = pixel((command->ClipRect.x - data->DisplayPos.x) * scale.x);
+    const int y0 = pixel((command->ClipRect.y - data->DisplayPos.y) * scale.y);
+    const int x1 = pixel((command->ClipRect.z - data->DisplayPos.x) * scale.x);
+    const int y1 = pixel((command->ClipRect.w - data->DisplayPos.y) * scale.y);
+    if (x1 <= x0 || y1 <= y0)
+    {
+        return;
+    }
+    const satviz::Color color = satviz::ClearColorOf(*command);
+    if (color == satviz::palette::kBackground && NothingDrawnUnder(list, command))
+    {
+        return; // the frame was cleared to it (the figure's ground, its first drawing)
+    }
+    glScissor(x0, static_cast<int>(height) - y1, x1 - x0, y1 - y0);
+    glClearColor(static_cast<float>((color >> 24) & 0xFFu) / 255.0f, static_cast<float>((color >> 16) & 0xFFu) / 255.0f,
+                 static_cast<float>((color >> 8) & 0xFFu) / 255.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+}
+
+} // namespace
+
 int main(int argc, char** argv)
 {
     CLI::App cli{"satviz: step through the Separating Axis Theorem, axis by axis"};
@@ -374,6 +440,7 @@ int main(int argc, char** argv)
     options.recentFile = RecentFile();
     options.updateRecent = !measuring;
     options.exportPath = exportPath;
+    options.clearRect = ClearRect;
     options.keys.s = GLFW_KEY_S;
     options.keys.o = GLFW_KEY_O;
     options.keys.e = GLFW_KEY_E;
@@ -481,7 +548,10 @@ int main(int argc, char** argv)
             ExportWithWindowGl(app, *drawing, exportSetup, exportTo);
         }
         glViewport(0, 0, framebufferWidth, framebufferHeight);
-        glClearColor(0.98f, 0.98f, 0.97f, 1.0f);
+        // The figure's ground, so that a canvas drawn first need not fill it again (ClearRect).
+        glClearColor(static_cast<float>((satviz::palette::kBackground >> 24) & 0xFFu) / 255.0f,
+                     static_cast<float>((satviz::palette::kBackground >> 16) & 0xFFu) / 255.0f,
+                     static_cast<float>((satviz::palette::kBackground >> 8) & 0xFFu) / 255.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
         ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
         glfwSwapBuffers(window);

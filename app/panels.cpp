@@ -422,6 +422,31 @@ void Panels::LayerToggles()
 
 // [SECTION] Side panel: the pair, the steps, the numbers, the layers
 
+ImGuiWindowFlags Panels::ClearedBackground() const
+{
+    return app_.Options().clearRect != nullptr ? ImGuiWindowFlags_NoBackground : ImGuiWindowFlags_None;
+}
+
+// The window's background, opaque, filled by clearing (AppOptions::clearRect) as its first drawing.
+void Panels::ClearBackground()
+{
+    if (app_.Options().clearRect == nullptr)
+    {
+        return;
+    }
+    const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+    const ImU32 packed = ImGui::ColorConvertFloat4ToU32(ImVec4(bg.x, bg.y, bg.z, 1.0f));
+    // ImU32 is ABGR; the callback reads RGBA, as a figure Color.
+    const Color color =
+        ((packed & 0xFFu) << 24) | (((packed >> 8) & 0xFFu) << 16) | (((packed >> 16) & 0xFFu) << 8) | 0xFFu;
+    ImDrawList* list = ImGui::GetWindowDrawList();
+    const ImVec2 min = ImGui::GetWindowPos();
+    const ImVec2 size = ImGui::GetWindowSize();
+    list->PushClipRect(min, ImVec2(min.x + size.x, min.y + size.y), true);
+    list->AddCallback(app_.Options().clearRect, reinterpret_cast<void*>(static_cast<uintptr_t>(color)));
+    list->PopClipRect();
+}
+
 void Panels::SidePanel()
 {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
@@ -430,7 +455,8 @@ void Panels::SidePanel()
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, viewport->Size.y - 2.0f * top));
     ImGui::Begin("##panel", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+                     ImGuiWindowFlags_NoBringToFrontOnFocus | ClearedBackground());
+    ClearBackground();
     const Document& document = app_.GetDocument();
     const std::string title = (document.File().empty() ? std::string("untitled")
                                                        : std::filesystem::path(document.File()).filename().string()) +

@@ -79,6 +79,8 @@ class Panels
     void Handles(ImDrawList* list, ImVec2 origin);
     void AnnounceHits(Canvas& canvas, const Figure& figure, ImVec2 origin);
     void Announce(const std::string& what);
+    ImGuiWindowFlags ClearedBackground() const;
+    void ClearBackground();
 
     App& app_;
     DragKind drag_ = DragKind::None;

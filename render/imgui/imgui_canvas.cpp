@@ -139,6 +139,23 @@ void ImDrawListCanvas::FillConvex(const ScreenPoint* points, int count, Color co
     list->AddConvexPolyFilled(scratch_.Data, count, ToImColor(color));
 }
 
+void ImDrawListCanvas::FillOutlined(const ScreenPoint* points, int count, Color fill, Color outline, float thickness)
+{
+    if (!plainUnderOutlines_ || count < 3)
+    {
+        Canvas::FillOutlined(points, count, fill, outline, thickness);
+        return;
+    }
+    if (ImDrawList* list = Target(Estimate(count)))
+    {
+        const ImDrawListFlags flags = list->Flags;
+        list->Flags &= ~ImDrawListFlags_AntiAliasedFill;
+        FillConvex(points, count, fill);
+        list->Flags = flags;
+    }
+    Polyline(points, count, true, outline, thickness);
+}
+
 void ImDrawListCanvas::Circle(ScreenPoint center, float radius, Color color, float thickness)
 {
     if (ImDrawList* list = Target(Estimate(128)))
@@ -157,6 +174,16 @@ void ImDrawListCanvas::FillCircle(ScreenPoint center, float radius, Color color)
 
 void ImDrawListCanvas::FillRect(ScreenPoint min, ScreenPoint max, Color color)
 {
+    if (clear_ != nullptr && (color & 0xFFu) == 0xFFu && (max.x - min.x) * (max.y - min.y) >= kClearArea)
+    {
+        if (ImDrawList* list = Target(4))
+        {
+            list->PushClipRect(P(min), P(max), true);
+            list->AddCallback(clear_, reinterpret_cast<void*>(static_cast<uintptr_t>(color)));
+            list->PopClipRect();
+            return;
+        }
+    }
     if (ImDrawList* list = Target(Estimate(4)))
     {
         list->AddRectFilled(P(min), P(max), ToImColor(color));

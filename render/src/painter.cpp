@@ -812,10 +812,38 @@ class Painter
                 continue;
             }
             const Body& body = scene_.bodies[i];
+            if (OffPicture(body.shape, body.Xf()))
+            {
+                continue;
+            }
             DrawShape(body.shape, body.Xf(), palette::kOther, 0.18f);
         }
         DrawShape(bodyA_.shape, bodyA_.Xf(), palette::kShapeA, 0.22f);
         DrawShape(bodyB_.shape, bodyB_.Xf(), palette::kShapeB, 0.28f);
+    }
+
+    // True when the shape placed by xf lies wholly outside the picture (a body the camera does not see), judged by
+    // the circle about its origin that holds it.
+    bool OffPicture(const Shape& shape, const Transform& xf) const
+    {
+        Vec2 center = xf.p;
+        double radius = 0.0;
+        if (shape.type == ShapeType::Circle)
+        {
+            center = TransformPoint(xf, shape.circle.center);
+            radius = shape.circle.radius;
+        }
+        else
+        {
+            for (const Vec2& v : shape.polygon.Vertices())
+            {
+                radius = std::max(radius, Length(v));
+            }
+        }
+        const ScreenPoint at = At(center);
+        const float reach = static_cast<float>(radius * view_.zoom) + kOutline;
+        return at.x + reach < bounds_.minX || at.x - reach > bounds_.maxX || at.y + reach < bounds_.minY ||
+               at.y - reach > bounds_.maxY;
     }
 
     void DrawShape(const Shape& shape, const Transform& xf, Color color, float fill)
@@ -823,9 +851,13 @@ class Painter
         const std::vector<ScreenPoint> outline = ShapeOutline(view_, shape, xf);
         if (outline.size() >= 3)
         {
-            canvas_.FillConvex(outline.data(), static_cast<int>(outline.size()), WithAlpha(color, fill));
+            canvas_.FillOutlined(outline.data(), static_cast<int>(outline.size()), WithAlpha(color, fill), color,
+                                 kOutline);
         }
-        canvas_.Polyline(outline.data(), static_cast<int>(outline.size()), true, color, kOutline);
+        else
+        {
+            canvas_.Polyline(outline.data(), static_cast<int>(outline.size()), true, color, kOutline);
+        }
         if (shape.type == ShapeType::Circle)
         {
             canvas_.FillCircle(At(TransformPoint(xf, shape.circle.center)), 2.5f, color);
@@ -1348,9 +1380,11 @@ class Painter
                 {
                     inside = ShapeCenter(bodyB_.shape, pushed);
                 }
-                labels_.Place(At(inside), "after the pitfall's push: " + std::string(Dot(pitfall.normal, m.normal) >= 0.0 ? "still " : "") +
-                                                  FormatNumber(left.depth) + " deep",
-                              TextStyle::Label, palette::kInk, 1.0f, 1.0f, 14.0f, LabelRank::Verdict);
+                labels_.Place(
+                    At(inside),
+                    "after the pitfall's push: " + std::string(Dot(pitfall.normal, m.normal) >= 0.0 ? "still " : "") +
+                        FormatNumber(left.depth) + " deep",
+                    TextStyle::Label, palette::kInk, 1.0f, 1.0f, 14.0f, LabelRank::Verdict);
             }
             labels_.ReserveLine(from, pitfallTo_, 2.0f);
             labels_.Reserve({pitfallTo_.x - 10.0f, pitfallTo_.y - 10.0f, pitfallTo_.x + 10.0f, pitfallTo_.y + 10.0f});
@@ -1488,8 +1522,8 @@ class Painter
                     const Vec2 mid = TransformPoint(xf, poly.Vertices()[i] + 0.5 * poly.Edge(i));
                     const Vec2 n = Rotate(xf.q, poly.Normal(i));
                     labels_.PlaceOutside(OutlineOf(1 - s), At(mid), "e" + std::to_string(i), TextStyle::Label,
-                                         WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x),
-                                         static_cast<float>(-n.y), 5.0f, LabelRank::Edge);
+                                         WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x), static_cast<float>(-n.y),
+                                         5.0f, LabelRank::Edge);
                 }
             }
         }
@@ -1507,8 +1541,7 @@ class Painter
             const ScreenPoint text = canvas_.MeasureText(body.name, TextStyle::Heading);
             if (wide >= text.x + 8.0f && tall >= text.y + 4.0f)
             {
-                labels_.Place(At(center), body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f,
-                              LabelRank::Name);
+                labels_.Place(At(center), body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f, LabelRank::Name);
             }
             else if (wide < text.x + 8.0f && tall >= 2.0f * text.y)
             {

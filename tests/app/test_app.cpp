@@ -1661,8 +1661,8 @@ TEST_CASE("A body grabbed while the simulation plays follows the pointer and is 
     io.MouseDown[0] = true;
     h.Frames(1);
     CHECK(h.app->Selected() == 1);
-    const Vec2 grabbedAt = ToWorld(h.View().Camera(), {io.MousePos.x - h.CanvasOrigin().x,
-                                                       io.MousePos.y - h.CanvasOrigin().y});
+    const Vec2 grabbedAt =
+        ToWorld(h.View().Camera(), {io.MousePos.x - h.CanvasOrigin().x, io.MousePos.y - h.CanvasOrigin().y});
     std::vector<std::pair<int, World>> held; // the states shown while the box was held
     for (int i = 1; i <= 8; ++i)
     {
@@ -1732,4 +1732,47 @@ TEST_CASE("The plots keep the totals of the latest kMaxSamples steps", "[app][si
     sim.StepBack();
     CHECK(sim.Record().history.back().step == steps - 1);
     CHECK(sim.Record().history.front().step == steps - Simulation::kMaxSamples + 1);
+}
+
+namespace
+{
+
+void NoClear(const ImDrawList*, const ImDrawCmd*) {}
+
+} // namespace
+
+TEST_CASE("The window's canvas clears large opaque rectangles and fills outlined polygons without a fringe", "[app]")
+{
+    Harness h(ScratchCopy("l15_slope.json").string());
+    ImGui::NewFrame();
+    ImDrawList* list = ImGui::GetBackgroundDrawList();
+    ImDrawListCanvas canvas(list, h.app->Fonts());
+    canvas.ClearLargeRects(NoClear);
+    // An opaque rectangle of 190 x 90 px: one callback command, its clip rectangle the rectangle, no vertices.
+    const int before = list->VtxBuffer.Size;
+    canvas.FillRect({10.0f, 20.0f}, {200.0f, 110.0f}, 0x112233FFu);
+    CHECK(list->VtxBuffer.Size == before);
+    const auto cleared = std::find_if(list->CmdBuffer.begin(), list->CmdBuffer.end(),
+                                      [](const ImDrawCmd& c) { return c.UserCallback == NoClear; });
+    REQUIRE(cleared != list->CmdBuffer.end());
+    CHECK(cleared->ClipRect.x == 10.0f);
+    CHECK(cleared->ClipRect.y == 20.0f);
+    CHECK(cleared->ClipRect.z == 200.0f);
+    CHECK(cleared->ClipRect.w == 110.0f);
+    CHECK(ClearColorOf(*cleared) == 0x112233FFu);
+    // Translucent, or small: triangles.
+    canvas.FillRect({10.0f, 20.0f}, {200.0f, 110.0f}, 0x11223380u);
+    CHECK(list->VtxBuffer.Size == before + 4);
+    canvas.FillRect({10.0f, 20.0f}, {40.0f, 50.0f}, 0x112233FFu);
+    CHECK(list->VtxBuffer.Size == before + 8);
+    // An outlined pentagon: with the fringe, ImGui's anti-aliased fill takes two vertices per point; without, one.
+    const ScreenPoint pentagon[5] = {{300, 300}, {340, 310}, {345, 350}, {310, 365}, {290, 335}};
+    const int start = list->VtxBuffer.Size;
+    canvas.FillOutlined(pentagon, 5, 0x11223340u, 0x112233FFu, 2.0f);
+    const int smooth = list->VtxBuffer.Size - start;
+    canvas.PlainFillsUnderOutlines(true);
+    canvas.FillOutlined(pentagon, 5, 0x11223340u, 0x112233FFu, 2.0f);
+    const int plain = list->VtxBuffer.Size - start - smooth;
+    CHECK(smooth - plain == 5);
+    ImGui::Render();
 }

@@ -158,8 +158,8 @@ StepAxis AxisOfStep(const PairStudy& study, int step)
         copy(t);
         out.separating = t.endsTest;
         out.entry = t.entry;
-        out.neverCloses = t.axis.kind == AxisKind::FaceNormal && !(t.bounded || t.skipped) && t.separation >= 0.0 &&
-                          t.rate >= 0.0;
+        out.neverCloses =
+            t.axis.kind == AxisKind::FaceNormal && !(t.bounded || t.skipped) && t.separation >= 0.0 && t.rate >= 0.0;
     }
     else
     {
@@ -260,12 +260,13 @@ TEST_CASE("A face sweep that ends on a face the other shape leaves says so, not 
     // B is 0.5 beyond A's right face (edge 1) and moves away at 2 per step: behind that face only before the step,
     // until t = -0.5 / 2 = -0.25; at 0 beyond, it only touches.
     for (const auto& [x, expected] : {std::pair<double, std::string>{2.5, "it was behind it only before the step, "
-                                                                           "until t = -0.25"},
+                                                                          "until t = -0.25"},
                                       std::pair<double, std::string>{2.0, "touches this face at t = 0 and moves "
                                                                           "away from it (touching is not a hit)"}})
     {
         const SceneResult loaded = ParseScene(R"({"bodies": [{"name": "A", "box": [2, 2]},
-            {"name": "B", "box": [2, 2], "position": [)" + std::to_string(x) + R"(, 0], "velocity": [2, 0.5]}],
+            {"name": "B", "box": [2, 2], "position": [)" +
+                                                  std::to_string(x) + R"(, 0], "velocity": [2, 0.5]}],
             "view": {"steps": "faces"}})",
                                               "s.json");
         INFO(loaded.error);
@@ -591,8 +592,9 @@ TEST_CASE("The layer table is what scene files accept, and its names and bits ar
     }
     CHECK(LayerNames(kAllLayers) == names);
     CHECK(LayersFromNames(names) == kAllLayers);
-    CHECK(kDefaultLayers == (kAllLayers & ~(kLayerNormals | kLayerAxes | kLayerMinkowski | kLayerVoronoi | kLayerLegend |
-                                            kLayerBroadphase | kLayerResponse | kLayerHits | kLayerPlots)));
+    CHECK(kDefaultLayers ==
+          (kAllLayers & ~(kLayerNormals | kLayerAxes | kLayerMinkowski | kLayerVoronoi | kLayerLegend |
+                          kLayerBroadphase | kLayerResponse | kLayerHits | kLayerPlots)));
     CHECK(LayerFromName("mvt") == 0);
     CHECK(LayerNameList() ==
           "shapes, labels, normals, axes, projection, exit, best, mtv, contacts, swept, ghost, caption, minkowski, "
@@ -911,8 +913,9 @@ TEST_CASE("A hit's verdict marks the latest entry and the earliest exit of all t
             body.position = k == 0 ? Vec2{0.0, 0.0} : Vec2{rng.Uniform(-6.0, 6.0), rng.Uniform(-6.0, 6.0)};
             body.angle = rng.Uniform(-3.0, 3.0);
             // Towards A, past it by a random amount: some hits exit through a face before the step ends.
-            body.velocity = k == 0 ? Vec2{0.0, 0.0} : rng.Uniform(1.0, 2.5) * -body.position +
-                                                          Vec2{rng.Uniform(-1.0, 1.0), rng.Uniform(-1.0, 1.0)};
+            body.velocity =
+                k == 0 ? Vec2{0.0, 0.0}
+                       : rng.Uniform(1.0, 2.5) * -body.position + Vec2{rng.Uniform(-1.0, 1.0), rng.Uniform(-1.0, 1.0)};
             scene.bodies.push_back(std::move(body));
         }
         scenes.push_back(std::move(scene));
@@ -926,8 +929,7 @@ TEST_CASE("A hit's verdict marks the latest entry and the earliest exit of all t
             FigureSetup setup = SetUpView(scene, view);
             REQUIRE(setup.Ok());
             const PairStudy& study = setup.study;
-            const SweepStatus status =
-                study.Textbook() ? study.textbookSweepResult.status : study.sweepResult.status;
+            const SweepStatus status = study.Textbook() ? study.textbookSweepResult.status : study.sweepResult.status;
             double entry = 0.0;
             double exit = 0.0;
             if (!study.sweep || status != SweepStatus::Hit || !FaceWindow(scene, study, entry, exit))
@@ -937,8 +939,8 @@ TEST_CASE("A hit's verdict marks the latest entry and the earliest exit of all t
             const RecordingCanvas canvas = Paint(scene, setup, study.VerdictStep(), kLayerSwept);
             const double shownEntry = NumberAfter(canvas, "timebar", "latest entry ");
             const double shownExit = NumberAfter(canvas, "timebar", "earliest exit ");
-            INFO("view " << static_cast<int>(view) << " window [" << entry << ", " << exit << "], shown ["
-                         << shownEntry << ", " << shownExit << "]");
+            INFO("view " << static_cast<int>(view) << " window [" << entry << ", " << exit << "], shown [" << shownEntry
+                         << ", " << shownExit << "]");
             // The figures print two or three decimals.
             CHECK(std::abs(shownEntry - entry) <= 0.0051 + 1e-9 * std::abs(entry));
             if (std::isfinite(exit))
@@ -1397,4 +1399,28 @@ TEST_CASE("Pitfalls on random pairs: scaling keeps every verdict, fewer axes nev
             CHECK(RunPitfall(Pitfall::OneShapesAxes, scene, 0, 1).overlap);
         }
     }
+}
+
+TEST_CASE("A body wholly outside the picture is not drawn; one inside it is", "[painter]")
+{
+    Scene scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    REQUIRE(scene.bodies.size() == 2);
+    const auto outlines = [](const Scene& s) {
+        FigureSetup setup = SetUpFigure(s, {});
+        REQUIRE(setup.Ok());
+        const RecordingCanvas canvas = Paint(s, setup, setup.study.VerdictStep(), kLayerShapes);
+        int count = 0;
+        for (const DrawCommand* c : canvas.InGroup("shapes"))
+        {
+            count += c->kind == DrawCommand::Kind::Polyline && c->closed;
+        }
+        return count;
+    };
+    // A third body where the pair is (the camera frames the pair), then far off to the right.
+    Body other = scene.bodies[0];
+    other.name = "other";
+    scene.bodies.push_back(other);
+    CHECK(outlines(scene) == 3);
+    scene.bodies[2].position = scene.bodies[0].position + Vec2{1000.0, 0.0};
+    CHECK(outlines(scene) == 2);
 }

@@ -37,6 +37,13 @@ class Canvas
     virtual void Polyline(const ScreenPoint* points, int count, bool closed, Color color, float thickness) = 0;
     /// A filled convex polygon.
     virtual void FillConvex(const ScreenPoint* points, int count, Color color) = 0;
+    /// A filled convex polygon with its outline on top: FillConvex, then a closed Polyline of the same points. A
+    /// canvas may leave the fill's edges unsmoothed, since the outline covers them.
+    virtual void FillOutlined(const ScreenPoint* points, int count, Color fill, Color outline, float thickness)
+    {
+        FillConvex(points, count, fill);
+        Polyline(points, count, true, outline, thickness);
+    }
     /// A circle outline.
     virtual void Circle(ScreenPoint center, float radius, Color color, float thickness) = 0;
     /// A filled disc.
