@@ -36,7 +36,8 @@ class LabelPlacer
     /// Marks a band that hides what lies under it (the caption, the number-line panel, an inset): no label may
     /// cover it, and a vertex number or an edge name whose anchor it hides is left out.
     void ReserveBand(const ScreenRect& rect);
-    /// Marks a line no label may cover (a line drawn over the labels), `thickness` pixels wide.
+    /// Marks a line no label may cover, `thickness` pixels wide: one drawn over the labels, or one a label's halo
+    /// would hide (a projection bar, a marked face).
     void ReserveLine(ScreenPoint a, ScreenPoint b, float thickness);
     /// Adds `text` near `anchor`, `distance` pixels away, preferring the direction (dx, dy) (any length).
     void Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
