@@ -62,8 +62,9 @@ struct Candidate
 // line when their cross product is within what rounding may have turned them by. A face normal is computed from
 // its edge, so its direction carries about eps * R / L for vertices R from the body origin and an edge of length
 // L (a fine polygon's opposite faces, parallel in exact arithmetic, differ by that much).
-// Of the faces on one line, the one whose world normal points right (or, for a vertical line, up) names the axis
-// and orients it, so that the number line grows the way a reader expects.
+// Of the faces on one line, the one whose world normal points right (or, for a vertical line, up) comes first and
+// orients the axis while testing; a trace then names each axis after the face turned towards the other shape
+// (NameByFacingFace), which does not change the answer.
 template <typename S>
 bool PointsRightOrUp(Vec2T<S> world)
 {
@@ -198,6 +199,50 @@ void ToWorld(const Candidate<S>& c, const TransformT<S>& xfA, S minA, S maxA, S 
     out.maxB = maxB + offset;
 }
 
+// Of the faces on a traced axis, the one a reader looks at names it: A's face turned towards B (`bAhead`: B's
+// interval lies along the axis from A's), else B's face turned towards A. The axis then points along that face's
+// outward normal, its intervals and B's push (or rate) turned with it, so that the sentence, the number line and
+// the picture name one face and measure along its normal. An axis without such a face keeps its first face.
+template <typename Axis, typename S>
+void NameByFacingFace(Axis& step, const Placed<S>& pa, const Placed<S>& pb, Vec2T<S> u, bool bAhead, int& pushSign,
+                      S& rate)
+{
+    const Placed<S>* shapes[2] = {&pa, &pb};
+    for (int side = 0; side < 2; ++side)
+    {
+        for (int f = 0; f < step.faceCount; ++f)
+        {
+            const AxisRef face = step.faces[f];
+            if (face.kind != AxisKind::FaceNormal || face.shape != side)
+            {
+                continue;
+            }
+            const S along = Dot(shapes[side]->Normal(face.index), u);
+            // A's face faces B when its normal points the way B lies; B's face when it points back towards A.
+            const bool normalAlong = along > S(0);
+            if (normalAlong != (bAhead == (side == 0)))
+            {
+                continue;
+            }
+            std::copy_backward(step.faces, step.faces + f, step.faces + f + 1);
+            step.faces[0] = face;
+            if (!normalAlong)
+            {
+                step.direction = -step.direction;
+                const S minA = step.minA;
+                const S minB = step.minB;
+                step.minA = -step.maxA;
+                step.maxA = -minA;
+                step.minB = -step.maxB;
+                step.maxB = -minB;
+                pushSign = -pushSign;
+                rate = -rate;
+            }
+            return;
+        }
+    }
+}
+
 struct NullTracer
 {
     static constexpr bool kEnabled = false;
@@ -267,6 +312,8 @@ TextbookResultT<S> TextbookCollideWith(const ShapeT<S>& a, const TransformT<S>& 
             step.gap = separating ? std::max(gapAlong, gapAgainst) : S(0);
             step.overlap = overlap;
             step.pushSign = pushSign;
+            S unused{};
+            NameByFacingFace(step, pa, pb, u, separating ? gapAlong > S(0) : pushSign > 0, step.pushSign, unused);
             step.best = result.axis;
             trace->axes.push_back(step);
         }
@@ -392,6 +439,10 @@ TextbookSweepResultT<S> TextbookSweepWith(const ShapeT<S>& a, const TransformT<S
             TextbookSweepAxisT<S> step;
             ToWorld(axes[k], xfA, minA, maxA, minB, maxB, step);
             step.rate = rate;
+            int unused = 0;
+            // B lies along the axis from A at t = 0 when its interval is the farther one that way (past A's, or
+            // overlapping it with the shorter push along the axis).
+            NameByFacingFace(step, pa, pb, u, minB - maxA > minA - maxB, unused, step.rate);
             step.entry = entry;
             step.exit = leave;
             step.never = never;

@@ -219,37 +219,19 @@ std::string TextbookAxisStep(const Scene& scene, const PairStudy& study, int ste
            ".";
 }
 
-// Of the faces on one axis, the one the verdict's picture marks: where the shapes meet, the contact's reference face
-// when it lies on this axis; else A's face turned towards B (`towardB`: from A's interval to B's on the axis), else
-// B's face turned towards A. Kind None when no face lies on the axis (a circle's axis).
+// The face that names a textbook axis (faces[0]: the reference face where the shapes meet, else the face turned
+// towards the other shape, as StudyPair and the test choose it), when it is turned towards the other shape
+// (`towardB`: from A's interval to B's on the axis). Kind None when no face on the axis is (a circle's axis).
 AxisRef FacingFace(const Scene& scene, const PairStudy& study, const AxisRef* faces, int count, Vec2 towardB)
 {
-    const ClipTrace& clip = study.trace.clip;
-    for (int f = 0; f < count && study.trace.hasClip && !study.sweep; ++f)
+    if (count < 1 || faces[0].kind != AxisKind::FaceNormal)
     {
-        if (faces[f].kind == AxisKind::FaceNormal && faces[f].shape == clip.reference.shape &&
-            faces[f].index == clip.reference.index && clip.reference.kind == AxisKind::FaceNormal)
-        {
-            return faces[f];
-        }
+        return AxisRef{};
     }
-    for (int shape = 0; shape < 2; ++shape)
-    {
-        for (int f = 0; f < count; ++f)
-        {
-            if (faces[f].kind != AxisKind::FaceNormal || faces[f].shape != shape)
-            {
-                continue;
-            }
-            const Body& body = scene.bodies[static_cast<size_t>(shape == 0 ? study.bodyA : study.bodyB)];
-            const double facing = Dot(Rotate(body.Xf().q, body.shape.polygon.Normal(faces[f].index)), towardB);
-            if (shape == 0 ? facing > 0.0 : facing < 0.0)
-            {
-                return faces[f];
-            }
-        }
-    }
-    return AxisRef{};
+    const AxisRef& face = faces[0];
+    const Body& body = scene.bodies[static_cast<size_t>(face.shape == 0 ? study.bodyA : study.bodyB)];
+    const double facing = Dot(Rotate(body.Xf().q, body.shape.polygon.Normal(face.index)), towardB);
+    return (face.shape == 0 ? facing > 0.0 : facing < 0.0) ? face : AxisRef{};
 }
 
 // "floor's edge 3"
@@ -269,8 +251,8 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
     }
     const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(r.axis)];
     const std::string axis = "axis " + std::to_string(r.axis + 1);
-    // The face named is the one the picture marks: where the shapes meet (the reference face), or, apart, the face
-    // turned towards the other shape; the number line's direction is faces[0]'s normal, whichever face is named.
+    // The face named is the one the picture marks and the number line is measured along: where the shapes meet
+    // (the reference face), or, apart, the face turned towards the other shape.
     const bool bAhead = t.separating ? t.minB - t.maxA > 0.0 : t.pushSign > 0;
     const AxisRef face = FacingFace(scene, study, t.faces, t.faceCount, bAhead ? t.direction : -t.direction);
     const bool named = face.kind == AxisKind::FaceNormal;

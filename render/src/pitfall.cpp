@@ -96,35 +96,53 @@ PitfallResult Unnormalised(const Scene& scene, int a, int b, const TextbookResul
     return out;
 }
 
-// The mistake: the overlap taken as the intervals' common part and B pushed along the axis as it points.
-PitfallResult Unchecked(const TextbookTrace& trace)
+// The mistake: every face normal of both shapes tried in turn, each as the polygon lists it (A's first), the overlap
+// taken as the intervals' common part, and B pushed along the normal of the first face with the smallest one,
+// whichever way that normal points. The faces are the shapes' own, not the test's axes: the test points each axis
+// along the face turned towards the other shape, which is the very check this mistake leaves out.
+PitfallResult Unchecked(const Scene& scene, int a, int b, const TextbookResult& right)
 {
     PitfallResult out;
     out.ran = true;
-    out.overlap = trace.result.overlap;
+    out.overlap = right.overlap;
     if (!out.overlap)
     {
         out.verdict = "Pitfall (unchecked direction): the shapes are apart, so there is no push to get wrong.";
         return out;
     }
+    const std::vector<Vec2> pa = World(scene.bodies[static_cast<size_t>(a)]);
+    const std::vector<Vec2> pb = World(scene.bodies[static_cast<size_t>(b)]);
     double smallest = std::numeric_limits<double>::infinity();
-    for (const TextbookAxis& t : trace.axes)
+    int chosenBody = -1;
+    int chosenEdge = -1;
+    for (int side = 0; side < 2; ++side)
     {
-        const double common = std::min(t.maxA, t.maxB) - std::max(t.minA, t.minB);
-        if (common < smallest)
+        const std::vector<Vec2>& own = side == 0 ? pa : pb;
+        for (size_t i = 0; i < own.size(); ++i)
         {
-            smallest = common;
-            out.normal = t.direction;
+            const Vec2 n = Normalize(RightPerp(own[(i + 1) % own.size()] - own[i]));
+            double minA = 0.0, maxA = 0.0, minB = 0.0, maxB = 0.0;
+            Project(pa, n, minA, maxA);
+            Project(pb, n, minB, maxB);
+            const double common = std::min(maxA, maxB) - std::max(minA, minB);
+            if (common < smallest)
+            {
+                smallest = common;
+                out.normal = n;
+                chosenBody = side == 0 ? a : b;
+                chosenEdge = static_cast<int>(i);
+            }
         }
     }
     out.depth = smallest;
-    const bool inward = Dot(out.normal, trace.result.normal) < 0.0;
+    const bool inward = Dot(out.normal, right.normal) < 0.0;
     out.verdict = "Pitfall (unchecked direction): taking the intervals' common part, " + FormatNumber(smallest) +
-                  ", and pushing B along the axis as it happens to point, " +
+                  ", and pushing B along the normal of " + AxisName(scene, chosenBody, chosenEdge) + " as it points, (" +
+                  FormatNumber(out.normal.x) + ", " + FormatNumber(out.normal.y) + "), " +
                   (inward ? std::string("drives B into A instead of out of it")
                           : std::string("happens to push the right way here, by luck")) +
-                  "; the MTV moves B " + FormatNumber(trace.result.depth) + " along (" +
-                  FormatNumber(trace.result.normal.x) + ", " + FormatNumber(trace.result.normal.y) + ").";
+                  "; the MTV moves B " + FormatNumber(right.depth) + " along (" + FormatNumber(right.normal.x) + ", " +
+                  FormatNumber(right.normal.y) + ").";
     return out;
 }
 
@@ -302,7 +320,7 @@ PitfallResult RunPitfall(Pitfall pitfall, const Scene& scene, int a, int b)
     case Pitfall::UnnormalisedAxes:
         return Unnormalised(scene, a, b, trace.result);
     case Pitfall::UncheckedDirection:
-        return Unchecked(trace);
+        return Unchecked(scene, a, b, trace.result);
     case Pitfall::OneShapesAxes:
         return OneShape(scene, a, b, trace);
     case Pitfall::FloatWorld:

@@ -278,6 +278,44 @@ bool StudyInFloat(const Body& bodyA, const Body& bodyB, PairStudy& study)
     return true;
 }
 
+// Where the shapes meet, the contact's reference face is the face the verdict's picture marks. When it lies on a
+// textbook axis it names that axis, which then points along its outward normal (the test names an axis after A's
+// face turned towards B, which the reference face is but for rounding; here the two cannot differ).
+void NameByReferenceFace(const Scene& scene, PairStudy& study)
+{
+    const AxisRef& reference = study.trace.clip.reference;
+    if (!study.trace.hasClip || reference.kind != AxisKind::FaceNormal)
+    {
+        return;
+    }
+    const Body& body = scene.bodies[static_cast<size_t>(reference.shape == 0 ? study.bodyA : study.bodyB)];
+    const Vec2 normal = Rotate(body.Xf().q, body.shape.polygon.Normal(reference.index));
+    for (TextbookAxis& t : study.textbook.axes)
+    {
+        for (int f = 1; f < t.faceCount; ++f)
+        {
+            const AxisRef face = t.faces[f];
+            if (face.kind != reference.kind || face.shape != reference.shape || face.index != reference.index)
+            {
+                continue;
+            }
+            std::copy_backward(t.faces, t.faces + f, t.faces + f + 1);
+            t.faces[0] = face;
+            if (Dot(normal, t.direction) < 0.0)
+            {
+                t.direction = -t.direction;
+                const double minA = t.minA;
+                const double minB = t.minB;
+                t.minA = -t.maxA;
+                t.maxA = -minA;
+                t.minB = -t.maxB;
+                t.maxB = -minB;
+                t.pushSign = -t.pushSign;
+            }
+        }
+    }
+}
+
 } // namespace
 
 PairStudy StudyPair(const Scene& scene, int a, int b, ViewQuery query, bool singlePrecision, StepView steps)
@@ -323,6 +361,10 @@ PairStudy StudyPair(const Scene& scene, int a, int b, ViewQuery query, bool sing
             study.sweep = false;
             study.startsOverlapping = true;
         }
+    }
+    if (study.Textbook() && !study.sweep)
+    {
+        NameByReferenceFace(scene, study);
     }
     return study;
 }

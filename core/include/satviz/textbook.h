@@ -22,7 +22,9 @@ template <typename S>
 struct TextbookAxisT
 {
     /// Where the axis comes from: the face normals (or the vertex axis, or the line of centres) that lie on it.
-    /// faces[0] gave the axis its direction; the others are parallel or anti-parallel to it and were merged.
+    /// faces[0] names the axis and gives it its direction: in a trace, A's face turned towards B, else B's face
+    /// turned towards A (the face a reader looks at), else the first listed. The others are parallel or
+    /// anti-parallel to it and were merged.
     AxisRef faces[kMaxFacesPerAxis]{};
     int faceCount = 0;    ///< number of entries in faces
     Vec2T<S> direction{}; ///< unit axis, world space: the outward normal of faces[0] (or vertex to centre)

@@ -69,7 +69,7 @@ enum class Pitfall
 {
     None,               ///< no mistake: the right algorithm only
     UnnormalisedAxes,   ///< overlaps measured on edge normals of different lengths, compared as if unit
-    UncheckedDirection, ///< the push taken along the axis as it points, without choosing the shorter way
+    UncheckedDirection, ///< the push taken along a face normal as it points, without checking it points from A to B
     OneShapesAxes,      ///< only A's face normals tested
     SampledMotion,      ///< a moving pair tested at the start and the end of the step only (tunnelling)
     FloatWorld,         ///< float arithmetic on world coordinates, which far from the origin lose the overlap
