@@ -373,7 +373,8 @@ std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, in
                 (t.rate > 0.0 ? "along" : "against") + " the axis, so they overlap ";
         if (t.entry < 0.0 && t.exit > 0.0)
         {
-            text += "from the start until " + Time(t.exit) + ".";
+            // The time bar marks that entry off its left end, "(before)": the sentence gives the same time.
+            text += "from before the start (" + Time(t.entry) + ") until " + Time(t.exit) + ".";
         }
         else
         {

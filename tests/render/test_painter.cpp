@@ -1212,6 +1212,41 @@ TEST_CASE("A hit's verdict marks the latest entry and the earliest exit of all t
     CHECK(exitsInStep >= 10);
 }
 
+TEST_CASE("A textbook sweep axis entered before the step says that entry, where the time bar marks it", "[painter]")
+{
+    int checked = 0;
+    for (const std::string& file : TutorialScenes())
+    {
+        const Scene scene = Load(file);
+        FigureSetup setup = SetUpView(scene, StepView::Textbook);
+        if (!setup.study.sweep)
+        {
+            continue;
+        }
+        for (int step = 0; step < setup.study.AxisCount(); ++step)
+        {
+            const TextbookSweepAxis& t = setup.study.textbookSweep.axes[static_cast<size_t>(step)];
+            if (!(t.entry < 0.0 && std::isfinite(t.entry) && t.exit > 0.0 && !t.never))
+            {
+                continue;
+            }
+            const RecordingCanvas canvas = Paint(scene, setup, step, kLayerSwept);
+            bool marked = false;
+            for (const DrawCommand* c : canvas.InGroup("timebar"))
+            {
+                marked = marked || (c->kind == DrawCommand::Kind::Text &&
+                                    c->text == "entry " + FormatNumber(t.entry) + " (before)");
+            }
+            INFO(file << " step " << step << " entry " << t.entry);
+            CHECK(marked);
+            CHECK(DescribeStep(scene, setup.study, step).find("before the start (t = " + FormatNumber(t.entry) + ")") !=
+                  std::string::npos);
+            ++checked;
+        }
+    }
+    CHECK(checked >= 3);
+}
+
 TEST_CASE("The Voronoi layer names the region of the box that holds the ball's centre: its nearest feature",
           "[painter]")
 {
