@@ -16,6 +16,7 @@
 #include "support/reference.h"
 #include "support/reference_ray.h"
 #include "textbook_sat.h"
+#include "box2d_v3.h"
 #include "world_bench.h"
 
 // White-box: the benchmark instantiates the algorithm with some of its choices turned off (the variants).
@@ -1575,10 +1576,11 @@ void PrintMachine(int argc, char** argv)
     std::printf("peers: no Box2D");
 #endif
 #ifdef SATVIZ_HAVE_CHIPMUNK
-    std::printf(", Chipmunk %s\n", cpVersionString);
+    std::printf(", Chipmunk %s", cpVersionString);
 #else
-    std::printf(", no Chipmunk\n");
+    std::printf(", no Chipmunk");
 #endif
+    std::printf(bench::HaveBox2DV3() ? ", Box2D v3 %s\n" : ", no Box2D v3%s\n", bench::Box2DV3Version().c_str());
     std::printf("command:");
     for (int i = 0; i < argc; ++i)
     {
@@ -1806,6 +1808,7 @@ std::string PeersHelp()
         "    b2PolygonShape::RayCast, b2TimeOfImpact, b2TimeOfImpact + b2CollidePolygons at t\n"
         "  Chipmunk (libchipmunk-dev): cpShapesCollide (as a yes/no and with its contacts)\n"
         "  the textbook SAT loop (tests/bench/textbook_sat.h, up to 1024 vertices): Overlap, MTV, TOI\n"
+        "  --world: Box2D's b2World (libbox2d-dev), and Box2D v3 when built with -DSATVIZ_BOX2D_V3_ROOT=PREFIX\n"
         "  satviz itself with some of its choices turned off (early exit, parallel skip, pruning, walk)\n"
         "Accuracy: against a __float128 reference (tests/support/reference.h).\n"
         "This build: ";
@@ -1819,6 +1822,7 @@ std::string PeersHelp()
 #else
     text += ", no Chipmunk";
 #endif
+    text += bench::HaveBox2DV3() ? ", Box2D v3 " + bench::Box2DV3Version() : std::string(", no Box2D v3");
     return text + ".";
 }
 

@@ -164,8 +164,18 @@ TEST_CASE("satviz-bench --world --quick says its figures are not measurements, a
         ++rows;
     }
     // Two scenes of two sizes, each in satviz's five configurations (broadphase off included at these sizes) and,
-    // when the build has it, Box2D.
-    CHECK((rows == 20 || rows == 24));
+    // when the build has them, Box2D (one row) and Box2D v3 (two: 1 and 2 workers).
+    const bool box2d = run.out.find("peers: Box2D ") != std::string::npos;
+    const bool v3 = run.out.find(", Box2D v3 ") != std::string::npos;
+    CHECK(rows == 4 * (5 + (box2d ? 1 : 0) + (v3 ? 2 : 0)));
+    if (v3)
+    {
+        CHECK(run.out.find("beside Box2D v3") != std::string::npos);
+    }
+    else
+    {
+        CHECK(run.out.find("built without Box2D v3") != std::string::npos);
+    }
 }
 
 TEST_CASE("satviz-bench --help names every peer it compares with", "[bench-tool]")
@@ -174,7 +184,8 @@ TEST_CASE("satviz-bench --help names every peer it compares with", "[bench-tool]
     CHECK(run.exitCode == 0);
     for (const char* peer :
          {"Box2D", "b2TestOverlap", "b2CollidePolygons", "b2PolygonShape::RayCast", "b2TimeOfImpact",
-          "b2TimeOfImpact + b2CollidePolygons at t", "Chipmunk", "cpShapesCollide", "textbook SAT loop", "__float128"})
+          "b2TimeOfImpact + b2CollidePolygons at t", "Chipmunk", "cpShapesCollide", "textbook SAT loop", "__float128",
+          "Box2D v3", "SATVIZ_BOX2D_V3_ROOT"})
     {
         INFO(peer);
         CHECK(run.out.find(peer) != std::string::npos);

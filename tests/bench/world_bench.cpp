@@ -38,6 +38,8 @@
 
 #include "world_bench.h"
 
+#include "box2d_v3.h"
+
 #include "support/random_shapes.h"
 
 #include <satviz/collide.h>
@@ -419,6 +421,57 @@ TimedRun TimeRun(const Scene& scene, int config, int steps)
     return run;
 }
 
+// Box2D v3's bodies for a scene.
+std::vector<V3Body> ToV3Bodies(const Scene& scene)
+{
+    std::vector<V3Body> bodies;
+    for (const SceneBody& body : scene.bodies)
+    {
+        V3Body b;
+        b.shape = body.shape;
+        b.dynamic = body.dynamic;
+        b.position = body.position;
+        b.angle = body.angle;
+        b.velocity = body.velocity;
+        b.angularVelocity = body.angularVelocity;
+        bodies.push_back(b);
+    }
+    return bodies;
+}
+
+V3Settings V3SettingsOf(int workers)
+{
+    V3Settings settings;
+    settings.density = kDensity;
+    settings.friction = kFriction;
+    settings.restitution = kRestitution;
+    settings.restitutionThreshold = WorldSettings{}.restitutionThreshold;
+    settings.gravity = kGravity;
+    settings.dt = kDt;
+    settings.workers = workers;
+    return settings;
+}
+
+// A run of Box2D v3 with `workers` threads of its own scheduler: ms is the calling thread's processor time (with
+// more than one worker, the others' time is not in it: compare by the wall clock then).
+TimedRun TimeBox2DV3(const Scene& scene, int workers, int steps)
+{
+    TimedRun run;
+    run.ms.resize(static_cast<size_t>(steps));
+    run.wallMs.resize(static_cast<size_t>(steps));
+    Box2DV3World world(ToV3Bodies(scene), V3SettingsOf(workers));
+    for (int i = 0; i < steps; ++i)
+    {
+        const Clock::time_point start = Clock::now();
+        const double cpu = ThreadMs();
+        world.Step();
+        run.ms[static_cast<size_t>(i)] = ThreadMs() - cpu;
+        run.wallMs[static_cast<size_t>(i)] = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    }
+    run.awakeEnd = world.AwakeBodies();
+    return run;
+}
+
 // What one step's end looked like.
 struct StepQuality
 {
@@ -676,6 +729,37 @@ Quality MeasureBox2D(const Scene& scene, int steps)
 }
 #endif
 
+// Box2D v3's quality, measured as the others' by the referee (its own contacts are not read: the penetration
+// figures compared with it are the referee's).
+Quality MeasureBox2DV3(const Scene& scene, int steps)
+{
+    Box2DV3World world(ToV3Bodies(scene), V3SettingsOf(1));
+    std::vector<Shape> shapes;
+    std::vector<bool> dynamic;
+    for (const SceneBody& body : scene.bodies)
+    {
+        shapes.push_back(body.shape);
+        dynamic.push_back(body.dynamic);
+    }
+    std::vector<Transform> xfs;
+    std::vector<StepQuality> q(static_cast<size_t>(steps) + 1);
+    std::vector<double> kinetic, energy;
+    const auto measureEnergy = [&] {
+        const double k = world.KineticEnergy();
+        kinetic.push_back(k);
+        energy.push_back(k + world.PotentialEnergy());
+    };
+    measureEnergy();
+    for (int i = 1; i <= steps; ++i)
+    {
+        world.Step();
+        measureEnergy();
+        world.Transforms(xfs);
+        Referee(shapes, dynamic, xfs, q[static_cast<size_t>(i)]);
+    }
+    return Summarise(q, kinetic, energy, world.TotalMass(), world.AwakeBodies());
+}
+
 double Median(std::vector<double> v)
 {
     if (v.empty())
@@ -702,7 +786,8 @@ struct SceneResult
     std::string scene;
     int bodies = 0;
     ConfigResult configs[kConfigs];
-    Quality quality[2]; // satviz, Box2D
+    Quality quality[3];  // satviz, Box2D 2.4.1, Box2D v3
+    ConfigResult v3[2];  // Box2D v3 with 1 and 2 workers; ratio: satviz's to it (by the wall clock for 2)
 };
 
 bool HaveBox2D()
@@ -725,6 +810,11 @@ SceneResult RunScene(const WorldBenchSettings& s, bool rain, int n)
 #ifdef SATVIZ_HAVE_BOX2D
     result.quality[1] = MeasureBox2D(scene, s.steps);
 #endif
+    if (HaveBox2DV3())
+    {
+        result.quality[2] = MeasureBox2DV3(scene, s.steps);
+        result.v3[0].run = result.v3[1].run = true;
+    }
     std::vector<int> configs;
     for (int c = 0; c < kConfigs; ++c)
     {
@@ -778,6 +868,20 @@ SceneResult RunScene(const WorldBenchSettings& s, bool rain, int n)
                 result.configs[c].tailRatio.push_back(tailMs[c] / tailMs[base]);
                 result.configs[c].wallRatio.push_back(wall[c] / wall[base]);
             }
+        }
+        // Box2D v3 with one worker and with two, against this round's satviz.
+        for (int w = 0; w < 2 && HaveBox2DV3(); ++w)
+        {
+            const TimedRun run = TimeBox2DV3(scene, w + 1, s.steps);
+            ConfigResult& r = result.v3[w];
+            r.ms.push_back(MeanMs(run.ms, 0));
+            r.wallMs.push_back(MeanMs(run.wallMs, 0));
+            r.tailMs.push_back(MeanMs(run.ms, tail));
+            r.awakeEnd = run.awakeEnd;
+            r.ratio.push_back(w == 0 ? whole[kSatviz] / r.ms.back() : wall[kSatviz] / r.wallMs.back());
+            r.wallRatio.push_back(wall[kSatviz] / r.wallMs.back());
+            std::fprintf(stderr, "  Box2D v3, %d worker%s: %.3f ms per step (wall %.3f)\n", w + 1, w == 0 ? "" : "s",
+                         r.ms.back(), r.wallMs.back());
         }
         // The round's figures as they come, for a long run.
         std::fprintf(stderr, "  ms per step:");
@@ -834,6 +938,23 @@ void PrintTables(const WorldBenchSettings& s, const std::vector<SceneResult>& re
                     (std::to_string(a.awakeEnd) + (b.run ? " / " + std::to_string(b.awakeEnd) : "")).c_str());
     }
 
+    if (HaveBox2DV3())
+    {
+        std::printf("\nbeside Box2D v3 %s (built outside this repository; b2World_Step(dt, %d sub-steps), its own scheduler;\n"
+                    "ratio 1 worker: satviz's processor time over v3's, same round; 2 workers: satviz's wall clock over\n"
+                    "v3's, same round; satviz steps on one thread)\n",
+                    Box2DV3Version().c_str(), V3Settings{}.subSteps);
+        std::printf("%-6s %6s %10s %12s %8s %14s %8s %14s\n", "scene", "bodies", "satviz", "v3 1 worker", "ratio",
+                    "v3 2 (wall)", "ratio", "awake at end");
+        for (const SceneResult& r : results)
+        {
+            const ConfigResult& a = r.configs[kSatviz];
+            std::printf("%-6s %6d %10.3f %12.3f %8.2f %14.3f %8.2f %14s\n", r.scene.c_str(), r.bodies, Median(a.ms),
+                        Median(r.v3[0].ms), Median(r.v3[0].ratio), Median(r.v3[1].wallMs), Median(r.v3[1].ratio),
+                        (std::to_string(a.awakeEnd) + " / " + std::to_string(r.v3[0].awakeEnd)).c_str());
+        }
+    }
+
     std::printf("\nwhat each saving saves: satviz with one switched off (ratio to satviz with all on, same round; "
                 "per step:\npairs given to the narrowphase, pairs swept, time-ordered hits, broadphase box "
                 "comparisons;\nbroadphase off and every moving body swept: first round only, up to %d bodies)\n",
@@ -870,6 +991,7 @@ void PrintTables(const WorldBenchSettings& s, const std::vector<SceneResult>& re
                 "overlap: depth of the actual overlap of two shapes, every overlapping pair, by satviz Collide in\n"
                 "  double on the engine's positions (Box2D's polygons without their 0.01 skin); max, mean over the\n"
                 "  overlapping pairs of every step, the same over the tail, overlapping pairs per step;\n"
+                "  (box2d3: Box2D v3, 1 worker; its own contacts are not read, compare the overlap columns);\n"
                 "own: penetration of the engine's own contacts at the end of the step, against the surfaces it\n"
                 "  collides (satviz: the shapes as drawn; Box2D: b2WorldManifold separations, to its polygons with\n"
                 "  their skin); max and mean over the touching contacts of every step (0 for one not overlapping;\n"
@@ -884,7 +1006,7 @@ void PrintTables(const WorldBenchSettings& s, const std::vector<SceneResult>& re
                 "own tmean", "gap", "E rise", "height", "tail", "KE max", "KE rise", "awake");
     for (const SceneResult& r : results)
     {
-        for (int e = 0; e < 2; ++e)
+        for (int e = 0; e < 3; ++e)
         {
             const Quality& q = r.quality[e];
             if (!q.measured)
@@ -894,7 +1016,7 @@ void PrintTables(const WorldBenchSettings& s, const std::vector<SceneResult>& re
             std::printf("%-6s %6d %-7s %9.2e %9.2e %9.2e %9.2e %8.0f %9.2e %9.2e %9.2e %9.2e %9.2e %10.3g %9.2e %9.3g "
                         "%9.3g %9.3g "
                         "%7d\n",
-                        r.scene.c_str(), r.bodies, e == 0 ? "satviz" : "box2d", q.maxDepth, q.meanDepth, q.tailMaxDepth,
+                        r.scene.c_str(), r.bodies, e == 0 ? "satviz" : e == 1 ? "box2d" : "box2d3", q.maxDepth, q.meanDepth, q.tailMaxDepth,
                         q.tailMeanDepth, q.pairsPerStep, q.ownMax, q.ownMean, q.ownTailMax, q.ownTailMean, q.gapMean,
                         q.energyRise, q.energyRise / (q.totalMass * kGravity), q.energyRiseTail, q.kineticTailMax,
                         q.kineticTailRise, q.awakeEnd);
@@ -910,15 +1032,36 @@ void PrintTargets(const std::vector<SceneResult>& results, bool quick)
     {
         std::printf("  --quick: tiny scenes, few steps, one round: these figures are not measurements\n");
     }
+    const auto target = [](const std::string& label, double value, double limit) {
+        std::printf("  %-58s %10.3g  (target <= %g)  %s\n", label.c_str(), value, limit,
+                    value <= limit ? "met" : "MISSED");
+    };
+    if (HaveBox2DV3())
+    {
+        for (const SceneResult& r : results)
+        {
+            const std::string name = r.scene + ", " + std::to_string(r.bodies) + " bodies: ";
+            if (r.bodies >= 1000 || quick)
+            {
+                target(name + "satviz / v3 1 worker, ms per step", Median(r.v3[0].ratio), 1.0);
+                target(name + "satviz / v3 2 workers, wall ms per step", Median(r.v3[1].ratio), 1.0);
+            }
+            const Quality& a = r.quality[0];
+            const Quality& c = r.quality[2];
+            target(name + "overlap max, satviz - v3", a.maxDepth - c.maxDepth, 0.0);
+            target(name + "overlap mean, satviz - v3", a.meanDepth - c.meanDepth, 0.0);
+            target(name + "E rise, satviz - v3", a.energyRise - c.energyRise, 0.0);
+        }
+    }
+    else
+    {
+        std::printf("  (built without Box2D v3: configure with -DSATVIZ_BOX2D_V3_ROOT=PREFIX to compare with it)\n");
+    }
     if (!HaveBox2D())
     {
         std::printf("  (built without Box2D: no comparison)\n");
         return;
     }
-    const auto target = [](const std::string& label, double value, double limit) {
-        std::printf("  %-58s %10.3g  (target <= %g)  %s\n", label.c_str(), value, limit,
-                    value <= limit ? "met" : "MISSED");
-    };
     for (const SceneResult& r : results)
     {
         const std::string name = r.scene + ", " + std::to_string(r.bodies) + " bodies: ";
@@ -995,7 +1138,33 @@ bool WriteCsv(const WorldBenchSettings& s, const std::vector<SceneResult>& resul
             }
             else
             {
-                csv << ",,,,,,,,,,,,,,,,,";
+                csv << ",,,,,,,,,,,,,,,,,,"; // the 18 quality columns, empty
+            }
+            csv << '\n';
+        }
+        for (int w = 0; w < 2; ++w)
+        {
+            const ConfigResult& x = r.v3[w];
+            if (!x.run)
+            {
+                continue;
+            }
+            // satviz's ratio to it: by processor time for 1 worker, by the wall clock for 2.
+            csv << r.scene << ',' << r.bodies << ',' << (w == 0 ? "box2d v3; 1 worker" : "box2d v3; 2 workers") << ','
+                << s.steps << ',' << x.ms.size() << ',' << Median(x.ms) << ',' << Median(x.tailMs) << ','
+                << 1.0 / Median(x.ratio) << ",," << "satviz" << ',' << Median(x.wallMs) << ',' << 1.0 / Median(x.wallRatio)
+                << ",,,,," << x.awakeEnd;
+            const Quality& q = r.quality[2];
+            if (w == 0 && q.measured)
+            {
+                csv << ',' << q.maxDepth << ',' << q.meanDepth << ',' << q.tailMaxDepth << ',' << q.tailMeanDepth
+                    << ',' << q.pairsPerStep << ",,,,,," << q.energyRise << ','
+                    << q.energyRise / (q.totalMass * kGravity) << ',' << q.energyRiseTail << ',' << q.kineticTailMax
+                    << ',' << q.kineticTailRise << ',' << q.energyStart << ',' << q.energyEnd << ',' << q.totalMass;
+            }
+            else
+            {
+                csv << ",,,,,,,,,,,,,,,,,,"; // the 18 quality columns, empty
             }
             csv << '\n';
         }
