@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 
 namespace satviz::detail
 {
@@ -200,7 +199,6 @@ void ApplyRestitution(std::vector<SolverContact>& contacts, std::vector<SolverBo
         scale[r] = c0 >= 0.0 || disc < 0.0 ? 0.0 : std::min(1.0, (-g[r] + std::sqrt(disc)) / (2.0 * h[r]));
     }
     bool applied = false;
-    std::vector<uint8_t> bounced(n, 0); // per group root: a restitution impulse acted in it
     for (SolverContact& c : contacts)
     {
         const int r = Root(parent, moves(c.a) ? c.a : c.b);
@@ -212,9 +210,7 @@ void ApplyRestitution(std::vector<SolverContact>& contacts, std::vector<SolverBo
                 p.restitutionImpulse *= scale[r];
                 ApplyImpulse(bodies[c.a], bodies[c.b], p.rA, p.rB, p.restitutionImpulse * c.normal);
                 p.normalImpulse += p.restitutionImpulse;
-                const bool acted = p.restitutionImpulse > 0.0;
-                applied = applied || acted;
-                bounced[r] |= acted ? 1 : 0;
+                applied = applied || p.restitutionImpulse > 0.0;
             }
         }
     }
@@ -223,21 +219,11 @@ void ApplyRestitution(std::vector<SolverContact>& contacts, std::vector<SolverBo
         return;
     }
     // A bounce can drive a body into another of its contacts: push-only passes stop such approaches, inelastically,
-    // and never take back any of the impulses above. Only the groups a bounce acted in changed: the others are
-    // left as the velocity passes left them.
-    std::vector<SolverContact*> touched;
-    for (SolverContact& c : contacts)
-    {
-        if (bounced[Root(parent, moves(c.a) ? c.a : c.b)])
-        {
-            touched.push_back(&c);
-        }
-    }
+    // and never take back any of the impulses above.
     for (int pass = 0; pass < passes; ++pass)
     {
-        for (SolverContact* contact : touched)
+        for (SolverContact& c : contacts)
         {
-            SolverContact& c = *contact;
             SolverBody& a = bodies[c.a];
             SolverBody& b = bodies[c.b];
             for (int i = 0; i < c.count; ++i)
