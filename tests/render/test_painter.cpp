@@ -1693,7 +1693,7 @@ TEST_CASE("Pitfalls on random pairs: scaling keeps every verdict, fewer axes nev
     }
 }
 
-TEST_CASE("A body wholly outside the picture is not drawn; one inside it is", "[painter]")
+TEST_CASE("A body wholly outside the picture is not drawn, and one inside it is", "[painter]")
 {
     Scene scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
     REQUIRE(scene.bodies.size() == 2);
