@@ -2,6 +2,8 @@
 // The textbook test (intervals on each distinct axis) against the fast queries and the quadruple-precision
 // reference: the same verdicts, depths and times, and a trace that holds what a learner checks by hand.
 
+#include "support/builders.h"
+#include "support/lattice.h"
 #include "support/random_shapes.h"
 #include "support/reference.h"
 #include "support/same_bits.h"
@@ -316,4 +318,85 @@ TEST_CASE("Textbook sweeps of circle pairs test the fixed axes, then cast agains
         }
     }
     CHECK(proved > 100);
+}
+
+TEST_CASE("Lattice boxes that touch exactly overlap with depth 0 in the textbook test, a fraction apart they do not",
+          "[textbook][touching]")
+{
+    // Shapes are closed sets: touching shapes overlap, with depth 0. Uncut lattice boxes, one set against a face of
+    // the other (support/lattice.h), have axis-aligned faces only, so every projection is exact and the gap on the
+    // deciding axis is exactly 0; the exact reference says whether the pair as built touches.
+    Rng rng(20261127);
+    int touching = 0;
+    for (int i = 0; i < 3000; ++i)
+    {
+        const Contact contact = static_cast<Contact>(i % 3);
+        const LatticePair pair = TouchingLatticePair(rng, contact, true);
+        const Shape a = MakeShape(pair.a);
+        const Shape b = MakeShape(pair.b);
+        const Reference ref = ReferenceCollide(a, pair.xfA, b, pair.xfB);
+        INFO("pair " << i << ", contact " << static_cast<int>(contact) << ", face " << pair.face);
+        REQUIRE(ref.overlap == (contact != Contact::Apart));
+        // The offset out or in is 1/8 of a lattice step along an axis-aligned normal.
+        const double offset = Length(pair.offset);
+        for (int order = 0; order < 2; ++order)
+        {
+            const TextbookResult t = order == 0 ? TextbookCollide(a, pair.xfA, b, pair.xfB)
+                                                : TextbookCollide(b, pair.xfB, a, pair.xfA);
+            REQUIRE(t.overlap == ref.overlap);
+            if (contact == Contact::Touching)
+            {
+                REQUIRE(t.depth == 0.0);
+                REQUIRE(t.axesTested == t.axisCount);
+            }
+            else if (contact == Contact::Apart)
+            {
+                REQUIRE(t.gap == offset);
+            }
+            else
+            {
+                REQUIRE(t.depth <= offset);
+            }
+        }
+        touching += contact == Contact::Touching ? 1 : 0;
+    }
+    REQUIRE(touching == 1000);
+}
+
+TEST_CASE("Circles touching each other or a box's face overlap with depth 0 in the textbook test",
+          "[textbook][touching]")
+{
+    // Radii and centres in whole units: the centres lie exactly the sum of the radii apart, on an axis, so the
+    // intervals meet end to end. Moved apart by 1/8 they are separated by exactly 1/8; moved in, they overlap by it.
+    for (int radiusA = 1; radiusA <= 4; ++radiusA)
+    {
+        for (int radiusB = 1; radiusB <= 4; ++radiusB)
+        {
+            for (int axis = 0; axis < 4; ++axis)
+            {
+                const Vec2 along = axis == 0 ? Vec2{1, 0} : axis == 1 ? Vec2{0, 1} : axis == 2 ? Vec2{-1, 0} : Vec2{0, -1};
+                for (int shift = -1; shift <= 1; ++shift)
+                {
+                    const double distance = radiusA + radiusB + shift / 8.0;
+                    INFO("radii " << radiusA << " and " << radiusB << ", axis " << axis << ", shift " << shift);
+                    // Two discs.
+                    const Shape discA = DiscShape(radiusA);
+                    const Shape discB = DiscShape(radiusB);
+                    const Transform xfA = At(3, -2);
+                    const Transform xfB = At(3 + distance * along.x, -2 + distance * along.y);
+                    TextbookResult t = TextbookCollide(discA, xfA, discB, xfB);
+                    REQUIRE(t.overlap == (shift <= 0));
+                    REQUIRE((t.overlap ? -t.depth : t.gap) == shift / 8.0);
+                    // A disc against the face of a box of half-width radiusA: the face at radiusA from its centre.
+                    const Shape box = BoxShape(radiusA, radiusA);
+                    t = TextbookCollide(box, xfA, discB, xfB);
+                    REQUIRE(t.overlap == (shift <= 0));
+                    REQUIRE((t.overlap ? -t.depth : t.gap) == shift / 8.0);
+                    t = TextbookCollide(discB, xfB, box, xfA);
+                    REQUIRE(t.overlap == (shift <= 0));
+                    REQUIRE((t.overlap ? -t.depth : t.gap) == shift / 8.0);
+                }
+            }
+        }
+    }
 }

@@ -291,3 +291,33 @@ TEST_CASE("An elastic ball bouncing several times a step follows the reflected p
     INFO("worst position error " << worst << "; " << withinReach << " steps started within reach of a wall");
     CHECK(withinReach > 1000);
 }
+
+TEST_CASE("A box falling at up to its speculative reach per step lands on the ground, neither sinking nor hovering",
+          "[world][speculative]")
+{
+    // At 6 to 60 units a second a unit box moves 0.1 to 1 a step, within its reach (twice its outer radius): no sweep,
+    // the speculative contact alone must stop it at the surface. It must be found before the boxes overlap, and the
+    // solver must let the box close the gap it has: resting, its bottom is on y = 0 within the slop.
+    for (double speed : {6.0, 20.0, 40.0, 60.0})
+    {
+        for (int phase = 0; phase < 4; ++phase)
+        {
+            World world = WorldWithGravity(kGravity);
+            AddGround(world);
+            const double height = 3.0 + 0.27 * phase;
+            const int box = AddDynamic(world, BoxShape(0.5, 0.5), {0.0, 0.5 + height}, 0.0, {0.0, -speed});
+            double deepest = 0.0;
+            for (int i = 0; i < 90; ++i)
+            {
+                Step(world, kDt);
+                deepest = std::max(deepest, 0.5 - world.bodies[box].position.y);
+            }
+            const double bottom = world.bodies[box].position.y - 0.5;
+            INFO("falling at " << speed << " from " << height << ": deepest " << deepest << ", resting bottom at "
+                               << bottom);
+            CHECK(deepest <= 2.0 * world.settings.linearSlop);
+            CHECK(std::abs(bottom) <= world.settings.linearSlop);
+            CHECK(std::abs(world.bodies[box].velocity.y) <= 0.05);
+        }
+    }
+}

@@ -842,3 +842,91 @@ TEST_CASE("The solver's record of a bounce: the restitution impulse is its facto
             CHECK(separating == Approx(-e * trace.approachSpeed[0]).epsilon(1e-9));
         }
 }
+
+TEST_CASE("A box thrown along the ground slides v^2 / (2 mu g) with mu the mean of the two frictions, then stops",
+          "[world][friction][material]")
+{
+    // The box's friction 0.1 and the ground's 0.4 make mu = sqrt(0.1 * 0.4) = 0.2 (CombineMaterials); static friction
+    // sqrt(0.4 * 0.9) = 0.6 holds it once stopped but must not brake the slide. Work against friction takes the
+    // kinetic energy: mu m g d = m v^2 / 2.
+    const double mu = 0.2;
+    for (double speed : {1.0, 2.0, 3.0})
+    {
+        World world = WorldWithGravity(kGravity);
+        AddGround(world, 40.0, MakeMaterial(0.0, 0.4, 0.9));
+        const int box = AddDynamic(world, BoxShape(0.5, 0.25), {0.0, 0.25}, 0.0, {speed, 0.0}, 0.0,
+                                   MakeMaterial(0.0, 0.1, 0.4));
+        // Until it stops (t = v / (mu g) < 1.6 s), then a while longer: it must stay where it stopped.
+        StepN(world, 150);
+        const double expected = speed * speed / (2.0 * mu * kGravity);
+        const double slid = world.bodies[box].position.x;
+        INFO("thrown at " << speed << ": slid " << slid << ", expected " << expected);
+        // Friction acts in whole steps: the stop may come up to a step's travel early or late.
+        CHECK(std::abs(slid - expected) <= 0.02 * expected + speed * kDt);
+        CHECK(std::abs(world.bodies[box].velocity.x) <= 1e-3);
+        CHECK(std::abs(world.bodies[box].angle) <= 0.01);
+    }
+}
+
+TEST_CASE("A disc rolls down a 20 degree slope with a = 2/3 g sin 20, as a uniform disc of inertia m r^2 / 2 does",
+          "[world][friction][slope][mass]")
+{
+    // Rolling without slipping: m a = m g sin - f and I alpha = f r with alpha = a / r give a = g sin / (1 + I / (m
+    // r^2)) = 2/3 g sin for a uniform disc; static friction 1 > tan 20 / 3 keeps it from slipping. The oracle is the
+    // motion alone: the inertia the world computed is not read.
+    for (double radius : {0.25, 0.5, 1.0})
+    {
+        World world = WorldWithGravity(kGravity);
+        const Material material = MakeMaterial(0.0, 0.8, 1.0);
+        AddStatic(world, BoxShape(40.0, 1.0), {0.0, 0.0}, kSlope, material);
+        const Vec2 normal{-std::sin(kSlope), std::cos(kSlope)};
+        const int disc = AddDynamic(world, DiscShape(radius), (1.0 + radius) * normal, 0.0, {}, 0.0, material);
+        const Vec2 start = world.bodies[disc].position;
+        StepN(world, 90);
+        const double t = world.time;
+        const double expected = 0.5 * (2.0 / 3.0) * kGravity * std::sin(kSlope) * t * t;
+        const Vec2 uphill{std::cos(kSlope), std::sin(kSlope)};
+        const double travelled = -Dot(world.bodies[disc].position - start, uphill);
+        // Rolling: the angle turned is the distance over the radius (counter-clockwise, rolling to the left).
+        const double turned = world.bodies[disc].angle;
+        INFO("radius " << radius << ", after t = " << t << ": travelled " << travelled << ", expected " << expected
+                       << "; turned " << turned << " rad");
+        CHECK(std::abs(travelled - expected) <= 0.02 * expected);
+        CHECK(std::abs(turned - travelled / radius) <= 0.02 * travelled / radius);
+    }
+}
+
+TEST_CASE("A ball dropped on a dead floor bounces with its own restitution, the larger of the two",
+          "[world][restitution][material]")
+{
+    // Restitution 0.8 against 0: the contact takes 0.8 (CombineMaterials), so the ball leaves the floor at 0.8 of
+    // the speed it hit with. Measured the other way round too (a dead ball on a lively floor).
+    for (int lively = 0; lively < 2; ++lively)
+    {
+        World world = WorldWithGravity(kGravity);
+        AddGround(world, 20.0, MakeMaterial(lively == 0 ? 0.0 : 0.8, 0.0, 0.0));
+        const int ball = AddDynamic(world, DiscShape(0.25), {0.0, 2.25}, 0.0, {}, 0.0,
+                                    MakeMaterial(lively == 0 ? 0.8 : 0.0, 0.0, 0.0));
+        // The speeds at the floor (the centre at height 0.25) before and after the bounce, each from three positions
+        // of free flight (SpeedAtHeight): the bounce falls inside a step, and gravity acts on either side of it.
+        std::vector<double> y{world.bodies[ball].position.y};
+        for (int i = 0; i < 90; ++i)
+        {
+            Step(world, kDt);
+            y.push_back(world.bodies[ball].position.y);
+        }
+        size_t bounce = 1;
+        while (bounce + 1 < y.size() && y[bounce + 1] <= y[bounce])
+        {
+            ++bounce;
+        }
+        INFO((lively == 0 ? "lively ball" : "lively floor") << ": lowest at step " << bounce);
+        REQUIRE(bounce + 4 < y.size());
+        REQUIRE(FreeFlight(y, bounce - 2, kDt));
+        REQUIRE(FreeFlight(y, bounce + 3, kDt));
+        const double in = SpeedAtHeight(y, bounce - 2, 0.25, kDt);
+        const double out = SpeedAtHeight(y, bounce + 3, 0.25, kDt);
+        INFO("hit the floor at " << in << ", left it at " << out);
+        CHECK(std::abs(out / in - 0.8) <= 0.01);
+    }
+}

@@ -297,3 +297,36 @@ TEST_CASE("The step counts add up with each saving on and off", "[world][counts]
     CHECK(runs[1].world.counts.tested >= runs[0].world.counts.tested + 2);
     CHECK(runs[3].world.counts.tested == runs[2].world.counts.tested + staticPairs);
 }
+
+TEST_CASE("A box gliding without friction on a resting box keeps their island awake and its speed", "[world][sleep]")
+{
+    // The lower box rests on the ground long enough to sleep, but the upper one, touching it, glides at 0.5: an island
+    // sleeps only when every body in it has rested for timeToSleep. Without friction nothing slows the glide.
+    World world = WorldWithGravity(kGravity);
+    const Material ice = MakeMaterial(0.0, 0.0, 0.0);
+    AddGround(world, 20.0, ice);
+    const int base = AddDynamic(world, BoxShape(8.0, 0.5), {0.0, 0.5}, 0.0, {}, 0.0, ice);
+    const int glider = AddDynamic(world, BoxShape(0.5, 0.5), {-4.0, 1.5}, 0.0, {0.5, 0.0}, 0.0, ice);
+    StepN(world, 180);
+    INFO("after 3 s: glider at x = " << world.bodies[glider].position.x << ", speed "
+                                      << world.bodies[glider].velocity.x);
+    CHECK(world.bodies[glider].awake);
+    CHECK(world.bodies[base].awake);
+    CHECK(std::abs(world.bodies[glider].velocity.x - 0.5) <= 1e-6);
+    CHECK(std::abs(world.bodies[glider].position.x - (-4.0 + 0.5 * world.time)) <= 1e-3);
+}
+
+TEST_CASE("A disc spinning in place on frictionless ground keeps spinning and never sleeps", "[world][sleep]")
+{
+    // At rest but turning at 2 rad/s: only a body slow in both its motions rests. Without friction no torque acts,
+    // so the spin stays what it was.
+    World world = WorldWithGravity(kGravity);
+    const Material ice = MakeMaterial(0.0, 0.0, 0.0);
+    AddGround(world, 20.0, ice);
+    const int disc = AddDynamic(world, DiscShape(0.5), {0.0, 0.5}, 0.0, {}, 2.0, ice);
+    StepN(world, 120);
+    INFO("after 2 s: spin " << world.bodies[disc].angularVelocity << ", angle " << world.bodies[disc].angle);
+    CHECK(world.bodies[disc].awake);
+    CHECK(std::abs(world.bodies[disc].angularVelocity - 2.0) <= 1e-9);
+    CHECK(std::abs(world.bodies[disc].angle - 2.0 * world.time) <= 1e-6);
+}
