@@ -1,0 +1,344 @@
+// SPDX-License-Identifier: MIT
+// The broadphase against independent computations: FindPairs against every pair of boxes compared, with touching,
+// identical and empty boxes, as the boxes move and with pairs skipped; ComputeAabb against the placed shape's
+// extremes; TouchingPairs against Overlap over every pair.
+
+#include "support/builders.h"
+#include "support/random_shapes.h"
+
+#include <satviz/broadphase.h>
+#include <satviz/collide.h>
+#include <satviz/world.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+using namespace satviz;
+using namespace satviz::testing;
+
+namespace
+{
+
+/// Random boxes with corners on a coarse grid, so that many boxes touch exactly; some repeat an earlier box, some
+/// have zero width or height or both (a point).
+std::vector<Aabb> RandomBoxes(Rng& rng, int n, double extent)
+{
+    std::vector<Aabb> boxes;
+    boxes.reserve(static_cast<size_t>(n));
+    const int cells = static_cast<int>(extent * 4.0);
+    for (int i = 0; i < n; ++i)
+    {
+        if (!boxes.empty() && rng.Chance(0.05))
+        {
+            boxes.push_back(boxes[static_cast<size_t>(rng.Int(0, static_cast<int>(boxes.size()) - 1))]);
+            continue;
+        }
+        Aabb box;
+        box.min = {0.25 * rng.Int(-cells, cells), 0.25 * rng.Int(-cells, cells)};
+        Vec2 size{0.25 * rng.Int(0, 8), 0.25 * rng.Int(0, 8)};
+        if (rng.Chance(0.2))
+        {
+            size = {rng.Uniform(0.0, 2.0), rng.Uniform(0.0, 2.0)}; // off the grid
+        }
+        if (rng.Chance(0.05))
+        {
+            size = {0.0, 0.0}; // a point
+        }
+        box.max = box.min + size;
+        boxes.push_back(box);
+    }
+    return boxes;
+}
+
+bool BoxesOverlap(const Aabb& a, const Aabb& b)
+{
+    return !(a.max.x < b.min.x || b.max.x < a.min.x || a.max.y < b.min.y || b.max.y < a.min.y);
+}
+
+/// Every pair compared, the skipped ones dropped.
+std::vector<std::pair<int, int>> AllPairs(const std::vector<Aabb>& boxes, const std::vector<char>* frozen)
+{
+    std::vector<std::pair<int, int>> pairs;
+    const int n = static_cast<int>(boxes.size());
+    for (int i = 0; i < n; ++i)
+    {
+        for (int j = i + 1; j < n; ++j)
+        {
+            if (frozen != nullptr && (*frozen)[static_cast<size_t>(i)] && (*frozen)[static_cast<size_t>(j)])
+            {
+                continue;
+            }
+            if (BoxesOverlap(boxes[static_cast<size_t>(i)], boxes[static_cast<size_t>(j)]))
+            {
+                pairs.emplace_back(i, j);
+            }
+        }
+    }
+    return pairs;
+}
+
+/// Skips the pairs of two frozen boxes (as a world skips two static bodies).
+bool SkipFrozen(const void* context, int i, int j)
+{
+    const auto& frozen = *static_cast<const std::vector<char>*>(context);
+    return frozen[static_cast<size_t>(i)] && frozen[static_cast<size_t>(j)];
+}
+
+/// The order is a permutation of the boxes sorted by their lower bound on x or on y.
+bool SortedOnAnAxis(const std::vector<int>& order, const std::vector<Aabb>& boxes)
+{
+    if (order.size() != boxes.size())
+    {
+        return false;
+    }
+    std::vector<int> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    for (size_t i = 0; i < sorted.size(); ++i)
+    {
+        if (sorted[i] != static_cast<int>(i))
+        {
+            return false;
+        }
+    }
+    bool byX = true, byY = true;
+    for (size_t i = 1; i < order.size(); ++i)
+    {
+        const Aabb& p = boxes[static_cast<size_t>(order[i - 1])];
+        const Aabb& q = boxes[static_cast<size_t>(order[i])];
+        byX = byX && p.min.x <= q.min.x;
+        byY = byY && p.min.y <= q.min.y;
+    }
+    return byX || byY;
+}
+
+} // namespace
+
+TEST_CASE("FindPairs finds the same pairs as comparing every box with every other", "[world][broadphase]")
+{
+    Rng rng(405);
+    std::vector<std::pair<int, int>> pairs, brute;
+    for (int set = 0; set < 3000; ++set)
+    {
+        const int n = set < 10 ? set : (rng.Chance(0.02) ? rng.Int(200, 600) : rng.Int(2, 60));
+        // Tall, wide and square spreads, so that both sweep axes are taken.
+        const std::vector<Aabb> boxes = RandomBoxes(rng, n, rng.Uniform(1.0, 12.0));
+        std::vector<Aabb> stretched = boxes;
+        const int shape = set % 3;
+        for (Aabb& b : stretched)
+        {
+            if (shape == 1)
+            {
+                b.min.x *= 6.0;
+                b.max.x *= 6.0;
+            }
+            else if (shape == 2)
+            {
+                b.min.y *= 6.0;
+                b.max.y *= 6.0;
+            }
+        }
+        const std::vector<std::pair<int, int>> expected = AllPairs(stretched, nullptr);
+        SortAndSweep sweep;
+        FindPairs(sweep, stretched, pairs);
+        FindPairsBruteForce(stretched, brute);
+        INFO("set " << set << ", " << n << " boxes");
+        REQUIRE(pairs == expected);
+        REQUIRE(brute == expected);
+        REQUIRE(SortedOnAnAxis(sweep.order, stretched));
+    }
+}
+
+TEST_CASE("FindPairs with touching, identical and zero-size boxes", "[world][broadphase]")
+{
+    // A row of unit boxes that touch at their sides, each with a copy of itself, and points on their corners.
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 10; ++i)
+    {
+        const Aabb box{{double(i), 0.0}, {double(i + 1), 1.0}};
+        boxes.push_back(box);
+        boxes.push_back(box);
+        boxes.push_back({box.max, box.max});
+    }
+    boxes.push_back({{3.0, 1.0}, {3.0, 1.0}});   // a second point on a corner
+    boxes.push_back({{-5.0, 1.0}, {20.0, 1.0}}); // a segment along the row's top
+    std::vector<std::pair<int, int>> pairs, brute;
+    SortAndSweep sweep;
+    FindPairs(sweep, boxes, pairs);
+    FindPairsBruteForce(boxes, brute);
+    const std::vector<std::pair<int, int>> expected = AllPairs(boxes, nullptr);
+    CHECK(pairs == expected);
+    CHECK(brute == expected);
+    // Box 0 touches its copy, its corner point, box 1 (sides touch) and its copy, and the segment.
+    CHECK(std::count(expected.begin(), expected.end(), std::make_pair(0, 1)) == 1);
+    CHECK(std::count(expected.begin(), expected.end(), std::make_pair(0, 3)) == 1);
+    CHECK(std::count(expected.begin(), expected.end(), std::make_pair(0, 31)) == 1);
+}
+
+TEST_CASE("FindPairs keeps its order between calls as the boxes move", "[world][broadphase]")
+{
+    Rng rng(406);
+    std::vector<std::pair<int, int>> pairs, brute;
+    for (int world = 0; world < 20; ++world)
+    {
+        const int n = rng.Int(50, 300);
+        std::vector<Aabb> boxes = RandomBoxes(rng, n, 10.0);
+        std::vector<Vec2> drift(boxes.size());
+        for (Vec2& d : drift)
+        {
+            d = {rng.Uniform(-0.1, 0.1), rng.Uniform(-0.1, 0.1)};
+        }
+        SortAndSweep sweep;
+        std::vector<char> frozen(boxes.size());
+        for (char& f : frozen)
+        {
+            f = rng.Chance(0.4);
+        }
+        for (int frame = 0; frame < 40; ++frame)
+        {
+            const bool skip = frame % 2 == 1;
+            if (skip)
+            {
+                FindPairs(sweep, boxes, pairs, SkipFrozen, &frozen);
+                FindPairsBruteForce(boxes, brute, SkipFrozen, &frozen);
+            }
+            else
+            {
+                FindPairs(sweep, boxes, pairs);
+                FindPairsBruteForce(boxes, brute);
+            }
+            const std::vector<std::pair<int, int>> expected = AllPairs(boxes, skip ? &frozen : nullptr);
+            INFO("world " << world << ", frame " << frame);
+            REQUIRE(pairs == expected);
+            REQUIRE(brute == expected);
+            REQUIRE(SortedOnAnAxis(sweep.order, boxes));
+            // The unfrozen boxes move a little; now and then one jumps across the world.
+            for (size_t i = 0; i < boxes.size(); ++i)
+            {
+                if (frozen[i])
+                {
+                    continue;
+                }
+                Vec2 d = drift[i];
+                if (rng.Chance(0.01))
+                {
+                    d = {rng.Uniform(-10.0, 10.0), rng.Uniform(-10.0, 10.0)};
+                }
+                boxes[i].min = boxes[i].min + d;
+                boxes[i].max = boxes[i].max + d;
+            }
+        }
+    }
+}
+
+TEST_CASE("FindPairs with a skip callback drops exactly the skipped pairs", "[world][broadphase]")
+{
+    Rng rng(407);
+    std::vector<std::pair<int, int>> pairs, brute;
+    for (int set = 0; set < 1000; ++set)
+    {
+        const std::vector<Aabb> boxes = RandomBoxes(rng, rng.Int(2, 80), 4.0);
+        std::vector<char> frozen(boxes.size());
+        const double p = rng.Uniform(0.0, 1.0);
+        for (char& f : frozen)
+        {
+            f = rng.Chance(p);
+        }
+        SortAndSweep sweep;
+        FindPairs(sweep, boxes, pairs, SkipFrozen, &frozen);
+        FindPairsBruteForce(boxes, brute, SkipFrozen, &frozen);
+        const std::vector<std::pair<int, int>> expected = AllPairs(boxes, &frozen);
+        INFO("set " << set);
+        REQUIRE(pairs == expected);
+        REQUIRE(brute == expected);
+    }
+}
+
+TEST_CASE("ComputeAabb is the tight box of the placed shape", "[world][broadphase]")
+{
+    Rng rng(408);
+    for (int k = 0; k < 2000; ++k)
+    {
+        const Shape shape = RandomShape(rng, 0.3);
+        const Vec2 position{rng.Uniform(-50.0, 50.0), rng.Uniform(-50.0, 50.0)};
+        const Transform xf = MakeTransform(position, rng.Uniform(-kPi, kPi));
+        Aabb expected;
+        if (shape.type == ShapeType::Circle)
+        {
+            const Vec2 c = TransformPoint(xf, shape.circle.center);
+            const Vec2 r{shape.circle.radius, shape.circle.radius};
+            expected = {c - r, c + r};
+        }
+        else
+        {
+            expected.min = {1e300, 1e300};
+            expected.max = {-1e300, -1e300};
+            for (const Vec2& v : shape.polygon.Vertices())
+            {
+                const Vec2 w = TransformPoint(xf, v);
+                expected.min = {std::min(expected.min.x, w.x), std::min(expected.min.y, w.y)};
+                expected.max = {std::max(expected.max.x, w.x), std::max(expected.max.y, w.y)};
+            }
+        }
+        const Aabb box = ComputeAabb(shape, xf);
+        const double tol = 1e-13 * 100.0;
+        INFO("shape " << k);
+        REQUIRE(std::abs(box.min.x - expected.min.x) <= tol);
+        REQUIRE(std::abs(box.min.y - expected.min.y) <= tol);
+        REQUIRE(std::abs(box.max.x - expected.max.x) <= tol);
+        REQUIRE(std::abs(box.max.y - expected.max.y) <= tol);
+    }
+}
+
+TEST_CASE("TouchingPairs equals Overlap over every pair", "[world][broadphase]")
+{
+    Rng rng(409);
+    int touching = 0;
+    for (int scene = 0; scene < 150; ++scene)
+    {
+        const int n = rng.Int(2, 30);
+        const double spread = rng.Uniform(2.0, 8.0);
+        std::vector<Shape> shapes;
+        std::vector<Transform> xfs;
+        for (int i = 0; i < n; ++i)
+        {
+            if (i > 0 && rng.Chance(0.05))
+            {
+                // An identical copy of the previous body.
+                shapes.push_back(shapes.back());
+                xfs.push_back(xfs.back());
+                continue;
+            }
+            shapes.push_back(RandomShape(rng, 0.3));
+            const Vec2 position{rng.Uniform(-spread, spread), rng.Uniform(-spread, spread)};
+            xfs.push_back(MakeTransform(position, rng.Uniform(-kPi, kPi)));
+        }
+        if (scene % 5 == 0)
+        {
+            // Two boxes sharing a side exactly: touching counts.
+            shapes.push_back(BoxShape(0.5, 0.5));
+            xfs.push_back(At(20.0, 20.0));
+            shapes.push_back(BoxShape(0.5, 0.5));
+            xfs.push_back(At(21.0, 20.0));
+        }
+        std::vector<std::pair<int, int>> expected;
+        for (size_t i = 0; i < shapes.size(); ++i)
+        {
+            for (size_t j = i + 1; j < shapes.size(); ++j)
+            {
+                if (Overlap(shapes[i], xfs[i], shapes[j], xfs[j]))
+                {
+                    expected.emplace_back(static_cast<int>(i), static_cast<int>(j));
+                }
+            }
+        }
+        touching += static_cast<int>(expected.size());
+        INFO("scene " << scene);
+        REQUIRE(TouchingPairs(shapes, xfs) == expected);
+    }
+    CHECK(touching > 500); // the scenes are dense enough to say something
+}
