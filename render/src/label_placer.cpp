@@ -62,15 +62,32 @@ bool InsideConvex(const std::vector<ScreenPoint>& outline, ScreenPoint p)
     return true;
 }
 
-// Whether a label's rectangle reads as lying in the outline: its centre inside it, or two of the points a quarter
-// in from its corners (a label astride the outline's edge reads as either body's).
-bool InOutline(const std::vector<ScreenPoint>& outline, const ScreenRect& rect)
+// Whether a label's rectangle reads as lying in the outline: its centre inside it, one of the outline's edges
+// through its text (a label astride the outline's edge reads as either body's, and its halo hides that edge), or
+// two of the points a quarter in from its corners.
+// A label whose anchor lies inside the outline only keeps its text off the outline's edges.
+bool InOutline(const std::vector<ScreenPoint>& outline, const ScreenRect& rect, bool edgesOnly)
 {
     const float cx = 0.5f * (rect.minX + rect.maxX);
     const float cy = 0.5f * (rect.minY + rect.maxY);
-    if (InsideConvex(outline, {cx, cy}))
+    if (!edgesOnly && InsideConvex(outline, {cx, cy}))
     {
         return true;
+    }
+    // An edge that only grazes the rectangle's rim runs beside the text, not through it.
+    const ScreenRect text{rect.minX + 1.0f, rect.minY + 2.0f, rect.maxX - 1.0f, rect.maxY - 2.0f};
+    for (size_t i = 0; i < outline.size() && outline.size() >= 3; ++i)
+    {
+        ScreenPoint a = outline[i];
+        ScreenPoint b = outline[(i + 1) % outline.size()];
+        if (ClipSegment(a, b, text))
+        {
+            return true;
+        }
+    }
+    if (edgesOnly)
+    {
+        return false;
     }
     const float qx = 0.25f * (rect.maxX - rect.minX);
     const float qy = 0.25f * (rect.maxY - rect.minY);
@@ -116,7 +133,7 @@ void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
     {
         return;
     }
-    labels_.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}});
+    labels_.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false});
 }
 
 void LabelPlacer::PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoint anchor, std::string_view text,
@@ -125,10 +142,11 @@ void LabelPlacer::PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoin
     const size_t before = labels_.size();
     Place(anchor, text, style, color, dx, dy, distance, rank);
     // An anchor inside the other body (a shape contained in the other, a corner pushed into it) has no outside
-    // near it: its label stays beside it rather than at the end of a long leader line.
-    if (labels_.size() > before && !InsideConvex(other, anchor))
+    // near it: its label stays beside it rather than at the end of a long leader line, off that body's edges.
+    if (labels_.size() > before)
     {
         labels_.back().avoid = other;
+        labels_.back().edgesOnly = InsideConvex(other, anchor);
     }
 }
 
@@ -249,7 +267,7 @@ void LabelPlacer::Flush(Color halo)
             {
                 const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
                 const ScreenRect rect = Around(label->anchor, size, start + c.turn * 0.25 * kPi, reach);
-                if (Inside(rect) && Free(rect, pass == 0 ? kLabelSpacing : 0.0f) && !InOutline(label->avoid, rect))
+                if (Inside(rect) && Free(rect, pass == 0 ? kLabelSpacing : 0.0f) && !InOutline(label->avoid, rect, label->edgesOnly))
                 {
                     chosen = rect;
                     found = true;
@@ -265,7 +283,7 @@ void LabelPlacer::Flush(Color halo)
             {
                 const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
                 const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
-                if (Inside(rect) && Free(rect, 0.0f) && !InOutline(label->avoid, rect) &&
+                if (Inside(rect) && Free(rect, 0.0f) && !InOutline(label->avoid, rect, label->edgesOnly) &&
                     LeaderClear(label->anchor, rect))
                 {
                     chosen = rect;

@@ -60,7 +60,8 @@ class LabelPlacer
         Color color;
         float dx, dy, distance;
         LabelRank rank;
-        std::vector<ScreenPoint> avoid; // a convex outline the label's centre stays out of (empty: none)
+        std::vector<ScreenPoint> avoid; // a convex outline the label stays out of (empty: none)
+        bool edgesOnly = false;         // the anchor lies inside `avoid`: the label only keeps off its edges
     };
     struct Line
     {
