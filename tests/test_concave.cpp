@@ -276,3 +276,51 @@ TEST_CASE("A segment cast at a concave shape stops where it first meets the outl
     }
     CHECK(hits > 300);
 }
+
+TEST_CASE("Speculative contacts of a concave shape: the nearest surface, across seams, within the margin",
+          "[concave]")
+{
+    const Concave floor = TileFloor(4);
+    const Shape box = Box(0.5, 0.25);
+    for (const double x : {0.5, 1.0, 1.3, 2.0})
+    {
+        for (const double gap : {0.01, 0.1, 0.3})
+        {
+            // The box hovers `gap` above the floor's top (y = 0); its bottom runs from x - 0.5 to x + 0.5, across
+            // the seam at the integer between when x is not a half.
+            const Transform xf = MakeTransform(Vec2{x, 0.25 + gap}, 0.0);
+            INFO("x " << x << ", gap " << gap);
+            const ConcaveManifold near = CollideWithin(floor, Transform{}, box, xf, 0.2);
+            if (gap > 0.2)
+            {
+                CHECK(near.manifold.contactCount == 0);
+                CHECK(near.manifold.gap > 0.2 - 1e-12);
+                continue;
+            }
+            REQUIRE(near.manifold.contactCount == 2);
+            CHECK(!near.manifold.overlap);
+            CHECK(near.manifold.normal.x == Approx(0.0).margin(1e-12));
+            CHECK(near.manifold.normal.y == Approx(1.0));
+            CHECK(near.manifold.gap == Approx(gap));
+            // The two points are the box's bottom corners, whichever tiles they lie over.
+            const double xs[2] = {near.manifold.contacts[0].point.x, near.manifold.contacts[1].point.x};
+            CHECK(std::min(xs[0], xs[1]) == Approx(x - 0.5));
+            CHECK(std::max(xs[0], xs[1]) == Approx(x + 0.5));
+            for (const ContactPoint& c : near.manifold.contacts)
+            {
+                CHECK(c.separation == Approx(gap));
+            }
+            // Swapped, the normal turns round.
+            const ConcaveManifold swapped = CollideWithin(box, xf, floor, Transform{}, 0.2);
+            REQUIRE(swapped.manifold.contactCount == 2);
+            CHECK(swapped.manifold.normal.y == Approx(-1.0));
+        }
+    }
+    // Overlapping, it is the merged manifold of Collide.
+    const Transform sunk = MakeTransform(Vec2{1.0, 0.2}, 0.0);
+    const ConcaveManifold deep = CollideWithin(floor, Transform{}, box, sunk, 0.2);
+    const ConcaveManifold merged = Collide(floor, Transform{}, box, sunk);
+    CHECK(deep.manifold.overlap);
+    CHECK(deep.manifold.depth == merged.manifold.depth);
+    CHECK(deep.manifold.contactCount == merged.manifold.contactCount);
+}

@@ -464,3 +464,73 @@ TEST_CASE("satviz-sim --version prints its name and the project version", "[sim]
     CHECK(run.out[0] == std::string("satviz-sim ") + SATVIZ_VERSION);
     CHECK(run.err.empty());
 }
+
+TEST_CASE("satviz-sim steps a concave body, and --save writes its outline back", "[sim][concave]")
+{
+    // An L (outline y from 0 to 3) dropped flat from 1 unit above the ground's top (y = 0).
+    WriteFile(kSim / "ell.json", R"({
+  "bodies": [
+    {"name": "ground", "box": [20, 1], "position": [0, -0.5], "static": true},
+    {"name": "L", "polygon": [[0,0],[3,0],[3,1],[1,1],[1,3],[0,3]], "decompose": "fewest", "position": [0, 1]}
+  ],
+  "world": {"gravity": [0, -9.81], "dt": 0.0166666}
+})");
+    const std::string saved = kSim / "ell_saved.json";
+    const SimRun run = Sim(kSim / "ell.json --steps 120 --every 120 --save " + saved);
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    const nlohmann::json last = nlohmann::json::parse(run.out.back());
+    const nlohmann::json& ell = last["bodies"][1];
+    // At rest on the ground: its outline's bottom (y = 0 in its frame) on the ground's top, within the slop.
+    CHECK(ell["position"][1].get<double>() == Approx(0.0).margin(0.01));
+    CHECK(ell["position"][0].get<double>() == Approx(0.0).margin(1e-6));
+    CHECK(std::abs(ell["velocity"][1].get<double>()) < 0.05);
+
+    // The saved file keeps the outline as written and how it was cut, not the hull that bounds it.
+    const nlohmann::ordered_json json = nlohmann::ordered_json::parse(ReadAll(saved));
+    CHECK(json["bodies"][1]["polygon"].dump() == "[[0,0],[3,0],[3,1],[1,1],[1,3],[0,3]]");
+    CHECK(json["bodies"][1]["decompose"] == "fewest");
+    SceneOptions options;
+    options.concave = true;
+    const SceneResult again = LoadScene(saved, options);
+    INFO(again.error);
+    REQUIRE(again.Ok());
+    REQUIRE(again.scene.bodies[1].IsConcave());
+    CHECK(again.scene.bodies[1].position.y == ell["position"][1].get<double>());
+}
+
+TEST_CASE("SceneToJson writes a concave body built in code as its outline, which reads back the same", "[sim][concave]")
+{
+    SceneOptions options;
+    options.concave = true;
+    const SceneResult read = ParseScene(
+        R"({"bodies": [{"name": "U", "polygon": [[0,0],[3,0],[3,2],[2,2],[2,1],[1,1],[1,2],[0,2]]}]})", "u.json",
+        options);
+    REQUIRE(read.Ok());
+    // The same body in a scene of its own, with no source file behind it, cut the other way.
+    Scene scene;
+    Body body = read.scene.bodies[0];
+    const Decomposition fewest = Decompose(body.outline, DecomposeMethod::Fewest);
+    REQUIRE(fewest.Ok());
+    body.concave = MakeConcave(fewest.pieces);
+    body.decompose = DecomposeMethod::Fewest;
+    body.position = {1.5, -2};
+    scene.bodies.push_back(body);
+    const std::string text = SceneToJson(scene);
+    const SceneResult back = ParseScene(text, "back.json", options);
+    INFO(text << back.error);
+    REQUIRE(back.Ok());
+    const Body& u = back.scene.bodies[0];
+    REQUIRE(u.IsConcave());
+    CHECK(u.outline == body.outline);
+    CHECK(u.decompose == DecomposeMethod::Fewest);
+    CHECK(u.concave.parts.size() == body.concave.parts.size());
+    CHECK(u.position == body.position);
+    // The world makes the same body of both: the same mass and inertia.
+    World a, b;
+    AddBody(a, MakeBodyDef(body));
+    AddBody(b, MakeBodyDef(u));
+    CHECK(a.bodies[0].mass == b.bodies[0].mass);
+    CHECK(a.bodies[0].inertia == b.bodies[0].inertia);
+    CHECK(a.bodies[0].IsConcave());
+}

@@ -936,9 +936,9 @@ const Json* KeptShape(const Polygon& polygon, const Json* old, std::string& key)
 }
 
 // The keys of a body that the scene holds, in the order a new body writes them.
-const std::vector<std::string> kBodyKeys = {"name",     "polygon",     "box",      "regular",          "circle",
-                                            "position", "angle",       "velocity", "angular_velocity", "static",
-                                            "density",  "restitution", "friction", "static_friction"};
+const std::vector<std::string> kBodyKeys = {"name",     "polygon",  "decompose",   "box",      "regular",
+                                            "circle",   "position", "angle",       "velocity", "angular_velocity",
+                                            "static",   "density",  "restitution", "friction", "static_friction"};
 
 // One body. `old` is the body of the same name in the source file, null for a new body or a scene built in code;
 // `index` is the body's place in the scene.
@@ -949,7 +949,36 @@ Json BodyJson(const Body& body, const Json* old, size_t index, bool fromFile)
     {
         fields.push_back({"name", body.name});
     }
-    if (body.shape.type == ShapeType::Polygon)
+    if (body.IsConcave())
+    {
+        // A concave body writes its outline as read, not the hull that bounds it, and how it was cut.
+        const Json* points = Member(old, "polygon");
+        bool same = points != nullptr && points->is_array() && points->size() == body.outline.size();
+        for (size_t i = 0; same && i < body.outline.size(); ++i)
+        {
+            const Json& p = (*points)[i];
+            same = p.is_array() && p.size() == 2 && p[0].is_number() && p[1].is_number() &&
+                   SameDouble(p[0].get<double>(), body.outline[i].x) && SameDouble(p[1].get<double>(), body.outline[i].y);
+        }
+        if (same)
+        {
+            fields.push_back({"polygon", *points});
+        }
+        else
+        {
+            Json vertices = Json::array();
+            for (const Vec2& v : body.outline)
+            {
+                vertices.push_back(Json::array({v.x, v.y}));
+            }
+            fields.push_back({"polygon", std::move(vertices)});
+        }
+        if (Member(old, "decompose") != nullptr || body.decompose != DecomposeMethod::Fast)
+        {
+            fields.push_back({"decompose", body.decompose == DecomposeMethod::Fast ? "fast" : "fewest"});
+        }
+    }
+    else if (body.shape.type == ShapeType::Polygon)
     {
         std::string key;
         if (const Json* kept = KeptShape(body.shape.polygon, old, key); kept != nullptr)

@@ -20,6 +20,7 @@ BodyDef MakeBodyDef(const Body& body)
 {
     BodyDef def;
     def.shape = body.shape;
+    def.concave = body.concave;
     def.type = body.isStatic ? BodyType::Static : BodyType::Dynamic;
     def.density = body.density;
     def.material = body.material;

@@ -380,6 +380,92 @@ ConcaveManifoldT<S> CollideSides(const Side<S>& a, const Side<S>& b)
     return result;
 }
 
+// Speculative contacts by pieces: see CollideWithin in concave.h.
+template <typename S>
+ConcaveManifoldT<S> CollideWithinSides(const Side<S>& a, const Side<S>& b, S margin)
+{
+    ConcaveManifoldT<S> merged = CollideSides(a, b);
+    if (merged.manifold.overlap || merged.manifold.gap > margin)
+    {
+        return merged;
+    }
+    struct Candidate
+    {
+        ManifoldT<S> manifold;
+        int i;
+        int j;
+    };
+    std::vector<Candidate> near;
+    std::vector<BoundsT<S>> boxesB(static_cast<size_t>(b.Count()));
+    for (int j = 0; j < b.Count(); ++j)
+    {
+        boxesB[j] = WorldBox(b, j);
+        boxesB[j].min = boxesB[j].min - Vec2T<S>{margin, margin};
+        boxesB[j].max = boxesB[j].max + Vec2T<S>{margin, margin};
+    }
+    for (int i = 0; i < a.Count(); ++i)
+    {
+        const BoundsT<S> boxA = WorldBox(a, i);
+        for (int j = 0; j < b.Count(); ++j)
+        {
+            if (!BoxesOverlap(boxA, boxesB[j]))
+            {
+                continue;
+            }
+            const ManifoldT<S> m = CollideWithin(a.Part(i), a.xf, b.Part(j), b.xf, margin);
+            // A piece pair that overlaps while the whole does not cannot be (CollideSides tested every pair); a pair
+            // pushed along a seam is a ghost.
+            if (m.overlap || m.contactCount == 0 || PairAlongSeam(a, i, b, j, m.normal, m.axis))
+            {
+                continue;
+            }
+            near.push_back({m, i, j});
+        }
+    }
+    if (near.empty())
+    {
+        return merged;
+    }
+    const Candidate* deciding = &near.front();
+    for (const Candidate& c : near)
+    {
+        if (c.manifold.gap < deciding->manifold.gap)
+        {
+            deciding = &c;
+        }
+    }
+    ConcaveManifoldT<S> result = merged;
+    result.manifold = deciding->manifold;
+    result.pieceA = a.Piece(deciding->i);
+    result.pieceB = b.Piece(deciding->j);
+    const Vec2T<S> normal = deciding->manifold.normal;
+    std::vector<ContactPointT<S>> points;
+    for (const Candidate& c : near)
+    {
+        if (Dot(c.manifold.normal, normal) < S(1) - S(64) * std::numeric_limits<S>::epsilon())
+        {
+            continue;
+        }
+        for (int k = 0; k < c.manifold.contactCount; ++k)
+        {
+            points.push_back(c.manifold.contacts[k]);
+        }
+    }
+    const Vec2T<S> tangent = LeftPerp(normal);
+    const Vec2T<S> origin = deciding->manifold.contacts[0].point;
+    auto along = [&](const ContactPointT<S>& p) { return Dot(p.point - origin, tangent); };
+    const auto [low, high] =
+        std::minmax_element(points.begin(), points.end(), [&](const auto& p, const auto& q) { return along(p) < along(q); });
+    result.manifold.contacts[0] = *low;
+    result.manifold.contactCount = 1;
+    if (along(*high) > along(*low))
+    {
+        result.manifold.contacts[1] = *high;
+        result.manifold.contactCount = 2;
+    }
+    return result;
+}
+
 template <typename S>
 ConcaveSweepResultT<S> SweepSides(const Side<S>& a, Vec2T<S> vA, const Side<S>& b, Vec2T<S> vB)
 {
@@ -511,6 +597,27 @@ ConcaveManifoldT<S> Collide(const ConcaveT<S>& a, const TransformT<S>& xfA, cons
 }
 
 template <typename S>
+ConcaveManifoldT<S> CollideWithin(const ConcaveT<S>& a, const TransformT<S>& xfA, const ShapeT<S>& b,
+                                  const TransformT<S>& xfB, S margin)
+{
+    return CollideWithinSides(SideOf(a, xfA, 0), SideOf(b, xfB, 1), margin);
+}
+
+template <typename S>
+ConcaveManifoldT<S> CollideWithin(const ShapeT<S>& a, const TransformT<S>& xfA, const ConcaveT<S>& b,
+                                  const TransformT<S>& xfB, S margin)
+{
+    return CollideWithinSides(SideOf(a, xfA, 0), SideOf(b, xfB, 1), margin);
+}
+
+template <typename S>
+ConcaveManifoldT<S> CollideWithin(const ConcaveT<S>& a, const TransformT<S>& xfA, const ConcaveT<S>& b,
+                                  const TransformT<S>& xfB, S margin)
+{
+    return CollideWithinSides(SideOf(a, xfA, 0), SideOf(b, xfB, 1), margin);
+}
+
+template <typename S>
 ConcaveSweepResultT<S> Sweep(const ConcaveT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA, const ShapeT<S>& b,
                              const TransformT<S>& xfB, Vec2T<S> vB)
 {
@@ -578,6 +685,12 @@ ConcaveRayHitT<S> RayCast(const ConcaveT<S>& shape, const TransformT<S>& xf, Vec
                                          const TransformT<S>&);                                                        \
     template ConcaveManifoldT<S> Collide(const ConcaveT<S>&, const TransformT<S>&, const ConcaveT<S>&,                 \
                                          const TransformT<S>&);                                                        \
+    template ConcaveManifoldT<S> CollideWithin(const ConcaveT<S>&, const TransformT<S>&, const ShapeT<S>&,             \
+                                               const TransformT<S>&, S);                                               \
+    template ConcaveManifoldT<S> CollideWithin(const ShapeT<S>&, const TransformT<S>&, const ConcaveT<S>&,             \
+                                               const TransformT<S>&, S);                                               \
+    template ConcaveManifoldT<S> CollideWithin(const ConcaveT<S>&, const TransformT<S>&, const ConcaveT<S>&,           \
+                                               const TransformT<S>&, S);                                               \
     template ConcaveSweepResultT<S> Sweep(const ConcaveT<S>&, const TransformT<S>&, Vec2T<S>, const ShapeT<S>&,        \
                                           const TransformT<S>&, Vec2T<S>);                                             \
     template ConcaveSweepResultT<S> Sweep(const ShapeT<S>&, const TransformT<S>&, Vec2T<S>, const ConcaveT<S>&,        \

@@ -94,4 +94,47 @@ double TurnRadius(const Shape& shape, Vec2 center)
     return OuterRadius(shape, center);
 }
 
+MassProperties ComputeMass(const Concave& shape, double density)
+{
+    MassProperties total;
+    Vec2 moment{};
+    for (const ConcavePart& part : shape.parts)
+    {
+        const MassProperties piece = ComputeMass(part.shape, density);
+        total.mass += piece.mass;
+        moment = moment + piece.mass * piece.center;
+    }
+    if (!(total.mass > 0.0))
+    {
+        return total;
+    }
+    total.center = (1.0 / total.mass) * moment;
+    for (const ConcavePart& part : shape.parts)
+    {
+        const MassProperties piece = ComputeMass(part.shape, density);
+        total.inertia += piece.inertia + piece.mass * LengthSquared(piece.center - total.center);
+    }
+    return total;
+}
+
+double InnerRadius(const Concave& shape)
+{
+    double inner = INFINITY;
+    for (const ConcavePart& part : shape.parts)
+    {
+        inner = std::min(inner, InnerRadius(part.shape, part.shape.polygon.Centroid()));
+    }
+    return shape.parts.empty() ? 0.0 : inner;
+}
+
+double OuterRadius(const Concave& shape, Vec2 center)
+{
+    double outer = 0.0;
+    for (const ConcavePart& part : shape.parts)
+    {
+        outer = std::max(outer, OuterRadius(part.shape, center));
+    }
+    return outer;
+}
+
 } // namespace satviz

@@ -3,6 +3,7 @@
 
 #include "time_of_impact.h"
 
+#include "body_queries.h"
 #include "world_lookup.h"
 
 #include <satviz/collide.h>
@@ -215,8 +216,12 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
     // How fast the shapes can close along a fixed direction n (from A to B): along it a point of B gains on a
     // point of A at most at their relative speed along it plus what turning adds (a point at the turn radius moves
     // at the angular speed times it, in any direction). The gap of Collide is the separation along its normal.
+    // A pair with a concave body: its gap is the least over its piece pairs, each on its own axis, so the normal
+    // of the least one does not bound how fast the others close; the whole relative speed does.
+    const bool concavePair = AnyConcave(a, b);
     const auto closingAlong = [&](Vec2 n) {
-        return std::max(0.0, -Dot(mj.v - mi.v, n)) + std::fabs(mi.w) * a.turnRadius + std::fabs(mj.w) * b.turnRadius;
+        const double along = concavePair ? Length(mj.v - mi.v) : std::max(0.0, -Dot(mj.v - mi.v, n));
+        return along + std::fabs(mi.w) * a.turnRadius + std::fabs(mj.w) * b.turnRadius;
     };
     const double tolerance = m_world.settings.linearSlop;
     double t = t0;
@@ -224,7 +229,7 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
     {
         const Transform xi = PoseAt(i, t);
         const Transform xj = PoseAt(j, t);
-        const Manifold m = Collide(a.shape, xi, b.shape, xj);
+        const Manifold m = concavePair ? CollideBodies(a, xi, b, xj).manifold : Collide(a.shape, xi, b.shape, xj);
         Vec2 points[2];
         if (m.overlap)
         {
@@ -254,7 +259,8 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
             Transform touching = xj;
             const double shift = m.gap + 0.5 * tolerance;
             touching.p = xj.p - shift * m.normal;
-            const Manifold close = Collide(a.shape, xi, b.shape, touching);
+            const Manifold close = concavePair ? CollideBodies(a, xi, b, touching).manifold
+                                               : Collide(a.shape, xi, b.shape, touching);
             if (close.overlap && close.contactCount > 0)
             {
                 for (int k = 0; k < close.contactCount; ++k)
@@ -329,7 +335,9 @@ void TimeOfImpactStage::SweepPair(int i, int j, bool anySpeed)
     {
         const Transform xi = PoseAt(i, t0);
         const Transform xj = PoseAt(j, t0);
-        const SweepResult r = Sweep(a.shape, xi, span * mi.v, b.shape, xj, span * mj.v);
+        // A concave body is swept piece by piece: the earliest piece's hit is the pair's.
+        const SweepResult r = AnyConcave(a, b) ? SweepBodies(a, xi, span * mi.v, b, xj, span * mj.v).result
+                                               : Sweep(a.shape, xi, span * mi.v, b.shape, xj, span * mj.v);
         if (r.status == SweepStatus::Hit && r.contactCount > 0)
         {
             event = {t0 + r.toi * (1.0 - t0), i, j, m_stamp[i], m_stamp[j], r.normal, {}, r.contactCount};

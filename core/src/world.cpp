@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // satviz: the rigid-body world: bodies, the step, and what it counts.
 
+#include "body_queries.h"
 #include "contact_solver.h"
 #include "time_of_impact.h"
 #include "world_lookup.h"
@@ -38,6 +39,15 @@ uint32_t FeatureKey(const Manifold& m, int slot)
     const uint32_t index = static_cast<uint32_t>(m.axis.index + 1) & 0x1fffu;
     const uint32_t incident = static_cast<uint32_t>(m.incidentEdge + 1) & 0x1fffu;
     return kind | shape << 2 | index << 4 | incident << 17 | static_cast<uint32_t>(slot) << 30;
+}
+
+// The same for a pair with a concave body: the deciding pieces are folded into the high bits of the index and the
+// incident edge (a piece's own edges are few), so that a point on another piece is another point.
+uint32_t FeatureKey(const Manifold& m, int pieceA, int pieceB, int slot)
+{
+    const uint32_t foldA = static_cast<uint32_t>(pieceA + 1) & 0x3fu;
+    const uint32_t foldB = static_cast<uint32_t>(pieceB + 1) & 0x3fu;
+    return FeatureKey(m, slot) ^ (foldA << 11 | foldB << 24);
 }
 
 struct PairFilter
@@ -133,7 +143,19 @@ int FindRoot(std::vector<int>& parent, int i)
 
 std::string ValidateBodyDef(const BodyDef& def)
 {
-    if (def.shape.type == ShapeType::Polygon)
+    if (!def.concave.parts.empty())
+    {
+        for (const ConcavePart& part : def.concave.parts)
+        {
+            if (part.shape.type != ShapeType::Polygon || part.shape.polygon.Count() < 3 ||
+                part.internal.size() != static_cast<size_t>(part.shape.polygon.Count()))
+            {
+                return "shape: each piece of a concave body must be a polygon of at least 3 vertices, with a flag "
+                       "per edge";
+            }
+        }
+    }
+    else if (def.shape.type == ShapeType::Polygon)
     {
         if (def.shape.polygon.Count() < 3)
         {
@@ -179,12 +201,27 @@ std::string ValidateBodyDef(const BodyDef& def)
 int AddBody(World& world, const BodyDef& def)
 {
     RigidBody body;
-    body.shape = def.shape;
+    const bool concave = !def.concave.parts.empty();
+    if (concave)
+    {
+        body.concave = def.concave;
+        std::vector<Vec2> points;
+        for (const ConcavePart& part : def.concave.parts)
+        {
+            const Vec2Span<double> vertices = part.shape.polygon.Vertices();
+            points.insert(points.end(), vertices.begin(), vertices.end());
+        }
+        body.shape = MakeShape(ComputeHull(points).polygon);
+    }
+    else
+    {
+        body.shape = def.shape;
+    }
     body.type = def.type;
     body.material = def.material;
     body.position = def.position;
     body.angle = def.angle;
-    const MassProperties mass = ComputeMass(def.shape, 1.0);
+    const MassProperties mass = concave ? ComputeMass(def.concave, 1.0) : ComputeMass(def.shape, 1.0);
     body.localCenter = mass.center;
     if (def.type == BodyType::Dynamic)
     {
@@ -195,9 +232,18 @@ int AddBody(World& world, const BodyDef& def)
         body.velocity = def.velocity;
         body.angularVelocity = def.angularVelocity;
     }
-    body.innerRadius = InnerRadius(def.shape, mass.center);
-    body.outerRadius = OuterRadius(def.shape, mass.center);
-    body.turnRadius = TurnRadius(def.shape, mass.center);
+    if (concave)
+    {
+        body.innerRadius = InnerRadius(def.concave);
+        body.outerRadius = OuterRadius(def.concave, mass.center);
+        body.turnRadius = body.outerRadius;
+    }
+    else
+    {
+        body.innerRadius = InnerRadius(def.shape, mass.center);
+        body.outerRadius = OuterRadius(def.shape, mass.center);
+        body.turnRadius = TurnRadius(def.shape, mass.center);
+    }
     world.bodies.push_back(std::move(body));
     world.broadphase.order.clear();
     return static_cast<int>(world.bodies.size()) - 1;
@@ -466,22 +512,42 @@ void Stepper::FindContacts()
     {
         RigidBody& a = bodies[i];
         RigidBody& b = bodies[j];
+        // A pair with a concave body takes the concave queries (one merged manifold, seams dropped), and the
+        // pieces that decided it name its points.
+        const bool concavePair = detail::AnyConcave(a, b);
+        int pieceA = -1, pieceB = -1;
+        const auto concaveWithin = [&](double within) {
+            const ConcaveManifold cm = within > 0.0 ? detail::CollideBodiesWithin(a, xfs[i], b, xfs[j], within)
+                                                    : detail::CollideBodies(a, xfs[i], b, xfs[j]);
+            pieceA = cm.pieceA;
+            pieceB = cm.pieceB;
+            return cm.manifold;
+        };
         if (a.type == BodyType::Static && b.type == BodyType::Static)
         {
-            Collide(a.shape, xfs[i], b.shape, xfs[j]);
+            if (concavePair)
+            {
+                concaveWithin(0.0);
+            }
+            else
+            {
+                Collide(a.shape, xfs[i], b.shape, xfs[j]);
+            }
             continue;
         }
         // The pair's speculative margin: how far the two can close within the step.
         const double margin = bodyReach[static_cast<size_t>(i)] + bodyReach[static_cast<size_t>(j)];
-        Manifold m = margin > 0.0 ? CollideWithin(a.shape, xfs[i], b.shape, xfs[j], margin)
-                                  : Collide(a.shape, xfs[i], b.shape, xfs[j]);
+        Manifold m = concavePair   ? concaveWithin(margin)
+                     : margin > 0.0 ? CollideWithin(a.shape, xfs[i], b.shape, xfs[j], margin)
+                                    : Collide(a.shape, xfs[i], b.shape, xfs[j]);
         bool guard = false;
         if (m.contactCount == 0)
         {
             // Beyond reach of a static body, but within what the position passes can move it: a guard.
             if (correctionReach > 0.0 && (a.type == BodyType::Static) != (b.type == BodyType::Static))
             {
-                m = CollideWithin(a.shape, xfs[i], b.shape, xfs[j], margin + correctionReach);
+                m = concavePair ? concaveWithin(margin + correctionReach)
+                                : CollideWithin(a.shape, xfs[i], b.shape, xfs[j], margin + correctionReach);
                 guard = m.contactCount > 0 && !m.overlap;
             }
             if (!guard)
@@ -508,7 +574,7 @@ void Stepper::FindContacts()
             WorldContactPoint& p = c.points[k];
             p.point = m.contacts[k].point;
             p.separation = m.contacts[k].separation;
-            p.key = FeatureKey(m, k);
+            p.key = concavePair ? FeatureKey(m, pieceA, pieceB, k) : FeatureKey(m, k);
             if (old != nullptr && !c.guard)
             {
                 bool matched = false;
@@ -1039,7 +1105,10 @@ void Stepper::GuardAfterMove(const std::vector<Vec2>& c, const std::vector<Rot>&
             {
                 continue;
             }
-            const Manifold m = CollideWithin(bodies[a].shape, xfs[a], bodies[b].shape, xfs[b], margin);
+            const Manifold m =
+                detail::AnyConcave(bodies[a], bodies[b])
+                    ? detail::CollideBodiesWithin(bodies[a], xfs[a], bodies[b], xfs[b], margin).manifold
+                    : CollideWithin(bodies[a].shape, xfs[a], bodies[b].shape, xfs[b], margin);
             if (m.contactCount == 0)
             {
                 continue;
@@ -1204,7 +1273,17 @@ void Stepper::CorrectPositions()
         // static body is: the moving body's deepest point along it against the static body's extent. Measured so,
         // a body pushed past the middle of a thin wall is still pushed back the way it came; Collide's own normal
         // would push it on through.
-        const Manifold m = Collide(bodies[a].shape, pose(a), bodies[b].shape, pose(b));
+        // A concave body's part in the overlap is the piece that decided it: its vertices bound the push below.
+        int pieceA = -1, pieceB = -1;
+        const auto concaveCollide = [&]() {
+            const ConcaveManifold cm = detail::CollideBodies(bodies[a], pose(a), bodies[b], pose(b));
+            pieceA = cm.pieceA;
+            pieceB = cm.pieceB;
+            return cm.manifold;
+        };
+        const Manifold m = detail::AnyConcave(bodies[a], bodies[b])
+                               ? concaveCollide()
+                               : Collide(bodies[a].shape, pose(a), bodies[b].shape, pose(b));
         if (!m.overlap)
         {
             return;
@@ -1221,8 +1300,8 @@ void Stepper::CorrectPositions()
             const Vec2 axis = owner == fixedBody && !tookHit ? g.normal : m.normal;
             const Vec2 n = fixedBody == a ? axis : -1.0 * axis; // from the static body to the moving one
             const Transform xs = pose(fixedBody), xm = pose(moving);
-            const Shape& shapeS = bodies[fixedBody].shape;
-            const Shape& shapeM = bodies[moving].shape;
+            const Shape& shapeS = detail::PieceShape(bodies[fixedBody], fixedBody == a ? pieceA : pieceB);
+            const Shape& shapeM = detail::PieceShape(bodies[moving], moving == a ? pieceA : pieceB);
             double top = -INFINITY;
             if (shapeS.type == ShapeType::Circle)
             {
@@ -1320,7 +1399,10 @@ void Stepper::CorrectPositions()
         {
             return;
         }
-        const SweepResult r = Sweep(bodies[s].shape, xfs[s], Vec2{}, bodies[i].shape, PoseAt(i, afterMove[i]), d);
+        const SweepResult r =
+            detail::AnyConcave(bodies[s], bodies[i])
+                ? detail::SweepBodies(bodies[s], xfs[s], Vec2{}, bodies[i], PoseAt(i, afterMove[i]), d).result
+                : Sweep(bodies[s].shape, xfs[s], Vec2{}, bodies[i].shape, PoseAt(i, afterMove[i]), d);
         if (r.status == SweepStatus::Overlapping)
         {
             // Already touching it (a body resting on the floor overlaps it by up to the slop): the sweep cannot

@@ -128,7 +128,10 @@ int main(int argc, char** argv)
         }
     }
 
-    satviz::SceneResult loaded = satviz::LoadScene(file);
+    // A polygon may be concave: the world steps it as one body made of its convex pieces.
+    satviz::SceneOptions options;
+    options.concave = true;
+    satviz::SceneResult loaded = satviz::LoadScene(file, options);
     if (!loaded.Ok())
     {
         std::cerr << "satviz-sim: " << loaded.error << "\n";
@@ -177,7 +180,7 @@ int main(int argc, char** argv)
         satviz::CopyWorldState(world, scene);
         // A state the scene format cannot hold (a body flung beyond 1e12) is
         // refused before anything is written.
-        const satviz::SceneResult check = satviz::ParseScene(satviz::SceneToJson(scene), savePath);
+        const satviz::SceneResult check = satviz::ParseScene(satviz::SceneToJson(scene), savePath, options);
         if (!check.Ok())
         {
             std::cerr << "satviz-sim: " << check.error << " (the final state; nothing was written)\n";

@@ -30,6 +30,9 @@ struct ConcavePartT
     BoundsT<S> bounds;          ///< the piece's box in the body frame, for the broadphase over pieces
 };
 
+/// Double-precision piece.
+using ConcavePart = ConcavePartT<double>;
+
 /// A concave shape: convex pieces in one body frame (from Decompose), which meet along their internal edges.
 template <typename S>
 struct ConcaveT
@@ -97,6 +100,25 @@ ConcaveManifoldT<S> Collide(const ShapeT<S>& a, const TransformT<S>& xfA, const 
 template <typename S>
 ConcaveManifoldT<S> Collide(const ConcaveT<S>& a, const TransformT<S>& xfA, const ConcaveT<S>& b,
                             const TransformT<S>& xfB);
+
+/// Speculative contacts (CollideWithin) for pairs with a concave shape, by pieces. Overlapping: the merged manifold
+/// of Collide above. Apart by at most `margin` (>= 0): each pair of pieces whose boxes, grown by the margin, overlap
+/// gets CollideWithin; a pair whose normal points along an internal edge is dropped (the seam rule of Collide: a
+/// box hovering beside a seam must not be pushed sideways through it); of the pairs left, the least gap decides the
+/// normal and the axis, and its contacts, with those of the pairs that share its normal, give the two farthest
+/// apart across it (a box above a floor of pieces keeps a point on each side of a seam). Farther apart: overlap
+/// false, no contacts, a lower bound of the gap (as Collide).
+template <typename S>
+ConcaveManifoldT<S> CollideWithin(const ConcaveT<S>& a, const TransformT<S>& xfA, const ShapeT<S>& b,
+                                  const TransformT<S>& xfB, S margin);
+/// Convex against concave; see above.
+template <typename S>
+ConcaveManifoldT<S> CollideWithin(const ShapeT<S>& a, const TransformT<S>& xfA, const ConcaveT<S>& b,
+                                  const TransformT<S>& xfB, S margin);
+/// Concave against concave; see above.
+template <typename S>
+ConcaveManifoldT<S> CollideWithin(const ConcaveT<S>& a, const TransformT<S>& xfA, const ConcaveT<S>& b,
+                                  const TransformT<S>& xfB, S margin);
 
 /// Sweep for pairs with a concave shape, and the pieces that decided it.
 template <typename S>

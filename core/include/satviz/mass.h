@@ -2,6 +2,7 @@
 // satviz: mass, centre of mass and moment of inertia of a shape of uniform density.
 #pragma once
 
+#include <satviz/concave.h>
 #include <satviz/shape.h>
 
 namespace satviz
@@ -35,5 +36,20 @@ double OuterRadius(const Shape& shape, Vec2 center);
 /// polygon; for a circle the offset of its centre from `center` alone, since turning about its own centre leaves a
 /// circle where it is (a spinning ball reaches no farther than a still one). O(n) for an n-gon.
 double TurnRadius(const Shape& shape, Vec2 center);
+
+/// Mass, centre of mass and moment of inertia of a concave shape with `density`: the pieces' masses summed, the
+/// centre their mass-weighted mean, and each piece's inertia moved from its own centre to the shape's (parallel
+/// axes: I + m d^2). The pieces do not overlap (they tile the outline), so the sums are the outline's own. O(n) in
+/// the vertices of all pieces.
+MassProperties ComputeMass(const Concave& shape, double density);
+
+/// A concave shape's size for the sweep rule: the least InnerRadius of a piece about its own centroid. The centre of
+/// mass of a concave shape may lie outside it (an L's), so the largest circle about it says nothing; a body whose
+/// thinnest piece can move by a fraction of its own width within a step is fast. O(n).
+double InnerRadius(const Concave& shape);
+
+/// Largest distance from `center` to a point of any piece: the radius of the circle about `center` that holds the
+/// shape. A concave shape is made of polygons, so this also bounds its turn (TurnRadius). O(n).
+double OuterRadius(const Concave& shape, Vec2 center);
 
 } // namespace satviz

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <satviz/broadphase.h>
+#include <satviz/concave.h>
 #include <satviz/manifold.h>
 #include <satviz/mass.h>
 #include <satviz/material.h>
@@ -28,7 +29,10 @@ enum class BodyType
 /// What a body is made of and how it starts: the input of AddBody.
 struct BodyDef
 {
-    Shape shape;                       ///< the shape, in the body frame
+    Shape shape;                       ///< the shape, in the body frame (ignored when `concave` has pieces)
+    /// A concave body: its convex pieces in the body frame (MakeConcave of a decomposition). Empty for a convex
+    /// body, whose shape is `shape`.
+    Concave concave;
     BodyType type = BodyType::Dynamic; ///< static or dynamic
     double density = 1.0;              ///< mass per unit area of a dynamic body, > 0
     Material material{};               ///< restitution and frictions
@@ -41,7 +45,12 @@ struct BodyDef
 /// A body of the world. The state is public to read; change it between steps only through the fields that say so.
 struct RigidBody
 {
-    Shape shape;                       ///< the shape, in the body frame
+    /// The shape, in the body frame. For a concave body, the convex hull of its pieces: a bound for the broadphase
+    /// (boxes and reaches); the contacts and sweeps take the pieces.
+    Shape shape;
+    /// A concave body's pieces in the body frame, which the queries of the step take (concave.h): one body with one
+    /// mass and one island, whose pairs get one manifold each. Empty for a convex body.
+    Concave concave;
     BodyType type = BodyType::Dynamic; ///< static or dynamic
     Material material{};               ///< restitution and frictions
     Vec2 position{};                   ///< world position of the body origin
@@ -59,6 +68,8 @@ struct RigidBody
     bool awake = true;                 ///< false while asleep: not moved, not solved, until something touches it
     double sleepTime = 0.0;            ///< how long the body has been slower than the sleep thresholds
 
+    /// True for a concave body (its shape is `concave`).
+    bool IsConcave() const { return !concave.parts.empty(); }
     /// The body's transform (body frame to world).
     Transform Xf() const { return MakeTransform(position, angle); }
     /// The centre of mass in world space.
@@ -190,10 +201,11 @@ struct World
     SortAndSweep sweptBroadphase;
 };
 
-/// Adds a body, computing its mass properties from the shape and the density (a static body gets none). Returns
-/// its index. The definition must be valid: a finite state, a shape built by the polygon builders or a circle of
-/// positive radius, a positive density for a dynamic body, non-negative finite material coefficients
-/// (ValidateBodyDef says what is wrong).
+/// Adds a body, computing its mass properties from the shape and the density (a static body gets none); a concave
+/// body's from its pieces (ComputeMass of a Concave), its `shape` set to their convex hull. Returns its index. The
+/// definition must be valid: a finite state, a shape built by the polygon builders or a circle of positive radius
+/// (or pieces that are such polygons), a positive density for a dynamic body, non-negative finite material
+/// coefficients (ValidateBodyDef says what is wrong).
 int AddBody(World& world, const BodyDef& def);
 
 /// Empty when the definition is valid, else what is wrong, naming the field ("density must be > 0", ...).
