@@ -1088,12 +1088,19 @@ class Painter
                 canvas_.FillConvex(outline.data(), static_cast<int>(outline.size()), WithAlpha(ColorOf(s), 0.10f));
                 DashedOutline(canvas_, outline, WithAlpha(InkOf(s), alpha), 1.8f, bounds_);
                 used_.push_back(LegendMark::Dashed);
-                ScreenPoint top = outline.front();
+                // The label goes above the ghost, towards its trailing side, the one it came from: its leading
+                // side is where it meets the other body and the contact points are marked, which a label there
+                // would hide and whose marks it would seem to name.
+                const Vec2 v = (1.0 / Length(body.velocity)) * body.velocity;
+                const float ux = static_cast<float>(v.x);
+                const float uy = static_cast<float>(-v.y);
+                ScreenPoint back = outline.front();
+                auto rank = [&](const ScreenPoint& p) { return p.y + 0.3f * (p.x * ux + p.y * uy); };
                 for (const ScreenPoint& p : outline)
                 {
-                    top = p.y < top.y ? p : top;
+                    back = rank(p) < rank(back) ? p : back;
                 }
-                labels_.Place(top, label, TextStyle::Label, InkOf(s), 0.0f, -1.0f, 3.0f, LabelRank::Verdict);
+                labels_.Place(back, label, TextStyle::Label, InkOf(s), -ux, -1.0f, 3.0f, LabelRank::Verdict);
             }
         };
         if (r.status == SweepStatus::Hit)
