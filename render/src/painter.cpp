@@ -816,10 +816,58 @@ class Painter
             {
                 continue;
             }
-            DrawShape(body.shape, body.Xf(), palette::kOther, 0.18f);
+            DrawBody(body, palette::kOther, 0.18f);
         }
-        DrawShape(bodyA_.shape, bodyA_.Xf(), palette::kShapeA, 0.22f);
-        DrawShape(bodyB_.shape, bodyB_.Xf(), palette::kShapeB, 0.28f);
+        DrawBody(bodyA_, palette::kShapeA, 0.22f);
+        DrawBody(bodyB_, palette::kShapeB, 0.28f);
+    }
+
+    // A body as drawn: a concave body by its pieces, filled, its outline as written, and the seams between its
+    // pieces dashed (they are no surface: nothing collides with them); any other body by its shape.
+    void DrawBody(const Body& body, Color color, float fill)
+    {
+        if (!body.IsConcave())
+        {
+            DrawShape(body.shape, body.Xf(), color, fill);
+            return;
+        }
+        const Transform xf = body.Xf();
+        for (const ConcavePart& part : body.concave.parts)
+        {
+            std::vector<ScreenPoint> piece;
+            for (const Vec2& v : part.shape.polygon.Vertices())
+            {
+                piece.push_back(At(TransformPoint(xf, v)));
+            }
+            canvas_.FillConvex(piece.data(), static_cast<int>(piece.size()), WithAlpha(color, fill));
+        }
+        const float dash = 6.0f;
+        for (const ConcavePart& part : body.concave.parts)
+        {
+            const Polygon& polygon = part.shape.polygon;
+            for (int e = 0; e < polygon.Count(); ++e)
+            {
+                if (!part.internal[static_cast<size_t>(e)])
+                {
+                    continue;
+                }
+                const ScreenPoint a = At(TransformPoint(xf, polygon.Vertices()[e]));
+                const ScreenPoint b = At(TransformPoint(xf, polygon.Vertices()[(e + 1) % polygon.Count()]));
+                const float length = std::hypot(b.x - a.x, b.y - a.y);
+                for (float t = 0.0f; t < length; t += 2.0f * dash)
+                {
+                    const float u = t / length, w = std::min(t + dash, length) / length;
+                    canvas_.Segment({a.x + u * (b.x - a.x), a.y + u * (b.y - a.y)},
+                                    {a.x + w * (b.x - a.x), a.y + w * (b.y - a.y)}, WithAlpha(color, 0.6f), 1.0f);
+                }
+            }
+        }
+        std::vector<ScreenPoint> outline;
+        for (const Vec2& v : body.outline)
+        {
+            outline.push_back(At(TransformPoint(xf, v)));
+        }
+        canvas_.Polyline(outline.data(), static_cast<int>(outline.size()), true, color, kOutline);
     }
 
     // True when the shape placed by xf lies wholly outside the picture (a body the camera does not see), judged by

@@ -420,7 +420,10 @@ int main(int argc, char** argv)
     for (size_t s = 0; s < scenes.size(); ++s)
     {
         const std::string& file = scenes[s];
-        satviz::SceneResult loaded = satviz::LoadScene(file);
+        // A polygon may be concave: it is drawn by its pieces and stepped as one body.
+        satviz::SceneOptions sceneOptions;
+        sceneOptions.concave = true;
+        satviz::SceneResult loaded = satviz::LoadScene(file, sceneOptions);
         if (!loaded.Ok())
         {
             std::fprintf(stderr, "satviz-render: %s\n", loaded.error.c_str());

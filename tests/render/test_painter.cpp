@@ -1650,3 +1650,97 @@ TEST_CASE("A body wholly outside the picture is not drawn, and one inside it is"
     scene.bodies[2].position = scene.bodies[0].position + Vec2{1000.0, 0.0};
     CHECK(outlines(scene) == 2);
 }
+
+TEST_CASE("A concave body is drawn by its pieces, its outline as written and its seams dashed", "[painter][concave]")
+{
+    SceneOptions concave;
+    concave.concave = true;
+    const SceneResult loaded = ParseScene(
+        R"({"bodies": [{"name": "ground", "box": [8, 0.5], "position": [0, -0.25], "static": true},
+                       {"name": "L", "polygon": [[0,0],[3,0],[3,1],[1,1],[1,3],[0,3]], "position": [-1, 0.5]}],
+            "view": {"layers": ["shapes"]}})",
+        "l.json", concave);
+    INFO(loaded.error);
+    REQUIRE(loaded.Ok());
+    const Scene& scene = loaded.scene;
+    const Body& ell = scene.bodies[1];
+    REQUIRE(ell.IsConcave());
+    FigureSetup setup = SetUpFigure(scene, FigureOptions{});
+    const RecordingCanvas canvas = Paint(scene, setup, 0, kLayerShapes);
+    const View& view = setup.figure.view;
+    const auto screen = [&](Vec2 p) { return ToScreen(view, TransformPoint(ell.Xf(), p)); };
+    const auto same = [](ScreenPoint a, ScreenPoint b) { return std::abs(a.x - b.x) < 1e-3f && std::abs(a.y - b.y) < 1e-3f; };
+    // Each piece filled, at its own vertices.
+    size_t piecesFilled = 0;
+    for (const ConcavePart& part : ell.concave.parts)
+    {
+        for (const DrawCommand& c : canvas.commands)
+        {
+            if (c.kind != DrawCommand::Kind::FillConvex || c.points.size() != static_cast<size_t>(part.shape.polygon.Count()))
+            {
+                continue;
+            }
+            bool all = true;
+            for (int k = 0; k < part.shape.polygon.Count(); ++k)
+            {
+                all = all && same(c.points[static_cast<size_t>(k)], screen(part.shape.polygon.Vertices()[k]));
+            }
+            piecesFilled += all ? 1 : 0;
+        }
+    }
+    CHECK(piecesFilled == ell.concave.parts.size());
+    // The outline: the six vertices as written, closed, not the hull's five.
+    bool outlined = false;
+    for (const DrawCommand& c : canvas.commands)
+    {
+        if (c.kind == DrawCommand::Kind::Polyline && c.closed && c.points.size() == ell.outline.size())
+        {
+            bool all = true;
+            for (size_t k = 0; k < ell.outline.size(); ++k)
+            {
+                all = all && same(c.points[k], screen(ell.outline[k]));
+            }
+            outlined = outlined || all;
+        }
+    }
+    CHECK(outlined);
+    // The seam, wherever the decomposition cut: every dash lies on the internal edge, and the dashes
+    // cover less than the seam's length (gaps between them).
+    Vec2 seamA{}, seamB{};
+    int seams = 0;
+    for (const ConcavePart& part : ell.concave.parts)
+    {
+        for (int e = 0; e < part.shape.polygon.Count(); ++e)
+        {
+            if (part.internal[static_cast<size_t>(e)])
+            {
+                seamA = part.shape.polygon.Vertices()[e];
+                seamB = part.shape.polygon.Vertices()[(e + 1) % part.shape.polygon.Count()];
+                ++seams;
+            }
+        }
+    }
+    REQUIRE(seams == 2); // the one seam, once from each side
+    const ScreenPoint a = screen(seamA), b = screen(seamB);
+    const float length = std::hypot(b.x - a.x, b.y - a.y);
+    float dashed = 0.0f;
+    int dashes = 0;
+    for (const DrawCommand& c : canvas.commands)
+    {
+        if (c.kind != DrawCommand::Kind::Segment || c.group != "shapes")
+        {
+            continue;
+        }
+        for (const ScreenPoint& p : c.points)
+        {
+            // On the line through the seam, within it.
+            const float cross = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+            CHECK(std::abs(cross) / length < 1e-2f);
+        }
+        dashed += std::hypot(c.points[1].x - c.points[0].x, c.points[1].y - c.points[0].y);
+        ++dashes;
+    }
+    CHECK(dashes >= 4);
+    CHECK(dashed < 2.0f * length * 0.75f);
+    CHECK(dashed > 2.0f * length * 0.25f);
+}

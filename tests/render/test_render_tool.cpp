@@ -90,7 +90,8 @@ TEST_CASE("satviz-render: a bad scene gets one error line and the rest of the ba
 {
     const fs::path dir = FreshDirectory("render-batch");
     fs::create_directories(dir);
-    std::ofstream(dir / "broken.json") << R"({"bodies": [{"polygon": [[0, 0], [1, 0], [1, 1], [0.9, 0.2]]}]})";
+    // A polygon that crosses itself (a concave one would be cut into pieces and drawn).
+    std::ofstream(dir / "broken.json") << R"({"bodies": [{"polygon": [[0, 0], [2, 0], [0, 2], [2, 2]]}]})";
     std::ofstream(dir / "badview.json")
         << R"({"bodies": [{"box": [1, 1]}, {"box": [1, 1]}], "view": {"layers": ["shapes", "mvt"]}})";
     const Run run = Render(Scene("overlapping_boxes.json") + " " + (dir / "broken.json").string() + " " +
