@@ -1347,6 +1347,35 @@ TEST_CASE("Text in the panels wraps between words only: a number is never split,
     // A code line keeps its indentation on its first line; a newline always ends a line.
     CHECK(WrapToWidth("  satviz-query --trace", 1000.0f) == "  satviz-query --trace");
     CHECK(WrapToWidth("a\n\nb", 1000.0f) == "a\n\nb");
+    // A web address wider than the column (the lessons' references) goes on over lines that each fit, broken where
+    // an address reads as going on: after a '/' or before a '.', '-' and the like.
+    const std::string link = "<https://www.metanetsoftware.com/2016/n-tutorial-a-collision-detection-and-response>";
+    for (float width = 160.0f; width <= 400.0f; width += 40.0f)
+    {
+        const std::string wrapped = WrapToWidth("Read " + link + ".", width);
+        INFO(width << " px:\n" << wrapped);
+        std::vector<std::string> lines;
+        std::stringstream in(wrapped);
+        for (std::string line; std::getline(in, line);)
+        {
+            CHECK(ImGui::CalcTextSize(line.c_str()).x <= width);
+            lines.push_back(line);
+        }
+        REQUIRE(lines.size() >= 2);
+        CHECK(lines.front() == "Read");
+        std::string joined;
+        for (size_t i = 1; i < lines.size(); ++i)
+        {
+            joined += lines[i];
+            if (i + 1 < lines.size())
+            {
+                const bool natural =
+                    lines[i].back() == '/' || std::string(".-?#&=_").find(lines[i + 1].front()) != std::string::npos;
+                CHECK(natural);
+            }
+        }
+        CHECK(joined == link + ".");
+    }
 }
 
 TEST_CASE("The bundled scenes are found from the program's folder: the data folder, else tutorials/ above it", "[app]")

@@ -16,7 +16,9 @@ namespace satviz
 std::vector<std::string> WrapWords(const std::string& text);
 
 /// `text` broken into lines no wider than `width` as `measure` measures them, greedily, between the words of
-/// WrapWords only: a word wider than `width` gets a line of its own rather than being broken. A newline in `text`
+/// WrapWords only: a word wider than `width` gets a line of its own rather than being broken, except a web address
+/// (a word with "://"), which goes on over as many lines as it needs, broken after a '/' or before a '.', '-', '?',
+/// '#', '&', '=' or '_' where it can, so that it is never cut at the panel's edge. A newline in `text`
 /// always ends a line (an empty line stays empty); leading spaces of a line are kept on its first line.
 std::vector<std::string> WrapLines(const std::string& text, float width,
                                    const std::function<float(const std::string&)>& measure);
