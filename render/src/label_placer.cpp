@@ -115,9 +115,9 @@ void LabelPlacer::ReserveBand(const ScreenRect& rect)
     bands_.push_back(rect);
 }
 
-void LabelPlacer::ReserveLine(ScreenPoint a, ScreenPoint b, float thickness)
+void LabelPlacer::ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, LabelRank from)
 {
-    lines_.push_back({a, b, thickness});
+    lines_.push_back({a, b, thickness, from});
 }
 
 void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
@@ -196,7 +196,7 @@ bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
     return true;
 }
 
-bool LabelPlacer::Free(const ScreenRect& rect, float spacing) const
+bool LabelPlacer::Free(const ScreenRect& rect, float spacing, LabelRank rank) const
 {
     const ScreenRect foot = Footprint(rect);
     const ScreenRect spaced{foot.minX - spacing, foot.minY, foot.maxX + spacing, foot.maxY};
@@ -206,6 +206,10 @@ bool LabelPlacer::Free(const ScreenRect& rect, float spacing) const
     }
     for (const Line& line : lines_)
     {
+        if (rank < line.from)
+        {
+            continue;
+        }
         const float r = 0.5f * line.thickness;
         ScreenPoint a = line.a;
         ScreenPoint b = line.b;
@@ -267,7 +271,8 @@ void LabelPlacer::Flush(Color halo)
             {
                 const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
                 const ScreenRect rect = Around(label->anchor, size, start + c.turn * 0.25 * kPi, reach);
-                if (Inside(rect) && Free(rect, pass == 0 ? kLabelSpacing : 0.0f) && !InOutline(label->avoid, rect, label->edgesOnly))
+                if (Inside(rect) && Free(rect, pass == 0 ? kLabelSpacing : 0.0f, label->rank) &&
+                    !InOutline(label->avoid, rect, label->edgesOnly))
                 {
                     chosen = rect;
                     found = true;
@@ -283,7 +288,7 @@ void LabelPlacer::Flush(Color halo)
             {
                 const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
                 const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
-                if (Inside(rect) && Free(rect, 0.0f) && !InOutline(label->avoid, rect, label->edgesOnly) &&
+                if (Inside(rect) && Free(rect, 0.0f, label->rank) && !InOutline(label->avoid, rect, label->edgesOnly) &&
                     LeaderClear(label->anchor, rect))
                 {
                     chosen = rect;
@@ -315,7 +320,7 @@ void LabelPlacer::Flush(Color halo)
             const LeaderLine line = Leader(label->anchor, chosen);
             if (line.drawn)
             {
-                lines_.push_back({line.from, line.to, 1.0f});
+                lines_.push_back({line.from, line.to, 1.0f, LabelRank::Vertex});
             }
         }
     }

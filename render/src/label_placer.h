@@ -37,8 +37,9 @@ class LabelPlacer
     /// cover it, and a vertex number or an edge name whose anchor it hides is left out.
     void ReserveBand(const ScreenRect& rect);
     /// Marks a line no label may cover, `thickness` pixels wide: one drawn over the labels, or one a label's halo
-    /// would hide (a projection bar, a marked face).
-    void ReserveLine(ScreenPoint a, ScreenPoint b, float thickness);
+    /// would hide (a projection bar, a marked face). With `from` above LabelRank::Vertex only labels of that rank
+    /// and above keep off it: a vertex number or an edge name may still sit on it rather than be left out.
+    void ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, LabelRank from = LabelRank::Vertex);
     /// Adds `text` near `anchor`, `distance` pixels away, preferring the direction (dx, dy) (any length).
     void Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
                float distance = 6.0f, LabelRank rank = LabelRank::Note);
@@ -67,6 +68,7 @@ class LabelPlacer
     {
         ScreenPoint a, b;
         float thickness;
+        LabelRank from = LabelRank::Vertex; // the lowest rank of label that keeps off the line
     };
     struct LeaderLine
     {
@@ -75,7 +77,7 @@ class LabelPlacer
     };
     static LeaderLine Leader(ScreenPoint anchor, const ScreenRect& rect);
     bool LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const;
-    bool Free(const ScreenRect& rect, float spacing) const;
+    bool Free(const ScreenRect& rect, float spacing, LabelRank rank) const;
     bool Inside(const ScreenRect& rect) const;
     Canvas& canvas_;
     float width_;

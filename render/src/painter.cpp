@@ -1321,6 +1321,9 @@ class Painter
         const ScreenRect scene{0.0f, layout_.sceneTop + 4.0f, Width(), layout_.sceneBottom - 4.0f};
         if (ClipSegment(a, b, scene))
         {
+            // The gap's size or a note on the line would hide it and read as naming it; a vertex number or an edge
+            // name may still sit on it, rather than be left out where the line runs close beside its edge.
+            labels_.ReserveLine(a, b, 2.5f, LabelRank::Note);
             labels_.Place(a.y < b.y ? a : b, "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f, 6.0f,
                           LabelRank::Verdict);
         }
