@@ -205,8 +205,15 @@ std::string TextbookAxisStep(const Scene& scene, const PairStudy& study, int ste
     const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(step)];
     const std::string& nameA = NameOf(scene, study, 0);
     const std::string& nameB = NameOf(scene, study, 1);
-    std::string text = StepName(scene, study, step) + ": " + DescribeFaces(scene, study, t.faces, t.faceCount) + ". " + nameA + " projects to " +
-                       Interval(t.minA, t.maxA) + ", " + nameB + " to " + Interval(t.minB, t.maxB) + ". ";
+    // A's name begins a sentence here: capitalised, as a textbook would ("... edge 2. Floor projects to ...").
+    std::string sentenceA = nameA;
+    if (!sentenceA.empty() && sentenceA[0] >= 'a' && sentenceA[0] <= 'z')
+    {
+        sentenceA[0] = static_cast<char>(sentenceA[0] - 'a' + 'A');
+    }
+    std::string text = StepName(scene, study, step) + ": " + DescribeFaces(scene, study, t.faces, t.faceCount) +
+                       ". " + sentenceA + " projects to " + Interval(t.minA, t.maxA) + ", " + nameB + " to " +
+                       Interval(t.minB, t.maxB) + ". ";
     if (t.separating)
     {
         return text + "Gap " + ShownGap(t) +

@@ -233,7 +233,7 @@ TEST_CASE("A box above a floor: the textbook step shows a gap and stops, the fac
     CHECK(first.rfind("Axis 1 of 2: the normal of floor's edge 2 (floor's edge 0 and box's edges 0 and 2 are "
                       "parallel to that edge)",
                       0) == 0);
-    CHECK(first.find("floor projects to [-0.25, 0.25], box to [0.70, 1.30]") != std::string::npos);
+    CHECK(first.find("Floor projects to [-0.25, 0.25], box to [0.70, 1.30]") != std::string::npos);
     CHECK(first.find("Gap 0.45 between them: this axis separates the shapes") != std::string::npos);
     CHECK(first.find("overlap") == std::string::npos);
     CHECK(first.find("push") == std::string::npos);
