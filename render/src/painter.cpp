@@ -1516,6 +1516,56 @@ class Painter
         }
     }
 
+    // Where to name a face from: the middle of its longest stretch outside `other` (a convex outline on screen),
+    // or its middle when none of it lies outside. A face whose middle the other body covers (a box sunk into a
+    // wide slab) is named beside the part that shows, not beside the other body's edge lying over it.
+    static ScreenPoint FreeMiddle(ScreenPoint a, ScreenPoint b, const std::vector<ScreenPoint>& other)
+    {
+        auto inside = [&](ScreenPoint p) {
+            int sign = 0;
+            for (size_t i = 0; i < other.size(); ++i)
+            {
+                const ScreenPoint& u = other[i];
+                const ScreenPoint& v = other[(i + 1) % other.size()];
+                const float cross = (v.x - u.x) * (p.y - u.y) - (v.y - u.y) * (p.x - u.x);
+                const int s = cross > 0.0f ? 1 : (cross < 0.0f ? -1 : 0);
+                if (s == 0 || (sign != 0 && s != sign))
+                {
+                    return false;
+                }
+                sign = s;
+            }
+            return other.size() >= 3;
+        };
+        constexpr int kSamples = 40;
+        int bestStart = -1, bestLength = 0, runStart = -1;
+        for (int i = 0; i <= kSamples + 1; ++i)
+        {
+            const float t = static_cast<float>(i) / kSamples;
+            const bool out = i <= kSamples && !inside({a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t});
+            if (out && runStart < 0)
+            {
+                runStart = i;
+            }
+            if (!out && runStart >= 0)
+            {
+                if (i - runStart > bestLength)
+                {
+                    bestLength = i - runStart;
+                    bestStart = runStart;
+                }
+                runStart = -1;
+            }
+        }
+        // All of it outside, or none: the middle.
+        if (bestStart < 0 || bestLength > kSamples)
+        {
+            return {0.5f * (a.x + b.x), 0.5f * (a.y + b.y)};
+        }
+        const float t = (static_cast<float>(bestStart) + 0.5f * static_cast<float>(bestLength - 1)) / kSamples;
+        return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+    }
+
     // The reference face, the incident edge and the two side planes that clip it.
     void ClipPlanes(const ClipTrace& clip)
     {
@@ -1533,7 +1583,15 @@ class Painter
         // Labels go beside the reference face and the incident edge, not over them.
         labels_.ReserveLine(r1, r2, 5.0f);
         // Each name on its own body's side of the contact, out of the other body, where it reads as that body's.
-        labels_.PlaceOutside(OutlineOf(1 - referenceShape), At(0.5 * (clip.referenceV1 + clip.referenceV2)),
+        // Named from the part of the face the figure shows.
+        ScreenPoint shown1 = r1;
+        ScreenPoint shown2 = r2;
+        if (!ClipSegment(shown1, shown2, bounds_))
+        {
+            shown1 = r1;
+            shown2 = r2;
+        }
+        labels_.PlaceOutside(OutlineOf(1 - referenceShape), FreeMiddle(shown1, shown2, OutlineOf(1 - referenceShape)),
                              "reference face", TextStyle::Label, InkOf(referenceShape), static_cast<float>(-n.x),
                              static_cast<float>(n.y), 10.0f, LabelRank::Verdict);
         const ScreenPoint i1 = At(clip.incidentV1);
