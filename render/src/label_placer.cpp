@@ -65,14 +65,32 @@ bool InsideConvex(const std::vector<ScreenPoint>& outline, ScreenPoint p)
 // Whether a label's rectangle reads as lying in the outline: its centre inside it, one of the outline's edges
 // through its text (a label astride the outline's edge reads as either body's, and its halo hides that edge), or
 // two of the points a quarter in from its corners.
-// A label whose anchor lies inside the outline only keeps its text off the outline's edges.
-bool InOutline(const std::vector<ScreenPoint>& outline, const ScreenRect& rect, bool edgesOnly)
+// Whether the segments pq and uv cross.
+bool Cross(ScreenPoint p, ScreenPoint q, ScreenPoint u, ScreenPoint v)
+{
+    auto side = [](ScreenPoint a, ScreenPoint b, ScreenPoint c) {
+        return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    };
+    return side(p, q, u) * side(p, q, v) < 0.0f && side(u, v, p) * side(u, v, q) < 0.0f;
+}
+
+// A label whose anchor lies inside the outline only keeps its text off the outline's edges. One whose anchor lies
+// outside also stays on the anchor's side of the outline: a label with the other body between it and its anchor
+// (a ball's name beyond the wall it rests against) reads as that body's.
+bool InOutline(const std::vector<ScreenPoint>& outline, const ScreenRect& rect, bool edgesOnly, ScreenPoint anchor)
 {
     const float cx = 0.5f * (rect.minX + rect.maxX);
     const float cy = 0.5f * (rect.minY + rect.maxY);
     if (!edgesOnly && InsideConvex(outline, {cx, cy}))
     {
         return true;
+    }
+    for (size_t i = 0; !edgesOnly && i < outline.size() && outline.size() >= 3; ++i)
+    {
+        if (Cross(anchor, {cx, cy}, outline[i], outline[(i + 1) % outline.size()]))
+        {
+            return true;
+        }
     }
     // An edge that only grazes the rectangle's rim runs beside the text, not through it.
     const ScreenRect text{rect.minX + 1.0f, rect.minY + 2.0f, rect.maxX - 1.0f, rect.maxY - 2.0f};
@@ -272,7 +290,7 @@ void LabelPlacer::Flush(Color halo)
                 const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
                 const ScreenRect rect = Around(label->anchor, size, start + c.turn * 0.25 * kPi, reach);
                 if (Inside(rect) && Free(rect, pass == 0 ? kLabelSpacing : 0.0f, label->rank) &&
-                    !InOutline(label->avoid, rect, label->edgesOnly))
+                    !InOutline(label->avoid, rect, label->edgesOnly, label->anchor))
                 {
                     chosen = rect;
                     found = true;
@@ -288,7 +306,8 @@ void LabelPlacer::Flush(Color halo)
             {
                 const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
                 const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
-                if (Inside(rect) && Free(rect, 0.0f, label->rank) && !InOutline(label->avoid, rect, label->edgesOnly) &&
+                if (Inside(rect) && Free(rect, 0.0f, label->rank) &&
+                    !InOutline(label->avoid, rect, label->edgesOnly, label->anchor) &&
                     LeaderClear(label->anchor, rect))
                 {
                     chosen = rect;

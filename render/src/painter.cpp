@@ -1661,13 +1661,13 @@ class Painter
             }
             else if (wide < text.x + 8.0f && tall >= 2.0f * text.y)
             {
-                labels_.Place(At({right.x, center.y}), body.name, TextStyle::Heading, InkOf(s), 1.0f, 0.0f, 6.0f,
-                              LabelRank::Name);
+                labels_.PlaceOutside(OutlineOf(1 - s), At({right.x, center.y}), body.name, TextStyle::Heading,
+                                     InkOf(s), 1.0f, 0.0f, 6.0f, LabelRank::Name);
             }
             else
             {
-                labels_.Place(At({center.x, low.y}), body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, 6.0f,
-                              LabelRank::Name);
+                labels_.PlaceOutside(OutlineOf(1 - s), At({center.x, low.y}), body.name, TextStyle::Heading,
+                                     InkOf(s), 0.0f, 1.0f, 6.0f, LabelRank::Name);
             }
         }
     }
