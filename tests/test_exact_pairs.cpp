@@ -676,6 +676,9 @@ TEST_CASE("Boxes that pass each other corner to corner graze: a miss, and a hair
         RequireSweepAsReference(b, xfB, a, xfA, -v, true);
         const SweepResult r = Sweep(MakeShape(a), xfA, Vec2{}, MakeShape(b), xfB, v);
         REQUIRE(r.status == (cut ? SweepStatus::Hit : SweepStatus::Miss));
+        // The textbook sweep by intervals: the latest entry and the earliest exit are the same time when grazing.
+        const TextbookSweepResult t = TextbookSweep(MakeShape(a), xfA, Vec2{}, MakeShape(b), xfB, v);
+        REQUIRE(t.status == (cut ? SweepStatus::Hit : SweepStatus::Miss));
     }
 }
 

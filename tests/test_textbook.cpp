@@ -400,3 +400,35 @@ TEST_CASE("Circles touching each other or a box's face overlap with depth 0 in t
         }
     }
 }
+
+TEST_CASE("Boxes passing corner to corner graze in the textbook sweep: a miss, and a 64th closer a hit",
+          "[textbook][sweep]")
+{
+    // A is the square [-1, 1]^2. B, the same square, starts centred at (-4, y0) and moves by (4, 4) over the step. On
+    // x the intervals overlap for t in (1/2, 3/2); on y, with y0 = 0, for t in (-1/2, 1/2): they share the instant
+    // t = 1/2 only, when B's lower right corner is A's upper left corner. With y0 = -1/64 the y overlap lasts until
+    // t = 1/2 + 1/256: a hit at t = 1/2. Every number is a sum of powers of 2, exact. The scene is turned by each
+    // quarter turn, which maps the lattice to itself exactly.
+    const Shape box = BoxShape(1.0, 1.0);
+    for (int turn = 0; turn < 4; ++turn)
+    {
+        const Rot q = QuarterTurn(turn);
+        for (int closer = 0; closer < 2; ++closer)
+        {
+            const Vec2 start{-4.0, closer == 0 ? 0.0 : -1.0 / 64.0};
+            const Vec2 v = Rotate(q, Vec2{4.0, 4.0});
+            const Transform xfA{Vec2{}, q};
+            const Transform xfB{Rotate(q, start), q};
+            INFO("quarter turns " << turn << (closer == 0 ? ", grazing" : ", a 64th closer"));
+            const TextbookSweepResult t = TextbookSweep(box, xfA, Vec2{}, box, xfB, v);
+            REQUIRE(t.status == (closer == 0 ? SweepStatus::Miss : SweepStatus::Hit));
+            if (closer == 1)
+            {
+                REQUIRE(t.toi == 0.5);
+            }
+            // B standing still and A moving the other way is the same motion.
+            const TextbookSweepResult back = TextbookSweep(box, xfB, Vec2{}, box, xfA, -v);
+            REQUIRE(back.status == t.status);
+        }
+    }
+}

@@ -321,3 +321,37 @@ TEST_CASE("A box falling at up to its speculative reach per step lands on the gr
         }
     }
 }
+
+TEST_CASE("A box falling within its reach of the ground has a speculative contact that closes the gap in the step",
+          "[world][speculative]")
+{
+    // At the start of a step the box's bottom is `gap` above the ground and falls (|v| + g dt) dt in the step, its
+    // reach: within the reach the pair must have a contact with that gap (a speculative one), and the box must
+    // close the gap within the step, landing on the ground (within the slop), not stopping where it was.
+    for (double speed : {10.0, 20.0, 40.0})
+    {
+        World world = WorldWithGravity(kGravity);
+        AddGround(world);
+        const int box = AddDynamic(world, BoxShape(0.5, 0.5), {0.0, 0.5 + 3.0}, 0.0, {0.0, -speed});
+        int speculative = 0;
+        for (int i = 0; i < 30; ++i)
+        {
+            const double gap = world.bodies[box].position.y - 0.5;
+            const double v = world.bodies[box].velocity.y;
+            const double reach = (std::abs(v) + kGravity * kDt) * kDt;
+            Step(world, kDt);
+            if (gap <= 0.05 || gap >= 0.9 * reach)
+            {
+                continue;
+            }
+            INFO("falling at " << speed << ", step " << i << ": gap " << gap << ", reach " << reach << ", bottom after "
+                               << world.bodies[box].position.y - 0.5);
+            REQUIRE(world.contacts.size() == 1);
+            CHECK(world.contacts[0].points[0].separation > 0.0);
+            CHECK(std::abs(world.bodies[box].position.y - 0.5) <= world.settings.linearSlop);
+            ++speculative;
+        }
+        INFO("falling at " << speed);
+        CHECK(speculative >= 1);
+    }
+}

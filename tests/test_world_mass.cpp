@@ -321,6 +321,71 @@ TEST_CASE("CombineMaterials takes the larger restitution and the geometric mean 
     CHECK(mixed.staticFriction == Approx(0.5).epsilon(1e-15));
 }
 
+TEST_CASE("ComputeMass of lopsided polygons matches a sum over the cells of a fine grid", "[world][mass]")
+{
+    // Polygons with most vertices bunched on one side, so that the mean of the vertices lies far from the centre of
+    // mass. The oracle sums the cells of a 1000 x 1000 grid whose centres lie inside: no formula of the polygon's
+    // outline is used. The sum is off by about a cell's width along the outline, well below 1e-2 of each value.
+    Rng rng(20261127);
+    for (int i = 0; i < 12; ++i)
+    {
+        std::vector<Vec2> points{{-2.0, rng.Uniform(-0.5, 0.5)}};
+        const int bunched = rng.Int(5, 9);
+        for (int k = 0; k < bunched; ++k)
+        {
+            const double angle = -1.2 + 2.4 * k / (bunched - 1);
+            points.push_back({1.0 + 0.3 * std::cos(angle), std::sin(angle)});
+        }
+        const Shape shape = PolygonShape(points);
+        const Polygon& polygon = shape.polygon;
+        const double density = rng.Uniform(0.5, 3.0);
+        const MassProperties mass = ComputeMass(shape, density);
+        double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+        for (const Vec2& v : polygon.Vertices())
+        {
+            lo[0] = std::min(lo[0], v.x), hi[0] = std::max(hi[0], v.x);
+            lo[1] = std::min(lo[1], v.y), hi[1] = std::max(hi[1], v.y);
+        }
+        constexpr int kCells = 1000;
+        const double w = (hi[0] - lo[0]) / kCells, h = (hi[1] - lo[1]) / kCells;
+        double area = 0.0, sx = 0.0, sy = 0.0, polar = 0.0;
+        for (int r = 0; r < kCells; ++r)
+        {
+            for (int c = 0; c < kCells; ++c)
+            {
+                const Vec2 p{lo[0] + (c + 0.5) * w, lo[1] + (r + 0.5) * h};
+                bool inside = true;
+                for (int f = 0; f < polygon.Count() && inside; ++f)
+                {
+                    inside = Dot(polygon.Normal(f), p - polygon.Vertices()[f]) <= 0.0;
+                }
+                if (inside)
+                {
+                    area += w * h;
+                    sx += w * h * p.x;
+                    sy += w * h * p.y;
+                    polar += w * h * LengthSquared(p);
+                }
+            }
+        }
+        const Vec2 center{sx / area, sy / area};
+        const double inertia = density * (polar - area * LengthSquared(center));
+        Vec2 mean{};
+        for (const Vec2& v : polygon.Vertices())
+        {
+            mean = mean + (1.0 / polygon.Count()) * v;
+        }
+        INFO("polygon " << i << ": mass " << mass.mass << " against " << density * area << ", centre (" << mass.center.x
+                        << ", " << mass.center.y << ") against (" << center.x << ", " << center.y
+                        << "), inertia " << mass.inertia << " against " << inertia);
+        // Lopsided: the centre lies far from the mean of the vertices.
+        REQUIRE(Length(center - mean) > 0.3);
+        CHECK(Near(mass.mass, density * area, 1e-2));
+        CHECK(Length(mass.center - center) <= 1e-2);
+        CHECK(Near(mass.inertia, inertia, 1e-2));
+    }
+}
+
 TEST_CASE("ValidateBodyDef names the field that is wrong", "[world][validate]")
 {
     BodyDef good;

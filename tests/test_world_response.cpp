@@ -930,3 +930,20 @@ TEST_CASE("A ball dropped on a dead floor bounces with its own restitution, the 
         CHECK(std::abs(out / in - 0.8) <= 0.01);
     }
 }
+
+TEST_CASE("A box on a 20 degree slope whose static friction is below tan 20 slides with a = g (sin - mu cos), mu the "
+          "dynamic friction",
+          "[world][friction][slope]")
+{
+    // Static friction 0.3 < tan 20 = 0.364 cannot hold the box; once it slides only the dynamic friction 0.2 acts.
+    const double mu = 0.2;
+    World world = SlopeWorld(mu, 0.3);
+    const Vec2 start = world.bodies[1].position;
+    const double a = kGravity * (std::sin(kSlope) - mu * std::cos(kSlope));
+    StepN(world, 120);
+    const double t = world.time;
+    const double expected = 0.5 * a * t * t;
+    const double travelled = DownSlope(world, start);
+    INFO("after t = " << t << ": travelled " << travelled << " down the slope, expected " << expected);
+    CHECK(std::abs(travelled - expected) <= 0.02 * expected);
+}

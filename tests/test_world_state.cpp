@@ -330,3 +330,14 @@ TEST_CASE("A disc spinning in place on frictionless ground keeps spinning and ne
     CHECK(std::abs(world.bodies[disc].angularVelocity - 2.0) <= 1e-9);
     CHECK(std::abs(world.bodies[disc].angle - 2.0 * world.time) <= 1e-6);
 }
+
+TEST_CASE("A wheel turning in empty space keeps turning and never sleeps", "[world][sleep]")
+{
+    // No gravity, no contact: its centre rests but it turns at 1 rad/s, and nothing acts on it.
+    World world;
+    const int wheel = AddDynamic(world, BoxShape(0.5, 0.1), {1.0, 2.0}, 0.0, {}, 1.0);
+    StepN(world, 120);
+    INFO("after 2 s: spin " << world.bodies[wheel].angularVelocity << ", angle " << world.bodies[wheel].angle);
+    CHECK(world.bodies[wheel].awake);
+    CHECK(std::abs(world.bodies[wheel].angle - world.time) <= 1e-9);
+}

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Mutation testing: plants each one-line bug of tests/mutation/mutations.txt in a copy of the sources, builds the
-# core tests (satviz_tests) and runs them; a mutation is caught when a test fails (or hangs), missed when they all
+# test programs its "tests:" lines name, runs them with the Catch2 test spec of each line and lists every test case
+# that fails (without "tests:" lines, all of satviz_tests up to the first failure); a mutation is caught when a test fails (or hangs), missed when they all
 # pass. The checkout is never modified: the copy lives in a work directory (default build/mutation), kept between
 # runs so that each mutation rebuilds only what its file touches; each run first makes the copy equal to the
 # checkout again (an interrupted run may have left a mutation in it). The tests' output for each mutation is kept
@@ -13,7 +14,8 @@
 #   tests/mutation/run.sh --check         only check that every mutation applies (its fragment occurs once)
 #
 # Environment: SATVIZ_MUTATION_DIR (work directory), SATVIZ_MUTATION_JOBS (build jobs, default 1),
-# SATVIZ_MUTATION_TIMEOUT (seconds per test run; default four times the unmutated run, at least 300).
+# SATVIZ_MUTATION_TIMEOUT (seconds per test run; default four times the unmutated run of the same tests, at least 60).
+# The build uses ccache when it is installed, so that restoring a file after its mutation costs no compilation.
 # Exit status: 0 when every mutation run was caught, 1 when one was missed or did not compile, 2 on a setup error.
 set -euo pipefail
 
@@ -30,10 +32,10 @@ die() {
 
 # The mutations of the list (see its header): id, file, original fragment and replacement of each, and what it
 # breaks.
-declare -a ids=() files=() froms=() tos=()
+declare -a ids=() files=() froms=() tos=() runs=()
 declare -A descriptions=()
 parse() {
-    local id="" file="" from="" to="" what="" line key value
+    local id="" file="" from="" to="" what="" tests="" line key value
     local have_from=0 have_to=0
     flush() {
         if [[ -n "$id" ]]; then
@@ -43,9 +45,10 @@ parse() {
             files+=("$file")
             froms+=("$from")
             tos+=("$to")
+            runs+=("${tests:-satviz_tests}")
             descriptions[$id]="$what"
         fi
-        id="" file="" from="" to="" what="" have_from=0 have_to=0
+        id="" file="" from="" to="" what="" tests="" have_from=0 have_to=0
     }
     while IFS= read -r line || [[ -n "$line" ]]; do
         [[ "$line" =~ ^[[:space:]]*(#|$) ]] && continue
@@ -63,6 +66,10 @@ parse() {
         file) file="$value" ;;
         from) from="$value" have_from=1 ;;
         to) to="$value" have_to=1 ;;
+        tests)
+            [[ "$value" =~ ^satviz_[a-z_]+(\ .+)?$ ]] || die "$list: [$id]: tests: a test program, then a test spec"
+            tests="${tests:+$tests$'\n'}$value"
+            ;;
         *) die "$list: [$id]: unknown key '$key'" ;;
         esac
     done <"$list"
@@ -111,11 +118,11 @@ check() {
     return $bad
 }
 
-# The sources the core tests need, copied into the work tree where they differ (so that make rebuilds only those).
+# The sources the tests need, copied into the work tree where they differ (so that make rebuilds only those).
 sync_sources() {
     local path
     mkdir -p "$work/src"
-    (cd "$root" && find CMakeLists.txt cmake core tests tutorials/CMakeLists.txt tutorials/figures.cmake -type f \
+    (cd "$root" && find CMakeLists.txt cmake core render tests tutorials/CMakeLists.txt tutorials/figures.cmake tutorials/scenes -type f \
         -not -path 'tests/fuzz/corpus/*' -not -path 'tests/data/*' -print) |
         while IFS= read -r path; do
             if ! cmp -s "$root/$path" "$work/src/$path"; then
@@ -125,30 +132,62 @@ sync_sources() {
         done
 }
 
+# Builds the test programs of the given "tests:" lines.
 build() {
-    cmake --build "$work/build" --target satviz_tests -j "$jobs" >"$work/build.log" 2>&1
+    local targets
+    targets="$(printf '%s\n' "$@" | awk '{ print $1 }' | sort -u | tr '\n' ' ')"
+    # shellcheck disable=SC2086
+    cmake --build "$work/build" --target $targets -j "$jobs" >"$work/build.log" 2>&1
 }
 
-# Runs the tests, stopping at the first failure; sets `caught_by` to the first failing test case and `verdict`.
-run_tests() {
-    local seconds="$1" status=0
-    timeout "$seconds" "$work/build/tests/satviz_tests" --abort >"$work/test.log" 2>&1 || status=$?
-    caught_by=""
-    if [[ $status == 0 ]]; then
-        verdict="missed"
-    elif [[ $status == 124 ]]; then
-        verdict="caught"
-        caught_by="(no answer within ${seconds} s)"
+# Runs one "tests:" line (a program and an optional Catch2 test spec, where "[#file]" names a test file) with the
+# XML reporter into `log`; prints the name of every test case that failed, one a line. Returns the program's status.
+run_line() {
+    local line="$1" seconds="$2" log="$3" program spec status=0
+    program="${line%% *}"
+    spec=""
+    [[ "$line" == *" "* ]] && spec="${line#* }"
+    local args=(-# -r xml -o "$log")
+    # A line without a spec runs the whole program, up to its first failure (it is long).
+    if [[ -n "$spec" ]]; then
+        args+=("$spec")
     else
-        verdict="caught"
-        # Catch2's console reporter names a test case between two rules of dashes, wrapped over lines when it is
-        # long, before each of its failures and each of its warnings: the failing one is the last named before the
-        # first "FAILED:".
-        caught_by="$(awk '/^--------------------+$/ { if (open) { open = 0; name = text } else { open = 1; text = ""; sep = "" } next }
-            open { text = text sep $0; sep = " "; next }
-            /FAILED:$/ { print name; exit }' "$work/test.log")"
-        [[ -n "$caught_by" ]] || caught_by="(exit status $status)"
+        args+=(--abort)
     fi
+    timeout "$seconds" "$work/build/tests/$program" "${args[@]}" >/dev/null 2>&1 || status=$?
+    # A test case's element carries its name; its result comes last in it (sections report results of their own).
+    awk '/<TestCase name="/ { name = $0; sub(/.*<TestCase name="/, "", name); sub(/".*/, "", name); depth = 0 }
+        /<OverallResult success="false"/ { print name }' "$log" 2>/dev/null |
+        sed -e 's/&quot;/"/g' -e "s/&apos;/'/g" -e 's/&lt;/</g' -e 's/&gt;/>/g' -e 's/&amp;/\&/g' | awk '!seen[$0]++'
+    return $status
+}
+
+# The key under which the unmutated time of a "tests:" line is kept.
+line_key() {
+    printf '%s' "$1" | md5sum | cut -c1-16
+}
+
+# Runs the "tests:" lines of one mutation; sets `caught_by` to the failing test cases (" | " between them) and
+# `verdict`.
+run_tests() {
+    local line status names k=0
+    caught_by=""
+    verdict="missed"
+    while IFS= read -r line; do
+        k=$((k + 1))
+        status=0
+        names="$(run_line "$line" "${limits[$line]}" "$work/test-$k.xml")" || status=$?
+        cp "$work/test-$k.xml" "$work/test-$id-$k.xml" 2>/dev/null || true
+        if [[ $status == 124 ]]; then
+            names="${names:+$names$'\n'}(${line%% *}: no answer within ${limits[$line]} s)"
+        elif [[ $status != 0 && -z "$names" ]]; then
+            names="(${line%% *}: exit status $status)"
+        fi
+        if [[ -n "$names" ]]; then
+            verdict="caught"
+            caught_by="${caught_by:+$caught_by | }$(printf '%s' "$names" | paste -sd '|' | sed 's/|/ | /g')"
+        fi
+    done <<<"$1"
 }
 
 parse
@@ -188,30 +227,46 @@ fi
 
 echo "work directory: $work"
 sync_sources
-cmake -S "$work/src" -B "$work/build" -DCMAKE_BUILD_TYPE=Release -DSATVIZ_BUILD_TESTS=ON -DSATVIZ_BUILD_TOOLS=OFF \
-    -DSATVIZ_BUILD_RENDER=OFF -DSATVIZ_BUILD_APP=OFF -DSATVIZ_BUILD_BENCH=OFF -DSATVIZ_BUILD_FUZZ=OFF \
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+export CCACHE_BASEDIR="$work"
+cmake -S "$work/src" -B "$work/build" -DCMAKE_BUILD_TYPE=Release -DSATVIZ_BUILD_TESTS=ON -DSATVIZ_BUILD_TOOLS=ON \
+    -DSATVIZ_BUILD_RENDER=OFF -DSATVIZ_BUILD_APP=OFF -DSATVIZ_BUILD_BENCH=OFF -DSATVIZ_BUILD_FUZZ=OFF "${launcher[@]}" \
     >"$work/configure.log" 2>&1 || die "configuring failed, see $work/configure.log"
 
-# The unmutated sources must build and pass, or no verdict means anything. A test binary identical to one that
-# passed before is not run again.
+# The "tests:" lines of the selected mutations, each once.
+declare -A limits=()
+all_lines=()
+for k in "${selected[@]}"; do
+    while IFS= read -r line; do
+        [[ -n "${limits[$line]+x}" ]] && continue
+        limits[$line]=0
+        all_lines+=("$line")
+    done <<<"${runs[$k]}"
+done
+
+# The unmutated sources must build and pass, or no verdict means anything. Each line's time is kept with a copy of
+# the program it ran, and not measured again while the program is the same.
 start=$SECONDS
-build || die "the unmutated sources do not build, see $work/build.log"
+build "${all_lines[@]}" || die "the unmutated sources do not build, see $work/build.log"
 echo "unmutated: built in $((SECONDS - start)) s"
-binary="$work/build/tests/satviz_tests"
-if cmp -s "$binary" "$work/passed/satviz_tests" && [[ -f "$work/passed/seconds" ]]; then
-    baseline="$(cat "$work/passed/seconds")"
-    echo "unmutated: the same test binary passed before, in ${baseline} s"
-else
-    start=$SECONDS
-    "$binary" >"$work/test.log" 2>&1 || die "the unmutated tests fail, see $work/test.log"
-    baseline=$((SECONDS - start))
-    mkdir -p "$work/passed"
-    cp "$binary" "$work/passed/satviz_tests"
-    echo "$baseline" >"$work/passed/seconds"
-    echo "unmutated: tests pass in ${baseline} s"
-fi
-limit="${SATVIZ_MUTATION_TIMEOUT:-$((baseline * 4 > 300 ? baseline * 4 : 300))}"
-echo "a mutated run gets ${limit} s"
+mkdir -p "$work/passed"
+for line in "${all_lines[@]}"; do
+    program="${line%% *}"
+    key="$(line_key "$line")"
+    if cmp -s "$work/build/tests/$program" "$work/passed/$key.program" && [[ -f "$work/passed/$key.seconds" ]]; then
+        baseline="$(cat "$work/passed/$key.seconds")"
+    else
+        start=$SECONDS
+        failed="$(run_line "$line" 100000 "$work/test-unmutated.xml")" ||
+            die "the unmutated tests fail ($line): ${failed:-see $work/test-unmutated.xml}"
+        baseline=$((SECONDS - start))
+        cp "$work/build/tests/$program" "$work/passed/$key.program"
+        echo "$baseline" >"$work/passed/$key.seconds"
+    fi
+    limits[$line]="${SATVIZ_MUTATION_TIMEOUT:-$((baseline * 4 > 60 ? baseline * 4 : 60))}"
+    echo "unmutated: $line passes in ${baseline} s; a mutated run gets ${limits[$line]} s"
+done
 echo
 
 caught=0
@@ -227,9 +282,8 @@ for k in "${selected[@]}"; do
         cp "$root/$file" "$copy"
         die "[$id] the mutation changed nothing"
     fi
-    if build; then
-        run_tests "$limit"
-        cp "$work/test.log" "$work/test-$id.log"
+    if build "$(printf '%s' "${runs[$k]}")"; then
+        run_tests "${runs[$k]}"
     else
         cp "$work/build.log" "$work/build-$id.log"
         verdict="did not compile"
@@ -246,7 +300,7 @@ for k in "${selected[@]}"; do
 done
 
 # Leave the work tree as the checkout is, built, so that the next run starts from there.
-build || true
+build "${all_lines[@]}" || true
 echo
 echo "mutation score: $caught of ${#selected[@]} caught ($missed missed, $broken did not compile)"
 [[ $missed == 0 && $broken == 0 ]]

@@ -1744,3 +1744,63 @@ TEST_CASE("A concave body is drawn by its pieces, its outline as written and its
     CHECK(dashed < 2.0f * length * 0.75f);
     CHECK(dashed > 2.0f * length * 0.25f);
 }
+
+TEST_CASE("Over random poses the textbook's words agree with themselves: the smaller push is the overlap, and the "
+          "shape beyond a face is the other shape",
+          "[painter][property]")
+{
+    // Read from the sentences alone: an overlapping step quotes the two pushes and then the overlap, which must be
+    // the smaller of the two numbers it quoted; a separated verdict says that one shape lies beyond the other's
+    // edge, never beyond its own.
+    testing::Rng rng(20261127);
+    int overlaps = 0;
+    int unequal = 0;
+    int beyond = 0;
+    const auto numberAfter = [](const std::string& text, const std::string& before) {
+        const size_t at = text.find(before);
+        REQUIRE(at != std::string::npos);
+        return std::strtod(text.c_str() + at + before.size(), nullptr);
+    };
+    for (int i = 0; i < 800; ++i)
+    {
+        Scene scene;
+        for (int k = 0; k < 2; ++k)
+        {
+            Body body;
+            body.name = k == 0 ? "A" : "B";
+            body.shape = MakeShape(testing::RandomPolygon(rng, rng.Int(3, 9), 1.0, rng.Uniform(0.3, 1.0)));
+            body.angle = rng.Uniform(-3.0, 3.0);
+            body.position = {rng.Uniform(-1.8, 1.8), rng.Uniform(-1.8, 1.8)};
+            scene.bodies.push_back(std::move(body));
+        }
+        const FigureSetup setup = SetUpView(scene, StepView::Textbook);
+        REQUIRE(setup.Ok());
+        const PairStudy& study = setup.study;
+        for (int step = 0; step < study.StepCount(); ++step)
+        {
+            const std::string text = DescribeStep(scene, study, step);
+            INFO("pair " << i << ", step " << step << ": " << text);
+            if (text.find("They overlap: ") != std::string::npos)
+            {
+                const double along = numberAfter(text, " would have to move ");
+                const double against = numberAfter(text, " along the axis or ");
+                const double overlap = numberAfter(text, "the overlap is the smaller, ");
+                CHECK(overlap == std::min(along, against));
+                ++overlaps;
+                unequal += along != against ? 1 : 0;
+            }
+            const size_t lies = text.find(" lies ");
+            const size_t edge = text.find("'s edge ", lies == std::string::npos ? 0 : lies);
+            if (text.rfind("Verdict: ", 0) == 0 && lies != std::string::npos && edge != std::string::npos &&
+                text.find(" beyond ", lies) < edge)
+            {
+                const std::string shape = text.substr(lies - 1, 1);
+                const std::string owner = text.substr(edge - 1, 1);
+                CHECK(shape != owner);
+                ++beyond;
+            }
+        }
+    }
+    CHECK(unequal > 100);
+    CHECK(beyond > 50);
+}
