@@ -6,6 +6,7 @@
 #include "sat/tracer.h"
 
 #include <satviz/shape.h>
+#include <satviz/sweep.h>
 #include <satviz/trace.h>
 
 #include <type_traits>
@@ -32,6 +33,15 @@ template <typename S, typename A, typename B, typename Query>
                                          const TransformT<S>& xfB, Query& query)
 {
     TraceRecorder<S> tracer(trace, Ref(a), xfA, Ref(b), xfB);
+    return query(tracer);
+}
+
+// Runs `query` with the null tracer, compiled as one function: everything it calls is inlined into it, which keeps
+// the fast path's code together.
+template <typename Query>
+[[gnu::flatten]] auto RunScalar(Query& query)
+{
+    NullTracer tracer;
     return query(tracer);
 }
 
@@ -80,6 +90,34 @@ auto WithTracer(TraceT<S>* trace, const A& a, const TransformT<S>& xfA, const B&
         return query(tracer);
     }
     return Traced(*trace, a, xfA, b, xfB, query);
+}
+
+// WithTracer for the sweep: `query(tracer)` with the null tracer, each instruction set's path one function (on
+// 512-bit face loops for double where `wide512` and the processor has them, on the wide scans where it has those),
+// or with a recorder filling `trace` when it is non-null; `velocity` is B's motion relative to A.
+template <typename S, typename A, typename B, typename Query>
+auto WithSweepTracer(SweepTraceT<S>* trace, const A& a, const TransformT<S>& xfA, const B& b, const TransformT<S>& xfB,
+                     Vec2T<S> velocity, bool wide512, Query&& query)
+{
+    if (trace == nullptr)
+    {
+#if SATVIZ_WIDE
+        if constexpr (std::is_same_v<S, double>)
+        {
+            if (wide512 && HasWide512())
+            {
+                return RunWide512(query);
+            }
+        }
+        if (HasWideVectors())
+        {
+            return RunWide(query);
+        }
+#endif
+        return RunScalar(query);
+    }
+    SweepRecorder<S> tracer(*trace, Ref(a), xfA, Ref(b), xfB, velocity);
+    return query(tracer);
 }
 
 // Calls query(shapeA, shapeB) with the polygon or circle each shape holds.

@@ -105,4 +105,42 @@ int BisectSupport(const PolygonT<S>& polygon, Vec2T<S> d)
     return ClimbFrom(polygon, d, lo == n ? 0 : lo);
 }
 
+// The faces (or vertices) of a polygon along a counter-clockwise chain from `from`, by their offset k from it.
+struct Chain
+{
+    int from;
+    int n;
+    int At(int k) const { return from + k < n ? from + k : from + k - n; }
+};
+
+// The first offset in [0, count) at which `past` holds, or `count`: `past` fails up to some offset and holds from
+// there on, so bisection finds it.
+template <typename Past>
+int FirstPast(int count, Past&& past)
+{
+    int lo = 0;
+    int left = count; // offsets from lo still in question
+    while (left > 0)
+    {
+        const int half = left / 2;
+        const bool beyond = past(lo + half);
+        lo = beyond ? lo : lo + half + 1;
+        left = beyond ? half : left - half - 1;
+    }
+    return lo;
+}
+
+// The support vertex of `polygon` in direction `d` (its frame), known to lie on the chain from vertex `lo` to vertex
+// `hi` (counter-clockwise, less than half a turn): the first vertex there whose edge no longer climbs along d, by
+// bisection, settled by ClimbFrom as in BisectSupport. O(log) of the chain's length.
+template <typename S>
+int BracketedSupport(const PolygonT<S>& polygon, Vec2T<S> d, int lo, int hi)
+{
+    const int n = polygon.Count();
+    const Chain chain{lo, n};
+    const int k =
+        FirstPast(hi >= lo ? hi - lo : hi - lo + n, [&](int j) { return !(Dot(d, polygon.Edge(chain.At(j))) > S(0)); });
+    return ClimbFrom(polygon, d, chain.At(k));
+}
+
 } // namespace satviz::detail

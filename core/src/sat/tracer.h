@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 // satviz (private): the tracer policies of the SAT templates. NullTracer is the fast path and records nothing;
-// TraceRecorder fills a TraceT. The algorithm calls a tracer only inside `if constexpr (Tracer::kEnabled)`, so
+// TraceRecorder fills a TraceT, SweepRecorder a SweepTraceT. The algorithm calls a tracer only inside `if constexpr (Tracer::kEnabled)`, so
 // everything the trace needs beyond the result (world axes, full projection intervals) is computed only when
 // recording, and the arithmetic that produces the result is the same in both instantiations.
 #pragma once
 
+#include "sweep_axis.h"
+
 #include <satviz/polygon.h>
 #include <satviz/shape.h>
+#include <satviz/sweep.h>
 #include <satviz/trace.h>
 
 #include <algorithm>
@@ -45,14 +48,14 @@ struct NullTracer : AlgorithmChoices
     static constexpr bool kEnabled = false;
 };
 
-/// The null tracer of code compiled for AVX2 (RunWide): scans use 256-bit vectors.
+/// The null tracer of code compiled for AVX2 (RunWide): scans and the sweep's face loops use 256-bit vectors.
 struct WideNullTracer : NullTracer
 {
     static constexpr bool kWide = true;
 };
 
-/// The null tracer of code compiled for AVX-512 (RunWide512): the face loops that take them use 512-bit vectors,
-/// the rest 256-bit ones.
+/// The null tracer of code compiled for AVX-512 (RunWide512): the face loops that take them (Collide's, and the
+/// sweep's of small polygons) use 512-bit vectors, the rest 256-bit ones.
 struct Wide512NullTracer : WideNullTracer
 {
     static constexpr bool kWide512 = true;
@@ -223,6 +226,181 @@ class TraceRecorder : public AlgorithmChoices
     ShapeRef<S> m_b;
     TransformT<S> m_xfA;
     TransformT<S> m_xfB;
+};
+
+
+// Records the axes of a sweep. Everything here is for the trace only.
+template <typename S>
+class SweepRecorder
+{
+  public:
+    static constexpr bool kEnabled = true;
+    static constexpr bool kWide = false;
+    static constexpr bool kWide512 = false;
+
+    SweepRecorder(SweepTraceT<S>& trace, ShapeRef<S> a, const TransformT<S>& xfA, ShapeRef<S> b,
+                  const TransformT<S>& xfB, Vec2T<S> relativeVelocity)
+        : m_trace(trace), m_a(a), m_b(b), m_xfA(xfA), m_xfB(xfB), m_velocity(relativeVelocity)
+    {
+        m_trace.Clear();
+    }
+
+    // A face axis of a polygon sweep, with the algorithm's own numbers.
+    void Axis(int side, int face, S separation, S rate, S entry, S exit, bool endsTest)
+    {
+        const Vec2T<S> direction =
+            side == 0 ? Rotate(m_xfA.q, m_a.polygon->Normal(face)) : -Rotate(m_xfB.q, m_b.polygon->Normal(face));
+        AxisWorld({AxisKind::FaceNormal, side, face}, direction, separation, rate, entry, exit, endsTest);
+    }
+
+    // An axis given in world space, oriented from A towards B.
+    void AxisWorld(AxisRef ref, Vec2T<S> direction, S separation, S rate, S entry, S exit, bool endsTest)
+    {
+        SweepAxisT<S> axis;
+        axis.axis = ref;
+        axis.direction = direction;
+        ProjectShape(m_a, m_xfA, axis.direction, axis.minA, axis.maxA);
+        ProjectShape(m_b, m_xfB, axis.direction, axis.minB, axis.maxB);
+        const S shift = Dot(axis.direction, m_velocity);
+        axis.sweptMinB = axis.minB + std::min(S(0), shift);
+        axis.sweptMaxB = axis.maxB + std::max(S(0), shift);
+        axis.separation = separation;
+        axis.rate = rate;
+        axis.entry = entry;
+        axis.exit = exit;
+        axis.endsTest = endsTest;
+        m_trace.axes.push_back(axis);
+    }
+
+    // An axis computed here from the shapes at t = 0: the projection gap and how it changes.
+    void AxisFromShapes(AxisRef ref, Vec2T<S> direction)
+    {
+        S minA, maxA, minB, maxB;
+        ProjectShape(m_a, m_xfA, direction, minA, maxA);
+        ProjectShape(m_b, m_xfB, direction, minB, maxB);
+        const S separation = minB - maxA;
+        const S rate = Dot(direction, m_velocity);
+        S entry, exit;
+        const bool closes = AxisTimes(separation, rate, entry, exit);
+        AxisWorld(ref, direction, separation, rate, entry, exit, !closes);
+    }
+
+    // A face of a large polygon's face loop taken for its exact separation (WalkedEvaluation): its step now, its
+    // rate, entry and exit when the lanes take it in (Flushed). `exitPass`: the second pass of a walked loop.
+    void Taken(int side, int face, S separation, bool exitPass)
+    {
+        m_pending[m_pendingCount++] = static_cast<int>(m_trace.axes.size());
+        Axis(side, face, separation, S(0), S(0), kInfinity<S>, false);
+        m_trace.axes.back().exitPass = exitPass;
+    }
+
+    // The lanes took the pending faces in, in order: lane l holds the l-th face taken since the last call, with its
+    // rate, entry (-infinity: none) and exit as the lanes computed them, and `ends` the lanes whose axis ended the
+    // test. Returns the lane of the first such face (it ended the test), or -1.
+    template <typename L, typename Axes, typename Mask>
+    int Flushed(const L& rates, const Axes& axes, const Mask& ends)
+    {
+        int ended = -1;
+        for (int l = 0; l < m_pendingCount; ++l)
+        {
+            SweepAxisT<S>& axis = m_trace.axes[static_cast<size_t>(m_pending[l])];
+            const bool never = axes.never.Get(l);
+            // As Replay: an overlapping axis (no entry) enters at 0, as its interval overlaps from t = 0.
+            axis.rate = rates.Get(l);
+            axis.entry = never ? S(0) : std::max(axes.entry.Get(l), S(0));
+            axis.exit = never ? kInfinity<S> : axes.leave.Get(l);
+            axis.endsTest = ended < 0 && ends.Get(l);
+            ended = axis.endsTest ? l : ended;
+        }
+        m_pendingCount = 0;
+        return ended;
+    }
+
+    // A face of a walked loop decided by the bound of a point of the other polygon, not walked to (see
+    // SweepAxisT::bounded); its separation, rate, entry and exit are for the view only.
+    void Bounded(int side, int face, S separation, S rate, S entry, S exit, S bound, S boundTime, S known,
+                 bool exitPass)
+    {
+        Axis(side, face, separation, rate, entry, exit, false);
+        SweepAxisT<S>& axis = m_trace.axes.back();
+        axis.bounded = true;
+        axis.bound = bound;
+        axis.boundTime = boundTime;
+        axis.knownEntry = known;
+        axis.exitPass = exitPass;
+    }
+
+    // A face of a bisected loop that the bisection ruled out, never evaluated (see SweepAxisT::skipped); its
+    // separation, rate, entry and exit are for the view only.
+    void Skipped(int side, int face, S separation, S rate, S entry, S exit)
+    {
+        Axis(side, face, separation, rate, entry, exit, false);
+        m_trace.axes.back().skipped = true;
+    }
+
+    // The test ended after a pass over a polygon's faces, on the latest entry against the earliest exit: the last
+    // face evaluated shows it.
+    void EndedAfterPass()
+    {
+        for (size_t k = m_trace.axes.size(); k-- > 0;)
+        {
+            SweepAxisT<S>& axis = m_trace.axes[k];
+            if (!axis.bounded && !axis.skipped)
+            {
+                axis.endsTest = true;
+                return;
+            }
+        }
+    }
+
+    // The test ended: why, and per step the axis of the latest entry and of the earliest exit so far, as the face
+    // loops keep them (SweepLanes::Add): the first face of the latest entry, where only an axis apart at t = 0
+    // (separation >= 0) has an entry and an overlapping one holds the latest entry only until an axis with an entry
+    // comes. Flagged faces were not evaluated and change neither.
+    void Finish(SweepExit exit)
+    {
+        m_trace.exit = exit;
+        int latest = -1;
+        int earliest = -1;
+        for (size_t k = 0; k < m_trace.axes.size(); ++k)
+        {
+            SweepAxisT<S>& axis = m_trace.axes[k];
+            if (!axis.bounded && !axis.skipped)
+            {
+                const int index = static_cast<int>(k);
+                if (latest < 0)
+                {
+                    latest = index;
+                    earliest = index;
+                }
+                else
+                {
+                    const SweepAxisT<S>& held = m_trace.axes[static_cast<size_t>(latest)];
+                    const bool heldEnters = held.separation >= S(0);
+                    if (!((heldEnters && held.entry >= axis.entry) || (!heldEnters && !(axis.separation >= S(0)))))
+                    {
+                        latest = index;
+                    }
+                    if (!(m_trace.axes[static_cast<size_t>(earliest)].exit <= axis.exit))
+                    {
+                        earliest = index;
+                    }
+                }
+            }
+            axis.latestEntry = latest;
+            axis.earliestExit = earliest;
+        }
+    }
+
+  private:
+    SweepTraceT<S>& m_trace;
+    ShapeRef<S> m_a;
+    ShapeRef<S> m_b;
+    TransformT<S> m_xfA;
+    TransformT<S> m_xfB;
+    Vec2T<S> m_velocity;
+    int m_pending[4] = {}; // the steps of the faces taken and not yet in the lanes
+    int m_pendingCount = 0;
 };
 
 } // namespace satviz::detail
