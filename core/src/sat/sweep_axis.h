@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // satviz (private), chapter 10: one face's entry and exit, the rule of the swept test (Ericson, Real-Time Collision
-// Detection, 5.5.2). Between shapes that translate, a face's separation changes linearly with time; the face's axis
-// closes at its entry and opens again at its exit. First the rule for one axis as the textbook writes it
+// Detection, 5.5.2). Between shapes that translate, a face's separation changes linearly with time: the shapes'
+// intervals on the face's normal begin to overlap at its entry and stop overlapping at its exit. First the rule for one axis as the textbook writes it
 // (AxisTimes), then the same rule for four axes at once, in lanes and without branches (AxisLanes), which the face
 // loops of the sweep use.
 #pragma once
@@ -17,6 +17,7 @@
 namespace satviz::detail
 {
 
+// No entry yet (negated), or no exit.
 template <typename S>
 constexpr S kInfinity = std::numeric_limits<S>::infinity();
 
