@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The painter through a recording canvas: each view draws what the trace says, checked against geometry computed
 // here from the shapes (not from the trace), and layers that are off draw nothing.
+#include "render/painter_support.h"
 #include "support/random_shapes.h"
 
 #include <satviz/render/describe.h>
@@ -20,6 +21,7 @@
 #include <set>
 
 using namespace satviz;
+using namespace satviz::painter_test;
 
 namespace
 {
@@ -38,42 +40,8 @@ std::vector<std::string> TutorialScenes()
     return files;
 }
 
-Scene Load(const std::string& file)
-{
-    SceneResult result = LoadScene(file);
-    INFO(result.error);
-    REQUIRE(result.Ok());
-    return result.scene;
-}
 
-RecordingCanvas Paint(const Scene& scene, FigureSetup& setup, int step, LayerMask layers)
-{
-    setup.figure.step = step;
-    setup.figure.layers = layers;
-    RecordingCanvas canvas;
-    PaintFigure(canvas, scene, setup.study, setup.figure);
-    return canvas;
-}
 
-// Lowest and highest projection of a placed shape onto d, from its vertices (or centre and radius).
-std::pair<double, double> Project(const Body& body, Vec2 d)
-{
-    const Transform xf = body.Xf();
-    if (body.shape.type == ShapeType::Circle)
-    {
-        const double c = Dot(TransformPoint(xf, body.shape.circle.center), d);
-        return {c - body.shape.circle.radius, c + body.shape.circle.radius};
-    }
-    double lo = INFINITY;
-    double hi = -INFINITY;
-    for (const Vec2& v : body.shape.polygon.Vertices())
-    {
-        const double s = Dot(TransformPoint(xf, v), d);
-        lo = std::min(lo, s);
-        hi = std::max(hi, s);
-    }
-    return {lo, hi};
-}
 
 // The interval bar of one shape in the "projection" group: the opaque segment of the shape's colour.
 const DrawCommand* FindBar(const RecordingCanvas& canvas, Color color)
@@ -1132,18 +1100,6 @@ bool FaceWindow(const Scene& scene, const PairStudy& study, double& latestEntry,
     return true;
 }
 
-// The number after `prefix` in the first text of the group that starts with it; NaN when there is none.
-double NumberAfter(const RecordingCanvas& canvas, const std::string& group, const std::string& prefix)
-{
-    for (const DrawCommand* c : canvas.InGroup(group))
-    {
-        if (c->kind == DrawCommand::Kind::Text && c->text.rfind(prefix, 0) == 0)
-        {
-            return std::strtod(c->text.c_str() + prefix.size(), nullptr);
-        }
-    }
-    return std::nan("");
-}
 
 } // namespace
 
@@ -1525,106 +1481,6 @@ TEST_CASE("The Minkowski inset holds the origin exactly when the shapes overlap"
     }
     CHECK(inside > 30);
     CHECK(outside > 30);
-}
-
-TEST_CASE("Each pitfall scene shows its mistake going wrong beside the right answer", "[painter][pitfall]")
-{
-    const std::string dir = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/";
-    {
-        const Scene scene = Load(dir + "pitfall_unnormalised.json");
-        const FigureSetup setup = SetUpFigure(scene, {});
-        const PitfallResult& p = setup.study.pitfall;
-        REQUIRE(p.ran);
-        CHECK(p.overlap == setup.study.textbookResult.overlap);
-        // It pushes sideways where the MTV goes up.
-        CHECK(std::abs(Dot(p.normal, setup.study.textbookResult.normal)) < 1e-12);
-        // The figure shows the wrong depth at work: the crate pushed by it still lies in the floor. Both are boxes
-        // square to the axes, so the depth left is the smaller of the overlaps along x and along y.
-        FigureSetup drawn = SetUpFigure(scene, {});
-        const RecordingCanvas canvas = Paint(scene, drawn, drawn.study.VerdictStep(), kAllLayers);
-        const auto [fx0, fx1] = Project(scene.bodies[0], {1.0, 0.0});
-        const auto [fy0, fy1] = Project(scene.bodies[0], {0.0, 1.0});
-        Body pushed = scene.bodies[1];
-        pushed.position = pushed.position + p.depth * p.normal;
-        const auto [cx0, cx1] = Project(pushed, {1.0, 0.0});
-        const auto [cy0, cy1] = Project(pushed, {0.0, 1.0});
-        const double left = std::min(std::min(fx1, cx1) - std::max(fx0, cx0), std::min(fy1, cy1) - std::max(fy0, cy0));
-        REQUIRE(left > 0.0);
-        const double shown = NumberAfter(canvas, "labels", "after the pitfall's push: still ");
-        CHECK(std::abs(shown - left) < 0.0051);
-    }
-    {
-        const Scene scene = Load(dir + "pitfall_direction.json");
-        const FigureSetup setup = SetUpFigure(scene, {});
-        const PitfallResult& p = setup.study.pitfall;
-        REQUIRE(p.ran);
-        CHECK(Dot(p.normal, setup.study.textbookResult.normal) < -0.99);
-        CHECK(p.verdict.find("drives B into A") != std::string::npos);
-    }
-    {
-        const Scene scene = Load(dir + "pitfall_one_shape.json");
-        const FigureSetup setup = SetUpFigure(scene, {});
-        REQUIRE(setup.study.pitfall.ran);
-        CHECK(setup.study.pitfall.overlap);
-        CHECK_FALSE(setup.study.textbookResult.overlap);
-    }
-    {
-        const Scene scene = Load(dir + "pitfall_tunnel.json");
-        const FigureSetup setup = SetUpFigure(scene, {});
-        REQUIRE(setup.study.pitfall.ran);
-        CHECK_FALSE(setup.study.pitfall.overlap);
-        CHECK(setup.study.sweepResult.status == SweepStatus::Hit);
-        CHECK(setup.study.pitfall.verdict.find("tunnel") != std::string::npos);
-        // The verdict caption says both.
-        const std::string verdict = DescribeStep(scene, setup.study, setup.study.VerdictStep());
-        CHECK(verdict.find("first contact at t = ") != std::string::npos);
-        CHECK(verdict.find("Pitfall (sampled motion)") != std::string::npos);
-    }
-}
-
-TEST_CASE("The float pitfall far from the origin loses an overlap that double in A's frame keeps", "[painter][pitfall]")
-{
-    const Scene scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/pitfall_float.json");
-    const FigureSetup setup = SetUpFigure(scene, {});
-    const PitfallResult& p = setup.study.pitfall;
-    REQUIRE(p.ran);
-    REQUIRE(setup.study.textbookResult.overlap);
-    CHECK(setup.study.textbookResult.depth == Approx(0.03).margin(1e-9));
-    // Float coordinates at 1e6 step by 0.0625: the 0.03 overlap cannot survive them.
-    CHECK(std::abs(p.depth - 0.03) > 0.02);
-    CHECK(p.verdict.find("steps of 0.0625") != std::string::npos);
-}
-
-TEST_CASE("Pitfalls on random pairs: scaling keeps every verdict, fewer axes never miss a collision",
-          "[painter][pitfall][property]")
-{
-    testing::Rng rng(31);
-    for (int i = 0; i < 2000; ++i)
-    {
-        Scene scene;
-        for (int k = 0; k < 2; ++k)
-        {
-            Body body;
-            body.name = k == 0 ? "A" : "B";
-            body.shape = MakeShape(testing::RandomPolygon(rng, rng.Int(3, 10), 1.0, rng.Uniform(0.3, 1.0)));
-            body.position = {rng.Uniform(-1.2, 1.2), rng.Uniform(-1.2, 1.2)};
-            body.angle = rng.Uniform(-3.0, 3.0);
-            scene.bodies.push_back(std::move(body));
-        }
-        const TextbookResult right =
-            TextbookCollide(scene.bodies[0].shape, scene.bodies[0].Xf(), scene.bodies[1].shape, scene.bodies[1].Xf());
-        if (std::abs(right.overlap ? right.depth : right.gap) < 1e-9)
-        {
-            continue;
-        }
-        INFO("pair " << i);
-        CHECK(RunPitfall(Pitfall::UnnormalisedAxes, scene, 0, 1).overlap == right.overlap);
-        CHECK(RunPitfall(Pitfall::UncheckedDirection, scene, 0, 1).overlap == right.overlap);
-        if (right.overlap)
-        {
-            CHECK(RunPitfall(Pitfall::OneShapesAxes, scene, 0, 1).overlap);
-        }
-    }
 }
 
 TEST_CASE("A body wholly outside the picture is not drawn, and one inside it is", "[painter]")

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+// Helpers of the painter's tests: loading a scene, painting a step on a recording canvas, projecting a placed shape
+// and reading a number from the drawn texts.
+#pragma once
+
+#include <satviz/render/figure.h>
+#include <satviz/render/recording_canvas.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <utility>
+
+namespace satviz::painter_test
+{
+
+/// A scene file, which must load.
+inline Scene Load(const std::string& file)
+{
+    SceneResult result = LoadScene(file);
+    INFO(result.error);
+    REQUIRE(result.Ok());
+    return result.scene;
+}
+
+/// The figure of one step with the given layers, on a recording canvas.
+inline RecordingCanvas Paint(const Scene& scene, FigureSetup& setup, int step, LayerMask layers)
+{
+    setup.figure.step = step;
+    setup.figure.layers = layers;
+    RecordingCanvas canvas;
+    PaintFigure(canvas, scene, setup.study, setup.figure);
+    return canvas;
+}
+
+/// Lowest and highest projection of a placed shape onto d, from its vertices (or centre and radius).
+inline std::pair<double, double> Project(const Body& body, Vec2 d)
+{
+    const Transform xf = body.Xf();
+    if (body.shape.type == ShapeType::Circle)
+    {
+        const double c = Dot(TransformPoint(xf, body.shape.circle.center), d);
+        return {c - body.shape.circle.radius, c + body.shape.circle.radius};
+    }
+    double lo = INFINITY;
+    double hi = -INFINITY;
+    for (const Vec2& v : body.shape.polygon.Vertices())
+    {
+        const double s = Dot(TransformPoint(xf, v), d);
+        lo = std::min(lo, s);
+        hi = std::max(hi, s);
+    }
+    return {lo, hi};
+}
+
+/// The number after `prefix` in the first text of the group that starts with it; NaN when there is none.
+inline double NumberAfter(const RecordingCanvas& canvas, const std::string& group, const std::string& prefix)
+{
+    for (const DrawCommand* c : canvas.InGroup(group))
+    {
+        if (c->kind == DrawCommand::Kind::Text && c->text.rfind(prefix, 0) == 0)
+        {
+            return std::strtod(c->text.c_str() + prefix.size(), nullptr);
+        }
+    }
+    return std::nan("");
+}
+
+} // namespace satviz::painter_test
