@@ -508,8 +508,10 @@ void Stepper::FindContacts()
         }
         return nullptr;
     };
-    for (const auto& [i, j] : candidates)
+    for (const auto& pair : candidates)
     {
+        // Plain ints, not a structured binding: a lambda below captures them, which C++17 allows only for variables.
+        const int i = pair.first, j = pair.second;
         RigidBody& a = bodies[i];
         RigidBody& b = bodies[j];
         // A pair with a concave body takes the concave queries (one merged manifold, seams dropped), and the
