@@ -57,22 +57,6 @@ bool OutlinesOverlap(const std::vector<Vec2>& p, const std::vector<Vec2>& q)
     return InsideOutline(p, q[0]) || InsideOutline(q, p[0]);
 }
 
-// A floor of unit tiles [k, k+1] x [-1, 0], k = 0..count-1, whose shared sides are internal edges.
-Concave TileFloor(int count)
-{
-    std::vector<ConvexPiece> pieces;
-    for (int k = 0; k < count; ++k)
-    {
-        ConvexPiece piece;
-        piece.polygon =
-            MakePolygon(std::vector<Vec2>{{k + 0.0, -1}, {k + 1.0, -1}, {k + 1.0, 0}, {k + 0.0, 0}}).polygon;
-        piece.source = {0, 1, 2, 3};
-        piece.internal = {false, k + 1 < count, false, k > 0};
-        pieces.push_back(piece);
-    }
-    return MakeConcave(pieces);
-}
-
 Shape Box(double halfWidth, double halfHeight)
 {
     return MakeShape(MakeBox(halfWidth, halfHeight).polygon);

@@ -3,6 +3,7 @@
 // and rest, a box sliding over a floor of pieces against the same box on one convex floor, a box in an L's notch,
 // a fast concave body against a thin wall and a post, and momentum in a free collision of two concave bodies.
 
+#include "support/random_concave.h"
 #include "support/world_scenes.h"
 
 #include <satviz/concave.h>
@@ -100,22 +101,6 @@ double Bottom(const RigidBody& body)
         }
     }
     return low;
-}
-
-// A floor of unit tiles [k, k+1] x [-1, 0], k = 0..count-1, whose shared sides are internal edges.
-Concave TileFloor(int count)
-{
-    std::vector<ConvexPiece> pieces;
-    for (int k = 0; k < count; ++k)
-    {
-        ConvexPiece piece;
-        piece.polygon =
-            MakePolygon(std::vector<Vec2>{{k + 0.0, -1}, {k + 1.0, -1}, {k + 1.0, 0}, {k + 0.0, 0}}).polygon;
-        piece.source = {0, 1, 2, 3};
-        piece.internal = {false, k + 1 < count, false, k > 0};
-        pieces.push_back(piece);
-    }
-    return MakeConcave(pieces);
 }
 
 } // namespace

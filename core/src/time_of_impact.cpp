@@ -229,7 +229,7 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
     {
         const Transform xi = PoseAt(i, t);
         const Transform xj = PoseAt(j, t);
-        const Manifold m = concavePair ? CollideBodies(a, xi, b, xj).manifold : Collide(a.shape, xi, b.shape, xj);
+        const Manifold m = CollidePair(a, xi, b, xj).manifold;
         Vec2 points[2];
         if (m.overlap)
         {
@@ -259,8 +259,7 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
             Transform touching = xj;
             const double shift = m.gap + 0.5 * tolerance;
             touching.p = xj.p - shift * m.normal;
-            const Manifold close = concavePair ? CollideBodies(a, xi, b, touching).manifold
-                                               : Collide(a.shape, xi, b.shape, touching);
+            const Manifold close = CollidePair(a, xi, b, touching).manifold;
             if (close.overlap && close.contactCount > 0)
             {
                 for (int k = 0; k < close.contactCount; ++k)

@@ -510,46 +510,27 @@ void Stepper::FindContacts()
     };
     for (const auto& pair : candidates)
     {
-        // Plain ints, not a structured binding: a lambda below captures them, which C++17 allows only for variables.
         const int i = pair.first, j = pair.second;
         RigidBody& a = bodies[i];
         RigidBody& b = bodies[j];
         // A pair with a concave body takes the concave queries (one merged manifold, seams dropped), and the
-        // pieces that decided it name its points.
-        const bool concavePair = detail::AnyConcave(a, b);
-        int pieceA = -1, pieceB = -1;
-        const auto concaveWithin = [&](double within) {
-            const ConcaveManifold cm = within > 0.0 ? detail::CollideBodiesWithin(a, xfs[i], b, xfs[j], within)
-                                                    : detail::CollideBodies(a, xfs[i], b, xfs[j]);
-            pieceA = cm.pieceA;
-            pieceB = cm.pieceB;
-            return cm.manifold;
-        };
+        // pieces that decided it name its points (CollidePair).
         if (a.type == BodyType::Static && b.type == BodyType::Static)
         {
-            if (concavePair)
-            {
-                concaveWithin(0.0);
-            }
-            else
-            {
-                Collide(a.shape, xfs[i], b.shape, xfs[j]);
-            }
+            detail::CollidePair(a, xfs[i], b, xfs[j]);
             continue;
         }
         // The pair's speculative margin: how far the two can close within the step.
         const double margin = bodyReach[static_cast<size_t>(i)] + bodyReach[static_cast<size_t>(j)];
-        Manifold m = concavePair   ? concaveWithin(margin)
-                     : margin > 0.0 ? CollideWithin(a.shape, xfs[i], b.shape, xfs[j], margin)
-                                    : Collide(a.shape, xfs[i], b.shape, xfs[j]);
+        ConcaveManifold cm = detail::CollidePair(a, xfs[i], b, xfs[j], margin);
+        const Manifold& m = cm.manifold;
         bool guard = false;
         if (m.contactCount == 0)
         {
             // Beyond reach of a static body, but within what the position passes can move it: a guard.
             if (correctionReach > 0.0 && (a.type == BodyType::Static) != (b.type == BodyType::Static))
             {
-                m = concavePair ? concaveWithin(margin + correctionReach)
-                                : CollideWithin(a.shape, xfs[i], b.shape, xfs[j], margin + correctionReach);
+                cm = detail::CollidePair(a, xfs[i], b, xfs[j], margin + correctionReach);
                 guard = m.contactCount > 0 && !m.overlap;
             }
             if (!guard)
@@ -576,7 +557,7 @@ void Stepper::FindContacts()
             WorldContactPoint& p = c.points[k];
             p.point = m.contacts[k].point;
             p.separation = m.contacts[k].separation;
-            p.key = concavePair ? FeatureKey(m, pieceA, pieceB, k) : FeatureKey(m, k);
+            p.key = FeatureKey(m, cm.pieceA, cm.pieceB, k);
             if (old != nullptr && !c.guard)
             {
                 bool matched = false;
@@ -1107,10 +1088,7 @@ void Stepper::GuardAfterMove(const std::vector<Vec2>& c, const std::vector<Rot>&
             {
                 continue;
             }
-            const Manifold m =
-                detail::AnyConcave(bodies[a], bodies[b])
-                    ? detail::CollideBodiesWithin(bodies[a], xfs[a], bodies[b], xfs[b], margin).manifold
-                    : CollideWithin(bodies[a].shape, xfs[a], bodies[b].shape, xfs[b], margin);
+            const Manifold m = detail::CollidePair(bodies[a], xfs[a], bodies[b], xfs[b], margin).manifold;
             if (m.contactCount == 0)
             {
                 continue;
@@ -1276,16 +1254,9 @@ void Stepper::CorrectPositions()
         // a body pushed past the middle of a thin wall is still pushed back the way it came; Collide's own normal
         // would push it on through.
         // A concave body's part in the overlap is the piece that decided it: its vertices bound the push below.
-        int pieceA = -1, pieceB = -1;
-        const auto concaveCollide = [&]() {
-            const ConcaveManifold cm = detail::CollideBodies(bodies[a], pose(a), bodies[b], pose(b));
-            pieceA = cm.pieceA;
-            pieceB = cm.pieceB;
-            return cm.manifold;
-        };
-        const Manifold m = detail::AnyConcave(bodies[a], bodies[b])
-                               ? concaveCollide()
-                               : Collide(bodies[a].shape, pose(a), bodies[b].shape, pose(b));
+        const ConcaveManifold cm = detail::CollidePair(bodies[a], pose(a), bodies[b], pose(b));
+        const Manifold& m = cm.manifold;
+        const int pieceA = cm.pieceA, pieceB = cm.pieceB;
         if (!m.overlap)
         {
             return;

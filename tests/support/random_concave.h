@@ -5,6 +5,8 @@
 
 #include "support/random_shapes.h"
 
+#include <satviz/concave.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -101,6 +103,22 @@ inline std::vector<Vec2> RandomUntangledPolygon(Rng& rng, int n, double scale)
         }
     }
     return p;
+}
+
+/// A floor of unit tiles [k, k+1] x [-1, 0], k = 0..count-1, whose shared sides are internal edges.
+inline Concave TileFloor(int count)
+{
+    std::vector<ConvexPiece> pieces;
+    for (int k = 0; k < count; ++k)
+    {
+        ConvexPiece piece;
+        piece.polygon =
+            MakePolygon(std::vector<Vec2>{{k + 0.0, -1}, {k + 1.0, -1}, {k + 1.0, 0}, {k + 0.0, 0}}).polygon;
+        piece.source = {0, 1, 2, 3};
+        piece.internal = {false, k + 1 < count, false, k > 0};
+        pieces.push_back(piece);
+    }
+    return MakeConcave(pieces);
 }
 
 } // namespace satviz::testing
