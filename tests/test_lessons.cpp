@@ -259,7 +259,7 @@ TEST_CASE("Every scene a lesson names loads and can be pictured", "[lessons]")
         for (const std::string& name : Scenes(text))
         {
             const fs::path file = kTutorials / "scenes" / (name + ".json");
-            const SceneResult loaded = LoadScene(file.string());
+            const SceneResult loaded = LoadScene(file.string(), SceneOptions{true}); // concave too
             INFO(lesson.filename().string() << ": " << loaded.error);
             CHECK(loaded.Ok());
             ++scenes;
@@ -284,7 +284,7 @@ TEST_CASE("Every checked number of a worked example matches satviz-query or satv
             REQUIRE(pointer.rfind("/", 0) == 0);
             INFO(lesson.filename().string() << ": " << scene << " " << pointer << " shown as " << shown);
             const fs::path file = kTutorials / "scenes" / (scene + ".json");
-            const SceneResult loaded = LoadScene(file.string());
+            const SceneResult loaded = LoadScene(file.string(), SceneOptions{true}); // concave too
             REQUIRE(loaded.Ok());
             double value = 0.0;
             if (mark.steps > 0)

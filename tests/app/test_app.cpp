@@ -743,7 +743,8 @@ TEST_CASE("A scene that fails to load keeps the current one and shows the error"
     Harness h(ScratchCopy("overlapping_boxes.json").string());
     const std::string before = SceneToJson(h.Doc().GetScene());
     const fs::path broken = fs::temp_directory_path() / "satviz-app-broken.json";
-    std::ofstream(broken) << R"({"bodies": [{"polygon": [[0, 0], [1, 0], [1, 1], [0.9, 0.2]]}, {"box": [1, 1]}]})";
+    // A polygon that crosses itself: a concave one would load.
+    std::ofstream(broken) << R"({"bodies": [{"polygon": [[0, 0], [1, 1], [1, 0], [0, 1]]}, {"box": [1, 1]}]})";
     CHECK(!h.app->Open(broken.string()));
     CHECK(h.app->StatusIsError());
     CHECK(h.app->Status().find("bodies[0].polygon") != std::string::npos);
@@ -1311,7 +1312,7 @@ TEST_CASE("Text in the panels wraps between words only: a number is never split,
     int lines = 0;
     for (const std::string& file : h.app->BundledScenes())
     {
-        const SceneResult loaded = LoadScene(file);
+        const SceneResult loaded = LoadScene(file, SceneOptions{true}); // as the app opens them: concave too
         REQUIRE(loaded.Ok());
         const FigureSetup setup = SetUpFigure(loaded.scene, {});
         REQUIRE(setup.Ok());

@@ -17,10 +17,10 @@
 namespace satviz::painter_test
 {
 
-/// A scene file, which must load.
+/// A scene file, which must load (a polygon may be concave, as satviz-render reads it).
 inline Scene Load(const std::string& file)
 {
-    SceneResult result = LoadScene(file);
+    SceneResult result = LoadScene(file, SceneOptions{true});
     INFO(result.error);
     REQUIRE(result.Ok());
     return result.scene;

@@ -410,7 +410,7 @@ struct Drawn
 std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool faces)
 {
     const std::string file = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + stem + ".json";
-    SceneResult loaded = LoadScene(file);
+    SceneResult loaded = LoadScene(file, SceneOptions{true}); // as satviz-render reads it: concave too
     INFO(loaded.error);
     REQUIRE(loaded.Ok());
     REQUIRE(SimulateScene(loaded.scene, loaded.scene.view.simSteps).empty());

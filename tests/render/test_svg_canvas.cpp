@@ -22,7 +22,7 @@ namespace
 
 Scene LoadTutorial(const std::string& name)
 {
-    SceneResult result = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + name);
+    SceneResult result = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + name, SceneOptions{true});
     INFO(result.error);
     REQUIRE(result.Ok());
     return result.scene;
