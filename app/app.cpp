@@ -3,7 +3,10 @@
 // and canvas.cpp.
 #include "app.h"
 
+#include "outline_edit.h"
+
 #include <satviz/scene_world.h>
+#include <satviz/world_cut.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -362,33 +365,34 @@ bool App::MoveVertex(int index, int vertex, Vec2 world)
         return false;
     }
     const Body& body = ShownScene().bodies[static_cast<size_t>(index)];
-    if (body.shape.type != ShapeType::Polygon || vertex < 0 || vertex >= body.shape.polygon.Count())
+    std::vector<Vec2> outline = EditableOutline(body);
+    if (vertex < 0 || vertex >= static_cast<int>(outline.size()))
     {
         return false;
     }
-    std::vector<Vec2> vertices(body.shape.polygon.Vertices().begin(), body.shape.polygon.Vertices().end());
-    if (vertices[static_cast<size_t>(vertex)] == InvTransformPoint(body.Xf(), world))
+    const Vec2 local = InvTransformPoint(body.Xf(), world);
+    if (outline[static_cast<size_t>(vertex)] == local)
     {
         return true;
     }
-    vertices[static_cast<size_t>(vertex)] = InvTransformPoint(body.Xf(), world);
-    PolygonResult result = MakePolygon(vertices);
-    if (!result.Ok())
+    outline[static_cast<size_t>(vertex)] = local;
+    Body reshaped = body;
+    if (const std::string why = ReshapeToOutline(reshaped, outline); !why.empty())
     {
-        // During a drag the vertex has followed the pointer as far as the polygon stayed convex: it stays there,
-        // which is where it was only when the first move was refused. The error's advice in brackets is for
-        // someone listing vertices, not dragging one.
-        std::string why = DescribePolygonError(result.error, result.vertex);
-        why = why.substr(0, why.find(" ("));
+        // During a drag the vertex has followed the pointer as far as the outline stayed simple: it stays there,
+        // which is where it was only when the first move was refused.
         SetStatus("Vertex " + std::to_string(vertex) +
-                      " stays at its last position that keeps the polygon convex: at the pointer, the " + why,
+                      " stays at its last position that keeps the polygon simple: at the pointer, the " + why,
                   true);
         Refresh();
         return false;
     }
     const bool single = !document_.EditOpen();
     BeginEdit();
-    EditBody(index).shape.polygon = std::move(result.polygon);
+    Body& edited = EditBody(index);
+    edited.shape = std::move(reshaped.shape);
+    edited.concave = std::move(reshaped.concave);
+    edited.outline = std::move(reshaped.outline);
     if (single)
     {
         EndEdit();
@@ -396,6 +400,133 @@ bool App::MoveVertex(int index, int vertex, Vec2 world)
     ClearError();
     Refresh();
     return true;
+}
+
+bool App::AddDrawnPolygon(const std::vector<Vec2>& vertices)
+{
+    if (vertices.size() < 3)
+    {
+        SetStatus("A polygon needs at least three vertices", true);
+        return false;
+    }
+    Body body;
+    body.name = UniqueName(document_.GetScene(), "polygon");
+    body.position = OutlineCentroid(vertices);
+    std::vector<Vec2> local;
+    for (const Vec2& v : vertices)
+    {
+        local.push_back(v - body.position);
+    }
+    if (const std::string why = ReshapeToOutline(body, local); !why.empty())
+    {
+        SetStatus("The drawn polygon was not added: the " + why, true);
+        return false;
+    }
+    const size_t pieces = body.IsConcave() ? body.concave.parts.size() : 1;
+    const std::string name = body.name;
+    BeginEdit();
+    TakeShownState();
+    document_.AddBody(std::move(body));
+    selected_ = static_cast<int>(document_.GetScene().bodies.size()) - 1;
+    EndEdit();
+    Refresh();
+    SetStatus("Added " + name + ": " + std::to_string(vertices.size()) + " vertices, " +
+                  (pieces == 1 ? std::string("convex") : std::to_string(pieces) + " convex pieces"),
+              false);
+    return true;
+}
+
+int App::CutAlong(Vec2 a, Vec2 b)
+{
+    const Scene shown = ShownScene();
+    if (const std::string why = ValidateSceneWorld(shown); !why.empty())
+    {
+        SetStatus("Nothing was cut: " + why, true);
+        return 0;
+    }
+    // The world of the state shown: CutBody gives each part its mass and its share of the motion.
+    World world = MakeWorld(shown);
+    struct Done
+    {
+        size_t index;
+        BodyCut cut;
+    };
+    std::vector<Done> done;
+    std::string why;
+    for (size_t i = 0; i < shown.bodies.size(); ++i)
+    {
+        if (shown.bodies[i].shape.type != ShapeType::Polygon)
+        {
+            continue;
+        }
+        CutOptions options;
+        options.method = shown.bodies[i].decompose;
+        BodyCut cut = CutBody(world, static_cast<int>(i), a, b, options);
+        if (cut.cut)
+        {
+            done.push_back({i, std::move(cut)});
+        }
+        else if (why.empty() && cut.reason != "the segment does not cut the body from side to side")
+        {
+            why = shown.bodies[i].name + ": " + cut.reason;
+        }
+    }
+    if (done.empty())
+    {
+        SetStatus(why.empty() ? "Nothing was cut: draw the cut across a polygon, from outside to outside"
+                              : "Nothing was cut: " + why,
+                  true);
+        return 0;
+    }
+    BeginEdit();
+    TakeShownState();
+    std::string said;
+    int slivers = 0;
+    for (const Done& d : done)
+    {
+        const Body original = shown.bodies[d.index];
+        std::vector<std::string> names;
+        for (size_t k = 0; k < d.cut.bodies.size(); ++k)
+        {
+            Body part = original;
+            const RigidBody& rigid = world.bodies[static_cast<size_t>(d.cut.bodies[k])];
+            // The scene's body frame is the world body's, so the part's outline is the cut's as it stands.
+            ReshapeToOutline(part, d.cut.outlines[k]);
+            if (!original.isStatic)
+            {
+                part.velocity = rigid.velocity;
+                part.angularVelocity = rigid.angularVelocity;
+            }
+            if (k == 0)
+            {
+                document_.EditBody(d.index) = std::move(part);
+                names.push_back(original.name);
+            }
+            else
+            {
+                part.name = UniqueName(document_.GetScene(), original.name + ".");
+                names.push_back(part.name);
+                document_.AddBody(std::move(part));
+            }
+        }
+        slivers += d.cut.slivers;
+        said += (said.empty() ? "Cut " : "; cut ") + original.name + " into";
+        for (size_t k = 0; k < names.size(); ++k)
+        {
+            said += (k == 0 ? " " : (k + 1 == names.size() ? " and " : ", ")) + names[k];
+        }
+    }
+    if (slivers > 0)
+    {
+        char area[32];
+        std::snprintf(area, sizeof area, "%g", kMinCutArea);
+        said += " (" + std::to_string(slivers) + (slivers == 1 ? " sliver" : " slivers") + " below " + area +
+                " square units dropped)";
+    }
+    EndEdit();
+    Refresh();
+    SetStatus(said, false);
+    return static_cast<int>(done.size());
 }
 
 void App::AddBody(Shape shape, const std::string& stem)

@@ -37,6 +37,8 @@ struct AppKeys
     int p = 'P';      ///< p plays or pauses the simulation
     int period = '.'; ///< . shows the simulation's next step
     int comma = ',';  ///< , shows the simulation's step before
+    int d = 'D';      ///< d draws a polygon by clicking its vertices
+    int x = 'X';      ///< x draws a cut with the mouse
 };
 
 /// Start-up choices of the app.
@@ -137,10 +139,22 @@ class App
     /// Sets body `index`'s velocity (world units per time unit: its displacement over one time unit, which is one
     /// step when the scene's dt is 1).
     void SetVelocity(int index, Vec2 velocity);
-    /// Moves vertex `vertex` of polygon body `index` to world point `world`; refused, and the status line says
-    /// why, when the polygon would no longer be strictly convex and counter-clockwise: the vertex stays where it
-    /// last was (during a drag, as far as it followed the pointer). True when it moved.
+    /// Moves vertex `vertex` of the outline of polygon body `index` (a concave body's outline as written, a convex
+    /// polygon's vertices) to world point `world`. The polygon may become concave: it is decomposed again (the
+    /// body's "decompose" method), and a concave one that becomes convex is a convex polygon again. Refused, and
+    /// the status line says why, when the outline would cross itself: the vertex stays where it last was (during
+    /// a drag, as far as it followed the pointer). True when it moved.
     bool MoveVertex(int index, int vertex, Vec2 world);
+    /// Adds the polygon drawn by clicking `vertices` (world points in the order clicked, either orientation,
+    /// convex or not), its origin at its centroid, named polygonN, and selects it. Refused, and the status line
+    /// says why, for fewer than three vertices or an outline that crosses itself. True when added.
+    bool AddDrawnPolygon(const std::vector<Vec2>& vertices);
+    /// Cuts every polygon body that the segment from world point `a` to `b` crosses from outline to outline, as
+    /// the world cuts a body (CutBody, world_cut.h) in the state shown: each part becomes a body of its own, at the
+    /// same place, moving as its points moved; the first part keeps the body's name and index, the others are
+    /// named after it (B.1, B.2...) and added after the other bodies; slivers below kMinCutArea are dropped. One
+    /// edit. Returns the number of bodies cut; with none, the status line says why.
+    int CutAlong(Vec2 a, Vec2 b);
     /// Adds a body of `shape` at the camera's centre, named `stem` with the first free number, and selects it.
     void AddBody(Shape shape, const std::string& stem);
     /// Deletes the selected body; refused (the status line says why) when none is selected or only two are left.

@@ -2,7 +2,11 @@
 // satviz app: the canvas panel, where the painter draws the figure and the mouse moves, turns, reshapes and launches
 // bodies (after the "Canvas" example of imgui_demo.cpp: an invisible button over a draw list).
 #include "app.h"
+#include "outline_edit.h"
 
+#include <satviz/decompose.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -56,6 +60,10 @@ ScreenPoint VelocityHandle(const View& view, const Body& body)
 bool Contains(const Body& body, Vec2 world)
 {
     const Vec2 local = InvTransformPoint(body.Xf(), world);
+    if (body.IsConcave())
+    {
+        return InsideOutline(body.outline, local); // not the hull: a click in an L's notch misses the L
+    }
     if (body.shape.type == ShapeType::Circle)
     {
         return Length(local - body.shape.circle.center) <= body.shape.circle.radius;
@@ -140,6 +148,7 @@ void Panels::CanvasWindow()
         const Figure figure = viewer.CurrentFigure();
         PaintFigure(canvas, viewer.Studied(), viewer.Setup().study, figure);
         Handles(list, origin);
+        ToolOverlay(list, origin);
         AnnounceHits(canvas, figure, origin);
     }
     ImGui::End();
@@ -162,6 +171,43 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
         drag_ = DragKind::Pan;
     }
     const bool playing = app_.GetSimulation().Playing();
+    if (tool_ != CanvasTool::Select && drag_ == DragKind::None && hovered && ImGui::IsMouseClicked(0))
+    {
+        // Drawing a polygon or a cut: the state shown stays still under the pointer.
+        app_.SimPlay(false);
+        app_.HoldCamera();
+        if (tool_ == CanvasTool::Draw)
+        {
+            if (drawn_.size() >= 3 && Distance(mouse, ToScreen(viewer.Camera(), drawn_.front())) <= kHandleRadius)
+            {
+                FinishDrawing();
+            }
+            else if (drawn_.empty() || Distance(mouse, ToScreen(viewer.Camera(), drawn_.back())) > kHandleRadius)
+            {
+                // A second click on the last vertex (a double click) adds nothing.
+                drawn_.push_back(world);
+                DrawingStatus();
+            }
+            return;
+        }
+        drag_ = DragKind::Cut;
+        cutFrom_ = world;
+        cutTo_ = world;
+    }
+    if (drag_ == DragKind::Cut)
+    {
+        cutTo_ = world;
+        if (!ImGui::IsMouseDown(0))
+        {
+            drag_ = DragKind::None;
+            // A click is no cut: the segment must span a few pixels.
+            if (Length(cutTo_ - cutFrom_) * viewer.Camera().zoom >= 4.0)
+            {
+                app_.CutAlong(cutFrom_, cutTo_);
+            }
+        }
+        return;
+    }
     if (drag_ == DragKind::None && hovered && ImGui::IsMouseClicked(0))
     {
         const int selected = app_.Selected();
@@ -170,16 +216,17 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
         {
             const Body& body = bodies[static_cast<size_t>(selected)];
             const View& camera = viewer.Camera();
-            if (body.shape.type == ShapeType::Polygon && body.shape.polygon.Count() <= 64)
+            // The outline's vertices, as written: a concave body's, not its hull's.
+            const std::vector<Vec2> outline = EditableOutline(body);
+            if (outline.size() <= 64)
             {
                 const Transform xf = body.Xf();
-                for (int i = 0; i < body.shape.polygon.Count(); ++i)
+                for (size_t i = 0; i < outline.size(); ++i)
                 {
-                    if (Distance(mouse, ToScreen(camera, TransformPoint(xf, body.shape.polygon.Vertices()[i]))) <=
-                        kHandleRadius)
+                    if (Distance(mouse, ToScreen(camera, TransformPoint(xf, outline[i]))) <= kHandleRadius)
                     {
                         drag_ = DragKind::Vertex;
-                        dragVertex_ = i;
+                        dragVertex_ = static_cast<int>(i);
                         break;
                     }
                 }
@@ -381,10 +428,11 @@ void Panels::Handles(ImDrawList* list, ImVec2 origin)
     auto at = [&](ScreenPoint p) { return ImVec2(p.x + origin.x, p.y + origin.y); };
     const ImU32 ink = IM_COL32(43, 43, 43, 255);
     const ImU32 white = IM_COL32(255, 255, 255, 255);
-    if (body.shape.type == ShapeType::Polygon && body.shape.polygon.Count() <= 64)
+    const std::vector<Vec2> outline = EditableOutline(body);
+    if (outline.size() <= 64)
     {
         const Transform xf = body.Xf();
-        for (const Vec2& v : body.shape.polygon.Vertices())
+        for (const Vec2& v : outline)
         {
             const ImVec2 p = at(ToScreen(camera, TransformPoint(xf, v)));
             list->AddRectFilled(ImVec2(p.x - 4.0f, p.y - 4.0f), ImVec2(p.x + 4.0f, p.y + 4.0f), white);
@@ -399,6 +447,145 @@ void Panels::Handles(ImDrawList* list, ImVec2 origin)
     const ImVec2 velocity = at(VelocityHandle(camera, body));
     list->AddCircleFilled(velocity, 5.0f, IM_COL32(213, 94, 0, 255));
     list->AddText(ImVec2(velocity.x + 7.0f, velocity.y - 8.0f), ink, "v");
+}
+
+void Panels::SetTool(CanvasTool tool)
+{
+    tool_ = tool;
+    drawn_.clear();
+    if (drag_ == DragKind::Cut)
+    {
+        drag_ = DragKind::None;
+    }
+    switch (tool)
+    {
+    case CanvasTool::Draw:
+        app_.SetStatus("Draw a polygon: click its vertices; click the first one or press Enter to close it, Esc to "
+                       "stop",
+                       false);
+        break;
+    case CanvasTool::Cut:
+        app_.SetStatus("Cut: drag a line across a polygon, from outside to outside; Esc to stop", false);
+        break;
+    case CanvasTool::Select:
+        app_.SetStatus("", false);
+        break;
+    }
+}
+
+// The status line while drawing: the vertex count and what the outline so far, closed, decomposes into.
+void Panels::DrawingStatus()
+{
+    std::string said = "Drawing: " + std::to_string(drawn_.size()) + (drawn_.size() == 1 ? " vertex" : " vertices");
+    if (drawn_.size() >= 3)
+    {
+        const Decomposition pieces = Decompose(drawn_, DecomposeMethod::Fast);
+        if (pieces.Ok())
+        {
+            said += pieces.pieces.size() == 1 ? ", convex"
+                                              : ", " + std::to_string(pieces.pieces.size()) + " convex pieces";
+            said += "; click the first vertex or press Enter to close it";
+        }
+        else
+        {
+            said += "; closed now, the " + DescribeDecomposeError(pieces, drawn_);
+        }
+    }
+    app_.SetStatus(said, false);
+}
+
+void Panels::FinishDrawing()
+{
+    if (drawn_.size() < 3)
+    {
+        app_.SetStatus("A polygon needs at least three vertices: click on", true);
+        return;
+    }
+    if (app_.AddDrawnPolygon(drawn_))
+    {
+        drawn_.clear();
+        tool_ = CanvasTool::Select;
+    }
+}
+
+// The polygon being drawn, closed and cut into its convex pieces as it grows (internal edges dashed), and the cut
+// being drawn.
+void Panels::ToolOverlay(ImDrawList* list, ImVec2 origin)
+{
+    const View& camera = app_.GetViewer().Camera();
+    auto at = [&](Vec2 world) {
+        const ScreenPoint p = ToScreen(camera, world);
+        return ImVec2(p.x + origin.x, p.y + origin.y);
+    };
+    const ImU32 ink = IM_COL32(43, 43, 43, 255);
+    const ImU32 cutInk = IM_COL32(213, 94, 0, 255);
+    const ImGuiIO& io = ImGui::GetIO();
+    if (tool_ == CanvasTool::Draw && !drawn_.empty())
+    {
+        if (drawn_.size() >= 3)
+        {
+            const Decomposition pieces = Decompose(drawn_, DecomposeMethod::Fast);
+            // Distinct fills for the pieces (colour-blind safe, light), their seams dashed.
+            static const ImU32 fills[] = {IM_COL32(86, 180, 233, 70), IM_COL32(230, 159, 0, 70),
+                                          IM_COL32(0, 158, 115, 70), IM_COL32(204, 121, 167, 70),
+                                          IM_COL32(240, 228, 66, 90)};
+            for (size_t k = 0; pieces.Ok() && k < pieces.pieces.size(); ++k)
+            {
+                const Polygon& piece = pieces.pieces[k].polygon;
+                std::vector<ImVec2> points;
+                for (const Vec2& v : piece.Vertices())
+                {
+                    points.push_back(at(v));
+                }
+                list->AddConvexPolyFilled(points.data(), static_cast<int>(points.size()), fills[k % 5]);
+                for (int e = 0; e < piece.Count(); ++e)
+                {
+                    if (!pieces.pieces[k].internal[static_cast<size_t>(e)])
+                    {
+                        continue;
+                    }
+                    const ImVec2 p = points[static_cast<size_t>(e)];
+                    const ImVec2 q = points[static_cast<size_t>((e + 1) % piece.Count())];
+                    const float length = std::hypot(q.x - p.x, q.y - p.y);
+                    for (float t = 0.0f; t < length; t += 10.0f)
+                    {
+                        const float u = t / length;
+                        const float w = std::min(t + 5.0f, length) / length;
+                        list->AddLine(ImVec2(p.x + (q.x - p.x) * u, p.y + (q.y - p.y) * u),
+                                      ImVec2(p.x + (q.x - p.x) * w, p.y + (q.y - p.y) * w), ink, 1.0f);
+                    }
+                }
+            }
+        }
+        for (size_t i = 0; i + 1 < drawn_.size(); ++i)
+        {
+            list->AddLine(at(drawn_[i]), at(drawn_[i + 1]), ink, 2.0f);
+        }
+        // The edge that follows the pointer, and the one that would close the polygon.
+        list->AddLine(at(drawn_.back()), io.MousePos, IM_COL32(43, 43, 43, 160), 1.0f);
+        if (drawn_.size() >= 2)
+        {
+            list->AddLine(io.MousePos, at(drawn_.front()), IM_COL32(43, 43, 43, 90), 1.0f);
+        }
+        for (size_t i = 0; i < drawn_.size(); ++i)
+        {
+            const ImVec2 p = at(drawn_[i]);
+            list->AddRectFilled(ImVec2(p.x - 4.0f, p.y - 4.0f), ImVec2(p.x + 4.0f, p.y + 4.0f),
+                                IM_COL32(255, 255, 255, 255));
+            list->AddRect(ImVec2(p.x - 4.0f, p.y - 4.0f), ImVec2(p.x + 4.0f, p.y + 4.0f), ink, 0.0f, 0, 1.5f);
+        }
+        // The first vertex closes the polygon: ringed once there are three.
+        if (drawn_.size() >= 3)
+        {
+            list->AddCircle(at(drawn_.front()), kHandleRadius + 2.0f, ink, 0, 1.5f);
+        }
+    }
+    if (drag_ == DragKind::Cut)
+    {
+        list->AddLine(at(cutFrom_), at(cutTo_), cutInk, 2.5f);
+        list->AddCircleFilled(at(cutFrom_), 3.5f, cutInk);
+        list->AddCircleFilled(at(cutTo_), 3.5f, cutInk);
+    }
 }
 
 } // namespace satviz

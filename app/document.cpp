@@ -30,7 +30,10 @@ void Document::Measure()
 OpenResult Document::Open(const std::string& path, const std::string& bundledDir)
 {
     OpenResult opened;
-    SceneResult result = LoadScene(path);
+    // A polygon may be concave: decomposed on load, as satviz-render and satviz-sim read it.
+    SceneOptions options;
+    options.concave = true;
+    SceneResult result = LoadScene(path, options);
     if (!result.Ok())
     {
         opened.error = result.error;

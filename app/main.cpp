@@ -450,6 +450,8 @@ int main(int argc, char** argv)
     options.keys.p = GLFW_KEY_P;
     options.keys.period = GLFW_KEY_PERIOD;
     options.keys.comma = GLFW_KEY_COMMA;
+    options.keys.d = GLFW_KEY_D;
+    options.keys.x = GLFW_KEY_X;
     satviz::App app(fonts, options);
     const std::string renderer = FindRenderer(programDir);
     const std::string initial = sceneFile.empty() ? options.scenesDir + "/overlapping_boxes.json" : sceneFile;

@@ -255,9 +255,25 @@ void Panels::Shortcuts()
     {
         app_.FitCamera();
     }
+    if (Pressed(k.d))
+    {
+        SetTool(tool_ == CanvasTool::Draw ? CanvasTool::Select : CanvasTool::Draw);
+    }
+    if (Pressed(k.x))
+    {
+        SetTool(tool_ == CanvasTool::Cut ? CanvasTool::Select : CanvasTool::Cut);
+    }
+    if (tool_ == CanvasTool::Draw && PressedNamed(ImGuiKey_Enter))
+    {
+        FinishDrawing();
+    }
     if (PressedNamed(ImGuiKey_Escape))
     {
         showHelp_ = false;
+        if (tool_ != CanvasTool::Select)
+        {
+            SetTool(CanvasTool::Select);
+        }
     }
 }
 
@@ -350,6 +366,16 @@ void Panels::MenuBar()
         {
             app_.AddBody(MakeShape(Circle{{0.0, 0.0}, 0.5}), "circle");
         }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Draw a polygon", "D", tool_ == CanvasTool::Draw))
+        {
+            SetTool(tool_ == CanvasTool::Draw ? CanvasTool::Select : CanvasTool::Draw);
+        }
+        if (ImGui::MenuItem("Cut", "X", tool_ == CanvasTool::Cut))
+        {
+            SetTool(tool_ == CanvasTool::Cut ? CanvasTool::Select : CanvasTool::Cut);
+        }
+        ImGui::Separator();
         if (ImGui::MenuItem("Delete selected", "Del", false, app_.Selected() >= 0))
         {
             app_.DeleteSelected();
@@ -1223,7 +1249,12 @@ void Panels::HelpOverlay()
         ImGui::Separator();
         ImGui::TextUnformatted("Mouse");
         HelpBullet("drag a body: move it;  shift-drag, or the round handle above it: turn it");
-        HelpBullet("drag a vertex handle of the selected polygon: reshape it (it must stay convex)");
+        HelpBullet("drag a vertex handle of the selected polygon: reshape it (it may become concave: it is cut into "
+                   "convex pieces; its outline must not cross itself)");
+        HelpBullet("d, then click: draw a polygon vertex by vertex; click the first vertex or press Enter to close "
+                   "it, Esc to stop");
+        HelpBullet("x, then drag a line across polygons: cut them (in the simulation, the bodies as they move "
+                   "there); Esc to stop");
         HelpBullet("drag the arrow tip (or the small v handle): set the velocity (the arrow: one time unit)");
         HelpBullet("the hits layer: click a hit on its time bar to see its bodies at that instant (again: all hits)");
         HelpBullet("while the simulation plays, drag a body: it follows the pointer, and leaves at the pointer's "

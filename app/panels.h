@@ -15,6 +15,7 @@
 #include <deque>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace satviz
 {
@@ -37,6 +38,15 @@ enum class DragKind
     Vertex,   ///< moves one vertex of the selected polygon (refused where it would break convexity)
     Velocity, ///< sets the selected body's velocity (its displacement over one time unit)
     Throw,    ///< while the simulation plays: holds the body at the pointer, and throws it on release
+    Cut,      ///< draws the segment of a cut, made on release
+};
+
+/// What a click on the canvas does.
+enum class CanvasTool
+{
+    Select, ///< selects, moves, turns and reshapes bodies (the drags above)
+    Draw,   ///< adds a vertex of a new polygon; the first vertex or Enter closes it, Esc drops it
+    Cut,    ///< a drag draws a cut: every polygon it crosses from outside to outside is cut in two or more
 };
 
 /// The Dear ImGui interface of an app.
@@ -77,6 +87,10 @@ class Panels
     void CanvasWindow();
     void CanvasInput(ImVec2 origin, bool hovered);
     void Handles(ImDrawList* list, ImVec2 origin);
+    void ToolOverlay(ImDrawList* list, ImVec2 origin);
+    void SetTool(CanvasTool tool);
+    void FinishDrawing();
+    void DrawingStatus();
     void AnnounceHits(Canvas& canvas, const Figure& figure, ImVec2 origin);
     void Announce(const std::string& what);
     ImGuiWindowFlags ClearedBackground() const;
@@ -85,6 +99,10 @@ class Panels
     App& app_;
     DragKind drag_ = DragKind::None;
     int dragVertex_ = -1;
+    CanvasTool tool_ = CanvasTool::Select;
+    std::vector<Vec2> drawn_; // the vertices of the polygon being drawn, world points
+    Vec2 cutFrom_{};          // the cut being drawn, world points
+    Vec2 cutTo_{};
     Vec2 grabOffset_{};
     double grabAngle_ = 0.0;
     // A throw: the pointer's world positions over the last kThrowWindow seconds, with their times.

@@ -33,7 +33,8 @@ bool SameBody(const Body& a, const Body& b)
     return a.position == b.position && a.angle == b.angle && a.velocity == b.velocity &&
            a.angularVelocity == b.angularVelocity && a.isStatic == b.isStatic && a.density == b.density &&
            a.material.restitution == b.material.restitution && a.material.friction == b.material.friction &&
-           a.material.staticFriction == b.material.staticFriction && SameShape(a.shape, b.shape);
+           a.material.staticFriction == b.material.staticFriction && SameShape(a.shape, b.shape) &&
+           a.outline == b.outline && a.decompose == b.decompose; // a concave body's hull hides its notches
 }
 
 void PutHand(World& world, int body, Vec2 position, Vec2 velocity)

@@ -6,6 +6,7 @@
 #include "wrapped_text.h"
 
 #include <satviz/collide.h>
+#include <satviz/decompose.h>
 #include <satviz/render/describe.h>
 #include <satviz/render/response_steps.h>
 #include <satviz/render/wrap.h>
@@ -381,45 +382,252 @@ TEST_CASE("The arrows and Play pass over the faces a large-polygon sweep decided
     CHECK(shown == evaluated);
 }
 
-TEST_CASE("A vertex drag that would break convexity is refused and says why", "[app]")
+// Twice the signed area of a closed outline (shoelace), the oracle of the decompositions and cuts below.
+long double Shoelace2(const std::vector<Vec2>& p)
+{
+    long double sum = 0;
+    for (size_t i = 0; i < p.size(); ++i)
+    {
+        const Vec2& a = p[i];
+        const Vec2& b = p[(i + 1) % p.size()];
+        sum += static_cast<long double>(a.x) * b.y - static_cast<long double>(b.x) * a.y;
+    }
+    return sum;
+}
+
+// A body's area by its own outline: a concave body's as written, a polygon's vertices.
+double OutlineArea(const Body& body)
+{
+    if (body.IsConcave())
+    {
+        return static_cast<double>(std::fabs(Shoelace2(body.outline)) / 2);
+    }
+    const std::vector<Vec2> v(body.shape.polygon.Vertices().begin(), body.shape.polygon.Vertices().end());
+    return static_cast<double>(Shoelace2(v) / 2);
+}
+
+// The sum of the pieces' areas of a concave body.
+double PiecesArea(const Body& body)
+{
+    double sum = 0;
+    for (const ConcavePart& part : body.concave.parts)
+    {
+        const std::vector<Vec2> v(part.shape.polygon.Vertices().begin(), part.shape.polygon.Vertices().end());
+        sum += static_cast<double>(Shoelace2(v) / 2);
+    }
+    return sum;
+}
+
+TEST_CASE("A vertex drag may make a polygon concave and decomposed but not make its outline cross itself", "[app]")
 {
     Harness h(ScratchCopy("overlapping_boxes.json").string());
     const Body& b = h.BodyNamed("B");
-    // Select B, then drag its vertex 0 to the far side of the diagonal through vertices 1 and 3.
+    // Select B, then drag its vertex 0 past the diagonal through vertices 1 and 3: a dart, concave.
     h.Drag(h.OnScreen(Centroid(b)), h.OnScreen(Centroid(b)));
     REQUIRE(h.app->Selected() >= 0);
     const Vec2 v0 = TransformPoint(b.Xf(), b.shape.polygon.Vertices()[0]);
     const Vec2 v2 = TransformPoint(b.Xf(), b.shape.polygon.Vertices()[2]);
-    const Vec2 beyond = v0 + 0.8 * (v2 - v0);
-    h.Drag(h.OnScreen(v0), h.OnScreen(beyond));
+    const Vec2 dart = v0 + 0.7 * (v2 - v0);
+    h.Drag(h.OnScreen(v0), h.OnScreen(dart));
+    CHECK(!h.app->StatusIsError());
+    const Body& concave = h.BodyNamed("B");
+    REQUIRE(concave.IsConcave());
+    CHECK(concave.concave.parts.size() == 2);
+    REQUIRE(concave.outline.size() == 4);
+    CHECK(Length(TransformPoint(concave.Xf(), concave.outline[0]) - dart) < 2.0 / h.View().Camera().zoom);
+    // The pieces tile the outline: the dart's area is the box's less the triangle cut out of it.
+    CHECK(PiecesArea(concave) == Approx(OutlineArea(concave)).epsilon(1e-12));
+    CHECK(OutlineArea(concave) == Approx(1.0 - 0.7).margin(0.02));
+    // The vertex handles are the outline's: vertex 0 is where the pointer left it, inside the hull.
+    const Vec2 at = TransformPoint(concave.Xf(), concave.outline[0]);
+
+    // Out past edge 1 the outline would cross itself: refused, the vertex left where it last kept it simple.
+    const Vec2 beyond = TransformPoint(b.Xf(), Vec2{1.0, 0.0}); // past edge 1, which edge 3 would then cross
+    h.Drag(h.OnScreen(at), h.OnScreen(beyond));
     CHECK(h.app->StatusIsError());
-    CHECK(h.app->Status().find("convex") != std::string::npos);
+    CHECK(h.app->Status().find("stays at its last position that keeps the polygon simple") != std::string::npos);
+    CHECK(h.app->Status().find("not simple") != std::string::npos);
     const Body& kept = h.BodyNamed("B");
-    const Vec2 v0after = TransformPoint(kept.Xf(), kept.shape.polygon.Vertices()[0]);
-    CHECK(Length(v0after - beyond) > 0.1); // never accepted there
-    CHECK(MakePolygon(std::vector<Vec2>(kept.shape.polygon.Vertices().begin(), kept.shape.polygon.Vertices().end()))
-              .Ok());
-    // It followed the pointer while the box stayed convex, about half way to vertex 2 (there it would lie on the
-    // diagonal), and the message says so rather than "where it was".
-    const double along = Dot(v0after - v0, v2 - v0) / Dot(v2 - v0, v2 - v0);
-    CHECK(along > 0.35);
-    CHECK(along < 0.5);
-    CHECK(h.app->Status().find("stays at its last position that keeps the polygon convex") != std::string::npos);
-    CHECK(h.app->Status().find("where it was") == std::string::npos);
-    // Undo takes the drag back, and the message with it.
+    const std::vector<Vec2> keptOutline = kept.IsConcave() ? kept.outline
+                                                          : std::vector<Vec2>(kept.shape.polygon.Vertices().begin(),
+                                                                              kept.shape.polygon.Vertices().end());
+    CHECK(Length(TransformPoint(kept.Xf(), keptOutline[0]) - beyond) > 0.1);
+    CHECK(Decompose(keptOutline, DecomposeMethod::Fast).Ok());
+    // Undo takes the refused drag back, then the dart's.
     h.Key(kZ, true);
-    CHECK(!h.app->StatusIsError());
-    CHECK(h.app->Status().empty());
+    h.Key(kZ, true);
     const Body& undone = h.BodyNamed("B");
+    CHECK(!undone.IsConcave());
     CHECK(Length(TransformPoint(undone.Xf(), undone.shape.polygon.Vertices()[0]) - v0) < 1e-12);
+    // Redo brings the dart back, and a drag back outwards makes it a convex polygon again, in the same order.
     h.Key(kY, true);
-    CHECK(!h.app->StatusIsError());
-    // A small outward move is accepted.
+    REQUIRE(h.BodyNamed("B").IsConcave());
     const Vec2 outward = v0 + 0.1 * (v0 - v2);
-    h.Drag(h.OnScreen(v0after), h.OnScreen(outward));
-    const Body& moved = h.BodyNamed("B");
-    CHECK(Length(TransformPoint(moved.Xf(), moved.shape.polygon.Vertices()[0]) - outward) <
+    h.Drag(h.OnScreen(dart), h.OnScreen(outward));
+    const Body& convex = h.BodyNamed("B");
+    CHECK(!convex.IsConcave());
+    CHECK(Length(TransformPoint(convex.Xf(), convex.shape.polygon.Vertices()[0]) - outward) <
           2.0 / h.View().Camera().zoom);
+}
+
+TEST_CASE("Moving a vertex of a concave body inside its hull reshapes the body that the simulation steps", "[app]")
+{
+    const fs::path file = fs::temp_directory_path() / ("satviz-app-notch-" + std::to_string(::getpid()) + ".json");
+    std::ofstream(file) << R"({"bodies": [{"name": "wall", "box": [1, 1], "position": [20, 0], "static": true},
+        {"name": "U", "polygon": [[0,0],[3,0],[3,2],[2,2],[2,1],[1,1],[1,2],[0,2]]}]})";
+    Harness h(file.string());
+    h.app->SimForward();
+    REQUIRE(h.app->GetSimulation().Record().world.bodies[1].mass == Approx(5.0));
+    h.app->SimReset();
+    // The notch's floor lowered from 1 to 0.5: the hull is the same, the U loses half a square unit.
+    const Body& u = h.BodyNamed("U");
+    REQUIRE(h.app->MoveVertex(1, 4, TransformPoint(u.Xf(), Vec2{2, 0.5})));
+    REQUIRE(h.app->MoveVertex(1, 5, TransformPoint(u.Xf(), Vec2{1, 0.5})));
+    h.app->SimForward();
+    CHECK(h.app->GetSimulation().Record().world.bodies[1].mass == Approx(4.5).epsilon(1e-12));
+    fs::remove(file);
+}
+
+TEST_CASE("A polygon drawn by clicking its vertices is added, decomposed as it grows, and saved as its outline",
+          "[app]")
+{
+    const fs::path file = ScratchCopy("overlapping_boxes.json");
+    Harness h(file.string());
+    auto click = [&](Vec2 world) {
+        h.MoveTo(h.OnScreen(world));
+        ImGui::GetIO().MouseDown[0] = true;
+        h.Frames(1);
+        ImGui::GetIO().MouseDown[0] = false;
+        h.Frames(1);
+    };
+    // An arrow head pointing right, below the boxes: concave at its notch.
+    const std::vector<Vec2> arrow{{-1.5, -1.8}, {0.5, -1.3}, {-1.5, -0.8}, {-1.0, -1.3}};
+    h.Key('D');
+    for (const Vec2& v : arrow)
+    {
+        click(v);
+    }
+    CHECK(h.app->Status().find("4 vertices, 2 convex pieces") != std::string::npos);
+    CHECK(h.Doc().GetScene().bodies.size() == 2); // not yet closed
+    click(arrow.front() + Vec2{0.01, 0.01}); // the first vertex closes it
+    REQUIRE(h.Doc().GetScene().bodies.size() == 3);
+    const Body& drawn = h.BodyNamed("polygon1");
+    REQUIRE(drawn.IsConcave());
+    CHECK(drawn.concave.parts.size() == 2);
+    REQUIRE(drawn.outline.size() == arrow.size());
+    const double pixel = 1.0 / h.View().Camera().zoom;
+    for (size_t i = 0; i < arrow.size(); ++i)
+    {
+        CHECK(Length(TransformPoint(drawn.Xf(), drawn.outline[i]) - arrow[i]) < pixel);
+    }
+    // Area 0.75 by hand: the triangle (-1.5, -1.8), (0.5, -1.3), (-1.5, -0.8) of area 1, less the notch's 0.25.
+    CHECK(OutlineArea(drawn) == Approx(0.75).margin(4 * pixel));
+    CHECK(PiecesArea(drawn) == Approx(OutlineArea(drawn)).epsilon(1e-12));
+    CHECK(h.app->Selected() == 2);
+
+    // A triangle drawn clockwise, closed with Enter: one convex polygon.
+    h.Key('D');
+    for (const Vec2& v : {Vec2{-1.5, 1.0}, Vec2{-1.0, 1.5}, Vec2{-0.5, 1.0}})
+    {
+        click(v);
+    }
+    h.Key(kEnter);
+    const Body& triangle = h.BodyNamed("polygon2");
+    CHECK(!triangle.IsConcave());
+    CHECK(triangle.shape.polygon.Count() == 3);
+    CHECK(OutlineArea(triangle) == Approx(0.25).margin(4 * pixel));
+
+    // Each is one edit; saved, the arrow is its outline and reads back concave.
+    h.Key(kZ, true);
+    CHECK(h.Doc().GetScene().bodies.size() == 3);
+    REQUIRE(h.app->Save(file.string()));
+    SceneOptions options;
+    options.concave = true;
+    const SceneResult saved = LoadScene(file.string(), options);
+    REQUIRE(saved.Ok());
+    REQUIRE(saved.scene.bodies.size() == 3);
+    CHECK(saved.scene.bodies[2].IsConcave());
+    CHECK(saved.scene.bodies[2].outline == drawn.outline);
+}
+
+TEST_CASE("A cut drawn with the mouse slices the polygon it crosses into bodies that keep its area and momentum",
+          "[app]")
+{
+    const fs::path file = ScratchCopy("overlapping_boxes.json");
+    Harness h(file.string());
+    h.app->SetVelocity(1, {0.5, -0.25});
+    const Body before = h.BodyNamed("B");
+    const double area = OutlineArea(before);
+    // Across B along its own x axis, from outside to outside; A is left whole (the cut stays clear of it).
+    const Vec2 from = TransformPoint(before.Xf(), Vec2{-0.9, 0.2});
+    const Vec2 to = TransformPoint(before.Xf(), Vec2{0.9, 0.2});
+    h.Key('X');
+    h.Drag(h.OnScreen(from), h.OnScreen(to));
+    REQUIRE(h.Doc().GetScene().bodies.size() == 3);
+    CHECK(h.app->Status() == "Cut B into B and B.1");
+    const Body& b = h.BodyNamed("B");
+    const Body& b1 = h.BodyNamed("B.1");
+    // The two parts tile B: the strip above the cut is 0.3 tall, the rest 0.7, within the pointer's pixels.
+    CHECK(OutlineArea(b) + OutlineArea(b1) == Approx(area).epsilon(1e-12));
+    CHECK(std::min(OutlineArea(b), OutlineArea(b1)) == Approx(0.3).margin(4.0 / h.View().Camera().zoom));
+    // Momentum: the parts' masses times their velocities add up to B's (B does not turn, so both move with it).
+    CHECK(Length(b.velocity - before.velocity) < 1e-15);
+    CHECK(Length(b1.velocity - before.velocity) < 1e-15);
+    // One edit: undo gives B back whole.
+    h.Key(kZ, true);
+    CHECK(h.Doc().GetScene().bodies.size() == 2);
+    CHECK(SceneToJson(h.Doc().GetScene()).find("B.1") == std::string::npos);
+    h.Key(kY, true);
+    REQUIRE(h.app->Save(file.string()));
+    SceneOptions options;
+    options.concave = true;
+    const SceneResult saved = LoadScene(file.string(), options);
+    REQUIRE(saved.Ok());
+    REQUIRE(saved.scene.bodies.size() == 3);
+    CHECK(saved.scene.bodies[2].name == "B.1");
+}
+
+TEST_CASE("A cut in the simulation cuts the world's body as it moves there, keeping the momentum of the state shown",
+          "[app]")
+{
+    const fs::path file = fs::temp_directory_path() / ("satviz-app-cut-" + std::to_string(::getpid()) + ".json");
+    // A U turning and flying, without gravity: its momentum and angular momentum stay what they were.
+    std::ofstream(file) << R"({"bodies": [{"name": "wall", "box": [1, 1], "position": [20, 0], "static": true},
+        {"name": "U", "polygon": [[0,0],[3,0],[3,2],[2,2],[2,1],[1,1],[1,2],[0,2]], "velocity": [1, 0.5],
+         "angular_velocity": 0.8}], "world": {"dt": 0.05}})";
+    Harness h(file.string());
+    for (int i = 0; i < 5; ++i)
+    {
+        h.app->SimForward();
+    }
+    h.Frames(1);
+    const Scene shown = h.app->ShownScene();
+    const World world = MakeWorld(shown);
+    const Vec2 p0 = LinearMomentum(world);
+    const Vec2 origin{-3, 7};
+    const double l0 = AngularMomentum(world, origin);
+    const Body& u = shown.bodies[1];
+    REQUIRE(u.IsConcave());
+    // Through both prongs of the U, above its base: three parts.
+    const Vec2 from = TransformPoint(u.Xf(), Vec2{-1, 1.5});
+    const Vec2 to = TransformPoint(u.Xf(), Vec2{4, 1.5});
+    CHECK(h.app->CutAlong(from, to) == 1);
+    const Scene& cut = h.Doc().GetScene();
+    REQUIRE(cut.bodies.size() == 4);
+    CHECK(cut.bodies[2].name == "U.1");
+    CHECK(cut.bodies[3].name == "U.2");
+    // The state the cut was made in is the scene now; the world made from it has the same momentum.
+    const World after = MakeWorld(cut);
+    const Vec2 p1 = LinearMomentum(after);
+    CHECK(Length(p1 - p0) < 1e-12 * Length(p0));
+    CHECK(AngularMomentum(after, origin) == Approx(l0).epsilon(1e-12));
+    double area = 0;
+    for (size_t i = 1; i < cut.bodies.size(); ++i)
+    {
+        area += OutlineArea(cut.bodies[i]);
+    }
+    CHECK(area == Approx(5.0).epsilon(1e-12)); // the U: 3 x 2 less its 1 x 1 notch
+    fs::remove(file);
 }
 
 TEST_CASE("A key tapped between two frames is seen down for a frame, and every event keeps its order", "[app]")
