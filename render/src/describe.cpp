@@ -28,18 +28,12 @@ std::string Possessive(const std::string& name)
     return name + "'s";
 }
 
-// A coordinate beside others: an exact 0 as 0.00, like its neighbours.
-std::string Coordinate(double value)
-{
-    return value == 0.0 ? "0.00" : FormatNumber(value);
-}
-
 // Two numbers written side by side with as many decimals each: "(-0.342, 0.940)", not "(-0.342, 0.94)". Only the
 // dropped trailing 0 of FormatNumber's fixed notation is put back, so the values read the same.
 std::string Matched(double x, double y, const char* open, const char* close)
 {
-    std::string a = Coordinate(x);
-    std::string b = Coordinate(y);
+    std::string a = FormatNumber(x);
+    std::string b = FormatNumber(y);
     auto decimals = [](const std::string& t) {
         const size_t dot = t.find('.');
         return t.find('e') != std::string::npos || dot == std::string::npos ? -1 : static_cast<int>(t.size() - dot - 1);
@@ -286,7 +280,7 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
     const std::string way = named ? (face.shape == 0 ? "along" : "against") : (t.pushSign > 0 ? "along" : "against");
     const std::string depth = ShownOverlap(t);
     const std::string that = named ? "that face's normal" : "that axis";
-    if (depth == "0")
+    if (depth == "0.00")
     {
         // Touching: no move of 0 separates anything; the intervals meet end to end on the deciding axis.
         text += "Verdict: no axis has a gap, so the shapes are in contact. The smallest overlap is 0, on " + where +
@@ -576,7 +570,7 @@ std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
     const bool face = m.axis.kind == AxisKind::FaceNormal;
     const std::string way = face && m.axis.shape == 1 ? "against" : "along";
     const std::string depth = FormatNumber(m.depth);
-    if (depth == "0")
+    if (depth == "0.00")
     {
         // Touching: the other shape reaches the face and not behind it.
         text += "Verdict: no face test separates, so the shapes are in contact. The face the other shape reaches "
@@ -788,7 +782,8 @@ std::string FormatNumber(double value)
     const double magnitude = std::fabs(value);
     if (magnitude == 0.0)
     {
-        return "0";
+        // Beside other numbers a bare "0" reads as another format: 0.00, like 0.50.
+        return "0.00";
     }
     if (magnitude >= 0.01 && magnitude < 1e9)
     {

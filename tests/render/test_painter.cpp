@@ -688,7 +688,8 @@ TEST_CASE("Over random poses each axis is named after the face turned towards th
 
 TEST_CASE("Numbers as figures print them: no -0, exponents as written, full values that read back", "[painter]")
 {
-    CHECK(FormatNumber(-0.0) == "0");
+    CHECK(FormatNumber(-0.0) == "0.00");
+    CHECK(FormatNumber(0.0) == "0.00");
     CHECK(FormatNumber(1414213.5) == "1414213.50");
     CHECK(FormatNumber(1.41e10) == "1.41e10");
     CHECK(FormatNumber(0.176) == "0.176");

@@ -10,7 +10,7 @@ namespace satviz
 {
 
 /// A number as figures show it: three decimals (two when the third is 0) for magnitudes from 0.01 to 1e9, three
-/// significant digits otherwise, exponents as written (1.41e6), never -0.
+/// significant digits otherwise, exponents as written (1.41e6), never -0, and an exact 0 as 0.00.
 std::string FormatNumber(double value);
 
 /// hi - lo computed from the two values as FormatNumber shows them, so that a reader subtracting the printed ends
