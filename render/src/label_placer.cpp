@@ -17,7 +17,7 @@ constexpr float kSideMargin = 4.0f;   // and its left and right edges, beyond th
 // What a label keeps clear around its text in any case: two labels on one line closer than two spaces read as one
 // ("-3.00 -3.00", "c2 1"), and stacked labels that touch read as one block.
 constexpr float kKeepX = 4.0f;
-constexpr float kKeepY = 1.0f;
+constexpr float kKeepY = 3.0f;
 constexpr double kPi = 3.14159265358979323846;
 
 // The rectangle of a label `size` big whose point nearest the anchor lies `reach` pixels away along `angle`.
@@ -118,6 +118,14 @@ bool InOutline(const std::vector<ScreenPoint>& outline, const ScreenRect& rect, 
     return inside >= 2;
 }
 
+// Whether a label's middle lies beyond its anchor along its preferred direction, when it must.
+bool OnItsSide(bool onSide, ScreenPoint anchor, float dx, float dy, const ScreenRect& rect)
+{
+    const float cx = 0.5f * (rect.minX + rect.maxX) - anchor.x;
+    const float cy = 0.5f * (rect.minY + rect.maxY) - anchor.y;
+    return !onSide || cx * dx + cy * dy > 0.0f;
+}
+
 } // namespace
 
 LabelPlacer::LabelPlacer(Canvas& canvas, float width, float height) : canvas_(canvas), width_(width), height_(height) {}
@@ -138,7 +146,7 @@ void LabelPlacer::ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, Lab
     lines_.push_back({a, b, thickness, from});
 }
 
-void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
+bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
                         float distance, LabelRank rank)
 {
     // A number whose vertex or edge cannot be seen would name nothing.
@@ -149,22 +157,31 @@ void LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
         });
     if (hidden && rank <= LabelRank::Edge)
     {
-        return;
+        return false;
     }
     labels_.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false});
+    return true;
 }
 
-void LabelPlacer::PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoint anchor, std::string_view text,
+bool LabelPlacer::PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoint anchor, std::string_view text,
                                TextStyle style, Color color, float dx, float dy, float distance, LabelRank rank)
 {
-    const size_t before = labels_.size();
-    Place(anchor, text, style, color, dx, dy, distance, rank);
+    if (!Place(anchor, text, style, color, dx, dy, distance, rank))
+    {
+        return false;
+    }
     // An anchor inside the other body (a shape contained in the other, a corner pushed into it) has no outside
     // near it: its label stays beside it rather than at the end of a long leader line, off that body's edges.
-    if (labels_.size() > before)
+    labels_.back().avoid = other;
+    labels_.back().edgesOnly = InsideConvex(other, anchor);
+    return true;
+}
+
+void LabelPlacer::KeepOnSide()
+{
+    if (!labels_.empty())
     {
-        labels_.back().avoid = other;
-        labels_.back().edgesOnly = InsideConvex(other, anchor);
+        labels_.back().onSide = true;
     }
 }
 
@@ -290,7 +307,8 @@ void LabelPlacer::Flush(Color halo)
                 const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
                 const ScreenRect rect = Around(label->anchor, size, start + c.turn * 0.25 * kPi, reach);
                 if (Inside(rect) && Free(rect, pass == 0 ? kLabelSpacing : 0.0f, label->rank) &&
-                    !InOutline(label->avoid, rect, label->edgesOnly, label->anchor))
+                    !InOutline(label->avoid, rect, label->edgesOnly, label->anchor) &&
+                    OnItsSide(label->onSide, label->anchor, label->dx, label->dy, rect))
                 {
                     chosen = rect;
                     found = true;
@@ -308,6 +326,7 @@ void LabelPlacer::Flush(Color halo)
                 const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
                 if (Inside(rect) && Free(rect, 0.0f, label->rank) &&
                     !InOutline(label->avoid, rect, label->edgesOnly, label->anchor) &&
+                    OnItsSide(label->onSide, label->anchor, label->dx, label->dy, rect) &&
                     LeaderClear(label->anchor, rect))
                 {
                     chosen = rect;

@@ -40,14 +40,18 @@ class LabelPlacer
     /// would hide (a projection bar, a marked face). With `from` above LabelRank::Vertex only labels of that rank
     /// and above keep off it: a vertex number or an edge name may still sit on it rather than be left out.
     void ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, LabelRank from = LabelRank::Vertex);
-    /// Adds `text` near `anchor`, `distance` pixels away, preferring the direction (dx, dy) (any length).
-    void Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
+    /// Adds `text` near `anchor`, `distance` pixels away, preferring the direction (dx, dy) (any length). False when
+    /// a vertex number or an edge name is left out at once, its anchor out of sight.
+    bool Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
                float distance = 6.0f, LabelRank rank = LabelRank::Note);
     /// Place, kept out of `other` (a convex outline on screen, any orientation): the label of a body's vertex,
     /// edge or face never sits inside the other body of the pair, where it would read as that body's, unless its
-    /// anchor lies inside that body.
-    void PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoint anchor, std::string_view text,
+    /// anchor lies inside that body. False as for Place.
+    bool PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoint anchor, std::string_view text,
                       TextStyle style, Color color, float dx, float dy, float distance, LabelRank rank);
+    /// Keeps the label added last on the side its preferred direction points to, beyond the line through its anchor
+    /// square to that direction: an edge's name outside its edge, where it names that edge and not the one opposite.
+    void KeepOnSide();
     /// Places every label added and draws them, in the group "labels": leader lines first, then each label on a
     /// faint halo of the background.
     void Flush(Color halo);
@@ -63,6 +67,7 @@ class LabelPlacer
         LabelRank rank;
         std::vector<ScreenPoint> avoid; // a convex outline the label stays out of (empty: none)
         bool edgesOnly = false;         // the anchor lies inside `avoid`: the label only keeps off its edges
+        bool onSide = false;            // the label's middle stays beyond its anchor along (dx, dy)
     };
     struct Line
     {

@@ -545,6 +545,19 @@ class Painter
             legend = UsedMarks();
             legendAt = LegendCorner(LegendSize(canvas_, legend));
         }
+        if (Has(figure_, kLayerShapes))
+        {
+            // A label astride a body's outline hides it under its halo (a small ball's name over the ball) and
+            // reads as either body's: labels keep off both outlines.
+            for (int s = 0; s < 2; ++s)
+            {
+                const std::vector<ScreenPoint> outline = OutlineOf(s);
+                for (size_t i = 0; i < outline.size(); ++i)
+                {
+                    labels_.ReserveLine(outline[i], outline[(i + 1) % outline.size()], 1.0f);
+                }
+            }
+        }
         labels_.Flush(WithAlpha(palette::kBackground, 0.72f));
         if (hasMtvArrow_)
         {
@@ -1519,23 +1532,39 @@ class Painter
     // Where to name a face from: the middle of its longest stretch outside `other` (a convex outline on screen),
     // or its middle when none of it lies outside. A face whose middle the other body covers (a box sunk into a
     // wide slab) is named beside the part that shows, not beside the other body's edge lying over it.
-    static ScreenPoint FreeMiddle(ScreenPoint a, ScreenPoint b, const std::vector<ScreenPoint>& other)
+    // Covered means inside the other body, or within `near` pixels of it.
+    static ScreenPoint FreeMiddle(ScreenPoint a, ScreenPoint b, const std::vector<ScreenPoint>& other,
+                                  float near = 0.0f)
     {
+        float area = 0.0f;
+        for (size_t i = 0; i < other.size(); ++i)
+        {
+            const ScreenPoint& u = other[i];
+            const ScreenPoint& v = other[(i + 1) % other.size()];
+            area += u.x * v.y - v.x * u.y;
+        }
         auto inside = [&](ScreenPoint p) {
-            int sign = 0;
+            if (other.size() < 3 || area == 0.0f)
+            {
+                return false;
+            }
             for (size_t i = 0; i < other.size(); ++i)
             {
                 const ScreenPoint& u = other[i];
                 const ScreenPoint& v = other[(i + 1) % other.size()];
+                const float length = std::hypot(v.x - u.x, v.y - u.y);
+                if (length == 0.0f)
+                {
+                    continue;
+                }
+                // How far p lies outside this edge's line, in pixels (the outline runs either way round).
                 const float cross = (v.x - u.x) * (p.y - u.y) - (v.y - u.y) * (p.x - u.x);
-                const int s = cross > 0.0f ? 1 : (cross < 0.0f ? -1 : 0);
-                if (s == 0 || (sign != 0 && s != sign))
+                if ((area > 0.0f ? -cross : cross) / length >= near)
                 {
                     return false;
                 }
-                sign = s;
             }
-            return other.size() >= 3;
+            return true;
         };
         constexpr int kSamples = 40;
         int bestStart = -1, bestLength = 0, runStart = -1;
@@ -1635,11 +1664,20 @@ class Painter
                 }
                 for (int i = 0; edgeNumbers && i < poly.Count(); ++i)
                 {
-                    const Vec2 mid = TransformPoint(xf, poly.Vertices()[i] + 0.5 * poly.Edge(i));
+                    // Named beside the part of the edge the other body leaves in sight, on the edge's outer side:
+                    // not inside that body, nor within a label's height of it, where the name would sit on it or
+                    // behind it (a ball resting against a wall covers the middle of the wall's face).
+                    const std::vector<ScreenPoint> other = OutlineOf(1 - s);
+                    const ScreenPoint mid =
+                        FreeMiddle(At(TransformPoint(xf, poly.Vertices()[i])),
+                                   At(TransformPoint(xf, poly.Vertices()[(i + 1) % poly.Count()])), other, 12.0f);
                     const Vec2 n = Rotate(xf.q, poly.Normal(i));
-                    labels_.PlaceOutside(OutlineOf(1 - s), At(mid), "e" + std::to_string(i), TextStyle::Label,
-                                         WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x), static_cast<float>(-n.y),
-                                         5.0f, LabelRank::Edge);
+                    if (labels_.PlaceOutside(other, mid, "e" + std::to_string(i), TextStyle::Label,
+                                             WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x),
+                                             static_cast<float>(-n.y), 5.0f, LabelRank::Edge))
+                    {
+                        labels_.KeepOnSide();
+                    }
                 }
             }
         }

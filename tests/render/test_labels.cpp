@@ -207,8 +207,10 @@ std::string Describe(const DrawCommand& c)
 // word flush with the edge reads as cut.
 constexpr float kEdgeMargin = 4.0f;
 // How far apart two texts keep: stacked texts that touch read as one block, and two numbers on one line closer
-// than two spaces read as one ("-3.00 -3.00").
+// than two spaces read as one ("-3.00 -3.00"). Two labels in the scene, stacked closer than a few pixels, read as
+// one phrase ("plank" over "incident edge"): they keep farther apart than lines of one caption.
 constexpr float kStackGap = 2.0f;
+constexpr float kLabelStackGap = 6.0f;
 constexpr float kLineGap = 8.0f;
 
 Box Grown(const Box& b, float dx, float dy)
@@ -279,8 +281,10 @@ std::vector<std::string> HiddenTexts(const RecordingCanvas& canvas, int width, i
             // Side by side on one line (sharing most of their height), or stacked.
             const float shared = std::min(p.maxY, q.maxY) - std::max(p.minY, q.minY);
             const bool oneLine = shared > 0.5f * std::min(p.maxY - p.minY, q.maxY - q.minY);
-            if (Grown(p, oneLine ? 0.5f * kLineGap : 0.5f * kStackGap, 0.5f * kStackGap).Overlaps(
-                    Grown(q, oneLine ? 0.5f * kLineGap : 0.5f * kStackGap, 0.5f * kStackGap)))
+            const bool labels = commands[texts[a].first].group == "labels" && commands[texts[b].first].group == "labels";
+            const float stack = labels ? kLabelStackGap : kStackGap;
+            if (Grown(p, oneLine ? 0.5f * kLineGap : 0.5f * kStackGap, 0.5f * stack).Overlaps(
+                    Grown(q, oneLine ? 0.5f * kLineGap : 0.5f * kStackGap, 0.5f * stack)))
             {
                 problems.push_back(Describe(commands[texts[a].first]) + " and " + Describe(commands[texts[b].first]) +
                                    (p.Overlaps(q) ? " overlap" : " touch"));
@@ -400,6 +404,99 @@ std::vector<std::string> LabelsInOtherBody(const RecordingCanvas& canvas, const 
     return problems;
 }
 
+// A body of the pair as drawn: its outline on screen (a circle as a polygon of many sides).
+std::vector<ScreenPoint> Outline(const Body& body, const View& view)
+{
+    std::vector<ScreenPoint> points;
+    if (body.shape.type == ShapeType::Circle)
+    {
+        const Vec2 c = TransformPoint(body.Xf(), body.shape.circle.center);
+        for (int i = 0; i < 64; ++i)
+        {
+            const double a = 2.0 * 3.14159265358979323846 * i / 64.0;
+            points.push_back(ToScreen(view, c + body.shape.circle.radius * Vec2{std::cos(a), std::sin(a)}));
+        }
+        return points;
+    }
+    for (const Vec2& v : body.shape.polygon.Vertices())
+    {
+        points.push_back(ToScreen(view, TransformPoint(body.Xf(), v)));
+    }
+    return points;
+}
+
+// Labels that sit astride the outline of a body of the pair: the outline runs through the text, whose halo hides
+// it, so the body seems cut (a ball's name over the ball), and the label reads as either body's.
+std::vector<std::string> LabelsOnOutlines(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
+                                          const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    for (int body : {study.bodyA, study.bodyB})
+    {
+        const Body& b = scene.bodies[static_cast<size_t>(body)];
+        const std::vector<ScreenPoint> outline = Outline(b, view);
+        for (const DrawCommand* c : canvas.InGroup("labels"))
+        {
+            if (c->kind != DrawCommand::Kind::Text)
+            {
+                continue;
+            }
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            // The text's ink, a pixel in from its box: an outline that grazes the box runs beside the text.
+            const Box ink{c->points[0].x + 1.0f, c->points[0].y + 2.0f, c->points[0].x + size.x - 1.0f,
+                          c->points[0].y + size.y - 2.0f};
+            for (size_t i = 0; i < outline.size(); ++i)
+            {
+                if (SegmentCovers(outline[i], outline[(i + 1) % outline.size()], 1.0f, ink))
+                {
+                    problems.push_back(Describe(*c) + " lies on the outline of " + b.name);
+                    break;
+                }
+            }
+        }
+    }
+    return problems;
+}
+
+// Edge names on the wrong side of their edge: an edge's name "eN" whose middle lies behind the line of that edge,
+// where it names the face opposite (on a thin wall, the other face).
+std::vector<std::string> EdgeNamesBehind(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
+                                         const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    const int bodies[2] = {study.bodyA, study.bodyB};
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || c->text.size() < 2 || c->text[0] != 'e' ||
+            c->text.find_first_not_of("0123456789", 1) != std::string::npos)
+        {
+            continue;
+        }
+        for (int s = 0; s < 2; ++s)
+        {
+            const Body& body = scene.bodies[static_cast<size_t>(bodies[s])];
+            const int edge = std::stoi(c->text.substr(1));
+            if ((c->color >> 8) != (inks[s] >> 8) || body.shape.type != ShapeType::Polygon ||
+                edge >= body.shape.polygon.Count())
+            {
+                continue;
+            }
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            const Vec2 middle = ToWorld(view, {c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y});
+            const Vec2 local = InvTransformPoint(body.Xf(), middle);
+            const Polygon& poly = body.shape.polygon;
+            if (Dot(poly.Normal(edge), local - poly.Vertices()[edge]) <= 0.0)
+            {
+                problems.push_back(Describe(*c) + " lies behind edge " + std::to_string(edge) + " of " + body.name);
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -436,6 +533,14 @@ std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool face
         PaintFigure(canvas, loaded.scene, setup.study, setup.figure);
         std::vector<std::string> problems = HiddenTexts(canvas, setup.figure.view.width, setup.figure.view.height);
         for (std::string& p : LabelsInOtherBody(canvas, loaded.scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : LabelsOnOutlines(canvas, loaded.scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : EdgeNamesBehind(canvas, loaded.scene, setup.study, setup.figure.view))
         {
             problems.push_back(std::move(p));
         }
@@ -501,6 +606,18 @@ TEST_CASE("The label check finds a label on a label, on an arrow head, under a l
     spaced.Text({20.0f, 20.0f}, "gap 0.60", TextStyle::Label, palette::kInk);
     spaced.Text({40.0f, 23.0f + TextSize(TextStyle::Label)}, "0", TextStyle::Label, palette::kInk);
     CHECK(HiddenTexts(spaced, 200, 100).empty());
+
+    // Two labels of the scene stacked 3 pixels apart read as one phrase; 7 apart they do not.
+    RecordingCanvas phrase;
+    phrase.BeginGroup("labels");
+    phrase.Text({20.0f, 20.0f}, "plank", TextStyle::Heading, palette::kInk);
+    phrase.Text({20.0f, 23.0f + TextSize(TextStyle::Heading)}, "incident edge", TextStyle::Label, palette::kInk);
+    CHECK(HiddenTexts(phrase, 200, 100).size() == 1);
+    RecordingCanvas apartStack;
+    apartStack.BeginGroup("labels");
+    apartStack.Text({20.0f, 20.0f}, "plank", TextStyle::Heading, palette::kInk);
+    apartStack.Text({20.0f, 27.0f + TextSize(TextStyle::Heading)}, "incident edge", TextStyle::Label, palette::kInk);
+    CHECK(HiddenTexts(apartStack, 200, 100).empty());
 
     // A leader line under another label; one that ends at its own label is fine.
     RecordingCanvas leader;
