@@ -32,6 +32,7 @@ constexpr float kAxisGap = 30.0f;          // pixels between the pair's disc and
 constexpr size_t kMinkowskiPoints = 65536; // largest n * m the Minkowski inset draws
 constexpr int kFitAxes = 128;              // at most about this many axis lines are framed by FitFigure
 constexpr float kFitMargin = 22.0f;        // pixels between the axis line and the scene area's edge
+constexpr float kFitSide = 36.0f;          // at the left and right edges: room for a corner's number and edge name
 constexpr float kOutline = 2.0f;           // shape outline thickness
 constexpr float kBar = 6.0f;               // interval bar thickness
 constexpr float kLinePad = 26.0f;          // the axis line runs this far beyond the intervals
@@ -2179,8 +2180,7 @@ View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int
         }
         const double sizeX = std::max(high.x - low.x, 1e-12);
         const double sizeY = std::max(high.y - low.y, 1e-12);
-        const double room = 2.0 * kFitMargin;
-        view.zoom = std::min((areaWidth - room) / sizeX, (areaHeight - room) / sizeY);
+        view.zoom = std::min((areaWidth - 2.0 * kFitSide) / sizeX, (areaHeight - 2.0 * kFitMargin) / sizeY);
         view.zoom = std::max(view.zoom, 1e-9);
         const Vec2 middle = 0.5 * (low + high);
         const double offsetY = 0.5 * (layout.sceneTop + layout.sceneBottom) - 0.5 * height;

@@ -497,6 +497,36 @@ std::vector<std::string> EdgeNamesBehind(const RecordingCanvas& canvas, const Sc
     return problems;
 }
 
+// Corners of the tested pair drawn so close to the image's left or right edge that their numbers and edge names
+// crowd against the border (a corner beyond the edge is a body that runs on out of the picture, and is fine).
+std::vector<std::string> CornersAtTheSides(const Scene& scene, const PairStudy& study, const View& view,
+                                           LayerMask layers)
+{
+    constexpr float kRoom = 24.0f;
+    std::vector<std::string> problems;
+    for (int body : {study.bodyA, study.bodyB})
+    {
+        const Body& b = scene.bodies[static_cast<size_t>(body)];
+        // Only corners the figure draws and numbers: a polygon of many sides has no numbers to crowd.
+        if (!(layers & kLayerShapes) || b.shape.type != ShapeType::Polygon || b.shape.polygon.Count() > 24)
+        {
+            continue;
+        }
+        for (const Vec2& v : b.shape.polygon.Vertices())
+        {
+            const ScreenPoint p = ToScreen(view, TransformPoint(b.Xf(), v));
+            const float width = static_cast<float>(view.width);
+            if ((p.x >= 0.0f && p.x < kRoom) || (p.x <= width && p.x > width - kRoom))
+            {
+                problems.push_back("a corner of " + b.name + " lies " + std::to_string(static_cast<int>(p.x)) +
+                                   " pixels across, against the image's side");
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -541,6 +571,10 @@ std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool face
             problems.push_back(std::move(p));
         }
         for (std::string& p : EdgeNamesBehind(canvas, loaded.scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : CornersAtTheSides(loaded.scene, setup.study, setup.figure.view, setup.figure.layers))
         {
             problems.push_back(std::move(p));
         }
