@@ -118,6 +118,53 @@ bool InOutline(const std::vector<ScreenPoint>& outline, const ScreenRect& rect, 
     return inside >= 2;
 }
 
+// Whether a rectangle and a convex outline share interior: no separating axis among the rectangle's two and the
+// outline's edge normals.
+bool RectMeetsConvex(const ScreenRect& rect, const std::vector<ScreenPoint>& outline)
+{
+    if (outline.size() < 3)
+    {
+        return false;
+    }
+    float lo = INFINITY, hi = -INFINITY, top = INFINITY, bottom = -INFINITY;
+    for (const ScreenPoint& p : outline)
+    {
+        lo = std::min(lo, p.x);
+        hi = std::max(hi, p.x);
+        top = std::min(top, p.y);
+        bottom = std::max(bottom, p.y);
+    }
+    if (hi <= rect.minX || lo >= rect.maxX || bottom <= rect.minY || top >= rect.maxY)
+    {
+        return false;
+    }
+    const ScreenPoint corners[4] = {
+        {rect.minX, rect.minY}, {rect.maxX, rect.minY}, {rect.maxX, rect.maxY}, {rect.minX, rect.maxY}};
+    for (size_t i = 0; i < outline.size(); ++i)
+    {
+        const ScreenPoint& a = outline[i];
+        const ScreenPoint& b = outline[(i + 1) % outline.size()];
+        const float nx = b.y - a.y;
+        const float ny = a.x - b.x;
+        float pmin = INFINITY, pmax = -INFINITY, cmin = INFINITY, cmax = -INFINITY;
+        for (const ScreenPoint& p : outline)
+        {
+            pmin = std::min(pmin, nx * p.x + ny * p.y);
+            pmax = std::max(pmax, nx * p.x + ny * p.y);
+        }
+        for (const ScreenPoint& c : corners)
+        {
+            cmin = std::min(cmin, nx * c.x + ny * c.y);
+            cmax = std::max(cmax, nx * c.x + ny * c.y);
+        }
+        if (pmax > pmin && (cmax <= pmin || pmax <= cmin))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
 // Whether a label's middle lies beyond its anchor along its preferred direction, when it must.
 bool OnItsSide(bool onSide, ScreenPoint anchor, float dx, float dy, const ScreenRect& rect)
 {
@@ -139,6 +186,11 @@ void LabelPlacer::ReserveBand(const ScreenRect& rect)
 {
     taken_.push_back(rect);
     bands_.push_back(rect);
+}
+
+void LabelPlacer::ReserveShape(const std::vector<ScreenPoint>& outline)
+{
+    shapes_.push_back(outline);
 }
 
 void LabelPlacer::ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, LabelRank from)
@@ -236,6 +288,11 @@ bool LabelPlacer::Free(const ScreenRect& rect, float spacing, LabelRank rank) co
     const ScreenRect foot = Footprint(rect);
     const ScreenRect spaced{foot.minX - spacing, foot.minY, foot.maxX + spacing, foot.maxY};
     if (std::any_of(taken_.begin(), taken_.end(), [&](const ScreenRect& other) { return other.Overlaps(spaced); }))
+    {
+        return false;
+    }
+    if (std::any_of(shapes_.begin(), shapes_.end(),
+                    [&](const std::vector<ScreenPoint>& shape) { return RectMeetsConvex(foot, shape); }))
     {
         return false;
     }

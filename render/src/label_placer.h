@@ -40,6 +40,9 @@ class LabelPlacer
     /// would hide (a projection bar, a marked face). With `from` above LabelRank::Vertex only labels of that rank
     /// and above keep off it: a vertex number or an edge name may still sit on it rather than be left out.
     void ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, LabelRank from = LabelRank::Vertex);
+    /// Marks a body outside the tested pair (a convex outline on screen): no label may lie on it or in it, where it
+    /// would read as that body's.
+    void ReserveShape(const std::vector<ScreenPoint>& outline);
     /// Adds `text` near `anchor`, `distance` pixels away, preferring the direction (dx, dy) (any length). False when
     /// a vertex number or an edge name is left out at once, its anchor out of sight.
     bool Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
@@ -91,6 +94,7 @@ class LabelPlacer
     size_t reserved_ = 0; // while placing: taken_ holds the reserved regions before this index, labels after it
     std::vector<ScreenRect> bands_;
     std::vector<Line> lines_;
+    std::vector<std::vector<ScreenPoint>> shapes_;
     std::vector<Label> labels_;
 };
 

@@ -831,6 +831,15 @@ class Painter
                 continue;
             }
             DrawBody(body, palette::kOther, 0.18f);
+            // A label on a grey body would read as that body's.
+            if (!body.IsConcave())
+            {
+                labels_.ReserveShape(ShapeOutline(view_, body.shape, body.Xf()));
+            }
+            for (const ConcavePart& part : body.IsConcave() ? body.concave.parts : std::vector<ConcavePart>{})
+            {
+                labels_.ReserveShape(ShapeOutline(view_, part.shape, body.Xf()));
+            }
         }
         DrawBody(bodyA_, palette::kShapeA, 0.22f);
         DrawBody(bodyB_, palette::kShapeB, 0.28f);

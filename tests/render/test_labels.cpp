@@ -459,6 +459,38 @@ std::vector<std::string> LabelsOnOutlines(const RecordingCanvas& canvas, const S
     return problems;
 }
 
+// Labels on a body outside the tested pair (drawn grey), where they read as that body's: a velocity's "v" inside a
+// grey cushion, a vertex number on a grey wall.
+std::vector<std::string> LabelsOnOtherBodies(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
+                                             const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    for (size_t i = 0; i < scene.bodies.size(); ++i)
+    {
+        const Body& b = scene.bodies[i];
+        if (static_cast<int>(i) == study.bodyA || static_cast<int>(i) == study.bodyB || b.IsConcave())
+        {
+            continue;
+        }
+        const std::vector<ScreenPoint> outline = Outline(b, view);
+        for (const DrawCommand* c : canvas.InGroup("labels"))
+        {
+            if (c->kind != DrawCommand::Kind::Text)
+            {
+                continue;
+            }
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            const Box box{c->points[0].x, c->points[0].y, c->points[0].x + size.x, c->points[0].y + size.y};
+            if (ConvexCovers(outline, box))
+            {
+                problems.push_back(Describe(*c) + " lies on " + b.name + ", a body outside the pair");
+            }
+        }
+    }
+    return problems;
+}
+
 // Edge names on the wrong side of their edge: an edge's name "eN" whose middle lies behind the line of that edge,
 // where it names the face opposite (on a thin wall, the other face).
 std::vector<std::string> EdgeNamesBehind(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
@@ -571,6 +603,10 @@ std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool face
             problems.push_back(std::move(p));
         }
         for (std::string& p : EdgeNamesBehind(canvas, loaded.scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : LabelsOnOtherBodies(canvas, loaded.scene, setup.study, setup.figure.view))
         {
             problems.push_back(std::move(p));
         }
