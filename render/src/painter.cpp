@@ -1321,8 +1321,10 @@ class Painter
 
         const ScreenPoint middle = At(Along(base, d, 0.5 * (from + to)));
         const std::string text = BandLabel(axis_);
-        labels_.Place({middle.x - ox * 14.0f, middle.y - oy * 14.0f}, text, TextStyle::Label,
-                      overlap ? 0x8E3F6CFFu : 0x006E50FFu, -ox, -oy, 4.0f, LabelRank::Verdict);
+        // On the far side of the bars from the pair, where the shapes' own labels crowd less (lesson 4's pitfall
+        // figure put it between the bars and the slab, and pushed the slab's reference face down below it).
+        labels_.Place({middle.x + ox * 14.0f, middle.y + oy * 14.0f}, text, TextStyle::Label,
+                      overlap ? 0x8E3F6CFFu : 0x006E50FFu, ox, oy, 4.0f, LabelRank::Verdict);
     }
 
     // The separating line of a separating axis: perpendicular to it, through the middle of the gap.
