@@ -1679,10 +1679,19 @@ class Painter
                     // Named beside the part of the edge the other body leaves in sight, on the edge's outer side:
                     // not inside that body, nor within a label's height of it, where the name would sit on it or
                     // behind it (a ball resting against a wall covers the middle of the wall's face).
+                    // Only the part of the edge the figure shows counts: a long floor's free stretch off the image
+                    // would put the name out of sight.
                     const std::vector<ScreenPoint> other = OutlineOf(1 - s);
-                    const ScreenPoint mid =
-                        FreeMiddle(At(TransformPoint(xf, poly.Vertices()[i])),
-                                   At(TransformPoint(xf, poly.Vertices()[(i + 1) % poly.Count()])), other, 12.0f);
+                    ScreenPoint from = At(TransformPoint(xf, poly.Vertices()[i]));
+                    ScreenPoint to = At(TransformPoint(xf, poly.Vertices()[(i + 1) % poly.Count()]));
+                    const ScreenPoint wholeFrom = from;
+                    const ScreenPoint wholeTo = to;
+                    if (!ClipSegment(from, to, bounds_))
+                    {
+                        from = wholeFrom;
+                        to = wholeTo;
+                    }
+                    const ScreenPoint mid = FreeMiddle(from, to, other, 12.0f);
                     const Vec2 n = Rotate(xf.q, poly.Normal(i));
                     if (labels_.PlaceOutside(other, mid, "e" + std::to_string(i), TextStyle::Label,
                                              WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x),
