@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -559,6 +560,58 @@ std::vector<std::string> CornersAtTheSides(const Scene& scene, const PairStudy& 
     return problems;
 }
 
+// A face the figure's sentences name ("slab's edge 2") that the picture does not name: no "e2" in that body's colour
+// among the labels, though the body's other edges are named.
+std::vector<std::string> NamedFacesUnnamed(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study)
+{
+    std::vector<std::string> problems;
+    std::string sentences;
+    for (const DrawCommand& c : canvas.commands)
+    {
+        if (c.kind == DrawCommand::Kind::Text && c.group != "labels")
+        {
+            sentences += c.text + " ";
+        }
+    }
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    const int bodies[2] = {study.bodyA, study.bodyB};
+    for (int s = 0; s < 2; ++s)
+    {
+        const Body& body = scene.bodies[static_cast<size_t>(bodies[s])];
+        if (body.shape.type != ShapeType::Polygon)
+        {
+            continue;
+        }
+        // The body's edge names the picture shows: if none, its edges are too small to be named at all.
+        std::vector<int> shown;
+        for (const DrawCommand* c : canvas.InGroup("labels"))
+        {
+            if (c->kind == DrawCommand::Kind::Text && (c->color >> 8) == (inks[s] >> 8) && c->text.size() >= 2 &&
+                c->text[0] == 'e' && c->text.find_first_not_of("0123456789", 1) == std::string::npos)
+            {
+                shown.push_back(std::stoi(c->text.substr(1)));
+            }
+        }
+        if (shown.empty())
+        {
+            continue;
+        }
+        for (int edge = 0; edge < body.shape.polygon.Count(); ++edge)
+        {
+            const std::string phrase = body.name + "'s edge " + std::to_string(edge);
+            const size_t at = sentences.find(phrase);
+            const bool named = at != std::string::npos &&
+                               (at + phrase.size() == sentences.size() || !std::isdigit(static_cast<unsigned char>(
+                                                                              sentences[at + phrase.size()])));
+            if (named && std::find(shown.begin(), shown.end(), edge) == shown.end())
+            {
+                problems.push_back("the sentence names " + phrase + ", which the picture does not label");
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -607,6 +660,10 @@ std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool face
             problems.push_back(std::move(p));
         }
         for (std::string& p : LabelsOnOtherBodies(canvas, loaded.scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : NamedFacesUnnamed(canvas, loaded.scene, setup.study))
         {
             problems.push_back(std::move(p));
         }
