@@ -96,12 +96,14 @@ TEST_CASE("Missing files and directories are errors, not crashes", "[scene]")
 TEST_CASE("Every bundled scene loads", "[scene]")
 {
     int count = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(SATVIZ_SOURCE_DIR "/tutorials/scenes"))
+    // The examples of concave shapes, in a folder of their own, load as the tools that draw them read them.
+    SceneOptions concave;
+    concave.concave = true;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(SATVIZ_SOURCE_DIR "/tutorials/scenes"))
     {
         if (entry.path().extension() == ".json")
         {
-            // Read as the tools read them: a polygon may be concave.
-            const SceneResult r = LoadScene(entry.path().string(), SceneOptions{true});
+            const SceneResult r = LoadScene(entry.path().string(), concave);
             INFO(r.error);
             CHECK(r.Ok());
             ++count;
@@ -197,6 +199,30 @@ TEST_CASE("View block errors name the field", "[scene]")
     CHECK(ParseScene(SceneToJson(single.scene), "s.json").scene.view.singlePrecision);
 }
 
+TEST_CASE("A view's figure loads, saves back, and is refused for a body it cannot draw, naming the field", "[scene]")
+{
+    const std::string one = R"({"bodies": [{"name": "L", "polygon": [[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]]},
+        {"name": "ball", "circle": {"radius": 1}}], "view": )";
+    SceneOptions concave;
+    concave.concave = true;
+    const SceneResult cut = ParseScene(one + R"({"figure": "decomposition"}})", "s.json", concave);
+    INFO(cut.error);
+    REQUIRE(cut.Ok());
+    CHECK(cut.scene.view.figure == FigureKind::Decomposition);
+    CHECK(ParseScene(SceneToJson(cut.scene), "again.json", concave).scene.view.figure == FigureKind::Decomposition);
+    // Absent stays absent: the pair's figure is the default.
+    const SceneResult plain = ParseScene(one + "{}}", "s.json", concave);
+    CHECK(plain.scene.view.figure == FigureKind::Pair);
+    CHECK(SceneToJson(plain.scene).find("figure") == std::string::npos);
+    CHECK(ParseScene(one + R"({"figure": "cut"}})", "s.json", concave).error ==
+          "s.json: view.figure: expected \"pair\" or \"decomposition\", got \"cut\"");
+    CHECK(ParseScene(one + R"({"pair": ["ball", "L"], "figure": "decomposition"}})", "s.json", concave).error ==
+          "s.json: view.figure: a decomposition figure cuts the pair's first body, \"ball\", which is a circle, "
+          "not a polygon");
+    CHECK(ErrorOf(R"({"bodies": [], "view": {"figure": "decomposition"}})") ==
+          "s.json: view.figure: a decomposition figure cuts the pair's first body: the scene has no body");
+}
+
 TEST_CASE("A view's sim_steps loads, saves back and refuses a negative or fractional count", "[scene]")
 {
     const std::string two = R"({"bodies": [{"name": "P", "box": [1, 1]}, {"name": "Q", "box": [1, 1]}], "view": )";
@@ -222,11 +248,18 @@ TEST_CASE("A view's sim_steps loads, saves back and refuses a negative or fracti
 TEST_CASE("A saved scene reads back as the same scene, bit for bit", "[scene]")
 {
     int scenes = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    SceneOptions concave;
+    concave.concave = true;
+    for (const auto& entry :
+         std::filesystem::recursive_directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
     {
-        const SceneResult original = LoadScene(entry.path().string(), SceneOptions{true}); // concave too
+        if (entry.path().extension() != ".json")
+        {
+            continue;
+        }
+        const SceneResult original = LoadScene(entry.path().string(), concave);
         REQUIRE(original.Ok());
-        const SceneResult again = ParseScene(SceneToJson(original.scene), "saved.json", SceneOptions{true});
+        const SceneResult again = ParseScene(SceneToJson(original.scene), "saved.json", concave);
         INFO(entry.path() << "\n" << again.error);
         REQUIRE(again.Ok());
         const Scene& a = original.scene;
@@ -267,6 +300,11 @@ TEST_CASE("A saved scene reads back as the same scene, bit for bit", "[scene]")
         CHECK(a.view.caption == b.view.caption);
         CHECK(a.view.singlePrecision == b.view.singlePrecision);
         CHECK(a.view.simSteps == b.view.simSteps);
+        CHECK(a.view.figure == b.view.figure);
+        for (size_t i = 0; i < a.bodies.size(); ++i)
+        {
+            CHECK(a.bodies[i].outline == b.bodies[i].outline);
+        }
         ++scenes;
     }
     CHECK(scenes >= 8);
@@ -388,9 +426,16 @@ TEST_CASE("Saving a loaded scene keeps the file's form: $schema, shorthands, key
 TEST_CASE("Every bundled scene saves back to the same JSON, key for key and number for number", "[scene]")
 {
     int scenes = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    SceneOptions concave;
+    concave.concave = true;
+    for (const auto& entry :
+         std::filesystem::recursive_directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
     {
-        const SceneResult original = LoadScene(entry.path().string(), SceneOptions{true}); // concave too
+        if (entry.path().extension() != ".json")
+        {
+            continue;
+        }
+        const SceneResult original = LoadScene(entry.path().string(), concave);
         REQUIRE(original.Ok());
         std::ifstream in(entry.path());
         const nlohmann::ordered_json file = nlohmann::ordered_json::parse(in);
@@ -398,7 +443,7 @@ TEST_CASE("Every bundled scene saves back to the same JSON, key for key and numb
         INFO(entry.path() << "\n" << saved);
         CHECK(nlohmann::ordered_json::parse(saved).dump() == file.dump());
         // Saving the saved file changes nothing.
-        CHECK(SceneToJson(ParseScene(saved, "saved.json").scene) == saved);
+        CHECK(SceneToJson(ParseScene(saved, "saved.json", concave).scene) == saved);
         ++scenes;
     }
     CHECK(scenes >= 8);

@@ -60,6 +60,7 @@ set(SATVIZ_FIGURE_SCENES
   l17_spinner_sampled
   l17_spinner_after
   l17_skips
+  concave/decompose_flag
 )
 set(SATVIZ_STEP_SCENES
   overlapping_boxes

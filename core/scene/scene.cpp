@@ -469,7 +469,7 @@ SceneView ParseView(const Json& value, const Scene& scene)
     }
     CheckKeys(value, path,
               {"center", "zoom", "size", "layers", "pair", "query", "steps", "pitfall", "step", "time", "caption",
-               "precision", "sim_steps"});
+               "precision", "sim_steps", "figure"});
     SceneView view;
     if (value.contains("zoom"))
     {
@@ -610,6 +610,34 @@ SceneView ParseView(const Json& value, const Scene& scene)
     if (value.contains("sim_steps"))
     {
         view.simSteps = WholeNumber(value["sim_steps"], path + ".sim_steps", 0, kMaxViewSimSteps);
+    }
+    if (value.contains("figure"))
+    {
+        const std::string name = String(value["figure"], path + ".figure");
+        if (!FigureKindFromName(name, view.figure))
+        {
+            Fail(path + ".figure", "expected " + FigureKindList() + ", got \"" + name + "\"");
+        }
+        // A figure of one body draws the pair's first: checked here, so that a scene the figure cannot draw fails
+        // on load.
+        const Body* body = nullptr;
+        for (const Body& b : scene.bodies)
+        {
+            if (view.bodyA.empty() || b.name == view.bodyA)
+            {
+                body = &b;
+                break;
+            }
+        }
+        if (view.figure == FigureKind::Decomposition && body == nullptr)
+        {
+            Fail(path + ".figure", "a decomposition figure cuts the pair's first body: the scene has no body");
+        }
+        if (view.figure == FigureKind::Decomposition && body->shape.type != ShapeType::Polygon)
+        {
+            Fail(path + ".figure", "a decomposition figure cuts the pair's first body, \"" + body->name +
+                                       "\", which is a circle, not a polygon");
+        }
     }
     return view;
 }
@@ -1111,9 +1139,13 @@ Json ViewJson(const SceneView& v, const Json* old, bool fromFile)
     {
         fields.push_back({"sim_steps", v.simSteps});
     }
+    if (v.figure != FigureKind::Pair || (fromFile && Member(old, "figure") != nullptr))
+    {
+        fields.push_back({"figure", std::string(FigureKindName(v.figure))});
+    }
     return Arrange(fields, old,
                    {"center", "zoom", "size", "layers", "pair", "query", "steps", "pitfall", "step", "time", "caption",
-                    "precision", "sim_steps"});
+                    "precision", "sim_steps", "figure"});
 }
 
 // The world block. `old` is the file's, null for a scene built in code (which writes both fields) or a file
@@ -1276,6 +1308,54 @@ bool PitfallFromName(std::string_view name, Pitfall& pitfall)
         }
     }
     return false;
+}
+
+namespace
+{
+
+// The one list of figure kinds and their scene-file names.
+constexpr std::pair<FigureKind, std::string_view> kFigureKindNames[] = {
+    {FigureKind::Pair, "pair"},
+    {FigureKind::Decomposition, "decomposition"},
+};
+
+} // namespace
+
+std::string_view FigureKindName(FigureKind kind)
+{
+    for (const auto& [value, name] : kFigureKindNames)
+    {
+        if (value == kind)
+        {
+            return name;
+        }
+    }
+    return "pair";
+}
+
+bool FigureKindFromName(std::string_view name, FigureKind& kind)
+{
+    for (const auto& [value, known] : kFigureKindNames)
+    {
+        if (known == name)
+        {
+            kind = value;
+            return true;
+        }
+    }
+    return false;
+}
+
+std::string FigureKindList()
+{
+    std::string list;
+    const size_t count = sizeof kFigureKindNames / sizeof kFigureKindNames[0];
+    for (size_t i = 0; i < count; ++i)
+    {
+        list += std::string(i == 0 ? "" : (i + 1 == count ? " or " : ", ")) + "\"" +
+                std::string(kFigureKindNames[i].second) + "\"";
+    }
+    return list;
 }
 
 std::string SceneToJson(const Scene& scene)

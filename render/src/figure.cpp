@@ -25,6 +25,26 @@ int BodyIndex(const Scene& scene, const std::string& name, int fallback)
     return -1;
 }
 
+// The figure of one body (a decomposition of a scene with one body): its index, the image size and layers.
+FigureSetup SetUpBodyFigure(const Scene& scene, const FigureOptions& options)
+{
+    FigureSetup setup;
+    const SceneView& view = scene.view;
+    Figure& figure = setup.figure;
+    figure.layers =
+        options.setLayers ? options.layers : (view.layers.empty() ? kDefaultLayers : LayersFromNames(view.layers));
+    figure.view.width = options.width > 0 ? options.width : view.width;
+    figure.view.height = options.height > 0 ? options.height : view.height;
+    figure.caption = view.caption;
+    figure.kind = view.figure;
+    figure.body = BodyIndex(scene, view.bodyA, 0);
+    if (figure.body < 0)
+    {
+        setup.error = "view.figure: names no body to draw";
+    }
+    return setup;
+}
+
 } // namespace
 
 bool FigurePair(const Scene& scene, int& a, int& b)
@@ -50,6 +70,11 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
 {
     FigureSetup setup;
     const SceneView& view = scene.view;
+    if (view.figure == FigureKind::Decomposition && scene.bodies.size() < 2)
+    {
+        // A figure of one body needs no pair: nothing is tested.
+        return SetUpBodyFigure(scene, options);
+    }
     if (scene.bodies.size() < 2)
     {
         setup.error =
@@ -98,6 +123,8 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
     figure.time = view.time;
     figure.caption = view.caption;
     figure.sim = options.sim;
+    figure.kind = view.figure;
+    figure.body = BodyIndex(scene, view.bodyA, 0);
     return setup;
 }
 

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "concave_views.h"
 #include "draw_kit.h"
 #include "label_placer.h"
 #include "legend.h"
@@ -2211,6 +2212,12 @@ View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int
 
 void PaintFigure(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure)
 {
+    if (figure.kind == FigureKind::Decomposition && figure.body >= 0 &&
+        figure.body < static_cast<int>(scene.bodies.size()))
+    {
+        PaintDecomposition(canvas, scene, figure.body, figure);
+        return;
+    }
     Painter painter(canvas, scene, study, figure);
     painter.Paint();
 }

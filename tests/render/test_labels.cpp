@@ -647,29 +647,34 @@ std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool face
         RecordingCanvas canvas;
         PaintFigure(canvas, loaded.scene, setup.study, setup.figure);
         std::vector<std::string> problems = HiddenTexts(canvas, setup.figure.view.width, setup.figure.view.height);
-        for (std::string& p : LabelsInOtherBody(canvas, loaded.scene, setup.study, setup.figure.view))
+        // A figure of its own (a decomposition, ...) draws no pair: the checks of labels against the pair's bodies
+        // are for the pair's figures.
+        if (setup.figure.kind == FigureKind::Pair)
         {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : LabelsOnOutlines(canvas, loaded.scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : EdgeNamesBehind(canvas, loaded.scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : LabelsOnOtherBodies(canvas, loaded.scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : NamedFacesUnnamed(canvas, loaded.scene, setup.study))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : CornersAtTheSides(loaded.scene, setup.study, setup.figure.view, setup.figure.layers))
-        {
-            problems.push_back(std::move(p));
+            for (std::string& p : LabelsInOtherBody(canvas, loaded.scene, setup.study, setup.figure.view))
+            {
+                problems.push_back(std::move(p));
+            }
+            for (std::string& p : LabelsOnOutlines(canvas, loaded.scene, setup.study, setup.figure.view))
+            {
+                problems.push_back(std::move(p));
+            }
+            for (std::string& p : EdgeNamesBehind(canvas, loaded.scene, setup.study, setup.figure.view))
+            {
+                problems.push_back(std::move(p));
+            }
+            for (std::string& p : LabelsOnOtherBodies(canvas, loaded.scene, setup.study, setup.figure.view))
+            {
+                problems.push_back(std::move(p));
+            }
+            for (std::string& p : NamedFacesUnnamed(canvas, loaded.scene, setup.study))
+            {
+                problems.push_back(std::move(p));
+            }
+            for (std::string& p : CornersAtTheSides(loaded.scene, setup.study, setup.figure.view, setup.figure.layers))
+            {
+                problems.push_back(std::move(p));
+            }
         }
         drawn.push_back({(faces ? "faces/" : "") + stem + (allSteps ? "-step" + std::to_string(k + 1) : "") + ".png",
                          std::move(problems)});

@@ -81,6 +81,22 @@ std::string_view PitfallName(Pitfall pitfall);
 /// The pitfall of a name, false for an unknown one.
 bool PitfallFromName(std::string_view name, Pitfall& pitfall);
 
+/// What a figure of the scene shows ("figure" in the view block).
+enum class FigureKind
+{
+    Pair,          ///< "pair": the SAT test of the pair, step by step (the default)
+    Decomposition, ///< "decomposition": the pair's first body cut into convex pieces by both methods, side by side
+};
+
+/// The scene-file name of a figure kind ("pair", "decomposition", ...): the one list of them.
+std::string_view FigureKindName(FigureKind kind);
+
+/// The figure kind of a name, false for an unknown one.
+bool FigureKindFromName(std::string_view name, FigureKind& kind);
+
+/// The scene-file names of every figure kind, quoted, for error messages: "pair", ... or "decomposition".
+std::string FigureKindList();
+
 /// How a scene is to be pictured: camera, image size, layers, the pair and the step of its trace. Optional in a
 /// scene file ("view": {...}); every field has a default.
 struct SceneView
@@ -106,6 +122,7 @@ struct SceneView
     /// many times by the scene's dt and the bodies are drawn where the world leaves them (SimulateScene). 0, the
     /// default: drawn as written.
     int simSteps = 0;
+    FigureKind figure = FigureKind::Pair; ///< what the figure shows ("figure"; default "pair")
 };
 
 /// Most rigid-body steps a view may ask for before it is pictured ("sim_steps").

@@ -28,6 +28,11 @@ struct Figure
     /// The hits layer: the hit of the step (an index into sim->lastStep.hits) whose instant is shown, its two
     /// bodies solid where they touch; -1: every hit, dashed.
     int hit = -1;
+    /// What the figure shows: the pair's SAT test (Pair), or a figure of its own drawn in panels (a decomposition,
+    /// ...), for which `view` gives only the image size.
+    FigureKind kind = FigureKind::Pair;
+    /// Figures of one body (a decomposition): that body's index in the scene.
+    int body = -1;
 };
 
 /// Screen regions of a figure: the caption band on top, the number-line panel at the bottom, the scene between.

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// satviz render, private: the figures of concave shapes, each drawn in panels of its own rather than as a step of
+// the pair's SAT test: a decomposition by both methods side by side. What they share: a caption band, panels framed
+// on a world box, pieces in colours of their own with their seams dashed.
+#pragma once
+
+#include "draw_kit.h"
+#include "label_placer.h"
+
+#include <satviz/decompose.h>
+#include <satviz/render/painter.h>
+
+#include <string>
+#include <vector>
+
+namespace satviz
+{
+
+/// A framed part of a figure: its screen rectangle and the camera that shows its world box inside it.
+struct Panel
+{
+    ScreenRect rect;
+    View view;
+};
+
+/// The panel over `rect` that shows the world box [low, high] whole, centred, `margin` pixels inside the rectangle,
+/// at `zoom` pixels per unit when zoom > 0 (panels side by side at one scale) or else the largest that fits.
+Panel FramePanel(const ScreenRect& rect, Vec2 low, Vec2 high, int width, int height, float margin, double zoom = 0.0);
+
+/// The largest zoom at which the world box [low, high] fits in `rect` with `margin` pixels around it.
+double FitZoom(const ScreenRect& rect, Vec2 low, Vec2 high, float margin);
+
+/// The colour of piece i: the Okabe-Ito hues in turn, so that neighbouring pieces differ.
+Color PieceColor(int i);
+
+/// Draws the caption band at the top of the figure: the scene's title (when not empty) in the heading style, then
+/// `text` wrapped to the width. Returns the band's bottom edge.
+float DrawCaptionBand(Canvas& canvas, const std::string& title, const std::string& text, float width);
+
+/// Draws convex pieces placed by xf: each filled in its own colour, its outline edges solid ink and each seam
+/// between two pieces dashed once (drawn from the piece where it runs from the lower vertex index to the higher).
+void DrawPieces(Canvas& canvas, const View& view, const std::vector<ConvexPiece>& pieces, const Transform& xf,
+                const ScreenRect& bounds);
+
+/// The vertices of a polygon body in its frame: a concave body's outline as written, else its polygon's vertices.
+std::vector<Vec2> BodyOutline(const Body& body);
+
+/// The decomposition figure (FigureKind::Decomposition): the body cut by Fast and by Fewest side by side, each
+/// panel's pieces in their own colours, seams dashed, piece numbers and counts, reflex vertices ringed.
+void PaintDecomposition(Canvas& canvas, const Scene& scene, int body, const Figure& figure);
+
+/// The caption of the decomposition figure: the outline's vertices and reflex vertices, both methods' pieces and
+/// seams, and the least number of pieces any decomposition needs, from the two decompositions of the outline.
+std::string DescribeDecomposition(const std::vector<Vec2>& outline, const Decomposition& fast,
+                                  const Decomposition& fewest);
+
+} // namespace satviz

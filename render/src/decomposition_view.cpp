@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: MIT
+// The decomposition figure: one outline cut into convex pieces by both methods, side by side at one scale.
+#include "concave_views.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace satviz
+{
+
+namespace
+{
+
+constexpr float kHeaderHeight = 40.0f; // a panel's title and the line under it
+constexpr float kMargin = 28.0f;       // room around the outline inside a panel, for vertex numbers
+
+// Indices of the outline's reflex vertices, taken in counter-clockwise order whatever the outline's own.
+std::vector<int> ReflexVertices(const std::vector<Vec2>& outline)
+{
+    const size_t n = outline.size();
+    double area2 = 0.0;
+    for (size_t i = 0; i < n; ++i)
+    {
+        area2 += Cross(outline[i], outline[(i + 1) % n]);
+    }
+    std::vector<int> reflex;
+    for (size_t i = 0; i < n; ++i)
+    {
+        const Vec2 a = outline[(i + n - 1) % n];
+        const Vec2 b = outline[i];
+        const Vec2 c = outline[(i + 1) % n];
+        const double turn = Cross(b - a, c - b) * (area2 < 0.0 ? -1.0 : 1.0);
+        if (turn < 0.0)
+        {
+            reflex.push_back(static_cast<int>(i));
+        }
+    }
+    return reflex;
+}
+
+// The input vertices that are corners of some piece (repeated and straight vertices are dropped before cutting).
+int CornerCount(const Decomposition& d)
+{
+    std::set<int> corners;
+    for (const ConvexPiece& piece : d.pieces)
+    {
+        corners.insert(piece.source.begin(), piece.source.end());
+    }
+    return static_cast<int>(corners.size());
+}
+
+std::string Plural(int count, const char* one, const char* many)
+{
+    return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
+} // namespace
+
+std::string DescribeDecomposition(const std::vector<Vec2>& outline, const Decomposition& fast,
+                                  const Decomposition& fewest)
+{
+    const int n = static_cast<int>(outline.size());
+    const int corners = CornerCount(fast);
+    const int reflex = static_cast<int>(ReflexVertices(outline).size());
+    const int piecesFast = static_cast<int>(fast.pieces.size());
+    const int piecesFewest = static_cast<int>(fewest.pieces.size());
+    std::string text =
+        "An outline of " + Plural(n, "vertex", "vertices") + ", " + std::to_string(reflex) + " of them reflex (ringed)";
+    if (corners < n)
+    {
+        text += "; " + Plural(n - corners, "vertex lies", "vertices lie") +
+                " on a straight line or repeats, and is dropped first";
+    }
+    if (reflex == 0)
+    {
+        return text + ". It is convex: one piece, cut by neither method.";
+    }
+    const int seams = corners - 3;
+    const int kept = piecesFast - 1;
+    text +=
+        ". A convex piece has no reflex corner, so a seam (dashed) must end at each. Fast clips " +
+        Plural(corners - 2, "triangle", "triangles") + " off the outline as ears, joined by " +
+        Plural(seams, "seam", "seams") +
+        ", then removes in turn each seam whose two ends stay convex without it: " + std::to_string(seams - kept) +
+        " go, " + std::to_string(kept) + " stay, " + Plural(piecesFast, "piece", "pieces") +
+        ". Fewest: " + Plural(piecesFewest, "piece", "pieces") + ", the fewest with corners at the outline's vertices" +
+        (corners > kFewestMaxVertices ? " (above " + std::to_string(kFewestMaxVertices) + " vertices, Fast's pieces)"
+                                      : std::string()) +
+        ". A seam has two ends, so no decomposition has fewer than " + std::to_string(reflex) +
+        "/2 rounded up + 1 = " + std::to_string((reflex + 1) / 2 + 1) + " pieces.";
+    return text;
+}
+
+void PaintDecomposition(Canvas& canvas, const Scene& scene, int bodyIndex, const Figure& figure)
+{
+    const Body& body = scene.bodies[static_cast<size_t>(bodyIndex)];
+    const float width = static_cast<float>(figure.view.width);
+    const float height = static_cast<float>(figure.view.height);
+    const std::vector<Vec2> outline = BodyOutline(body);
+    const Decomposition fast = Decompose(outline, DecomposeMethod::Fast);
+    const Decomposition fewest = Decompose(outline, DecomposeMethod::Fewest);
+    const Transform xf = MakeTransform(Vec2{}, body.angle);
+
+    canvas.BeginGroup("background");
+    canvas.FillRect({0.0f, 0.0f}, {width, height}, palette::kBackground);
+    const float top = (figure.layers & kLayerCaption)
+                          ? DrawCaptionBand(canvas, figure.caption, DescribeDecomposition(outline, fast, fewest), width)
+                          : 0.0f;
+    LabelPlacer labels(canvas, width, height);
+    labels.ReserveBand({0.0f, 0.0f, width, top});
+
+    Vec2 low{INFINITY, INFINITY};
+    Vec2 high{-INFINITY, -INFINITY};
+    for (const Vec2& v : outline)
+    {
+        const Vec2 p = TransformPoint(xf, v);
+        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+    }
+    const ScreenRect rects[2] = {{0.0f, top + kHeaderHeight, 0.5f * width, height},
+                                 {0.5f * width, top + kHeaderHeight, width, height}};
+    const double zoom = std::min(FitZoom(rects[0], low, high, kMargin), FitZoom(rects[1], low, high, kMargin));
+    const Decomposition* results[2] = {&fast, &fewest};
+    const char* names[2] = {"Fast", "Fewest"};
+    const char* methods[2] = {"ear clipping, then Hertel-Mehlhorn", "exact programme, corners at vertices"};
+    const std::vector<int> reflex = ReflexVertices(outline);
+    const bool numbered = outline.size() <= 24;
+    Vec2 middle{};
+    for (const Vec2& v : outline)
+    {
+        middle = middle + (1.0 / static_cast<double>(outline.size())) * v;
+    }
+    canvas.BeginGroup("divider");
+    canvas.Segment({0.5f * width, top}, {0.5f * width, height}, palette::kFaint, 1.0f);
+    for (int side = 0; side < 2; ++side)
+    {
+        const Panel panel = FramePanel(rects[side], low, high, figure.view.width, figure.view.height, kMargin, zoom);
+        const Decomposition& d = *results[side];
+        canvas.BeginGroup(side == 0 ? "fast" : "fewest");
+        const int pieces = static_cast<int>(d.pieces.size());
+        const std::string title =
+            std::string(names[side]) + ": " + std::to_string(pieces) + (pieces == 1 ? " piece" : " pieces");
+        const float x = rects[side].minX + 12.0f;
+        canvas.Text({x, top + 6.0f}, title, TextStyle::Heading, palette::kInk);
+        canvas.Text({x, top + 23.0f}, methods[side], TextStyle::Label, palette::kMuted);
+        labels.Reserve({x, top + 4.0f, rects[side].maxX, top + kHeaderHeight});
+        DrawPieces(canvas, panel.view, d.pieces, xf, rects[side]);
+        for (const int i : reflex)
+        {
+            const ScreenPoint p = ToScreen(panel.view, TransformPoint(xf, outline[static_cast<size_t>(i)]));
+            canvas.Circle(p, 5.0f, palette::kResult, 1.5f);
+            labels.Reserve({p.x - 6.0f, p.y - 6.0f, p.x + 6.0f, p.y + 6.0f});
+        }
+        for (int i = 0; i < pieces; ++i)
+        {
+            const Polygon& polygon = d.pieces[static_cast<size_t>(i)].polygon;
+            Vec2 centre{};
+            for (const Vec2& v : polygon.Vertices())
+            {
+                centre = centre + (1.0 / polygon.Count()) * v;
+            }
+            labels.Place(ToScreen(panel.view, TransformPoint(xf, centre)), std::to_string(i + 1), TextStyle::Heading,
+                         palette::kInk, 0.0f, 0.0f, 0.0f, LabelRank::Name);
+        }
+        if (numbered && (figure.layers & kLayerLabels))
+        {
+            for (size_t i = 0; i < outline.size(); ++i)
+            {
+                const Vec2 out = outline[i] - middle;
+                const Vec2 d2 = Rotate(xf.q, out);
+                labels.Place(ToScreen(panel.view, TransformPoint(xf, outline[i])), std::to_string(i), TextStyle::Label,
+                             palette::kMuted, static_cast<float>(d2.x), static_cast<float>(-d2.y), 8.0f,
+                             LabelRank::Vertex);
+            }
+        }
+    }
+    labels.Flush(palette::kBackground);
+}
+
+} // namespace satviz

@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+// The figures of concave shapes, through a recording canvas: what each panel draws agrees with the shapes measured
+// on their own (areas, reflex corners, counts) and with the sentence above it.
+#include "support/random_concave.h"
+
+#include <satviz/render/figure.h>
+#include <satviz/render/recording_canvas.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+using namespace satviz;
+
+namespace
+{
+
+Scene LoadConcave(const std::string& text)
+{
+    SceneOptions options;
+    options.concave = true;
+    SceneResult result = ParseScene(text, "s.json", options);
+    INFO(result.error);
+    REQUIRE(result.Ok());
+    return result.scene;
+}
+
+RecordingCanvas PaintScene(const Scene& scene)
+{
+    FigureSetup setup = SetUpFigure(scene, {});
+    INFO(setup.error);
+    REQUIRE(setup.Ok());
+    RecordingCanvas canvas;
+    PaintFigure(canvas, scene, setup.study, setup.figure);
+    return canvas;
+}
+
+// Twice the signed area of a screen polygon (y down: clockwise on screen is counter-clockwise in the world).
+double ScreenArea2(const std::vector<ScreenPoint>& p)
+{
+    double sum = 0.0;
+    for (size_t i = 0; i < p.size(); ++i)
+    {
+        const ScreenPoint& a = p[i];
+        const ScreenPoint& b = p[(i + 1) % p.size()];
+        sum += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
+    }
+    return sum;
+}
+
+// Every turn of the screen polygon goes the same way: convex.
+bool ScreenConvex(const std::vector<ScreenPoint>& p)
+{
+    int sign = 0;
+    for (size_t i = 0; i < p.size(); ++i)
+    {
+        const ScreenPoint& a = p[i];
+        const ScreenPoint& b = p[(i + 1) % p.size()];
+        const ScreenPoint& c = p[(i + 2) % p.size()];
+        const double cross = (static_cast<double>(b.x) - a.x) * (static_cast<double>(c.y) - b.y) -
+                             (static_cast<double>(b.y) - a.y) * (static_cast<double>(c.x) - b.x);
+        const int s = cross > 1e-3 ? 1 : (cross < -1e-3 ? -1 : 0);
+        if (s != 0 && sign != 0 && s != sign)
+        {
+            return false;
+        }
+        sign = s != 0 ? s : sign;
+    }
+    return true;
+}
+
+// The whole number after `prefix` in `text`, or -1.
+int NumberAfter(const std::string& text, const std::string& prefix)
+{
+    const size_t at = text.find(prefix);
+    return at == std::string::npos ? -1 : std::atoi(text.c_str() + at + prefix.size());
+}
+
+std::string Caption(const RecordingCanvas& canvas)
+{
+    std::string text;
+    for (const DrawCommand* c : canvas.InGroup("caption"))
+    {
+        if (c->kind == DrawCommand::Kind::Text && c->style == TextStyle::Body)
+        {
+            text += (text.empty() ? "" : " ") + c->text;
+        }
+    }
+    return text;
+}
+
+const std::string kFlag = R"({"bodies": [{"name": "flag", "polygon": [[4, 2], [2, 4], [-1, 2], [-3, 1], [-4, -2],
+    [0, -1], [1, -2], [4, -2]]}], "view": {"figure": "decomposition", "size": [900, 480]}})";
+
+} // namespace
+
+TEST_CASE("The decomposition figure fills pieces that cover the outline, and counts them as its words do",
+          "[concave-views]")
+{
+    for (const std::string& text :
+         {kFlag, std::string(R"({"bodies": [{"name": "E", "polygon": [[0, 0], [3, 0], [3, 1], [1, 1], [1, 2], [3, 2],
+              [3, 3], [1, 3], [1, 4], [3, 4], [3, 5], [0, 5]]}, {"name": "ball", "circle": {"radius": 1}}],
+              "view": {"figure": "decomposition"}})")})
+    {
+        const Scene scene = LoadConcave(text);
+        const std::vector<Vec2> outline = scene.bodies[0].IsConcave()
+                                              ? scene.bodies[0].outline
+                                              : std::vector<Vec2>(scene.bodies[0].shape.polygon.Vertices().begin(),
+                                                                  scene.bodies[0].shape.polygon.Vertices().end());
+        const long double area2 = std::fabs(testing::Area2(outline));
+        int reflex = 0;
+        for (size_t i = 0; i < outline.size(); ++i)
+        {
+            const size_t n = outline.size();
+            reflex += testing::TurnSign(outline[(i + n - 1) % n], outline[i], outline[(i + 1) % n]) < 0 ? 1 : 0;
+        }
+        const RecordingCanvas canvas = PaintScene(scene);
+        const std::string caption = Caption(canvas);
+        INFO(caption);
+        CHECK(NumberAfter(caption, "An outline of ") == static_cast<int>(outline.size()));
+        CHECK(NumberAfter(caption, "vertices, ") == reflex);
+        // Ear clipping of a simple outline without straight corners gives n - 2 triangles and n - 3 seams.
+        CHECK(NumberAfter(caption, "clips ") == static_cast<int>(outline.size()) - 2);
+        CHECK(NumberAfter(caption, "joined by ") == static_cast<int>(outline.size()) - 3);
+        const int bound = NumberAfter(caption, "rounded up + 1 = ");
+        CHECK(bound == (reflex + 1) / 2 + 1);
+
+        int counts[2] = {0, 0};
+        double scale = 0.0;
+        for (int side = 0; side < 2; ++side)
+        {
+            const std::string group = side == 0 ? "fast" : "fewest";
+            int fills = 0;
+            int rings = 0;
+            int dashes = 0;
+            double area = 0.0;
+            std::vector<ScreenPoint> ringCentres;
+            for (const DrawCommand* c : canvas.InGroup(group))
+            {
+                if (c->kind == DrawCommand::Kind::FillConvex)
+                {
+                    ++fills;
+                    CHECK(ScreenConvex(c->points));
+                    area += std::fabs(ScreenArea2(c->points));
+                }
+                rings += c->kind == DrawCommand::Kind::Circle ? 1 : 0;
+                dashes += c->kind == DrawCommand::Kind::Segment && c->thickness == 1.5f ? 1 : 0;
+                if (c->kind == DrawCommand::Kind::Circle)
+                {
+                    ringCentres.push_back(c->points[0]);
+                }
+            }
+            counts[side] = NumberAfter(caption, side == 0 ? "stay, " : "Fewest: ");
+            const std::vector<std::string> texts = canvas.Texts();
+            CHECK(std::find(texts.begin(), texts.end(),
+                            (side == 0 ? "Fast: " : "Fewest: ") + std::to_string(fills) + " pieces") != texts.end());
+            CHECK(fills == counts[side]);
+            CHECK(rings == reflex);
+            CHECK((dashes > 0) == (fills > 1));
+            // The pieces cover the outline once: their areas sum to its area, at the panel's scale (both panels
+            // draw at one scale, so their sums agree).
+            if (side == 0)
+            {
+                scale = area / static_cast<double>(area2);
+            }
+            else
+            {
+                CHECK(area == Approx(scale * static_cast<double>(area2)).epsilon(1e-4));
+            }
+        }
+        CHECK(counts[1] <= counts[0]);
+        CHECK(counts[1] >= bound);
+    }
+}
+
+TEST_CASE("A decomposition figure of a scene with one body needs no pair, and a convex outline is one piece",
+          "[concave-views]")
+{
+    const Scene scene = LoadConcave(R"({"bodies": [{"name": "hex", "regular": {"sides": 6, "radius": 1}}],
+        "view": {"figure": "decomposition"}})");
+    const FigureSetup setup = SetUpFigure(scene, {});
+    INFO(setup.error);
+    REQUIRE(setup.Ok());
+    CHECK(setup.study.StepCount() == 1);
+    const RecordingCanvas canvas = PaintScene(scene);
+    CHECK(Caption(canvas) == "An outline of 6 vertices, 0 of them reflex (ringed). It is convex: one piece, cut by "
+                             "neither method.");
+    CHECK(canvas.InGroup("fast").size() > 0);
+}
