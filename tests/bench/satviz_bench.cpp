@@ -17,6 +17,7 @@
 #include "support/reference_ray.h"
 #include "textbook_sat.h"
 #include "box2d_v3.h"
+#include "concave_bench.h"
 #include "world_bench.h"
 
 // White-box: the benchmark instantiates the algorithm with some of its choices turned off (the variants).
@@ -1860,7 +1861,37 @@ int main(int argc, char** argv)
     app.add_option("--bodies", w.bodies, "--world: dynamic bodies per scene (each at least 1)");
     app.add_option("--steps", w.steps, "--world: steps per run (at least 4; the last quarter is the tail)");
     app.add_option("--scenes", w.scenes, "--world: the scenes to run: pile, rain (default: both)");
+    bool concave = false;
+    app.add_flag("--concave", concave,
+                 "Time the convex decomposition instead of the queries: ms and pieces per method from 10 to 10 000 "
+                 "vertices, and the concave pair queries against the same pieces collided all against all")
+        ->excludes("--world");
     CLI11_PARSE(app, argc, argv);
+    if (concave)
+    {
+        bench::ConcaveBenchSettings c;
+        c.seed = s.seed;
+        if (app.count("--rounds") > 0)
+        {
+            c.rounds = s.rounds;
+        }
+        if (const std::string error = bench::CheckConcaveBenchSettings(c); !error.empty())
+        {
+            std::fprintf(stderr, "satviz-bench: %s\n", error.c_str());
+            return 2;
+        }
+        if (quick)
+        {
+            c = bench::QuickConcaveBenchSettings(c);
+        }
+        PrintMachine(argc, argv);
+        if (quick)
+        {
+            std::printf("%s\n\n", kQuickNotice);
+        }
+        bench::RunConcaveBench(c);
+        return 0;
+    }
     if (world)
     {
         w.seed = s.seed;
