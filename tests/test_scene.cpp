@@ -215,12 +215,42 @@ TEST_CASE("A view's figure loads, saves back, and is refused for a body it canno
     CHECK(plain.scene.view.figure == FigureKind::Pair);
     CHECK(SceneToJson(plain.scene).find("figure") == std::string::npos);
     CHECK(ParseScene(one + R"({"figure": "cut"}})", "s.json", concave).error ==
-          "s.json: view.figure: expected \"pair\" or \"decomposition\", got \"cut\"");
+          "s.json: view.figure: expected \"pair\", \"decomposition\" or \"slice\", got \"cut\"");
     CHECK(ParseScene(one + R"({"pair": ["ball", "L"], "figure": "decomposition"}})", "s.json", concave).error ==
           "s.json: view.figure: a decomposition figure cuts the pair's first body, \"ball\", which is a circle, "
           "not a polygon");
     CHECK(ErrorOf(R"({"bodies": [], "view": {"figure": "decomposition"}})") ==
           "s.json: view.figure: a decomposition figure cuts the pair's first body: the scene has no body");
+}
+
+TEST_CASE("A slice figure's cut loads, saves back, and is refused where it cannot be drawn, naming the field",
+          "[scene]")
+{
+    const std::string box = R"({"bodies": [{"name": "box", "box": [2, 1]}, {"name": "ball", "circle": {"radius": 1}}],
+        "view": )";
+    const SceneResult cut = ParseScene(box + R"({"figure": "slice", "cut": [[-2, 0.25], [2, -0.5]]}})", "s.json");
+    INFO(cut.error);
+    REQUIRE(cut.Ok());
+    CHECK(cut.scene.view.figure == FigureKind::Slice);
+    CHECK(cut.scene.view.cut[0] == Vec2{-2.0, 0.25});
+    CHECK(cut.scene.view.cut[1] == Vec2{2.0, -0.5});
+    const SceneResult again = ParseScene(SceneToJson(cut.scene), "again.json");
+    INFO(again.error);
+    REQUIRE(again.Ok());
+    CHECK(again.scene.view.cut[1] == Vec2{2.0, -0.5});
+    CHECK(ErrorOf(box + R"({"figure": "slice"}})") ==
+          "s.json: view.figure: a slice figure needs a \"cut\": [[x, y], [x, y]], the segment to cut along");
+    CHECK(ErrorOf(box + R"({"cut": [[0, 0], [1, 1]]}})") ==
+          "s.json: view.cut: only a slice figure (\"figure\": \"slice\") cuts along a segment");
+    CHECK(ErrorOf(box + R"({"figure": "slice", "cut": [[0, 0], [0, 0]]}})") ==
+          "s.json: view.cut: the segment's two ends are the same point");
+    CHECK(ErrorOf(box + R"({"figure": "slice", "cut": [[0, 0]]}})") ==
+          "s.json: view.cut: expected two points [[x, y], [x, y]], got an array");
+    CHECK(ErrorOf(box + R"({"figure": "slice", "cut": [[0, 0], [1, "a"]]}})") ==
+          "s.json: view.cut[1][1]: expected a number, got a string");
+    CHECK(ErrorOf(box + R"({"pair": ["ball", "box"], "figure": "slice", "cut": [[0, 0], [1, 1]]}})") ==
+          "s.json: view.figure: a slice figure cuts the pair's first body, \"ball\", which is a circle, not a "
+          "polygon");
 }
 
 TEST_CASE("A view's sim_steps loads, saves back and refuses a negative or fractional count", "[scene]")
@@ -301,6 +331,9 @@ TEST_CASE("A saved scene reads back as the same scene, bit for bit", "[scene]")
         CHECK(a.view.singlePrecision == b.view.singlePrecision);
         CHECK(a.view.simSteps == b.view.simSteps);
         CHECK(a.view.figure == b.view.figure);
+        CHECK(a.view.cut[0] == b.view.cut[0]);
+        CHECK(a.view.cut[1] == b.view.cut[1]);
+        CHECK(a.bodies.size() == b.bodies.size());
         for (size_t i = 0; i < a.bodies.size(); ++i)
         {
             CHECK(a.bodies[i].outline == b.bodies[i].outline);

@@ -61,6 +61,8 @@ set(SATVIZ_FIGURE_SCENES
   l17_spinner_after
   l17_skips
   concave/decompose_flag
+  concave/slice_u
+  concave/slice_stops_inside
 )
 set(SATVIZ_STEP_SCENES
   overlapping_boxes

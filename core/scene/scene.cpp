@@ -469,7 +469,7 @@ SceneView ParseView(const Json& value, const Scene& scene)
     }
     CheckKeys(value, path,
               {"center", "zoom", "size", "layers", "pair", "query", "steps", "pitfall", "step", "time", "caption",
-               "precision", "sim_steps", "figure"});
+               "precision", "sim_steps", "figure", "cut"});
     SceneView view;
     if (value.contains("zoom"))
     {
@@ -629,14 +629,38 @@ SceneView ParseView(const Json& value, const Scene& scene)
                 break;
             }
         }
-        if (view.figure == FigureKind::Decomposition && body == nullptr)
+        const std::string kind = view.figure == FigureKind::Decomposition ? "a decomposition" : "a slice";
+        if ((view.figure == FigureKind::Decomposition || view.figure == FigureKind::Slice) && body == nullptr)
         {
-            Fail(path + ".figure", "a decomposition figure cuts the pair's first body: the scene has no body");
+            Fail(path + ".figure", kind + " figure cuts the pair's first body: the scene has no body");
         }
-        if (view.figure == FigureKind::Decomposition && body->shape.type != ShapeType::Polygon)
+        if ((view.figure == FigureKind::Decomposition || view.figure == FigureKind::Slice) &&
+            body->shape.type != ShapeType::Polygon)
         {
-            Fail(path + ".figure", "a decomposition figure cuts the pair's first body, \"" + body->name +
+            Fail(path + ".figure", kind + " figure cuts the pair's first body, \"" + body->name +
                                        "\", which is a circle, not a polygon");
+        }
+        if (view.figure == FigureKind::Slice && !value.contains("cut"))
+        {
+            Fail(path + ".figure", "a slice figure needs a \"cut\": [[x, y], [x, y]], the segment to cut along");
+        }
+    }
+    if (value.contains("cut"))
+    {
+        const Json& cut = value["cut"];
+        if (view.figure != FigureKind::Slice)
+        {
+            Fail(path + ".cut", "only a slice figure (\"figure\": \"slice\") cuts along a segment");
+        }
+        if (!cut.is_array() || cut.size() != 2)
+        {
+            Fail(path + ".cut", "expected two points [[x, y], [x, y]], got " + TypeName(cut));
+        }
+        view.cut[0] = Point(cut[0], path + ".cut[0]");
+        view.cut[1] = Point(cut[1], path + ".cut[1]");
+        if (view.cut[0] == view.cut[1])
+        {
+            Fail(path + ".cut", "the segment's two ends are the same point");
         }
     }
     return view;
@@ -1143,9 +1167,16 @@ Json ViewJson(const SceneView& v, const Json* old, bool fromFile)
     {
         fields.push_back({"figure", std::string(FigureKindName(v.figure))});
     }
+    if (v.figure == FigureKind::Slice)
+    {
+        const Json* cut = Member(old, "cut");
+        const bool keep = cut != nullptr && cut->is_array() && cut->size() == 2;
+        fields.push_back({"cut", Json::array({PointJson(keep ? &(*cut)[0] : nullptr, v.cut[0]),
+                                              PointJson(keep ? &(*cut)[1] : nullptr, v.cut[1])})});
+    }
     return Arrange(fields, old,
                    {"center", "zoom", "size", "layers", "pair", "query", "steps", "pitfall", "step", "time", "caption",
-                    "precision", "sim_steps", "figure"});
+                    "precision", "sim_steps", "figure", "cut"});
 }
 
 // The world block. `old` is the file's, null for a scene built in code (which writes both fields) or a file
@@ -1317,6 +1348,7 @@ namespace
 constexpr std::pair<FigureKind, std::string_view> kFigureKindNames[] = {
     {FigureKind::Pair, "pair"},
     {FigureKind::Decomposition, "decomposition"},
+    {FigureKind::Slice, "slice"},
 };
 
 } // namespace

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // satviz render, private: the figures of concave shapes, each drawn in panels of its own rather than as a step of
-// the pair's SAT test: a decomposition by both methods side by side. What they share: a caption band, panels framed
-// on a world box, pieces in colours of their own with their seams dashed.
+// the pair's SAT test: a decomposition by both methods side by side, a body before and after a cut. What they share:
+// a caption band, panels framed on a world box, pieces in colours of their own with their seams dashed.
 #pragma once
 
 #include "draw_kit.h"
@@ -53,5 +53,18 @@ void PaintDecomposition(Canvas& canvas, const Scene& scene, int body, const Figu
 /// seams, and the least number of pieces any decomposition needs, from the two decompositions of the outline.
 std::string DescribeDecomposition(const std::vector<Vec2>& outline, const Decomposition& fast,
                                   const Decomposition& fewest);
+
+/// The points where the segment from a to b crosses the closed outline (world), in order from a, each once.
+std::vector<Vec2> CutCrossings(const std::vector<Vec2>& outline, Vec2 a, Vec2 b);
+
+/// The slice figure (FigureKind::Slice): the body before and after the cut along the view's `cut` segment, side by
+/// side at one scale: the cut and its crossings of the outline, then each part in a colour of its own, drawn a
+/// little apart, cut into convex pieces, with its area.
+void PaintSlice(Canvas& canvas, const Scene& scene, int body, const Figure& figure);
+
+/// The caption of the slice figure: the cut's ends, where it crosses the outline, the parts' areas and their sum,
+/// and each part's convex pieces (`pieces`, one decomposition per part), or why nothing was cut.
+std::string DescribeSlice(const Body& body, Vec2 a, Vec2 b, const std::vector<std::vector<Vec2>>& parts,
+                          const std::vector<Decomposition>& pieces);
 
 } // namespace satviz

@@ -70,7 +70,7 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
 {
     FigureSetup setup;
     const SceneView& view = scene.view;
-    if (view.figure == FigureKind::Decomposition && scene.bodies.size() < 2)
+    if ((view.figure == FigureKind::Decomposition || view.figure == FigureKind::Slice) && scene.bodies.size() < 2)
     {
         // A figure of one body needs no pair: nothing is tested.
         return SetUpBodyFigure(scene, options);

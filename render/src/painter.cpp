@@ -2218,6 +2218,11 @@ void PaintFigure(Canvas& canvas, const Scene& scene, const PairStudy& study, con
         PaintDecomposition(canvas, scene, figure.body, figure);
         return;
     }
+    if (figure.kind == FigureKind::Slice && figure.body >= 0 && figure.body < static_cast<int>(scene.bodies.size()))
+    {
+        PaintSlice(canvas, scene, figure.body, figure);
+        return;
+    }
     Painter painter(canvas, scene, study, figure);
     painter.Paint();
 }

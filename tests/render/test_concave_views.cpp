@@ -189,3 +189,91 @@ TEST_CASE("A decomposition figure of a scene with one body needs no pair, and a 
                              "neither method.");
     CHECK(canvas.InGroup("fast").size() > 0);
 }
+
+namespace
+{
+
+// Sum of the areas of the group's filled polygons, in square pixels.
+double FilledArea(const RecordingCanvas& canvas, const std::string& group, int* count = nullptr)
+{
+    double area = 0.0;
+    int fills = 0;
+    for (const DrawCommand* c : canvas.InGroup(group))
+    {
+        if (c->kind == DrawCommand::Kind::FillConvex)
+        {
+            CHECK(ScreenConvex(c->points));
+            area += 0.5 * std::fabs(ScreenArea2(c->points));
+            ++fills;
+        }
+    }
+    if (count != nullptr)
+    {
+        *count = fills;
+    }
+    return area;
+}
+
+} // namespace
+
+TEST_CASE("The slice figure marks where the cut crosses the outline, and the parts keep the body's area",
+          "[concave-views]")
+{
+    // A U cut across both arms: three parts, the arms' tops (1 each) and the rest (6).
+    const std::vector<Vec2> u = {{0, 0}, {4, 0}, {4, 3}, {3, 3}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
+    const Scene scene = LoadConcave(R"({"bodies": [{"name": "U", "polygon": [[0, 0], [4, 0], [4, 3], [3, 3], [3, 1],
+        [1, 1], [1, 3], [0, 3]], "position": [1, -1]}], "view": {"figure": "slice", "cut": [[0.5, 1], [5.5, 1]]}})");
+    const RecordingCanvas canvas = PaintScene(scene);
+    const std::string caption = Caption(canvas);
+    INFO(caption);
+    // The cut, moved into the U's frame, crosses each of the four arms' sides once (an independent count).
+    const Vec2 a{-0.5, 2.0};
+    const Vec2 b{4.5, 2.0};
+    int crossings = 0;
+    for (size_t i = 0; i < u.size(); ++i)
+    {
+        crossings += testing::ProperlyCross(a, b, u[i], u[(i + 1) % u.size()]) ? 1 : 0;
+    }
+    CHECK(crossings == 4);
+    int dots = 0;
+    for (const DrawCommand* c : canvas.InGroup("before"))
+    {
+        dots += c->kind == DrawCommand::Kind::FillCircle && c->radius > 4.0f ? 1 : 0;
+    }
+    CHECK(dots == crossings);
+    // In the world: the arms' sides at x = 1, 2, 4, 5 on the line y = 1.
+    CHECK(caption.find("at (1.00, 1.00), (2.00, 1.00), (4.00, 1.00) and (5.00, 1.00)") != std::string::npos);
+    CHECK(caption.find("into 3 parts of areas 6.00, 1.00 and 1.00, which sum to 8.00, U's area 8.00") !=
+          std::string::npos);
+    const std::vector<std::string> texts = canvas.Texts();
+    CHECK(std::find(texts.begin(), texts.end(), "After: 3 parts") != texts.end());
+    // The parts cover what the body covered: the same filled area before and after, at one scale, and the body's
+    // area from its outline measured apart.
+    int before = 0;
+    int after = 0;
+    const double whole = FilledArea(canvas, "before", &before);
+    const double parts = FilledArea(canvas, "after", &after);
+    CHECK(parts == Approx(whole).epsilon(1e-4));
+    CHECK(after > before);
+    int areas = 0;
+    for (const std::string& t : texts)
+    {
+        areas += t.rfind("area ", 0) == 0 ? 1 : 0;
+    }
+    CHECK(areas == 3);
+    CHECK(std::fabs(testing::Area2(u)) == 16.0L);
+}
+
+TEST_CASE("A cut that stops inside the body leaves it whole, and the figure says why", "[concave-views]")
+{
+    const Scene scene = LoadConcave(
+        R"({"bodies": [{"name": "box", "box": [2, 1]}], "view": {"figure": "slice", "cut": [[-2, 0.2], [0.3, 0.2]]}})");
+    const RecordingCanvas canvas = PaintScene(scene);
+    const std::string caption = Caption(canvas);
+    CHECK(caption == "The cut runs from (-2.00, 0.20) to (0.30, 0.20) and meets box's outline at (-1.00, 0.20), but "
+                     "does not run through box from one side to another: a segment that stops inside is no cut, and "
+                     "box stays whole, area 2.00.");
+    const std::vector<std::string> texts = canvas.Texts();
+    CHECK(std::find(texts.begin(), texts.end(), "After: 1 part") != texts.end());
+    CHECK(FilledArea(canvas, "after") == Approx(FilledArea(canvas, "before")).epsilon(1e-4));
+}

@@ -86,6 +86,7 @@ enum class FigureKind
 {
     Pair,          ///< "pair": the SAT test of the pair, step by step (the default)
     Decomposition, ///< "decomposition": the pair's first body cut into convex pieces by both methods, side by side
+    Slice,         ///< "slice": the pair's first body before and after a cut along the view's `cut` segment
 };
 
 /// The scene-file name of a figure kind ("pair", "decomposition", ...): the one list of them.
@@ -123,6 +124,8 @@ struct SceneView
     /// default: drawn as written.
     int simSteps = 0;
     FigureKind figure = FigureKind::Pair; ///< what the figure shows ("figure"; default "pair")
+    /// A slice figure's cut: the segment from cut[0] to cut[1], world coordinates ("cut": [[x, y], [x, y]]).
+    Vec2 cut[2] = {};
 };
 
 /// Most rigid-body steps a view may ask for before it is pictured ("sim_steps").

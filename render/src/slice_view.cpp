@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: MIT
+// The slice figure: a body before and after a cut along a segment, at one scale, with the points where the cut
+// crosses the outline and the parts' areas.
+#include "concave_views.h"
+
+#include <satviz/render/describe.h>
+#include <satviz/slice.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace satviz
+{
+
+namespace
+{
+
+constexpr float kHeaderHeight = 40.0f; // a panel's title and the line under it
+constexpr float kMargin = 34.0f;       // room around the drawing inside a panel, for the crossings' coordinates
+constexpr float kApart = 10.0f;        // pixels each part is moved away from the cut in the after panel
+
+double Area(const std::vector<Vec2>& ring)
+{
+    double sum = 0.0;
+    for (size_t i = 0; i < ring.size(); ++i)
+    {
+        sum += Cross(ring[i], ring[(i + 1) % ring.size()]);
+    }
+    return 0.5 * std::fabs(sum);
+}
+
+Vec2 Centroid(const std::vector<Vec2>& ring)
+{
+    double area2 = 0.0;
+    Vec2 sum{};
+    for (size_t i = 0; i < ring.size(); ++i)
+    {
+        const Vec2 a = ring[i];
+        const Vec2 b = ring[(i + 1) % ring.size()];
+        const double w = Cross(a, b);
+        area2 += w;
+        sum = sum + w * (a + b);
+    }
+    return (1.0 / (3.0 * area2)) * sum;
+}
+
+// A coordinate beside another: an exact 0 as 0.00, like its neighbour.
+std::string Coordinate(double value)
+{
+    return value == 0.0 ? "0.00" : FormatNumber(value);
+}
+
+std::string Point(Vec2 p)
+{
+    return "(" + Coordinate(p.x) + ", " + Coordinate(p.y) + ")";
+}
+
+std::string List(const std::vector<std::string>& items)
+{
+    std::string text;
+    for (size_t i = 0; i < items.size(); ++i)
+    {
+        text += (i == 0 ? "" : (i + 1 == items.size() ? " and " : ", ")) + items[i];
+    }
+    return text;
+}
+
+// The body's outline in the world.
+std::vector<Vec2> WorldOutline(const Body& body)
+{
+    std::vector<Vec2> ring = BodyOutline(body);
+    const Transform xf = body.Xf();
+    for (Vec2& v : ring)
+    {
+        v = TransformPoint(xf, v);
+    }
+    return ring;
+}
+
+// Pieces of a part as Decompose gives them, placed in the world (identity transform) moved by `shift`.
+void DrawPart(Canvas& canvas, const View& view, const std::vector<ConvexPiece>& pieces, Color color, Vec2 shift,
+              const ScreenRect& bounds)
+{
+    for (const ConvexPiece& piece : pieces)
+    {
+        std::vector<ScreenPoint> points;
+        for (const Vec2& v : piece.polygon.Vertices())
+        {
+            points.push_back(ToScreen(view, v + shift));
+        }
+        canvas.FillConvex(points.data(), static_cast<int>(points.size()), WithAlpha(color, 0.45f));
+    }
+    for (const ConvexPiece& piece : pieces)
+    {
+        const Vec2Span<double> v = piece.polygon.Vertices();
+        for (int e = 0; e < v.count; ++e)
+        {
+            const ScreenPoint a = ToScreen(view, v[e] + shift);
+            const ScreenPoint b = ToScreen(view, v[(e + 1) % v.count] + shift);
+            if (!piece.internal[static_cast<size_t>(e)])
+            {
+                canvas.Segment(a, b, palette::kInk, 2.0f);
+            }
+            else if (piece.source[static_cast<size_t>(e)] < piece.source[static_cast<size_t>((e + 1) % v.count)])
+            {
+                DashedSegment(canvas, a, b, palette::kInk, 1.5f, bounds, 6.0f, 4.0f);
+            }
+        }
+    }
+}
+
+} // namespace
+
+std::vector<Vec2> CutCrossings(const std::vector<Vec2>& outline, Vec2 a, Vec2 b)
+{
+    std::vector<std::pair<double, Vec2>> found;
+    const Vec2 d = b - a;
+    for (size_t i = 0; i < outline.size(); ++i)
+    {
+        const Vec2 p = outline[i];
+        const Vec2 q = outline[(i + 1) % outline.size()];
+        const Vec2 e = q - p;
+        const double denominator = Cross(d, e);
+        if (denominator == 0.0)
+        {
+            continue; // parallel: an edge along the cut is crossed at its ends, which the neighbours report
+        }
+        const double t = Cross(p - a, e) / denominator; // along the cut
+        const double u = Cross(p - a, d) / denominator; // along the edge
+        if (t >= 0.0 && t <= 1.0 && u >= 0.0 && u < 1.0)
+        {
+            found.push_back({t, a + t * d});
+        }
+    }
+    std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<Vec2> points;
+    for (const auto& [t, p] : found)
+    {
+        if (points.empty() || Length(p - points.back()) > 1e-9 * (1.0 + Length(p)))
+        {
+            points.push_back(p);
+        }
+    }
+    return points;
+}
+
+std::string DescribeSlice(const Body& body, Vec2 a, Vec2 b, const std::vector<std::vector<Vec2>>& parts,
+                          const std::vector<Decomposition>& pieces)
+{
+    const std::vector<Vec2> outline = WorldOutline(body);
+    const std::vector<Vec2> crossings = CutCrossings(outline, a, b);
+    std::string text = "The cut runs from " + Point(a) + " to " + Point(b);
+    std::vector<std::string> at;
+    for (const Vec2& p : crossings)
+    {
+        at.push_back(Point(p));
+    }
+    if (parts.size() < 2)
+    {
+        return text +
+               (crossings.empty() ? " and never meets " + body.name + "'s outline"
+                                  : " and meets " + body.name + "'s outline at " + List(at)) +
+               ", but does not run through " + body.name +
+               " from one side to another: a segment that stops inside is no cut, and " + body.name +
+               " stays whole, area " + FormatNumber(Area(outline)) + ".";
+    }
+    std::vector<std::string> areas;
+    std::vector<std::string> counts;
+    double total = 0.0;
+    for (size_t i = 0; i < parts.size(); ++i)
+    {
+        const double area = Area(parts[i]);
+        total += area;
+        areas.push_back(FormatNumber(area));
+        counts.push_back(std::to_string(pieces[i].pieces.size()));
+    }
+    return text + ". It crosses " + body.name + "'s outline at " + List(at) + " and splits it into " +
+           std::to_string(parts.size()) + " parts of areas " + List(areas) + ", which sum to " + FormatNumber(total) +
+           ", " + body.name + "'s area " + FormatNumber(Area(outline)) +
+           " (the parts are drawn a little apart). Each part is a polygon of its own, cut again into convex pieces: " +
+           List(counts) + ".";
+}
+
+void PaintSlice(Canvas& canvas, const Scene& scene, int bodyIndex, const Figure& figure)
+{
+    const Body& body = scene.bodies[static_cast<size_t>(bodyIndex)];
+    const float width = static_cast<float>(figure.view.width);
+    const float height = static_cast<float>(figure.view.height);
+    const Vec2 a = scene.view.cut[0];
+    const Vec2 b = scene.view.cut[1];
+    const std::vector<Vec2> outline = WorldOutline(body);
+    const std::vector<std::vector<Vec2>> parts = SliceAlongSegment(outline, a, b);
+    std::vector<Decomposition> pieces;
+    for (const std::vector<Vec2>& part : parts)
+    {
+        pieces.push_back(Decompose(part, body.decompose));
+    }
+    const Decomposition whole = Decompose(outline, body.decompose);
+
+    canvas.BeginGroup("background");
+    canvas.FillRect({0.0f, 0.0f}, {width, height}, palette::kBackground);
+    const float top = (figure.layers & kLayerCaption)
+                          ? DrawCaptionBand(canvas, figure.caption, DescribeSlice(body, a, b, parts, pieces), width)
+                          : 0.0f;
+    LabelPlacer labels(canvas, width, height);
+    labels.ReserveBand({0.0f, 0.0f, width, top});
+
+    Vec2 low{std::min(a.x, b.x), std::min(a.y, b.y)};
+    Vec2 high{std::max(a.x, b.x), std::max(a.y, b.y)};
+    for (const Vec2& p : outline)
+    {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+    }
+    const ScreenRect rects[2] = {{0.0f, top + kHeaderHeight, 0.5f * width, height},
+                                 {0.5f * width, top + kHeaderHeight, width, height}};
+    const double zoom =
+        std::min(FitZoom(rects[0], low, high, kMargin + kApart), FitZoom(rects[1], low, high, kMargin + kApart));
+    canvas.BeginGroup("divider");
+    canvas.Segment({0.5f * width, top}, {0.5f * width, height}, palette::kFaint, 1.0f);
+
+    // Before: the body whole, the cut across it, the crossings marked.
+    {
+        const Panel panel = FramePanel(rects[0], low, high, figure.view.width, figure.view.height, kMargin, zoom);
+        canvas.BeginGroup("before");
+        canvas.Text({12.0f, top + 6.0f}, "Before", TextStyle::Heading, palette::kInk);
+        canvas.Text({12.0f, top + 23.0f}, body.name + ", and the cut", TextStyle::Label, palette::kMuted);
+        labels.Reserve({12.0f, top + 4.0f, rects[0].maxX, top + kHeaderHeight});
+        DrawPart(canvas, panel.view, whole.pieces, palette::kShapeA, {}, rects[0]);
+        const ScreenPoint sa = ToScreen(panel.view, a);
+        const ScreenPoint sb = ToScreen(panel.view, b);
+        canvas.Segment(sa, sb, palette::kResult, 2.0f);
+        labels.ReserveLine(sa, sb, 2.0f);
+        canvas.FillCircle(sa, 3.0f, palette::kResult);
+        canvas.FillCircle(sb, 3.0f, palette::kResult);
+        labels.Place(sa, "cut", TextStyle::Label, palette::kResult, sa.x - sb.x, sa.y - sb.y, 6.0f, LabelRank::Note);
+        for (const Vec2& p : CutCrossings(outline, a, b))
+        {
+            const ScreenPoint s = ToScreen(panel.view, p);
+            canvas.FillCircle(s, 4.5f, palette::kResult);
+            labels.Reserve({s.x - 5.0f, s.y - 5.0f, s.x + 5.0f, s.y + 5.0f});
+            labels.Place(s, Point(p), TextStyle::Label, palette::kInk, -(sb.y - sa.y), sb.x - sa.x, 8.0f,
+                         LabelRank::Verdict);
+        }
+    }
+    // After: each part in a colour of its own, moved a little away from the cut, with its area.
+    {
+        const Panel panel = FramePanel(rects[1], low, high, figure.view.width, figure.view.height, kMargin, zoom);
+        canvas.BeginGroup("after");
+        const float x = rects[1].minX + 12.0f;
+        canvas.Text({x, top + 6.0f},
+                    "After: " + std::to_string(parts.size()) + (parts.size() == 1 ? " part" : " parts"),
+                    TextStyle::Heading, palette::kInk);
+        canvas.Text({x, top + 23.0f}, "each part cut into convex pieces", TextStyle::Label, palette::kMuted);
+        labels.Reserve({x, top + 4.0f, rects[1].maxX, top + kHeaderHeight});
+        const Vec2 along = Normalize(b - a);
+        const Vec2 left{-along.y, along.x};
+        for (size_t i = 0; i < parts.size(); ++i)
+        {
+            const Vec2 centre = Centroid(parts[i]);
+            const double side = Dot(centre - a, left) >= 0.0 ? 1.0 : -1.0;
+            const Vec2 shift = parts.size() < 2 ? Vec2{} : (side * kApart / panel.view.zoom) * left;
+            DrawPart(canvas, panel.view, pieces[i].pieces, PieceColor(static_cast<int>(i)), shift, rects[1]);
+            labels.Place(ToScreen(panel.view, centre + shift), "area " + FormatNumber(Area(parts[i])), TextStyle::Label,
+                         palette::kInk, 0.0f, 0.0f, 0.0f, LabelRank::Name);
+        }
+    }
+    labels.Flush(palette::kBackground);
+}
+
+} // namespace satviz
