@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 // satviz: concave shapes in the queries. Each side of a query is a list of convex parts (a convex shape is one
 // part); the pairs of parts whose boxes overlap go to the convex queries, whose answers are merged by the rules
-// written in concave.h. The convex queries are called as they are: nothing here touches their fast paths.
+// written in concave.h. The convex queries are called as they are: nothing here touches their fast paths. A side
+// and its boxes are in concave_sides.h; the segment cast is in concave_raycast.cpp.
+
+#include "concave_sides.h"
 
 #include <satviz/collide.h>
 #include <satviz/concave.h>
@@ -15,79 +18,7 @@ namespace satviz
 namespace
 {
 
-// A side of a query: one convex shape, or the pieces of a concave one, placed by xf.
-template <typename S>
-struct Side
-{
-    const ShapeT<S>* single = nullptr;
-    const ConcaveT<S>* concave = nullptr;
-    TransformT<S> xf{};
-    int index = 0; // 0 for A, 1 for B (AxisRef::shape)
-
-    int Count() const { return concave != nullptr ? static_cast<int>(concave->parts.size()) : 1; }
-    const ShapeT<S>& Part(int i) const { return concave != nullptr ? concave->parts[i].shape : *single; }
-    const std::vector<bool>* Internal(int i) const
-    {
-        return concave != nullptr ? &concave->parts[i].internal : nullptr;
-    }
-    int Piece(int i) const { return concave != nullptr ? i : -1; }
-};
-
-template <typename S>
-BoundsT<S> Grow(BoundsT<S> box, Vec2T<S> p)
-{
-    box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
-    box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
-    return box;
-}
-
-template <typename S>
-BoundsT<S> Empty()
-{
-    const S inf = std::numeric_limits<S>::infinity();
-    return {{inf, inf}, {-inf, -inf}};
-}
-
-// The box of part i in world coordinates, widened by a few ulps of its magnitude so that rounding in the corners'
-// transform cannot part boxes of shapes that touch.
-template <typename S>
-BoundsT<S> WorldBox(const Side<S>& side, int i)
-{
-    BoundsT<S> box = Empty<S>();
-    if (side.concave != nullptr)
-    {
-        const BoundsT<S>& local = side.concave->parts[i].bounds;
-        for (Vec2T<S> corner :
-             {local.min, Vec2T<S>{local.max.x, local.min.y}, local.max, Vec2T<S>{local.min.x, local.max.y}})
-        {
-            box = Grow(box, TransformPoint(side.xf, corner));
-        }
-    }
-    else if (side.single->type == ShapeType::Polygon)
-    {
-        for (const Vec2T<S>& v : side.single->polygon.Vertices())
-        {
-            box = Grow(box, TransformPoint(side.xf, v));
-        }
-    }
-    else
-    {
-        const Vec2T<S> c = TransformPoint(side.xf, side.single->circle.center);
-        const S r = side.single->circle.radius;
-        box = {{c.x - r, c.y - r}, {c.x + r, c.y + r}};
-    }
-    const S magnitude = std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.max.x), std::abs(box.max.y)});
-    const S pad = S(16) * std::numeric_limits<S>::epsilon() * magnitude;
-    box.min = box.min - Vec2T<S>{pad, pad};
-    box.max = box.max + Vec2T<S>{pad, pad};
-    return box;
-}
-
-template <typename S>
-bool BoxesOverlap(const BoundsT<S>& a, const BoundsT<S>& b)
-{
-    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
-}
+using namespace concave_detail;
 
 // The normal `outward` (world, pointing out of part i of `side` towards the other shape) points along an internal
 // edge of the part: it is that edge's normal, or the axis is a vertex axis at a corner of an internal edge and
@@ -516,26 +447,6 @@ ConcaveSweepResultT<S> SweepSides(const Side<S>& a, Vec2T<S> vA, const Side<S>& 
     return out;
 }
 
-template <typename S>
-Side<S> SideOf(const ShapeT<S>& shape, const TransformT<S>& xf, int index)
-{
-    Side<S> side;
-    side.single = &shape;
-    side.xf = xf;
-    side.index = index;
-    return side;
-}
-
-template <typename S>
-Side<S> SideOf(const ConcaveT<S>& concave, const TransformT<S>& xf, int index)
-{
-    Side<S> side;
-    side.concave = &concave;
-    side.xf = xf;
-    side.index = index;
-    return side;
-}
-
 } // namespace
 
 template <typename S>
@@ -638,41 +549,6 @@ ConcaveSweepResultT<S> Sweep(const ConcaveT<S>& a, const TransformT<S>& xfA, Vec
     return SweepSides(SideOf(a, xfA, 0), vA, SideOf(b, xfB, 1), vB);
 }
 
-template <typename S>
-ConcaveRayHitT<S> RayCast(const ConcaveT<S>& shape, const TransformT<S>& xf, Vec2T<S> p1, Vec2T<S> p2)
-{
-    ConcaveRayHitT<S> out;
-    const Side<S> side = SideOf(shape, xf, 0);
-    const BoundsT<S> segment = Grow(Grow(Empty<S>(), p1), p2);
-    bool bestOnSeam = false;
-    for (int i = 0; i < side.Count(); ++i)
-    {
-        if (!BoxesOverlap(WorldBox(side, i), segment))
-        {
-            continue;
-        }
-        const RayHitT<S> hit = RayCast(side.Part(i), xf, p1, p2);
-        if (!hit.hit)
-        {
-            continue;
-        }
-        if (hit.startsInside)
-        {
-            out.hit = hit;
-            out.piece = i;
-            return out;
-        }
-        const bool onSeam = hit.edge >= 0 && shape.parts[i].internal[hit.edge];
-        if (!out.hit.hit || hit.fraction < out.hit.fraction ||
-            (hit.fraction == out.hit.fraction && bestOnSeam && !onSeam))
-        {
-            out.hit = hit;
-            out.piece = i;
-            bestOnSeam = onSeam;
-        }
-    }
-    return out;
-}
 
 #define SATVIZ_CONCAVE_INSTANTIATE(S)                                                                                  \
     template ConcaveT<S> MakeConcave(const std::vector<ConvexPieceT<S>>&);                                             \
@@ -696,8 +572,7 @@ ConcaveRayHitT<S> RayCast(const ConcaveT<S>& shape, const TransformT<S>& xf, Vec
     template ConcaveSweepResultT<S> Sweep(const ShapeT<S>&, const TransformT<S>&, Vec2T<S>, const ConcaveT<S>&,        \
                                           const TransformT<S>&, Vec2T<S>);                                             \
     template ConcaveSweepResultT<S> Sweep(const ConcaveT<S>&, const TransformT<S>&, Vec2T<S>, const ConcaveT<S>&,      \
-                                          const TransformT<S>&, Vec2T<S>);                                             \
-    template ConcaveRayHitT<S> RayCast(const ConcaveT<S>&, const TransformT<S>&, Vec2T<S>, Vec2T<S>);
+                                          const TransformT<S>&, Vec2T<S>);
 
 SATVIZ_CONCAVE_INSTANTIATE(double)
 SATVIZ_CONCAVE_INSTANTIATE(float)
