@@ -283,7 +283,8 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
     if (depth == "0.00")
     {
         // Touching: no move of 0 separates anything; the intervals meet end to end on the deciding axis.
-        text += "Verdict: no axis has a gap, so the shapes are in contact. The smallest overlap is 0, on " + where +
+        text += "Verdict: no axis has a gap, so the shapes are in contact. The smallest overlap is " + depth + ", on " +
+                where +
                 ": there the intervals meet end to end. The shapes touch without overlapping: the MTV is zero, "
                 "direction " +
                 Pair(r.normal.x, r.normal.y) + ".";
@@ -361,7 +362,8 @@ std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, in
     {
         const bool touching = std::max(t.minB - t.maxA, t.minA - t.maxB) == 0.0;
         text += nameB + "'s interval does not move along this axis and " +
-                (touching ? "only touches " + nameA + "'s: they never overlap by more than 0."
+                (touching ? "only touches " + nameA + "'s: they never overlap by more than " + FormatNumber(0.0) +
+                                "."
                           : "never overlaps " + nameA + "'s.");
     }
     else if (t.rate == 0.0)
@@ -576,7 +578,8 @@ std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
         text += "Verdict: no face test separates, so the shapes are in contact. The face the other shape reaches "
                 "least far behind is " +
                 (face ? FaceName(scene, study, m.axis) : DescribeAxis(scene, study, m.axis)) +
-                ", and only just: 0 behind it. The shapes touch without overlapping: the MTV is zero, direction " +
+                ", and only just: " + depth +
+                " behind it. The shapes touch without overlapping: the MTV is zero, direction " +
                 Pair(m.normal.x, m.normal.y) + ".";
     }
     else
