@@ -215,7 +215,7 @@ TEST_CASE("A view's figure loads, saves back, and is refused for a body it canno
     CHECK(plain.scene.view.figure == FigureKind::Pair);
     CHECK(SceneToJson(plain.scene).find("figure") == std::string::npos);
     CHECK(ParseScene(one + R"({"figure": "cut"}})", "s.json", concave).error ==
-          "s.json: view.figure: expected \"pair\", \"decomposition\" or \"slice\", got \"cut\"");
+          "s.json: view.figure: expected \"pair\", \"decomposition\", \"slice\" or \"disc-cast\", got \"cut\"");
     CHECK(ParseScene(one + R"({"pair": ["ball", "L"], "figure": "decomposition"}})", "s.json", concave).error ==
           "s.json: view.figure: a decomposition figure cuts the pair's first body, \"ball\", which is a circle, "
           "not a polygon");
@@ -251,6 +251,27 @@ TEST_CASE("A slice figure's cut loads, saves back, and is refused where it canno
     CHECK(ErrorOf(box + R"({"pair": ["ball", "box"], "figure": "slice", "cut": [[0, 0], [1, 1]]}})") ==
           "s.json: view.figure: a slice figure cuts the pair's first body, \"ball\", which is a circle, not a "
           "polygon");
+}
+
+TEST_CASE("A disc-cast figure needs a moving circle as the pair's second body, naming the field", "[scene]")
+{
+    const std::string bodies = R"({"bodies": [{"name": "wall", "box": [1, 3]},
+        {"name": "bullet", "circle": {"radius": 0.4}, "position": [-3, 1.8], "velocity": [6, 0]},
+        {"name": "still", "circle": {"radius": 0.4}}], "view": )";
+    const SceneResult cast = ParseScene(bodies + R"({"figure": "disc-cast"}})", "s.json");
+    INFO(cast.error);
+    REQUIRE(cast.Ok());
+    CHECK(cast.scene.view.figure == FigureKind::DiscCast);
+    CHECK(ParseScene(SceneToJson(cast.scene), "again.json").scene.view.figure == FigureKind::DiscCast);
+    CHECK(ErrorOf(bodies + R"({"pair": ["bullet", "wall"], "figure": "disc-cast"}})") ==
+          "s.json: view.figure: a disc-cast figure casts the pair's second body, \"wall\", which is a polygon, not "
+          "a circle");
+    CHECK(ErrorOf(bodies + R"({"pair": ["wall", "still"], "figure": "disc-cast"}})") ==
+          "s.json: view.figure: a disc-cast figure casts the pair's second body, \"still\", along its velocity, "
+          "which is zero");
+    CHECK(ErrorOf(R"({"bodies": [{"name": "wall", "box": [1, 3]}], "view": {"figure": "disc-cast"}})") ==
+          "s.json: view.figure: a disc-cast figure casts the pair's second body against its first: the scene has 1 "
+          "body");
 }
 
 TEST_CASE("A view's sim_steps loads, saves back and refuses a negative or fractional count", "[scene]")

@@ -63,6 +63,8 @@ set(SATVIZ_FIGURE_SCENES
   concave/decompose_flag
   concave/slice_u
   concave/slice_stops_inside
+  concave/disc_cast_cup
+  concave/disc_cast_corner
 )
 set(SATVIZ_STEP_SCENES
   overlapping_boxes

@@ -640,6 +640,35 @@ SceneView ParseView(const Json& value, const Scene& scene)
             Fail(path + ".figure", kind + " figure cuts the pair's first body, \"" + body->name +
                                        "\", which is a circle, not a polygon");
         }
+        if (view.figure == FigureKind::DiscCast)
+        {
+            // The disc is the pair's second body, cast against the first.
+            const Body* disc = nullptr;
+            for (size_t i = 0; i < scene.bodies.size(); ++i)
+            {
+                const Body& b = scene.bodies[i];
+                if (view.bodyB.empty() ? (i == 1) : b.name == view.bodyB)
+                {
+                    disc = &b;
+                }
+            }
+            if (disc == nullptr)
+            {
+                Fail(path + ".figure", "a disc-cast figure casts the pair's second body against its first: the scene "
+                                       "has " + std::to_string(scene.bodies.size()) +
+                                           (scene.bodies.size() == 1 ? " body" : " bodies"));
+            }
+            if (disc->shape.type != ShapeType::Circle)
+            {
+                Fail(path + ".figure", "a disc-cast figure casts the pair's second body, \"" + disc->name +
+                                           "\", which is a polygon, not a circle");
+            }
+            if (disc->velocity == Vec2{})
+            {
+                Fail(path + ".figure", "a disc-cast figure casts the pair's second body, \"" + disc->name +
+                                           "\", along its velocity, which is zero");
+            }
+        }
         if (view.figure == FigureKind::Slice && !value.contains("cut"))
         {
             Fail(path + ".figure", "a slice figure needs a \"cut\": [[x, y], [x, y]], the segment to cut along");
@@ -1349,6 +1378,7 @@ constexpr std::pair<FigureKind, std::string_view> kFigureKindNames[] = {
     {FigureKind::Pair, "pair"},
     {FigureKind::Decomposition, "decomposition"},
     {FigureKind::Slice, "slice"},
+    {FigureKind::DiscCast, "disc-cast"},
 };
 
 } // namespace

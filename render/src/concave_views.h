@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // satviz render, private: the figures of concave shapes, each drawn in panels of its own rather than as a step of
-// the pair's SAT test: a decomposition by both methods side by side, a body before and after a cut. What they share:
+// the pair's SAT test: a decomposition by both methods side by side, a body before and after a cut, a thick bullet. What they share:
 // a caption band, panels framed on a world box, pieces in colours of their own with their seams dashed.
 #pragma once
 
@@ -8,6 +8,7 @@
 #include "label_placer.h"
 
 #include <satviz/decompose.h>
+#include <satviz/disc_cast.h>
 #include <satviz/render/painter.h>
 
 #include <string>
@@ -66,5 +67,17 @@ void PaintSlice(Canvas& canvas, const Scene& scene, int body, const Figure& figu
 /// and each part's convex pieces (`pieces`, one decomposition per part), or why nothing was cut.
 std::string DescribeSlice(const Body& body, Vec2 a, Vec2 b, const std::vector<std::vector<Vec2>>& parts,
                           const std::vector<Decomposition>& pieces);
+
+/// Where the figure's disc, `disc` (a circle moving along its velocity), first touches `target`: CastDisc.
+DiscHit CastFigureDisc(const Body& target, const Body& disc);
+
+/// The disc-cast figure (FigureKind::DiscCast): the disc at its start and end, the path of its centre and the band
+/// it sweeps, the target's outline pushed out by the radius (dashed), and where the disc first touches: its centre on
+/// that outline, the contact point and the normal.
+void PaintDiscCast(Canvas& canvas, const Scene& scene, int target, int disc, const Figure& figure);
+
+/// The caption of the disc-cast figure: the disc's radius and path, and the hit as numbers a reader can check
+/// (centre = contact point + radius * normal), or why there is none.
+std::string DescribeDiscCast(const Body& target, const Body& disc, const DiscHit& hit);
 
 } // namespace satviz

@@ -3,6 +3,7 @@
 // on their own (areas, reflex corners, counts) and with the sentence above it.
 #include "support/random_concave.h"
 
+#include <satviz/render/describe.h>
 #include <satviz/render/figure.h>
 #include <satviz/render/recording_canvas.h>
 
@@ -276,4 +277,62 @@ TEST_CASE("A cut that stops inside the body leaves it whole, and the figure says
     const std::vector<std::string> texts = canvas.Texts();
     CHECK(std::find(texts.begin(), texts.end(), "After: 1 part") != texts.end());
     CHECK(FilledArea(canvas, "after") == Approx(FilledArea(canvas, "before")).epsilon(1e-4));
+}
+
+TEST_CASE("The disc-cast figure stops the disc where its rim first meets the shape, as worked out by hand",
+          "[concave-views]")
+{
+    SECTION("A disc dropped between the arms of a cup lands on the floor of the notch")
+    {
+        // The floor of the notch is y = 1 and the disc's radius 0.3: the centre stops at y = 1.3, (5 - 1.3) / 5 of
+        // the way down, at x = 1.6 + 1.2 t. A convex hull would have stopped it on the arms' tops, at y = 3.3.
+        const Scene scene = LoadConcave(R"({"bodies": [{"name": "cup", "polygon": [[0, 0], [4, 0], [4, 3], [3, 3],
+            [3, 1], [1, 1], [1, 3], [0, 3]]}, {"name": "ball", "circle": {"radius": 0.3}, "position": [1.6, 5],
+            "velocity": [1.2, -5]}], "view": {"figure": "disc-cast"}})");
+        const double t = (5.0 - 1.3) / 5.0;
+        const RecordingCanvas canvas = PaintScene(scene);
+        const std::string caption = Caption(canvas);
+        INFO(caption);
+        CHECK(caption.find("at t = " + FormatNumber(t) + " of the way: centre (" + FormatNumber(1.6 + 1.2 * t) +
+                           ", 1.300)") != std::string::npos);
+        CHECK(caption.find("where the outward normal is (0.00, 1.00)") != std::string::npos);
+        // On the figure: the disc drawn at the hit touches the contact point with its rim.
+        std::vector<ScreenPoint> discs;
+        float radius = 0.0f;
+        ScreenPoint contact{};
+        for (const DrawCommand* c : canvas.InGroup("hit"))
+        {
+            if (c->kind == DrawCommand::Kind::Circle)
+            {
+                discs.push_back(c->points[0]);
+                radius = c->radius;
+            }
+            if (c->kind == DrawCommand::Kind::FillCircle && c->radius == 4.5f)
+            {
+                contact = c->points[0];
+            }
+        }
+        REQUIRE(discs.size() == 1);
+        CHECK(std::hypot(discs[0].x - contact.x, discs[0].y - contact.y) == Approx(radius).margin(0.01));
+    }
+    SECTION("A disc whose centre passes above a wall catches its corner with its rim")
+    {
+        // The corner (-0.5, 1.5) lies 0.3 below the centre's path y = 1.8; the rim, radius 0.4, meets it when the
+        // centre is sqrt(0.4^2 - 0.3^2) short of it in x.
+        const Scene scene = LoadConcave(R"({"bodies": [{"name": "wall", "box": [1, 3]}, {"name": "bullet",
+            "circle": {"radius": 0.4}, "position": [-3, 1.8], "velocity": [6, 0]}], "view": {"figure": "disc-cast"}})");
+        const double x = -0.5 - std::sqrt(0.4 * 0.4 - 0.3 * 0.3);
+        const std::string caption = Caption(PaintScene(scene));
+        INFO(caption);
+        CHECK(caption.find("at t = " + FormatNumber((x + 3.0) / 6.0) + " of the way") != std::string::npos);
+        CHECK(caption.find("The contact point is (-0.50, 1.50)") != std::string::npos);
+    }
+    SECTION("A disc that passes a radius clear of the wall misses it")
+    {
+        const Scene scene = LoadConcave(R"({"bodies": [{"name": "wall", "box": [1, 3]}, {"name": "bullet",
+            "circle": {"radius": 0.4}, "position": [-3, 1.95], "velocity": [6, 0]}], "view": {"figure": "disc-cast"}})");
+        const RecordingCanvas canvas = PaintScene(scene);
+        CHECK(Caption(canvas).find("never enters wall's outline pushed out by the radius") != std::string::npos);
+        CHECK(canvas.InGroup("hit").empty());
+    }
 }

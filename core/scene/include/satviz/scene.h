@@ -87,6 +87,7 @@ enum class FigureKind
     Pair,          ///< "pair": the SAT test of the pair, step by step (the default)
     Decomposition, ///< "decomposition": the pair's first body cut into convex pieces by both methods, side by side
     Slice,         ///< "slice": the pair's first body before and after a cut along the view's `cut` segment
+    DiscCast,      ///< "disc-cast": the pair's second body, a circle, cast along its velocity against the first
 };
 
 /// The scene-file name of a figure kind ("pair", "decomposition", ...): the one list of them.

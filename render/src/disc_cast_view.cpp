@@ -1,0 +1,338 @@
+// SPDX-License-Identifier: MIT
+// The disc-cast figure: a thick bullet, a disc whose centre moves along a segment, and where it first touches a
+// shape: where its centre meets the shape's outline pushed out by the radius.
+#include "concave_views.h"
+
+#include <satviz/disc_cast.h>
+#include <satviz/render/describe.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <utility>
+
+namespace satviz
+{
+
+namespace
+{
+
+constexpr float kMargin = 36.0f; // room around the drawing, for the labels
+constexpr double kTau = 6.283185307179586;
+
+std::string Coordinate(double value)
+{
+    return value == 0.0 ? "0.00" : FormatNumber(value);
+}
+
+// Two coordinates with as many decimals each: "(-0.661, 0.750)", not "(-0.661, 0.75)".
+std::string Point(Vec2 p)
+{
+    std::string a = Coordinate(p.x);
+    std::string b = Coordinate(p.y);
+    auto decimals = [](const std::string& t) {
+        const size_t dot = t.find('.');
+        return t.find('e') != std::string::npos || dot == std::string::npos ? -1 : static_cast<int>(t.size() - dot - 1);
+    };
+    const int da = decimals(a);
+    const int db = decimals(b);
+    if (da >= 0 && db >= 0)
+    {
+        a.append(static_cast<size_t>(std::max(0, db - da)), '0');
+        b.append(static_cast<size_t>(std::max(0, da - db)), '0');
+    }
+    return "(" + a + ", " + b + ")";
+}
+
+// A vector as Point prints it, read back: the numbers a reader works with.
+Vec2 Printed(Vec2 p)
+{
+    return {std::stod(Coordinate(p.x)), std::stod(Coordinate(p.y))};
+}
+
+// The target's outline in the world, counter-clockwise: a concave body's as written, a polygon's vertices; empty for
+// a circle.
+std::vector<Vec2> WorldRing(const Body& body)
+{
+    std::vector<Vec2> ring = BodyOutline(body);
+    const Transform xf = body.Xf();
+    double area2 = 0.0;
+    for (size_t i = 0; i < ring.size(); ++i)
+    {
+        area2 += Cross(ring[i], ring[(i + 1) % ring.size()]);
+    }
+    for (Vec2& v : ring)
+    {
+        v = TransformPoint(xf, v);
+    }
+    if (area2 < 0.0)
+    {
+        std::reverse(ring.begin(), ring.end());
+    }
+    return ring;
+}
+
+// The outline pushed out by r: each edge moved out along its normal, an arc of radius r around each convex corner,
+// and at each reflex corner the two moved edges cut where they cross. World points, one closed chain.
+std::vector<Vec2> PushedOut(const std::vector<Vec2>& ring, double r)
+{
+    const size_t n = ring.size();
+    std::vector<Vec2> normals(n);
+    for (size_t i = 0; i < n; ++i)
+    {
+        const Vec2 e = Normalize(ring[(i + 1) % n] - ring[i]);
+        normals[i] = {e.y, -e.x};
+    }
+    std::vector<Vec2> chain;
+    for (size_t i = 0; i < n; ++i)
+    {
+        // Corner i joins edge i - 1 (normal m) and edge i (normal k).
+        const Vec2 m = normals[(i + n - 1) % n];
+        const Vec2 k = normals[i];
+        const Vec2 v = ring[i];
+        if (Cross(m, k) >= 0.0)
+        {
+            const double a0 = std::atan2(m.y, m.x);
+            double a1 = std::atan2(k.y, k.x);
+            while (a1 < a0)
+            {
+                a1 += kTau;
+            }
+            const int steps = std::max(1, static_cast<int>(std::ceil((a1 - a0) / 0.1)));
+            for (int s = 0; s <= steps; ++s)
+            {
+                const double a = a0 + (a1 - a0) * s / steps;
+                chain.push_back(v + r * Vec2{std::cos(a), std::sin(a)});
+            }
+        }
+        else
+        {
+            // The moved edges meet at v + r (m + k) / (1 + m.k), the point r from both lines.
+            chain.push_back(v + (r / (1.0 + Dot(m, k))) * (m + k));
+        }
+    }
+    return chain;
+}
+
+} // namespace
+
+std::string DescribeDiscCast(const Body& target, const Body& disc, const DiscHit& hit)
+{
+    const double r = disc.shape.circle.radius;
+    const Vec2 p1 = TransformPoint(disc.Xf(), disc.shape.circle.center);
+    const Vec2 p2 = p1 + disc.velocity;
+    std::string text = "A disc of radius " + FormatNumber(r) + ", " + disc.name + ", moves its centre from " +
+                       Point(p1) + " to " + Point(p2) + ". ";
+    if (hit.startsInside)
+    {
+        return text + "It overlaps " + target.name + " at the start already: t = 0, and the way out is along " +
+               Point(hit.normal) + ".";
+    }
+    if (!hit.hit)
+    {
+        return text + "Its centre's path never enters " + target.name +
+               "'s outline pushed out by the radius (dashed), so the disc passes " + target.name +
+               " without touching it.";
+    }
+    const std::string piece =
+        hit.piece >= 0 ? " (piece " + std::to_string(hit.piece + 1) + " of " + target.name + ")" : "";
+    // The check a reader makes, from the numbers as printed: where it differs from the centre printed, only by
+    // rounding, the sentence says so.
+    const Vec2 sum = Printed(hit.point) + std::stod(FormatNumber(r)) * Printed(hit.normal);
+    const std::string check =
+        Point(sum) == Point(hit.center) ? Point(hit.center) : Point(sum) + ", the centre but for rounding";
+    return text + "It first touches " + target.name + " when its centre meets " + target.name +
+           "'s outline pushed out by the radius (dashed), at t = " + FormatNumber(hit.fraction) +
+           " of the way: centre " + Point(hit.center) + ". The contact point is " + Point(hit.point) + piece +
+           ", where the outward normal is " + Point(hit.normal) + ": the centre lies one radius out along it, " +
+           Point(hit.point) + " + " + FormatNumber(r) + " " + Point(hit.normal) + " = " + check + ".";
+}
+
+DiscHit CastFigureDisc(const Body& target, const Body& disc)
+{
+    const Vec2 p1 = TransformPoint(disc.Xf(), disc.shape.circle.center);
+    const Vec2 p2 = p1 + disc.velocity;
+    return target.IsConcave() ? CastDisc(target.concave, target.Xf(), p1, p2, disc.shape.circle.radius)
+                              : CastDisc(target.shape, target.Xf(), p1, p2, disc.shape.circle.radius);
+}
+
+void PaintDiscCast(Canvas& canvas, const Scene& scene, int targetIndex, int discIndex, const Figure& figure)
+{
+    const Body& target = scene.bodies[static_cast<size_t>(targetIndex)];
+    const Body& disc = scene.bodies[static_cast<size_t>(discIndex)];
+    const float width = static_cast<float>(figure.view.width);
+    const float height = static_cast<float>(figure.view.height);
+    const double r = disc.shape.circle.radius;
+    const Vec2 p1 = TransformPoint(disc.Xf(), disc.shape.circle.center);
+    const Vec2 p2 = p1 + disc.velocity;
+    const DiscHit hit = CastFigureDisc(target, disc);
+
+    canvas.BeginGroup("background");
+    canvas.FillRect({0.0f, 0.0f}, {width, height}, palette::kBackground);
+    const float top = (figure.layers & kLayerCaption)
+                          ? DrawCaptionBand(canvas, figure.caption, DescribeDiscCast(target, disc, hit), width)
+                          : 0.0f;
+    LabelPlacer labels(canvas, width, height);
+    labels.ReserveBand({0.0f, 0.0f, width, top});
+
+    // The target, the pushed-out outline and both discs in the frame.
+    const std::vector<Vec2> ring = WorldRing(target);
+    std::vector<Vec2> pushed;
+    if (ring.empty())
+    {
+        const Vec2 c = TransformPoint(target.Xf(), target.shape.circle.center);
+        const double reach = target.shape.circle.radius + r;
+        for (int s = 0; s < 96; ++s)
+        {
+            const double a = kTau * s / 96;
+            pushed.push_back(c + reach * Vec2{std::cos(a), std::sin(a)});
+        }
+    }
+    else
+    {
+        pushed = PushedOut(ring, r);
+    }
+    Vec2 low{std::min(p1.x, p2.x) - r, std::min(p1.y, p2.y) - r};
+    Vec2 high{std::max(p1.x, p2.x) + r, std::max(p1.y, p2.y) + r};
+    for (const Vec2& p : pushed)
+    {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+    }
+    const ScreenRect rect{0.0f, top, width, height};
+    const Panel panel = FramePanel(rect, low, high, figure.view.width, figure.view.height, kMargin);
+    const View& view = panel.view;
+    const float radius = ToPixels(view, r);
+
+    canvas.BeginGroup("target");
+    const Transform xf = target.Xf();
+    if (target.IsConcave())
+    {
+        for (const ConcavePart& part : target.concave.parts)
+        {
+            std::vector<ScreenPoint> points;
+            for (const Vec2& v : part.shape.polygon.Vertices())
+            {
+                points.push_back(ToScreen(view, TransformPoint(xf, v)));
+            }
+            canvas.FillConvex(points.data(), static_cast<int>(points.size()), WithAlpha(palette::kShapeA, 0.22f));
+        }
+        std::set<std::pair<std::pair<double, double>, std::pair<double, double>>> drawn;
+        for (const ConcavePart& part : target.concave.parts)
+        {
+            const Vec2Span<double> v = part.shape.polygon.Vertices();
+            for (int e = 0; e < v.count; ++e)
+            {
+                const Vec2 a = v[e];
+                const Vec2 b = v[(e + 1) % v.count];
+                if (!part.internal[static_cast<size_t>(e)] || drawn.count({{b.x, b.y}, {a.x, a.y}}) > 0)
+                {
+                    continue;
+                }
+                drawn.insert({{a.x, a.y}, {b.x, b.y}});
+                DashedSegment(canvas, ToScreen(view, TransformPoint(xf, a)), ToScreen(view, TransformPoint(xf, b)),
+                              WithAlpha(palette::kShapeA, 0.6f), 1.0f, rect, 6.0f, 6.0f);
+            }
+        }
+    }
+    if (!ring.empty())
+    {
+        std::vector<ScreenPoint> outline;
+        for (const Vec2& v : ring)
+        {
+            outline.push_back(ToScreen(view, v));
+        }
+        if (!target.IsConcave())
+        {
+            canvas.FillConvex(outline.data(), static_cast<int>(outline.size()), WithAlpha(palette::kShapeA, 0.22f));
+        }
+        canvas.Polyline(outline.data(), static_cast<int>(outline.size()), true, palette::kShapeA, 2.0f);
+    }
+    else
+    {
+        const ScreenPoint c = ToScreen(view, TransformPoint(xf, target.shape.circle.center));
+        canvas.FillCircle(c, ToPixels(view, target.shape.circle.radius), WithAlpha(palette::kShapeA, 0.22f));
+        canvas.Circle(c, ToPixels(view, target.shape.circle.radius), palette::kShapeA, 2.0f);
+    }
+    canvas.BeginGroup("pushed out");
+    std::vector<ScreenPoint> dashed;
+    for (const Vec2& p : pushed)
+    {
+        dashed.push_back(ToScreen(view, p));
+    }
+    DashedOutline(canvas, dashed, palette::kMuted, 1.2f, rect);
+
+    canvas.BeginGroup("path");
+    const ScreenPoint s1 = ToScreen(view, p1);
+    const ScreenPoint s2 = ToScreen(view, p2);
+    const Vec2 along = Normalize(p2 - p1);
+    const Vec2 side{-along.y, along.x};
+    for (const double sign : {-1.0, 1.0})
+    {
+        canvas.Segment(ToScreen(view, p1 + sign * r * side), ToScreen(view, p2 + sign * r * side),
+                       WithAlpha(palette::kShapeB, 0.45f), 1.0f);
+    }
+    labels.ReserveLine(s1, s2, 1.5f);
+    const ScreenRect head = Arrow(canvas, s1, s2, palette::kInk, 1.5f);
+    labels.Reserve(head);
+    canvas.Circle(s1, radius, palette::kShapeBInk, 2.0f);
+    canvas.FillCircle(s1, 3.0f, palette::kInk);
+    DashedOutline(canvas, ShapeOutline(view, MakeShape(Circle{p2, r}), MakeTransform(Vec2{}, 0.0)),
+                  WithAlpha(palette::kShapeBInk, 0.6f), 1.2f, rect);
+    labels.Place(s1, "start", TextStyle::Label, palette::kShapeBInk, s1.x - s2.x, s1.y - s2.y, radius + 6.0f,
+                 LabelRank::Note);
+    labels.Place(s2, "end", TextStyle::Label, palette::kShapeBInk, s2.x - s1.x, s2.y - s1.y, radius + 6.0f,
+                 LabelRank::Note);
+    // The target's name inside it: at its largest piece's middle (a concave outline's own middle may lie outside).
+    Vec2 middle = TransformPoint(xf, target.shape.type == ShapeType::Circle ? target.shape.circle.center : Vec2{});
+    if (target.shape.type == ShapeType::Polygon)
+    {
+        const Polygon* largest = &target.shape.polygon;
+        double most = -1.0;
+        for (const ConcavePart& part : target.concave.parts)
+        {
+            const Polygon& polygon = part.shape.polygon;
+            double area2 = 0.0;
+            for (int i = 0; i < polygon.Count(); ++i)
+            {
+                area2 += Cross(polygon.Vertices()[i], polygon.Vertices()[(i + 1) % polygon.Count()]);
+            }
+            if (area2 > most)
+            {
+                most = area2;
+                largest = &polygon;
+            }
+        }
+        Vec2 sum{};
+        for (const Vec2& v : largest->Vertices())
+        {
+            sum = sum + v;
+        }
+        middle = TransformPoint(xf, (1.0 / largest->Count()) * sum);
+    }
+    labels.Place(ToScreen(view, middle), target.name, TextStyle::Heading, palette::kShapeA, 0.0f, 0.0f, 0.0f,
+                 LabelRank::Name);
+
+    if (hit.hit)
+    {
+        canvas.BeginGroup("hit");
+        const ScreenPoint c = ToScreen(view, hit.center);
+        const ScreenPoint p = ToScreen(view, hit.point);
+        canvas.FillCircle(c, radius, WithAlpha(palette::kShapeB, 0.35f));
+        canvas.Circle(c, radius, palette::kShapeBInk, 2.0f);
+        canvas.FillCircle(c, 3.0f, palette::kInk);
+        // The normal from the contact point through the centre and beyond: the centre lies one radius along it.
+        const ScreenPoint tip = ToScreen(view, hit.point + (r + 22.0 / view.zoom) * hit.normal);
+        labels.Reserve(Arrow(canvas, p, tip, palette::kResult, 2.0f));
+        canvas.FillCircle(p, 4.5f, palette::kResult);
+        labels.Reserve({p.x - 5.0f, p.y - 5.0f, p.x + 5.0f, p.y + 5.0f});
+        labels.Reserve({c.x - 4.0f, c.y - 4.0f, c.x + 4.0f, c.y + 4.0f});
+        labels.Place(c, "t = " + FormatNumber(hit.fraction), TextStyle::Label, palette::kInk,
+                     static_cast<float>(side.x), static_cast<float>(-side.y), radius + 6.0f, LabelRank::Verdict);
+        labels.Place(p, "contact", TextStyle::Label, palette::kResult, static_cast<float>(-hit.normal.y),
+                     static_cast<float>(-hit.normal.x), 8.0f, LabelRank::Verdict);
+    }
+    labels.Flush(palette::kBackground);
+}
+
+} // namespace satviz
