@@ -215,7 +215,7 @@ TEST_CASE("A view's figure loads, saves back, and is refused for a body it canno
     CHECK(plain.scene.view.figure == FigureKind::Pair);
     CHECK(SceneToJson(plain.scene).find("figure") == std::string::npos);
     CHECK(ParseScene(one + R"({"figure": "cut"}})", "s.json", concave).error ==
-          "s.json: view.figure: expected \"pair\", \"decomposition\", \"slice\" or \"disc-cast\", got \"cut\"");
+          "s.json: view.figure: expected \"pair\", \"decomposition\", \"slice\", \"disc-cast\" or \"pieces\", got \"cut\"");
     CHECK(ParseScene(one + R"({"pair": ["ball", "L"], "figure": "decomposition"}})", "s.json", concave).error ==
           "s.json: view.figure: a decomposition figure cuts the pair's first body, \"ball\", which is a circle, "
           "not a polygon");
@@ -272,6 +272,24 @@ TEST_CASE("A disc-cast figure needs a moving circle as the pair's second body, n
     CHECK(ErrorOf(R"({"bodies": [{"name": "wall", "box": [1, 3]}], "view": {"figure": "disc-cast"}})") ==
           "s.json: view.figure: a disc-cast figure casts the pair's second body against its first: the scene has 1 "
           "body");
+}
+
+TEST_CASE("A pieces figure needs a pair with a concave body, naming the field", "[scene]")
+{
+    SceneOptions concave;
+    concave.concave = true;
+    const std::string bodies = R"({"bodies": [{"name": "L", "polygon": [[0, 0], [4, 0], [4, 1], [1, 1], [1, 3],
+        [0, 3]]}, {"name": "box", "box": [1, 1]}, {"name": "ball", "circle": {"radius": 1}}], "view": )";
+    const SceneResult pieces = ParseScene(bodies + R"({"figure": "pieces"}})", "s.json", concave);
+    INFO(pieces.error);
+    REQUIRE(pieces.Ok());
+    CHECK(pieces.scene.view.figure == FigureKind::Pieces);
+    CHECK(ParseScene(bodies + R"({"pair": ["box", "ball"], "figure": "pieces"}})", "s.json", concave).error ==
+          "s.json: view.figure: a pieces figure tests a pair with a concave body piece by piece: neither \"box\" "
+          "nor \"ball\" is concave");
+    CHECK(ParseScene(R"({"bodies": [{"name": "box", "box": [1, 1]}], "view": {"figure": "pieces"}})", "s.json",
+                     concave)
+              .error == "s.json: view.figure: a pieces figure tests a pair: the scene has 1 body");
 }
 
 TEST_CASE("A view's sim_steps loads, saves back and refuses a negative or fractional count", "[scene]")

@@ -77,6 +77,7 @@ set(SATVIZ_STEP_SCENES
   l07_near_miss
   l08_throw
   l10_ray_hit
+  concave/pieces_l_and_box
 )
 set(SATVIZ_FACE_STEP_SCENES
   overlapping_boxes

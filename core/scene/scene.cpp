@@ -669,6 +669,29 @@ SceneView ParseView(const Json& value, const Scene& scene)
                                            "\", along its velocity, which is zero");
             }
         }
+        if (view.figure == FigureKind::Pieces)
+        {
+            // The pair: view.pair's bodies, else the first two.
+            const Body* first = nullptr;
+            const Body* second = nullptr;
+            for (size_t i = 0; i < scene.bodies.size(); ++i)
+            {
+                const Body& b = scene.bodies[i];
+                first = (view.bodyA.empty() ? i == 0 : b.name == view.bodyA) ? &b : first;
+                second = (view.bodyB.empty() ? i == 1 : b.name == view.bodyB) ? &b : second;
+            }
+            if (first == nullptr || second == nullptr)
+            {
+                Fail(path + ".figure", "a pieces figure tests a pair: the scene has " +
+                                           std::to_string(scene.bodies.size()) +
+                                           (scene.bodies.size() == 1 ? " body" : " bodies"));
+            }
+            if (!first->IsConcave() && !second->IsConcave())
+            {
+                Fail(path + ".figure", "a pieces figure tests a pair with a concave body piece by piece: neither \"" +
+                                           first->name + "\" nor \"" + second->name + "\" is concave");
+            }
+        }
         if (view.figure == FigureKind::Slice && !value.contains("cut"))
         {
             Fail(path + ".figure", "a slice figure needs a \"cut\": [[x, y], [x, y]], the segment to cut along");
@@ -1379,6 +1402,7 @@ constexpr std::pair<FigureKind, std::string_view> kFigureKindNames[] = {
     {FigureKind::Decomposition, "decomposition"},
     {FigureKind::Slice, "slice"},
     {FigureKind::DiscCast, "disc-cast"},
+    {FigureKind::Pieces, "pieces"},
 };
 
 } // namespace

@@ -52,7 +52,11 @@ Color PieceColor(int i)
     return kHues[static_cast<size_t>(i) % (sizeof kHues / sizeof kHues[0])];
 }
 
-float DrawCaptionBand(Canvas& canvas, const std::string& title, const std::string& text, float width)
+namespace
+{
+
+std::vector<std::pair<std::string, TextStyle>> CaptionRows(Canvas& canvas, const std::string& title,
+                                                           const std::string& text, float width)
 {
     auto measure = [&](TextStyle style) {
         return [&canvas, style](const std::string& s) { return canvas.MeasureText(s, style).x; };
@@ -69,7 +73,21 @@ float DrawCaptionBand(Canvas& canvas, const std::string& title, const std::strin
     {
         rows.push_back({l, TextStyle::Body});
     }
-    const float bottom = kPad - 2.0f + kLineHeight * static_cast<float>(rows.size()) + 6.0f;
+    return rows;
+}
+
+} // namespace
+
+int CaptionBandLines(Canvas& canvas, const std::string& title, const std::string& text, float width)
+{
+    return static_cast<int>(CaptionRows(canvas, title, text, width).size());
+}
+
+float DrawCaptionBand(Canvas& canvas, const std::string& title, const std::string& text, float width, int lines)
+{
+    const std::vector<std::pair<std::string, TextStyle>> rows = CaptionRows(canvas, title, text, width);
+    const float bottom =
+        kPad - 2.0f + kLineHeight * static_cast<float>(std::max(static_cast<int>(rows.size()), lines)) + 6.0f;
     canvas.BeginGroup("caption");
     canvas.FillRect({0.0f, 0.0f}, {width, bottom}, palette::kPanel);
     canvas.Segment({0.0f, bottom}, {width, bottom}, palette::kFaint, 1.0f);

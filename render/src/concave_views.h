@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // satviz render, private: the figures of concave shapes, each drawn in panels of its own rather than as a step of
-// the pair's SAT test: a decomposition by both methods side by side, a body before and after a cut, a thick bullet. What they share:
+// the pair's SAT test: a decomposition by both methods side by side, a body before and after a cut, a thick bullet,
+// a concave pair's test piece by piece. What they share:
 // a caption band, panels framed on a world box, pieces in colours of their own with their seams dashed.
 #pragma once
 
@@ -35,8 +36,12 @@ double FitZoom(const ScreenRect& rect, Vec2 low, Vec2 high, float margin);
 Color PieceColor(int i);
 
 /// Draws the caption band at the top of the figure: the scene's title (when not empty) in the heading style, then
-/// `text` wrapped to the width. Returns the band's bottom edge.
-float DrawCaptionBand(Canvas& canvas, const std::string& title, const std::string& text, float width);
+/// `text` wrapped to the width, the band at least `lines` lines high (steps of one figure keep one band, so that
+/// the picture does not move between them). Returns the band's bottom edge.
+float DrawCaptionBand(Canvas& canvas, const std::string& title, const std::string& text, float width, int lines = 0);
+
+/// The lines DrawCaptionBand takes for this title and text.
+int CaptionBandLines(Canvas& canvas, const std::string& title, const std::string& text, float width);
 
 /// Draws convex pieces placed by xf: each filled in its own colour, its outline edges solid ink and each seam
 /// between two pieces dashed once (drawn from the piece where it runs from the lower vertex index to the higher).
@@ -79,5 +84,45 @@ void PaintDiscCast(Canvas& canvas, const Scene& scene, int target, int disc, con
 /// The caption of the disc-cast figure: the disc's radius and path, and the hit as numbers a reader can check
 /// (centre = contact point + radius * normal), or why there is none.
 std::string DescribeDiscCast(const Body& target, const Body& disc, const DiscHit& hit);
+
+/// A piece's box in the world, as the concave queries' broadphase compares them.
+struct PieceBox
+{
+    Vec2 min;
+    Vec2 max;
+};
+
+/// One pair of pieces whose boxes overlap, tested as a convex pair.
+struct PiecePairTest
+{
+    int i = 0;         ///< A's piece (0 for a convex body)
+    int j = 0;         ///< B's piece
+    Manifold manifold; ///< Collide on the two pieces
+    bool seam = false; ///< they overlap and the push points through a seam of either (rule 2 of concave.h)
+};
+
+/// A pair with a concave body, piece by piece: the boxes, the pairs tested in order, and the merged answer.
+struct PieceStudy
+{
+    std::vector<PieceBox> boxesA;
+    std::vector<PieceBox> boxesB;
+    std::vector<PiecePairTest> tested;
+    ConcaveManifold merged; ///< the concave Collide on the pair
+};
+
+/// The box of part i of a body (a concave body's piece i, else its shape), in the world.
+PieceBox PartBox(const Body& body, int i);
+
+/// Tests the pair piece by piece as the concave Collide does, keeping each step.
+PieceStudy StudyPieces(const Body& a, const Body& b);
+
+/// The sentence of step `step` of the pieces figure: 0 the broadphase, 1 .. tested the pairs, then the verdict.
+std::string DescribePieceStep(const Body& a, const Body& b, const PieceStudy& study, int step);
+
+/// Steps of the pieces figure of the pair: the broadphase, one per pair tested, the verdict.
+int PieceStepCount(const Scene& scene, const PairStudy& study);
+
+/// The pieces figure (FigureKind::Pieces): the step `figure.step` of the concave pair's test.
+void PaintPieceSteps(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure);
 
 } // namespace satviz

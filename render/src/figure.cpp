@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "concave_views.h"
 #include "world_views.h"
 
 #include <satviz/render/figure.h>
@@ -66,6 +67,19 @@ bool FigurePair(const Scene& scene, int& a, int& b)
     return true;
 }
 
+int FigureStepCount(const Scene& scene, const FigureSetup& setup)
+{
+    switch (setup.figure.kind)
+    {
+    case FigureKind::Pair:
+        return setup.study.StepCount();
+    case FigureKind::Pieces:
+        return PieceStepCount(scene, setup.study);
+    default:
+        return 1;
+    }
+}
+
 FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
 {
     FigureSetup setup;
@@ -112,14 +126,16 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
         figure.view.height = height;
     }
     const int step = options.setStep ? options.step : view.step;
-    if (step >= setup.study.StepCount())
+    figure.kind = view.figure;
+    const int steps = FigureStepCount(scene, setup);
+    if (step >= steps)
     {
         setup.error = std::string(options.setStep ? "--step" : "view.step") + ": step " + std::to_string(step + 1) +
-                      " does not exist: this pair's trace has steps 1 to " + std::to_string(setup.study.StepCount()) +
+                      " does not exist: this figure has steps 1 to " + std::to_string(steps) +
                       " (the last is the verdict)";
         return setup;
     }
-    figure.step = step < 0 ? setup.study.VerdictStep() : step;
+    figure.step = step < 0 ? (view.figure == FigureKind::Pieces ? steps - 1 : setup.study.VerdictStep()) : step;
     figure.time = view.time;
     figure.caption = view.caption;
     figure.sim = options.sim;

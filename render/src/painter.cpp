@@ -2223,6 +2223,11 @@ void PaintFigure(Canvas& canvas, const Scene& scene, const PairStudy& study, con
         PaintSlice(canvas, scene, figure.body, figure);
         return;
     }
+    if (figure.kind == FigureKind::Pieces && study.bodyA >= 0 && study.bodyB >= 0)
+    {
+        PaintPieceSteps(canvas, scene, study, figure);
+        return;
+    }
     if (figure.kind == FigureKind::DiscCast && study.bodyA >= 0 && study.bodyB >= 0)
     {
         PaintDiscCast(canvas, scene, study.bodyA, study.bodyB, figure);

@@ -517,7 +517,7 @@ int main(int argc, char** argv)
             std::vector<int> steps;
             if (allSteps)
             {
-                for (int k = 0; k < setup.study.StepCount(); ++k)
+                for (int k = 0; k < satviz::FigureStepCount(loaded.scene, setup); ++k)
                 {
                     steps.push_back(k);
                 }

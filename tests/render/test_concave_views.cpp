@@ -3,6 +3,8 @@
 // on their own (areas, reflex corners, counts) and with the sentence above it.
 #include "support/random_concave.h"
 
+#include <satviz/collide.h>
+#include <satviz/concave.h>
 #include <satviz/render/describe.h>
 #include <satviz/render/figure.h>
 #include <satviz/render/recording_canvas.h>
@@ -335,4 +337,59 @@ TEST_CASE("The disc-cast figure stops the disc where its rim first meets the sha
         CHECK(Caption(canvas).find("never enters wall's outline pushed out by the radius") != std::string::npos);
         CHECK(canvas.InGroup("hit").empty());
     }
+}
+
+TEST_CASE("The pieces figure tests the pairs of pieces whose boxes overlap, one a step, then merges them",
+          "[concave-views]")
+{
+    // An L of two pieces and a box across the seam between them, nothing turned: each piece's box is the box of its
+    // corners, which this test takes from the pieces themselves.
+    const Scene scene = LoadConcave(R"({"bodies": [{"name": "L", "polygon": [[0, 0], [4, 0], [4, 1], [1, 1], [1, 3],
+        [0, 3]]}, {"name": "box", "box": [1.2, 0.6], "position": [1.0, 1.2]}], "view": {"figure": "pieces"}})");
+    const Body& l = scene.bodies[0];
+    const Body& box = scene.bodies[1];
+    REQUIRE(l.concave.parts.size() == 2);
+    int overlapping = 0;
+    for (const ConcavePart& part : l.concave.parts)
+    {
+        double lo[2] = {INFINITY, INFINITY};
+        double hi[2] = {-INFINITY, -INFINITY};
+        for (const Vec2& v : part.shape.polygon.Vertices())
+        {
+            lo[0] = std::min(lo[0], v.x);
+            lo[1] = std::min(lo[1], v.y);
+            hi[0] = std::max(hi[0], v.x);
+            hi[1] = std::max(hi[1], v.y);
+        }
+        // The box spans [0.4, 1.6] x [0.9, 1.5].
+        overlapping += lo[0] <= 1.6 && hi[0] >= 0.4 && lo[1] <= 1.5 && hi[1] >= 0.9 ? 1 : 0;
+    }
+    FigureSetup setup = SetUpFigure(scene, {});
+    INFO(setup.error);
+    REQUIRE(setup.Ok());
+    const int steps = FigureStepCount(scene, setup);
+    CHECK(steps == overlapping + 2);
+    CHECK(setup.figure.step == steps - 1);
+    std::vector<std::string> captions;
+    for (int k = 0; k < steps; ++k)
+    {
+        setup.figure.step = k;
+        RecordingCanvas canvas;
+        PaintFigure(canvas, scene, setup.study, setup.figure);
+        captions.push_back(Caption(canvas));
+        INFO(captions.back());
+        CHECK(captions.back().rfind("Step " + std::to_string(k + 1) + " of " + std::to_string(steps) + ": ", 0) == 0);
+    }
+    CHECK(captions[0].find("L has 2 pieces and box 1, so there are 2 pairs of pieces; " + std::to_string(overlapping) +
+                           (overlapping == 1 ? " has" : " have")) != std::string::npos);
+    // The verdict is the concave Collide's, whose own count of pairs tested agrees with the steps.
+    const ConcaveManifold m = Collide(l.concave, l.Xf(), box.shape, box.Xf());
+    CHECK(m.pairsTested == overlapping);
+    REQUIRE(m.manifold.overlap);
+    INFO(captions.back());
+    CHECK(captions.back().find("overlap by " + FormatNumber(m.manifold.depth)) != std::string::npos);
+    // The box spans x from 0.4 to 1.6: it reaches 0.6 into the L's arm (x < 1), whose push is 0.6 to the right,
+    // deeper than the foot's 0.1 up (the foot's top is y = 1, the box's bottom 0.9), so the arm's pair decides.
+    CHECK(m.manifold.depth == Approx(0.6));
+    CHECK(captions.back().find("along (1.00, 0.00)") != std::string::npos);
 }

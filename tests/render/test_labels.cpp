@@ -635,7 +635,7 @@ std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool face
     FigureSetup setup = SetUpFigure(loaded.scene, options);
     REQUIRE(setup.Ok());
     std::vector<int> steps;
-    for (int k = allSteps ? 0 : setup.figure.step; k < (allSteps ? setup.study.StepCount() : setup.figure.step + 1);
+    for (int k = allSteps ? 0 : setup.figure.step; k < (allSteps ? FigureStepCount(loaded.scene, setup) : setup.figure.step + 1);
          ++k)
     {
         steps.push_back(k);

@@ -88,6 +88,9 @@ enum class FigureKind
     Decomposition, ///< "decomposition": the pair's first body cut into convex pieces by both methods, side by side
     Slice,         ///< "slice": the pair's first body before and after a cut along the view's `cut` segment
     DiscCast,      ///< "disc-cast": the pair's second body, a circle, cast along its velocity against the first
+    /// "pieces": the SAT test of a pair with a concave body, step by step: the broadphase over the pieces' boxes,
+    /// each pair of pieces tested, the merged verdict
+    Pieces,
 };
 
 /// The scene-file name of a figure kind ("pair", "decomposition", ...): the one list of them.

@@ -40,6 +40,11 @@ struct FigureSetup
 /// scene has fewer than two bodies or view.pair names no pair of distinct bodies.
 bool FigurePair(const Scene& scene, int& a, int& b);
 
+/// The steps a figure of the scene can show: those of the pair's SAT test (PairStudy::StepCount), those of a
+/// pieces figure (the broadphase over the pieces' boxes, each pair of pieces tested, the verdict), or 1 for a figure
+/// of its own that has no steps (a decomposition, a slice, a disc cast).
+int FigureStepCount(const Scene& scene, const FigureSetup& setup);
+
 /// Sets up the figure of a scene: picks the pair (view.pair, or the first two bodies), runs the queries, frames
 /// the camera, resolves the step (-1: the verdict). Errors name the scene field at fault.
 FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options);

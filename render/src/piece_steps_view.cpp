@@ -1,0 +1,395 @@
+// SPDX-License-Identifier: MIT
+// The pieces figure: the SAT test of a pair with a concave body, step by step as the concave Collide runs it: the
+// broadphase over the pieces' boxes, each pair of pieces whose boxes overlap tested as a convex pair, and the merged
+// verdict.
+#include "concave_views.h"
+
+#include <satviz/collide.h>
+#include <satviz/render/describe.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace satviz
+{
+
+namespace
+{
+
+constexpr float kMargin = 40.0f; // room around the pair, for the pieces' names
+
+std::string Coordinate(double value)
+{
+    return value == 0.0 ? "0.00" : FormatNumber(value);
+}
+
+std::string Point(Vec2 p)
+{
+    return "(" + Coordinate(p.x) + ", " + Coordinate(p.y) + ")";
+}
+
+// The convex parts of a body: a concave body's pieces, or its one shape.
+int PartCount(const Body& body)
+{
+    return body.IsConcave() ? static_cast<int>(body.concave.parts.size()) : 1;
+}
+
+const Shape& PartShape(const Body& body, int i)
+{
+    return body.IsConcave() ? body.concave.parts[static_cast<size_t>(i)].shape : body.shape;
+}
+
+// The normal `outward` (world, out of part i of the body) points along one of the part's seams: it is a seam's
+// normal, or, for a vertex axis of that part, it leans past a corner into a seam's outer side (concave.h, rule 2).
+bool AlongSeam(const Body& body, int i, Vec2 outward, const AxisRef& axis, int side)
+{
+    if (!body.IsConcave())
+    {
+        return false;
+    }
+    const ConcavePart& part = body.concave.parts[static_cast<size_t>(i)];
+    const Polygon& polygon = part.shape.polygon;
+    const Vec2 n = InvRotate(body.Xf().q, outward);
+    const int count = polygon.Count();
+    for (int e = 0; e < count; ++e)
+    {
+        if (part.internal[static_cast<size_t>(e)] &&
+            Dot(n, polygon.Normal(e)) >= 1.0 - 64.0 * std::numeric_limits<double>::epsilon())
+        {
+            return true;
+        }
+    }
+    if (axis.kind == AxisKind::VertexToCenter && axis.shape == side)
+    {
+        for (const int e : {(axis.index + count - 1) % count, axis.index})
+        {
+            if (part.internal[static_cast<size_t>(e)] && Dot(n, polygon.Normal(e)) > 0.0)
+            {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+std::string PieceName(const Body& body, int i)
+{
+    return body.IsConcave() ? body.name + std::to_string(i + 1) : body.name;
+}
+
+Vec2 PartMiddle(const Body& body, int i)
+{
+    const Shape& shape = PartShape(body, i);
+    if (shape.type == ShapeType::Circle)
+    {
+        return TransformPoint(body.Xf(), shape.circle.center);
+    }
+    Vec2 sum{};
+    for (const Vec2& v : shape.polygon.Vertices())
+    {
+        sum = sum + v;
+    }
+    return TransformPoint(body.Xf(), (1.0 / shape.polygon.Count()) * sum);
+}
+
+} // namespace
+
+PieceBox PartBox(const Body& body, int i)
+{
+    const Shape& shape = PartShape(body, i);
+    const Transform xf = body.Xf();
+    PieceBox box{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
+    auto grow = [&](Vec2 p) {
+        box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
+        box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
+    };
+    if (body.IsConcave())
+    {
+        // As the concave queries take it: the piece's box in the body frame, its corners placed.
+        const BoundsT<double>& local = body.concave.parts[static_cast<size_t>(i)].bounds;
+        for (const Vec2 corner : {local.min, Vec2{local.max.x, local.min.y}, local.max, Vec2{local.min.x, local.max.y}})
+        {
+            grow(TransformPoint(xf, corner));
+        }
+    }
+    else if (shape.type == ShapeType::Polygon)
+    {
+        for (const Vec2& v : shape.polygon.Vertices())
+        {
+            grow(TransformPoint(xf, v));
+        }
+    }
+    else
+    {
+        const Vec2 c = TransformPoint(xf, shape.circle.center);
+        grow(c - Vec2{shape.circle.radius, shape.circle.radius});
+        grow(c + Vec2{shape.circle.radius, shape.circle.radius});
+    }
+    return box;
+}
+
+PieceStudy StudyPieces(const Body& a, const Body& b)
+{
+    PieceStudy study;
+    for (int i = 0; i < PartCount(a); ++i)
+    {
+        study.boxesA.push_back(PartBox(a, i));
+    }
+    for (int j = 0; j < PartCount(b); ++j)
+    {
+        study.boxesB.push_back(PartBox(b, j));
+    }
+    for (int i = 0; i < PartCount(a); ++i)
+    {
+        for (int j = 0; j < PartCount(b); ++j)
+        {
+            const PieceBox& p = study.boxesA[static_cast<size_t>(i)];
+            const PieceBox& q = study.boxesB[static_cast<size_t>(j)];
+            if (p.min.x > q.max.x || q.min.x > p.max.x || p.min.y > q.max.y || q.min.y > p.max.y)
+            {
+                continue;
+            }
+            PiecePairTest test;
+            test.i = i;
+            test.j = j;
+            test.manifold = Collide(PartShape(a, i), a.Xf(), PartShape(b, j), b.Xf());
+            test.seam = test.manifold.overlap && (AlongSeam(a, i, test.manifold.normal, test.manifold.axis, 0) ||
+                                                  AlongSeam(b, j, -test.manifold.normal, test.manifold.axis, 1));
+            study.tested.push_back(test);
+        }
+    }
+    const Transform xfA = a.Xf();
+    const Transform xfB = b.Xf();
+    study.merged = a.IsConcave() ? (b.IsConcave() ? Collide(a.concave, xfA, b.concave, xfB)
+                                                  : Collide(a.concave, xfA, b.shape, xfB))
+                                 : Collide(a.shape, xfA, b.concave, xfB);
+    return study;
+}
+
+std::string DescribePieceStep(const Body& a, const Body& b, const PieceStudy& study, int step)
+{
+    const int pieces = PartCount(a) * PartCount(b);
+    const int tested = static_cast<int>(study.tested.size());
+    const std::string header = "Step " + std::to_string(step + 1) + " of " + std::to_string(tested + 2) + ": ";
+    if (step == 0)
+    {
+        std::string list;
+        for (size_t k = 0; k < study.tested.size(); ++k)
+        {
+            list += (k == 0 ? "" : (k + 1 == study.tested.size() ? " and " : ", ")) + PieceName(a, study.tested[k].i) +
+                    " with " + PieceName(b, study.tested[k].j);
+        }
+        return header + "a broadphase over the pieces' boxes (dashed). " + a.name + " has " +
+               std::to_string(PartCount(a)) + (PartCount(a) == 1 ? " piece" : " pieces") + " and " + b.name + " " +
+               std::to_string(PartCount(b)) + ", so there are " + std::to_string(pieces) + " pairs of pieces; " +
+               (tested == 0 ? "no two boxes overlap, so no pair is tested."
+                            : std::to_string(tested) + (tested == 1 ? " has" : " have") +
+                                  " overlapping boxes: " + list + ". Only " + (tested == 1 ? "it is" : "these are") +
+                                  " tested; pieces whose boxes are apart cannot touch.");
+    }
+    if (step <= tested)
+    {
+        const PiecePairTest& t = study.tested[static_cast<size_t>(step - 1)];
+        const std::string pair = PieceName(a, t.i) + " against " + PieceName(b, t.j);
+        const Manifold& m = t.manifold;
+        if (!m.overlap)
+        {
+            return header + pair + ", two convex pieces tested as any convex pair: apart, with a gap of at least " +
+                   FormatNumber(m.gap) + " along " + Point(m.normal) + ".";
+        }
+        std::string text = header + pair + ", two convex pieces tested as any convex pair: they overlap by " +
+                           FormatNumber(m.depth) + " along " + Point(m.normal) + ", from " + a.name + " to " + b.name +
+                           ".";
+        if (t.seam)
+        {
+            const bool circle =
+                PartShape(a, t.i).type == ShapeType::Circle || PartShape(b, t.j).type == ShapeType::Circle;
+            text += " But that push points through a seam (dashed), where the body goes on past the piece: a ghost "
+                    "collision. " +
+                    std::string(circle ? "The pair is left out, unless every overlapping pair is."
+                                       : "The pair is tested again on the axes of the pieces' outline edges alone.");
+        }
+        return text;
+    }
+    const ConcaveManifold& merged = study.merged;
+    if (!merged.manifold.overlap)
+    {
+        return header + "the verdict. No pair of pieces overlaps, so " + a.name + " and " + b.name +
+               " do not overlap: the least gap is at least " + FormatNumber(merged.manifold.gap) + " along " +
+               Point(merged.manifold.normal) + ".";
+    }
+    const int ia = std::max(0, merged.pieceA);
+    const int jb = std::max(0, merged.pieceB);
+    return header + "the verdict. " + std::to_string(merged.pairsOverlap) + " of the " + std::to_string(tested) +
+           " pairs tested overlap; the deepest left after the seam rule, " + PieceName(a, ia) + " with " +
+           PieceName(b, jb) + ", decides: " + a.name + " and " + b.name + " overlap by " +
+           FormatNumber(merged.manifold.depth) + " along " + Point(merged.manifold.normal) + ", with " +
+           std::to_string(merged.manifold.contactCount) +
+           (merged.manifold.contactCount == 1 ? " contact" : " contacts") +
+           ". The depths of the pairs are never added: moving " + b.name +
+           " by the deciding depth clears that pair, "
+           "and a sum would push a body lying across a seam twice.";
+}
+
+int PieceStepCount(const Scene& scene, const PairStudy& study)
+{
+    if (study.bodyA < 0 || study.bodyB < 0)
+    {
+        return 1;
+    }
+    return static_cast<int>(StudyPieces(scene.bodies[static_cast<size_t>(study.bodyA)],
+                                        scene.bodies[static_cast<size_t>(study.bodyB)])
+                                .tested.size()) +
+           2;
+}
+
+void PaintPieceSteps(Canvas& canvas, const Scene& scene, const PairStudy& pair, const Figure& figure)
+{
+    const Body& a = scene.bodies[static_cast<size_t>(pair.bodyA)];
+    const Body& b = scene.bodies[static_cast<size_t>(pair.bodyB)];
+    const PieceStudy study = StudyPieces(a, b);
+    const int tested = static_cast<int>(study.tested.size());
+    const int step = std::clamp(figure.step, 0, tested + 1);
+    const float width = static_cast<float>(figure.view.width);
+    const float height = static_cast<float>(figure.view.height);
+
+    canvas.BeginGroup("background");
+    canvas.FillRect({0.0f, 0.0f}, {width, height}, palette::kBackground);
+    // One band for every step, as high as the longest step's text needs: stepping does not move the picture.
+    int lines = 0;
+    for (int k = 0; k <= tested + 1; ++k)
+    {
+        lines = std::max(lines, CaptionBandLines(canvas, figure.caption, DescribePieceStep(a, b, study, k), width));
+    }
+    const float top = (figure.layers & kLayerCaption)
+                          ? DrawCaptionBand(canvas, figure.caption, DescribePieceStep(a, b, study, step), width, lines)
+                          : 0.0f;
+    LabelPlacer labels(canvas, width, height);
+    labels.ReserveBand({0.0f, 0.0f, width, top});
+
+    Vec2 low{INFINITY, INFINITY};
+    Vec2 high{-INFINITY, -INFINITY};
+    for (const std::vector<PieceBox>* boxes : {&study.boxesA, &study.boxesB})
+    {
+        for (const PieceBox& box : *boxes)
+        {
+            low = {std::min(low.x, box.min.x), std::min(low.y, box.min.y)};
+            high = {std::max(high.x, box.max.x), std::max(high.y, box.max.y)};
+        }
+    }
+    const ScreenRect rect{0.0f, top, width, height};
+    const View view = FramePanel(rect, low, high, figure.view.width, figure.view.height, kMargin).view;
+
+    // Which pieces this step is about: a tested pair's two, the deciding pair at the verdict, all at the broadphase.
+    int focusA = -1;
+    int focusB = -1;
+    if (step >= 1 && step <= tested)
+    {
+        focusA = study.tested[static_cast<size_t>(step - 1)].i;
+        focusB = study.tested[static_cast<size_t>(step - 1)].j;
+    }
+    else if (step == tested + 1 && study.merged.manifold.overlap)
+    {
+        focusA = std::max(0, study.merged.pieceA);
+        focusB = std::max(0, study.merged.pieceB);
+    }
+    canvas.BeginGroup("pieces");
+    for (int side = 0; side < 2; ++side)
+    {
+        const Body& body = side == 0 ? a : b;
+        const int focus = side == 0 ? focusA : focusB;
+        const Color color = side == 0 ? palette::kShapeA : palette::kShapeB;
+        const Transform xf = body.Xf();
+        for (int i = 0; i < PartCount(body); ++i)
+        {
+            const float fill = focusA < 0 ? 0.3f : (i == focus ? 0.45f : 0.08f);
+            const Shape& shape = PartShape(body, i);
+            std::vector<ScreenPoint> points = ShapeOutline(view, shape, xf);
+            canvas.FillConvex(points.data(), static_cast<int>(points.size()), WithAlpha(color, fill));
+            if (shape.type == ShapeType::Polygon)
+            {
+                for (int e = 0; e < shape.polygon.Count(); ++e)
+                {
+                    const ScreenPoint p = ToScreen(view, TransformPoint(xf, shape.polygon.Vertices()[e]));
+                    const ScreenPoint q =
+                        ToScreen(view, TransformPoint(xf, shape.polygon.Vertices()[(e + 1) % shape.polygon.Count()]));
+                    const bool seam =
+                        body.IsConcave() && body.concave.parts[static_cast<size_t>(i)].internal[static_cast<size_t>(e)];
+                    if (seam)
+                    {
+                        DashedSegment(canvas, p, q, WithAlpha(color, 0.8f), 1.2f, rect, 5.0f, 4.0f);
+                    }
+                    else
+                    {
+                        canvas.Segment(p, q, side == 0 ? color : palette::kShapeBInk, 2.0f);
+                    }
+                }
+            }
+            else
+            {
+                canvas.Polyline(points.data(), static_cast<int>(points.size()), true, palette::kShapeBInk, 2.0f);
+            }
+            labels.Place(ToScreen(view, PartMiddle(body, i)), PieceName(body, i), TextStyle::Heading,
+                         side == 0 ? palette::kShapeA : palette::kShapeBInk, 0.0f, 0.0f, 0.0f, LabelRank::Name);
+        }
+    }
+    // The boxes: every piece's at the broadphase, the pair's own at a pair's step.
+    canvas.BeginGroup("boxes");
+    for (int side = 0; side < 2; ++side)
+    {
+        const std::vector<PieceBox>& boxes = side == 0 ? study.boxesA : study.boxesB;
+        for (size_t i = 0; i < boxes.size(); ++i)
+        {
+            const int focus = side == 0 ? focusA : focusB;
+            if (!(step == 0 || (step <= tested && static_cast<int>(i) == focus)))
+            {
+                continue;
+            }
+            const ScreenPoint p = ToScreen(view, boxes[i].min);
+            const ScreenPoint q = ToScreen(view, boxes[i].max);
+            DashedOutline(canvas, {{p.x, p.y}, {q.x, p.y}, {q.x, q.y}, {p.x, q.y}},
+                          side == 0 ? palette::kShapeA : palette::kShapeBInk, 1.0f, rect);
+        }
+    }
+    // A push: at a pair's step that pair's own, at the verdict the merged one; from the middle of B's piece.
+    const Manifold* push = nullptr;
+    bool seam = false;
+    if (step >= 1 && step <= tested)
+    {
+        push = &study.tested[static_cast<size_t>(step - 1)].manifold;
+        seam = study.tested[static_cast<size_t>(step - 1)].seam;
+    }
+    else if (step == tested + 1)
+    {
+        push = &study.merged.manifold;
+    }
+    if (push != nullptr && push->overlap && focusB >= 0)
+    {
+        canvas.BeginGroup("push");
+        const Vec2 from = PartMiddle(b, focusB);
+        const ScreenPoint s = ToScreen(view, from);
+        const ScreenPoint e = ToScreen(view, from + push->depth * push->normal);
+        const float length = std::hypot(e.x - s.x, e.y - s.y);
+        // A push too short to see is drawn 24 pixels long: its direction is what the step is about.
+        const ScreenPoint tip = length >= 24.0f ? e
+                                                : ScreenPoint{s.x + 24.0f * static_cast<float>(push->normal.x),
+                                                              s.y - 24.0f * static_cast<float>(push->normal.y)};
+        labels.Reserve(Arrow(canvas, s, tip, seam ? palette::kMuted : palette::kResult, 2.0f));
+        labels.ReserveLine(s, tip, 2.0f);
+        labels.Place(tip, (seam ? "through a seam: " : "") + FormatNumber(push->depth), TextStyle::Label,
+                     seam ? palette::kMuted : palette::kResult, tip.x - s.x, tip.y - s.y, 6.0f, LabelRank::Verdict);
+        if (step == tested + 1)
+        {
+            for (int k = 0; k < push->contactCount; ++k)
+            {
+                const ScreenPoint c = ToScreen(view, push->contacts[k].point);
+                canvas.FillCircle(c, 4.5f, palette::kResult);
+                labels.Reserve({c.x - 5.0f, c.y - 5.0f, c.x + 5.0f, c.y + 5.0f});
+            }
+        }
+    }
+    labels.Flush(palette::kBackground);
+}
+
+} // namespace satviz
