@@ -1257,33 +1257,14 @@ void Stepper::CorrectPositions()
             return;
         }
         const auto pose = [&](int i) { return PoseAt(i, c[i]); };
-        // Beside a static body, once Collide finds them overlapping, the axis is the guard's normal, fixed as the
-        // static body is: the moving body's deepest point along it against the static body's extent. Measured so,
-        // a body pushed past the middle of a thin wall is still pushed back the way it came; Collide's own normal
-        // would push it on through.
-        // A concave body's part in the overlap is the piece that decided it: its vertices bound the push below.
-        const ConcaveManifold cm = detail::CollidePair(bodies[a], pose(a), bodies[b], pose(b));
-        const Manifold& m = cm.manifold;
-        const int pieceA = cm.pieceA, pieceB = cm.pieceB;
-        if (!m.overlap)
-        {
-            return;
-        }
-        const int fixedBody = bodies[a].type == BodyType::Static ? a : (bodies[b].type == BodyType::Static ? b : -1);
-        if (fixedBody >= 0)
-        {
-            const int moving = fixedBody == a ? b : a;
-            // The axis turns with the body whose face it is: fixed if the static body's, as found now if the moving
-            // body's (a plank's face turning on a peg).
-            const int owner = g.normalBody == 1 ? b : a;
-            // A body that took a hit may be far from where the guard was found: its overlap is the one Collide
-            // finds now, shallow (the sweep left it touching), along Collide's normal.
-            const Vec2 axis = owner == fixedBody && !tookHit ? g.normal : m.normal;
-            const Vec2 n = fixedBody == a ? axis : -1.0 * axis; // from the static body to the moving one
+        // Along n (from the static body to the moving one): the static body's (piece's) extent, `top`, and the
+        // moving one's deepest point and its height, `bottom`.
+        const auto extents = [&](int fixedBody, int fixedPiece, int moving, int movingPiece, Vec2 n, double& top,
+                                 double& bottom, Vec2& deepest) {
             const Transform xs = pose(fixedBody), xm = pose(moving);
-            const Shape& shapeS = detail::PieceShape(bodies[fixedBody], fixedBody == a ? pieceA : pieceB);
-            const Shape& shapeM = detail::PieceShape(bodies[moving], moving == a ? pieceA : pieceB);
-            double top = -INFINITY;
+            const Shape& shapeS = detail::PieceShape(bodies[fixedBody], fixedPiece);
+            const Shape& shapeM = detail::PieceShape(bodies[moving], movingPiece);
+            top = -INFINITY;
             if (shapeS.type == ShapeType::Circle)
             {
                 top = Dot(n, TransformPoint(xs, shapeS.circle.center)) + shapeS.circle.radius;
@@ -1295,8 +1276,7 @@ void Stepper::CorrectPositions()
                     top = std::max(top, Dot(n, TransformPoint(xs, v)));
                 }
             }
-            Vec2 deepest{};
-            double bottom = INFINITY;
+            bottom = INFINITY;
             if (shapeM.type == ShapeType::Circle)
             {
                 deepest = TransformPoint(xm, shapeM.circle.center) - shapeM.circle.radius * n;
@@ -1314,6 +1294,50 @@ void Stepper::CorrectPositions()
                     }
                 }
             }
+        };
+        const int fixedBody = bodies[a].type == BodyType::Static ? a : (bodies[b].type == BodyType::Static ? b : -1);
+        // The last lift of a convex body along a static body's own face, fixed: when the body is within the slop
+        // of it along that face's normal there is nothing to lift, whatever Collide would say, so Collide is not
+        // asked (a resting pile's contacts with the floor, every step).
+        if (straight && fixedBody >= 0 && !tookHit && (g.normalBody == 1 ? b : a) == fixedBody &&
+            !detail::AnyConcave(bodies[a], bodies[b]))
+        {
+            const int moving = fixedBody == a ? b : a;
+            const Vec2 n = fixedBody == a ? g.normal : -1.0 * g.normal;
+            double top = 0.0, bottom = 0.0;
+            Vec2 deepest{};
+            extents(fixedBody, -1, moving, -1, n, top, bottom, deepest);
+            if (bottom - top + settings.linearSlop >= 0.0)
+            {
+                return;
+            }
+        }
+        // Beside a static body, once Collide finds them overlapping, the axis is the guard's normal, fixed as the
+        // static body is: the moving body's deepest point along it against the static body's extent. Measured so,
+        // a body pushed past the middle of a thin wall is still pushed back the way it came; Collide's own normal
+        // would push it on through.
+        // A concave body's part in the overlap is the piece that decided it: its vertices bound the push below.
+        const ConcaveManifold cm = detail::CollidePair(bodies[a], pose(a), bodies[b], pose(b));
+        const Manifold& m = cm.manifold;
+        const int pieceA = cm.pieceA, pieceB = cm.pieceB;
+        if (!m.overlap)
+        {
+            return;
+        }
+        if (fixedBody >= 0)
+        {
+            const int moving = fixedBody == a ? b : a;
+            // The axis turns with the body whose face it is: fixed if the static body's, as found now if the moving
+            // body's (a plank's face turning on a peg).
+            const int owner = g.normalBody == 1 ? b : a;
+            // A body that took a hit may be far from where the guard was found: its overlap is the one Collide
+            // finds now, shallow (the sweep left it touching), along Collide's normal.
+            const Vec2 axis = owner == fixedBody && !tookHit ? g.normal : m.normal;
+            const Vec2 n = fixedBody == a ? axis : -1.0 * axis; // from the static body to the moving one
+            double top = 0.0, bottom = 0.0;
+            Vec2 deepest{};
+            extents(fixedBody, fixedBody == a ? pieceA : pieceB, moving, moving == a ? pieceA : pieceB, n, top, bottom,
+                    deepest);
             const Vec2 normal = fixedBody == a ? n : -1.0 * n;
             if (straight)
             {
