@@ -19,7 +19,8 @@ namespace satviz::detail
 /// Eight doubles in one AVX-512 register.
 struct Lanes8
 {
-    __m512d v; ///< the lanes
+    static constexpr int kCount = 8; ///< lanes
+    __m512d v;                       ///< the lanes
 
     /// Every lane x.
     [[gnu::target("avx512f")]] static Lanes8 Fill(double x) { return {_mm512_set1_pd(x)}; }
