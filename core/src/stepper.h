@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// satviz: the world's step, stage by stage: the state its stages share (internal).
+#pragma once
+
+#include "contact_solver.h"
+
+#include <satviz/world.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace satviz::detail
+{
+
+/// The state of one step, shared by its stages. Step (world.cpp) runs them in this order:
+///  1. FindContacts (world_contacts.cpp): bounds, broadphase, narrowphase, warm starting, waking. A pair that a
+///     bullet would outrun (LeftToSweep) keeps its points only as a guard for the position passes.
+///  2. SolveVelocities (world_velocities.cpp): gravity, the contacts ordered top down (OrderTopDown), the velocity
+///     passes, and LimitEnergyGain for a group of bodies the passes left with more energy than it had.
+///  3. StoreImpulses (world_velocities.cpp): the impulses go back to the world's contacts for the next warm start.
+///  4. Move (world_positions.cpp): positions, with the hits of fast bodies in time order (TimeOfImpactStage).
+///  5. CorrectPositions (world_positions.cpp): guards for where the bodies went (GuardAfterMove), then the position
+///     passes remove the overlap left.
+///  6. Sleep (world_sleep.cpp): islands of touching dynamic bodies that have rested long enough sleep.
+struct Stepper
+{
+    World& world;
+    double dt;
+    const WorldSettings& settings;
+    std::vector<SolverBody> solverBodies;
+    std::vector<SolverContact> solverContacts;
+    std::vector<SolverContact> guards; // the points of swept pairs: for the position passes only
+    std::vector<int> solveOrder;       // solverContacts' indices in the order the passes visit them, top down
+    std::vector<double> heights;       // per solver contact: how high its first point lies against gravity
+    std::vector<double> energyBefore;  // per body, after gravity and before the contacts
+    std::vector<Transform> xfs;        // transforms at the start of the step (one sine and cosine per body)
+    std::vector<Vec2> centers;         // centres of mass at the start of the step
+    std::vector<uint8_t> hit;          // per body: took a time-ordered hit in the step (Move)
+    std::vector<uint8_t> bullets;      // per body: moves beyond its reach or turns fast (FindContacts)
+    std::vector<double> bodyReach;     // per body: how far FindContacts looked beyond its box
+    std::vector<Rot> rotations;        // per body: MakeRot of its angle after Move
+
+    /// The step of `world` by `step` seconds, with the world's settings.
+    Stepper(World& w, double step) : world(w), dt(step), settings(w.settings) {}
+
+    /// Stage 1: bounds, broadphase, narrowphase, warm starting, waking.
+    void FindContacts();
+    /// Whether the pair (i, j), still apart, is left to the sweep instead of given a speculative contact.
+    bool LeftToSweep(int i, int j) const;
+    /// Stage 2: gravity and the velocity passes.
+    void SolveVelocities();
+    /// More passes, then smaller impulses, for a group of bodies the velocity passes left with more kinetic energy
+    /// than it had; `unsolved` holds the velocities before the passes.
+    template <typename SolvePass>
+    void LimitEnergyGain(const std::vector<SolverBody>& unsolved, const SolvePass& solvePass);
+    /// Stage 3: the accumulated impulses go back to the world's contacts for the next step's warm start.
+    void StoreImpulses();
+    /// Stage 4: positions, with the hits of fast bodies in time order.
+    void Move();
+    /// Guards with the static bodies near the path of a body that moved beyond the reach it was given; c and
+    /// turn: each body's centre of mass after the move, and its turn since the start of the step.
+    void GuardAfterMove(const std::vector<Vec2>& c, const std::vector<Rot>& turn);
+    /// Stage 5: overlap removed by moving the positions, not the velocities.
+    void CorrectPositions();
+    /// Stage 6: islands of touching dynamic bodies sleep together once all have rested long enough.
+    void Sleep();
+    /// The order of the velocity and position passes (solveOrder): top down along gravity, ties in the order found.
+    void OrderTopDown();
+};
+
+/// Union-find over body indices: the root of i's set, halving the path on the way (for the groups of
+/// LimitEnergyGain and the islands of sleeping).
+inline int FindRoot(std::vector<int>& parent, int i)
+{
+    while (parent[i] != i)
+    {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+} // namespace satviz::detail

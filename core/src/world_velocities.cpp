@@ -1,0 +1,403 @@
+// SPDX-License-Identifier: MIT
+// satviz: the step's velocity stages: the order of the passes, the velocity passes, the limit on the energy they
+// gain, and the impulses kept for the next step's warm start.
+
+#include "stepper.h"
+#include "world_lookup.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace satviz::detail
+{
+
+// Stage 2: gravity and the velocity passes (with the restitution targets taken before gravity).
+// The order of the velocity and position passes: the contacts from the highest to the lowest along gravity, ties
+// in the order found (stable, so deterministic); without gravity, the order found. Gauss-Seidel passes carry an
+// impulse to the contacts after it in the same pass: top down, the weight of a pile's upper rows reaches its lower
+// rows within one pass instead of one row per pass, so the same number of passes leaves a pile less sunk than the
+// order found (rows from the bottom up) does.
+void Stepper::OrderTopDown()
+{
+    const int m = static_cast<int>(solverContacts.size());
+    solveOrder.resize(static_cast<size_t>(m));
+    for (int k = 0; k < m; ++k)
+    {
+        solveOrder[static_cast<size_t>(k)] = k;
+    }
+    const double g = Length(settings.gravity);
+    if (!(g > 0.0))
+    {
+        return;
+    }
+    const Vec2 up = (-1.0 / g) * settings.gravity;
+    heights.resize(static_cast<size_t>(m));
+    for (int k = 0; k < m; ++k)
+    {
+        const SolverContact& c = solverContacts[static_cast<size_t>(k)];
+        heights[static_cast<size_t>(k)] = Dot(centers[c.a] + c.points[0].rA, up);
+    }
+    std::stable_sort(solveOrder.begin(), solveOrder.end(), [this](int x, int y) {
+        return heights[static_cast<size_t>(x)] > heights[static_cast<size_t>(y)];
+    });
+}
+
+void Stepper::SolveVelocities()
+{
+    std::vector<RigidBody>& bodies = world.bodies;
+    const int n = static_cast<int>(bodies.size());
+    solverBodies.assign(n, SolverBody{});
+    centers.resize(n);
+    for (int i = 0; i < n; ++i)
+    {
+        const RigidBody& body = bodies[i];
+        centers[i] = TransformPoint(xfs[i], body.localCenter);
+        if (IsAwakeDynamic(body))
+        {
+            SolverBody& s = solverBodies[i];
+            s.v = body.velocity;
+            s.w = body.angularVelocity;
+            s.invMass = body.invMass;
+            s.invInertia = body.invInertia;
+        }
+    }
+
+    ContactSolveTrace* trace = world.trace;
+    solverContacts.clear();
+    solverContacts.reserve(world.contacts.size());
+    guards.clear();
+    for (size_t k = 0; k < world.contacts.size(); ++k)
+    {
+        const WorldContact& wc = world.contacts[k];
+        if (!IsAwakeDynamic(bodies[wc.a]) && !IsAwakeDynamic(bodies[wc.b]))
+        {
+            continue;
+        }
+        SolverContact c;
+        c.a = wc.a;
+        c.b = wc.b;
+        c.normal = wc.normal;
+        c.normalBody = wc.normalBody;
+        c.count = wc.pointCount;
+        c.material = wc.material;
+        for (int i = 0; i < c.count; ++i)
+        {
+            c.points[i].rA = wc.points[i].point - centers[wc.a];
+            c.points[i].rB = wc.points[i].point - centers[wc.b];
+            c.points[i].separation = wc.points[i].separation;
+        }
+        if (wc.guard)
+        {
+            guards.push_back(c);
+            continue;
+        }
+        double approach[2] = {0.0, 0.0};
+        for (int i = 0; i < c.count; ++i)
+        {
+            detail::SolverPoint& p = c.points[i];
+            p.gapSpeed = std::max(0.0, p.separation) / dt;
+            p.normalImpulse = wc.points[i].normalImpulse;
+            p.tangentImpulse = wc.points[i].tangentImpulse;
+            approach[i] = Dot(detail::RelativeVelocity(solverBodies[c.a], solverBodies[c.b], p.rA, p.rB), c.normal);
+        }
+        // How fast gravity closes the pair along the normal: it pulls only the awake dynamic bodies.
+        const Vec2 gravityA = IsAwakeDynamic(bodies[c.a]) ? settings.gravity : Vec2{};
+        const Vec2 gravityB = IsAwakeDynamic(bodies[c.b]) ? settings.gravity : Vec2{};
+        const double pull = std::max(0.0, -Dot(gravityB - gravityA, c.normal));
+        detail::PrepareContact(c, solverBodies[c.a], solverBodies[c.b], approach, pull, dt,
+                               settings.restitutionThreshold);
+        if (trace != nullptr &&
+            ((trace->bodyA == c.a && trace->bodyB == c.b) || (trace->bodyA == c.b && trace->bodyB == c.a)))
+        {
+            c.traced = true;
+            trace->found = true;
+            trace->normal = c.normal;
+            trace->pointCount = c.count;
+            trace->restitution = c.material.restitution;
+            trace->blockSolved = c.block;
+            trace->velocityBefore[0] = solverBodies[c.a].v;
+            trace->velocityBefore[1] = solverBodies[c.b].v;
+            trace->spinBefore[0] = solverBodies[c.a].w;
+            trace->spinBefore[1] = solverBodies[c.b].w;
+            for (int i = 0; i < c.count; ++i)
+            {
+                trace->approachSpeed[i] = approach[i];
+                trace->gapSpeed[i] = c.points[i].gapSpeed;
+                trace->bounceSpeed[i] = c.points[i].bounce;
+                trace->restitutionFactor[i] = c.points[i].restitutionFactor;
+                trace->normalMass[i] = c.points[i].normalMass;
+                trace->tangentMass[i] = c.points[i].tangentMass;
+                trace->warmNormal[i] = c.points[i].normalImpulse;
+                trace->warmTangent[i] = c.points[i].tangentImpulse;
+            }
+        }
+        solverContacts.push_back(c);
+    }
+
+    for (int i = 0; i < n; ++i)
+    {
+        if (IsAwakeDynamic(bodies[i]))
+        {
+            solverBodies[i].v = solverBodies[i].v + dt * settings.gravity;
+        }
+    }
+    energyBefore.resize(n);
+    for (int i = 0; i < n; ++i)
+    {
+        energyBefore[i] = detail::Energy(solverBodies[i]);
+    }
+    const std::vector<SolverBody> unsolved = solverBodies;
+    for (SolverContact& c : solverContacts)
+    {
+        detail::WarmStart(c, solverBodies[c.a], solverBodies[c.b]);
+    }
+    OrderTopDown();
+    detail::NullSolveRecorder quiet;
+    detail::TraceSolveRecorder loud{trace};
+    const auto solvePass = [&](const std::vector<int>& order, int pass) {
+        for (const int k : order)
+        {
+            SolverContact& c = solverContacts[static_cast<size_t>(k)];
+            if (c.traced)
+            {
+                detail::SolveContactVelocity(c, solverBodies[c.a], solverBodies[c.b], pass, loud);
+            }
+            else
+            {
+                detail::SolveContactVelocity(c, solverBodies[c.a], solverBodies[c.b], pass, quiet);
+            }
+        }
+    };
+    for (int pass = 0; pass < settings.velocityIterations; ++pass)
+    {
+        solvePass(solveOrder, pass);
+    }
+    LimitEnergyGain(unsolved, solvePass);
+    detail::ApplyRestitution(solverContacts, solverBodies, energyBefore, settings.velocityIterations);
+    for (const SolverContact& c : solverContacts)
+    {
+        if (c.traced)
+        {
+            trace->restitutionImpulse[0] = c.points[0].restitutionImpulse;
+            trace->restitutionImpulse[1] = c.points[1].restitutionImpulse;
+            trace->velocityAfter[0] = solverBodies[c.a].v;
+            trace->velocityAfter[1] = solverBodies[c.b].v;
+            trace->spinAfter[0] = solverBodies[c.a].w;
+            trace->spinAfter[1] = solverBodies[c.b].w;
+        }
+    }
+}
+
+// Warm starting guesses this step's impulses from the last step's. From zero impulses, each velocity pass over
+// inelastic contacts only takes kinetic energy away (projected Gauss-Seidel descends the energy, less what the
+// speculative gaps allow); from the guess, passes that have not converged (a light body wedged under a heavy,
+// spinning one) can leave more energy than the bodies had before the contacts acted. A group of bodies joined by
+// contacts that ends the passes with more kinetic energy than it had, beyond the drift the slop allows, gets more
+// passes (as many again at most) while it still gains; if it still does, every impulse of the group is scaled
+// down, by the same factor, until its energy is back within the allowance. Momentum is kept; an approach the
+// smaller impulses leave is the sweep's and the next step's to stop.
+template <typename SolvePass>
+void Stepper::LimitEnergyGain(const std::vector<SolverBody>& unsolved, const SolvePass& solvePass)
+{
+    const int n = static_cast<int>(solverBodies.size());
+    if (solverContacts.empty())
+    {
+        return;
+    }
+    const auto moves = [&](int i) { return solverBodies[i].invMass > 0.0 || solverBodies[i].invInertia > 0.0; };
+    // What a group may gain: the energy of each body moving at the slop per step, the speed at which the contacts
+    // let a resting body drift within the slop.
+    const double drift = 0.5 * (2.0 * settings.linearSlop / dt) * (2.0 * settings.linearSlop / dt);
+    const auto allowance = [&](int i) {
+        return energyBefore[i] + (solverBodies[i].invMass > 0.0 ? drift / solverBodies[i].invMass : 0.0);
+    };
+    // A group gains only if one of its bodies does: when none does, there is nothing to look at (the usual case).
+    bool anyBody = false;
+    for (int i = 0; i < n && !anyBody; ++i)
+    {
+        anyBody = moves(i) && detail::Energy(solverBodies[i]) > allowance(i);
+    }
+    if (!anyBody)
+    {
+        return;
+    }
+    std::vector<int> parent(n);
+    for (int i = 0; i < n; ++i)
+    {
+        parent[i] = i;
+    }
+    for (const SolverContact& c : solverContacts)
+    {
+        if (moves(c.a) && moves(c.b))
+        {
+            const int ra = FindRoot(parent, c.a), rb = FindRoot(parent, c.b);
+            parent[ra < rb ? rb : ra] = ra < rb ? ra : rb;
+        }
+    }
+    std::vector<double> before(n, 0.0), after(n, 0.0);
+    for (int i = 0; i < n; ++i)
+    {
+        if (moves(i))
+        {
+            const int r = FindRoot(parent, i);
+            before[r] += allowance(i);
+            after[r] += detail::Energy(solverBodies[i]);
+        }
+    }
+    std::vector<uint8_t> gained(n, 0);
+    bool any = false;
+    for (int i = 0; i < n; ++i)
+    {
+        if (moves(i) && FindRoot(parent, i) == i && after[i] > before[i])
+        {
+            gained[i] = 1;
+            any = true;
+        }
+    }
+    if (!any)
+    {
+        return;
+    }
+    // More passes over the groups that gained, as many again at most, while they still gain: the passes converge
+    // towards impulses that take energy away.
+    std::vector<int> order;
+    for (const int k : solveOrder)
+    {
+        const SolverContact& c = solverContacts[static_cast<size_t>(k)];
+        if (gained[FindRoot(parent, moves(c.a) ? c.a : c.b)])
+        {
+            order.push_back(k);
+            if (c.traced)
+            {
+                world.trace->energyLimited = true;
+            }
+        }
+    }
+    for (int pass = 0; pass < settings.velocityIterations && any; ++pass)
+    {
+        solvePass(order, settings.velocityIterations + pass);
+        std::fill(after.begin(), after.end(), 0.0);
+        for (int i = 0; i < n; ++i)
+        {
+            if (moves(i) && gained[FindRoot(parent, i)])
+            {
+                after[FindRoot(parent, i)] += detail::Energy(solverBodies[i]);
+            }
+        }
+        any = false;
+        for (int r = 0; r < n; ++r)
+        {
+            if (gained[r])
+            {
+                gained[r] = after[r] > before[r] ? 1 : 0;
+                any = any || gained[r];
+            }
+        }
+        // Groups that no longer gain keep their passes; the next pass is only over those that still do.
+        order.erase(std::remove_if(order.begin(), order.end(),
+                                   [&](int k) {
+                                       const SolverContact& c = solverContacts[static_cast<size_t>(k)];
+                                       return !gained[FindRoot(parent, moves(c.a) ? c.a : c.b)];
+                                   }),
+                    order.end());
+    }
+    if (!any)
+    {
+        return;
+    }
+    // Per group: the energy as a function of the scale s of the contacts' impulses, E(s) = e0 + g s + h s^2, with
+    // e0 the energy before they acted; s = 1 is the solve as it stands. The largest s in [0, 1] with E(s) within
+    // the allowance scales every impulse of the group (momentum is kept, pair by pair).
+    std::vector<double> e0(n, 0.0), g(n, 0.0), h(n, 0.0);
+    for (int i = 0; i < n; ++i)
+    {
+        if (!moves(i) || !gained[FindRoot(parent, i)])
+        {
+            continue;
+        }
+        const int r = FindRoot(parent, i);
+        const SolverBody& u = unsolved[i];
+        const SolverBody& v = solverBodies[i];
+        const double mass = u.invMass > 0.0 ? 1.0 / u.invMass : 0.0;
+        const double inertia = u.invInertia > 0.0 ? 1.0 / u.invInertia : 0.0;
+        const Vec2 dv = v.v - u.v;
+        const double dw = v.w - u.w;
+        e0[r] += detail::Energy(u);
+        g[r] += mass * Dot(u.v, dv) + inertia * u.w * dw;
+        h[r] += 0.5 * (mass * Dot(dv, dv) + inertia * dw * dw);
+    }
+    std::vector<double> scale(n, 1.0);
+    for (int r = 0; r < n; ++r)
+    {
+        if (!gained[r])
+        {
+            continue;
+        }
+        // E(s) = before[r] at the largest root; E(0) = e0 <= before, E(1) > before, so the root lies in (0, 1).
+        const double c = e0[r] - before[r];
+        double root = 0.0;
+        if (h[r] > 0.0)
+        {
+            const double disc = std::max(0.0, g[r] * g[r] - 4.0 * h[r] * c);
+            root = (-g[r] + std::sqrt(disc)) / (2.0 * h[r]);
+        }
+        else if (g[r] > 0.0)
+        {
+            root = -c / g[r];
+        }
+        scale[r] = std::max(0.0, std::min(1.0, root));
+    }
+    for (int i = 0; i < n; ++i)
+    {
+        if (moves(i) && gained[FindRoot(parent, i)])
+        {
+            const double f = scale[FindRoot(parent, i)];
+            const SolverBody& u = unsolved[i];
+            SolverBody& v = solverBodies[i];
+            v.v = u.v + f * (v.v - u.v);
+            v.w = u.w + f * (v.w - u.w);
+        }
+    }
+    for (SolverContact& c : solverContacts)
+    {
+        const int body = moves(c.a) ? c.a : c.b;
+        if (!gained[FindRoot(parent, body)])
+        {
+            continue;
+        }
+        const double f = scale[FindRoot(parent, body)];
+        for (int i = 0; i < c.count; ++i)
+        {
+            c.points[i].normalImpulse *= f;
+            c.points[i].tangentImpulse *= f;
+        }
+        if (c.traced)
+        {
+            world.trace->impulseScale = f;
+        }
+    }
+}
+
+// The accumulated impulses go back to the world's contacts for the next step's warm start.
+void Stepper::StoreImpulses()
+{
+    size_t k = 0;
+    for (const SolverContact& c : solverContacts)
+    {
+        while (world.contacts[k].a != c.a || world.contacts[k].b != c.b)
+        {
+            ++k;
+        }
+        WorldContact& wc = world.contacts[k];
+        for (int i = 0; i < c.count; ++i)
+        {
+            // A bounce's own impulse is an impact, not a load the point will carry next step: only the compression
+            // part is warm started.
+            wc.points[i].normalImpulse = c.points[i].normalImpulse - c.points[i].restitutionImpulse;
+            wc.points[i].tangentImpulse = c.points[i].tangentImpulse;
+            wc.points[i].stuck = c.points[i].stuck;
+        }
+    }
+}
+
+} // namespace satviz::detail
