@@ -27,4 +27,11 @@ inline const WorldContact* FindContact(const std::vector<WorldContact>& contacts
     return it != contacts.end() && it->a == a && it->b == b ? &*it : nullptr;
 }
 
+/// The step's contact of the pair (a, b), a < b, if it has one (a guard is not a contact).
+inline const WorldContact* ContactOf(const std::vector<WorldContact>& contacts, int a, int b)
+{
+    const WorldContact* contact = FindContact(contacts, a, b);
+    return contact != nullptr && !contact->guard ? contact : nullptr;
+}
+
 } // namespace satviz::detail
