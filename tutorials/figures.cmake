@@ -60,6 +60,8 @@ set(SATVIZ_FIGURE_SCENES
   l17_spinner_sampled
   l17_spinner_after
   l17_skips
+  l18_hull
+  l18_decompose
   concave/decompose_flag
   concave/slice_u
   concave/slice_stops_inside
@@ -78,6 +80,10 @@ set(SATVIZ_STEP_SCENES
   l08_throw
   l10_ray_hit
   concave/pieces_l_and_box
+  l18_notch
+  l18_across
+  l18_seam
+  l18_plank
 )
 set(SATVIZ_FACE_STEP_SCENES
   overlapping_boxes
