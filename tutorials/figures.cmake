@@ -61,7 +61,7 @@ set(SATVIZ_FIGURE_SCENES
   l17_spinner_after
   l17_skips
   l18_hull
-  l18_decompose
+  concave/l18_decompose
   concave/decompose_flag
   concave/slice_u
   concave/slice_stops_inside
@@ -80,10 +80,10 @@ set(SATVIZ_STEP_SCENES
   l08_throw
   l10_ray_hit
   concave/pieces_l_and_box
-  l18_notch
-  l18_across
-  l18_seam
-  l18_plank
+  concave/l18_notch
+  concave/l18_across
+  concave/l18_seam
+  concave/l18_plank
 )
 set(SATVIZ_FACE_STEP_SCENES
   overlapping_boxes
