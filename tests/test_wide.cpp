@@ -3,7 +3,6 @@
 // the same bits for every query. A processor without them reports those cases skipped to ctest (support/skip.h).
 
 #include "sat/cpu_dispatch.h"
-#include "sat/face_query_dispatch.h"
 #include "sat/lanes.h"
 #include "sat/lanes2.h"
 #include "sat/select.h"
@@ -170,7 +169,7 @@ namespace
 // The kinds of code a query can run, each checked against the baseline instructions.
 enum class Kind
 {
-    Traced,  // the traced queries, which take the textbook loop, a face at a time, with a recorder
+    Traced,  // the traced queries, which take the baseline scans with a recorder
     Wide256, // 256-bit vectors, on a processor with AVX2
     Wide512, // 512-bit face loops on top of them, on a processor with AVX-512F
 };
@@ -243,58 +242,4 @@ TEST_CASE("512-bit face loops (AVX-512F) and baseline scans give the same bits",
         return;
     }
     CheckAgainstBaseline(Kind::Wide512);
-}
-
-namespace
-{
-
-// Whether two face queries agree to the bit: the same verdict, face and separation.
-bool SameQuery(const detail::FaceQuery<double>& a, const detail::FaceQuery<double>& b)
-{
-    return a.separated == b.separated && a.face == b.face && SameBits(a.separation, b.separation);
-}
-
-} // namespace
-
-TEST_CASE("Every face loop of a scanned polygon gives the textbook loop's face query to the bit", "[properties][wide]")
-{
-    // The plain scalar loop, a face at a time (TextbookFaces), is the reference: the loops in lanes that the queries
-    // run (the face-separation kernel in blocks of faces, the face loop with each face's vertices in lanes) must
-    // find the same verdict, face and separation, and Overlap's loop the same largest separation per vertex.
-    Rng rng(20261127);
-    detail::NullTracer tracer;
-    constexpr double kInfinity = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < 20000; ++i)
-    {
-        const int counts[] = {3, 4, 5, 7, 8, 9, 12, 16};
-        const RandomPair pair = ContactPair(rng, counts[rng.Int(0, 7)], static_cast<PairCategory>(rng.Int(0, 2)), 0.1);
-        const Polygon& a = pair.a.polygon;
-        const Polygon& b = pair.b.polygon;
-        const detail::IncidentPolygon<double> incB(b, pair.xfA, pair.xfB);
-        REQUIRE(incB.scan);
-        INFO("pair " << i << ", " << a.Count() << " and " << b.Count() << " vertices");
-        for (const bool second : {false, true})
-        {
-            REQUIRE(SameQuery(
-                detail::QueryFaces<true>(a, incB, 0, second, -kInfinity, tracer),
-                detail::TextbookFaces<true, false>(a, incB, 0, second, tracer, static_cast<double*>(nullptr))));
-            double inside[detail::IncidentPolygon<double>::kCapacity];
-            double insideReference[detail::IncidentPolygon<double>::kCapacity];
-            std::fill(inside, inside + incB.padded, -kInfinity);
-            std::fill(insideReference, insideReference + incB.padded, -kInfinity);
-            const detail::FaceQuery<double> overlap =
-                detail::QueryFaces<false, true>(a, incB, 0, second, 0.0, tracer, inside);
-            const detail::FaceQuery<double> reference =
-                detail::TextbookFaces<false, true>(a, incB, 0, second, tracer, insideReference);
-            REQUIRE(SameQuery(overlap, reference));
-            for (int j = 0; j < b.Count() && !reference.separated; ++j)
-            {
-                REQUIRE(SameBits(inside[j], insideReference[j]));
-            }
-            if (a.Count() <= 8 && b.Count() <= 8)
-            {
-                REQUIRE(detail::SmallFacesSeparate<double, detail::NullTracer>(a, incB, second) == reference.separated);
-            }
-        }
-    }
 }

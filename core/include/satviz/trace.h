@@ -78,10 +78,6 @@ enum class TraceExit
 
 /// The complete record of one query: every axis in the order tested, the contact clipping, and the result.
 /// Recorded in every build type. Filling it allocates; the untraced queries never do.
-/// Which code it shows: a traced query tests the faces of a polygon a face at a time, in the textbook's loop, and
-/// records each face where it tests it (a large polygon's faces are walked to, traced or not). Untraced, the same
-/// query takes the separations of blocks of faces at once, in vector lanes (four, or eight with AVX-512), and decides
-/// once per block; the separations, the axis that decides and the result are the same to the bit.
 template <typename S>
 struct TraceT
 {

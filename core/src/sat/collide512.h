@@ -2,14 +2,12 @@
 // satviz (private), machinery: Collide of two polygons of up to 8 vertices on 512-bit vectors (AVX-512F): the face
 // queries of both polygons, each with all its faces in one register of eight lanes against the other polygon's
 // vertices held in registers, then one branch for the verdict. Used only in code compiled for AVX-512 (entry.h:
-// RunWide512), where the processor has it (cpu_dispatch.h). The face-separation kernel (face_kernel.h) with eight
-// lanes: the same separations to the bit as the textbook loop, so the same manifold as the face loops of
-// polygon_polygon.h.
+// RunWide512), where the processor has it (cpu_dispatch.h). The same separations to the bit as SmallRefFaceQuery
+// (face_blocks.h), so the same manifold as the face loops of polygon_polygon.h.
 #pragma once
 
 #include "clip.h"
 #include "cpu_dispatch.h"
-#include "face_kernel.h"
 #include "face_query.h"
 #include "incident_polygon.h"
 #include "lanes8.h"
@@ -29,16 +27,27 @@ namespace satviz::detail
 #if SATVIZ_WIDE
 /// The separations of the faces of `ref` (at most 8, unit normals, one per lane) from the first N of the other
 /// polygon's vertices, mapped into ref's frame and held in registers (MapVertices512; N is its padded count, 4 or
-/// 8): the face-separation kernel's 8-lane instantiation (SmallSeparations), so the textbook loop's bits. The lanes
-/// past ref's last face and those of the `skip`ped faces hold -infinity, so that they take no part.
+/// 8): the products, sums and minimum of SmallRefSeparations, in the same order, so the same bits. The lanes past
+/// ref's last face and those of the `skip`ped faces hold -infinity, so that they take no part.
 template <int N>
 [[gnu::target("avx512f")]] Lanes8 FaceSeparations512(const PolygonT<double>& ref, const Lanes8& x, const Lanes8& y,
                                                      uint64_t skip)
 {
-    SmallSeparations<Lanes8> separations =
-        SmallSeparations<Lanes8>::Of<NormalKind::Unit, N>(ref, VerticesInRegisters8{x, y});
-    separations.Hide(static_cast<int>((skip | ~((uint64_t(1) << ref.Count()) - 1)) & 0xFF));
-    return separations.block0;
+    const int n = ref.Count();
+    Lanes8 vx;
+    Lanes8 vy;
+    Lanes8 nx;
+    Lanes8 ny;
+    Lanes8::LoadPoints(&ref.InlineBlock()[0].x, vx, vy);
+    Lanes8::LoadPoints(&ref.InlineBlock()[n + 1].x, nx, ny);
+    Lanes8 low = nx * x.Spread(0) + ny * y.Spread(0);
+    for (int j = 1; j < N; ++j)
+    {
+        low = Min(low, nx * x.Spread(j) + ny * y.Spread(j));
+    }
+    const Lanes8 separation = (low - (nx * vx + ny * vy)) + Lanes8::Fill(0.0);
+    const int hidden = static_cast<int>((skip | ~((uint64_t(1) << n) - 1)) & 0xFF);
+    return separation.Replace(hidden, -std::numeric_limits<double>::infinity());
 }
 
 /// The separations of every face of A from B and of every face of B from A (FaceSeparations512), B's `skip`ped faces
@@ -71,7 +80,12 @@ MappedIncidentPolygon(const PolygonT<double>& p, const TransformT<double>& xfInc
 /// comparison holds for it; face 0 when no face has a number), as SmallRefFaceQuery finds them.
 [[gnu::target("avx512f")]] inline double LargestSeparation512(const Lanes8& separations, int n, int& face)
 {
-    return SmallSeparations<Lanes8>{separations, separations}.Largest(n, face);
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    const int numbers = separations.GreaterBits(Lanes8::Fill(-kInfinity));
+    const double largest = separations.Replace(~numbers & 0xFF, -kInfinity).MaxLane();
+    const int hits = separations.EqualBits(Lanes8::Fill(largest)) & ((1 << n) - 1);
+    face = hits != 0 ? __builtin_ctz(static_cast<unsigned>(hits)) : 0;
+    return largest;
 }
 
 /// The manifold of two polygons of at most 8 vertices of which no face separates, from the separations of their

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: MIT
-// satviz (private), machinery: the face loops of small polygons in blocks of faces, in lanes. Each takes the
-// separations of a block of four faces (or of all faces of a polygon of up to 8) from the face-separation kernel
-// (face_kernel.h), then decides with one branch where the textbook loop (face_query.h) takes one per face: Collide's
-// face query (unit normals: the first separating face, else the largest separation), Overlap's test of polygons of
-// up to 8 vertices (raw edge normals: whether a face separates), and the separations of the sweep's small polygons.
-// The kernel's numbers are the textbook loop's, so the answers are too. These loops record nothing: a traced query
-// runs the textbook loop, which records each face as it tests it.
+// satviz (private), machinery: the face loops of small polygons four faces at a time, in lanes. The textbook loop
+// (face_query.h) takes a face, scans the incident polygon's vertices, and branches on the separation: a branch per
+// face, whose outcome follows the geometry and is mispredicted. Here each vertex is projected on four normals at
+// once, the minimum is kept per lane, and a block of four faces (or all faces of a polygon of up to 8) costs one
+// branch. The same products, sums and minimum as the face-at-a-time scan (FaceSeparation), so the same bits; the
+// recorder replays the faces one by one. Collide's face query (unit normals), the sweep's separations, and Overlap's
+// test of polygons of up to 8 vertices (raw edge normals) use them.
 #pragma once
 
-#include "face_kernel.h"
 #include "face_query.h"
 #include "incident_polygon.h"
 #include "lanes.h"
@@ -24,10 +23,91 @@
 namespace satviz::detail
 {
 
+/// The smallest projection of a scanned inc's N padded vertices on four normals at once (nx, ny in lanes): each
+/// vertex is projected on all four and the minimum kept per lane, in the order FaceSeparation takes it. Four
+/// vertices are loaded at a time and spread across the lanes from registers, which measured 4 to 9% faster for the
+/// sweep of 8-gons than a broadcast load per vertex.
+template <int N, typename S, typename L>
+L ProjectionMinimum(const IncidentPolygon<S>& inc, const L& nx, const L& ny)
+{
+    L low = L::Fill(S(0));
+    for (int j = 0; j < N; j += 4)
+    {
+        const L xs = L::Load(inc.x + j);
+        const L ys = L::Load(inc.y + j);
+        const L p0 = nx * xs.template Spread<0>() + ny * ys.template Spread<0>();
+        low = j == 0 ? p0 : Min(low, p0);
+        low = Min(low, nx * xs.template Spread<1>() + ny * ys.template Spread<1>());
+        low = Min(low, nx * xs.template Spread<2>() + ny * ys.template Spread<2>());
+        low = Min(low, nx * xs.template Spread<3>() + ny * ys.template Spread<3>());
+    }
+    return low;
+}
+
+/// Four faces of `polygon` from face i0, the last face repeated past the end, as lanes: their unit normals
+/// (nx, ny) and first vertices (vx, vy). A full block loads its normals and vertices whole.
+template <typename L, typename S>
+struct FaceBlock
+{
+    L nx, ny; ///< the faces' unit normals
+    L vx, vy; ///< their first vertices
+
+    /// The face in lane l of the block from face i0, of a polygon of n faces.
+    static int Face(int n, int i0, int l) { return std::min(i0 + l, n - 1); }
+
+    /// The block from face i0 of `polygon`, whose vertices and normals are at `data` (vertices.data, or the
+    /// InlineBlock of a polygon kept inline, which is read without waiting for the pointer).
+    FaceBlock(const PolygonT<S>& polygon, const Vec2T<S>* data, int i0)
+    {
+        const int n = polygon.Count();
+        const Vec2T<S>* normals = data + n + 1;
+        const Vec2T<S>* v = data;
+        if (i0 + 4 <= n)
+        {
+            L::LoadPoints(&normals[i0].x, nx, ny);
+            L::LoadPoints(&v[i0].x, vx, vy);
+            return;
+        }
+        const int f0 = Face(n, i0, 0);
+        const int f1 = Face(n, i0, 1);
+        const int f2 = Face(n, i0, 2);
+        const int f3 = Face(n, i0, 3);
+        nx = L::Set(normals[f0].x, normals[f1].x, normals[f2].x, normals[f3].x);
+        ny = L::Set(normals[f0].y, normals[f1].y, normals[f2].y, normals[f3].y);
+        vx = L::Set(v[f0].x, v[f1].x, v[f2].x, v[f3].x);
+        vy = L::Set(v[f0].y, v[f1].y, v[f2].y, v[f3].y);
+    }
+
+    /// Dot(normal, first vertex) per face: the offset of each face's line.
+    L Offset() const { return nx * vx + ny * vy; }
+};
+
+/// The smallest projection of a scanned inc's N padded vertices on the normals of one or two blocks of faces
+/// (kBlocks), per lane: each vertex is loaded once for both blocks, and the minimum is taken in vertex order, with
+/// the same products and sums as FaceSeparation, so the same bits.
+template <int N, int kBlocks, typename L, typename S>
+void LowestProjections(const IncidentPolygon<S>& inc, const L& nx0, const L& ny0, const L& nx1, const L& ny1, L& low0,
+                       L& low1)
+{
+    static_assert(kBlocks == 1 || kBlocks == 2, "one or two blocks");
+    for (int j = 0; j < N; ++j)
+    {
+        const L x = L::Fill(inc.x[j]);
+        const L y = L::Fill(inc.y[j]);
+        const L projection0 = nx0 * x + ny0 * y;
+        low0 = j == 0 ? projection0 : Min(low0, projection0);
+        if constexpr (kBlocks == 2)
+        {
+            const L projection1 = nx1 * x + ny1 * y;
+            low1 = j == 0 ? projection1 : Min(low1, projection1);
+        }
+    }
+}
+
 /// The separations of the faces of a small ref (kBlocks blocks of four, 1 or 2: at most 8 faces) from a scanned inc
-/// of N padded vertices, per block in lanes, in one pass over inc's vertices (the kernel, LowestProjections). The
-/// last block repeats the last face, as FaceBlock loads it, so that every lane holds a face: the sweep takes the
-/// bounds of all lanes. (Named members: arrays of lanes end up on the stack.)
+/// of N padded vertices, per block in lanes, in one pass over inc's vertices: each vertex is loaded once, as lanes,
+/// for both blocks, whose normals stay in registers. The same products, sums and minimum as FaceSeparation, so the
+/// same bits. (Named members: arrays of lanes end up on the stack.)
 template <int N, int kBlocks, typename L, typename S>
 struct SmallRefSeparations
 {
@@ -40,68 +120,137 @@ struct SmallRefSeparations
     SmallRefSeparations(const PolygonT<S>& ref, const IncidentPolygon<S>& inc)
         : faces0(ref, ref.InlineBlock(), 0), faces1(kBlocks == 2 ? FaceBlock<L, S>(ref, ref.InlineBlock(), 4) : faces0)
     {
-        L low0 = faces0.nx;
-        L low1 = faces1.nx;
-        LowestProjections<N, kBlocks>(VerticesInMemory<L, S>{inc.x, inc.y}, faces0.nx, faces0.ny, faces1.nx, faces1.ny,
-                                      low0, low1);
+        L low0 = L::Fill(S(0));
+        L low1 = L::Fill(S(0));
+        LowestProjections<N, kBlocks>(inc, faces0.nx, faces0.ny, faces1.nx, faces1.ny, low0, low1);
         block0 = (low0 - faces0.Offset()) + L::Fill(S(0));
         block1 = kBlocks == 2 ? (low1 - faces1.Offset()) + L::Fill(S(0)) : block0;
     }
 };
 
-/// The faces of a small ref that take no part in its decision, one bit each: the `skip`ped ones, and the lanes
-/// past the last of its n faces.
-inline int HiddenFaces(uint64_t skip, int n)
+/// The separations of a small ref's faces in blocks (SmallRefSeparations) with the faces that take no part set to
+/// -infinity: the `skip`ped ones (bits), and the lanes past the last of its n faces, which read the polygon's block
+/// beyond its vertices and normals. With one block, block1 repeats block0.
+template <int kBlocks, typename L>
+void HideFaces(uint64_t skip, int n, L& block0, L& block1)
 {
-    return static_cast<int>((skip | ~((uint64_t(1) << n) - 1)) & 0xFF);
+    using S = std::decay_t<decltype(std::declval<L>().Get(0))>;
+    const uint64_t hidden = (skip | ~((uint64_t(1) << n) - 1)) & (kBlocks == 2 ? 0xFF : 0xF);
+    if (hidden != 0)
+    {
+        const auto mask = [](uint64_t bits) {
+            return L::Set(S(bits & 1), S(bits & 2), S(bits & 4), S(bits & 8)) > L::Fill(S(0));
+        };
+        const L below = L::Fill(-std::numeric_limits<S>::infinity());
+        block0 = Select(mask(hidden), below, block0);
+        block1 = kBlocks == 2 ? Select(mask(hidden >> 4), below, block1) : block0;
+    }
+}
+
+/// The largest separation over a small ref's n faces from its blocks (HideFaces applied), NaN ignored (no comparison
+/// holds for it), and in `face` its first face (none for NaN input: face 0).
+template <typename L, typename S = std::decay_t<decltype(std::declval<L>().Get(0))>>
+S LargestSeparation(const L& block0, const L& block1, int n, int& face)
+{
+    const L low = L::Fill(-std::numeric_limits<S>::infinity());
+    const L best0 = Select(block0 > low, block0, low);
+    const L best = Select(block1 > best0, block1, best0);
+    const S largest = best.MaxLane();
+    const int hits = ((block0 == L::Fill(largest)).Bits() | (block1 == L::Fill(largest)).Bits() << 4) & ((1 << n) - 1);
+    face = hits != 0 ? __builtin_ctz(static_cast<unsigned>(hits)) : 0;
+    return largest;
 }
 
 /// The face query of Collide (unit normals) for a ref of at most 8 faces against a scanned inc of N padded vertices,
-/// with the answer of the textbook loop (TextbookFaces): the separations of all of ref's faces from one pass over
-/// inc's vertices (the kernel), then one branch for all of them. A separating face ends the query at the first such
-/// face (without the early exit, the query reports the largest separation, as when no face separates); otherwise
-/// the largest separation is one reduction across the lanes and its first face the first lane equal to it. A
-/// skipped face (anti-parallel to one already tested) and a NaN separation take no part. Untraced only: a traced
-/// query runs the textbook loop, which records each face as it tests it.
+/// with the answer of the textbook loop (ScanFaces): the separations of all of ref's faces from one pass over inc's
+/// vertices, as SmallRefSeparations takes them (the same bits), then one branch for all of them. A separating face ends
+/// the query at the first such face (without the early exit, the query reports the largest separation, as when no
+/// face separates); otherwise the largest separation is one reduction across the lanes and its first face the first
+/// lane equal to it, read from the comparison's bits. ref's normals and vertices are loaded four at
+/// a time, whole: a polygon of at most 8 vertices keeps them inline, so the lanes past its last face read its own
+/// block and are masked out. A skipped face (anti-parallel to one already tested) and a NaN separation take no
+/// part. The recorder replays the faces in order, up to the first separating one, with the same numbers. Against
+/// ScanFaceBlocks with a branch per block, Collide of 8-gons took 0.97 of the time (satviz-bench).
 template <int N, int kBlocks, typename S, typename Tracer>
-FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, bool second)
+FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second,
+                               Tracer& tracer)
 {
-    static_assert(!Tracer::kEnabled, "traced queries run the textbook loop");
     using L = Lanes<S, Tracer::kWide && std::is_same_v<S, double>>;
     const int n = ref.Count();
     const uint64_t skip = SecondPassSkips<Tracer::kSkipParallel>(ref, inc, second);
-    SmallSeparations<L, kBlocks> separations =
-        SmallSeparations<L, kBlocks>::template Of<NormalKind::Unit, N>(ref, VerticesInMemory<L, S>{inc.x, inc.y});
-    separations.Hide(HiddenFaces(skip, n));
-    const int separating = separations.Positive() & ((1 << n) - 1);
+    // At most 8 faces: the polygon is kept inline, and its block is read without waiting for vertices.data. Faces
+    // 0 to 3, then 4 to 7 (kBlocks = 2; else 0 to 3 again): their normals and first vertices.
+    const Vec2T<S>* block = ref.InlineBlock();
+    L n0x, n0y, v0x, v0y;
+    L::LoadPoints(&block[n + 1].x, n0x, n0y);
+    L::LoadPoints(&block[0].x, v0x, v0y);
+    L n1x = n0x;
+    L n1y = n0y;
+    L v1x = v0x;
+    L v1y = v0y;
+    if constexpr (kBlocks == 2)
+    {
+        L::LoadPoints(&block[n + 5].x, n1x, n1y);
+        L::LoadPoints(&block[4].x, v1x, v1y);
+    }
+    L low0 = L::Fill(S(0));
+    L low1 = L::Fill(S(0));
+    LowestProjections<N, kBlocks>(inc, n0x, n0y, n1x, n1y, low0, low1);
+    L block0 = (low0 - (n0x * v0x + n0y * v0y)) + L::Fill(S(0));
+    L block1 = block0;
+    if constexpr (kBlocks == 2)
+    {
+        block1 = (low1 - (n1x * v1x + n1y * v1y)) + L::Fill(S(0));
+    }
+    HideFaces<kBlocks>(skip, n, block0, block1);
+    const L zero = L::Fill(S(0));
+    const int separating = ((block0 > zero).Bits() | (block1 > zero).Bits() << 4) & ((1 << n) - 1);
     FaceQuery<S> query;
     query.face = 0;
+    int replayed = n; // faces the recorder shows
     if (separating != 0 && Tracer::kEarlyExit)
     {
         const int i = __builtin_ctz(static_cast<unsigned>(separating));
         query.separated = true;
         query.face = i;
-        query.separation = separations.Get(i);
+        query.separation = i < 4 ? block0.Get(i) : block1.Get(i - 4);
+        replayed = i + 1;
     }
     else
     {
         // No face separates, or (without the early exit) every face counts: the largest separation.
         query.separated = separating != 0;
-        query.separation = separations.Largest(n, query.face);
+        query.separation = LargestSeparation(block0, block1, n, query.face);
+    }
+    if constexpr (Tracer::kEnabled)
+    {
+        for (int i = 0; i < replayed; ++i)
+        {
+            if ((skip >> i) & 1)
+            {
+                tracer.SkippedFace(i, -1);
+                continue;
+            }
+            const Vec2T<S> normal = ref.Normal(i);
+            const S value = i < 4 ? block0.Get(i) : block1.Get(i - 4);
+            tracer.FaceAxis(side, i, normal, value, inc.Support(normal), value > S(0));
+        }
     }
     return query;
 }
 
-/// The face query of Collide (unit normals) against a scanned inc, four faces of ref at a time in lanes (the
-/// kernel), with the answer of the textbook loop (TextbookFaces). A block of four faces costs one branch instead of
-/// one per face. The last block repeats the last face, which changes no answer. Each lane keeps the largest
-/// separation it saw and its first face; the lanes combine into the first face of the largest separation, as a
-/// face-by-face loop finds it. A block that holds a separating face ends the query at the first such face. A ref of
-/// at most 8 faces takes SmallRefFaceQuery instead. Untraced only, as SmallRefFaceQuery.
+/// The face query of Collide (unit normals) against a scanned inc, four faces of ref at a time in lanes, with the
+/// answer of the textbook loop (ScanFaces). Each vertex of inc is projected on four normals at once, so no minimum is
+/// taken across lanes, and a block of four faces costs one branch instead of one per face, whose outcome follows the
+/// geometry and would be mispredicted. The last block repeats the last face, which changes no answer. Each lane keeps
+/// the largest separation it saw and its first face; the lanes combine into the first face of the largest separation,
+/// as a face-by-face loop finds it. A block that holds a separating face ends the query at the first such face. The
+/// recorder replays the block's faces in order, up to that face, with the same numbers. A ref of at most 8 faces
+/// takes SmallRefFaceQuery instead, and Overlap of small polygons SmallFacesSeparate (raw edge normals).
 template <int N, typename S, typename Tracer>
-FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, bool second)
+FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second,
+                            Tracer& tracer)
 {
-    static_assert(!Tracer::kEnabled, "traced queries run the textbook loop");
     using L = Lanes<S, Tracer::kWide && std::is_same_v<S, double>>;
     constexpr S kInfinity = std::numeric_limits<S>::infinity();
     const int n = ref.Count();
@@ -110,10 +259,9 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
     query.face = 0;
     L best = L::Fill(-kInfinity);
     L bestBlock = L::Fill(S(0));
-    for (int i0 = 0; i0 < n; i0 += 4)
-    {
-        const FaceBlock<L, S> block(ref, ref.Vertices().data, i0);
-        L separation = Separations<N>(VerticesInFours<L, S>{inc.x, inc.y}, block.nx, block.ny, block.Offset());
+    // Takes the separations of the four faces from i0; true when the query stops there.
+    const auto take = [&](int i0, const L& blockSeparation) {
+        L separation = blockSeparation;
         const int skipped = i0 < 64 ? static_cast<int>((skip >> i0) & 0xF) : 0;
         if (skipped != 0)
         {
@@ -123,20 +271,43 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
             separation = Select(mask, L::Fill(-kInfinity), separation);
         }
         const int separating = (separation > L::Fill(S(0))).Bits();
+        const int stop = separating != 0 ? __builtin_ctz(static_cast<unsigned>(separating)) : 4;
+        if constexpr (Tracer::kEnabled)
+        {
+            for (int l = 0; l < 4 && i0 + l < n && (l <= stop || !Tracer::kEarlyExit); ++l)
+            {
+                if ((skipped >> l) & 1)
+                {
+                    tracer.SkippedFace(i0 + l, -1);
+                    continue;
+                }
+                const Vec2T<S> normal = ref.Normal(i0 + l);
+                const S value = separation.Get(l);
+                tracer.FaceAxis(side, i0 + l, normal, value, inc.Support(normal), value > S(0));
+            }
+        }
         if (separating != 0 && !query.separated)
         {
-            const int stop = __builtin_ctz(static_cast<unsigned>(separating));
             query.separated = true;
             query.face = std::min(i0 + stop, n - 1);
             query.separation = separation.Get(stop);
             if constexpr (Tracer::kEarlyExit)
             {
-                return query;
+                return true;
             }
         }
         const typename L::Mask better = separation > best;
         best = Select(better, separation, best);
         bestBlock = Select(better, L::Fill(S(i0)), bestBlock);
+        return false;
+    };
+    for (int i0 = 0; i0 < n; i0 += 4)
+    {
+        const FaceBlock<L, S> block(ref, ref.Vertices().data, i0);
+        if (take(i0, (ProjectionMinimum<N>(inc, block.nx, block.ny) - block.Offset()) + L::Fill(S(0))))
+        {
+            return query;
+        }
     }
     if (!query.separated || !Tracer::kEarlyExit)
     {
@@ -152,36 +323,85 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
     return query;
 }
 
-/// Overlap's face query of a ref of at most 8 faces against a scanned inc of N padded vertices, its faces four at a
-/// time in lanes with raw edge normals (the kernel, as SmallRefFaceQuery for Collide): one pass over inc's
-/// vertices, then one branch for all of ref's faces. A skipped face (second pass: anti-parallel to one of inc's
-/// faces, already tested) and the lanes past the last face take no part. True when a face separates. Untraced
-/// only, as SmallRefFaceQuery.
-template <int N, int kBlocks, typename S, typename Tracer>
-bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, bool second)
+/// Four faces of `polygon` from face i0 as lanes, with raw edge normals RightPerp(Edge(i)) (no square root, no
+/// division: Overlap needs only the sign of a separation) and the offsets Dot(normal, v_i) of their lines. For a
+/// polygon of at most 8 vertices, kept inline, whose block is read without waiting for vertices.data. Lanes past
+/// the last face read that block beyond vertex 0's copy and hold no face: the caller masks them.
+template <typename L, typename S>
+struct EdgeNormalBlock
 {
-    static_assert(!Tracer::kEnabled, "traced queries run the textbook loop");
+    L nx, ny; ///< the faces' raw outward normals
+    L offset; ///< Dot(normal, first vertex) per face
+
+    EdgeNormalBlock(const PolygonT<S>& polygon, int i0)
+    {
+        L vx;
+        L vy;
+        L wx;
+        L wy;
+        L::LoadPoints(&polygon.InlineBlock()[i0].x, vx, vy);
+        L::LoadPoints(&polygon.InlineBlock()[i0 + 1].x, wx, wy);
+        nx = wy - vy;
+        ny = vx - wx;
+        offset = nx * vx + ny * vy;
+    }
+};
+
+/// Overlap's face query of a ref of at most 8 faces against a scanned inc of N padded vertices, its faces four at a
+/// time in lanes (Gregorius's face query, as SmallRefFaceQuery does for Collide, with raw edge normals): one pass over
+/// inc's vertices, each projected on all of ref's normals at once, then one branch for all of ref's faces instead
+/// of one per face, whose outcome follows the geometry and is mispredicted. The same products, sums and minimum as
+/// FaceSeparation, so the same separations to the bit. A skipped face (second pass: anti-parallel to one of inc's
+/// faces, already tested) and the lanes past the last face take no part. The recorder replays the faces in order,
+/// up to the first separating one. True when a face separates.
+template <int N, int kBlocks, typename S, typename Tracer>
+bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, Tracer& tracer)
+{
     using L = Lanes<S, Tracer::kWide && std::is_same_v<S, double>>;
+    const int n = ref.Count();
     const uint64_t skip = SecondPassSkips<Tracer::kSkipParallel>(ref, inc, second);
-    const SmallSeparations<L, kBlocks> separations =
-        SmallSeparations<L, kBlocks>::template Of<NormalKind::Edge, N>(ref, VerticesInMemory<L, S>{inc.x, inc.y});
-    return (separations.Positive() & LiveFaces(ref.Count(), skip)) != 0;
+    const EdgeNormalBlock<L, S> faces0(ref, 0);
+    const EdgeNormalBlock<L, S> faces1(ref, kBlocks == 2 ? 4 : 0);
+    L low0 = L::Fill(S(0));
+    L low1 = L::Fill(S(0));
+    LowestProjections<N, kBlocks>(inc, faces0.nx, faces0.ny, faces1.nx, faces1.ny, low0, low1);
+    const L separation0 = (low0 - faces0.offset) + L::Fill(S(0));
+    const L separation1 = kBlocks == 2 ? (low1 - faces1.offset) + L::Fill(S(0)) : separation0;
+    // Faces that take part, one bit each: the real ones, less the skipped.
+    const int live = static_cast<int>(((uint64_t(1) << n) - 1) & ~skip);
+    const int separating = (((separation0 > L::Fill(S(0))).Bits() | (separation1 > L::Fill(S(0))).Bits() << 4) & live);
+    if constexpr (Tracer::kEnabled)
+    {
+        const int stop =
+            separating != 0 && Tracer::kEarlyExit ? __builtin_ctz(static_cast<unsigned>(separating)) : n - 1;
+        for (int i = 0; i <= stop; ++i)
+        {
+            if ((skip >> i) & 1)
+            {
+                tracer.SkippedFace(i, -1);
+                continue;
+            }
+            const Vec2T<S> normal = RightPerp(ref.Edge(i));
+            const S value = i < 4 ? separation0.Get(i) : separation1.Get(i - 4);
+            tracer.FaceAxis(side, i, normal, value, inc.Support(normal), value > S(0));
+        }
+    }
+    return separating != 0;
 }
 
-/// Overlap's face query of a ref of at most 8 faces against a scanned inc of at most 8 vertices, unrolled for both
-/// counts (SmallFacesSeparate above): true when a face separates. Untraced only.
+/// SmallFacesSeparate for a ref of at most 8 faces and a scanned inc of at most 8 vertices, unrolled for both.
 template <typename S, typename Tracer>
-bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, bool second)
+bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, Tracer& tracer)
 {
     const bool twoBlocks = ref.Count() > 4;
     switch (inc.padded)
     {
     case 4:
-        return twoBlocks ? SmallFacesSeparate<4, 2, S, Tracer>(ref, inc, second)
-                         : SmallFacesSeparate<4, 1, S, Tracer>(ref, inc, second);
+        return twoBlocks ? SmallFacesSeparate<4, 2>(ref, inc, side, second, tracer)
+                         : SmallFacesSeparate<4, 1>(ref, inc, side, second, tracer);
     case 8:
-        return twoBlocks ? SmallFacesSeparate<8, 2, S, Tracer>(ref, inc, second)
-                         : SmallFacesSeparate<8, 1, S, Tracer>(ref, inc, second);
+        return twoBlocks ? SmallFacesSeparate<8, 2>(ref, inc, side, second, tracer)
+                         : SmallFacesSeparate<8, 1>(ref, inc, side, second, tracer);
     default:
         return false; // not scanned: the caller calls for none
     }

@@ -11,6 +11,7 @@
 //   D. Gregorius, "The Separating Axis Test between Convex Polyhedra", GDC 2013 (face queries with support points).
 #pragma once
 
+#include "face_scan.h"
 #include "incident_polygon.h"
 #include "select.h"
 
@@ -72,6 +73,8 @@ uint64_t SecondPassSkips(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
     return kSkipParallel && second ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{})) : uint64_t(0);
 }
 
+/// The smallest projection of a scanned inc's N padded vertices on four normals at once (nx, ny in lanes): each
+
 /// Records the separation of face i of the reference polygon in `query`, and in the trace; true when the query
 /// stops there (a separating face, with the early exit). kUnit (unit normals: Collide) also keeps the face of
 /// largest separation and inc's `support` point for it; with raw edge normals (Overlap) only the sign counts.
@@ -83,13 +86,11 @@ bool RecordFace(FaceQuery<S>& query, const IncidentPolygon<S>& inc, int side, in
     const bool separating = separation > S(0);
     if constexpr (kUnit)
     {
-        // Collide needs the best face; selecting without a branch keeps the loop free of mispredictions. Against a
-        // scanned inc a NaN separation is never better, so it takes no part, as in the lanes of the same query.
+        // Collide needs the best face; selecting without a branch keeps the loop free of mispredictions.
         const bool better = separation > query.separation;
         query.face = Select(better, i, query.face);
         query.support = Select(better, support, query.support);
-        query.separation =
-            kScan ? Select(better, separation, query.separation) : std::max(separation, query.separation);
+        query.separation = std::max(separation, query.separation);
     }
     if constexpr (Tracer::kEnabled)
     {
@@ -110,49 +111,27 @@ bool RecordFace(FaceQuery<S>& query, const IncidentPolygon<S>& inc, int side, in
     return false;
 }
 
-/// The separation of a face of the reference polygon, outward normal `normal` and offset Dot(normal, v_i), from a
-/// scanned inc, as the textbook writes it: the smallest projection of inc's vertices on the normal, less the offset,
-/// a vertex at a time. kInside also keeps, per vertex, its largest separation over the faces so far:
-/// inside[j] = max(inside[j], Dot(normal, w_j) - offset). The faster loops take the same products, sums and minimum
-/// (face_kernel.h), so they give the same number; adding +0 makes a zero separation +0, whichever zero the minimum
-/// kept. (The minimum and maximum keep the second operand when either is NaN, as the lanes do.)
-template <bool kInside, typename S>
-S TextbookSeparation(const IncidentPolygon<S>& inc, Vec2T<S> normal, S offset, S* inside)
-{
-    S low = std::numeric_limits<S>::infinity();
-    // Over the entries a scan reads (IncidentPolygon::padded): past the vertices they repeat vertex 0, which changes
-    // no minimum but that of NaN input, where it keeps the loops in agreement.
-    for (int j = 0; j < inc.padded; ++j)
-    {
-        const S projection = normal.x * inc.x[j] + normal.y * inc.y[j];
-        if constexpr (kInside)
-        {
-            const S separation = projection - offset;
-            inside[j] = inside[j] > separation ? inside[j] : separation;
-        }
-        low = low < projection ? low : projection;
-    }
-    return (low - offset) + S(0);
-}
-
-/// The face loop of `ref` against a scanned `inc` (Gregorius), a face at a time: each face's separation from
-/// `separation(normal, offset)`, recorded (RecordFace) as it is found, so a traced query records the work it does.
+/// Face query of `ref` against a scanned `inc` (Gregorius), the textbook loop: one face at a time.
 /// Outline:
 ///   1. For each face i of ref, with outward normal n and first vertex v_i, the separation is the signed distance
 ///      from the face to inc's support point in direction -n, which is inc's vertex of smallest projection on n:
 ///          separation_i = Dot(n, support(inc, -n) - v_i) = min_j Dot(n, w_j) - Dot(n, v_i),
-///      over inc's vertices w_j, mapped into ref's frame once (IncidentPolygon): O(n m), and m is at most
-///      kScanLimit (larger polygons are walked, walked_faces.h).
+///      over inc's vertices w_j, mapped into ref's frame once (IncidentPolygon). Each face takes one scan of them,
+///      without branches (FaceSeparation, face_scan.h): O(n m) with a tiny constant, and m is at most kScanLimit
+///      (larger polygons are walked, walked_faces.h), so linear in n: the O(n + m) of sat.h.
 ///   2. A separation > 0 is a separating axis: stop there (early exit).
 ///   3. Keep the largest separation and its face (kUnit): when no face separates, the face of least penetration.
 ///   4. Second pass only: a face of ref exactly anti-parallel to a face of inc repeats the test the first pass made
 ///      from that face, and is skipped (the faces in SecondPassSkips).
 /// kUnit selects unit normals (Collide: separations are distances, the best face is tracked) or raw edge normals
-/// (Overlap: only the sign matters, so no square root or division is needed).
-template <bool kUnit, typename S, typename Tracer, typename Separation>
-FaceQuery<S> FaceLoop(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, Tracer& tracer,
-                      Separation&& separation)
+/// (Overlap: only the sign matters, so no square root or division is needed). N is inc's padded vertex count, a
+/// multiple of 4. kInside also finds, for each vertex of inc, its largest separation from ref's faces (ScanFace),
+/// in `inside`: a vertex whose largest separation is <= 0 lies inside ref.
+template <bool kUnit, bool kInside, int N, typename S, typename Tracer>
+FaceQuery<S> ScanFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, Tracer& tracer,
+                       S* inside)
 {
+    static_assert(N > 0 && N % 4 == 0 && N <= IncidentPolygon<S>::kCapacity, "a scan of a padded count");
     const int n = ref.Count();
     FaceQuery<S> query;
     // The best face so far starts as the first one tested, so that it is a valid index even when no comparison
@@ -170,26 +149,14 @@ FaceQuery<S> FaceLoop(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int
             }
             continue;
         }
-        if (RecordFace<kUnit, true>(query, inc, side, i, normal, separation(normal, Dot(normal, ref.Vertices()[i])), -1,
-                                    tracer))
+        const S separation =
+            FaceSeparation<N, kInside, Tracer::kWide>(inc.x, inc.y, normal, Dot(normal, ref.Vertices()[i]), inside);
+        if (RecordFace<kUnit, true>(query, inc, side, i, normal, separation, -1, tracer))
         {
             break;
         }
     }
     return query;
-}
-
-/// The face query of `ref` against a scanned `inc`, the textbook loop: FaceLoop with each separation found as the
-/// textbook finds it (TextbookSeparation). The reference the faster loops are tested against, and what a traced
-/// query runs. kInside also finds, for each vertex of inc, its largest separation from ref's faces, in `inside`: a
-/// vertex whose largest separation is <= 0 lies inside ref.
-template <bool kUnit, bool kInside, typename S, typename Tracer>
-FaceQuery<S> TextbookFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, Tracer& tracer,
-                           S* inside)
-{
-    return FaceLoop<kUnit>(ref, inc, side, second, tracer, [&](Vec2T<S> normal, S offset) {
-        return TextbookSeparation<kInside>(inc, normal, offset, inside);
-    });
 }
 
 } // namespace satviz::detail

@@ -1,13 +1,11 @@
 // SPDX-License-Identifier: MIT
 // satviz (private), chapter 4: which face loop runs. The face query has one answer (face_query.h: the textbook
-// loop) and several loops that give it, each faster on some pairs of sizes: the face loop with each face's vertices
-// scanned in lanes (ScanFaces), the loops of blocks of faces in lanes (face_blocks.h, on the face-separation kernel
-// of face_kernel.h), and the walk over a large polygon (walked_faces.h). QueryFaces picks one.
+// loop) and several loops that give it, each faster on some pairs of sizes: the textbook loop itself, the loops of
+// four faces at a time (face_blocks.h), and the walk over a large polygon (walked_faces.h). QueryFaces picks one.
 #pragma once
 
 #include "face_blocks.h"
 #include "face_query.h"
-#include "face_scan.h"
 #include "incident_polygon.h"
 #include "walked_faces.h"
 
@@ -16,21 +14,6 @@
 namespace satviz::detail
 {
 
-/// The face query of `ref` against a scanned `inc` of N padded vertices (a multiple of 4): the face loop of the
-/// textbook (FaceLoop), each face's separation found by the face-scan kernel over inc's vertices in lanes
-/// (FaceSeparation), so the textbook loop's numbers. Overlap's face query where a polygon has more than 8 vertices
-/// (with kInside it also finds each vertex's largest separation from ref's faces, as TextbookFaces does), and the
-/// loop a traced query runs, recording each face where it tests it.
-template <bool kUnit, bool kInside, int N, typename S, typename Tracer>
-FaceQuery<S> ScanFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, Tracer& tracer,
-                       S* inside)
-{
-    static_assert(N > 0 && N % 4 == 0 && N <= IncidentPolygon<S>::kCapacity, "a scan of a padded count");
-    return FaceLoop<kUnit>(ref, inc, side, second, tracer, [&](Vec2T<S> normal, S offset) {
-        return FaceSeparation<N, kInside, Tracer::kWide>(inc.x, inc.y, normal, offset, inside);
-    });
-}
-
 /// The face query of `ref` against `inc` (Gregorius), for inc's padded vertex count N (a multiple of 4 when inc is
 /// scanned, 0 when it is walked), by the loop that is fastest for it. Each gives the textbook loop's answer.
 ///   1. Small inc (kScanLimit vertices or fewer), mapped into ref's frame: each face takes the smallest projection
@@ -38,9 +21,6 @@ FaceQuery<S> ScanFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
 ///      polygons of up to 8 vertices take SmallFacesSeparate before this); Collide four faces at a time in lanes
 ///      (ScanFaceBlocks; a ref of up to 8 faces: SmallRefFaceQuery), which costs one branch per block of faces.
 ///   2. Large inc: only the faces near the contact, walked to (WalkFaces).
-/// A traced query of a scanned inc runs the face loop of the textbook a face at a time (ScanFaces: FaceLoop), which
-/// records each face where it tests it: the trace shows that loop, with the numbers and answer of the loop the
-/// untraced query runs.
 /// The arguments are those of QueryFaces.
 template <bool kUnit, bool kInside, int N, typename S, typename Tracer>
 FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, S floor,
@@ -51,20 +31,16 @@ FaceQuery<S> QueryFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
     {
         return WalkFaces<kUnit>(ref, inc, side, second, floor, tracer);
     }
-    else if constexpr (Tracer::kEnabled)
-    {
-        return ScanFaces<kUnit, kInside, N>(ref, inc, side, second, tracer, inside);
-    }
     else if constexpr (kUnit)
     {
         switch ((ref.Count() + 3) / 4)
         {
         case 1:
-            return SmallRefFaceQuery<N, 1, S, Tracer>(ref, inc, second);
+            return SmallRefFaceQuery<N, 1>(ref, inc, side, second, tracer);
         case 2:
-            return SmallRefFaceQuery<N, 2, S, Tracer>(ref, inc, second);
+            return SmallRefFaceQuery<N, 2>(ref, inc, side, second, tracer);
         default:
-            return ScanFaceBlocks<N, S, Tracer>(ref, inc, second);
+            return ScanFaceBlocks<N>(ref, inc, side, second, tracer);
         }
     }
     else

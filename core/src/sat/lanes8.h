@@ -19,8 +19,7 @@ namespace satviz::detail
 /// Eight doubles in one AVX-512 register.
 struct Lanes8
 {
-    static constexpr int kCount = 8; ///< lanes
-    __m512d v;                       ///< the lanes
+    __m512d v; ///< the lanes
 
     /// Every lane x.
     [[gnu::target("avx512f")]] static Lanes8 Fill(double x) { return {_mm512_set1_pd(x)}; }

@@ -2,12 +2,10 @@
 // satviz (private), machinery: Overlap of two polygons of up to 8 vertices on 512-bit vectors (AVX-512F): all the
 // faces of a polygon in one register of eight lanes (Lanes8), the other polygon's vertices mapped into its frame and
 // held in registers. Used only in code compiled for AVX-512 (entry.h: RunWide512), where the processor has it
-// (cpu_dispatch.h). The face-separation kernel (face_kernel.h) with eight lanes: the same separations to the bit as the
-// textbook loop.
+// (cpu_dispatch.h). The same separations to the bit as SmallFacesSeparate (face_blocks.h).
 #pragma once
 
 #include "cpu_dispatch.h"
-#include "face_kernel.h"
 #include "face_query.h"
 #include "lanes8.h"
 
@@ -56,15 +54,30 @@ struct MappedPair512
 
 /// Whether a face of `ref` (at most 8 faces, raw edge normals, all in one register of eight lanes) separates it from
 /// the N vertices of the other polygon, mapped into ref's frame and held in registers (MapVertices512), less the
-/// `skip`ped faces: the face-separation kernel's 8-lane instantiation (SmallSeparations), the same separations to
-/// the bit as the textbook loop's; the vertices come from registers, not from an array on the stack.
+/// `skip`ped faces. The same products, sums and minimum per face, in the same order, as SmallFacesSeparate, so the
+/// same separations to the bit; the vertices come from registers, not from an array on the stack.
 template <int N>
 [[gnu::target("avx512f")]] bool FacesSeparate512(const PolygonT<double>& ref, const Lanes8& x, const Lanes8& y,
                                                  uint64_t skip)
 {
-    const SmallSeparations<Lanes8> separations =
-        SmallSeparations<Lanes8>::Of<NormalKind::Edge, N>(ref, VerticesInRegisters8{x, y});
-    return (separations.Positive() & LiveFaces(ref.Count(), skip)) != 0;
+    Lanes8 vx;
+    Lanes8 vy;
+    Lanes8 wx;
+    Lanes8 wy;
+    Lanes8::LoadPoints(&ref.InlineBlock()[0].x, vx, vy);
+    Lanes8::LoadPoints(&ref.InlineBlock()[1].x, wx, wy);
+    const Lanes8 nx = wy - vy;
+    const Lanes8 ny = vx - wx;
+    const Lanes8 offset = nx * vx + ny * vy;
+    Lanes8 low = Lanes8::Fill(0.0);
+    for (int j = 0; j < N; ++j)
+    {
+        const Lanes8 projection = nx * x.Spread(j) + ny * y.Spread(j);
+        low = j == 0 ? projection : Min(low, projection);
+    }
+    const Lanes8 separation = (low - offset) + Lanes8::Fill(0.0);
+    const int live = static_cast<int>(((uint64_t(1) << ref.Count()) - 1) & ~skip);
+    return (separation.GreaterBits(Lanes8::Fill(0.0)) & live) != 0;
 }
 
 /// Overlap of two polygons of at most 8 vertices on AVX-512 (OverlapPolygons, step 0): each polygon's faces in one

@@ -35,12 +35,12 @@ namespace satviz::detail
 /// Overlap of two polygons (Ericson 5.2.1; Gregorius).
 /// Outline:
 ///   0. Both polygons of at most 8 vertices: A's faces against B mapped into A's frame, four faces at a time in
-///      lanes (SmallFacesSeparate, on the face-separation kernel; traced, the textbook loop); a separating face ends
-///      the test; otherwise B's faces against A mapped into B's frame, anti-parallel faces skipped. One branch per
-///      polygon instead of one per face, which is faster than steps 1 to 3 on small polygons. With AVX-512
-///      (Tracer::kWide512, SmallPolygonsOverlap512: the kernel in eight lanes) each polygon's faces fit one register
-///      and cost so little that both polygons are tested and decided by one branch: the branch between them,
-///      mispredicted on about half of the pairs near contact, costs more than B's faces.
+///      lanes (SmallFacesSeparate); a separating face ends the test; otherwise B's faces against A mapped into B's
+///      frame, anti-parallel faces skipped. One branch per polygon instead of one per face, which measured faster
+///      than steps 1 to 3 on small polygons (satviz-bench). With AVX-512 (Tracer::kWide512,
+///      SmallPolygonsOverlap512) each polygon's faces fit one register and cost so little that both polygons are
+///      tested and decided by one branch: the branch between them, mispredicted on about half of the pairs near
+///      contact, costs more than B's faces.
 ///      Larger polygons:
 ///   1. Face query of A's faces against B mapped into A's frame, stopping at the first separating face. A walked A
 ///      tests only the run of faces that see the witness (B's support point for A's first face): every other face
@@ -70,22 +70,11 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
     const IncidentPolygon<S> incB(b, xfA, xfB, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
     if (incB.scan && a.Count() <= 8 && b.Count() <= 8)
     {
-        // Untraced, the faces in lanes; traced, the face loop, which records each face as it tests it.
-        const auto separates = [&](const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second) {
-            if constexpr (Tracer::kEnabled)
-            {
-                return QueryFaces<false>(ref, inc, side, second, S(0), tracer).separated;
-            }
-            else
-            {
-                return SmallFacesSeparate<S, Tracer>(ref, inc, second);
-            }
-        };
-        bool separated = separates(a, incB, 0, false);
+        bool separated = SmallFacesSeparate(a, incB, 0, false, tracer);
         if (!separated || !Tracer::kEarlyExit)
         {
             const IncidentPolygon<S> incA(a, xfB, xfA, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
-            separated = separates(b, incA, 1, true) || separated;
+            separated = SmallFacesSeparate(b, incA, 1, true, tracer) || separated;
         }
         if constexpr (Tracer::kEnabled)
         {

@@ -151,15 +151,17 @@ ManifoldT<S> InterpenetratingManifold(const PolygonT<S>& a, const TransformT<S>&
                                       const KeptSeparations<L>& keptB)
 {
     const auto largest = [](const KeptSeparations<L>& kept, uint64_t skip, int n, int& face) {
+        L block0 = kept.block0;
+        L block1 = kept.block1;
         if (kept.twoBlocks)
         {
-            SmallSeparations<L, 2> separations{kept.block0, kept.block1};
-            separations.Hide(HiddenFaces(skip, n));
-            return separations.Largest(n, face);
+            HideFaces<2>(skip, n, block0, block1);
         }
-        SmallSeparations<L, 1> separations{kept.block0, kept.block0};
-        separations.Hide(HiddenFaces(skip, n));
-        return separations.Largest(n, face);
+        else
+        {
+            HideFaces<1>(skip, n, block0, block1);
+        }
+        return LargestSeparation(block0, block1, n, face);
     };
     const uint64_t skip = SecondPassSkips<AlgorithmChoices::kSkipParallel>(b, incA, true);
     int faceA = 0;

@@ -179,7 +179,7 @@ int WedgeOf(const PolygonT<S>& polygon, Vec2T<S> point, int start)
     return lo;
 }
 
-/// Face query of `ref` against a walked `inc` (more than kScanLimit vertices; Gregorius): the answer of TextbookFaces,
+/// Face query of `ref` against a walked `inc` (more than kScanLimit vertices; Gregorius): the answer of ScanFaces,
 /// from the faces near the contact.
 /// Outline:
 ///   1. Start at a face of ref farther from inc's centroid than its neighbours, in O(log n) steps: bisect for the
@@ -199,7 +199,7 @@ int WedgeOf(const PolygonT<S>& polygon, Vec2T<S> point, int start)
 ///      pairs of satviz-bench, a pass over a 1024-gon walks to 1 to 90 faces instead of 1024.
 ///   6. Second pass only: a face of ref exactly anti-parallel to a face of inc repeats the test the first pass made
 ///      from that face, and is skipped: inc's support edge is then exactly perpendicular to the direction.
-/// kUnit selects unit normals (Collide) or raw edge normals (Overlap), as in TextbookFaces.
+/// kUnit selects unit normals (Collide) or raw edge normals (Overlap), as in ScanFaces.
 template <bool kUnit, typename S, typename Tracer>
 FaceQuery<S> WalkFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, S floor,
                        Tracer& tracer)
