@@ -103,18 +103,14 @@ void WakeIslands(World& world, std::vector<int>& seeds)
 
 } // namespace
 
-// Whether the pair (i, j), still apart, is left to the sweep instead of given a speculative contact: one body is
-// static, the other a bullet (it moves farther within the step than its reach, speculativeReach outer radii, or
-// turns faster than speculativeTurn), and it outruns the static body (detail::OutrunsPair, the sweep's own rule),
-// judged from the velocities after the step's gravity. A speculative contact holds its pair at the velocities the
-// solver leaves, to first order, from the start of the step: it would bounce a bullet off a wall it has not reached
-// yet, far short of where the exact hit would leave it. The sweep finds that hit at its time instead. The points
-// are kept as a guard (WorldContact::guard): the velocity passes ignore them, and the position passes, which push
+// Whether the pair (i, j), still apart, is left to the sweep instead of given a speculative contact: one of its
+// bodies is a bullet (it moves farther within the step than its reach, speculativeReach outer radii, or turns
+// faster than speculativeTurn) and the two outrun each other (detail::OutrunsPair, the sweep's own rule), judged
+// from the velocities after the step's gravity. A speculative contact holds its pair at the velocities the solver
+// leaves, to first order, from the start of the step: it would bounce a bullet off a face it has not reached yet,
+// far short of where the exact hit would leave it. The sweep finds that hit at its time instead. The points are
+// kept as a guard (WorldContact::guard): the velocity passes ignore them, and the position passes, which push
 // bodies out of each other, see that a ball skimming a floor is there and do not push it through.
-// Two moving bodies keep their speculative contact, bullet or not: it stops their approach at the gap, so they
-// cannot pass through each other, and a bullet landing on a pile is solved with the pile's contacts at once
-// rather than hit by hit, each hit passed on through the pile (the sweep still takes the pair if a hit changes
-// either body's course).
 // Inline: FindContacts, its only caller, asks it of every pair still apart.
 inline bool Stepper::LeftToSweep(int i, int j) const
 {
@@ -124,10 +120,6 @@ inline bool Stepper::LeftToSweep(int i, int j) const
     }
     const RigidBody& a = world.bodies[static_cast<size_t>(i)];
     const RigidBody& b = world.bodies[static_cast<size_t>(j)];
-    if (a.type != BodyType::Static && b.type != BodyType::Static)
-    {
-        return false;
-    }
     const bool movesA = IsAwakeDynamic(a), movesB = IsAwakeDynamic(b);
     const Vec2 va = movesA ? a.velocity + dt * settings.gravity : Vec2{};
     const Vec2 vb = movesB ? b.velocity + dt * settings.gravity : Vec2{};

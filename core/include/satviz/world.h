@@ -218,8 +218,7 @@ std::string ValidateBodyDef(const BodyDef& def);
 ///     touching pairs into contacts, and the pairs still apart but within their reaches into speculative contacts
 ///     (points with a gap), keeping the impulses of the points that persist from the last step (warm starting).
 ///     A bullet (a body that moves beyond its reach, or turns faster than speculativeTurn) gets no speculative
-///     contact with a static body it moves fast against: the sweep takes that pair (between two moving bodies the
-///     speculative contact stays, and stops their approach). Such pairs, and a body within
+///     contact with what it moves fast against: the sweep takes that pair. Such pairs, and a body within
 ///     maxCorrection of a static body beyond its reach, get guards instead (WorldContact::guard).
 ///  2. Velocities: gravity, then the velocity passes, over the contacts from the highest to the lowest along
 ///     gravity (so the weight of a pile's upper rows reaches the rows below within one pass; without gravity, in
