@@ -583,7 +583,7 @@ void App::ChangeChoices(const ViewChoices& choices)
 void App::SetPair(const std::string& bodyA, const std::string& bodyB)
 {
     const Viewer& viewer = viewer_;
-    if (viewer.Setup().Ok())
+    if (viewer.TestsPair())
     {
         // The pair shown may come from the scene's first two bodies rather than from names: naming it is no change.
         const Scene& studied = viewer.Studied();
@@ -676,7 +676,7 @@ void App::Refresh()
     {
         fresh = viewer_.Refresh(scene);
     }
-    if (viewer_.Setup().Ok())
+    if (viewer_.TestsPair())
     {
         sim_.ChoosePair(viewer_.Setup().study.bodyA, viewer_.Setup().study.bodyB);
     }

@@ -82,7 +82,7 @@ bool Contains(const Body& body, Vec2 world)
 // The body under world point `world`, -1 for none. The pair is drawn above the other bodies, B on top.
 int BodyAt(const Viewer& viewer, const Scene& scene, Vec2 world)
 {
-    if (viewer.Setup().Ok())
+    if (viewer.TestsPair())
     {
         for (int index : {viewer.Setup().study.bodyB, viewer.Setup().study.bodyA})
         {

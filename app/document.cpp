@@ -39,9 +39,14 @@ OpenResult Document::Open(const std::string& path, const std::string& bundledDir
         opened.error = result.error;
         return opened;
     }
-    if (result.scene.bodies.size() < 2)
+    // A figure of one body (a decomposition, a slice) tests no pair: its scene may hold that body alone, as
+    // satviz-render draws it. Any other figure tests a pair.
+    const FigureKind figure = result.scene.view.figure;
+    const bool ofOneBody = figure == FigureKind::Decomposition || figure == FigureKind::Slice;
+    if (result.scene.bodies.empty() || (result.scene.bodies.size() < 2 && !ofOneBody))
     {
-        opened.error = path + ": bodies: the app needs at least two bodies to test";
+        opened.error = path + ": bodies: the app needs at least two bodies to test, or one for a view.figure of "
+                              "one body (\"decomposition\", \"slice\")";
         return opened;
     }
     // A view that asks for rigid-body steps is shown where they leave the bodies, as satviz-render draws it: the
@@ -62,7 +67,9 @@ OpenResult Document::Open(const std::string& path, const std::string& bundledDir
     std::error_code code;
     const auto canonical = std::filesystem::weakly_canonical(path, code);
     const auto bundled = std::filesystem::weakly_canonical(bundledDir, code);
-    readOnly_ = !bundledDir.empty() && canonical.parent_path() == bundled;
+    // The bundled scenes' folder and its folders (tutorials/scenes/concave...).
+    const std::filesystem::path within = canonical.lexically_relative(bundled);
+    readOnly_ = !bundledDir.empty() && !within.empty() && *within.begin() != "..";
     savedContent_ = SceneContent(scene_);
     dirty_ = false;
     undo_.clear();

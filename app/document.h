@@ -28,9 +28,9 @@ class Document
 {
   public:
     /// Opens the scene file `path`, as written (its view's sim_steps are checked: they must leave a state a scene
-    /// holds). A file in
-    /// `bundledDir` (the bundled scenes) opens read-only: saving asks for another file. On failure the document
-    /// stays as it was.
+    /// holds). It needs two bodies, or one when its view's figure is of one body (a decomposition, a slice). A file
+    /// in `bundledDir` (the bundled scenes) or a folder of it opens read-only: saving asks for another file. On
+    /// failure the document stays as it was.
     OpenResult Open(const std::string& path, const std::string& bundledDir);
     /// Writes `saved` (the scene with the view block of the moment) to `path` atomically; from then on the document
     /// holds it, from that file, without unsaved changes. False, with `error` set, when it cannot be written.

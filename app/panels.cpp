@@ -494,10 +494,15 @@ void Panels::SidePanel()
     }
     ImGui::Separator();
     SimulationControls();
-    if (app_.GetViewer().Setup().Ok())
+    if (app_.GetViewer().TestsPair())
     {
         StepControls();
         Inspector();
+    }
+    else if (app_.GetViewer().Setup().Ok())
+    {
+        WrappedText("This figure, \"" + std::string(FigureKindName(app_.GetViewer().CurrentFigure().kind)) +
+                    "\", draws one body by itself: no pair is tested, so there are no steps to follow.");
     }
     if (ImGui::CollapsingHeader("Layers"))
     {

@@ -293,7 +293,7 @@ void Viewer::WriteView(Scene& saved) const
     view.width = canvasWidth_;
     view.height = canvasHeight_;
     WriteChoices(choices_, view);
-    if (setup_.Ok())
+    if (TestsPair())
     {
         // The pair tested, named as in the scene it was tested on.
         view.bodyA = studied_.bodies[static_cast<size_t>(setup_.study.bodyA)].name;

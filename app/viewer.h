@@ -50,6 +50,9 @@ class Viewer
     int PairVertices(const Scene& scene) const;
     /// The pair's queries and the figure of the last finished test.
     const FigureSetup& Setup() const { return setup_; }
+    /// True when the last finished test is of a pair: a figure of one body (a decomposition or a slice of a scene
+    /// that holds that body alone) has a figure but no pair, no steps and nothing to inspect.
+    bool TestsPair() const { return setup_.Ok() && setup_.study.bodyA >= 0 && setup_.study.bodyB >= 0; }
     /// The scene that Setup() describes: the current one, or the one before the edits whose test still runs.
     const Scene& Studied() const { return studied_; }
     /// The figure to paint now: the last test's, with the camera, the step and the stepped world.

@@ -1222,6 +1222,50 @@ TEST_CASE("Every scene a lesson names opens in the app, with a figure and its st
     }
 }
 
+TEST_CASE("Every bundled scene, in every folder of tutorials/scenes, opens in the app with its figure", "[app]")
+{
+    // The loader's rule against satviz-render's: a scene it draws, the app opens and shows, read-only (a bundled
+    // scene). A scene of one body is drawn by a figure of one body only.
+    const fs::path scenes = fs::path(SATVIZ_SOURCE_DIR) / "tutorials" / "scenes";
+    int opened = 0;
+    int alone = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(scenes))
+    {
+        if (entry.path().extension() != ".json")
+        {
+            continue;
+        }
+        INFO(entry.path().string());
+        const SceneResult loaded = LoadScene(entry.path().string(), SceneOptions{true});
+        REQUIRE(loaded.Ok());
+        FigureOptions options;
+        options.width = 800;
+        options.height = 600;
+        const bool drawn = SetUpFigure(loaded.scene, options).Ok();
+        Harness h((scenes / "overlapping_boxes.json").string());
+        CHECK(h.app->Open(entry.path().string()) == drawn);
+        if (!drawn)
+        {
+            continue;
+        }
+        ++opened;
+        alone += loaded.scene.bodies.size() == 1 ? 1 : 0;
+        CHECK(fs::equivalent(h.Doc().File(), entry.path()));
+        CHECK(h.Doc().ReadOnly());
+        h.Frames(3);
+        h.AwaitStudy();
+        CHECK(h.View().Setup().Ok());
+        CHECK(!h.app->StatusIsError());
+        // The arrows and the step keys on a figure without steps change nothing and break nothing.
+        h.Key(kRight);
+        h.Key(kLeft);
+        h.Frames(2);
+        CHECK(h.View().Setup().Ok());
+    }
+    CHECK(opened >= 100);
+    CHECK(alone >= 4); // the decompositions and slices of lesson 18
+}
+
 TEST_CASE("Lesson Markdown is parsed with md4c into headings, text, items, code, figures and table rows",
           "[app][lessons]")
 {
