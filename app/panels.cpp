@@ -497,7 +497,10 @@ void Panels::SidePanel()
     if (app_.GetViewer().TestsPair())
     {
         StepControls();
-        Inspector();
+        if (app_.GetViewer().CurrentFigure().kind != FigureKind::Pieces)
+        {
+            Inspector();
+        }
     }
     else if (app_.GetViewer().Setup().Ok())
     {
@@ -549,6 +552,14 @@ void Panels::StepControls()
             }
             ImGui::EndCombo();
         }
+    }
+    if (viewer.CurrentFigure().kind == FigureKind::Pieces)
+    {
+        // The steps and numbers below are those of SAT on two convex shapes; a concave body's would be its hull's.
+        WrappedText("A concave body is tested piece by piece, as the canvas shows: its caption gives the pairs of "
+                    "pieces tested and the merged verdict. SAT's axes and numbers would be those of its hull, which "
+                    "is not the body, so they are not shown.");
+        return;
     }
     int query = static_cast<int>(choices.query);
     const char* queries[] = {"automatic (sweep when moving)", "static test (Collide)", "swept test (Sweep)"};

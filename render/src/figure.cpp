@@ -102,6 +102,10 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
         setup.error = "view.pair: names no pair of distinct bodies";
         return setup;
     }
+    // SAT holds for convex shapes only: the pair figure of a concave body would test its hull, the classic
+    // mistake. Its test is the concave one, piece by piece, which the pieces figure draws.
+    const bool concavePair = scene.bodies[static_cast<size_t>(a)].IsConcave() || scene.bodies[static_cast<size_t>(b)].IsConcave();
+    const FigureKind kind = view.figure == FigureKind::Pair && concavePair ? FigureKind::Pieces : view.figure;
     setup.study =
         StudyPair(scene, a, b, view.query, view.singlePrecision, options.setSteps ? options.steps : view.steps);
     setup.study.pitfall = RunPitfall(view.pitfall, scene, a, b);
@@ -126,7 +130,7 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
         figure.view.height = height;
     }
     const int step = options.setStep ? options.step : view.step;
-    figure.kind = view.figure;
+    figure.kind = kind;
     const int steps = FigureStepCount(scene, setup);
     if (step >= steps)
     {
@@ -135,11 +139,11 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
                       " (the last is the verdict)";
         return setup;
     }
-    figure.step = step < 0 ? (view.figure == FigureKind::Pieces ? steps - 1 : setup.study.VerdictStep()) : step;
+    figure.step = step < 0 ? (kind == FigureKind::Pieces ? steps - 1 : setup.study.VerdictStep()) : step;
     figure.time = view.time;
     figure.caption = view.caption;
     figure.sim = options.sim;
-    figure.kind = view.figure;
+    figure.kind = kind;
     figure.body = BodyIndex(scene, view.bodyA, 0);
     return setup;
 }
