@@ -9,6 +9,7 @@
 // [SECTION] Status bar, popups and help
 // [SECTION] Lesson window
 #include "app.h"
+#include "study_numbers.h"
 #include "wrapped_text.h"
 
 #include <satviz/render/describe.h>
@@ -730,13 +731,13 @@ void Panels::Inspector()
     {
         WrappedText("A polygon is not valid once rounded to float: the numbers are double.");
     }
-    // Every number in full, as the shortest decimal that reads back as the same value.
+    // Every number in full, as the shortest decimal that reads back as the same value, with at least the two
+    // decimals the figures and the lessons give.
     auto full = [&](double v) {
-        return study.singlePrecision ? ShortestDecimal(static_cast<float>(v)) : ShortestDecimal(v);
+        return study.singlePrecision ? FullDecimal(static_cast<float>(v)) : FullDecimal(v);
     };
     auto number = [&](const std::string& label, double v) { NumberLine(label, {full(v)}); };
     auto point = [&](const std::string& label, Vec2 p) { NumberLine(label, {full(p.x), full(p.y)}); };
-    const Manifold& m = study.manifold;
     // A sweep's numbers first, as its verdict gives them; then the static test where the bodies start (t = 0),
     // under a heading of its own, since its gap or overlap is not the sweep's answer.
     if (study.sweep)
@@ -768,27 +769,9 @@ void Panels::Inspector()
     {
         WrappedText("Moving, but overlapping at t = 0: no time of impact; the static test at t = 0:");
     }
-    ImGui::Text("overlap: %s", m.overlap ? "yes" : "no");
-    // The textbook view shows the MTV its own test found; the contact points come from Collide's clipping.
-    const bool textbook = study.Textbook();
-    const double depth = textbook ? study.textbookResult.depth : m.depth;
-    const double gap = textbook ? study.textbookResult.gap : m.gap;
-    const Vec2 normal = textbook ? study.textbookResult.normal : m.normal;
-    if (m.overlap)
+    for (const NumberRow& row : StaticTestNumbers(app_.ShownScene(), study))
     {
-        number("MTV length (depth)", depth);
-    }
-    else
-    {
-        number("gap on the separating axis", gap);
-    }
-    point(m.overlap ? "MTV direction (A to B)" : "separating axis (A to B)", normal);
-    for (int i = 0; i < m.contactCount; ++i)
-    {
-        // In the order the figure labels them c1, c2, and satviz-query lists "contacts"; in a sweep the figure's
-        // c1 and c2 are the contacts at the time of impact, so these are only numbered.
-        point(study.sweep ? "contact " + std::to_string(i + 1) : "contact c" + std::to_string(i + 1),
-              m.contacts[i].point);
+        NumberLine(row.label, row.parts);
     }
     if (study.sweep)
     {

@@ -850,6 +850,37 @@ std::string ShortestDecimal(float value)
     return Shortest(value);
 }
 
+namespace
+{
+
+// Pads a shortest decimal to two decimals: "0.8" to "0.80", "1" to "1.00"; an exponent form is left alone.
+std::string TwoDecimalsAtLeast(std::string text)
+{
+    if (text.find_first_of("eEni") != std::string::npos) // 1e-05, inf, nan
+    {
+        return text;
+    }
+    const size_t point = text.find('.');
+    if (point == std::string::npos)
+    {
+        return text + ".00";
+    }
+    const size_t decimals = text.size() - point - 1;
+    return decimals >= 2 ? text : text + std::string(2 - decimals, '0');
+}
+
+} // namespace
+
+std::string FullDecimal(double value)
+{
+    return TwoDecimalsAtLeast(Shortest(value));
+}
+
+std::string FullDecimal(float value)
+{
+    return TwoDecimalsAtLeast(Shortest(value));
+}
+
 std::string DescribeAxis(const Scene& scene, const PairStudy& study, const AxisRef& axis)
 {
     switch (axis.kind)

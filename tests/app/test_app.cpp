@@ -3,6 +3,7 @@
 // would. Drags move bodies, keys step through the trace, undo restores, refused edits say why.
 #include "app.h"
 #include "key_queue.h"
+#include "study_numbers.h"
 #include "wrapped_text.h"
 
 #include <satviz/collide.h>
@@ -10,6 +11,7 @@
 #include <satviz/render/describe.h>
 #include <satviz/render/response_steps.h>
 #include <satviz/render/wrap.h>
+#include <satviz/query_json.h>
 #include <satviz/scene_world.h>
 
 #include <catch2/catch.hpp>
@@ -1552,6 +1554,62 @@ TEST_CASE("A scene that frames itself keeps its framing, scaled to the canvas le
     REQUIRE(h.app->OpenLesson(16));
     h.Frames(3);
     CHECK(h.View().Camera().zoom == held);
+}
+
+TEST_CASE("The Numbers panel gives the deciding axis as the figure and the lessons do, the normal as satviz-query",
+          "[app]")
+{
+    // Lesson 3's table gives l03_corner_gap's axis 4 as (-0.80, -0.60), the outward normal of B's face e3, as the
+    // figure draws it and satviz-query's trace lists it; satviz-query's "normal" is the same line from A to B,
+    // (0.80, 0.60). The panel gives both, each under its own name, with at least the lessons' two decimals.
+    for (const StepView view : {StepView::Textbook, StepView::Faces})
+    {
+        const std::string file = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/l03_corner_gap.json";
+        SceneResult loaded = LoadScene(file);
+        REQUIRE(loaded.Ok());
+        const PairStudy study = StudyPair(loaded.scene, 0, 1, ViewQuery::Collide, false, view);
+        const nlohmann::ordered_json answer = QuerySceneJson(loaded.scene, file, true, view);
+        const nlohmann::ordered_json& pair = answer["pairs"][0];
+        const std::vector<NumberRow> rows = StaticTestNumbers(loaded.scene, study);
+        auto row = [&](const std::string& start) -> const NumberRow* {
+            for (const NumberRow& r : rows)
+            {
+                if (r.label.rfind(start, 0) == 0)
+                {
+                    return &r;
+                }
+            }
+            return nullptr;
+        };
+        // The axis that ended the test: the last one the trace lists.
+        const nlohmann::ordered_json& axes = pair["trace"]["axes"];
+        const size_t last = axes.size() - 1;
+        const std::string which = view == StepView::Textbook ? "deciding axis " : "deciding face test ";
+        const NumberRow* axis = row(which + std::to_string(last + 1) + ", the normal of B's edge 3");
+        INFO(which);
+        REQUIRE(axis != nullptr);
+        REQUIRE(axis->parts.size() == 2);
+        CHECK(std::stod(axis->parts[0]) == axes[last]["direction"][0].get<double>());
+        CHECK(std::stod(axis->parts[1]) == axes[last]["direction"][1].get<double>());
+        CHECK(axis->parts[0] == "-0.80");
+        CHECK(axis->parts[1] == "-0.60");
+        const NumberRow* normal = row("normal (A to B)");
+        REQUIRE(normal != nullptr);
+        CHECK(std::stod(normal->parts[0]) == pair["normal"][0].get<double>());
+        CHECK(std::stod(normal->parts[1]) == pair["normal"][1].get<double>());
+        CHECK(normal->parts[0] == "0.80");
+        CHECK(normal->parts[1] == "0.60");
+    }
+    CHECK(FullDecimal(0.8) == "0.80");
+    CHECK(FullDecimal(-1.0) == "-1.00");
+    CHECK(FullDecimal(-0.0) == "0.00");
+    CHECK(FullDecimal(0.20000000000000018) == "0.20000000000000018");
+    CHECK(FullDecimal(0.4825f) == "0.4825");
+    CHECK(FullDecimal(2.5e-5) == ShortestDecimal(2.5e-5));
+    for (const double x : {0.1, -2.55, 123.0, 1e-7, 3e21, 0.30000000000000004})
+    {
+        CHECK(std::strtod(FullDecimal(x).c_str(), nullptr) == x);
+    }
 }
 
 TEST_CASE("Text in the panels wraps between words only: a number is never split, nor a bracketed pair", "[app]")

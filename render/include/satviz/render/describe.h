@@ -31,6 +31,14 @@ std::string ShortestDecimal(double value);
 /// The shortest decimal that reads back as the same float.
 std::string ShortestDecimal(float value);
 
+/// A number in full for a panel: ShortestDecimal with at least two decimals, as the figures and the lessons write
+/// them (0.80, -1.10, 0.00, and 0.20000000000000018 as it is), so that a panel's number reads as the lesson's; a
+/// number written with an exponent stays as ShortestDecimal writes it. Reads back as the same double.
+std::string FullDecimal(double value);
+
+/// The same for a float: reads back as the same float.
+std::string FullDecimal(float value);
+
 /// Where an axis comes from, in words: "normal of B's edge 1", "from pentagon's vertex 2 to ball's centre".
 std::string DescribeAxis(const Scene& scene, const PairStudy& study, const AxisRef& axis);
 

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+#include "study_numbers.h"
+
+#include <satviz/render/describe.h>
+
+namespace satviz
+{
+
+std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study)
+{
+    // In single precision the queries ran on floats: their numbers are floats widened, shown as floats.
+    auto full = [&](double v) {
+        return study.singlePrecision ? FullDecimal(static_cast<float>(v)) : FullDecimal(v);
+    };
+    std::vector<NumberRow> rows;
+    auto point = [&](const std::string& label, Vec2 p) { rows.push_back({label, {full(p.x), full(p.y)}}); };
+    const Manifold& m = study.manifold;
+    rows.push_back({"overlap", {m.overlap ? "yes" : "no"}});
+    // The textbook view shows the MTV its own test found; the contact points come from Collide's clipping.
+    const bool textbook = study.Textbook();
+    const double depth = textbook ? study.textbookResult.depth : m.depth;
+    const double gap = textbook ? study.textbookResult.gap : m.gap;
+    const Vec2 normal = textbook ? study.textbookResult.normal : m.normal;
+    rows.push_back(m.overlap ? NumberRow{"MTV length (depth)", {full(depth)}}
+                             : NumberRow{"gap on the separating axis", {full(gap)}});
+    // The axis the verdict decides on, as the figure's verdict step draws it: the axis that separates, else the
+    // one of the smallest push (textbook) or the best face (face tests). A sweep's steps are those of the sweep.
+    if (!study.sweep)
+    {
+        if (textbook && !study.textbook.axes.empty())
+        {
+            const int last = static_cast<int>(study.textbook.axes.size()) - 1;
+            const int k = study.textbookResult.axis >= 0 && study.textbookResult.axis <= last
+                              ? study.textbookResult.axis
+                              : last;
+            const TextbookAxis& axis = study.textbook.axes[static_cast<size_t>(k)];
+            point("deciding axis " + std::to_string(k + 1) + ", " + DescribeAxis(scene, study, axis.faces[0]),
+                  axis.direction);
+        }
+        else if (!textbook && !study.trace.axes.empty())
+        {
+            const AxisTest& last = study.trace.axes.back();
+            const int k = last.separating || last.best < 0 ? static_cast<int>(study.trace.axes.size()) - 1 : last.best;
+            const AxisTest& axis = study.trace.axes[static_cast<size_t>(k)];
+            point("deciding face test " + std::to_string(k + 1) + ", " + DescribeAxis(scene, study, axis.axis),
+                  axis.direction);
+        }
+    }
+    point(m.overlap ? "MTV direction (A to B)" : "normal (A to B)", normal);
+    for (int i = 0; i < m.contactCount; ++i)
+    {
+        // In the order the figure labels them c1, c2, and satviz-query lists "contacts".
+        point(study.sweep ? "contact " + std::to_string(i + 1) : "contact c" + std::to_string(i + 1),
+              m.contacts[i].point);
+    }
+    return rows;
+}
+
+} // namespace satviz

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// satviz app: the numbers of the static test that the Numbers panel lists, in the words and the decimals of the
+// figures and the lessons.
+#pragma once
+
+#include <satviz/render/study.h>
+
+#include <string>
+#include <vector>
+
+namespace satviz
+{
+
+/// One line of the Numbers panel: what the number is, and one value or a point's two coordinates.
+struct NumberRow
+{
+    std::string label;              ///< "deciding axis 4, the normal of B's edge 3"
+    std::vector<std::string> parts; ///< one value, or a point's x and y, in full (FullDecimal)
+};
+
+/// The static test's numbers, in full: overlap or not, the depth or the gap, the deciding axis as the figure draws
+/// it and the lessons' tables list it (the outward normal of the face that names it, the direction satviz-query's
+/// trace gives), the normal from A to B (satviz-query's "normal"; against the axis when that is a face of B), and
+/// the contact points c1, c2 (only numbered in a sweep, whose c1 and c2 are the contacts at the time of impact).
+std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study);
+
+} // namespace satviz
