@@ -181,6 +181,40 @@ TEST_CASE("Parallel edges: aligned boxes test 2 axes, rotated boxes 4", "[cases]
     CHECK(TestedAxes(trace) == 6);
 }
 
+TEST_CASE("A skipped last face of a polygon above 8 faces takes no part, at every angle", "[cases][trace]")
+{
+    // A 2 x 2 box, and B a half disc of nine vertices whose last face (vertex 8 to vertex 0) is its flat bottom. B
+    // rests on A's top face 0.1 deep, both turned by the same angle: B's bottom is anti-parallel to A's top, so the
+    // face query of B skips it as a repeat of A's. Both faces have the same depth by hand, so the reference face is
+    // A's top (A's on a tie) at depth 0.1, whichever of the two the rounding makes an ulp shallower. B's faces are
+    // tested four at a time, and the last block holds face 8 with three lanes past it.
+    const Polygon a = Box(1.0, 1.0);
+    std::vector<Vec2> half;
+    for (int k = 0; k <= 8; ++k)
+    {
+        half.push_back({std::cos(kPi * k / 8), std::sin(kPi * k / 8)});
+    }
+    half.back() = {-1.0, 0.0}; // exactly level with vertex 0: the bottom's normal is exactly (0, -1)
+    const Polygon b = Poly(half);
+    REQUIRE(b.Count() == 9);
+    for (int step = 0; step < 360; ++step)
+    {
+        const double angle = 2.0 * kPi * step / 360;
+        const Vec2 offset{0.3 * std::cos(angle) - 0.9 * std::sin(angle), 0.3 * std::sin(angle) + 0.9 * std::cos(angle)};
+        Trace trace;
+        const Manifold m = Collide(a, At(0, 0, angle), b, At(offset.x, offset.y, angle));
+        const Manifold t = Collide(a, At(0, 0, angle), b, At(offset.x, offset.y, angle), &trace);
+        INFO("angle step " << step);
+        REQUIRE(m.overlap);
+        CHECK(m.axis.shape == 0);
+        CHECK(m.axis.index == 2);
+        CHECK_THAT(m.depth, WithinAbs(0.1, 1e-14));
+        CHECK(t.axis.shape == m.axis.shape);
+        CHECK(t.axis.index == m.axis.index);
+        CHECK(t.depth == m.depth);
+    }
+}
+
 TEST_CASE("Vertex against edge and edge against vertex", "[cases]")
 {
     const Polygon triangle = Poly({{0.0, 0.0}, {1.0, 0.0}, {0.5, 1.0}});

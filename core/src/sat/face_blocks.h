@@ -242,11 +242,13 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
 /// The face query of Collide (unit normals) against a scanned inc, four faces of ref at a time in lanes, with the
 /// answer of the textbook loop (ScanFaces). Each vertex of inc is projected on four normals at once, so no minimum is
 /// taken across lanes, and a block of four faces costs one branch instead of one per face, whose outcome follows the
-/// geometry and would be mispredicted. The last block repeats the last face, which changes no answer. Each lane keeps
-/// the largest separation it saw and its first face; the lanes combine into the first face of the largest separation,
-/// as a face-by-face loop finds it. A block that holds a separating face ends the query at the first such face. The
-/// recorder replays the block's faces in order, up to that face, with the same numbers. A ref of at most 8 faces
-/// takes SmallRefFaceQuery instead, and Overlap of small polygons SmallFacesSeparate (raw edge normals).
+/// geometry and would be mispredicted. The last block repeats the last face, which changes no answer: a skipped last
+/// face is skipped in every lane that repeats it, else its separation, which may round apart from that of the other
+/// polygon's face it repeats, would count. Each lane keeps the largest separation it saw and its first face; the lanes combine into the
+/// first face of the largest separation, as a face-by-face loop finds it. A block that holds a separating face ends
+/// the query at the first such face. The recorder replays the block's faces in order, up to that face, with the same
+/// numbers. A ref of at most 8 faces takes SmallRefFaceQuery instead, and Overlap of small polygons
+/// SmallFacesSeparate (raw edge normals).
 template <int N, typename S, typename Tracer>
 FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second,
                             Tracer& tracer)
@@ -254,7 +256,12 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
     using L = Lanes<S, Tracer::kWide && std::is_same_v<S, double>>;
     constexpr S kInfinity = std::numeric_limits<S>::infinity();
     const int n = ref.Count();
-    const uint64_t skip = SecondPassSkips<Tracer::kSkipParallel>(ref, inc, second);
+    uint64_t skip = SecondPassSkips<Tracer::kSkipParallel>(ref, inc, second);
+    if (n < 64 && ((skip >> (n - 1)) & 1u) != 0)
+    {
+        // The lanes past the last face repeat it: a skipped last face is skipped in them too.
+        skip |= ~uint64_t(0) << n;
+    }
     FaceQuery<S> query;
     query.face = 0;
     L best = L::Fill(-kInfinity);
