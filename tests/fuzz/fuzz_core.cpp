@@ -95,8 +95,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     {
         return 0;
     }
-    const satviz::Transform xfA = satviz::MakeTransform(satviz::Vec2{in.Double(), in.Double()}, in.Double());
-    const satviz::Transform xfB = satviz::MakeTransform(satviz::Vec2{in.Double(), in.Double()}, in.Double());
+    // Each transform's position, then its angle, read in that order whatever the compiler: the order in which a
+    // call's arguments are evaluated is unspecified, and a compiler that read the angle first would replay the
+    // corpus as other pairs than the fuzzer found.
+    const satviz::Vec2 pA{in.Double(), in.Double()};
+    const double angleA = in.Double();
+    const satviz::Vec2 pB{in.Double(), in.Double()};
+    const double angleB = in.Double();
+    const satviz::Transform xfA = satviz::MakeTransform(pA, angleA);
+    const satviz::Transform xfB = satviz::MakeTransform(pB, angleB);
     const satviz::Vec2 vA{in.Double(), in.Double()};
     const satviz::Vec2 vB{in.Double(), in.Double()};
     const bool overlap = satviz::Overlap(a, xfA, b, xfB);
