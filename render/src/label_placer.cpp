@@ -211,7 +211,7 @@ bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
     {
         return false;
     }
-    labels_.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false});
+    labels_.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}});
     return true;
 }
 
@@ -227,6 +227,24 @@ bool LabelPlacer::PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoin
     labels_.back().avoid = other;
     labels_.back().edgesOnly = InsideConvex(other, anchor);
     return true;
+}
+
+void LabelPlacer::AlsoAt(std::vector<ScreenPoint> anchors)
+{
+    if (labels_.empty())
+    {
+        return;
+    }
+    Label& label = labels_.back();
+    // An anchor in the other body would put the label there, where it reads as that body's, unless the label's own
+    // anchor lies there too.
+    if (!label.avoid.empty() && !label.edgesOnly)
+    {
+        anchors.erase(std::remove_if(anchors.begin(), anchors.end(),
+                                     [&](ScreenPoint p) { return InsideConvex(label.avoid, p); }),
+                      anchors.end());
+    }
+    label.alternates = std::move(anchors);
 }
 
 void LabelPlacer::KeepOnSide()
@@ -327,6 +345,7 @@ void LabelPlacer::Flush(Color halo)
         const Label* label;
         ScreenRect rect;
         bool leader;
+        ScreenPoint from; // the anchor it sits beside
     };
     std::vector<Placed> placed;
     reserved_ = taken_.size(); // the marks, panels and lines reserved; the labels' footprints follow
@@ -341,33 +360,45 @@ void LabelPlacer::Flush(Color halo)
         // Near the anchor: eight directions at three distances, the preferred direction first; turning a label 45
         // degrees away from it costs about as much as moving it 12 pixels farther out. A space's width is kept from
         // other labels ("gap 0.60" beside "0" reads "gap 0.600") and given up before a label has to move farther.
+        // A label with other anchors along what it names slides there before it turns: each next anchor costs a
+        // little less than a turn of 45 degrees, and only the preferred direction and the one opposite are tried
+        // at them, square to what it names (a label turned part way would sit beyond its end or across it).
         struct Candidate
         {
             int turn;
             int ring;
+            size_t anchor; // 0: the label's own anchor, k: alternates[k - 1]
         };
         std::vector<Candidate> candidates;
         for (int ring = 0; ring < 3; ++ring)
         {
             for (int turn : {0, 1, -1, 2, -2, 3, -3, 4})
             {
-                candidates.push_back({turn, ring});
+                candidates.push_back({turn, ring, 0});
+            }
+            for (size_t k = 1; k <= label->alternates.size(); ++k)
+            {
+                candidates.push_back({0, ring, k});
+                candidates.push_back({4, ring, k});
             }
         }
-        std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-            return 4 * std::abs(a.turn) + 3 * a.ring < 4 * std::abs(b.turn) + 3 * b.ring;
-        });
+        auto cost = [](const Candidate& c) { return 4 * std::abs(c.turn) + 3 * c.ring + 3 * static_cast<int>(c.anchor); };
+        std::stable_sort(candidates.begin(), candidates.end(),
+                         [&](const Candidate& a, const Candidate& b) { return cost(a) < cost(b); });
+        ScreenPoint from = label->anchor;
         for (int pass = 0; pass < 2 && !found; ++pass)
         {
             for (const Candidate& c : candidates)
             {
+                const ScreenPoint at = c.anchor == 0 ? label->anchor : label->alternates[c.anchor - 1];
                 const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
-                const ScreenRect rect = Around(label->anchor, size, start + c.turn * 0.25 * kPi, reach);
+                const ScreenRect rect = Around(at, size, start + c.turn * 0.25 * kPi, reach);
                 if (Inside(rect) && Free(rect, pass == 0 ? kLabelSpacing : 0.0f, label->rank) &&
-                    !InOutline(label->avoid, rect, label->edgesOnly, label->anchor) &&
-                    OnItsSide(label->onSide, label->anchor, label->dx, label->dy, rect))
+                    !InOutline(label->avoid, rect, label->edgesOnly, at) &&
+                    OnItsSide(label->onSide, at, label->dx, label->dy, rect))
                 {
                     chosen = rect;
+                    from = at;
                     found = true;
                     break;
                 }
@@ -408,11 +439,11 @@ void LabelPlacer::Flush(Color halo)
             chosen = {chosen.minX + shiftX, chosen.minY + shiftY, chosen.maxX + shiftX, chosen.maxY + shiftY};
         }
         taken_.push_back(Footprint(chosen));
-        placed.push_back({label, chosen, leader});
+        placed.push_back({label, chosen, leader, from});
         if (leader)
         {
             // Later labels keep off the leader line, which their halos would hide.
-            const LeaderLine line = Leader(label->anchor, chosen);
+            const LeaderLine line = Leader(from, chosen);
             if (line.drawn)
             {
                 lines_.push_back({line.from, line.to, 1.0f, LabelRank::Vertex});
@@ -424,7 +455,7 @@ void LabelPlacer::Flush(Color halo)
     {
         if (p.leader)
         {
-            const LeaderLine line = Leader(p.label->anchor, p.rect);
+            const LeaderLine line = Leader(p.from, p.rect);
             if (line.drawn)
             {
                 canvas_.Segment(line.from, line.to, WithAlpha(p.label->color, 0.7f), 1.0f);

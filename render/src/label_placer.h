@@ -52,6 +52,10 @@ class LabelPlacer
     /// anchor lies inside that body. False as for Place.
     bool PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoint anchor, std::string_view text,
                       TextStyle style, Color color, float dx, float dy, float distance, LabelRank rank);
+    /// Lets the label added last sit beside any of `anchors` (points along the face or edge it names, nearest
+    /// first) when no place near its own anchor is free: it slides along what it names, on its preferred side
+    /// or the other, before it moves farther out on a leader line.
+    void AlsoAt(std::vector<ScreenPoint> anchors);
     /// Keeps the label added last on the side its preferred direction points to, beyond the line through its anchor
     /// square to that direction: an edge's name outside its edge, where it names that edge and not the one opposite.
     void KeepOnSide();
@@ -71,6 +75,7 @@ class LabelPlacer
         std::vector<ScreenPoint> avoid; // a convex outline the label stays out of (empty: none)
         bool edgesOnly = false;         // the anchor lies inside `avoid`: the label only keeps off its edges
         bool onSide = false;            // the label's middle stays beyond its anchor along (dx, dy)
+        std::vector<ScreenPoint> alternates; // other anchors along what it names, nearest first
     };
     struct Line
     {

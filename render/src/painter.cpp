@@ -1542,12 +1542,8 @@ class Painter
         }
     }
 
-    // Where to name a face from: the middle of its longest stretch outside `other` (a convex outline on screen),
-    // or its middle when none of it lies outside. A face whose middle the other body covers (a box sunk into a
-    // wide slab) is named beside the part that shows, not beside the other body's edge lying over it.
-    // Covered means inside the other body, or within `near` pixels of it.
-    static ScreenPoint FreeMiddle(ScreenPoint a, ScreenPoint b, const std::vector<ScreenPoint>& other,
-                                  float near = 0.0f)
+    // Whether p lies inside `other` (a convex outline on screen, either way round), or within `near` pixels of it.
+    static bool Covered(ScreenPoint p, const std::vector<ScreenPoint>& other, float near)
     {
         float area = 0.0f;
         for (size_t i = 0; i < other.size(); ++i)
@@ -1556,29 +1552,66 @@ class Painter
             const ScreenPoint& v = other[(i + 1) % other.size()];
             area += u.x * v.y - v.x * u.y;
         }
-        auto inside = [&](ScreenPoint p) {
-            if (other.size() < 3 || area == 0.0f)
+        if (other.size() < 3 || area == 0.0f)
+        {
+            return false;
+        }
+        for (size_t i = 0; i < other.size(); ++i)
+        {
+            const ScreenPoint& u = other[i];
+            const ScreenPoint& v = other[(i + 1) % other.size()];
+            const float length = std::hypot(v.x - u.x, v.y - u.y);
+            if (length == 0.0f)
+            {
+                continue;
+            }
+            // How far p lies outside this edge's line, in pixels (the outline runs either way round).
+            const float cross = (v.x - u.x) * (p.y - u.y) - (v.y - u.y) * (p.x - u.x);
+            if ((area > 0.0f ? -cross : cross) / length >= near)
             {
                 return false;
             }
-            for (size_t i = 0; i < other.size(); ++i)
+        }
+        return true;
+    }
+
+    // Points of the segment ab every `step` pixels, `keep` pixels or more from its ends, that `other` leaves in
+    // sight (Covered with `near`), nearest to `from` first, `from` itself left out: where a face's name may slide
+    // to along it, not so near its ends that it names the corner or the next face.
+    static std::vector<ScreenPoint> AlongFace(ScreenPoint a, ScreenPoint b, ScreenPoint from,
+                                              const std::vector<ScreenPoint>& other, float near, float step = 16.0f,
+                                              float keep = 0.0f)
+    {
+        std::vector<ScreenPoint> points;
+        const float length = std::hypot(b.x - a.x, b.y - a.y);
+        const int count = static_cast<int>(length / step);
+        for (int i = 0; i <= count && length > 0.0f; ++i)
+        {
+            const float t = count == 0 ? 0.5f : static_cast<float>(i) / static_cast<float>(count);
+            if (t * length < keep || (1.0f - t) * length < keep)
             {
-                const ScreenPoint& u = other[i];
-                const ScreenPoint& v = other[(i + 1) % other.size()];
-                const float length = std::hypot(v.x - u.x, v.y - u.y);
-                if (length == 0.0f)
-                {
-                    continue;
-                }
-                // How far p lies outside this edge's line, in pixels (the outline runs either way round).
-                const float cross = (v.x - u.x) * (p.y - u.y) - (v.y - u.y) * (p.x - u.x);
-                if ((area > 0.0f ? -cross : cross) / length >= near)
-                {
-                    return false;
-                }
+                continue;
             }
-            return true;
-        };
+            const ScreenPoint p{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+            if (std::hypot(p.x - from.x, p.y - from.y) >= 0.5f * step && !Covered(p, other, near))
+            {
+                points.push_back(p);
+            }
+        }
+        std::stable_sort(points.begin(), points.end(), [&](ScreenPoint p, ScreenPoint q) {
+            return std::hypot(p.x - from.x, p.y - from.y) < std::hypot(q.x - from.x, q.y - from.y);
+        });
+        return points;
+    }
+
+    // Where to name a face from: the middle of its longest stretch outside `other` (a convex outline on screen),
+    // or its middle when none of it lies outside. A face whose middle the other body covers (a box sunk into a
+    // wide slab) is named beside the part that shows, not beside the other body's edge lying over it.
+    // Covered means inside the other body, or within `near` pixels of it.
+    static ScreenPoint FreeMiddle(ScreenPoint a, ScreenPoint b, const std::vector<ScreenPoint>& other,
+                                  float near = 0.0f)
+    {
+        auto inside = [&](ScreenPoint p) { return Covered(p, other, near); };
         constexpr int kSamples = 40;
         int bestStart = -1, bestLength = 0, runStart = -1;
         for (int i = 0; i <= kSamples + 1; ++i)
@@ -1608,6 +1641,16 @@ class Painter
         return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
     }
 
+    // The point of the segment ab nearest p.
+    static ScreenPoint NearestOnSegment(ScreenPoint a, ScreenPoint b, ScreenPoint p)
+    {
+        const float dx = b.x - a.x;
+        const float dy = b.y - a.y;
+        const float length2 = dx * dx + dy * dy;
+        const float t = length2 > 0.0f ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0f, 1.0f) : 0.0f;
+        return {a.x + dx * t, a.y + dy * t};
+    }
+
     // The reference face, the incident edge and the two side planes that clip it.
     void ClipPlanes(const ClipTrace& clip)
     {
@@ -1633,9 +1676,26 @@ class Painter
             shown1 = r1;
             shown2 = r2;
         }
-        labels_.PlaceOutside(OutlineOf(1 - referenceShape), FreeMiddle(shown1, shown2, OutlineOf(1 - referenceShape)),
-                             "reference face", TextStyle::Label, InkOf(referenceShape), static_cast<float>(-n.x),
-                             static_cast<float>(n.y), 10.0f, LabelRank::Verdict);
+        // The reference face is named where the contact is, as a textbook marks the face the incident edge is
+        // clipped against: from the point of the shown face nearest the contact points' middle that the other body
+        // leaves in sight (a wide floor's free stretch far from the contact would name the floor, not the face of
+        // this contact), sliding along the face from there (AlsoAt) when the contact's own marks leave no room.
+        const std::vector<ScreenPoint> other = OutlineOf(1 - referenceShape);
+        ScreenPoint near = FreeMiddle(shown1, shown2, other);
+        if (study_.manifold.contactCount > 0)
+        {
+            Vec2 middle{};
+            for (int i = 0; i < study_.manifold.contactCount; ++i)
+            {
+                middle = middle + (1.0 / study_.manifold.contactCount) * study_.manifold.contacts[i].point;
+            }
+            const ScreenPoint foot = NearestOnSegment(shown1, shown2, At(middle));
+            const std::vector<ScreenPoint> free = AlongFace(shown1, shown2, foot, other, 0.0f, 4.0f);
+            near = !Covered(foot, other, 0.0f) || free.empty() ? foot : free.front();
+        }
+        labels_.PlaceOutside(other, near, "reference face", TextStyle::Label, InkOf(referenceShape),
+                             static_cast<float>(-n.x), static_cast<float>(n.y), 10.0f, LabelRank::Verdict);
+        labels_.AlsoAt(AlongFace(shown1, shown2, near, other, 0.0f, 16.0f, 40.0f));
         const ScreenPoint i1 = At(clip.incidentV1);
         const ScreenPoint i2 = At(clip.incidentV2);
         canvas_.Segment(i1, i2, InkOf(clip.incidentShape), 5.0f);

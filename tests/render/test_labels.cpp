@@ -612,6 +612,55 @@ std::vector<std::string> NamedFacesUnnamed(const RecordingCanvas& canvas, const 
     return problems;
 }
 
+// A "reference face" label far from the contact: a textbook names the face where the incident edge is clipped
+// against it, beside the contact points (or between them), not at the far end of a long face (a floor's free
+// stretch). Far is more than a label's width and a half from the stretch between the contact points.
+std::vector<std::string> ReferenceFaceFar(const RecordingCanvas& canvas)
+{
+    constexpr float kNear = 120.0f;
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    std::vector<ScreenPoint> contacts;
+    for (const DrawCommand* c : canvas.InGroup("contacts"))
+    {
+        if (c->kind == DrawCommand::Kind::FillCircle && c->color == palette::kResult)
+        {
+            contacts.push_back(c->points[0]);
+        }
+    }
+    if (contacts.empty())
+    {
+        return problems;
+    }
+    const ScreenPoint a = contacts.front();
+    const ScreenPoint b = contacts.back();
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || c->text != "reference face")
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(c->text, c->style);
+        const Box box{c->points[0].x, c->points[0].y, c->points[0].x + size.x, c->points[0].y + size.y};
+        // The distance from the stretch ab to the label's box, sampled along the stretch.
+        float nearest = INFINITY;
+        for (int i = 0; i <= 64; ++i)
+        {
+            const float t = static_cast<float>(i) / 64.0f;
+            const ScreenPoint p{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+            const float x = std::clamp(p.x, box.minX, box.maxX);
+            const float y = std::clamp(p.y, box.minY, box.maxY);
+            nearest = std::min(nearest, std::hypot(x - p.x, y - p.y));
+        }
+        if (nearest > kNear)
+        {
+            problems.push_back(Describe(*c) + " lies " + std::to_string(static_cast<int>(nearest)) +
+                               " pixels from the contact points");
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -668,6 +717,10 @@ std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool face
                 problems.push_back(std::move(p));
             }
             for (std::string& p : NamedFacesUnnamed(canvas, loaded.scene, setup.study))
+            {
+                problems.push_back(std::move(p));
+            }
+            for (std::string& p : ReferenceFaceFar(canvas))
             {
                 problems.push_back(std::move(p));
             }
