@@ -13,6 +13,7 @@
 #include <satviz/render/wrap.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 namespace satviz
@@ -1708,14 +1709,69 @@ class Painter
                              static_cast<float>(-n.y), 10.0f, LabelRank::Verdict);
     }
 
+    // The edges of body `shape` that a sentence names: "floor's edge 2", "box's edges 0 and 2", "B's edges 0, 1
+    // and 3".
+    std::vector<int> EdgesNamedIn(const std::string& text, int shape) const
+    {
+        std::vector<int> edges;
+        const std::string phrase = BodyOf(shape).name + "'s edge";
+        for (size_t at = text.find(phrase); at != std::string::npos; at = text.find(phrase, at + 1))
+        {
+            // Not the end of a longer name ("AB's edge 1" names AB, not B).
+            if (at > 0 && (std::isalnum(static_cast<unsigned char>(text[at - 1])) || text[at - 1] == '_'))
+            {
+                continue;
+            }
+            size_t i = at + phrase.size();
+            const bool many = i < text.size() && text[i] == 's';
+            i += many ? 1 : 0;
+            // " 2", or " 0, 1 and 3" after "edges".
+            while (i + 1 < text.size() && text[i] == ' ' && std::isdigit(static_cast<unsigned char>(text[i + 1])))
+            {
+                size_t end = i + 1;
+                while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])))
+                {
+                    ++end;
+                }
+                edges.push_back(std::stoi(text.substr(i + 1, end - i - 1)));
+                i = end;
+                if (!many)
+                {
+                    break;
+                }
+                if (text.compare(i, 1, ",") == 0)
+                {
+                    ++i;
+                }
+                else if (text.compare(i, 4, " and") == 0)
+                {
+                    i += 4;
+                }
+                else
+                {
+                    break;
+                }
+            }
+        }
+        return edges;
+    }
+
     void Labels()
     {
         canvas_.BeginGroup("labels");
+        // The faces the step's sentences name keep their names however small their body is drawn (a canvas
+        // narrower than the figure, beside a lesson): a sentence about "right wall's edge 3" beside a picture with
+        // no "e3" names nothing the student can find. They are placed before the other edges' names.
+        // The number line's title names the axis's face too.
+        const std::string sentence = DescribeStep(scene_, study_, figure_.step) + " " +
+                                     (hasAxis_ ? DescribeAxis(scene_, study_, axis_.Ref()) : std::string());
         for (int s = 0; s < 2; ++s)
         {
             const Body& body = BodyOf(s);
             const Transform xf = body.Xf();
-            if (body.shape.type == ShapeType::Polygon && body.shape.polygon.Count() <= 24)
+            const std::vector<int> named =
+                body.shape.type == ShapeType::Polygon ? EdgesNamedIn(sentence, s) : std::vector<int>{};
+            if (body.shape.type == ShapeType::Polygon && (body.shape.polygon.Count() <= 24 || !named.empty()))
             {
                 const auto& poly = body.shape.polygon;
                 const Vec2 centroid = TransformPoint(xf, poly.Centroid());
@@ -1725,7 +1781,7 @@ class Painter
                 {
                     extent = std::max(extent, Length(v - poly.Centroid()) * view_.zoom);
                 }
-                const bool vertexNumbers = extent >= 45.0;
+                const bool vertexNumbers = extent >= 45.0 && poly.Count() <= 24;
                 const bool edgeNumbers = extent >= 70.0 && poly.Count() <= 16;
                 for (int i = 0; vertexNumbers && i < poly.Count(); ++i)
                 {
@@ -1735,8 +1791,13 @@ class Painter
                                          static_cast<float>(out.x), static_cast<float>(-out.y), 4.0f,
                                          LabelRank::Vertex);
                 }
-                for (int i = 0; edgeNumbers && i < poly.Count(); ++i)
+                for (int i = 0; i < poly.Count(); ++i)
                 {
+                    const bool isNamed = std::find(named.begin(), named.end(), i) != named.end();
+                    if (!edgeNumbers && !isNamed)
+                    {
+                        continue;
+                    }
                     // Named beside the part of the edge the other body leaves in sight, on the edge's outer side:
                     // not inside that body, nor within a label's height of it, where the name would sit on it or
                     // behind it (a ball resting against a wall covers the middle of the wall's face).
@@ -1756,7 +1817,8 @@ class Painter
                     const Vec2 n = Rotate(xf.q, poly.Normal(i));
                     if (labels_.PlaceOutside(other, mid, "e" + std::to_string(i), TextStyle::Label,
                                              WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x),
-                                             static_cast<float>(-n.y), 5.0f, LabelRank::Edge))
+                                             static_cast<float>(-n.y), 5.0f,
+                                             isNamed ? LabelRank::Note : LabelRank::Edge))
                     {
                         labels_.KeepOnSide();
                     }
