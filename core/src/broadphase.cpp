@@ -124,29 +124,38 @@ void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<
         std::sort(order.begin(), order.end(), before);
     }
 
+    // The bounds in the sweep's order, side by side: the sweep reads them in sequence instead of through the order,
+    // and checks the other axis before it asks `skip`, so a pair apart on either axis costs no call.
     const int other = 1 - axis;
+    std::vector<SortAndSweep::Entry>& sorted = sweep.sorted;
+    sorted.resize(static_cast<size_t>(n));
+    for (int k = 0; k < n; ++k)
+    {
+        const Aabb& box = boxes[order[k]];
+        sorted[k] = {Lower(box, axis), Upper(box, axis), Lower(box, other), Upper(box, other), order[k]};
+    }
+    // Without a branch on the other axis, whose outcome is as good as random down a column of boxes: each neighbour's
+    // index is written, and kept by advancing past it only when the boxes meet.
+    std::vector<int>& met = sweep.met;
+    met.resize(static_cast<size_t>(n));
     int64_t comparisons = 0;
     for (int k = 0; k < n; ++k)
     {
-        const int i = order[k];
-        const Aabb& a = boxes[i];
-        const double upper = Upper(a, axis);
-        for (int m = k + 1; m < n; ++m)
+        const SortAndSweep::Entry a = sorted[k];
+        int count = 0;
+        int m = k + 1;
+        for (; m < n && !(sorted[m].lower > a.upper); ++m)
         {
-            const int j = order[m];
-            const Aabb& b = boxes[j];
-            if (Lower(b, axis) > upper)
-            {
-                break;
-            }
-            ++comparisons;
-            const int lo = i < j ? i : j;
-            const int hi = i < j ? j : i;
-            if (skip != nullptr && skip(context, lo, hi))
-            {
-                continue;
-            }
-            if (Lower(a, other) <= Upper(b, other) && Lower(b, other) <= Upper(a, other))
+            const SortAndSweep::Entry& b = sorted[m];
+            met[count] = b.index;
+            count += (a.otherLower <= b.otherUpper) & (b.otherLower <= a.otherUpper);
+        }
+        comparisons += m - (k + 1);
+        for (int q = 0; q < count; ++q)
+        {
+            const int lo = a.index < met[q] ? a.index : met[q];
+            const int hi = a.index < met[q] ? met[q] : a.index;
+            if (skip == nullptr || !skip(context, lo, hi))
             {
                 pairs.emplace_back(lo, hi);
             }
@@ -163,18 +172,18 @@ void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<
     {
         start[i + 1] += start[i];
     }
-    std::vector<std::pair<int, int>> sorted(pairs.size());
+    std::vector<std::pair<int, int>> byFirst(pairs.size());
     for (const auto& pair : pairs)
     {
-        sorted[start[pair.first]++] = pair;
+        byFirst[start[pair.first]++] = pair;
     }
     int begin = 0;
     for (int i = 0; i < n; ++i)
     {
-        std::sort(sorted.begin() + begin, sorted.begin() + start[i]);
+        std::sort(byFirst.begin() + begin, byFirst.begin() + start[i]);
         begin = start[i];
     }
-    pairs.swap(sorted);
+    pairs.swap(byFirst);
 }
 
 void FindPairsBruteForce(const std::vector<Aabb>& boxes, std::vector<std::pair<int, int>>& pairs,

@@ -48,11 +48,23 @@ struct SortAndSweep
     int axis = -1;
     /// Comparisons of a box with a neighbour on the sweep axis in the last call (the work done).
     int64_t comparisons = 0;
+
+    /// One box's bounds as the sweep reads them: on the sweep axis, then on the other, and the box's index.
+    struct Entry
+    {
+        double lower, upper;           ///< bounds on the sweep axis
+        double otherLower, otherUpper; ///< bounds on the other axis
+        int index;                     ///< the box's index in the caller's list
+    };
+    /// The boxes' bounds in `order` (working memory of the last call, kept to save its allocation).
+    std::vector<Entry> sorted;
+    /// The neighbours one box meets (working memory of the last call).
+    std::vector<int> met;
 };
 
 /// The pairs (i, j), i < j, of boxes that overlap, sorted by i then j, written to `pairs` (cleared first).
-/// `skip(i, j)` is asked before a pair is compared on the second axis and drops it when true (static-static and
-/// sleeping pairs in a world); it may be null. Deterministic: the result depends only on the boxes.
+/// `skip(i, j)` is asked of each pair whose boxes overlap and drops it when true (static-static and sleeping pairs in
+/// a world); it may be null. Deterministic: the result depends only on the boxes.
 /// Cost: O(n log n) for n boxes on the first call or after the axis changes, close to O(n) for the sort when the
 /// boxes moved a little since the last call; then O(n + c) for c comparisons on the sweep axis (`comparisons`).
 void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<std::pair<int, int>>& pairs,
