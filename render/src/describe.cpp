@@ -28,34 +28,14 @@ std::string Possessive(const std::string& name)
     return name + "'s";
 }
 
-// Two numbers written side by side with as many decimals each: "(-0.342, 0.940)", not "(-0.342, 0.94)". Only the
-// dropped trailing 0 of FormatNumber's fixed notation is put back, so the values read the same.
-std::string Matched(double x, double y, const char* open, const char* close)
-{
-    std::string a = FormatNumber(x);
-    std::string b = FormatNumber(y);
-    auto decimals = [](const std::string& t) {
-        const size_t dot = t.find('.');
-        return t.find('e') != std::string::npos || dot == std::string::npos ? -1 : static_cast<int>(t.size() - dot - 1);
-    };
-    const int da = decimals(a);
-    const int db = decimals(b);
-    if (da >= 0 && db >= 0)
-    {
-        a.append(static_cast<size_t>(std::max(0, db - da)), '0');
-        b.append(static_cast<size_t>(std::max(0, da - db)), '0');
-    }
-    return open + a + ", " + b + close;
-}
-
 std::string Pair(double x, double y)
 {
-    return Matched(x, y, "(", ")");
+    return FormatPair(x, y);
 }
 
 std::string Interval(double low, double high)
 {
-    return Matched(low, high, "[", "]");
+    return FormatPair(low, high, "[", "]");
 }
 
 // Number of face tests the fast test could run: every face of a polygon, one axis per circle pair.
@@ -815,6 +795,24 @@ std::string FormatNumber(double value)
         text = text.substr(0, e) + "e" + (negative ? "-" : "") + exponent;
     }
     return text == "-0.00" ? "0.00" : text;
+}
+
+std::string FormatPair(double x, double y, const char* open, const char* close)
+{
+    std::string a = FormatNumber(x);
+    std::string b = FormatNumber(y);
+    auto decimals = [](const std::string& t) {
+        const size_t dot = t.find('.');
+        return t.find('e') != std::string::npos || dot == std::string::npos ? -1 : static_cast<int>(t.size() - dot - 1);
+    };
+    const int da = decimals(a);
+    const int db = decimals(b);
+    if (da >= 0 && db >= 0)
+    {
+        a.append(static_cast<size_t>(std::max(0, db - da)), '0');
+        b.append(static_cast<size_t>(std::max(0, da - db)), '0');
+    }
+    return open + a + ", " + b + close;
 }
 
 namespace

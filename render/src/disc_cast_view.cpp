@@ -20,34 +20,16 @@ namespace
 constexpr float kMargin = 36.0f; // room around the drawing, for the labels
 constexpr double kTau = 6.283185307179586;
 
-std::string Coordinate(double value)
-{
-    return value == 0.0 ? "0.00" : FormatNumber(value);
-}
-
-// Two coordinates with as many decimals each: "(-0.661, 0.750)", not "(-0.661, 0.75)".
+// A point as the figure writes it: "(-0.661, 0.750)".
 std::string Point(Vec2 p)
 {
-    std::string a = Coordinate(p.x);
-    std::string b = Coordinate(p.y);
-    auto decimals = [](const std::string& t) {
-        const size_t dot = t.find('.');
-        return t.find('e') != std::string::npos || dot == std::string::npos ? -1 : static_cast<int>(t.size() - dot - 1);
-    };
-    const int da = decimals(a);
-    const int db = decimals(b);
-    if (da >= 0 && db >= 0)
-    {
-        a.append(static_cast<size_t>(std::max(0, db - da)), '0');
-        b.append(static_cast<size_t>(std::max(0, da - db)), '0');
-    }
-    return "(" + a + ", " + b + ")";
+    return FormatPair(p.x, p.y);
 }
 
 // A vector as Point prints it, read back: the numbers a reader works with.
 Vec2 Printed(Vec2 p)
 {
-    return {std::stod(Coordinate(p.x)), std::stod(Coordinate(p.y))};
+    return {std::stod(FormatNumber(p.x)), std::stod(FormatNumber(p.y))};
 }
 
 // The target's outline in the world, counter-clockwise: a concave body's as written, a polygon's vertices; empty for

@@ -13,6 +13,10 @@ namespace satviz
 /// significant digits otherwise, exponents as written (1.41e6), never -0, and an exact 0 as 0.00.
 std::string FormatNumber(double value);
 
+/// Two numbers as FormatNumber shows them, written side by side with as many decimals each: "(-0.342, 0.940)", not
+/// "(-0.342, 0.94)". Only the trailing 0 FormatNumber drops is put back, so the values read the same.
+std::string FormatPair(double x, double y, const char* open = "(", const char* close = ")");
+
 /// hi - lo computed from the two values as FormatNumber shows them, so that a reader subtracting the printed ends
 /// gets the printed difference. Where the ends are too small or too large for that (beyond 1e5, their own rounding
 /// dominates), `exact` is shown instead: the value the algorithm computed (NaN: hi - lo).
