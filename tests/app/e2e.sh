@@ -6,41 +6,7 @@
 # Usage: e2e.sh SATVIZ SATVIZ_RENDER SCENE WORKDIR. Exits 77 (skipped) when Xvfb or xdotool is missing.
 set -euo pipefail
 app=$1 render=$2 scene=$3 work=$4
-for tool in xvfb-run xdotool; do
-  if ! command -v "$tool" > /dev/null; then
-    echo "SKIPPED: $tool is not installed (apt-get install xvfb xauth xdotool)"
-    exit 77
-  fi
-done
-if [ -z "${SATVIZ_E2E_DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1280x800x24" env SATVIZ_E2E_DISPLAY=1 bash "$0" "$@"
-fi
-
-# A short tap, as xdotool types (press and release a few milliseconds apart): ImGui 1.86 reads the keys once per
-# frame, and the app queues key events so that a tap between two frames is still seen.
-# A key held for 80 ms, as a person presses it.
-tap() {
-  xdotool keydown "$1"
-  sleep 0.08
-  xdotool keyup "$1"
-  sleep 0.15
-}
-
-# Where the app announced an item of its interface ("satviz: WHAT at X,Y" on its output), once it is shown.
-place() {
-  for _ in $(seq 50); do grep -qF "satviz: $1 at " "$work/app.log" && break; sleep 0.1; done
-  grep -F "satviz: $1 at " "$work/app.log" | sed -n 's/.* at \([0-9]*\),\([0-9]*\)$/\1 \2/p' | head -n 1
-}
-
-# Clicks the item the app announced as WHAT; fails when it never showed.
-click() {
-  local x y
-  read -r x y < <(place "$1") || { echo "FAILED: the app never showed $1"; cat "$work/app.log"; exit 1; }
-  xdotool mousemove "$x" "$y"
-  sleep 0.2
-  xdotool click 1
-  sleep 0.3
-}
+source "$(dirname "${BASH_SOURCE[0]}")/e2e_lib.sh"
 
 alive() {
   if ! kill -0 $pid 2> /dev/null; then
@@ -53,12 +19,7 @@ alive() {
 rm -rf "$work"
 mkdir -p "$work"
 cp "$scene" "$work/scene.json"
-export XDG_CONFIG_HOME="$work/config"
-"$app" "$work/scene.json" --export-to "$work/export.png" > "$work/app.log" 2>&1 &
-pid=$!
-trap 'kill $pid 2> /dev/null || true' EXIT
-xdotool search --sync --onlyvisible --name '^satviz$' > /dev/null
-for _ in $(seq 50); do grep -q "canvas at" "$work/app.log" && break; sleep 0.1; done
+start_app "$work/scene.json" --export-to "$work/export.png"
 read -r cx cy cw ch vx vy zoom < <(sed -n 's/^satviz: canvas at \([0-9]*\),\([0-9]*\) size \([0-9]*\)x\([0-9]*\) camera \([-0-9.e]*\),\([-0-9.e]*\) zoom \([-0-9.e]*\)$/\1 \2 \3 \4 \5 \6 \7/p' "$work/app.log")
 echo "canvas at $cx,$cy size ${cw}x$ch, camera at $vx,$vy zoom $zoom"
 # The scene frames itself for an 800 x 600 figure (centre (0.5, 0), 120 pixels per unit): the canvas, another size,

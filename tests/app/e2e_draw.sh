@@ -7,33 +7,12 @@
 # Usage: e2e_draw.sh SATVIZ SCENE WORKDIR. Exits 77 (skipped) when Xvfb or xdotool is missing.
 set -euo pipefail
 app=$1 scene=$2 work=$3
-for tool in xvfb-run xdotool; do
-  if ! command -v "$tool" > /dev/null; then
-    echo "SKIPPED: $tool is not installed (apt-get install xvfb xauth xdotool)"
-    exit 77
-  fi
-done
-if [ -z "${SATVIZ_E2E_DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1280x800x24" env SATVIZ_E2E_DISPLAY=1 bash "$0" "$@"
-fi
-
-# A key held for 80 ms, long enough for a frame to see it down.
-hold() {
-  xdotool keydown "$1"
-  sleep 0.08
-  xdotool keyup "$1"
-  sleep 0.25
-}
+source "$(dirname "${BASH_SOURCE[0]}")/e2e_lib.sh"
 
 rm -rf "$work"
 mkdir -p "$work"
 cp "$scene" "$work/scene.json"
-export XDG_CONFIG_HOME="$work/config"
-"$app" "$work/scene.json" > "$work/app.log" 2>&1 &
-pid=$!
-trap 'kill $pid 2> /dev/null || true' EXIT
-xdotool search --sync --onlyvisible --name '^satviz$' > /dev/null
-for _ in $(seq 50); do grep -q "canvas at" "$work/app.log" && break; sleep 0.1; done
+start_app "$work/scene.json"
 read -r cx cy cw ch vx vy zoom < <(sed -n 's/^satviz: canvas at \([0-9]*\),\([0-9]*\) size \([0-9]*\)x\([0-9]*\) camera \([-0-9.e]*\),\([-0-9.e]*\) zoom \([-0-9.e]*\)$/\1 \2 \3 \4 \5 \6 \7/p' "$work/app.log")
 echo "canvas at $cx,$cy size ${cw}x$ch, camera at $vx,$vy zoom $zoom"
 
@@ -54,7 +33,7 @@ click_at() {
 }
 
 # The U: 3 wide, 2 tall, its 1 x 1 notch open upwards; area 5.
-hold d
+tap d 0.25
 for p in "-3 -2.6" "0 -2.6" "0 -0.6" "-1 -0.6" "-1 -1.6" "-2 -1.6" "-2 -0.6" "-3 -0.6"; do
   click_at $p
 done
@@ -62,7 +41,7 @@ import -window root "$work/drawing.png" 2> /dev/null || true
 click_at -3 -2.6
 
 # The cut: a drag from left of the U to right of it at y = -1.1, across both prongs.
-hold x
+tap x 0.25
 read -r x0 y0 < <(screen -3.5 -1.1)
 read -r x1 y1 < <(screen 0.5 -1.1)
 xdotool mousemove "$x0" "$y0"
@@ -77,14 +56,14 @@ sleep 0.2
 xdotool mouseup 1
 sleep 0.4
 import -window root "$work/cut.png" 2> /dev/null || true
-hold Escape
+tap Escape 0.25
 
 xdotool keydown ctrl
-hold s
+tap s 0.25
 xdotool keyup ctrl
 sleep 0.3
 xdotool keydown ctrl
-hold q
+tap q 0.25
 xdotool keyup ctrl
 for _ in $(seq 50); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
 trap - EXIT

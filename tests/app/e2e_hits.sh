@@ -6,22 +6,7 @@
 # Usage: e2e_hits.sh SATVIZ SCENE WORKDIR. Exits 77 (skipped) when Xvfb or xdotool is missing.
 set -euo pipefail
 app=$1 scene=$2 work=$3
-for tool in xvfb-run xdotool; do
-  if ! command -v "$tool" > /dev/null; then
-    echo "SKIPPED: $tool is not installed (apt-get install xvfb xauth xdotool)"
-    exit 77
-  fi
-done
-if [ -z "${SATVIZ_E2E_DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1280x800x24" env SATVIZ_E2E_DISPLAY=1 bash "$0" "$@"
-fi
-
-tap() {
-  xdotool keydown "$1"
-  sleep 0.08
-  xdotool keyup "$1"
-  sleep 0.15
-}
+source "$(dirname "${BASH_SOURCE[0]}")/e2e_lib.sh"
 
 rm -rf "$work"
 mkdir -p "$work"
@@ -33,12 +18,7 @@ scene["view"]["layers"].append("hits")
 scene["view"].pop("size", None)
 json.dump(scene, open(sys.argv[2], "w"), indent=1)
 PY
-export XDG_CONFIG_HOME="$work/config"
-"$app" "$work/scene.json" > "$work/app.log" 2>&1 &
-pid=$!
-trap 'kill $pid 2> /dev/null || true' EXIT
-xdotool search --sync --onlyvisible --name '^satviz$' > /dev/null
-for _ in $(seq 50); do grep -q "canvas at" "$work/app.log" && break; sleep 0.1; done
+start_app "$work/scene.json"
 xdotool mousemove 300 300
 tap period
 for _ in $(seq 50); do grep -q "^satviz: hit 2 of step 1 at " "$work/app.log" && break; sleep 0.1; done

@@ -6,37 +6,7 @@
 # Usage: e2e_sim.sh SATVIZ SATVIZ_SIM SCENE WORKDIR. Exits 77 (skipped) when Xvfb or xdotool is missing.
 set -euo pipefail
 app=$1 sim=$2 scene=$3 work=$4
-for tool in xvfb-run xdotool; do
-  if ! command -v "$tool" > /dev/null; then
-    echo "SKIPPED: $tool is not installed (apt-get install xvfb xauth xdotool)"
-    exit 77
-  fi
-done
-if [ -z "${SATVIZ_E2E_DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1280x800x24" env SATVIZ_E2E_DISPLAY=1 bash "$0" "$@"
-fi
-
-# A key held for about 80 ms: ImGui 1.86 reads the keys once per frame.
-tap() {
-  xdotool keydown "$1"
-  sleep 0.08
-  xdotool keyup "$1"
-  sleep 0.15
-}
-
-place() {
-  for _ in $(seq 50); do grep -qF "satviz: $1 at " "$work/app.log" && break; sleep 0.1; done
-  grep -F "satviz: $1 at " "$work/app.log" | sed -n 's/.* at \([0-9]*\),\([0-9]*\)$/\1 \2/p' | head -n 1
-}
-
-click() {
-  local x y
-  read -r x y < <(place "$1") || { echo "FAILED: the app never showed $1"; cat "$work/app.log"; exit 1; }
-  xdotool mousemove "$x" "$y"
-  sleep 0.2
-  xdotool click 1
-  sleep 0.3
-}
+source "$(dirname "${BASH_SOURCE[0]}")/e2e_lib.sh"
 
 # The step of the last state the app printed, once it has printed the state of a step other than $1.
 last_step() {
@@ -73,12 +43,7 @@ PY
 rm -rf "$work"
 mkdir -p "$work"
 cp "$scene" "$work/scene.json"
-export XDG_CONFIG_HOME="$work/config"
-"$app" "$work/scene.json" > "$work/app.log" 2>&1 &
-pid=$!
-trap 'kill $pid 2> /dev/null || true' EXIT
-xdotool search --sync --onlyvisible --name '^satviz$' > /dev/null
-for _ in $(seq 50); do grep -q "canvas at" "$work/app.log" && break; sleep 0.1; done
+start_app "$work/scene.json"
 read -r _ _ < <(place "simulation Play")
 xdotool mousemove 300 500
 

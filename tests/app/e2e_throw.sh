@@ -6,23 +6,7 @@
 # Usage: e2e_throw.sh SATVIZ SATVIZ_SIM SCENE WORKDIR. Exits 77 (skipped) when Xvfb or xdotool is missing.
 set -euo pipefail
 app=$1 sim=$2 scene=$3 work=$4
-for tool in xvfb-run xdotool; do
-  if ! command -v "$tool" > /dev/null; then
-    echo "SKIPPED: $tool is not installed (apt-get install xvfb xauth xdotool)"
-    exit 77
-  fi
-done
-if [ -z "${SATVIZ_E2E_DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1280x800x24" env SATVIZ_E2E_DISPLAY=1 bash "$0" "$@"
-fi
-
-# A key held for about 80 ms: ImGui 1.86 reads the keys once per frame.
-tap() {
-  xdotool keydown "$1"
-  sleep 0.08
-  xdotool keyup "$1"
-  sleep 0.12
-}
+source "$(dirname "${BASH_SOURCE[0]}")/e2e_lib.sh"
 
 # The last state the app printed: its step, then the numbers.
 last_state() { grep '^satviz: state step ' "$work/app.log" | tail -n 1 | cut -d' ' -f4-; }
@@ -42,12 +26,7 @@ state_of() {
 rm -rf "$work"
 mkdir -p "$work"
 cp "$scene" "$work/scene.json"
-export XDG_CONFIG_HOME="$work/config"
-"$app" "$work/scene.json" > "$work/app.log" 2>&1 &
-pid=$!
-trap 'kill $pid 2> /dev/null || true' EXIT
-xdotool search --sync --onlyvisible --name '^satviz$' > /dev/null
-for _ in $(seq 50); do grep -q "canvas at" "$work/app.log" && break; sleep 0.1; done
+start_app "$work/scene.json"
 read -r cx cy cw ch vx vy zoom < <(sed -n 's/^satviz: canvas at \([0-9]*\),\([0-9]*\) size \([0-9]*\)x\([0-9]*\) camera \([-0-9.e]*\),\([-0-9.e]*\) zoom \([-0-9.e]*\)$/\1 \2 \3 \4 \5 \6 \7/p' "$work/app.log")
 # The box's origin on screen: it rests on the slope (friction holds it), so it is there while the scene plays.
 read -r bx by < <(python3 - "$work/scene.json" "$cx" "$cy" "$cw" "$ch" "$vx" "$vy" "$zoom" << 'PY'
@@ -60,7 +39,7 @@ PY
 )
 
 xdotool mousemove "$bx" "$by"
-tap p
+tap p 0.12
 sleep 0.5
 # Grab, move 12 px left and 9 px up every 20 ms (0.6 px/ms), let go at once.
 xdotool mousedown 1
@@ -71,7 +50,7 @@ for i in $(seq 12); do
 done
 xdotool mouseup 1
 sleep 0.5
-tap p
+tap p 0.12
 for _ in $(seq 30); do grep -q "^satviz: thrown box at step " "$work/app.log" && break; sleep 0.1; done
 read -r thrown vxt vyt < <(sed -n 's/^satviz: thrown box at step \([0-9]*\) velocity \([-0-9.e]*\) \([-0-9.e]*\)$/\1 \2 \3/p' "$work/app.log" | tail -n 1)
 [ -n "${thrown:-}" ] || { echo "FAILED: the app threw nothing"; cat "$work/app.log"; exit 1; }
@@ -93,14 +72,14 @@ PY
 [ "$paused" -gt $((thrown + 2)) ] || { echo "FAILED: paused at step $paused, too soon after the throw at $thrown"; exit 1; }
 
 # Back to the step of the throw: the box moves at the thrown velocity there.
-for _ in $(seq $((paused - thrown))); do tap comma; done
+for _ in $(seq $((paused - thrown))); do tap comma 0.12; done
 read -r -a numbers <<< "$(state_of "$thrown")"
 # Bodies in file order (slope, box, start), six numbers each: position, angle, velocity, spin.
 [ "${numbers[9]}" = "$vxt" ] && [ "${numbers[10]}" = "$vyt" ] ||
   { echo "FAILED: back at step $thrown the box moves at (${numbers[9]}, ${numbers[10]}), thrown at ($vxt, $vyt)"; exit 1; }
 echo "back at step $thrown: the box moves at the thrown velocity"
 # Forward again: the state the app showed when paused, bit for bit.
-for _ in $(seq $((paused - thrown))); do tap period; done
+for _ in $(seq $((paused - thrown))); do tap period 0.12; done
 again=$(state_of "$paused")
 [ "$again" = "$at_pause" ] || { echo "FAILED: forward again to step $paused shows another state"; exit 1; }
 echo "forward again at step $paused: the same state as before"
@@ -116,7 +95,7 @@ if shown[6:8] == box["position"]:
 print(f"satviz-sim without the throw has the box at {box['position']}, the app at {shown[6:8]}")
 PY
 import -window root "$work/screenshot.png" 2> /dev/null || true
-tap ctrl+q
+tap ctrl+q 0.12
 for _ in $(seq 50); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
 trap - EXIT
 if kill -0 $pid 2> /dev/null; then

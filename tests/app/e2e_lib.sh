@@ -1,0 +1,51 @@
+# SPDX-License-Identifier: MIT
+# What the app's end-to-end scripts share; each sources it first (it reads the script's own arguments):
+#  - the skip when Xvfb or xdotool is missing (exit 77, which ctest reports as skipped);
+#  - the script run again inside a virtual display of 1280x800;
+#  - tap, place, click and start_app below.
+for tool in xvfb-run xdotool; do
+  if ! command -v "$tool" > /dev/null; then
+    echo "SKIPPED: $tool is not installed (apt-get install xvfb xauth xdotool)"
+    exit 77
+  fi
+done
+if [ -z "${SATVIZ_E2E_DISPLAY:-}" ]; then
+  exec xvfb-run -a -s "-screen 0 1280x800x24" env SATVIZ_E2E_DISPLAY=1 bash "$0" "$@"
+fi
+
+# A key held for 80 ms, as a person presses it (ImGui 1.86 reads the keys once per frame, and the app queues key
+# events so that a press between two frames is still seen), then $2 seconds (default 0.15) for the app to act on it.
+tap() {
+  xdotool keydown "$1"
+  sleep 0.08
+  xdotool keyup "$1"
+  sleep "${2:-0.15}"
+}
+
+# Where the app announced an item of its interface ("satviz: WHAT at X,Y" on its output), once it is shown.
+place() {
+  for _ in $(seq 50); do grep -qF "satviz: $1 at " "$work/app.log" && break; sleep 0.1; done
+  grep -F "satviz: $1 at " "$work/app.log" | sed -n 's/.* at \([0-9]*\),\([0-9]*\)$/\1 \2/p' | head -n 1
+}
+
+# Clicks the item the app announced as WHAT; fails when it never showed.
+click() {
+  local x y
+  read -r x y < <(place "$1") || { echo "FAILED: the app never showed $1"; cat "$work/app.log"; exit 1; }
+  xdotool mousemove "$x" "$y"
+  sleep 0.2
+  xdotool click 1
+  sleep 0.3
+}
+
+# Starts "$app" with these arguments in the background, its output in $work/app.log and its settings in $work/config
+# (so the user's Recent list is left alone); sets pid, kills the app if the script ends early, and waits until the
+# window and its canvas are shown.
+start_app() {
+  export XDG_CONFIG_HOME="$work/config"
+  "$app" "$@" > "$work/app.log" 2>&1 &
+  pid=$!
+  trap 'kill $pid 2> /dev/null || true' EXIT
+  xdotool search --sync --onlyvisible --name '^satviz$' > /dev/null
+  for _ in $(seq 50); do grep -q "canvas at" "$work/app.log" && break; sleep 0.1; done
+}
