@@ -4,9 +4,13 @@
 
 #include <satviz/collide.h>
 #include <satviz/concave.h>
+#include <satviz/decompose.h>
 #include <satviz/polygon.h>
 #include <satviz/scene.h>
 #include <satviz/sweep.h>
+
+#include "support/random_concave.h"
+#include "support/random_shapes.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -491,6 +495,16 @@ TEST_CASE("satviz-query answers for concave bodies with the same fields, the axi
                 m.manifold = Collide(a.shape, a.Xf(), b.shape, b.Xf());
             }
             CHECK(pair["overlap"] == m.manifold.overlap);
+            if (a.IsConcave() || b.IsConcave())
+            {
+                CHECK(pair["piece_pairs"]["tested"] == m.pairsTested);
+                CHECK(pair["piece_pairs"]["overlapping"] == m.pairsOverlap);
+                CHECK(pair["piece_pairs"]["seam"] == m.pairsSeam);
+            }
+            else
+            {
+                CHECK(!pair.contains("piece_pairs"));
+            }
             CHECK(pair["normal"][0].get<double>() == m.manifold.normal.x);
             CHECK(pair["normal"][1].get<double>() == m.manifold.normal.y);
             CHECK(pair["contacts"].size() == static_cast<size_t>(m.manifold.contactCount));
@@ -505,6 +519,30 @@ TEST_CASE("satviz-query answers for concave bodies with the same fields, the axi
             }
         }
     }
+    // Each body's pieces, against the decomposition of the outline as written, by the body's method.
+    const nlohmann::json listed = nlohmann::json::parse(run.out[0])["bodies"];
+    REQUIRE(listed.size() == bodies.size());
+    const std::vector<Vec2> ell = {{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 4}, {0, 4}};
+    std::vector<Vec2> comb = {{0, 0}, {9, 0}};
+    for (int tooth = 8; tooth >= 0; tooth -= 2)
+    {
+        // Teeth at x in [8, 9], [6, 7], ... [0, 1], gaps between them down to y = 1.
+        comb.insert(comb.end(), {{tooth + 1.0, 4.0}, {tooth + 0.0, 4.0}});
+        if (tooth > 0)
+        {
+            comb.insert(comb.end(), {{tooth + 0.0, 1.0}, {tooth - 1.0, 1.0}});
+        }
+    }
+    CHECK(listed[0] == nlohmann::json::parse(R"({"name": "L", "pieces": )" +
+                                             std::to_string(Decompose(ell, DecomposeMethod::Fast).pieces.size()) +
+                                             R"(, "decompose": "fast", "vertices": 6})"));
+    CHECK(listed[1] == nlohmann::json::parse(R"({"name": "notch", "pieces": 1})"));
+    CHECK(listed[2] == nlohmann::json::parse(R"({"name": "sunk", "pieces": 1})"));
+    CHECK(listed[3]["pieces"] == Decompose(comb, DecomposeMethod::Fewest).pieces.size());
+    CHECK(listed[3]["decompose"] == "fewest");
+    CHECK(listed[3]["vertices"] == 20);
+    // By hand: one seam from the L's one reflex corner, two pieces.
+    CHECK(listed[0]["pieces"] == 2);
     // The box in the notch is clear of the L (its hull would hold it), and falls onto the notch's floor.
     const nlohmann::json& notch = pairs[0];
     CHECK(notch["overlap"] == false);
@@ -521,4 +559,107 @@ TEST_CASE("satviz-query answers for concave bodies with the same fields, the axi
     const Run touching = Query("--touching concave.json");
     REQUIRE(touching.exitCode == 0);
     CHECK(nlohmann::json::parse(touching.out[0])["touching"] == nlohmann::json::parse(R"([["L", "sunk"]])"));
+}
+
+TEST_CASE("satviz-query applies a slice figure's cut: the parts' mass, centre, inertia and motion keep the momenta",
+          "[query][cut]")
+{
+    // By hand: a 2 x 1 bar of density 1 moving at (1, 0) and turning at 1 rad/s, cut along x = 0.5. The right part
+    // is [0.5, 1] x [-0.5, 0.5]: mass 0.5, centre (0.75, 0), inertia 0.5 (0.5^2 + 1^2) / 12, velocity
+    // (1, 0) + 1 x (0.75, 0) = (1, 0.75). The left part is [-1, 0.5] x [-0.5, 0.5]: mass 1.5, centre (-0.25, 0),
+    // inertia 1.5 (1.5^2 + 1^2) / 12, velocity (1, -0.25).
+    Write("bar_cut.json", R"({"bodies": [{"name": "bar", "box": [2, 1], "velocity": [1, 0], "angular_velocity": 1}],
+        "view": {"figure": "slice", "cut": [[0.5, -1], [0.5, 1]]}})");
+    Run run = Query("bar_cut.json");
+    REQUIRE(run.exitCode == 0);
+    const nlohmann::json cut = nlohmann::json::parse(run.out[0])["cut"];
+    REQUIRE(cut["cut"] == true);
+    REQUIRE(cut["parts"].size() == 2);
+    const nlohmann::json& right = cut["parts"][0];
+    const nlohmann::json& left = cut["parts"][1];
+    CHECK(right["mass"].get<double>() == Approx(0.5));
+    CHECK(right["centroid"][0].get<double>() == Approx(0.75));
+    CHECK(right["inertia"].get<double>() == Approx(0.5 * (0.25 + 1.0) / 12.0));
+    CHECK(right["velocity"][1].get<double>() == Approx(0.75));
+    CHECK(left["mass"].get<double>() == Approx(1.5));
+    CHECK(left["centroid"][0].get<double>() == Approx(-0.25));
+    CHECK(left["inertia"].get<double>() == Approx(1.5 * (2.25 + 1.0) / 12.0));
+    CHECK(left["velocity"][1].get<double>() == Approx(-0.25));
+    CHECK(left["angular_velocity"].get<double>() == 1.0);
+    // The whole bar: momentum 2 (1, 0), angular momentum about its centre I w = 2 (2^2 + 1^2) / 12.
+    CHECK(cut["momentum_before"][0].get<double>() == Approx(2.0));
+    CHECK(cut["angular_momentum_before"].get<double>() == Approx(10.0 / 12.0));
+    CHECK(cut["angular_momentum_after"].get<double>() == Approx(10.0 / 12.0));
+
+    // Random polygons, convex and concave, moving and turning, cut by random lines: the parts' areas sum to the
+    // outline's (shoelace), and both momenta are kept.
+    testing::Rng rng(20261128);
+    std::string files;
+    std::vector<std::vector<Vec2>> outlines;
+    for (int i = 0; i < 60; ++i)
+    {
+        std::vector<Vec2> outline;
+        if (i % 2 == 0)
+        {
+            const Polygon convex = testing::RandomPolygon(rng, rng.Int(3, 12), 2.0, rng.Uniform(0.3, 1.0));
+            outline.assign(convex.Vertices().begin(), convex.Vertices().end());
+        }
+        else
+        {
+            outline = testing::RandomStarPolygon(rng, rng.Int(5, 14), 2.0, 0.5);
+        }
+        outlines.push_back(outline);
+        std::ostringstream text;
+        text.precision(17);
+        text << R"({"bodies": [{"name": "p", "polygon": [)";
+        for (size_t k = 0; k < outline.size(); ++k)
+        {
+            text << (k > 0 ? ", " : "") << "[" << outline[k].x << ", " << outline[k].y << "]";
+        }
+        const double through = rng.Uniform(-0.5, 0.5);
+        const double turn = rng.Uniform(0.0, 3.14159);
+        const Vec2 d{std::cos(turn), std::sin(turn)};
+        const Vec2 a = Vec2{through * -d.y, through * d.x} - 5.0 * d;
+        const Vec2 b = a + 10.0 * d;
+        text << R"(], "position": [)" << rng.Uniform(-3, 3) << ", " << rng.Uniform(-3, 3) << R"(], "angle": )"
+             << rng.Uniform(-3, 3) << R"(, "velocity": [)" << rng.Uniform(-2, 2) << ", " << rng.Uniform(-2, 2)
+             << R"(], "angular_velocity": )" << rng.Uniform(-2, 2) << R"(, "density": )" << rng.Uniform(0.5, 3)
+             << R"(}], "view": {"figure": "slice", "cut": [[)" << a.x << ", " << a.y << "], [" << b.x << ", " << b.y
+             << "]]}}";
+        const std::string name = "random_cut_" + std::to_string(i) + ".json";
+        Write(name, text.str());
+        files += " " + name;
+    }
+    run = Query(files.substr(1));
+    REQUIRE(run.exitCode == 0);
+    REQUIRE(run.out.size() == outlines.size());
+    int cuts = 0;
+    for (size_t i = 0; i < outlines.size(); ++i)
+    {
+        INFO("random_cut_" << i);
+        const nlohmann::json line = nlohmann::json::parse(run.out[i]);
+        const nlohmann::json& c = line["cut"];
+        if (c["cut"] == false)
+        {
+            CHECK(!c["reason"].get<std::string>().empty());
+            continue;
+        }
+        ++cuts;
+        const double area = std::abs(static_cast<double>(testing::Area2(outlines[i]))) / 2.0;
+        double parts = 0.0;
+        for (const nlohmann::json& part : c["parts"])
+        {
+            parts += part["area"].get<double>();
+            CHECK(part["area"].get<double>() > 0.0);
+        }
+        CHECK(parts + 0.0 == Approx(area).epsilon(1e-9));
+        CHECK(c["slivers"] == 0);
+        const double scale = 1.0 + std::abs(c["momentum_before"][0].get<double>()) +
+                             std::abs(c["momentum_before"][1].get<double>());
+        CHECK(std::abs(c["momentum_after"][0].get<double>() - c["momentum_before"][0].get<double>()) < 1e-9 * scale);
+        CHECK(std::abs(c["momentum_after"][1].get<double>() - c["momentum_before"][1].get<double>()) < 1e-9 * scale);
+        CHECK(c["angular_momentum_after"].get<double>() ==
+              Approx(c["angular_momentum_before"].get<double>()).margin(1e-9 * scale * 10.0));
+    }
+    CHECK(cuts >= 30);
 }

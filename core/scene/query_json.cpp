@@ -3,8 +3,10 @@
 // back as the same double.
 
 #include <satviz/query_json.h>
+#include <satviz/scene_world.h>
 #include <satviz/sweep.h>
 #include <satviz/world.h>
+#include <satviz/world_cut.h>
 
 #include <cmath>
 #include <ostream>
@@ -95,6 +97,9 @@ Json ConcavePairJson(const Body& a, const Body& b, bool withTrace, StepView view
     }
     Json pair = ManifoldJson(a.name, b.name, m.manifold);
     NamePiece(pair["axis"], m.manifold.axis, m.pieceA, m.pieceB);
+    // How the pieces took part: the pairs of pieces whose boxes overlapped (each collided as a convex pair), those
+    // that overlap, and those whose push pointed along a seam (left out).
+    pair["piece_pairs"] = {{"tested", m.pairsTested}, {"overlapping", m.pairsOverlap}, {"seam", m.pairsSeam}};
     if (a.velocity != Vec2{} || b.velocity != Vec2{})
     {
         ConcaveSweepResult sweep;
@@ -118,6 +123,93 @@ Json ConcavePairJson(const Body& a, const Body& b, bool withTrace, StepView view
                          {"note", "a pair with a concave body is tested piece by piece; no step trace is recorded"}};
     }
     return pair;
+}
+
+// Each body's name and convex pieces: a concave body's count and how its outline was cut, 1 for any other.
+Json BodiesJson(const Scene& scene)
+{
+    Json bodies = Json::array();
+    for (const Body& body : scene.bodies)
+    {
+        Json entry = {{"name", body.name}, {"pieces", body.IsConcave() ? body.concave.parts.size() : size_t{1}}};
+        if (body.IsConcave())
+        {
+            entry["decompose"] = body.decompose == DecomposeMethod::Fast ? "fast" : "fewest";
+            entry["vertices"] = body.outline.size();
+        }
+        bodies.push_back(std::move(entry));
+    }
+    return bodies;
+}
+
+// The body's linear momentum m v and its angular momentum about the world origin, I w + m (c x v).
+void AddMomentum(const RigidBody& body, Vec2& momentum, double& angular)
+{
+    const Vec2 c = TransformPoint(MakeTransform(body.position, body.angle), body.localCenter);
+    momentum = momentum + body.mass * body.velocity;
+    angular += body.inertia * body.angularVelocity + body.mass * Cross(c, body.velocity);
+}
+
+// The slice figure's cut applied to its body in the scene's world (CutBody): each part's mass, centre of mass,
+// inertia and motion, and the momenta before and after.
+Json CutJson(const Scene& scene)
+{
+    int index = 0;
+    for (size_t i = 0; i < scene.bodies.size(); ++i)
+    {
+        if (!scene.view.bodyA.empty() && scene.bodies[i].name == scene.view.bodyA)
+        {
+            index = static_cast<int>(i);
+        }
+    }
+    if (const std::string problem = ValidateSceneWorld(scene); !problem.empty())
+    {
+        return {{"body", scene.bodies[static_cast<size_t>(index)].name}, {"cut", false}, {"reason", problem}};
+    }
+    World world = MakeWorld(scene);
+    Vec2 momentumBefore{};
+    double angularBefore = 0.0;
+    AddMomentum(world.bodies[static_cast<size_t>(index)], momentumBefore, angularBefore);
+    const Body& source = scene.bodies[static_cast<size_t>(index)];
+    CutOptions options;
+    options.method = source.decompose;
+    const BodyCut cut = CutBody(world, index, scene.view.cut[0], scene.view.cut[1], options);
+    Json out = {{"body", source.name}, {"cut", cut.cut}};
+    if (!cut.cut)
+    {
+        out["reason"] = cut.reason;
+        return out;
+    }
+    Json parts = Json::array();
+    Vec2 momentumAfter{};
+    double angularAfter = 0.0;
+    for (size_t k = 0; k < cut.bodies.size(); ++k)
+    {
+        const RigidBody& part = world.bodies[static_cast<size_t>(cut.bodies[k])];
+        const Vec2 c = TransformPoint(MakeTransform(part.position, part.angle), part.localCenter);
+        // The area of the part's outline (shoelace), which a static part, of no mass, has too.
+        const std::vector<Vec2>& outline = cut.outlines[k];
+        double twice = 0.0;
+        for (size_t i = 0; i < outline.size(); ++i)
+        {
+            twice += Cross(outline[i], outline[(i + 1) % outline.size()]);
+        }
+        parts.push_back({{"area", std::abs(0.5 * twice)},
+                         {"mass", part.mass},
+                         {"centroid", Pair(c)},
+                         {"inertia", part.inertia},
+                         {"pieces", part.concave.parts.empty() ? size_t{1} : part.concave.parts.size()},
+                         {"velocity", Pair(part.velocity)},
+                         {"angular_velocity", part.angularVelocity + 0.0}});
+        AddMomentum(part, momentumAfter, angularAfter);
+    }
+    out["parts"] = parts;
+    out["slivers"] = cut.slivers;
+    out["momentum_before"] = Pair(momentumBefore);
+    out["momentum_after"] = Pair(momentumAfter);
+    out["angular_momentum_before"] = angularBefore + 0.0;
+    out["angular_momentum_after"] = angularAfter + 0.0;
+    return out;
 }
 
 } // namespace
@@ -367,7 +459,12 @@ Json QuerySceneJson(const Scene& scene, const std::string& file, bool withTrace,
             pairs.push_back(pair);
         }
     }
-    return {{"scene", file}, {"pairs", pairs}};
+    Json result = {{"scene", file}, {"pairs", pairs}, {"bodies", BodiesJson(scene)}};
+    if (scene.view.figure == FigureKind::Slice)
+    {
+        result["cut"] = CutJson(scene);
+    }
+    return result;
 }
 
 Json TouchingSceneJson(const Scene& scene, const std::string& file)

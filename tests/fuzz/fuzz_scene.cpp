@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Fuzz target for the scene loader: any bytes as a scene file. Malformed input must give a one-line error that
 // names the file; a scene that loads must write out and read back to the same JSON, and its pairs must answer.
+// Read as satviz-query reads it (a polygon may be concave), it must answer as satviz-query does, a slice's cut too.
 #include <satviz/collide.h>
+#include <satviz/query_json.h>
 #include <satviz/scene.h>
 #include <satviz/sweep.h>
 
@@ -12,6 +14,15 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
     const std::string text(reinterpret_cast<const char*>(data), size);
+    const satviz::SceneResult concave = satviz::ParseScene(text, "fuzz.json", satviz::SceneOptions{true});
+    if (concave.Ok())
+    {
+        satviz::QuerySceneJson(concave.scene, "fuzz.json", false).dump();
+    }
+    else if (concave.error.rfind("fuzz.json", 0) != 0 || concave.error.find('\n') != std::string::npos)
+    {
+        std::abort();
+    }
     const satviz::SceneResult result = satviz::ParseScene(text, "fuzz.json");
     if (!result.Ok())
     {
@@ -26,6 +37,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     if (!again.Ok() || satviz::SceneToJson(again.scene) != saved)
     {
         std::abort(); // a loaded scene round-trips
+    }
+    if (!concave.Ok())
+    {
+        std::abort(); // a scene that loads as convex loads as concave
     }
     const auto& bodies = result.scene.bodies;
     for (size_t i = 0; i < bodies.size() && i < 6; ++i)

@@ -32,7 +32,11 @@ nlohmann::ordered_json TextbookTraceJson(const TextbookTrace& trace);
 /// A step trace of the textbook swept test: each axis with its intervals at t = 0, the rate, entry and exit.
 nlohmann::ordered_json TextbookSweepTraceJson(const TextbookSweepTrace& trace);
 
-/// Every pair of bodies of a scene, in file order: {"scene": file, "pairs": [...]}. Pairs where a body moves also
+/// Every pair of bodies of a scene, in file order, then every body with its convex pieces: {"scene": file,
+/// "pairs": [...], "bodies": [{"name", "pieces"}, ...]} (a concave body adds "decompose" and "vertices", its pairs
+/// "piece_pairs" and the axis's "piece"). A scene whose view is a slice figure adds "cut": its cut applied to the
+/// body in the scene's world (CutBody), each part's mass, centroid, inertia and motion, and the momenta before and
+/// after. Pairs where a body moves also
 /// carry "toi" (the time of impact in [0, 1], 0 when overlapping at the start, null for a miss), "toi_normal" and
 /// "toi_contacts". With `withTrace`, each pair also carries its "trace" in the chosen view (and, in the textbook
 /// view, moving pairs their "sweep_trace"). `progress`, when not null, gets a line before each long trace.
