@@ -480,3 +480,76 @@ TEST_CASE("Large outlines decompose in bounded time", "[decompose]")
     }
     CHECK(std::abs(static_cast<double>(sum / Area2(points) - 1)) <= 1e-12);
 }
+
+TEST_CASE("Vertices on an edge's line are kept in the outline but are corners of no piece", "[decompose][property]")
+{
+    // Lattice outlines, with points added halfway and a quarter of the way along random edges: exactly on the edge,
+    // so the outline is the same region with straight corners. Its decomposition must be the outline's without
+    // them (the same pieces: a piece is strictly convex, it has no straight corner), and each added point must lie
+    // on an outline edge of a piece.
+    Rng rng(20261128);
+    int tested = 0;
+    for (int trial = 0; trial < 1500; ++trial)
+    {
+        std::vector<Vec2> lattice;
+        for (const Vec2& p : RandomStarPolygon(rng, rng.Int(3, 24), 40.0, 0.2))
+        {
+            lattice.push_back({std::round(p.x), std::round(p.y)});
+        }
+        const DecomposeMethod method = trial % 2 == 0 ? DecomposeMethod::Fast : DecomposeMethod::Fewest;
+        const Decomposition plain = Decompose(lattice, method);
+        if (!plain.Ok())
+        {
+            continue; // rounding made it cross itself or collapse
+        }
+        std::vector<Vec2> written;
+        std::vector<Vec2> added;
+        for (size_t i = 0; i < lattice.size(); ++i)
+        {
+            const Vec2 a = lattice[i];
+            const Vec2 b = lattice[(i + 1) % lattice.size()];
+            written.push_back(a);
+            if (a != b && rng.Chance(0.4))
+            {
+                // 4 * integers: the quarter points are exact, and exactly on the edge.
+                for (const double t : {0.25, 0.5})
+                {
+                    if (rng.Chance(0.6))
+                    {
+                        written.push_back(a + t * (b - a));
+                        added.push_back(written.back());
+                    }
+                }
+            }
+        }
+        if (added.empty())
+        {
+            continue;
+        }
+        ++tested;
+        INFO("trial " << trial);
+        const Decomposition straight = Decompose(written, method);
+        CheckDecomposition(written, straight);
+        REQUIRE(straight.pieces.size() == plain.pieces.size());
+        // The same pieces, corner for corner (the decomposer starts from the same outline either way).
+        for (size_t k = 0; k < plain.pieces.size(); ++k)
+        {
+            CHECK(Corners(straight.pieces[k].polygon) == Corners(plain.pieces[k].polygon));
+        }
+        for (const Vec2& p : added)
+        {
+            bool onOutline = false;
+            for (const ConvexPiece& piece : straight.pieces)
+            {
+                const std::vector<Vec2> c = Corners(piece.polygon);
+                for (size_t e = 0; e < c.size(); ++e)
+                {
+                    onOutline = onOutline ||
+                                (!piece.internal[e] && DistanceToSegment(p, c[e], c[(e + 1) % c.size()]) < 1e-9);
+                }
+            }
+            CHECK(onOutline);
+        }
+    }
+    CHECK(tested >= 500);
+}

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Scene files: what loads, and the one-line error for everything that does not.
 
+#include <satviz/collide.h>
+#include <satviz/concave.h>
 #include <satviz/scene.h>
 
 #include <catch2/catch.hpp>
@@ -800,4 +802,53 @@ TEST_CASE("A concave polygon is decomposed on load when the reader takes concave
     // A convex outline written clockwise keeps its own error: one piece is not a concave body.
     CHECK(errorOf(R"({"polygon": [[0,0],[0,1],[1,0]]})") ==
           "s.json: bodies[0].polygon: polygon winds clockwise (list the vertices counter-clockwise, y up)");
+}
+
+TEST_CASE("A floor written with the ends of its tiles along its top loads as one piece, its outline as written",
+          "[scene][concave]")
+{
+    // Three tiles 1 wide, written as one outline whose top keeps the tiles' ends: vertices on the line through
+    // their neighbours. Refused as a convex polygon (MakePolygon's rule); read as an outline, it is one convex piece
+    // whose straight vertices are corners of no piece, and the file keeps them.
+    const std::string text =
+        R"({"bodies": [{"name": "floor", "polygon": [[0, 0], [3, 0], [3, 1], [2, 1], [1, 1], [0, 1]], "static": true},
+                       {"name": "box", "box": [0.8, 0.8], "position": [1.0, 1.3]}]})";
+    CHECK(ParseScene(text, "s.json").error ==
+          "s.json: bodies[0].polygon: vertex 3 lies on the line through its neighbours (remove it)");
+    SceneOptions options;
+    options.concave = true;
+    const SceneResult r = ParseScene(text, "s.json", options);
+    REQUIRE(r.Ok());
+    const Body& floor = r.scene.bodies[0];
+    REQUIRE(floor.IsConcave());
+    CHECK(floor.concave.parts.size() == 1);
+    CHECK(floor.concave.parts[0].shape.polygon.Count() == 4);
+    CHECK(floor.outline.size() == 6);
+    // Written back as read, and read again the same.
+    const std::string saved = SceneToJson(r.scene);
+    CHECK(nlohmann::json::parse(saved)["bodies"][0]["polygon"] ==
+          nlohmann::json::parse("[[0, 0], [3, 0], [3, 1], [2, 1], [1, 1], [0, 1]]"));
+    const SceneResult again = ParseScene(saved, "saved.json", options);
+    REQUIRE(again.Ok());
+    CHECK(SceneToJson(again.scene) == saved);
+    // The box straddling the tiles' end at x = 1 meets the floor's top, as it meets the rectangle without them:
+    // no seam there to catch on.
+    const SceneResult rectangle = ParseScene(
+        R"({"bodies": [{"name": "floor", "polygon": [[0, 0], [3, 0], [3, 1], [0, 1]], "static": true},
+                       {"name": "box", "box": [0.8, 0.8], "position": [1.0, 1.3]}]})",
+        "r.json");
+    REQUIRE(rectangle.Ok());
+    const Body& box = r.scene.bodies[1];
+    const ConcaveManifold m = Collide(floor.concave, floor.Xf(), box.shape, box.Xf());
+    const Manifold plain = Collide(rectangle.scene.bodies[0].shape, rectangle.scene.bodies[0].Xf(), box.shape,
+                                   box.Xf());
+    REQUIRE(m.manifold.overlap);
+    CHECK(m.manifold.depth == plain.depth);
+    CHECK(m.manifold.normal == plain.normal);
+    CHECK(m.manifold.contactCount == plain.contactCount);
+    // A repeated vertex is read the same way.
+    const SceneResult repeated = ParseScene(
+        R"({"bodies": [{"polygon": [[0, 0], [3, 0], [3, 1], [3, 1], [0, 1]]}]})", "s.json", options);
+    REQUIRE(repeated.Ok());
+    CHECK(repeated.scene.bodies[0].concave.parts.size() == 1);
 }

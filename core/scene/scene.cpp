@@ -226,7 +226,10 @@ Shape PolygonShape(const PolygonResult& result, const std::string& path)
 
 // A polygon that MakePolygon refuses for its shape (not convex, crossing itself, clockwise, or a vertex repeated or
 // on a line with its neighbours), read as a concave outline: decomposed, or refused naming the edges that cross.
-// An outline that is one convex piece keeps MakePolygon's error: a convex polygon is written as MakePolygon wants.
+// A vertex repeated or on the line through its neighbours is a corner of no piece (a piece's corners turn), but
+// the outline keeps it as written: a floor written with the ends of its tiles along its top loads, even when it is
+// one convex piece. Any other outline that is one convex piece keeps MakePolygon's error (a clockwise triangle is
+// written counter-clockwise).
 bool ReadConcave(Body& body, const std::vector<Vec2>& vertices, const PolygonResult& made, const std::string& path)
 {
     switch (made.error)
@@ -245,7 +248,8 @@ bool ReadConcave(Body& body, const std::vector<Vec2>& vertices, const PolygonRes
     {
         Fail(path, DescribeDecomposeError(pieces, vertices));
     }
-    if (pieces.pieces.size() < 2)
+    const bool straight = made.error == PolygonError::CollinearVertex || made.error == PolygonError::DuplicateVertex;
+    if (pieces.pieces.size() < 2 && !straight)
     {
         return false;
     }

@@ -69,8 +69,10 @@ std::string DescribeDecomposition(const std::vector<Vec2>& outline, const Decomp
         "An outline of " + Plural(n, "vertex", "vertices") + ", " + std::to_string(reflex) + " of them reflex (ringed)";
     if (corners < n)
     {
+        // Such a vertex is a corner of no piece: the pieces are strictly convex.
         text += "; " + Plural(n - corners, "vertex lies", "vertices lie") +
-                " on a straight line or repeats, and is dropped first";
+                (n - corners == 1 ? " on a straight line or repeats, a corner of no piece"
+                                  : " on a straight line or repeat, corners of no piece");
     }
     if (reflex == 0)
     {

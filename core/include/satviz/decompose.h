@@ -69,9 +69,14 @@ struct DecompositionT
 using Decomposition = DecompositionT<double>;
 
 /// Cuts a simple polygon (no holes) into convex pieces. Either orientation is accepted; repeated consecutive
-/// vertices and vertices on the line through their neighbours are dropped first (they are corners of no piece but
-/// lie on a piece's outline). Every other input vertex is a corner of at least one piece, the pieces cover the
-/// outline exactly (their areas sum to its area) and meet only along their internal edges.
+/// vertices and vertices on the line through their neighbours ("straight" vertices) are dropped first: each lies
+/// on an outline edge of a piece but is a corner of none, since a piece is strictly convex (MakePolygon's rule: a
+/// corner turns) and no seam ends there. So the pieces are those of the outline without them, and they cost
+/// pieces where a seam would have served best by ending at one: a bump on a flat floor, written with the floor's
+/// top running on through the bump's feet, is not the bump and the floor below it (whose top would have straight
+/// corners at the bump's feet) but more pieces, cut from the floor's lower corners. Every other input vertex is a
+/// corner of at least one piece, the pieces cover the outline exactly (their areas sum to its area) and meet only
+/// along their internal edges.
 /// An outline that is not simple (two edges cross or touch, or an edge folds back along the one before it) gets
 /// SelfIntersecting with the two edges; the check costs O(n^2) at worst, so the call ends on any input.
 template <typename S>
