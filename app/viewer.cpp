@@ -189,6 +189,8 @@ Figure Viewer::CurrentFigure() const
     figure.step = step_;
     figure.sim = sim_;
     figure.hit = sim_ != nullptr ? hit_ : -1;
+    // The canvas maps the pointer by the camera: a concave pair's pieces are drawn through it too.
+    figure.framesItself = false;
     return figure;
 }
 

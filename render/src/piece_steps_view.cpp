@@ -279,7 +279,9 @@ void PaintPieceSteps(Canvas& canvas, const Scene& scene, const PairStudy& pair, 
         }
     }
     const ScreenRect rect{0.0f, top, width, height};
-    const View view = FramePanel(rect, low, high, figure.view.width, figure.view.height, kMargin).view;
+    const View view =
+        figure.framesItself ? FramePanel(rect, low, high, figure.view.width, figure.view.height, kMargin).view
+                            : figure.view;
 
     // Which pieces this step is about: a tested pair's two, the deciding pair at the verdict, all at the broadphase.
     int focusA = -1;

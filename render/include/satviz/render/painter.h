@@ -33,6 +33,9 @@ struct Figure
     FigureKind kind = FigureKind::Pair;
     /// Figures of one body (a decomposition): that body's index in the scene.
     int body = -1;
+    /// The pieces figure frames its bodies itself (true), or draws them through `view`'s camera (false): the app's
+    /// canvas, which maps the pointer to the world by that camera, so that a body is dragged where it is drawn.
+    bool framesItself = true;
 };
 
 /// Screen regions of a figure: the caption band on top, the number-line panel at the bottom, the scene between.
