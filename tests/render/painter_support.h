@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Helpers of the painter's tests: loading a scene, painting a step on a recording canvas, projecting a placed shape
-// and reading a number from the drawn texts.
+// Helpers of the painter's tests: loading a scene, random pairs, painting a step on a recording canvas, projecting a
+// placed shape and reading a number from the drawn texts.
 #pragma once
+
+#include "support/random_shapes.h"
 
 #include <satviz/render/figure.h>
 #include <satviz/render/recording_canvas.h>
@@ -24,6 +26,23 @@ inline Scene Load(const std::string& file)
     INFO(result.error);
     REQUIRE(result.Ok());
     return result.scene;
+}
+
+/// Two random convex polygons A and B of 3 to maxVertices vertices, radius 1 scaled by minScale to 1, at random
+/// places within 1.2 of the origin on each axis and random angles: the random pairs of the views' property tests.
+inline Scene RandomPolygonPair(testing::Rng& rng, int maxVertices, double minScale)
+{
+    Scene scene;
+    for (int k = 0; k < 2; ++k)
+    {
+        Body body;
+        body.name = k == 0 ? "A" : "B";
+        body.shape = MakeShape(testing::RandomPolygon(rng, rng.Int(3, maxVertices), 1.0, rng.Uniform(minScale, 1.0)));
+        body.position = {rng.Uniform(-1.2, 1.2), rng.Uniform(-1.2, 1.2)};
+        body.angle = rng.Uniform(-3.0, 3.0);
+        scene.bodies.push_back(std::move(body));
+    }
+    return scene;
 }
 
 /// The figure of one step with the given layers, on a recording canvas.

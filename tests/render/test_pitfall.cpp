@@ -92,16 +92,7 @@ TEST_CASE("Pitfalls on random pairs: scaling keeps every verdict, fewer axes nev
     testing::Rng rng(31);
     for (int i = 0; i < 2000; ++i)
     {
-        Scene scene;
-        for (int k = 0; k < 2; ++k)
-        {
-            Body body;
-            body.name = k == 0 ? "A" : "B";
-            body.shape = MakeShape(testing::RandomPolygon(rng, rng.Int(3, 10), 1.0, rng.Uniform(0.3, 1.0)));
-            body.position = {rng.Uniform(-1.2, 1.2), rng.Uniform(-1.2, 1.2)};
-            body.angle = rng.Uniform(-3.0, 3.0);
-            scene.bodies.push_back(std::move(body));
-        }
+        const Scene scene = RandomPolygonPair(rng, 10, 0.3);
         const TextbookResult right =
             TextbookCollide(scene.bodies[0].shape, scene.bodies[0].Xf(), scene.bodies[1].shape, scene.bodies[1].Xf());
         if (std::abs(right.overlap ? right.depth : right.gap) < 1e-9)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The study of a pair in single precision against the same study in double, on random pairs.
 
+#include "render/painter_support.h"
 #include "support/random_shapes.h"
 
 #include <satviz/render/study.h>
@@ -18,16 +19,7 @@ TEST_CASE("The single-precision study agrees with double within float rounding, 
     int compared = 0;
     for (int i = 0; i < 2000; ++i)
     {
-        Scene scene;
-        for (int k = 0; k < 2; ++k)
-        {
-            Body body;
-            body.name = k == 0 ? "A" : "B";
-            body.shape = MakeShape(testing::RandomPolygon(rng, rng.Int(3, 12), 1.0, rng.Uniform(0.4, 1.0)));
-            body.position = {rng.Uniform(-1.2, 1.2), rng.Uniform(-1.2, 1.2)};
-            body.angle = rng.Uniform(-3.0, 3.0);
-            scene.bodies.push_back(std::move(body));
-        }
+        const Scene scene = painter_test::RandomPolygonPair(rng, 12, 0.4);
         const PairStudy exact = StudyPair(scene, 0, 1, ViewQuery::Collide, false);
         const PairStudy single = StudyPair(scene, 0, 1, ViewQuery::Collide, true);
         if (!single.singlePrecision)
