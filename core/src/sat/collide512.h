@@ -8,6 +8,7 @@
 
 #include "clip.h"
 #include "cpu_dispatch.h"
+#include "face_kernel.h"
 #include "face_query.h"
 #include "incident_polygon.h"
 #include "lanes8.h"
@@ -27,8 +28,9 @@ namespace satviz::detail
 #if SATVIZ_WIDE
 /// The separations of the faces of `ref` (at most 8, unit normals, one per lane) from the first N of the other
 /// polygon's vertices, mapped into ref's frame and held in registers (MapVertices512; N is its padded count, 4 or
-/// 8): the products, sums and minimum of SmallRefSeparations, in the same order, so the same bits. The lanes past
-/// ref's last face and those of the `skip`ped faces hold -infinity, so that they take no part.
+/// 8): the face-separation kernel in eight lanes (face_kernel.h), where SmallRefSeparations runs it in four, so the
+/// same bits. The lanes past ref's last face and those of the `skip`ped faces hold -infinity, so that they take no
+/// part.
 template <int N>
 [[gnu::target("avx512f")]] Lanes8 FaceSeparations512(const PolygonT<double>& ref, const Lanes8& x, const Lanes8& y,
                                                      uint64_t skip)
@@ -40,12 +42,8 @@ template <int N>
     Lanes8 ny;
     Lanes8::LoadPoints(&ref.InlineBlock()[0].x, vx, vy);
     Lanes8::LoadPoints(&ref.InlineBlock()[n + 1].x, nx, ny);
-    Lanes8 low = nx * x.Spread(0) + ny * y.Spread(0);
-    for (int j = 1; j < N; ++j)
-    {
-        low = Min(low, nx * x.Spread(j) + ny * y.Spread(j));
-    }
-    const Lanes8 separation = (low - (nx * vx + ny * vy)) + Lanes8::Fill(0.0);
+    const Lanes8 separation =
+        SeparationsOf(LowestProjection<N, SpreadVertices8>(RegisterVertices8{x, y}, nx, ny), nx * vx + ny * vy);
     const int hidden = static_cast<int>((skip | ~((uint64_t(1) << n) - 1)) & 0xFF);
     return separation.Replace(hidden, -std::numeric_limits<double>::infinity());
 }

@@ -3,11 +3,12 @@
 // (face_query.h) takes a face, scans the incident polygon's vertices, and branches on the separation: a branch per
 // face, whose outcome follows the geometry and is mispredicted. Here each vertex is projected on four normals at
 // once, the minimum is kept per lane, and a block of four faces (or all faces of a polygon of up to 8) costs one
-// branch. The same products, sums and minimum as the face-at-a-time scan (FaceSeparation), so the same bits; the
-// recorder replays the faces one by one. Collide's face query (unit normals), the sweep's separations, and Overlap's
-// test of polygons of up to 8 vertices (raw edge normals) use them.
+// branch: the face-separation kernel (face_kernel.h), with the products, sums and minimum of the face-at-a-time scan
+// (FaceSeparation), so the same bits; the recorder replays the faces one by one. Collide's face query (unit
+// normals), the sweep's separations, and Overlap's test of polygons of up to 8 vertices (raw edge normals) use them.
 #pragma once
 
+#include "face_kernel.h"
 #include "face_query.h"
 #include "incident_polygon.h"
 #include "lanes.h"
@@ -22,27 +23,6 @@
 
 namespace satviz::detail
 {
-
-/// The smallest projection of a scanned inc's N padded vertices on four normals at once (nx, ny in lanes): each
-/// vertex is projected on all four and the minimum kept per lane, in the order FaceSeparation takes it. Four
-/// vertices are loaded at a time and spread across the lanes from registers, which measured 4 to 9% faster for the
-/// sweep of 8-gons than a broadcast load per vertex.
-template <int N, typename S, typename L>
-L ProjectionMinimum(const IncidentPolygon<S>& inc, const L& nx, const L& ny)
-{
-    L low = L::Fill(S(0));
-    for (int j = 0; j < N; j += 4)
-    {
-        const L xs = L::Load(inc.x + j);
-        const L ys = L::Load(inc.y + j);
-        const L p0 = nx * xs.template Spread<0>() + ny * ys.template Spread<0>();
-        low = j == 0 ? p0 : Min(low, p0);
-        low = Min(low, nx * xs.template Spread<1>() + ny * ys.template Spread<1>());
-        low = Min(low, nx * xs.template Spread<2>() + ny * ys.template Spread<2>());
-        low = Min(low, nx * xs.template Spread<3>() + ny * ys.template Spread<3>());
-    }
-    return low;
-}
 
 /// Four faces of `polygon` from face i0, the last face repeated past the end, as lanes: their unit normals
 /// (nx, ny) and first vertices (vx, vy). A full block loads its normals and vertices whole.
@@ -82,28 +62,6 @@ struct FaceBlock
     L Offset() const { return nx * vx + ny * vy; }
 };
 
-/// The smallest projection of a scanned inc's N padded vertices on the normals of one or two blocks of faces
-/// (kBlocks), per lane: each vertex is loaded once for both blocks, and the minimum is taken in vertex order, with
-/// the same products and sums as FaceSeparation, so the same bits.
-template <int N, int kBlocks, typename L, typename S>
-void LowestProjections(const IncidentPolygon<S>& inc, const L& nx0, const L& ny0, const L& nx1, const L& ny1, L& low0,
-                       L& low1)
-{
-    static_assert(kBlocks == 1 || kBlocks == 2, "one or two blocks");
-    for (int j = 0; j < N; ++j)
-    {
-        const L x = L::Fill(inc.x[j]);
-        const L y = L::Fill(inc.y[j]);
-        const L projection0 = nx0 * x + ny0 * y;
-        low0 = j == 0 ? projection0 : Min(low0, projection0);
-        if constexpr (kBlocks == 2)
-        {
-            const L projection1 = nx1 * x + ny1 * y;
-            low1 = j == 0 ? projection1 : Min(low1, projection1);
-        }
-    }
-}
-
 /// The separations of the faces of a small ref (kBlocks blocks of four, 1 or 2: at most 8 faces) from a scanned inc
 /// of N padded vertices, per block in lanes, in one pass over inc's vertices: each vertex is loaded once, as lanes,
 /// for both blocks, whose normals stay in registers. The same products, sums and minimum as FaceSeparation, so the
@@ -122,9 +80,10 @@ struct SmallRefSeparations
     {
         L low0 = L::Fill(S(0));
         L low1 = L::Fill(S(0));
-        LowestProjections<N, kBlocks>(inc, faces0.nx, faces0.ny, faces1.nx, faces1.ny, low0, low1);
-        block0 = (low0 - faces0.Offset()) + L::Fill(S(0));
-        block1 = kBlocks == 2 ? (low1 - faces1.Offset()) + L::Fill(S(0)) : block0;
+        LowestProjections<N, kBlocks, BroadcastVertices<L, S>>(inc, faces0.nx, faces0.ny, faces1.nx, faces1.ny, low0,
+                                                               low1);
+        block0 = SeparationsOf(low0, faces0.Offset());
+        block1 = kBlocks == 2 ? SeparationsOf(low1, faces1.Offset()) : block0;
     }
 };
 
@@ -195,12 +154,12 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
     }
     L low0 = L::Fill(S(0));
     L low1 = L::Fill(S(0));
-    LowestProjections<N, kBlocks>(inc, n0x, n0y, n1x, n1y, low0, low1);
-    L block0 = (low0 - (n0x * v0x + n0y * v0y)) + L::Fill(S(0));
+    LowestProjections<N, kBlocks, BroadcastVertices<L, S>>(inc, n0x, n0y, n1x, n1y, low0, low1);
+    L block0 = SeparationsOf(low0, n0x * v0x + n0y * v0y);
     L block1 = block0;
     if constexpr (kBlocks == 2)
     {
-        block1 = (low1 - (n1x * v1x + n1y * v1y)) + L::Fill(S(0));
+        block1 = SeparationsOf(low1, n1x * v1x + n1y * v1y);
     }
     HideFaces<kBlocks>(skip, n, block0, block1);
     const L zero = L::Fill(S(0));
@@ -244,10 +203,10 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
 /// taken across lanes, and a block of four faces costs one branch instead of one per face, whose outcome follows the
 /// geometry and would be mispredicted. The last block repeats the last face, which changes no answer: a skipped last
 /// face is skipped in every lane that repeats it, else its separation, which may round apart from that of the other
-/// polygon's face it repeats, would count. Each lane keeps the largest separation it saw and its first face; the lanes combine into the
-/// first face of the largest separation, as a face-by-face loop finds it. A block that holds a separating face ends
-/// the query at the first such face. The recorder replays the block's faces in order, up to that face, with the same
-/// numbers. A ref of at most 8 faces takes SmallRefFaceQuery instead, and Overlap of small polygons
+/// polygon's face it repeats, would count. Each lane keeps the largest separation it saw and its first face; the lanes
+/// combine into the first face of the largest separation, as a face-by-face loop finds it. A block that holds a
+/// separating face ends the query at the first such face. The recorder replays the block's faces in order, up to that
+/// face, with the same numbers. A ref of at most 8 faces takes SmallRefFaceQuery instead, and Overlap of small polygons
 /// SmallFacesSeparate (raw edge normals).
 template <int N, typename S, typename Tracer>
 FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second,
@@ -311,7 +270,7 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
     for (int i0 = 0; i0 < n; i0 += 4)
     {
         const FaceBlock<L, S> block(ref, ref.Vertices().data, i0);
-        if (take(i0, (ProjectionMinimum<N>(inc, block.nx, block.ny) - block.Offset()) + L::Fill(S(0))))
+        if (take(i0, SeparationsOf(LowestProjection<N, SpreadVertices<L, S>>(inc, block.nx, block.ny), block.Offset())))
         {
             return query;
         }
@@ -371,9 +330,9 @@ bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
     const EdgeNormalBlock<L, S> faces1(ref, kBlocks == 2 ? 4 : 0);
     L low0 = L::Fill(S(0));
     L low1 = L::Fill(S(0));
-    LowestProjections<N, kBlocks>(inc, faces0.nx, faces0.ny, faces1.nx, faces1.ny, low0, low1);
-    const L separation0 = (low0 - faces0.offset) + L::Fill(S(0));
-    const L separation1 = kBlocks == 2 ? (low1 - faces1.offset) + L::Fill(S(0)) : separation0;
+    LowestProjections<N, kBlocks, BroadcastVertices<L, S>>(inc, faces0.nx, faces0.ny, faces1.nx, faces1.ny, low0, low1);
+    const L separation0 = SeparationsOf(low0, faces0.offset);
+    const L separation1 = kBlocks == 2 ? SeparationsOf(low1, faces1.offset) : separation0;
     // Faces that take part, one bit each: the real ones, less the skipped.
     const int live = static_cast<int>(((uint64_t(1) << n) - 1) & ~skip);
     const int separating = (((separation0 > L::Fill(S(0))).Bits() | (separation1 > L::Fill(S(0))).Bits() << 4) & live);

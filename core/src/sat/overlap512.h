@@ -6,6 +6,7 @@
 #pragma once
 
 #include "cpu_dispatch.h"
+#include "face_kernel.h"
 #include "face_query.h"
 #include "lanes8.h"
 
@@ -54,8 +55,8 @@ struct MappedPair512
 
 /// Whether a face of `ref` (at most 8 faces, raw edge normals, all in one register of eight lanes) separates it from
 /// the N vertices of the other polygon, mapped into ref's frame and held in registers (MapVertices512), less the
-/// `skip`ped faces. The same products, sums and minimum per face, in the same order, as SmallFacesSeparate, so the
-/// same separations to the bit; the vertices come from registers, not from an array on the stack.
+/// `skip`ped faces. The face-separation kernel in eight lanes (face_kernel.h), where SmallFacesSeparate runs it in
+/// four, so the same separations to the bit; the vertices come from registers, not from an array on the stack.
 template <int N>
 [[gnu::target("avx512f")]] bool FacesSeparate512(const PolygonT<double>& ref, const Lanes8& x, const Lanes8& y,
                                                  uint64_t skip)
@@ -68,14 +69,8 @@ template <int N>
     Lanes8::LoadPoints(&ref.InlineBlock()[1].x, wx, wy);
     const Lanes8 nx = wy - vy;
     const Lanes8 ny = vx - wx;
-    const Lanes8 offset = nx * vx + ny * vy;
-    Lanes8 low = Lanes8::Fill(0.0);
-    for (int j = 0; j < N; ++j)
-    {
-        const Lanes8 projection = nx * x.Spread(j) + ny * y.Spread(j);
-        low = j == 0 ? projection : Min(low, projection);
-    }
-    const Lanes8 separation = (low - offset) + Lanes8::Fill(0.0);
+    const Lanes8 separation =
+        SeparationsOf(LowestProjection<N, SpreadVertices8>(RegisterVertices8{x, y}, nx, ny), nx * vx + ny * vy);
     const int live = static_cast<int>(((uint64_t(1) << ref.Count()) - 1) & ~skip);
     return (separation.GreaterBits(Lanes8::Fill(0.0)) & live) != 0;
 }

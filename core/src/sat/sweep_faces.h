@@ -178,9 +178,7 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
             // The four faces side by side: each vertex of inc is projected on all four normals at once and the
             // minimum kept per lane, so no minimum is taken across lanes. The same products, sums and minimum as
             // FaceSeparation, so the same bits.
-            const L offset = block.Offset();
-            const L low = ProjectionMinimum<N>(inc, nx, ny);
-            separations = (low - offset) + L::Fill(S(0));
+            separations = SeparationsOf(LowestProjection<N, SpreadVertices<L, S>>(inc, nx, ny), block.Offset());
         }
         const L rates = nx * L::Fill(velocity.x) + ny * L::Fill(velocity.y);
         const AxisLanes<L> axes(separations, rates, StillRate(velocity));
