@@ -236,13 +236,13 @@ void Panels::Shortcuts()
         app_.TogglePlay();
     }
     // The arrows pass over the faces a sweep decided without evaluating them (PairStudy::NextStep).
-    if (PressedNamed(ImGuiKey_RightArrow) && viewer.Step() < viewer.Setup().study.VerdictStep())
+    if (PressedNamed(ImGuiKey_RightArrow) && viewer.Step() < viewer.VerdictStep())
     {
-        app_.ShowStep(viewer.Setup().study.NextStep(viewer.Step(), 1));
+        app_.ShowStep(viewer.NextStep(viewer.Step(), 1));
     }
     if (PressedNamed(ImGuiKey_LeftArrow) && viewer.Step() > 0)
     {
-        app_.ShowStep(viewer.Setup().study.NextStep(viewer.Step(), -1));
+        app_.ShowStep(viewer.NextStep(viewer.Step(), -1));
     }
     if (PressedNamed(ImGuiKey_Delete))
     {
@@ -557,9 +557,47 @@ void Panels::StepControls()
     if (viewer.CurrentFigure().kind == FigureKind::Pieces)
     {
         // The steps and numbers below are those of SAT on two convex shapes; a concave body's would be its hull's.
-        WrappedText("A concave body is tested piece by piece, as the canvas shows: its caption gives the pairs of "
-                    "pieces tested and the merged verdict. SAT's axes and numbers would be those of its hull, which "
-                    "is not the body, so they are not shown.");
+        WrappedText("A concave body is tested piece by piece, as the canvas shows: first the pieces' boxes, then "
+                    "each pair of pieces whose boxes overlap, then the merged verdict; the caption explains each "
+                    "step. SAT's axes and numbers would be those of its hull, which is not the body, so they are not "
+                    "shown.");
+        ImGui::Separator();
+        const int step = viewer.Step();
+        const int last = viewer.VerdictStep();
+        ImGui::BeginDisabled(step <= 0);
+        if (ImGui::ArrowButton("##previous", ImGuiDir_Left))
+        {
+            app_.ShowStep(viewer.NextStep(step, -1));
+        }
+        ImGui::EndDisabled();
+        ImGui::SameLine();
+        ImGui::BeginDisabled(step >= last);
+        if (ImGui::ArrowButton("##next", ImGuiDir_Right))
+        {
+            app_.ShowStep(viewer.NextStep(step, 1));
+        }
+        ImGui::EndDisabled();
+        ImGui::SameLine();
+        if (ImGui::Button(viewer.Playing() ? "Pause" : "Play"))
+        {
+            app_.TogglePlay();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Verdict"))
+        {
+            app_.ShowStep(last);
+        }
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(-1.0f);
+        int shown = step;
+        const std::string name = step == 0      ? "the pieces' boxes"
+                                 : step == last ? "verdict"
+                                                : "pair of pieces " + std::to_string(step) + " of " +
+                                                      std::to_string(last - 1);
+        if (ImGui::SliderInt("##step", &shown, 0, last, name.c_str()) && shown != step)
+        {
+            app_.ShowStep(shown);
+        }
         return;
     }
     int query = static_cast<int>(choices.query);

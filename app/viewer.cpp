@@ -160,14 +160,14 @@ void Viewer::Adopt(FigureSetup fresh, Scene studied)
 {
     // A student reading the verdict stays on it: the new test's verdict may be another step (a drag to overlap
     // adds axes), and its number would now show an axis.
-    const bool onVerdict = setup_.Ok() && step_ == setup_.study.VerdictStep();
+    const bool onVerdict = setup_.Ok() && step_ == VerdictStep();
     setup_ = std::move(fresh);
     studied_ = std::move(studied);
     if (!setup_.Ok())
     {
         return;
     }
-    ShowStep(onVerdict ? setup_.study.VerdictStep() : step_);
+    ShowStep(onVerdict ? VerdictStep() : step_);
     if (cameraFit_ || (framed_ && FrameSqueezed(frame_, setup_.study, choices_.layers, !studied_.view.caption.empty())))
     {
         camera_ = setup_.figure.view;
@@ -194,6 +194,21 @@ Figure Viewer::CurrentFigure() const
     return figure;
 }
 
+int Viewer::VerdictStep() const
+{
+    return setup_.figure.kind == FigureKind::Pieces ? FigureStepCount(studied_, setup_) - 1
+                                                    : setup_.study.VerdictStep();
+}
+
+int Viewer::NextStep(int step, int direction) const
+{
+    if (setup_.figure.kind == FigureKind::Pieces)
+    {
+        return std::clamp(step + direction, 0, VerdictStep());
+    }
+    return setup_.study.NextStep(step, direction);
+}
+
 void Viewer::ShowStep(int step)
 {
     step_ = step;
@@ -201,9 +216,9 @@ void Viewer::ShowStep(int step)
     {
         return;
     }
-    if (step_ < 0 || step_ >= setup_.study.StepCount())
+    if (step_ < 0 || step_ > VerdictStep())
     {
-        step_ = setup_.study.VerdictStep();
+        step_ = VerdictStep();
     }
     setup_.figure.step = step_;
     setup_.figure.time = time_;
@@ -214,9 +229,9 @@ void Viewer::TogglePlay()
 {
     playing_ = !playing_;
     playClock_ = 0.0;
-    if (playing_ && step_ >= setup_.study.VerdictStep())
+    if (playing_ && step_ >= VerdictStep())
     {
-        ShowStep(setup_.study.NextStep(-1, 1));
+        ShowStep(NextStep(-1, 1));
     }
 }
 
@@ -230,11 +245,11 @@ void Viewer::Advance(double seconds)
     if (playClock_ >= kPlayInterval)
     {
         playClock_ = 0.0;
-        if (step_ < setup_.study.VerdictStep())
+        if (step_ < VerdictStep())
         {
-            ShowStep(setup_.study.NextStep(step_, 1));
+            ShowStep(NextStep(step_, 1));
         }
-        playing_ = step_ < setup_.study.VerdictStep();
+        playing_ = step_ < VerdictStep();
     }
 }
 

@@ -68,6 +68,12 @@ class Viewer
     int Step() const { return step_; }
     /// Shows trace step `step`; one that does not exist shows the verdict.
     void ShowStep(int step);
+    /// The last step, the verdict: the pair's SAT test's (PairStudy::VerdictStep), or for a concave pair the
+    /// pieces figure's, after the broadphase and each pair of pieces tested.
+    int VerdictStep() const;
+    /// The step after (direction 1) or before (-1) `step` that the arrows and Play show: PairStudy::NextStep, or
+    /// for a concave pair the next piece step.
+    int NextStep(int step, int direction) const;
     /// True while stepping automatically.
     bool Playing() const { return playing_; }
     /// Starts or stops stepping automatically; starting at the verdict starts from the first step (that is not a

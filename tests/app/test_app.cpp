@@ -1268,6 +1268,48 @@ TEST_CASE("Every bundled scene, in every folder of tutorials/scenes, opens in th
     CHECK(alone >= 4); // the decompositions and slices of lesson 18
 }
 
+TEST_CASE("A concave pair steps through its pieces: the boxes, each pair of pieces tested, the verdict", "[app]")
+{
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/concave/l18_across.json");
+    REQUIRE(h.View().TestsPair());
+    REQUIRE(h.View().CurrentFigure().kind == FigureKind::Pieces);
+    const Scene& scene = h.Doc().GetScene();
+    const ConcaveManifold m = Collide(scene.bodies[0].concave, scene.bodies[0].Xf(), scene.bodies[1].shape,
+                                      scene.bodies[1].Xf());
+    // The broadphase, one step per pair of pieces tested, the verdict.
+    const int verdict = m.pairsTested + 1;
+    REQUIRE(m.pairsTested == 2);
+    CHECK(h.View().VerdictStep() == verdict);
+    CHECK(h.View().Step() == verdict); // opened on the verdict
+    for (int step = verdict - 1; step >= 0; --step)
+    {
+        h.Key(kLeft);
+        CHECK(h.View().Step() == step);
+        CHECK(h.View().CurrentFigure().step == step);
+    }
+    h.Key(kLeft);
+    CHECK(h.View().Step() == 0);
+    for (int step = 1; step <= verdict; ++step)
+    {
+        h.Key(kRight);
+        CHECK(h.View().Step() == step);
+    }
+    h.Key(kRight);
+    CHECK(h.View().Step() == verdict);
+    // Play from the verdict starts at the boxes and stops at the verdict.
+    h.Key(kSpace);
+    CHECK(h.View().Step() == 0);
+    CHECK(h.View().Playing());
+    for (int i = 0; i < 400 && h.View().Playing(); ++i)
+    {
+        ImGui::GetIO().DeltaTime = 0.05f;
+        h.Frames(1);
+    }
+    ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
+    CHECK(!h.View().Playing());
+    CHECK(h.View().Step() == verdict);
+}
+
 TEST_CASE("Lesson Markdown is parsed with md4c into headings, text, items, code, figures and table rows",
           "[app][lessons]")
 {
