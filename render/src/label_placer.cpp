@@ -18,6 +18,7 @@ constexpr float kSideMargin = 4.0f;   // and its left and right edges, beyond th
 // ("-3.00 -3.00", "c2 1"), and stacked labels that touch read as one block.
 constexpr float kKeepX = 4.0f;
 constexpr float kKeepY = 3.0f;
+constexpr float kNameRoom = 5.0f; // and a body's name this much more
 constexpr double kPi = 3.14159265358979323846;
 
 // The rectangle of a label `size` big whose point nearest the anchor lies `reach` pixels away along `angle`.
@@ -207,7 +208,7 @@ bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
         std::any_of(bands_.begin(), bands_.end(), [&](const ScreenRect& band) {
             return anchor.x >= band.minX && anchor.x <= band.maxX && anchor.y >= band.minY && anchor.y <= band.maxY;
         });
-    if (hidden && rank <= LabelRank::Edge)
+    if (hidden && rank <= LabelRank::Named)
     {
         return false;
     }
@@ -304,7 +305,10 @@ bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
 bool LabelPlacer::Free(const ScreenRect& rect, float spacing, LabelRank rank) const
 {
     const ScreenRect foot = Footprint(rect);
-    const ScreenRect spaced{foot.minX - spacing, foot.minY, foot.maxX + spacing, foot.maxY};
+    // A body's name keeps more room from every other label, placed before it or after it, where the figure has
+    // that room (the first pass, which also keeps a space beside every label).
+    const float room = rank == LabelRank::Name && spacing > 0.0f ? kNameRoom : 0.0f;
+    const ScreenRect spaced{foot.minX - spacing - room, foot.minY - room, foot.maxX + spacing + room, foot.maxY + room};
     if (std::any_of(taken_.begin(), taken_.end(), [&](const ScreenRect& other) { return other.Overlaps(spaced); }))
     {
         return false;
@@ -404,8 +408,10 @@ void LabelPlacer::Flush(Color halo)
                 }
             }
         }
-        // Farther out, on a leader line back to the anchor: sixteen directions, at growing distances.
-        for (int ring = 0; ring < 9 && !found; ++ring)
+        // Farther out, on a leader line back to the anchor: sixteen directions, at growing distances. Not a vertex
+        // number or an edge name that no sentence names: a number at the end of a line, among the shapes' outlines,
+        // reads as any corner's (the floor's "3" led into the box standing on it); it is left out instead.
+        for (int ring = 0; ring < 9 && !found && label->rank > LabelRank::Edge; ++ring)
         {
             const float reach = std::max(label->distance, 0.0f) + 28.0f + 16.0f * static_cast<float>(ring);
             for (int i = 0; i < 16 && !found; ++i)
@@ -425,7 +431,7 @@ void LabelPlacer::Flush(Color halo)
         }
         if (!found)
         {
-            if (label->rank <= LabelRank::Edge)
+            if (label->rank <= LabelRank::Named)
             {
                 continue;
             }
@@ -438,7 +444,11 @@ void LabelPlacer::Flush(Color halo)
                 std::clamp(chosen.minY, kMargin, std::max(kMargin, height_ - kMargin - size.y)) - chosen.minY;
             chosen = {chosen.minX + shiftX, chosen.minY + shiftY, chosen.maxX + shiftX, chosen.maxY + shiftY};
         }
-        taken_.push_back(Footprint(chosen));
+        // A body's name keeps more room around it: a number or an edge name close beside it reads as part of it
+        // ("plank e0").
+        const ScreenRect foot = Footprint(chosen);
+        const float room = label->rank == LabelRank::Name ? kNameRoom : 0.0f;
+        taken_.push_back({foot.minX - room, foot.minY - room, foot.maxX + room, foot.maxY + room});
         placed.push_back({label, chosen, leader, from});
         if (leader)
         {

