@@ -21,6 +21,12 @@ constexpr float kKeepY = 3.0f;
 constexpr float kNameRoom = 5.0f; // and a body's name this much more
 constexpr double kPi = 3.14159265358979323846;
 
+// Labels that are left out when no place is free: numbers of vertices and names of edges.
+bool MayLeaveOut(LabelRank rank)
+{
+    return rank == LabelRank::Vertex || rank == LabelRank::Edge || rank == LabelRank::Named;
+}
+
 // The rectangle of a label `size` big whose point nearest the anchor lies `reach` pixels away along `angle`.
 ScreenRect Around(ScreenPoint anchor, ScreenPoint size, double angle, float reach)
 {
@@ -166,12 +172,30 @@ bool RectMeetsConvex(const ScreenRect& rect, const std::vector<ScreenPoint>& out
     return true;
 }
 
-// Whether a label's middle lies beyond its anchor along its preferred direction, when it must.
-bool OnItsSide(bool onSide, ScreenPoint anchor, float dx, float dy, const ScreenRect& rect)
+// Whether a label's middle lies beyond its anchor along its preferred direction, when it must; with `whole`, all
+// of it (a label at the end of a leader line, whose middle alone beyond an edge's line can still sit over the
+// corner, beside the next edge).
+bool OnItsSide(bool onSide, ScreenPoint anchor, float dx, float dy, const ScreenRect& rect, bool whole = false)
 {
+    if (!onSide)
+    {
+        return true;
+    }
+    if (whole)
+    {
+        for (const ScreenPoint c : {ScreenPoint{rect.minX, rect.minY}, ScreenPoint{rect.maxX, rect.minY},
+                                    ScreenPoint{rect.minX, rect.maxY}, ScreenPoint{rect.maxX, rect.maxY}})
+        {
+            if ((c.x - anchor.x) * dx + (c.y - anchor.y) * dy <= 0.0f)
+            {
+                return false;
+            }
+        }
+        return true;
+    }
     const float cx = 0.5f * (rect.minX + rect.maxX) - anchor.x;
     const float cy = 0.5f * (rect.minY + rect.maxY) - anchor.y;
-    return !onSide || cx * dx + cy * dy > 0.0f;
+    return cx * dx + cy * dy > 0.0f;
 }
 
 } // namespace
@@ -208,7 +232,7 @@ bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
         std::any_of(bands_.begin(), bands_.end(), [&](const ScreenRect& band) {
             return anchor.x >= band.minX && anchor.x <= band.maxX && anchor.y >= band.minY && anchor.y <= band.maxY;
         });
-    if (hidden && rank <= LabelRank::Named)
+    if (hidden && MayLeaveOut(rank))
     {
         return false;
     }
@@ -411,17 +435,24 @@ void LabelPlacer::Flush(Color halo)
         // Farther out, on a leader line back to the anchor: sixteen directions, at growing distances. Not a vertex
         // number or an edge name that no sentence names: a number at the end of a line, among the shapes' outlines,
         // reads as any corner's (the floor's "3" led into the box standing on it); it is left out instead.
-        for (int ring = 0; ring < 9 && !found && label->rank > LabelRank::Edge; ++ring)
+        // A label that is always drawn tries those places once more when none is free, its leader line then
+        // allowed across other marks, before it is drawn over something at its preferred place.
+        for (int ring = 0; ring < 18 && !found && label->rank > LabelRank::Edge; ++ring)
         {
-            const float reach = std::max(label->distance, 0.0f) + 28.0f + 16.0f * static_cast<float>(ring);
+            if (ring >= 9 && MayLeaveOut(label->rank))
+            {
+                break;
+            }
+            const bool strict = ring < 9;
+            const float reach = std::max(label->distance, 0.0f) + 28.0f + 16.0f * static_cast<float>(ring % 9);
             for (int i = 0; i < 16 && !found; ++i)
             {
                 const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
                 const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
                 if (Inside(rect) && Free(rect, 0.0f, label->rank) &&
                     !InOutline(label->avoid, rect, label->edgesOnly, label->anchor) &&
-                    OnItsSide(label->onSide, label->anchor, label->dx, label->dy, rect) &&
-                    LeaderClear(label->anchor, rect))
+                    OnItsSide(label->onSide, label->anchor, label->dx, label->dy, rect, true) &&
+                    (!strict || LeaderClear(label->anchor, rect)))
                 {
                     chosen = rect;
                     found = true;
@@ -431,7 +462,7 @@ void LabelPlacer::Flush(Color halo)
         }
         if (!found)
         {
-            if (label->rank <= LabelRank::Named)
+            if (MayLeaveOut(label->rank))
             {
                 continue;
             }

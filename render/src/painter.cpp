@@ -1832,6 +1832,12 @@ class Painter
                                              isNamed ? LabelRank::Named : LabelRank::Edge))
                     {
                         labels_.KeepOnSide();
+                        // A face a sentence names may have its name anywhere along it, away from its corners,
+                        // when its middle is taken (a thin wall's name beside it).
+                        if (isNamed)
+                        {
+                            labels_.AlsoAt(AlongFace(from, to, mid, other, 12.0f, 8.0f, 12.0f));
+                        }
                     }
                 }
             }
