@@ -296,4 +296,8 @@ class App
     std::string exportPath_;
 };
 
+/// The figure the canvas paints: the viewer's, its labels kept off the selected body's turning and velocity handles,
+/// which the canvas draws over it.
+Figure CanvasFigure(const App& app);
+
 } // namespace satviz

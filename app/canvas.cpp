@@ -57,6 +57,15 @@ ScreenPoint VelocityHandle(const View& view, const Body& body)
     return {origin.x + static_cast<float>(Extent(body) * view.zoom) + 22.0f, origin.y};
 }
 
+// The pixels the turning and velocity handles cover, with the velocity handle's letter v (see Panels::Handles).
+std::vector<DrawnOver> HandleRegions(const View& view, const Body& body)
+{
+    const ScreenPoint turn = RotateHandle(view, body);
+    const ScreenPoint velocity = VelocityHandle(view, body);
+    return {{{turn.x - 7.0f, turn.y - 7.0f}, {turn.x + 7.0f, turn.y + 7.0f}},
+            {{velocity.x - 6.0f, velocity.y - 8.0f}, {velocity.x + 16.0f, velocity.y + 8.0f}}};
+}
+
 bool Contains(const Body& body, Vec2 world)
 {
     const Vec2 local = InvTransformPoint(body.Xf(), world);
@@ -105,6 +114,17 @@ int BodyAt(const Viewer& viewer, const Scene& scene, Vec2 world)
 
 } // namespace
 
+Figure CanvasFigure(const App& app)
+{
+    Figure figure = app.GetViewer().CurrentFigure();
+    const std::vector<Body>& bodies = app.ShownScene().bodies;
+    if (app.Selected() >= 0 && app.Selected() < static_cast<int>(bodies.size()))
+    {
+        figure.drawnOver = HandleRegions(app.GetViewer().Camera(), bodies[static_cast<size_t>(app.Selected())]);
+    }
+    return figure;
+}
+
 void Panels::CanvasWindow()
 {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
@@ -145,7 +165,7 @@ void Panels::CanvasWindow()
         ImDrawListCanvas canvas(list, app_.Fonts(), origin);
         canvas.ClearLargeRects(app_.Options().clearRect);
         canvas.PlainFillsUnderOutlines(true);
-        const Figure figure = viewer.CurrentFigure();
+        const Figure figure = CanvasFigure(app_);
         PaintFigure(canvas, viewer.Studied(), viewer.Setup().study, figure);
         Handles(list, origin);
         ToolOverlay(list, origin);

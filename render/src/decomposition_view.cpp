@@ -109,7 +109,7 @@ void PaintDecomposition(Canvas& canvas, const Scene& scene, int bodyIndex, const
     const float top = (figure.layers & kLayerCaption)
                           ? DrawCaptionBand(canvas, figure.caption, DescribeDecomposition(outline, fast, fewest), width)
                           : 0.0f;
-    LabelPlacer labels(canvas, width, height);
+    LabelPlacer labels(canvas, figure);
     labels.ReserveBand({0.0f, 0.0f, width, top});
 
     Vec2 low{INFINITY, INFINITY};

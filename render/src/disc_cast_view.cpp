@@ -154,7 +154,7 @@ void PaintDiscCast(Canvas& canvas, const Scene& scene, int targetIndex, int disc
     const float top = (figure.layers & kLayerCaption)
                           ? DrawCaptionBand(canvas, figure.caption, DescribeDiscCast(target, disc, hit), width)
                           : 0.0f;
-    LabelPlacer labels(canvas, width, height);
+    LabelPlacer labels(canvas, figure);
     labels.ReserveBand({0.0f, 0.0f, width, top});
 
     // The target, the pushed-out outline and both discs in the frame.

@@ -202,6 +202,15 @@ bool OnItsSide(bool onSide, ScreenPoint anchor, float dx, float dy, const Screen
 
 LabelPlacer::LabelPlacer(Canvas& canvas, float width, float height) : canvas_(canvas), width_(width), height_(height) {}
 
+LabelPlacer::LabelPlacer(Canvas& canvas, const Figure& figure)
+    : LabelPlacer(canvas, static_cast<float>(figure.view.width), static_cast<float>(figure.view.height))
+{
+    for (const DrawnOver& region : figure.drawnOver)
+    {
+        Reserve({region.min.x, region.min.y, region.max.x, region.max.y});
+    }
+}
+
 void LabelPlacer::Reserve(const ScreenRect& rect)
 {
     taken_.push_back(rect);

@@ -5,6 +5,8 @@
 
 #include "draw_kit.h"
 
+#include <satviz/render/painter.h>
+
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,6 +38,8 @@ class LabelPlacer
   public:
     /// A placer for an image of the given size.
     LabelPlacer(Canvas& canvas, float width, float height);
+    /// A placer for the figure's image, every region the caller draws over it reserved.
+    LabelPlacer(Canvas& canvas, const Figure& figure);
     /// Marks a region no label may cover: a panel, the caption, an inset, an arrow head, a contact point.
     void Reserve(const ScreenRect& rect);
     /// Marks a band that hides what lies under it (the caption, the number-line panel, an inset): no label may

@@ -438,7 +438,7 @@ class Painter
     Painter(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure)
         : canvas_(canvas), scene_(scene), study_(study), figure_(figure), view_(figure.view),
           layout_(LayoutFigure(study, figure.layers, figure.view.width, figure.view.height, !figure.caption.empty())),
-          labels_(canvas, static_cast<float>(figure.view.width), static_cast<float>(figure.view.height)),
+          labels_(canvas, figure),
           bodyA_(scene.bodies[static_cast<size_t>(study.bodyA)]), bodyB_(scene.bodies[static_cast<size_t>(study.bodyB)])
     {
         bounds_ = {-4.0f, -4.0f, static_cast<float>(view_.width) + 4.0f, static_cast<float>(view_.height) + 4.0f};

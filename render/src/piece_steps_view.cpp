@@ -265,7 +265,7 @@ void PaintPieceSteps(Canvas& canvas, const Scene& scene, const PairStudy& pair, 
     const float top = (figure.layers & kLayerCaption)
                           ? DrawCaptionBand(canvas, figure.caption, DescribePieceStep(a, b, study, step), width, lines)
                           : 0.0f;
-    LabelPlacer labels(canvas, width, height);
+    LabelPlacer labels(canvas, figure);
     labels.ReserveBand({0.0f, 0.0f, width, top});
 
     Vec2 low{INFINITY, INFINITY};

@@ -202,7 +202,7 @@ void PaintSlice(Canvas& canvas, const Scene& scene, int bodyIndex, const Figure&
     const float top = (figure.layers & kLayerCaption)
                           ? DrawCaptionBand(canvas, figure.caption, DescribeSlice(body, a, b, parts, pieces), width)
                           : 0.0f;
-    LabelPlacer labels(canvas, width, height);
+    LabelPlacer labels(canvas, figure);
     labels.ReserveBand({0.0f, 0.0f, width, top});
 
     Vec2 low{std::min(a.x, b.x), std::min(a.y, b.y)};

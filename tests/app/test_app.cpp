@@ -9,6 +9,7 @@
 #include <satviz/collide.h>
 #include <satviz/decompose.h>
 #include <satviz/render/describe.h>
+#include <satviz/render/recording_canvas.h>
 #include <satviz/render/response_steps.h>
 #include <satviz/render/wrap.h>
 #include <satviz/query_json.h>
@@ -1308,6 +1309,60 @@ TEST_CASE("A concave pair steps through its pieces: the boxes, each pair of piec
     ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
     CHECK(!h.View().Playing());
     CHECK(h.View().Step() == verdict);
+}
+
+TEST_CASE("No label of the canvas's figure lies under the selected body's turning or velocity handle", "[app]")
+{
+    // The box sunk into the L: at the verdict its push's depth is labelled right beside the box, where the velocity
+    // handle of the box sits while it does not move.
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/concave/l18_across.json");
+    REQUIRE(h.View().CurrentFigure().kind == FigureKind::Pieces);
+    h.app->Select(1);
+    h.Frames(1);
+    const Body& box = h.BodyNamed("box");
+    REQUIRE(box.velocity == Vec2{});
+    // Where the canvas draws the handles, from the body as the user sees it: the turning handle 26 pixels above the
+    // body's reach from its origin, the velocity handle (a disc of radius 5, the letter v right of it) 22 beside it.
+    double extent = 0.0;
+    for (const Vec2& v : box.shape.polygon.Vertices())
+    {
+        extent = std::max(extent, Length(v));
+    }
+    const View& camera = h.View().Camera();
+    const ScreenPoint origin = ToScreen(camera, box.position);
+    const float reach = static_cast<float>(extent * camera.zoom);
+    struct Box
+    {
+        float minX, minY, maxX, maxY;
+    };
+    const Box turn{origin.x - 6.0f, origin.y - reach - 32.0f, origin.x + 6.0f, origin.y - reach - 20.0f};
+    const Box velocity{origin.x + reach + 17.0f, origin.y - 8.0f, origin.x + reach + 37.0f, origin.y + 8.0f};
+    Figure figure = CanvasFigure(*h.app);
+    int pushes = 0;
+    for (int step = 0; step <= h.View().VerdictStep(); ++step)
+    {
+        figure.step = step;
+        RecordingCanvas canvas;
+        PaintFigure(canvas, h.View().Studied(), h.View().Setup().study, figure);
+        for (const DrawCommand& c : canvas.commands)
+        {
+            if (c.kind != DrawCommand::Kind::Text)
+            {
+                continue;
+            }
+            const ScreenPoint size = canvas.MeasureText(c.text, c.style);
+            const Box label{c.points[0].x, c.points[0].y, c.points[0].x + size.x, c.points[0].y + size.y};
+            for (const Box& handle : {turn, velocity})
+            {
+                const bool covered = label.minX < handle.maxX && handle.minX < label.maxX &&
+                                     label.minY < handle.maxY && handle.minY < label.maxY;
+                INFO("step " << step << ": \"" << c.text << "\" at " << label.minX << "," << label.minY);
+                CHECK_FALSE(covered);
+            }
+            pushes += c.group == "labels" && c.text == "0.60" ? 1 : 0;
+        }
+    }
+    CHECK(pushes > 0); // the push's label was drawn, beside the handle rather than under it
 }
 
 TEST_CASE("Lesson Markdown is parsed with md4c into headings, text, items, code, figures and table rows",

@@ -14,6 +14,13 @@
 namespace satviz
 {
 
+/// A region of the image that the caller draws over once the figure is painted, in pixels.
+struct DrawnOver
+{
+    ScreenPoint min; ///< top-left corner
+    ScreenPoint max; ///< bottom-right corner
+};
+
 /// What to picture: the camera, the layers, the trace step and the time.
 struct Figure
 {
@@ -36,6 +43,9 @@ struct Figure
     /// The pieces figure frames its bodies itself (true), or draws them through `view`'s camera (false): the app's
     /// canvas, which maps the pointer to the world by that camera, so that a body is dragged where it is drawn.
     bool framesItself = true;
+    /// What the caller draws over the figure (the app's handles of the selected body): no label is placed on it,
+    /// where it would be hidden.
+    std::vector<DrawnOver> drawnOver;
 };
 
 /// Screen regions of a figure: the caption band on top, the number-line panel at the bottom, the scene between.
