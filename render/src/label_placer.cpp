@@ -289,6 +289,14 @@ void LabelPlacer::KeepOnSide()
     }
 }
 
+void LabelPlacer::Centre()
+{
+    if (!labels_.empty())
+    {
+        labels_.back().centred = true;
+    }
+}
+
 bool LabelPlacer::Inside(const ScreenRect& rect) const
 {
     return rect.minX >= kSideMargin && rect.minY >= kMargin && rect.maxX <= width_ - kSideMargin &&
@@ -423,6 +431,17 @@ void LabelPlacer::Flush(Color halo)
         std::stable_sort(candidates.begin(), candidates.end(),
                          [&](const Candidate& a, const Candidate& b) { return cost(a) < cost(b); });
         ScreenPoint from = label->anchor;
+        if (label->centred)
+        {
+            const float left = std::round(label->anchor.x - 0.5f * size.x);
+            const float top = std::round(label->anchor.y - 0.5f * size.y);
+            const ScreenRect centred{left, top, left + size.x, top + size.y};
+            if (Inside(centred) && Free(centred, 0.0f, label->rank))
+            {
+                chosen = centred;
+                found = true;
+            }
+        }
         for (int pass = 0; pass < 2 && !found; ++pass)
         {
             for (const Candidate& c : candidates)

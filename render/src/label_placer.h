@@ -68,6 +68,9 @@ class LabelPlacer
     /// Keeps the label added last on the side its preferred direction points to, beyond the line through its anchor
     /// square to that direction: an edge's name outside its edge, where it names that edge and not the one opposite.
     void KeepOnSide();
+    /// Puts the label added last centred on its anchor when that place is free: a name inside the shape it names.
+    /// Elsewhere it is placed as any other label.
+    void Centre();
     /// Places every label added and draws them, in the group "labels": leader lines first, then each label on a
     /// faint halo of the background.
     void Flush(Color halo);
@@ -85,6 +88,7 @@ class LabelPlacer
         bool edgesOnly = false;         // the anchor lies inside `avoid`: the label only keeps off its edges
         bool onSide = false;            // the label's middle stays beyond its anchor along (dx, dy)
         std::vector<ScreenPoint> alternates; // other anchors along what it names, nearest first
+        bool centred = false;                // tried first centred on its anchor
     };
     struct Line
     {

@@ -18,6 +18,7 @@ namespace
 constexpr float kHeaderHeight = 40.0f; // a panel's title and the line under it
 constexpr float kMargin = 34.0f;       // room around the drawing inside a panel, for the crossings' coordinates
 constexpr float kApart = 10.0f;        // pixels each part is moved away from the cut in the after panel
+constexpr float kRoom = 6.0f;          // pixels a part's area keeps from the part's outline to be written inside it
 
 double Area(const std::vector<Vec2>& ring)
 {
@@ -42,6 +43,21 @@ Vec2 Centroid(const std::vector<Vec2>& ring)
         sum = sum + w * (a + b);
     }
     return (1.0 / (3.0 * area2)) * sum;
+}
+
+// Whether p lies inside the ring (crossing count).
+bool InRing(const std::vector<Vec2>& ring, Vec2 p)
+{
+    bool inside = false;
+    for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
+    {
+        if ((ring[i].y > p.y) != (ring[j].y > p.y) &&
+            p.x < ring[j].x + (p.y - ring[j].y) * (ring[i].x - ring[j].x) / (ring[i].y - ring[j].y))
+        {
+            inside = !inside;
+        }
+    }
+    return inside;
 }
 
 // A coordinate beside another: an exact 0 as 0.00, like its neighbour.
@@ -261,8 +277,34 @@ void PaintSlice(Canvas& canvas, const Scene& scene, int bodyIndex, const Figure&
             const double side = Dot(centre - a, left) >= 0.0 ? 1.0 : -1.0;
             const Vec2 shift = parts.size() < 2 ? Vec2{} : (side * kApart / panel.view.zoom) * left;
             DrawPart(canvas, panel.view, pieces[i].pieces, PieceColor(static_cast<int>(i)), shift, rects[1]);
-            labels.Place(ToScreen(panel.view, centre + shift), "area " + FormatNumber(Area(parts[i])), TextStyle::Label,
-                         palette::kInk, 0.0f, 0.0f, 0.0f, LabelRank::Name);
+            // A part's area inside it, centred, where the label fits with room around it; otherwise just beside the
+            // part, on its side away from the cut, level with its centre.
+            const std::string text = "area " + FormatNumber(Area(parts[i]));
+            const ScreenPoint size = canvas.MeasureText(text, TextStyle::Label);
+            const double hx = (0.5 * size.x + kRoom) / panel.view.zoom;
+            const double hy = (0.5 * size.y + kRoom) / panel.view.zoom;
+            bool fits = true;
+            for (const Vec2 corner : {Vec2{-hx, -hy}, Vec2{hx, -hy}, Vec2{hx, hy}, Vec2{-hx, hy}})
+            {
+                fits = fits && InRing(parts[i], centre + corner);
+            }
+            if (fits)
+            {
+                labels.Place(ToScreen(panel.view, centre + shift), text, TextStyle::Label, palette::kInk, 0.0f, 0.0f,
+                             0.0f, LabelRank::Name);
+                labels.Centre();
+            }
+            else
+            {
+                const Vec2 out = side * left;
+                double reach = 0.0;
+                for (const Vec2& v : parts[i])
+                {
+                    reach = std::max(reach, Dot(v - centre, out));
+                }
+                labels.Place(ToScreen(panel.view, centre + shift + reach * out), text, TextStyle::Label, palette::kInk,
+                             static_cast<float>(out.x), static_cast<float>(-out.y), 6.0f, LabelRank::Name);
+            }
         }
     }
     labels.Flush(palette::kBackground);

@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 using namespace satviz;
@@ -265,6 +267,92 @@ TEST_CASE("The slice figure marks where the cut crosses the outline, and the par
     }
     CHECK(areas == 3);
     CHECK(std::fabs(testing::Area2(u)) == 16.0L);
+}
+
+TEST_CASE("A part's area is written inside the part, centred, where it fits, and otherwise just beside it",
+          "[concave-views]")
+{
+    // Lesson 19's bar cut at x = 0.5: the part on the left is wide enough for its label, the one on the right not.
+    std::ifstream file(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/concave/l19_bar_cut.json");
+    std::stringstream text;
+    text << file.rdbuf();
+    const Scene scene = LoadConcave(text.str());
+    RecordingCanvas canvas = PaintScene(scene);
+    // Each part is one convex piece, a rectangle: its box on screen from what the after panel fills.
+    struct Box
+    {
+        float minX, minY, maxX, maxY;
+    };
+    std::vector<Box> parts;
+    for (const DrawCommand* c : canvas.InGroup("after"))
+    {
+        if (c->kind == DrawCommand::Kind::FillConvex)
+        {
+            Box box{INFINITY, INFINITY, -INFINITY, -INFINITY};
+            for (const ScreenPoint& p : c->points)
+            {
+                box = {std::min(box.minX, p.x), std::min(box.minY, p.y), std::max(box.maxX, p.x),
+                       std::max(box.maxY, p.y)};
+            }
+            parts.push_back(box);
+        }
+    }
+    REQUIRE(parts.size() == 2);
+    int inside = 0;
+    int beside = 0;
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || c->text.rfind("area ", 0) != 0)
+        {
+            continue;
+        }
+        const ScreenPoint size = canvas.MeasureText(c->text, c->style);
+        const Box label{c->points[0].x, c->points[0].y, c->points[0].x + size.x, c->points[0].y + size.y};
+        INFO(c->text << " at " << label.minX << "," << label.minY);
+        // The part it names: the one whose box holds the label's middle, or else the nearest across a gap.
+        const float mx = 0.5f * (label.minX + label.maxX);
+        const float my = 0.5f * (label.minY + label.maxY);
+        bool within = false;
+        for (const Box& part : parts)
+        {
+            if (mx > part.minX && mx < part.maxX && my > part.minY && my < part.maxY)
+            {
+                within = true;
+                // Wholly inside, centred on the part's middle (a rectangle's centroid).
+                CHECK(label.minX > part.minX);
+                CHECK(label.maxX < part.maxX);
+                CHECK(std::fabs(mx - 0.5f * (part.minX + part.maxX)) <= 1.0f);
+                CHECK(std::fabs(my - 0.5f * (part.minY + part.maxY)) <= 1.0f);
+                ++inside;
+            }
+        }
+        if (!within)
+        {
+            // Beside a part: on no part, a few pixels from one edge, level with that part's middle.
+            float gap = INFINITY;
+            const Box* nearest = nullptr;
+            for (const Box& part : parts)
+            {
+                const bool overlaps = label.minX < part.maxX && part.minX < label.maxX && label.minY < part.maxY &&
+                                      part.minY < label.maxY;
+                CHECK_FALSE(overlaps);
+                const float dx = std::max({part.minX - label.maxX, label.minX - part.maxX, 0.0f});
+                const float dy = std::max({part.minY - label.maxY, label.minY - part.maxY, 0.0f});
+                if (std::hypot(dx, dy) < gap)
+                {
+                    gap = std::hypot(dx, dy);
+                    nearest = &part;
+                }
+            }
+            REQUIRE(nearest != nullptr);
+            CHECK(gap <= 10.0f);
+            CHECK(my > nearest->minY);
+            CHECK(my < nearest->maxY);
+            ++beside;
+        }
+    }
+    CHECK(inside == 1); // area 1.50 in the wide part
+    CHECK(beside == 1); // area 0.50 beside the narrow one
 }
 
 TEST_CASE("A cut that stops inside the body leaves it whole, and the figure says why", "[concave-views]")
