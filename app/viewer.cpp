@@ -177,6 +177,13 @@ void Viewer::Adopt(FigureSetup fresh, Scene studied)
         camera_ =
             Reframe(frame_, setup_.study, choices_.layers, !studied_.view.caption.empty(), canvasWidth_, canvasHeight_);
     }
+    if ((cameraFit_ || framed_) && setup_.figure.kind == FigureKind::Slice)
+    {
+        // A slice draws its body through the camera in its before panel, the left half of the canvas: the cut, which
+        // stays where it is while the body is dragged, in the middle of that panel.
+        const Vec2 cut = 0.5 * (studied_.view.cut[0] + studied_.view.cut[1]);
+        camera_.center = {cut.x + 0.25 * canvasWidth_ / camera_.zoom, cut.y};
+    }
     camera_.width = canvasWidth_;
     camera_.height = canvasHeight_;
     setup_.figure.view = camera_;
@@ -189,7 +196,7 @@ Figure Viewer::CurrentFigure() const
     figure.step = step_;
     figure.sim = sim_;
     figure.hit = sim_ != nullptr ? hit_ : -1;
-    // The canvas maps the pointer by the camera: a concave pair's pieces are drawn through it too.
+    // The canvas maps the pointer by the camera: the pieces, disc-cast and slice figures are drawn through it too.
     figure.framesItself = false;
     return figure;
 }

@@ -182,8 +182,9 @@ void PaintDiscCast(Canvas& canvas, const Scene& scene, int targetIndex, int disc
         high = {std::max(high.x, p.x), std::max(high.y, p.y)};
     }
     const ScreenRect rect{0.0f, top, width, height};
-    const Panel panel = FramePanel(rect, low, high, figure.view.width, figure.view.height, kMargin);
-    const View& view = panel.view;
+    const View view = figure.framesItself
+                          ? FramePanel(rect, low, high, figure.view.width, figure.view.height, kMargin).view
+                          : figure.view;
     const float radius = ToPixels(view, r);
 
     canvas.BeginGroup("target");

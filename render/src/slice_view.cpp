@@ -232,12 +232,23 @@ void PaintSlice(Canvas& canvas, const Scene& scene, int bodyIndex, const Figure&
                                  {0.5f * width, top + kHeaderHeight, width, height}};
     const double zoom =
         std::min(FitZoom(rects[0], low, high, kMargin + kApart), FitZoom(rects[1], low, high, kMargin + kApart));
+    // Each panel frames the body itself, or (in the app) the before panel draws it through the camera, by which the
+    // pointer is mapped to the world, and the after panel at the same scale half the image to the right.
+    auto BodyPanel = [&](int side) {
+        if (figure.framesItself)
+        {
+            return FramePanel(rects[side], low, high, figure.view.width, figure.view.height, kMargin, zoom);
+        }
+        Panel panel{rects[side], figure.view};
+        panel.view.center.x -= side * 0.5 * width / figure.view.zoom;
+        return panel;
+    };
     canvas.BeginGroup("divider");
     canvas.Segment({0.5f * width, top}, {0.5f * width, height}, palette::kFaint, 1.0f);
 
     // Before: the body whole, the cut across it, the crossings marked.
     {
-        const Panel panel = FramePanel(rects[0], low, high, figure.view.width, figure.view.height, kMargin, zoom);
+        const Panel panel = BodyPanel(0);
         canvas.BeginGroup("before");
         canvas.Text({12.0f, top + 6.0f}, "Before", TextStyle::Heading, palette::kInk);
         canvas.Text({12.0f, top + 23.0f}, body.name + ", and the cut", TextStyle::Label, palette::kMuted);
@@ -261,7 +272,7 @@ void PaintSlice(Canvas& canvas, const Scene& scene, int bodyIndex, const Figure&
     }
     // After: each part in a colour of its own, moved a little away from the cut, with its area.
     {
-        const Panel panel = FramePanel(rects[1], low, high, figure.view.width, figure.view.height, kMargin, zoom);
+        const Panel panel = BodyPanel(1);
         canvas.BeginGroup("after");
         const float x = rects[1].minX + 12.0f;
         canvas.Text({x, top + 6.0f},

@@ -1365,6 +1365,37 @@ TEST_CASE("No label of the canvas's figure lies under the selected body's turnin
     CHECK(pushes > 0); // the push's label was drawn, beside the handle rather than under it
 }
 
+TEST_CASE("In the disc-cast and slice figures a dragged body is drawn where the pointer put it", "[app]")
+{
+    // The canvas maps the pointer to the world by its camera: each corner of the dragged polygon must be drawn at the
+    // camera's image of that corner, not where a figure framing its bodies anew would put it.
+    for (const auto& [scene, name] : {std::pair<std::string, std::string>{"disc_cast_corner.json", "wall"},
+                                      std::pair<std::string, std::string>{"l19_bar_cut.json", "bar"}})
+    {
+        INFO(scene);
+        Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/concave/" + scene);
+        const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed(name)));
+        h.Drag(from, ImVec2(from.x + 60.0f, from.y + 30.0f));
+        const Body& body = h.BodyNamed(name);
+        RecordingCanvas canvas;
+        PaintFigure(canvas, h.View().Studied(), h.View().Setup().study, CanvasFigure(*h.app));
+        for (const Vec2& v : body.shape.polygon.Vertices())
+        {
+            const ScreenPoint want = ToScreen(h.View().Camera(), TransformPoint(body.Xf(), v));
+            bool drawn = false;
+            for (const DrawCommand& c : canvas.commands)
+            {
+                for (const ScreenPoint& p : c.points)
+                {
+                    drawn = drawn || (c.kind != DrawCommand::Kind::Text && std::hypot(p.x - want.x, p.y - want.y) < 0.5f);
+                }
+            }
+            INFO("corner at " << want.x << "," << want.y);
+            CHECK(drawn);
+        }
+    }
+}
+
 TEST_CASE("Lesson Markdown is parsed with md4c into headings, text, items, code, figures and table rows",
           "[app][lessons]")
 {

@@ -40,7 +40,8 @@ struct Figure
     FigureKind kind = FigureKind::Pair;
     /// Figures of one body (a decomposition): that body's index in the scene.
     int body = -1;
-    /// The pieces figure frames its bodies itself (true), or draws them through `view`'s camera (false): the app's
+    /// The pieces, disc-cast and slice figures frame their bodies themselves (true), or draw them through `view`'s
+    /// camera (false, the before panel of a slice; its after panel half the image to the right): the app's
     /// canvas, which maps the pointer to the world by that camera, so that a body is dragged where it is drawn.
     bool framesItself = true;
     /// What the caller draws over the figure (the app's handles of the selected body): no label is placed on it,
