@@ -965,10 +965,20 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
                 return "verdict";
             }
             const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(r.axis)];
-            return r.overlap ? "verdict: collide, MTV " + ShownOverlap(t) : "verdict: apart, gap " + ShownGap(t);
+            if (!r.overlap)
+            {
+                return "verdict: apart, gap " + ShownGap(t);
+            }
+            // Shapes whose smallest overlap shows as 0.00 touch: the verdict's sentence says so, and so does this.
+            const std::string depth = ShownOverlap(t);
+            return depth == "0.00" ? "verdict: touching, MTV zero" : "verdict: collide, MTV " + depth;
         }
-        return study.manifold.overlap ? "verdict: collide, MTV " + FormatNumber(study.manifold.depth)
-                                      : "verdict: apart, gap " + FormatNumber(study.manifold.gap);
+        if (!study.manifold.overlap)
+        {
+            return "verdict: apart, gap " + FormatNumber(study.manifold.gap);
+        }
+        const std::string depth = FormatNumber(study.manifold.depth);
+        return depth == "0.00" ? "verdict: touching, MTV zero" : "verdict: collide, MTV " + depth;
     }
     const size_t k = static_cast<size_t>(step);
     AxisRef axis;

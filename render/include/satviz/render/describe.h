@@ -55,7 +55,8 @@ std::string StepName(const Scene& scene, const PairStudy& study, int step);
 /// edge 1. Intervals [0.10, 1.32] and [1.20, 2.05] overlap by 0.12."
 std::string DescribeStep(const Scene& scene, const PairStudy& study, int step);
 
-/// A short title of a step for lists: "3: B edge 1, overlap 0.12", or "verdict: collide, depth 0.12".
+/// A short title of a step for lists: "3: B edge 1, overlap 0.12", or "verdict: collide, MTV 0.12" ("verdict:
+/// touching, MTV zero" for shapes in contact that do not overlap, as the verdict's sentence says).
 std::string StepTitle(const Scene& scene, const PairStudy& study, int step);
 
 } // namespace satviz
