@@ -15,10 +15,11 @@ std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& st
     std::vector<NumberRow> rows;
     auto point = [&](const std::string& label, Vec2 p) { rows.push_back({label, {full(p.x), full(p.y)}}); };
     const Manifold& m = study.manifold;
-    rows.push_back({"overlap", {m.overlap ? "yes" : "no"}});
     // The textbook view shows the MTV its own test found; the contact points come from Collide's clipping.
     const bool textbook = study.Textbook();
     const double depth = textbook ? study.textbookResult.depth : m.depth;
+    // Shapes in contact at depth 0 touch without overlapping, as the verdict says: not "overlap: yes".
+    rows.push_back({"overlap", {!m.overlap ? "no" : depth == 0.0 ? "no, they touch (in contact)" : "yes"}});
     const double gap = textbook ? study.textbookResult.gap : m.gap;
     const Vec2 normal = textbook ? study.textbookResult.normal : m.normal;
     rows.push_back(m.overlap ? NumberRow{"MTV length (depth)", {full(depth)}}

@@ -1740,6 +1740,32 @@ TEST_CASE("The Numbers panel gives the deciding axis as the figure and the lesso
     }
 }
 
+TEST_CASE("The Numbers panel says touching shapes touch, as the verdict does, and overlap only when they do",
+          "[app]")
+{
+    // l14_slide's box rests on its floor: in contact at depth 0, which the verdict calls touching without
+    // overlapping; the panel read "overlap: yes" beside it.
+    for (const StepView view : {StepView::Textbook, StepView::Faces})
+    {
+        for (const char* stem : {"l14_slide", "overlapping_boxes", "l03_corner_gap"})
+        {
+            const std::string file = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + stem + ".json";
+            SceneResult loaded = LoadScene(file);
+            REQUIRE(loaded.Ok());
+            const PairStudy study = StudyPair(loaded.scene, 0, 1, ViewQuery::Collide, false, view);
+            const std::vector<NumberRow> rows = StaticTestNumbers(loaded.scene, study);
+            REQUIRE(!rows.empty());
+            REQUIRE(rows[0].label == "overlap");
+            const std::string verdict = DescribeStep(loaded.scene, study, study.VerdictStep());
+            INFO(stem << ": " << verdict);
+            const bool touch = verdict.find("touch without overlapping") != std::string::npos;
+            const bool collide = verdict.find("so the shapes collide") != std::string::npos;
+            CHECK(touch == (std::string(stem) == "l14_slide"));
+            CHECK(rows[0].parts[0] == (touch ? "no, they touch (in contact)" : collide ? "yes" : "no"));
+        }
+    }
+}
+
 TEST_CASE("Text in the panels wraps between words only: a number is never split, nor a bracketed pair", "[app]")
 {
     // Dear ImGui's own wrapping breaks after '.' and ',' too ("direction (0." / "00, 1.00)"). The sentences of every
