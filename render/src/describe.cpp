@@ -76,6 +76,49 @@ std::string Difference(double hi, double lo)
     return ShownDifference(hi, lo, hi - lo);
 }
 
+// How far the other shape lies beyond or behind a face test's face, as the band on its number line shows it: the
+// difference of the interval ends as printed (the face's shape's far end, the other shape's near end), so that a
+// reader subtracting the printed ends gets this number, and the sentence says what the band says.
+std::string ShownSeparation(const AxisTest& t)
+{
+    const bool fromB = t.axis.shape == 1 && t.axis.kind != AxisKind::CenterToCenter;
+    const double lead = fromB ? t.maxB : t.maxA;
+    const double other = fromB ? t.minA : t.minB;
+    return t.separation > 0.0 ? ShownDifference(other, lead, t.separation) : ShownDifference(lead, other, -t.separation);
+}
+
+// The face test a static verdict rests on: the separating one (the last tested), or the one whose separation is the
+// MTV's depth; null when there is none to show.
+const AxisTest* VerdictTest(const PairStudy& study)
+{
+    const std::vector<AxisTest>& axes = study.trace.axes;
+    const Manifold& m = study.manifold;
+    if (!m.overlap)
+    {
+        return !axes.empty() && axes.back().separating ? &axes.back() : nullptr;
+    }
+    for (const AxisTest& t : axes)
+    {
+        if (!t.skipped && t.axis.kind == m.axis.kind && t.axis.shape == m.axis.shape && t.axis.index == m.axis.index &&
+            t.separation == -m.depth)
+        {
+            return &t;
+        }
+    }
+    return nullptr;
+}
+
+// The gap or the depth of a static verdict as the figure shows it: its face test's band, else the value itself.
+std::string VerdictAmount(const PairStudy& study)
+{
+    const AxisTest* t = VerdictTest(study);
+    if (t != nullptr)
+    {
+        return ShownSeparation(*t);
+    }
+    return FormatNumber(study.manifold.overlap ? study.manifold.depth : study.manifold.gap);
+}
+
 std::string Time(double t)
 {
     return std::isinf(t) ? (t > 0 ? "never" : "always") : "t = " + FormatNumber(t);
@@ -503,13 +546,13 @@ std::string FaceTestStep(const Scene& scene, const PairStudy& study, int step)
     }
     if (test.separation > 0.0)
     {
-        text += " Yes: " + FormatNumber(test.separation) + " beyond it, so this face's normal is a separating axis " +
+        text += " Yes: " + ShownSeparation(test) + " beyond it, so this face's normal is a separating axis " +
                 "and the test stops here.";
     }
     else
     {
         text += " No: " + (face ? Possessive(other) + " deepest point is " : std::string("they overlap by ")) +
-                FormatNumber(-test.separation) + (face ? " behind it." : ".");
+                ShownSeparation(test) + (face ? " behind it." : ".");
     }
     if (test.pruned)
     {
@@ -534,13 +577,7 @@ std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
     if (!m.overlap)
     {
         // The gap as the number line shows it: the other shape's near end minus the face's shape's far end.
-        std::string gap = FormatNumber(m.gap);
-        if (!study.trace.axes.empty() && study.trace.axes.back().separating)
-        {
-            const AxisTest& t = study.trace.axes.back();
-            const bool fromB = t.axis.shape == 1 && t.axis.kind != AxisKind::CenterToCenter;
-            gap = fromB ? Difference(t.minA, t.maxB) : Difference(t.minB, t.maxA);
-        }
+        const std::string gap = VerdictAmount(study);
         return text + "Verdict: " + DescribeAxis(scene, study, m.axis) + " separates the shapes by " + gap +
                ", so they do not collide. The test stopped after " + std::to_string(tested) + " of " +
                std::to_string(CandidateCount(scene, study)) + " face tests.";
@@ -551,8 +588,9 @@ std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
     }
     const bool face = m.axis.kind == AxisKind::FaceNormal;
     const std::string way = face && m.axis.shape == 1 ? "against" : "along";
-    const std::string depth = FormatNumber(m.depth);
-    if (depth == "0.00")
+    // The depth as the deciding face test's band shows it; touching is a depth of exactly 0.
+    const std::string depth = m.depth == 0.0 ? FormatNumber(m.depth) : VerdictAmount(study);
+    if (m.depth == 0.0)
     {
         // Touching: the other shape reaches the face and not behind it.
         text += "Verdict: no face test separates, so the shapes are in contact. The face the other shape reaches "
@@ -975,10 +1013,9 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
         }
         if (!study.manifold.overlap)
         {
-            return "verdict: apart, gap " + FormatNumber(study.manifold.gap);
+            return "verdict: apart, gap " + VerdictAmount(study);
         }
-        const std::string depth = FormatNumber(study.manifold.depth);
-        return depth == "0.00" ? "verdict: touching, MTV zero" : "verdict: collide, MTV " + depth;
+        return study.manifold.depth == 0.0 ? "verdict: touching, MTV zero" : "verdict: collide, MTV " + VerdictAmount(study);
     }
     const size_t k = static_cast<size_t>(step);
     AxisRef axis;
@@ -1039,8 +1076,7 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
     {
         return title + ", skipped (anti-parallel)";
     }
-    title += test.separation > 0.0 ? ", " + FormatNumber(test.separation) + " beyond"
-                                   : ", " + FormatNumber(-test.separation) + " behind";
+    title += ", " + ShownSeparation(test) + (test.separation > 0.0 ? " beyond" : " behind");
     return test.separating ? title + " (separates)" : title;
 }
 

@@ -875,10 +875,18 @@ TEST_CASE("The caption of a step states the trace's numbers", "[painter]")
                     CHECK(expected.rfind(t.axis.kind == AxisKind::FaceNormal ? "Face test " : "Test ", 0) == 0);
                     if (!t.skipped)
                     {
-                        for (double value : {std::abs(t.separation)})
-                        {
-                            CHECK(expected.find(FormatNumber(value)) != std::string::npos);
-                        }
+                        // How far the other shape lies beyond or behind the face, as the band on the number line
+                        // shows it: the difference of the two ends as they are printed there (the face's shape's far
+                        // end, the other's near end), so that a reader subtracting them gets it; where the printed
+                        // ends cannot give it (closer than 0.01, or far from the origin), the value itself.
+                        const bool fromB = t.axis.shape == 1 && t.axis.kind != AxisKind::CenterToCenter;
+                        const double lead = fromB ? t.maxB : t.maxA;
+                        const double other = fromB ? t.minA : t.minB;
+                        const double printed = std::stod(FormatNumber(other)) - std::stod(FormatNumber(lead));
+                        const auto plain = [](double v) { return v == 0.0 || (std::abs(v) >= 0.01 && std::abs(v) < 1e5); };
+                        const bool fixed = plain(lead) && plain(other) && std::abs(printed) >= 0.01;
+                        CHECK(expected.find(FormatNumber(fixed ? std::abs(printed) : std::abs(t.separation))) !=
+                              std::string::npos);
                         CHECK((expected.find("separating axis") != std::string::npos) == t.separating);
                     }
                     else
