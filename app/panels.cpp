@@ -590,10 +590,12 @@ void Panels::StepControls()
         ImGui::SameLine();
         ImGui::SetNextItemWidth(-1.0f);
         int shown = step;
-        const std::string name = step == 0      ? "the pieces' boxes"
-                                 : step == last ? "verdict"
-                                                : "pair of pieces " + std::to_string(step) + " of " +
-                                                      std::to_string(last - 1);
+        // Counted as the caption counts them ("Step 2 of 3: ..."), then named.
+        const std::string name = "step " + std::to_string(step + 1) + " of " + std::to_string(last + 1) + ": " +
+                                 (step == 0      ? std::string("the pieces' boxes")
+                                  : step == last ? std::string("verdict")
+                                                 : "pair of pieces " + std::to_string(step) + " of " +
+                                                       std::to_string(last - 1));
         if (ImGui::SliderInt("##step", &shown, 0, last, name.c_str()) && shown != step)
         {
             app_.ShowStep(shown);
