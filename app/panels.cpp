@@ -183,6 +183,12 @@ void Panels::Shortcuts()
     {
         return;
     }
+    // While a question is open (unsaved changes, a file name) it alone takes the keys: a shortcut acting behind it
+    // would open another dialog in its place, and the question would be gone unanswered.
+    if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel))
+    {
+        return;
+    }
     const AppKeys& k = app_.Options().keys;
     if (Ctrl())
     {

@@ -920,6 +920,30 @@ TEST_CASE("Modified means differs from the file: undoing back to it, or changing
     }
 }
 
+TEST_CASE("While the quit question is open, the shortcuts wait: ctrl+o, F1 and the arrows leave it in place", "[app]")
+{
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    Harness h(copy.string());
+    const ImVec2 grab = h.OnScreen(Centroid(h.BodyNamed("A")));
+    h.Drag(grab, ImVec2(grab.x - 20.0f, grab.y));
+    REQUIRE(h.Doc().Dirty());
+    const int step = h.View().Step();
+    h.Key('Q', true);
+    h.Frames(2);
+    REQUIRE(Harness::Showing("Unsaved changes"));
+    h.Key('O', true);
+    h.Key(290);
+    h.Key(kLeft);
+    CHECK(Harness::Showing("Unsaved changes"));
+    CHECK(!Harness::Showing("Open scene"));
+    CHECK(h.View().Step() == step);
+    REQUIRE(h.ClickButton("Unsaved changes", "Cancel"));
+    CHECK(!Harness::Showing("Unsaved changes"));
+    // Answered, the keys act again.
+    h.Key('O', true);
+    CHECK(Harness::Showing("Open scene"));
+}
+
 TEST_CASE("Saving writes the view, the export figure is what satviz-render draws from the saved file", "[app]")
 {
     const fs::path copy = ScratchCopy("overlapping_boxes.json");
