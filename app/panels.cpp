@@ -174,6 +174,45 @@ void Panels::SaveOrAsk()
     }
 }
 
+// The row that walks the figure's steps: back and forward (past the faces a sweep decided without evaluating them,
+// Viewer::NextStep), Play, Verdict, and a slider showing `name`.
+void Panels::StepRow(const std::string& name)
+{
+    const Viewer& viewer = app_.GetViewer();
+    const int step = viewer.Step();
+    const int last = viewer.VerdictStep();
+    ImGui::BeginDisabled(step <= 0);
+    if (ImGui::ArrowButton("##previous", ImGuiDir_Left))
+    {
+        app_.ShowStep(viewer.NextStep(step, -1));
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(step >= last);
+    if (ImGui::ArrowButton("##next", ImGuiDir_Right))
+    {
+        app_.ShowStep(viewer.NextStep(step, 1));
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button(viewer.Playing() ? "Pause" : "Play"))
+    {
+        app_.TogglePlay();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Verdict"))
+    {
+        app_.ShowStep(last);
+    }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1.0f);
+    int shown = step;
+    if (ImGui::SliderInt("##step", &shown, 0, last, name.c_str()) && shown != step)
+    {
+        app_.ShowStep(shown);
+    }
+}
+
 // [SECTION] Keyboard shortcuts
 
 void Panels::Shortcuts()
@@ -570,42 +609,13 @@ void Panels::StepControls()
         ImGui::Separator();
         const int step = viewer.Step();
         const int last = viewer.VerdictStep();
-        ImGui::BeginDisabled(step <= 0);
-        if (ImGui::ArrowButton("##previous", ImGuiDir_Left))
-        {
-            app_.ShowStep(viewer.NextStep(step, -1));
-        }
-        ImGui::EndDisabled();
-        ImGui::SameLine();
-        ImGui::BeginDisabled(step >= last);
-        if (ImGui::ArrowButton("##next", ImGuiDir_Right))
-        {
-            app_.ShowStep(viewer.NextStep(step, 1));
-        }
-        ImGui::EndDisabled();
-        ImGui::SameLine();
-        if (ImGui::Button(viewer.Playing() ? "Pause" : "Play"))
-        {
-            app_.TogglePlay();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Verdict"))
-        {
-            app_.ShowStep(last);
-        }
-        ImGui::SameLine();
-        ImGui::SetNextItemWidth(-1.0f);
-        int shown = step;
         // Counted as the caption counts them ("Step 2 of 3: ..."), then named.
         const std::string name = "step " + std::to_string(step + 1) + " of " + std::to_string(last + 1) + ": " +
                                  (step == 0      ? std::string("the pieces' boxes")
                                   : step == last ? std::string("verdict")
                                                  : "pair of pieces " + std::to_string(step) + " of " +
                                                        std::to_string(last - 1));
-        if (ImGui::SliderInt("##step", &shown, 0, last, name.c_str()) && shown != step)
-        {
-            app_.ShowStep(shown);
-        }
+        StepRow(name);
         return;
     }
     int query = static_cast<int>(choices.query);
@@ -650,34 +660,6 @@ void Panels::StepControls()
     }
 
     ImGui::Separator();
-    const int step = viewer.Step();
-    const int last = study.VerdictStep();
-    ImGui::BeginDisabled(step <= 0);
-    if (ImGui::ArrowButton("##previous", ImGuiDir_Left))
-    {
-        app_.ShowStep(study.NextStep(step, -1));
-    }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(step >= last);
-    if (ImGui::ArrowButton("##next", ImGuiDir_Right))
-    {
-        app_.ShowStep(study.NextStep(step, 1));
-    }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    if (ImGui::Button(viewer.Playing() ? "Pause" : "Play"))
-    {
-        app_.TogglePlay();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Verdict"))
-    {
-        app_.ShowStep(last);
-    }
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(-1.0f);
-    int shown = viewer.Step();
     // Named as the step list and the sentence name the step ("axis 2 of 4", "face test 2 of 8", "verdict"), so
     // that the slider speaks of the view's own steps.
     std::string sliderText = StepName(studied, study, viewer.Step());
@@ -685,10 +667,7 @@ void Panels::StepControls()
     {
         sliderText[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(sliderText[0])));
     }
-    if (ImGui::SliderInt("##step", &shown, 0, last, sliderText.c_str()) && shown != viewer.Step())
-    {
-        app_.ShowStep(shown);
-    }
+    StepRow(sliderText);
     WrappedText(DescribeStep(studied, study, viewer.Step()));
 
     ImGui::Separator();

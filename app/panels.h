@@ -76,6 +76,7 @@ class Panels
     void LayerToggles();
     void SidePanel();
     void StepControls();
+    void StepRow(const std::string& name);
     void SimulationControls();
     void ResponseSteps();
     void Materials(int selected);
