@@ -12,26 +12,6 @@ namespace satviz
 namespace
 {
 
-// The camera that shows in a figure of `width` x `height` what `frame` (a view block's centre and zoom, for a
-// figure of its own size) showed in its scene area: the same world rectangle, scaled to fit the new scene area and
-// centred in it. The scene area is what lies between the caption band and the number line, which keep their
-// sizes in pixels.
-View Reframe(const SceneView& frame, const PairStudy& study, LayerMask layers, bool titled, int width, int height)
-{
-    const FigureLayout from = LayoutFigure(study, layers, frame.width, frame.height, titled);
-    const FigureLayout to = LayoutFigure(study, layers, width, height, titled);
-    const double fromHeight = std::max(1.0, static_cast<double>(from.sceneBottom - from.sceneTop));
-    const double toHeight = std::max(1.0, static_cast<double>(to.sceneBottom - to.sceneTop));
-    View view;
-    view.width = width;
-    view.height = height;
-    view.zoom = frame.zoom * std::min(static_cast<double>(width) / frame.width, toHeight / fromHeight);
-    // The world point at the middle of the scene area stays at its middle.
-    const double middle = frame.center.y - (0.5 * (from.sceneTop + from.sceneBottom) - 0.5 * frame.height) / frame.zoom;
-    view.center = {frame.center.x, middle + (0.5 * (to.sceneTop + to.sceneBottom) - 0.5 * height) / view.zoom};
-    return view;
-}
-
 // True when the scene's own framing leaves its scene almost no room in a figure of its own size with these layers
 // (the world's layers take the bottom of the figure for their panels): scaled to the canvas, that sliver would
 // show nothing, so the figure fits the pair instead.

@@ -2382,6 +2382,22 @@ View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int
     return view;
 }
 
+View Reframe(const SceneView& frame, const PairStudy& study, LayerMask layers, bool titled, int width, int height)
+{
+    const FigureLayout from = LayoutFigure(study, layers, frame.width, frame.height, titled);
+    const FigureLayout to = LayoutFigure(study, layers, width, height, titled);
+    const double fromHeight = std::max(1.0, static_cast<double>(from.sceneBottom - from.sceneTop));
+    const double toHeight = std::max(1.0, static_cast<double>(to.sceneBottom - to.sceneTop));
+    View view;
+    view.width = width;
+    view.height = height;
+    view.zoom = frame.zoom * std::min(static_cast<double>(width) / frame.width, toHeight / fromHeight);
+    // The world point at the middle of the scene area stays at its middle.
+    const double middle = frame.center.y - (0.5 * (from.sceneTop + from.sceneBottom) - 0.5 * frame.height) / frame.zoom;
+    view.center = {frame.center.x, middle + (0.5 * (to.sceneTop + to.sceneBottom) - 0.5 * height) / view.zoom};
+    return view;
+}
+
 void PaintFigure(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure)
 {
     if (figure.kind == FigureKind::Decomposition && figure.body >= 0 &&

@@ -976,28 +976,6 @@ TEST_CASE("No label of any figure of the course covers another, an arrow head or
     CHECK(failing == 0);
 }
 
-namespace
-{
-
-// The camera the app gives a scene that frames itself on a canvas of another size: the world rectangle of the
-// scene area of its own figure, scaled to fit the canvas's scene area and centred in it (app/viewer.cpp).
-View Reframed(const SceneView& frame, const PairStudy& study, LayerMask layers, bool titled, int width, int height)
-{
-    const FigureLayout from = LayoutFigure(study, layers, frame.width, frame.height, titled);
-    const FigureLayout to = LayoutFigure(study, layers, width, height, titled);
-    const double fromHeight = std::max(1.0, static_cast<double>(from.sceneBottom - from.sceneTop));
-    const double toHeight = std::max(1.0, static_cast<double>(to.sceneBottom - to.sceneTop));
-    View view;
-    view.width = width;
-    view.height = height;
-    view.zoom = frame.zoom * std::min(static_cast<double>(width) / frame.width, toHeight / fromHeight);
-    const double middle = frame.center.y - (0.5 * (from.sceneTop + from.sceneBottom) - 0.5 * frame.height) / frame.zoom;
-    view.center = {frame.center.x, middle + (0.5 * (to.sceneTop + to.sceneBottom) - 0.5 * height) / view.zoom};
-    return view;
-}
-
-} // namespace
-
 TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentences name is still named", "[labels]")
 {
     // Beside the lesson column a 1280 x 800 window leaves the canvas 460 x 758 pixels, and the scene's framing
@@ -1022,7 +1000,7 @@ TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentence
             }
             for (const auto& [width, height] : {std::pair{460, 758}, std::pair{360, 600}})
             {
-                setup.figure.view = Reframed(loaded.scene.view, setup.study, setup.figure.layers,
+                setup.figure.view = Reframe(loaded.scene.view, setup.study, setup.figure.layers,
                                              !setup.figure.caption.empty(), width, height);
                 for (int k = 0; k < FigureStepCount(loaded.scene, setup); ++k)
                 {

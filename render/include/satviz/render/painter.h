@@ -66,6 +66,12 @@ FigureLayout LayoutFigure(const PairStudy& study, LayerMask layers, int width, i
 /// needs beside them) in the scene area; the same for every step, so stepping does not move the picture.
 View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int width, int height);
 
+/// The camera that shows in a figure of `width` x `height` what `frame` (a view block's centre and zoom, for a
+/// figure of its own size) showed in its scene area: the same world rectangle, scaled to fit the new scene area and
+/// centred in it. The scene area lies between the caption band and the number line, which keep their sizes in
+/// pixels. The app frames a scene that frames itself so on a canvas of another size.
+View Reframe(const SceneView& frame, const PairStudy& study, LayerMask layers, bool titled, int width, int height);
+
 /// A hit on the hits layer's time bar: its dot, and its label and the label's box, in figure pixels.
 struct HitMark
 {
