@@ -31,7 +31,6 @@ struct Stepper
     std::vector<SolverContact> solverContacts;
     std::vector<SolverContact> guards; // the points of swept pairs: for the position passes only
     std::vector<int> solveOrder;       // solverContacts' indices in the order the passes visit them, top down
-    std::vector<double> heights;       // per solver contact: how high its first point lies against gravity
     std::vector<double> energyBefore;  // per body, after gravity and before the contacts
     std::vector<Transform> xfs;        // transforms at the start of the step (one sine and cosine per body)
     std::vector<Vec2> centers;         // centres of mass at the start of the step

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace satviz::detail
 {
@@ -31,15 +33,54 @@ void Stepper::OrderTopDown()
         return;
     }
     const Vec2 up = (-1.0 / g) * settings.gravity;
-    heights.resize(static_cast<size_t>(m));
+    // A least-significant-digit radix sort on the heights' bits: stable, as the ties require, and a few passes over
+    // the contacts where a comparison sort takes log m of them. Each height becomes an unsigned key that orders as
+    // the doubles do, highest first (-0 is read as +0, which it equals).
+    if (m < 2)
+    {
+        return;
+    }
+    std::vector<uint64_t> keys(static_cast<size_t>(m));
     for (int k = 0; k < m; ++k)
     {
         const SolverContact& c = solverContacts[static_cast<size_t>(k)];
-        heights[static_cast<size_t>(k)] = Dot(centers[c.a] + c.points[0].rA, up);
+        const double height = Dot(centers[c.a] + c.points[0].rA, up) + 0.0;
+        uint64_t bits = 0;
+        std::memcpy(&bits, &height, sizeof bits);
+        const uint64_t ascending = (bits >> 63) != 0 ? ~bits : bits | (uint64_t{1} << 63);
+        keys[static_cast<size_t>(k)] = ~ascending;
     }
-    std::stable_sort(solveOrder.begin(), solveOrder.end(), [this](int x, int y) {
-        return heights[static_cast<size_t>(x)] > heights[static_cast<size_t>(y)];
-    });
+    constexpr int kDigits = 8;
+    size_t counts[kDigits][256] = {};
+    for (const uint64_t key : keys)
+    {
+        for (int d = 0; d < kDigits; ++d)
+        {
+            ++counts[d][(key >> (8 * d)) & 0xffu];
+        }
+    }
+    std::vector<int> spare(static_cast<size_t>(m));
+    for (int d = 0; d < kDigits; ++d)
+    {
+        size_t* count = counts[d];
+        // A digit that all keys share leaves the order as it is.
+        if (count[(keys[0] >> (8 * d)) & 0xffu] == static_cast<size_t>(m))
+        {
+            continue;
+        }
+        size_t next = 0;
+        for (int digit = 0; digit < 256; ++digit)
+        {
+            const size_t c = count[digit];
+            count[digit] = next;
+            next += c;
+        }
+        for (const int k : solveOrder)
+        {
+            spare[count[(keys[static_cast<size_t>(k)] >> (8 * d)) & 0xffu]++] = k;
+        }
+        solveOrder.swap(spare);
+    }
 }
 
 void Stepper::SolveVelocities()
