@@ -488,6 +488,27 @@ void LabelPlacer::Flush(Color halo)
                 }
             }
         }
+        // A face a sentence names with no room on its outside (flush against the other body, or facing the image's
+        // border) is named just inside its own body, beside it, where it still reads as that face's.
+        for (int ring = 0; ring < 3 && !found && label->rank == LabelRank::Named && label->onSide; ++ring)
+        {
+            for (size_t k = 0; k <= label->alternates.size() && !found; ++k)
+            {
+                const ScreenPoint at = k == 0 ? label->anchor : label->alternates[k - 1];
+                for (int turn : {4, 3, -3})
+                {
+                    const ScreenRect rect = Around(at, size, start + turn * 0.25 * kPi,
+                                                   label->distance + static_cast<float>(ring) * 9.0f);
+                    if (!found && Inside(rect) && Free(rect, 0.0f, label->rank) &&
+                        !InOutline(label->avoid, rect, label->edgesOnly, at))
+                    {
+                        chosen = rect;
+                        from = at;
+                        found = true;
+                    }
+                }
+            }
+        }
         if (!found)
         {
             if (MayLeaveOut(label->rank))

@@ -758,6 +758,13 @@ class Painter
         return {center.x - radius, center.y - radius, center.x + radius, center.y + radius};
     }
 
+    // The part of the image where the scene shows: below the caption band and above the number line.
+    ScreenRect SceneInSight() const
+    {
+        const float top = Has(figure_, kLayerCaption) ? caption_.bottom + 1.0f : 0.0f;
+        return {0.0f, top, Width(), std::min(Height(), layout_.panelTop)};
+    }
+
     void ReserveBands()
     {
         if (Has(figure_, kLayerMinkowski))
@@ -1819,7 +1826,14 @@ class Painter
                     ScreenPoint to = At(TransformPoint(xf, poly.Vertices()[(i + 1) % poly.Count()]));
                     const ScreenPoint wholeFrom = from;
                     const ScreenPoint wholeTo = to;
-                    if (!ClipSegment(from, to, bounds_))
+                    // A face a sentence names is named on the part of it in sight: not under the caption or the
+                    // number line, which hide the top and bottom of a large disc. A face wholly out of sight (a
+                    // long floor's far end) has nowhere to be named.
+                    if (isNamed && !ClipSegment(from, to, SceneInSight()))
+                    {
+                        continue;
+                    }
+                    if (!isNamed && !ClipSegment(from, to, bounds_))
                     {
                         from = wholeFrom;
                         to = wholeTo;
@@ -1834,9 +1848,12 @@ class Painter
                         labels_.KeepOnSide();
                         // A face a sentence names may have its name anywhere along it, away from its corners,
                         // when its middle is taken (a thin wall's name beside it).
+                        // One flush against the other body along all its length has its name just inside its
+                        // own body, anywhere along it.
                         if (isNamed)
                         {
-                            labels_.AlsoAt(AlongFace(from, to, mid, other, 12.0f, 8.0f, 12.0f));
+                            std::vector<ScreenPoint> along = AlongFace(from, to, mid, other, 12.0f, 8.0f, 12.0f);
+                            labels_.AlsoAt(along.empty() ? AlongFace(from, to, mid, {}, 0.0f, 8.0f, 12.0f) : along);
                         }
                     }
                 }
