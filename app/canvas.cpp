@@ -57,13 +57,28 @@ ScreenPoint VelocityHandle(const View& view, const Body& body)
     return {origin.x + static_cast<float>(Extent(body) * view.zoom) + 22.0f, origin.y};
 }
 
-// The pixels the turning and velocity handles cover, with the velocity handle's letter v (see Panels::Handles).
+// Up to this many vertices a selected body shows a handle on each (more would hide its outline).
+constexpr size_t kMaxVertexHandles = 64;
+
+// The pixels the handles cover (see Panels::Handles): the turning handle, the velocity handle with its letter v,
+// and the square on each vertex, with the square's stroke.
 std::vector<DrawnOver> HandleRegions(const View& view, const Body& body)
 {
     const ScreenPoint turn = RotateHandle(view, body);
     const ScreenPoint velocity = VelocityHandle(view, body);
-    return {{{turn.x - 7.0f, turn.y - 7.0f}, {turn.x + 7.0f, turn.y + 7.0f}},
-            {{velocity.x - 6.0f, velocity.y - 8.0f}, {velocity.x + 16.0f, velocity.y + 8.0f}}};
+    std::vector<DrawnOver> regions{{{turn.x - 7.0f, turn.y - 7.0f}, {turn.x + 7.0f, turn.y + 7.0f}},
+                                   {{velocity.x - 6.0f, velocity.y - 8.0f}, {velocity.x + 16.0f, velocity.y + 8.0f}}};
+    const std::vector<Vec2> outline = EditableOutline(body);
+    if (outline.size() <= kMaxVertexHandles)
+    {
+        const Transform xf = body.Xf();
+        for (const Vec2& v : outline)
+        {
+            const ScreenPoint p = ToScreen(view, TransformPoint(xf, v));
+            regions.push_back({{p.x - 5.0f, p.y - 5.0f}, {p.x + 5.0f, p.y + 5.0f}});
+        }
+    }
+    return regions;
 }
 
 bool Contains(const Body& body, Vec2 world)
@@ -449,7 +464,7 @@ void Panels::Handles(ImDrawList* list, ImVec2 origin)
     const ImU32 ink = IM_COL32(43, 43, 43, 255);
     const ImU32 white = IM_COL32(255, 255, 255, 255);
     const std::vector<Vec2> outline = EditableOutline(body);
-    if (outline.size() <= 64)
+    if (outline.size() <= kMaxVertexHandles)
     {
         const Transform xf = body.Xf();
         for (const Vec2& v : outline)

@@ -1389,6 +1389,76 @@ TEST_CASE("No label of the canvas's figure lies under the selected body's turnin
     CHECK(pushes > 0); // the push's label was drawn, beside the handle rather than under it
 }
 
+TEST_CASE("No label of the canvas's figure lies on a vertex handle of the selected body", "[app]")
+{
+    // Each polygon of each lesson scene selected in turn: the canvas draws a square of 8 pixels (and its stroke) on
+    // each vertex, computed here from the body as the user sees it; at the first step and at the verdict, no label
+    // the painter places among the shapes may lie on one (the number line's and the caption's bands have fixed
+    // places, drawn over the shapes).
+    const fs::path scenes = fs::path(SATVIZ_SOURCE_DIR) / "tutorials" / "scenes";
+    int selections = 0, labels = 0;
+    for (const auto& entry : fs::directory_iterator(scenes))
+    {
+        if (entry.path().extension() != ".json")
+        {
+            continue;
+        }
+        Harness h(entry.path().string());
+        h.AwaitStudy();
+        if (!h.View().Setup().Ok())
+        {
+            continue;
+        }
+        const std::vector<Body>& bodies = h.app->ShownScene().bodies;
+        for (int selected = 0; selected < static_cast<int>(bodies.size()); ++selected)
+        {
+            const Body& body = bodies[static_cast<size_t>(selected)];
+            if (body.shape.type != ShapeType::Polygon || body.IsConcave())
+            {
+                continue;
+            }
+            h.app->Select(selected);
+            h.Frames(1);
+            ++selections;
+            const View& camera = h.View().Camera();
+            std::vector<ScreenPoint> corners;
+            for (const Vec2& v : body.shape.polygon.Vertices())
+            {
+                corners.push_back(ToScreen(camera, TransformPoint(body.Xf(), v)));
+            }
+            Figure figure = CanvasFigure(*h.app);
+            for (const int step : {0, h.View().VerdictStep()})
+            {
+                figure.step = step;
+                RecordingCanvas canvas;
+                PaintFigure(canvas, h.View().Studied(), h.View().Setup().study, figure);
+                for (const DrawCommand& c : canvas.commands)
+                {
+                    if (c.kind != DrawCommand::Kind::Text || c.group != "labels")
+                    {
+                        continue;
+                    }
+                    ++labels;
+                    const ScreenPoint size = canvas.MeasureText(c.text, c.style);
+                    for (const ScreenPoint& corner : corners)
+                    {
+                        const float reach = 4.75f; // half the square and half its stroke
+                        const bool covered = c.points[0].x < corner.x + reach && corner.x - reach < c.points[0].x + size.x &&
+                                             c.points[0].y < corner.y + reach && corner.y - reach < c.points[0].y + size.y;
+                        INFO(entry.path().filename().string() << ", body " << selected << ", step " << step << ": \""
+                                                             << c.text << "\" at " << c.points[0].x << ","
+                                                             << c.points[0].y << " on the vertex at " << corner.x
+                                                             << "," << corner.y);
+                        CHECK_FALSE(covered);
+                    }
+                }
+            }
+        }
+    }
+    CHECK(selections > 100);
+    CHECK(labels > 1000);
+}
+
 TEST_CASE("In the disc-cast and slice figures a dragged body is drawn where the pointer put it", "[app]")
 {
     // The canvas maps the pointer to the world by its camera: each corner of the dragged polygon must be drawn at the
