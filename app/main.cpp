@@ -4,6 +4,7 @@
 // satviz-render. Links GLFW and libGL, never OSMesa.
 #include "app.h"
 #include "key_queue.h"
+#include "panels.h"
 
 #include <satviz/render/figure_drawing.h>
 #include <satviz/render/palette.h>
@@ -343,6 +344,34 @@ void ClearRect(const ImDrawList* list, const ImDrawCmd* command)
 
 } // namespace
 
+namespace
+{
+
+// Keeps the window no smaller than the panels, the lesson column while it is open and a canvas a figure can be
+// read on need: the window manager is told the limits, and a window already smaller (a lesson opened in a narrow
+// window, or no window manager to hold the limits) is enlarged.
+void KeepMinimumSize(GLFWwindow* window, bool lessonShown)
+{
+    static ImVec2 applied(0.0f, 0.0f);
+    const ImVec2 least = satviz::MinimumWindowSize(lessonShown, ImGui::GetFrameHeight());
+    const int width = static_cast<int>(std::ceil(least.x));
+    const int height = static_cast<int>(std::ceil(least.y));
+    if (least.x != applied.x || least.y != applied.y)
+    {
+        glfwSetWindowSizeLimits(window, width, height, GLFW_DONT_CARE, GLFW_DONT_CARE);
+        applied = least;
+    }
+    int currentWidth = 0;
+    int currentHeight = 0;
+    glfwGetWindowSize(window, &currentWidth, &currentHeight);
+    if (currentWidth < width || currentHeight < height)
+    {
+        glfwSetWindowSize(window, std::max(currentWidth, width), std::max(currentHeight, height));
+    }
+}
+
+} // namespace
+
 int main(int argc, char** argv)
 {
     CLI::App cli{"satviz: step through the Separating Axis Theorem, axis by axis"};
@@ -354,7 +383,7 @@ int main(int argc, char** argv)
     cli.add_option("scene", sceneFile, "Scene file to open (default: a bundled example)");
     cli.add_option("--export-to", exportPath,
                    "Where ctrl+e writes the PNG (default: SCENE-stepN.png beside the scene)");
-    cli.add_option("--window", size, "Window size WxH in pixels");
+    cli.add_option("--window", size, "Window size WxH in pixels (raised to the smallest the panels need)");
     const CLI::Option* measureOption =
         cli.add_option("--measure-fps", measureFrames,
                        "Run this many frames (at least 1) without waiting for the display, print the frame rate, "
@@ -521,6 +550,7 @@ int main(int argc, char** argv)
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         app.Frame();
+        KeepMinimumSize(window, app.LessonShown());
         std::string exportTo;
         std::unique_ptr<satviz::FigureDrawing> drawing;
         satviz::FigureSetup exportSetup;

@@ -28,6 +28,19 @@ constexpr float kLessonWidth = 440.0f;
 /// Width of the side panel on the right of the canvas, in pixels.
 constexpr float kPanelWidth = 380.0f;
 
+/// The smallest canvas the app leaves beside its panels, in pixels: on one this size every face a figure's sentences
+/// name still has its name (the label test of the lessons' figures draws them so).
+constexpr float kMinCanvasWidth = 360.0f;
+/// See kMinCanvasWidth.
+constexpr float kMinCanvasHeight = 600.0f;
+
+/// The smallest window that leaves the canvas kMinCanvasWidth x kMinCanvasHeight beside the side panel and, while a
+/// lesson is open, the lesson column, under the menu bar and above the status bar (each `barHeight` tall).
+inline ImVec2 MinimumWindowSize(bool lessonShown, float barHeight)
+{
+    return {kPanelWidth + (lessonShown ? kLessonWidth : 0.0f) + kMinCanvasWidth, kMinCanvasHeight + 2.0f * barHeight};
+}
+
 /// What a drag on the canvas does, decided when the mouse button goes down.
 enum class DragKind
 {

@@ -1051,8 +1051,8 @@ TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentence
 {
     // Beside the lesson column a 1280 x 800 window leaves the canvas 460 x 758 pixels, and the scene's framing
     // shrinks with it: l17_skips' right wall drew too small to have its edges named, while the verdict spoke of
-    // "right wall's edge 3". A window of about 1180 x 640 leaves 360 x 600 (the app sets no smallest window; a
-    // canvas narrower than this has no room for a figure's names), where they must still be named.
+    // "right wall's edge 3". The app's smallest window, about 1180 x 640 with a lesson open, leaves 360 x 600
+    // (kMinCanvasWidth x kMinCanvasHeight), where they must still be named.
     const auto lists = FigureLists();
     int drawn = 0;
     for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES"})

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# End-to-end test of the smallest window in a real window under Xvfb, driven by xdotool: a window asked for smaller
+# than the side panel and a readable canvas need (360 x 600 pixels beside the panel, and beside the lesson column
+# while a lesson is open) is enlarged to it, and stays so when shrunk.
+# Usage: e2e_size.sh SATVIZ SCENE WORKDIR. Exits 77 (skipped) when Xvfb or xdotool is missing.
+set -euo pipefail
+app=$1 scene=$2 work=$3
+source "$(dirname "${BASH_SOURCE[0]}")/e2e_lib.sh"
+
+rm -rf "$work"
+mkdir -p "$work"
+# The side panel is 380 pixels wide, the lesson column 440; the menu and status bars take some 40 pixels.
+check_size() {
+  local least=$1 what=$2 geometry width height
+  sleep 0.5
+  geometry=$(xdotool search --name '^satviz$' getwindowgeometry | sed -n 's/.*Geometry: //p')
+  width=${geometry%x*} height=${geometry#*x}
+  if [ "$width" -lt "$least" ] || [ "$height" -lt 640 ]; then
+    echo "FAILED: $what: the window is ${geometry}, smaller than ${least}x640"
+    exit 1
+  fi
+  echo "$what: ${geometry}"
+}
+start_app "$scene" --window 400x300
+check_size 740 "asked for 400x300"
+xdotool search --name '^satviz$' windowsize 300 200
+check_size 740 "shrunk to 300x200"
+kill "$pid"
+wait "$pid" 2> /dev/null || true
+start_app "$scene" --window 400x300 --lesson 1
+check_size 1180 "with a lesson open"
+echo "PASSED: the window keeps room for the panels and a readable canvas"
