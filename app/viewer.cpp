@@ -158,31 +158,15 @@ void Viewer::Adopt(FigureSetup fresh, Scene studied)
         camera_ =
             Reframe(frame_, setup_.study, choices_.layers, !studied_.view.caption.empty(), canvasWidth_, canvasHeight_);
     }
-    if ((cameraFit_ || framed_) && setup_.figure.kind == FigureKind::Slice)
+    if ((cameraFit_ || framed_) && setup_.figure.kind == FigureKind::Slice && setup_.figure.body >= 0 &&
+        setup_.figure.body < static_cast<int>(studied_.bodies.size()))
     {
         // A slice draws its body through the camera in its before panel, the left half of the canvas: the body and
         // the cut fill that panel below the caption, until the camera is panned, zoomed or held by a drag.
-        constexpr double kMargin = 44.0; // pixels around them, for the crossings' coordinates and the cut's name
-        constexpr double kTop = 150.0;   // pixels the caption and the panel's title take, about
-        const Vec2 a = studied_.view.cut[0];
-        const Vec2 b = studied_.view.cut[1];
-        Vec2 low{std::min(a.x, b.x), std::min(a.y, b.y)};
-        Vec2 high{std::max(a.x, b.x), std::max(a.y, b.y)};
-        if (setup_.figure.body >= 0 && setup_.figure.body < static_cast<int>(studied_.bodies.size()))
-        {
-            const Body& body = studied_.bodies[static_cast<size_t>(setup_.figure.body)];
-            for (const Vec2& v : EditableOutline(body))
-            {
-                const Vec2 p = TransformPoint(body.Xf(), v);
-                low = {std::min(low.x, p.x), std::min(low.y, p.y)};
-                high = {std::max(high.x, p.x), std::max(high.y, p.y)};
-            }
-        }
-        const double roomX = std::max(1.0, 0.5 * canvasWidth_ - 2.0 * kMargin);
-        const double roomY = std::max(1.0, canvasHeight_ - kTop - 2.0 * kMargin);
-        camera_.zoom = std::min(roomX / std::max(1e-9, high.x - low.x), roomY / std::max(1e-9, high.y - low.y));
-        const Vec2 middle = 0.5 * (low + high);
-        camera_.center = {middle.x + 0.25 * canvasWidth_ / camera_.zoom, middle.y + 0.5 * kTop / camera_.zoom};
+        Figure sized = setup_.figure;
+        sized.view.width = canvasWidth_;
+        sized.view.height = canvasHeight_;
+        camera_ = FrameSlice(studied_, setup_.figure.body, sized);
     }
     camera_.width = canvasWidth_;
     camera_.height = canvasHeight_;

@@ -4,6 +4,8 @@
 #include "concave_views.h"
 
 #include <satviz/render/describe.h>
+#include <satviz/render/figure.h>
+#include <satviz/render/recording_canvas.h>
 #include <satviz/slice.h>
 
 #include <algorithm>
@@ -197,6 +199,63 @@ std::string DescribeSlice(const Body& body, Vec2 a, Vec2 b, const std::vector<st
            List(counts) + ".";
 }
 
+namespace
+{
+
+// The slice figure's two panels below its caption band (whose bottom is `top`), and the one zoom at which both
+// hold the body and the cut.
+struct SliceLayout
+{
+    ScreenRect rects[2];
+    Vec2 low, high; // the world box of the body's outline and the cut
+    double zoom = 1.0;
+};
+
+SliceLayout LayOutSlice(const std::vector<Vec2>& outline, Vec2 a, Vec2 b, float top, float width, float height)
+{
+    SliceLayout layout;
+    layout.low = {std::min(a.x, b.x), std::min(a.y, b.y)};
+    layout.high = {std::max(a.x, b.x), std::max(a.y, b.y)};
+    for (const Vec2& p : outline)
+    {
+        layout.low = {std::min(layout.low.x, p.x), std::min(layout.low.y, p.y)};
+        layout.high = {std::max(layout.high.x, p.x), std::max(layout.high.y, p.y)};
+    }
+    layout.rects[0] = {0.0f, top + kHeaderHeight, 0.5f * width, height};
+    layout.rects[1] = {0.5f * width, top + kHeaderHeight, width, height};
+    layout.zoom = std::min(FitZoom(layout.rects[0], layout.low, layout.high, kMargin + kApart),
+                           FitZoom(layout.rects[1], layout.low, layout.high, kMargin + kApart));
+    return layout;
+}
+
+} // namespace
+
+View FrameSlice(const Scene& scene, int bodyIndex, const Figure& figure)
+{
+    const Body& body = scene.bodies[static_cast<size_t>(bodyIndex)];
+    const float width = static_cast<float>(figure.view.width);
+    const Vec2 a = scene.view.cut[0];
+    const Vec2 b = scene.view.cut[1];
+    const std::vector<Vec2> outline = WorldOutline(body);
+    float top = 0.0f;
+    if (figure.layers & kLayerCaption)
+    {
+        // The band's height, from its wrapped lines, measured as the canvas measures them.
+        const std::vector<std::vector<Vec2>> parts = SliceAlongSegment(outline, a, b);
+        std::vector<Decomposition> pieces;
+        for (const std::vector<Vec2>& part : parts)
+        {
+            pieces.push_back(Decompose(part, body.decompose));
+        }
+        RecordingCanvas measure;
+        top = DrawCaptionBand(measure, figure.caption, DescribeSlice(body, a, b, parts, pieces), width);
+    }
+    const SliceLayout layout = LayOutSlice(outline, a, b, top, width, static_cast<float>(figure.view.height));
+    return FramePanel(layout.rects[0], layout.low, layout.high, figure.view.width, figure.view.height, kMargin,
+                      layout.zoom)
+        .view;
+}
+
 void PaintSlice(Canvas& canvas, const Scene& scene, int bodyIndex, const Figure& figure)
 {
     const Body& body = scene.bodies[static_cast<size_t>(bodyIndex)];
@@ -221,17 +280,10 @@ void PaintSlice(Canvas& canvas, const Scene& scene, int bodyIndex, const Figure&
     LabelPlacer labels(canvas, figure);
     labels.ReserveBand({0.0f, 0.0f, width, top});
 
-    Vec2 low{std::min(a.x, b.x), std::min(a.y, b.y)};
-    Vec2 high{std::max(a.x, b.x), std::max(a.y, b.y)};
-    for (const Vec2& p : outline)
-    {
-        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
-        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
-    }
-    const ScreenRect rects[2] = {{0.0f, top + kHeaderHeight, 0.5f * width, height},
-                                 {0.5f * width, top + kHeaderHeight, width, height}};
-    const double zoom =
-        std::min(FitZoom(rects[0], low, high, kMargin + kApart), FitZoom(rects[1], low, high, kMargin + kApart));
+    const SliceLayout layout = LayOutSlice(outline, a, b, top, width, height);
+    const ScreenRect(&rects)[2] = layout.rects;
+    const Vec2 low = layout.low, high = layout.high;
+    const double zoom = layout.zoom;
     // Each panel frames the body itself, or (in the app) the before panel draws it through the camera, by which the
     // pointer is mapped to the world, and the after panel at the same scale half the image to the right.
     auto BodyPanel = [&](int side) {

@@ -1459,6 +1459,70 @@ TEST_CASE("No label of the canvas's figure lies on a vertex handle of the select
     CHECK(labels > 1000);
 }
 
+TEST_CASE("A slice opens with its body and cut filling the before panel below the caption, whatever its length", "[app]")
+{
+    // The panel is read from what the canvas draws: the left half of the image, below the caption band's rule and
+    // the panel's subtitle. Every point of the body and the cut lies in it, centred, and they fill half of it along
+    // one direction at least.
+    // On a narrow window the caption wraps to more lines and its band grows.
+    for (const std::string scene : {"l19_bar_cut.json", "slice_u.json", "slice_stops_inside.json"})
+    for (const float windowWidth : {1280.0f, 960.0f, 800.0f})
+    {
+        INFO(scene << " in a window " << windowWidth << " wide");
+        Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/concave/" + scene);
+        ImGui::GetIO().DisplaySize = ImVec2(windowWidth, 800.0f);
+        h.Frames(2);
+        h.app->Open(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/concave/" + scene);
+        h.Frames(2);
+        REQUIRE(h.View().CurrentFigure().kind == FigureKind::Slice);
+        RecordingCanvas canvas;
+        const Figure figure = CanvasFigure(*h.app);
+        PaintFigure(canvas, h.View().Studied(), h.View().Setup().study, figure);
+        float captionBottom = 0.0f, subtitleBottom = 0.0f;
+        for (const DrawCommand& c : canvas.commands)
+        {
+            if (c.group == "caption" && c.kind == DrawCommand::Kind::FillRect)
+            {
+                captionBottom = std::max(captionBottom, c.points[1].y);
+            }
+            if (c.group == "before" && c.kind == DrawCommand::Kind::Text)
+            {
+                subtitleBottom = std::max(subtitleBottom, c.points[0].y + canvas.MeasureText(c.text, c.style).y);
+            }
+        }
+        REQUIRE(captionBottom > 0.0f);
+        REQUIRE(subtitleBottom > captionBottom);
+        const Scene& studied = h.View().Studied();
+        const Body& body = studied.bodies[static_cast<size_t>(figure.body)];
+        std::vector<Vec2> points{studied.view.cut[0], studied.view.cut[1]};
+        for (const Vec2& v : body.outline.empty() ? std::vector<Vec2>(body.shape.polygon.Vertices().begin(),
+                                                                      body.shape.polygon.Vertices().end())
+                                                  : body.outline)
+        {
+            points.push_back(TransformPoint(body.Xf(), v));
+        }
+        float minX = 1e9f, minY = 1e9f, maxX = -1e9f, maxY = -1e9f;
+        for (const Vec2& p : points)
+        {
+            const ScreenPoint s = ToScreen(figure.view, p);
+            minX = std::min(minX, s.x);
+            minY = std::min(minY, s.y);
+            maxX = std::max(maxX, s.x);
+            maxY = std::max(maxY, s.y);
+        }
+        const float panelWidth = 0.5f * static_cast<float>(figure.view.width);
+        const float panelHeight = static_cast<float>(figure.view.height) - subtitleBottom;
+        CHECK(minX > 0.0f);
+        CHECK(maxX < panelWidth);
+        CHECK(minY > subtitleBottom);
+        CHECK(maxY < static_cast<float>(figure.view.height));
+        CHECK(std::max((maxX - minX) / panelWidth, (maxY - minY) / panelHeight) > 0.5f);
+        // Centred in the panel (whose top is a few pixels below the subtitle).
+        CHECK(std::fabs(0.5f * (minX + maxX) - 0.5f * panelWidth) < 4.0f);
+        CHECK(std::fabs(0.5f * (minY + maxY) - 0.5f * (subtitleBottom + static_cast<float>(figure.view.height))) < 4.0f);
+    }
+}
+
 TEST_CASE("In the disc-cast and slice figures a dragged body is drawn where the pointer put it", "[app]")
 {
     // The canvas maps the pointer to the world by its camera: each corner of the dragged polygon must be drawn at the

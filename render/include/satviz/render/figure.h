@@ -45,6 +45,11 @@ bool FigurePair(const Scene& scene, int& a, int& b);
 /// of its own that has no steps (a decomposition, a slice, a disc cast).
 int FigureStepCount(const Scene& scene, const FigureSetup& setup);
 
+/// The camera of a slice figure (FigureKind::Slice) of the figure's size that draws `body` and the scene's cut
+/// filling the before panel, the left half below the caption band and the panel's title, at the scale the figure
+/// gives both panels when it frames itself. The app draws the slice through its camera and opens it so.
+View FrameSlice(const Scene& scene, int body, const Figure& figure);
+
 /// Sets up the figure of a scene: picks the pair (view.pair, or the first two bodies), runs the queries, frames
 /// the camera, resolves the step (-1: the verdict). Errors name the scene field at fault.
 FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options);
