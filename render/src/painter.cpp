@@ -765,6 +765,17 @@ class Painter
         return {0.0f, top, Width(), std::min(Height(), layout_.panelTop)};
     }
 
+    // A dashed outline (where the MTV or a pitfall's push leaves a body) reads as broken, and a label on it hides
+    // it: a body's name, a note or a verdict's label keeps off it. A vertex number or an edge name may sit on
+    // it rather than be left out, as the outline lies close beside the body's own.
+    void ReserveOutline(const std::vector<ScreenPoint>& outline, float thickness)
+    {
+        for (size_t i = 0; i < outline.size(); ++i)
+        {
+            labels_.ReserveLine(outline[i], outline[(i + 1) % outline.size()], thickness, LabelRank::Named);
+        }
+    }
+
     void ReserveBands()
     {
         if (Has(figure_, kLayerMinkowski))
@@ -1407,7 +1418,9 @@ class Painter
         const Vec2 shift = m.depth * m.normal;
         Transform moved = bodyB_.Xf();
         moved.p = moved.p + shift;
-        DashedOutline(canvas_, ShapeOutline(view_, bodyB_.shape, moved), palette::kShapeBInk, 1.8f, bounds_);
+        const std::vector<ScreenPoint> cleared = ShapeOutline(view_, bodyB_.shape, moved);
+        DashedOutline(canvas_, cleared, palette::kShapeBInk, 1.8f, bounds_);
+        ReserveOutline(cleared, 1.8f);
         used_.push_back(LegendMark::Dashed);
         const Vec2 c = ShapeCenter(bodyB_.shape, bodyB_.Xf());
         ScreenPoint from = At(c);
@@ -1459,6 +1472,7 @@ class Painter
             pushed.p = pushed.p + pitfall.depth * pitfall.normal;
             const std::vector<ScreenPoint> outline = ShapeOutline(view_, bodyB_.shape, pushed);
             DashedOutline(canvas_, outline, palette::kInk, 1.2f, bounds_);
+            ReserveOutline(outline, 1.2f);
             const Manifold left = Collide(bodyA_.shape, bodyA_.Xf(), bodyB_.shape, pushed);
             if (left.overlap && left.depth > 0.0)
             {

@@ -460,6 +460,49 @@ std::vector<std::string> LabelsOnOutlines(const RecordingCanvas& canvas, const S
     return problems;
 }
 
+// Labels other than vertex numbers and edge names drawn over a dashed outline of where the MTV or a pitfall's push
+// leaves a body (the short segments of the "mtv" group drawn before them): the label's halo breaks the outline, and
+// the words read as crossed out.
+std::vector<std::string> LabelsOnDashedOutlines(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    std::vector<const DrawCommand*> dashes;
+    for (const DrawCommand& c : canvas.commands)
+    {
+        if (c.kind == DrawCommand::Kind::Segment && c.group == "mtv")
+        {
+            dashes.push_back(&c);
+            continue;
+        }
+        if (c.kind != DrawCommand::Kind::Text || c.group != "labels")
+        {
+            continue;
+        }
+        const std::string& t = c.text;
+        const bool digits = !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
+        const bool edge = t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+        if (digits || edge)
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(t, c.style);
+        const Box ink{c.points[0].x + 1.0f, c.points[0].y + 2.0f, c.points[0].x + size.x - 1.0f,
+                      c.points[0].y + size.y - 2.0f};
+        for (const DrawCommand* d : dashes)
+        {
+            if (SegmentCovers(d->points[0], d->points[1], d->thickness, ink))
+            {
+                problems.push_back(Describe(c) + " lies on a dashed line at (" +
+                                   std::to_string(static_cast<int>(d->points[0].x)) + ", " +
+                                   std::to_string(static_cast<int>(d->points[0].y)) + ")");
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
 // Labels on a body outside the tested pair (drawn grey), where they read as that body's: a velocity's "v" inside a
 // grey cushion, a vertex number on a grey wall.
 std::vector<std::string> LabelsOnOtherBodies(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
@@ -878,6 +921,10 @@ std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool face
                 problems.push_back(std::move(p));
             }
             for (std::string& p : NamesAstray(canvas, loaded.scene, setup.study))
+            {
+                problems.push_back(std::move(p));
+            }
+            for (std::string& p : LabelsOnDashedOutlines(canvas))
             {
                 problems.push_back(std::move(p));
             }
