@@ -343,7 +343,7 @@ bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
     return true;
 }
 
-bool LabelPlacer::Free(const ScreenRect& rect, float spacing, LabelRank rank) const
+bool LabelPlacer::Free(const ScreenRect& rect, float spacing, LabelRank rank, bool everyLine) const
 {
     const ScreenRect foot = Footprint(rect);
     // A body's name keeps more room from every other label, placed before it or after it, where the figure has
@@ -361,7 +361,7 @@ bool LabelPlacer::Free(const ScreenRect& rect, float spacing, LabelRank rank) co
     }
     for (const Line& line : lines_)
     {
-        if (rank < line.from)
+        if (rank < line.from && !everyLine)
         {
             continue;
         }
@@ -442,14 +442,17 @@ void LabelPlacer::Flush(Color halo)
                 found = true;
             }
         }
-        for (int pass = 0; pass < 2 && !found; ++pass)
+        // A vertex number or an edge name may sit on a line the others keep off (a separating line, a dashed
+        // outline) rather than be left out, but it reads better beside it: the first pass (-1) keeps it off every
+        // line.
+        for (int pass = -1; pass < 2 && !found; ++pass)
         {
             for (const Candidate& c : candidates)
             {
                 const ScreenPoint at = c.anchor == 0 ? label->anchor : label->alternates[c.anchor - 1];
                 const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
                 const ScreenRect rect = Around(at, size, start + c.turn * 0.25 * kPi, reach);
-                if (Inside(rect) && Free(rect, pass == 0 ? kLabelSpacing : 0.0f, label->rank) &&
+                if (Inside(rect) && Free(rect, pass <= 0 ? kLabelSpacing : 0.0f, label->rank, pass < 0) &&
                     !InOutline(label->avoid, rect, label->edgesOnly, at) &&
                     OnItsSide(label->onSide, at, label->dx, label->dy, rect))
                 {

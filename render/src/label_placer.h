@@ -103,7 +103,7 @@ class LabelPlacer
     };
     static LeaderLine Leader(ScreenPoint anchor, const ScreenRect& rect);
     bool LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const;
-    bool Free(const ScreenRect& rect, float spacing, LabelRank rank) const;
+    bool Free(const ScreenRect& rect, float spacing, LabelRank rank, bool everyLine = false) const;
     bool Inside(const ScreenRect& rect) const;
     Canvas& canvas_;
     float width_;
