@@ -68,6 +68,16 @@ std::string ShownDifference(double hi, double lo, double exact)
     return FormatNumber(sameBand ? a - b : (std::isnan(exact) ? hi - lo : exact));
 }
 
+bool MeasuredFromB(const AxisRef& axis)
+{
+    return axis.shape == 1 && axis.kind != AxisKind::CenterToCenter;
+}
+
+std::string ShownBand(double lead, double other, double separation)
+{
+    return separation > 0.0 ? ShownDifference(other, lead, separation) : ShownDifference(lead, other, -separation);
+}
+
 namespace
 {
 
@@ -81,10 +91,8 @@ std::string Difference(double hi, double lo)
 // reader subtracting the printed ends gets this number, and the sentence says what the band says.
 std::string ShownSeparation(const AxisTest& t)
 {
-    const bool fromB = t.axis.shape == 1 && t.axis.kind != AxisKind::CenterToCenter;
-    const double lead = fromB ? t.maxB : t.maxA;
-    const double other = fromB ? t.minA : t.minB;
-    return t.separation > 0.0 ? ShownDifference(other, lead, t.separation) : ShownDifference(lead, other, -t.separation);
+    const bool fromB = MeasuredFromB(t.axis);
+    return ShownBand(fromB ? t.maxB : t.maxA, fromB ? t.minA : t.minB, t.separation);
 }
 
 // The face test a static verdict rests on: the separating one (the last tested), or the one whose separation is the

@@ -218,7 +218,7 @@ ShownAxis FromStatic(const PairStudy& study, int index)
     s.separating = t.separating;
     s.skipped = t.skipped;
     s.index = index;
-    s.SetLead(t.axis.shape == 1 && t.axis.kind != AxisKind::CenterToCenter);
+    s.SetLead(MeasuredFromB(t.axis));
     return s;
 }
 
@@ -354,8 +354,7 @@ ShownAxis ShowAxis(const PairStudy& study, int index)
 std::string BandLabel(const ShownAxis& axis)
 {
     const bool gap = axis.separation > 0.0;
-    const std::string amount = gap ? ShownDifference(axis.otherMin, axis.leadMax, axis.separation)
-                                   : ShownDifference(axis.leadMax, axis.otherMin, -axis.separation);
+    const std::string amount = ShownBand(axis.leadMax, axis.otherMin, axis.separation);
     if (axis.textbook)
     {
         return (gap ? "gap " : "overlap ") + amount;
@@ -1447,7 +1446,7 @@ class Painter
         hasMtvArrow_ = true;
         // The length as the number line prints it: the deciding axis's overlap from its shown ends.
         const std::string depth = hasAxis_ && axis_.separation <= 0.0
-                                      ? ShownDifference(axis_.leadMax, axis_.otherMin, -axis_.separation)
+                                      ? ShownBand(axis_.leadMax, axis_.otherMin, axis_.separation)
                                       : FormatNumber(m.depth);
         // The arrow is drawn over the labels: none may lie under it.
         labels_.ReserveLine(from, to, 3.0f);

@@ -22,6 +22,16 @@ std::string FormatPair(double x, double y, const char* open = "(", const char* c
 /// dominates), `exact` is shown instead: the value the algorithm computed (NaN: hi - lo).
 std::string ShownDifference(double hi, double lo, double exact);
 
+/// Whether a face test measures from B: its axis is a face (or a vertex's axis) of B, so the band on its number line
+/// runs from B's far end to A's near end. Every other test, the line of centres included, measures from A.
+bool MeasuredFromB(const AxisRef& axis);
+
+/// The band between two intervals as the figures print it, from the shown ends: from `lead`, the far end of the
+/// shape measured from, to `other`, the other shape's near end, whose difference is `separation` (a gap when
+/// positive, else an overlap, or a depth behind a face, of -separation). The number line, the caption and the step
+/// list all give this number.
+std::string ShownBand(double lead, double other, double separation);
+
 /// A textbook axis's overlap as the figures print it: the shorter push, from the shown interval ends.
 std::string ShownOverlap(const TextbookAxis& axis);
 
