@@ -132,16 +132,30 @@ std::string Time(double t)
     return std::isinf(t) ? (t > 0 ? "never" : "always") : "t = " + FormatNumber(t);
 }
 
-std::string SweepExitReason(SweepExit exit)
+// The span a sweep covers, t from 0 to 1: one step of a scene without a world, where a velocity is the displacement
+// over a step; one second of a world's scene, whose velocities are in units per second and whose figures sweep them
+// over a second (many steps of dt).
+std::string SweptSpan(const Scene& scene)
+{
+    return scene.hasWorld ? "the swept second" : "the step";
+}
+
+// How far an interval moves over the swept span, in the same words.
+std::string PerSpan(const Scene& scene)
+{
+    return scene.hasWorld ? "per second" : "per step";
+}
+
+std::string SweepExitReason(const Scene& scene, SweepExit exit)
 {
     switch (exit)
     {
     case SweepExit::NotMoving:
         return "nothing moves, so the static test decides";
     case SweepExit::NeverCloses:
-        return "on this axis the intervals never overlap during the step, so the shapes cannot interpenetrate";
+        return "on this axis the intervals never overlap during " + SweptSpan(scene) + ", so the shapes cannot interpenetrate";
     case SweepExit::EntryAfterStep:
-        return "the intervals would only meet after the step ends";
+        return "the intervals would only meet after " + SweptSpan(scene) + " ends";
     case SweepExit::EntryAfterExit:
         return "one axis parts before another meets, so they never overlap on all axes at once";
     case SweepExit::AllAxesOverlap:
@@ -339,7 +353,7 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
 
 // Why a textbook sweep's axis rules out a hit when the intervals never close: they stay apart (or only touch) and
 // do not move, or their overlap lies wholly before the step and they move apart during it.
-std::string NeverClosesReason(const TextbookSweepAxis& t)
+std::string NeverClosesReason(const Scene& scene, const TextbookSweepAxis& t)
 {
     if (t.never)
     {
@@ -348,26 +362,28 @@ std::string NeverClosesReason(const TextbookSweepAxis& t)
                           "shapes cannot interpenetrate"
                         : "on this axis the intervals are apart and do not move, so the shapes cannot interpenetrate";
     }
-    return "on this axis the intervals overlap only before the step (from " + Time(t.entry) + " until " +
+    return "on this axis the intervals overlap only before " + SweptSpan(scene) + " (from " + Time(t.entry) + " until " +
            Time(t.exit) + ") and move apart during it, so the shapes cannot interpenetrate";
 }
 
 // Why a face of a face-test sweep rules out a hit: the other shape is beyond it or on it at t = 0 and does not
 // approach. Only a shape on the face (separation 0) touches it; one beyond it and moving away was behind it only
 // before the step.
-std::string FaceNeverClosesReason(const std::string& other, const std::string& face, const SweepAxis& axis)
+std::string FaceNeverClosesReason(const Scene& scene, const std::string& other, const std::string& face,
+                                  const SweepAxis& axis)
 {
+    const std::string span = SweptSpan(scene);
     const std::string cannot = ", so the shapes cannot interpenetrate";
     if (axis.separation > 0.0)
     {
         if (axis.rate > 0.0)
         {
-            return other + " is beyond " + face + " at t = 0 and moves away from it (it was behind it only before the "
-                           "step, until " +
-                   Time(-axis.separation / axis.rate) + "): the face separates the shapes during the whole step" +
+            return other + " is beyond " + face + " at t = 0 and moves away from it (it was behind it only before " + span +
+                   ", until " + Time(-axis.separation / axis.rate) +
+                   "): the face separates the shapes during the whole of " + span +
                    cannot;
         }
-        return other + " is beyond " + face + " and stays so: the face separates the shapes during the whole step" +
+        return other + " is beyond " + face + " and stays so: the face separates the shapes during the whole of " + span +
                cannot;
     }
     return other + (axis.rate > 0.0 ? " touches " + face + " at t = 0 and moves away from it"
@@ -376,9 +392,9 @@ std::string FaceNeverClosesReason(const std::string& other, const std::string& f
 }
 
 // The reason a textbook sweep ended on axis `t`.
-std::string TextbookExitReason(const TextbookSweepTrace& trace, const TextbookSweepAxis& t)
+std::string TextbookExitReason(const Scene& scene, const TextbookSweepTrace& trace, const TextbookSweepAxis& t)
 {
-    return trace.exit == SweepExit::NeverCloses ? NeverClosesReason(t) : SweepExitReason(trace.exit);
+    return trace.exit == SweepExit::NeverCloses ? NeverClosesReason(scene, t) : SweepExitReason(scene, trace.exit);
 }
 
 std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, int step)
@@ -403,7 +419,7 @@ std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, in
     }
     else
     {
-        text += nameB + "'s interval moves " + FormatNumber(std::fabs(t.rate)) + " per step " +
+        text += nameB + "'s interval moves " + FormatNumber(std::fabs(t.rate)) + " " + PerSpan(scene) + " " +
                 (t.rate > 0.0 ? "along" : "against") + " the axis, so they overlap ";
         if (t.entry < 0.0 && t.exit > 0.0)
         {
@@ -417,7 +433,7 @@ std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, in
     }
     if (t.endsTest)
     {
-        return text + " This ends the test: " + TextbookExitReason(study.textbookSweep, t) + ".";
+        return text + " This ends the test: " + TextbookExitReason(scene, study.textbookSweep, t) + ".";
     }
     if (t.latestEntry >= 0 && t.earliestExit >= 0 && step > 0)
     {
@@ -463,7 +479,7 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
         }
         return "Verdict: " + fixed +
                (r.status == SweepStatus::Overlapping ? "the shapes already overlap at t = 0."
-                                                     : "the path misses it, so there is no hit during the step.");
+                                                     : "the path misses it, so there is no hit during " + SweptSpan(scene) + ".");
     }
     if (r.status == SweepStatus::Hit)
     {
@@ -489,7 +505,7 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
         {
             const TextbookSweepAxis& entry = trace.axes[static_cast<size_t>(last.latestEntry)];
             const TextbookSweepAxis& exit = trace.axes[static_cast<size_t>(last.earliestExit)];
-            return "Verdict: no hit during the step: on axis " + std::to_string(last.earliestExit + 1) +
+            return "Verdict: no hit during " + SweptSpan(scene) + ": on axis " + std::to_string(last.earliestExit + 1) +
                    " the intervals part at " + Time(exit.exit) + ", before those of axis " +
                    std::to_string(last.latestEntry + 1) + " meet at " + Time(entry.entry) +
                    ", so the shapes never overlap on all axes at once.";
@@ -498,11 +514,11 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
     if (trace.exit == SweepExit::NeverCloses && trace.result.axis >= 0)
     {
         // "on this axis" names the axis: the verdict comes after every axis step.
-        const std::string reason = NeverClosesReason(trace.axes[static_cast<size_t>(trace.result.axis)]);
-        return "Verdict: no hit during the step: on axis " + std::to_string(trace.result.axis + 1) +
+        const std::string reason = NeverClosesReason(scene, trace.axes[static_cast<size_t>(trace.result.axis)]);
+        return "Verdict: no hit during " + SweptSpan(scene) + ": on axis " + std::to_string(trace.result.axis + 1) +
                reason.substr(std::string("on this axis").size()) + ".";
     }
-    return "Verdict: no hit during the step: " + SweepExitReason(trace.exit) + ".";
+    return "Verdict: no hit during " + SweptSpan(scene) + ": " + SweepExitReason(scene, trace.exit) + ".";
 }
 
 // Where the count of FaceTestStep's "Face test 1 of N" comes from, in words that add up to it: one test per edge,
@@ -720,7 +736,7 @@ std::string FaceSweepStep(const Scene& scene, const PairStudy& study, int step)
     {
         const bool never = face && axis.separation >= 0.0 && axis.rate >= 0.0;
         text += " This ends the test: " +
-                (never ? FaceNeverClosesReason(other, "this face", axis) : SweepExitReason(study.sweepTrace.exit)) + ".";
+                (never ? FaceNeverClosesReason(scene, other, "this face", axis) : SweepExitReason(scene, study.sweepTrace.exit)) + ".";
     }
     else if (axis.latestEntry >= 0 && axis.earliestExit >= 0)
     {
@@ -758,11 +774,11 @@ std::string FaceSweepVerdict(const Scene& scene, const PairStudy& study)
         if (axis.endsTest && axis.separation >= 0.0 && axis.rate >= 0.0 && axis.axis.kind == AxisKind::FaceNormal)
         {
             const std::string other = NameOf(scene, study, 1 - axis.axis.shape);
-            return "Verdict: no hit during the step: " +
-                   FaceNeverClosesReason(other, FaceName(scene, study, axis.axis), axis) + ".";
+            return "Verdict: no hit during " + SweptSpan(scene) + ": " +
+                   FaceNeverClosesReason(scene, other, FaceName(scene, study, axis.axis), axis) + ".";
         }
     }
-    return "Verdict: no hit during the step: " + SweepExitReason(study.sweepTrace.exit) + ".";
+    return "Verdict: no hit during " + SweptSpan(scene) + ": " + SweepExitReason(scene, study.sweepTrace.exit) + ".";
 }
 
 // Against a polygon above 16 vertices: how many face tests the sweep evaluated, and how many faces it decided without
