@@ -23,6 +23,8 @@ const char* Meaning(LegendMark mark)
     {
     case LegendMark::AxisFace:
         return "thick dark edge: the face whose normal is the axis";
+    case LegendMark::VertexAxis:
+        return "dark dot and dashed line: the axis from a vertex (or a centre) to a circle's centre";
     case LegendMark::BestAxis:
         return "light-blue edge: the best axis so far";
     case LegendMark::Overlap:
@@ -37,10 +39,14 @@ const char* Meaning(LegendMark mark)
         return "dark triangles on the time bar: entry and exit";
     case LegendMark::Other:
         return "grey body: not in the tested pair (a wall, a mark)";
+    case LegendMark::Asleep:
+        return "hatched body: asleep, neither moved nor tested until woken";
     case LegendMark::Reference:
         return "thick edge in a body's colour: the reference face";
     case LegendMark::Incident:
         return "doubled edge: the incident edge";
+    case LegendMark::SidePlanes:
+        return "thin grey dashes at a reference face's ends: its side planes";
     case LegendMark::Contact:
         return "vermillion dot: a contact point";
     case LegendMark::Mtv:
@@ -61,6 +67,12 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
     {
     case LegendMark::AxisFace:
         canvas.Segment({x, cy}, {x1, cy}, palette::kInk, 4.0f);
+        break;
+    case LegendMark::VertexAxis:
+        // As the painter draws a vertex axis: a dashed line from the vertex's dot to the centre.
+        DashedSegment(canvas, {x + 4.0f, cy}, {x1, cy}, palette::kInk, 2.0f, {x - 1.0f, y, x1 + 1.0f, y + kRow}, 4.0f,
+                      3.0f);
+        canvas.FillCircle({x + 4.0f, cy}, 4.0f, palette::kInk);
         break;
     case LegendMark::BestAxis:
         canvas.Segment({x, cy}, {x1, cy}, palette::kBest, 4.0f);
@@ -95,12 +107,46 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
             canvas.Polyline(box, 4, true, palette::kOther, 2.0f);
         }
         break;
+    case LegendMark::Asleep:
+    {
+        // A grey body hatched as the broadphase layer hatches a sleeping one: diagonal lines 7 pixels apart.
+        const ScreenPoint box[4] = {
+            {x + 2.0f, y + 3.0f}, {x1 - 2.0f, y + 3.0f}, {x1 - 2.0f, y + kRow - 3.0f}, {x + 2.0f, y + kRow - 3.0f}};
+        canvas.FillConvex(box, 4, WithAlpha(palette::kOther, 0.18f));
+        for (float c = x + 2.0f + 4.0f; c < x1 - 2.0f + (kRow - 6.0f); c += 7.0f)
+        {
+            // Each line runs down and to the left, clipped to the box.
+            ScreenPoint a{c, y + 3.0f};
+            ScreenPoint b{c - (kRow - 6.0f), y + kRow - 3.0f};
+            const float over = a.x - (x1 - 2.0f);
+            if (over > 0.0f)
+            {
+                a = {x1 - 2.0f, a.y + over};
+            }
+            const float under = (x + 2.0f) - b.x;
+            if (under > 0.0f)
+            {
+                b = {x + 2.0f, b.y - under};
+            }
+            canvas.Segment(a, b, WithAlpha(palette::kMuted, 0.8f), 1.0f);
+        }
+        canvas.Polyline(box, 4, true, palette::kOther, 2.0f);
+        break;
+    }
     case LegendMark::Reference:
         canvas.Segment({x, cy}, {x1, cy}, palette::kShapeA, 5.0f);
         break;
     case LegendMark::Incident:
         canvas.Segment({x, cy}, {x1, cy}, palette::kShapeBInk, 5.0f);
         canvas.Segment({x, cy}, {x1, cy}, palette::kBackground, 1.5f);
+        break;
+    case LegendMark::SidePlanes:
+        // Two short dashed lines across the ends of a reference face, as the clip draws them.
+        canvas.Segment({x + 5.0f, cy + 3.0f}, {x1 - 5.0f, cy + 3.0f}, palette::kShapeA, 5.0f);
+        DashedSegment(canvas, {x + 5.0f, y + 1.0f}, {x + 5.0f, y + kRow - 1.0f}, palette::kMuted, 1.2f,
+                      {x - 1.0f, y, x1 + 1.0f, y + kRow}, 5.0f, 4.0f);
+        DashedSegment(canvas, {x1 - 5.0f, y + 1.0f}, {x1 - 5.0f, y + kRow - 1.0f}, palette::kMuted, 1.2f,
+                      {x - 1.0f, y, x1 + 1.0f, y + kRow}, 5.0f, 4.0f);
         break;
     case LegendMark::Contact:
         canvas.FillCircle({x + 0.5f * kSwatch, cy}, 5.5f, palette::kResult);

@@ -14,6 +14,7 @@ namespace satviz
 enum class LegendMark
 {
     AxisFace,   ///< the thick dark edge whose normal is the current axis
+    VertexAxis, ///< the dark dot and dashed line: an axis from a vertex (or a centre) to a circle's centre
     BestAxis,   ///< the light-blue edge of the best axis so far
     Overlap,    ///< the purple band: the two intervals overlap
     Gap,        ///< the green band: a gap between the intervals
@@ -21,8 +22,10 @@ enum class LegendMark
     Swept,      ///< the pale bar: the interval B sweeps during the step
     TimeMarks,  ///< the dark triangles on the time bar: entry and exit
     Other,      ///< a grey body: not in the tested pair (a wall, a mark)
+    Asleep,     ///< a hatched body: asleep in a world (neither moved nor tested)
     Reference,  ///< the thick edge in a body's colour: the reference face
     Incident,   ///< the doubled edge: the incident edge
+    SidePlanes, ///< the thin grey dashed lines at the reference face's ends: its side planes
     Contact,    ///< the vermillion dots: contact points
     Mtv,        ///< the vermillion arrow: the minimum translation vector
     Dashed,     ///< a dashed outline: a body at another time, or moved out by the MTV

@@ -1238,12 +1238,14 @@ class Painter
             DashedSegment(canvas_, At(v), At(c), color, 2.0f, bounds_);
             canvas_.FillCircle(At(v), 4.0f, color);
             labels_.Reserve(Disc(At(v), 4.0f));
+            used_.push_back(LegendMark::VertexAxis);
         }
         else if (ref.kind == AxisKind::CenterToCenter)
         {
             const Vec2 a = TransformPoint(bodyA_.Xf(), bodyA_.shape.circle.center);
             const Vec2 b = TransformPoint(bodyB_.Xf(), bodyB_.shape.circle.center);
             DashedSegment(canvas_, At(a), At(b), color, 2.0f, bounds_);
+            used_.push_back(LegendMark::VertexAxis);
         }
     }
 
@@ -1685,6 +1687,7 @@ class Painter
             DashedSegment(canvas_, At(v - reach * n), At(v + 0.3 * reach * n), palette::kMuted, 1.2f, bounds_, 5.0f,
                           4.0f);
         }
+        used_.push_back(LegendMark::SidePlanes);
         canvas_.Segment(r1, r2, InkOf(referenceShape), 5.0f);
         // Labels go beside the reference face and the incident edge, not over them.
         labels_.ReserveLine(r1, r2, 5.0f);

@@ -1907,3 +1907,30 @@ TEST_CASE("A caption that counts contact points has that many drawn, in every fi
     }
     CHECK(counted > 10);
 }
+
+TEST_CASE("A figure's key explains the vertex axis and the side planes where the figure draws them", "[painter]")
+{
+    // The key lists what the figure drew: the dark dot and dashed line of circle_corner's axis 3 (from the box's
+    // vertex 2 to the ball's centre), the side planes of overlapping_boxes' clip at the verdict.
+    auto keyOf = [](const std::string& stem, bool verdict) {
+        const Scene scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + stem + ".json");
+        FigureSetup setup = SetUpFigure(scene, {});
+        REQUIRE(setup.Ok());
+        const int step = verdict ? setup.study.VerdictStep() : 2;
+        const RecordingCanvas canvas = Paint(scene, setup, step, kDefaultLayers | kLayerContacts | kLayerLegend);
+        std::string key;
+        for (const DrawCommand* c : canvas.InGroup("legend"))
+        {
+            key += c->kind == DrawCommand::Kind::Text ? c->text + "\n" : "";
+        }
+        return key;
+    };
+    const std::string corner = keyOf("circle_corner", false);
+    INFO(corner);
+    CHECK(corner.find("dark dot and dashed line: the axis from a vertex") != std::string::npos);
+    CHECK(corner.find("side planes") == std::string::npos);
+    const std::string boxes = keyOf("overlapping_boxes", true);
+    INFO(boxes);
+    CHECK(boxes.find("side planes") != std::string::npos);
+    CHECK(boxes.find("dark dot") == std::string::npos);
+}
