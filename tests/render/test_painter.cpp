@@ -1889,13 +1889,22 @@ TEST_CASE("A caption that counts contact points has that many drawn, in every fi
                 caption += " " + c->text;
             }
         }
-        const size_t at = caption.find(" contact point");
-        if (at == std::string::npos)
+        // The count: "N contact point(s)" with N in digits (a heading may name "the contact point c2").
+        int said = -1;
+        for (size_t at = caption.find(" contact point"); at != std::string::npos && said < 0;
+             at = caption.find(" contact point", at + 1))
+        {
+            const size_t start = caption.rfind(' ', at - 1) + 1;
+            const std::string word = caption.substr(start, at - start);
+            if (!word.empty() && std::all_of(word.begin(), word.end(), [](char c) { return std::isdigit(c) != 0; }))
+            {
+                said = std::stoi(word);
+            }
+        }
+        if (said < 0)
         {
             continue;
         }
-        const size_t start = caption.rfind(' ', at - 1) + 1;
-        const int said = std::atoi(caption.substr(start, at - start).c_str());
         int dots = 0;
         for (const DrawCommand* c : canvas.InGroup("contacts"))
         {
