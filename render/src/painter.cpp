@@ -1177,6 +1177,8 @@ class Painter
                 const std::vector<ScreenPoint> outline = ShapeOutline(view_, body.shape, xf);
                 canvas_.FillConvex(outline.data(), static_cast<int>(outline.size()), WithAlpha(ColorOf(s), 0.10f));
                 DashedOutline(canvas_, outline, WithAlpha(InkOf(s), alpha), 1.8f, bounds_);
+                // A contact point's name across the ghost's outline would hide it, as for the MTV's.
+                ReserveOutline(outline, 1.8f);
                 used_.push_back(LegendMark::Dashed);
                 // The label goes above the ghost, towards its trailing side, the one it came from: its leading
                 // side is where it meets the other body and the contact points are marked, which a label there

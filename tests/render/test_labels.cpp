@@ -461,8 +461,8 @@ std::vector<std::string> LabelsOnOutlines(const RecordingCanvas& canvas, const S
 }
 
 // Labels other than vertex numbers and edge names drawn over a dashed outline of where the MTV or a pitfall's push
-// leaves a body (the short segments of the "mtv" group drawn before them): the label's halo breaks the outline, and
-// the words read as crossed out.
+// leaves a body, or of a moving body at another time (the short segments of the "mtv" and "ghost" groups): the
+// label's halo breaks the outline, and the words read as crossed out.
 std::vector<std::string> LabelsOnDashedOutlines(const RecordingCanvas& canvas)
 {
     std::vector<std::string> problems;
@@ -470,7 +470,7 @@ std::vector<std::string> LabelsOnDashedOutlines(const RecordingCanvas& canvas)
     std::vector<const DrawCommand*> dashes;
     for (const DrawCommand& c : canvas.commands)
     {
-        if (c.kind == DrawCommand::Kind::Segment && c.group == "mtv")
+        if (c.kind == DrawCommand::Kind::Segment && (c.group == "mtv" || c.group == "ghost"))
         {
             dashes.push_back(&c);
             continue;
