@@ -286,7 +286,7 @@ std::string FaceName(const Scene& scene, const PairStudy& study, const AxisRef& 
     return Possessive(NameOf(scene, study, face.shape)) + " edge " + std::to_string(face.index);
 }
 
-std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
+std::string TextbookVerdict(const Scene& scene, const PairStudy& study, bool countContacts)
 {
     const TextbookResult& r = study.textbookResult;
     const std::string& nameA = NameOf(scene, study, 0);
@@ -342,6 +342,10 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study)
                 ", so the shapes collide. The smallest overlap is " + depth + ", on " + where + ": moving " + nameB +
                 " " + depth + " " + way + " " + that + ", direction " + Pair(r.normal.x, r.normal.y) +
                 ", separates them. That is the minimum translation vector (MTV).";
+    }
+    if (!countContacts)
+    {
+        return text;
     }
     const int contacts = study.manifold.contactCount;
     text += contacts == 1 ? " 1 contact point" : " " + std::to_string(contacts) + " contact points";
@@ -590,7 +594,7 @@ std::string FaceTestStep(const Scene& scene, const PairStudy& study, int step)
     return text;
 }
 
-std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
+std::string FaceTestVerdict(const Scene& scene, const PairStudy& study, bool countContacts)
 {
     const Manifold& m = study.manifold;
     const std::string& nameB = NameOf(scene, study, 1);
@@ -633,7 +637,10 @@ std::string FaceTestVerdict(const Scene& scene, const PairStudy& study)
                 " by " + depth + " " + way + (face ? " its normal" : " it") + ", direction " +
                 Pair(m.normal.x, m.normal.y) + ", separates them (the MTV).";
     }
-    text += m.contactCount == 1 ? " 1 contact point." : " " + std::to_string(m.contactCount) + " contact points.";
+    if (countContacts)
+    {
+        text += m.contactCount == 1 ? " 1 contact point." : " " + std::to_string(m.contactCount) + " contact points.";
+    }
     return text;
 }
 
@@ -747,7 +754,7 @@ std::string FaceSweepStep(const Scene& scene, const PairStudy& study, int step)
     return text;
 }
 
-std::string FaceSweepVerdict(const Scene& scene, const PairStudy& study)
+std::string FaceSweepVerdict(const Scene& scene, const PairStudy& study, bool countContacts)
 {
     const SweepResult& r = study.sweepResult;
     switch (r.status)
@@ -759,7 +766,11 @@ std::string FaceSweepVerdict(const Scene& scene, const PairStudy& study)
                                                                        : "along " + DescribeAxis(scene, study, r.axis);
         std::string text = "Verdict: first contact at t = " + FormatNumber(r.toi) + ", " + where + ", normal " +
                            Pair(r.normal.x, r.normal.y) + ".";
-        text += r.contactCount == 1 ? " 1 contact point." : " " + std::to_string(r.contactCount) + " contact points.";
+        if (countContacts)
+        {
+            text += r.contactCount == 1 ? " 1 contact point."
+                                        : " " + std::to_string(r.contactCount) + " contact points.";
+        }
         return text;
     }
     case SweepStatus::Overlapping:
@@ -980,7 +991,7 @@ std::string StepName(const Scene& scene, const PairStudy& study, int step)
     return study.sweep ? name : name + " of " + std::to_string(CandidateCount(scene, study));
 }
 
-std::string DescribeStep(const Scene& scene, const PairStudy& study, int step)
+std::string DescribeStep(const Scene& scene, const PairStudy& study, int step, bool countContacts)
 {
     if (step < 0 || step >= study.StepCount())
     {
@@ -990,14 +1001,15 @@ std::string DescribeStep(const Scene& scene, const PairStudy& study, int step)
     {
         if (step == study.VerdictStep())
         {
-            return (study.sweep ? TextbookSweepVerdict(scene, study) : TextbookVerdict(scene, study)) +
+            return (study.sweep ? TextbookSweepVerdict(scene, study) : TextbookVerdict(scene, study, countContacts)) +
                    PrecisionNote(scene, study) + PitfallNote(study);
         }
         return study.sweep ? TextbookSweepAxisStep(scene, study, step) : TextbookAxisStep(scene, study, step);
     }
     if (step == study.VerdictStep())
     {
-        return (study.sweep ? FaceSweepVerdict(scene, study) + DecidedNote(study) : FaceTestVerdict(scene, study)) +
+        return (study.sweep ? FaceSweepVerdict(scene, study, countContacts) + DecidedNote(study)
+                             : FaceTestVerdict(scene, study, countContacts)) +
                PrecisionNote(scene, study) + PitfallNote(study);
     }
     return study.sweep ? FaceSweepStep(scene, study, step) : FaceTestStep(scene, study, step);

@@ -2196,7 +2196,10 @@ class Painter
     CaptionLines LayOutCaption() const
     {
         CaptionLines c;
-        const std::string text = WorldCaption().empty() ? DescribeStep(scene_, study_, figure_.step) : WorldCaption();
+        // The verdict counts the contact points only where the figure draws them.
+        const std::string text = WorldCaption().empty()
+                                     ? DescribeStep(scene_, study_, figure_.step, Has(figure_, kLayerContacts))
+                                     : WorldCaption();
         const float y = kPad - 2.0f;
         const float room = layout_.sceneTop - 6.0f;
         float used = 0.0f;

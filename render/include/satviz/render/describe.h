@@ -62,8 +62,9 @@ std::string DescribeAxis(const Scene& scene, const PairStudy& study, const AxisR
 std::string StepName(const Scene& scene, const PairStudy& study, int step);
 
 /// The caption of a step, one or two plain sentences with the step's numbers, e.g. "Axis 3 of 8: normal of B's
-/// edge 1. Intervals [0.10, 1.32] and [1.20, 2.05] overlap by 0.12."
-std::string DescribeStep(const Scene& scene, const PairStudy& study, int step);
+/// edge 1. Intervals [0.10, 1.32] and [1.20, 2.05] overlap by 0.12." With countContacts false the verdict leaves out
+/// its count of contact points, for a picture that does not draw them.
+std::string DescribeStep(const Scene& scene, const PairStudy& study, int step, bool countContacts = true);
 
 /// A short title of a step for lists: "3: B edge 1, overlap 0.12", or "verdict: collide, MTV 0.12" ("verdict:
 /// touching, MTV zero" for shapes in contact that do not overlap, as the verdict's sentence says).
