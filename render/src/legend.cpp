@@ -34,7 +34,7 @@ const char* Meaning(LegendMark mark)
     case LegendMark::Behind:
         return "band of a face test: how far behind (or beyond) the face";
     case LegendMark::Swept:
-        return "pale bar: the interval swept during the step";
+        return "pale bar: the interval swept from t = 0 to t = 1";
     case LegendMark::TimeMarks:
         return "dark triangles on the time bar: entry and exit";
     case LegendMark::Other:

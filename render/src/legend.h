@@ -19,7 +19,7 @@ enum class LegendMark
     Overlap,    ///< the purple band: the two intervals overlap
     Gap,        ///< the green band: a gap between the intervals
     Behind,     ///< the band of a face test: how far the other shape lies behind (or beyond) the face
-    Swept,      ///< the pale bar: the interval B sweeps during the step
+    Swept,      ///< the pale bar: the interval B sweeps from t = 0 to 1 (a step; a second in a world's scene)
     TimeMarks,  ///< the dark triangles on the time bar: entry and exit
     Other,      ///< a grey body: not in the tested pair (a wall, a mark)
     Asleep,     ///< a hatched body: asleep in a world (neither moved nor tested)
