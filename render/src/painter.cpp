@@ -687,7 +687,6 @@ class Painter
         if (hasAxis_ && Has(figure_, kLayerProjection) && !axis_.skipped)
         {
             const Vec2 d = axis_.direction;
-            const Vec2 base = AxisLineBase(points_, d, kAxisGap / view_.zoom);
             double lo = std::min(axis_.minA, axis_.minB) - kLinePad / view_.zoom;
             double hi = std::max(axis_.maxA, axis_.maxB) + kLinePad / view_.zoom;
             if (axis_.swept)
@@ -695,6 +694,7 @@ class Painter
                 lo = std::min(lo, axis_.sweptMinB);
                 hi = std::max(hi, axis_.sweptMaxB);
             }
+            const Vec2 base = AxisBaseInSight(d, lo, hi);
             for (const double u : {lo, hi})
             {
                 const ScreenPoint q = At(Along(base, d, u));
@@ -1130,7 +1130,44 @@ class Painter
         canvas_.Polyline(screen.data(), static_cast<int>(screen.size()), true, palette::kOverlap, 1.5f);
         const ScreenPoint o = at(origin);
         canvas_.FillCircle(o, 3.5f, palette::kInk);
-        canvas_.Text({o.x + 5.0f, o.y + 2.0f}, "O", TextStyle::Label, palette::kInk);
+        // "O" goes on the side away from the arrow or the ray that leaves the origin, whose head it would hide.
+        Vec2 leaving{};
+        const bool overlapping = study_.Textbook() ? study_.textbookResult.overlap : study_.manifold.overlap;
+        if (sweep)
+        {
+            leaving = motion;
+        }
+        else if (overlapping)
+        {
+            leaving = study_.Textbook() ? study_.textbookResult.normal : study_.manifold.normal;
+        }
+        const double leavingLength = Length(leaving);
+        if (leavingLength > 0.0)
+        {
+            const ScreenPoint size = canvas_.MeasureText("O", TextStyle::Label);
+            const float ux = static_cast<float>(leaving.x / leavingLength);
+            const float uy = static_cast<float>(-leaving.y / leavingLength);
+            const float reach = 0.5f * size.x * std::fabs(ux) + 0.5f * size.y * std::fabs(uy) + 6.0f;
+            canvas_.Text({o.x - ux * reach - 0.5f * size.x, o.y - uy * reach - 0.5f * size.y}, "O", TextStyle::Label,
+                         palette::kInk);
+        }
+        else
+        {
+            canvas_.Text({o.x + 5.0f, o.y + 2.0f}, "O", TextStyle::Label, palette::kInk);
+        }
+        // The inset's closing note, on two lines when the inset is too narrow for one.
+        const auto note = [&](const std::string& text, Color color) {
+            const float room = side - 12.0f;
+            const size_t cut = text.rfind(' ', text.find(" at t"));
+            if (canvas_.MeasureText(text, TextStyle::Label).x <= room || cut == std::string::npos || cut == 0)
+            {
+                canvas_.Text({box.minX + 6.0f, box.maxY - 18.0f}, text, TextStyle::Label, color);
+                return;
+            }
+            canvas_.Text({box.minX + 6.0f, box.maxY - 20.0f - canvas_.MeasureText(text, TextStyle::Label).y}, text.substr(0, cut),
+                         TextStyle::Label, color);
+            canvas_.Text({box.minX + 6.0f, box.maxY - 18.0f}, text.substr(cut + 1), TextStyle::Label, color);
+        };
         if (sweep)
         {
             // The origin moves by the relative motion relative to the difference: where it enters is the hit.
@@ -1142,8 +1179,7 @@ class Painter
             {
                 const ScreenPoint hit = at(origin + toi * motion);
                 canvas_.FillCircle(hit, 4.0f, palette::kResult);
-                canvas_.Text({box.minX + 6.0f, box.maxY - 18.0f}, "the ray enters at t = " + FormatNumber(toi),
-                             TextStyle::Label, palette::kResult);
+                note("the ray enters at t = " + FormatNumber(toi), palette::kResult);
             }
             return;
         }
@@ -1222,10 +1258,30 @@ class Painter
             canvas_.Segment(At(v1), At(v2), color, 4.0f);
             // The face the axis comes from: its name goes beside the marked face, not on it.
             labels_.ReserveLine(At(v1), At(v2), 4.0f);
-            const ScreenPoint mid = At(0.5 * (v1 + v2));
+            // Its normal starts from the middle of the part of the face in sight, and is drawn only when its head
+            // shows: the caption or the number line's panel would hide the head of one drawn beyond them.
+            const ScreenRect sight = SceneInSight();
+            const ScreenRect inside{sight.minX + 4.0f, sight.minY + 4.0f, sight.maxX - 4.0f, sight.maxY - 4.0f};
             const Vec2 n = Rotate(xf.q, poly.Normal(ref.index));
-            MarkedArrow(mid, {mid.x + 30.0f * static_cast<float>(n.x), mid.y - 30.0f * static_cast<float>(n.y)}, color,
-                        2.0f, 9.0f);
+            const auto tipOf = [&](ScreenPoint m) {
+                return ScreenPoint{m.x + 30.0f * static_cast<float>(n.x), m.y - 30.0f * static_cast<float>(n.y)};
+            };
+            const auto seen = [&](ScreenPoint m) {
+                const ScreenPoint t = tipOf(m);
+                return m.x >= inside.minX && m.x <= inside.maxX && m.y >= inside.minY && m.y <= inside.maxY &&
+                       t.x >= inside.minX && t.x <= inside.maxX && t.y >= inside.minY && t.y <= inside.maxY;
+            };
+            ScreenPoint mid = At(0.5 * (v1 + v2));
+            ScreenPoint p = At(v1);
+            ScreenPoint q = At(v2);
+            if (!seen(mid) && ClipSegment(p, q, inside))
+            {
+                mid = {0.5f * (p.x + q.x), 0.5f * (p.y + q.y)};
+            }
+            if (seen(mid))
+            {
+                MarkedArrow(mid, tipOf(mid), color, 2.0f, 9.0f);
+            }
         }
         else if (ref.kind == AxisKind::VertexToCenter && ref.shape >= 0)
         {
@@ -1251,11 +1307,45 @@ class Painter
         }
     }
 
+    // Where the axis line runs: beside the pair, or, when that lies under the caption, the number line's panel or
+    // past the image's side (a wall as tall as the picture), moved across into the part of the scene in sight, so
+    // that its arrow head and its bars show.
+    Vec2 AxisBaseInSight(Vec2 d, double lo, double hi) const
+    {
+        Vec2 base = AxisLineBase(points_, d, kAxisGap / view_.zoom);
+        const Vec2 n = AxisSide(d);
+        const ScreenPoint middle = At(Along(base, d, 0.5 * (lo + hi)));
+        const float across[2] = {static_cast<float>(n.x), static_cast<float>(-n.y)};
+        const float at[2] = {middle.x, middle.y};
+        const float margin = 12.0f;
+        const ScreenRect sight = SceneInSight();
+        const float low[2] = {margin, std::max(layout_.sceneTop, sight.minY) + margin};
+        const float high[2] = {Width() - margin, std::min(layout_.sceneBottom, sight.maxY) - margin};
+        float from = -INFINITY;
+        float to = INFINITY;
+        for (int c = 0; c < 2; ++c)
+        {
+            if (std::fabs(across[c]) < 1e-3f)
+            {
+                continue; // a move across the line cannot bring it in along this side
+            }
+            const float s1 = (low[c] - at[c]) / across[c];
+            const float s2 = (high[c] - at[c]) / across[c];
+            from = std::max(from, std::min(s1, s2));
+            to = std::min(to, std::max(s1, s2));
+        }
+        if (from <= to && (from > 0.0f || to < 0.0f))
+        {
+            const float shift = from > 0.0f ? from : to;
+            base = base + (static_cast<double>(shift) / view_.zoom) * n;
+        }
+        return base;
+    }
+
     void AxisInScene()
     {
         canvas_.BeginGroup("projection");
         const Vec2 d = axis_.direction;
-        const Vec2 base = AxisLineBase(points_, d, kAxisGap / view_.zoom);
         const Vec2 n = AxisSide(d);
         double lo = 0.0;
         double hi = 0.0;
@@ -1270,6 +1360,7 @@ class Painter
             lo = std::min(lo, axis_.boundAt);
             hi = std::max(hi, axis_.boundAt);
         }
+        const Vec2 base = AxisBaseInSight(d, lo, hi);
         // A face decided without evaluation is drawn faintly: its numbers are the view's, not the test's.
         const float fade = axis_.decided ? 0.4f : 1.0f;
         const auto faint = [fade](Color color, float alpha) { return WithAlpha(color, alpha * fade); };
@@ -1278,17 +1369,20 @@ class Painter
         {
             AxisSource(axis_.faces[f], faint(palette::kInk, 1.0f));
         }
-        MarkedArrow(At(Along(base, d, lo - pad)), At(Along(base, d, hi + pad)), faint(palette::kMuted, 1.0f), 1.5f,
-                    11.0f);
-        const std::string name = (axis_.textbook ? "axis " : "face test ") + std::to_string(axis_.index + 1);
-        // Named at its head, or where the line leaves the scene when the caption or the panel hides the head.
+        // The line ends where the scene leaves sight, so that the caption or the panel never hides its head.
         ScreenPoint tail = At(Along(base, d, lo - pad));
         ScreenPoint head = At(Along(base, d, hi + pad));
-        const ScreenRect scene{0.0f, layout_.sceneTop + 4.0f, Width(), layout_.sceneBottom - 4.0f};
+        const ScreenRect sight = SceneInSight();
+        const ScreenRect scene{4.0f, std::max(layout_.sceneTop, sight.minY) + 4.0f, Width() - 4.0f,
+                               std::min(layout_.sceneBottom, sight.maxY) - 4.0f};
         if (!ClipSegment(tail, head, scene))
         {
+            tail = At(Along(base, d, lo - pad));
             head = At(Along(base, d, hi + pad));
         }
+        MarkedArrow(tail, head, faint(palette::kMuted, 1.0f), 1.5f, 11.0f);
+        const std::string name = (axis_.textbook ? "axis " : "face test ") + std::to_string(axis_.index + 1);
+        // Named at its head.
         labels_.Place(head,
                       !axis_.decided ? name : name + (axis_.bounded ? " (not walked to)" : " (not evaluated)"),
                       TextStyle::Label, palette::kMuted, static_cast<float>(d.x), static_cast<float>(-d.y), 6.0f,
@@ -1342,7 +1436,21 @@ class Painter
                           6.0f, LabelRank::Note);
         }
 
-        const ScreenPoint middle = At(Along(base, d, 0.5 * (from + to)));
+        // Its label hangs from the middle of the part of the band in sight: one hung from under the panel would
+        // lead across the panel's words.
+        ScreenPoint middle = At(Along(base, d, 0.5 * (from + to)));
+        ScreenPoint bandFrom = At(Along(base, d, from));
+        ScreenPoint bandTo = At(Along(base, d, to));
+        const bool middleSeen =
+            middle.x >= scene.minX && middle.x <= scene.maxX && middle.y >= scene.minY && middle.y <= scene.maxY;
+        if (!middleSeen)
+        {
+            if (!ClipSegment(bandFrom, bandTo, scene))
+            {
+                return; // the band lies wholly under the caption or the panel, whose number line names it
+            }
+            middle = {0.5f * (bandFrom.x + bandTo.x), 0.5f * (bandFrom.y + bandTo.y)};
+        }
         const std::string text = BandLabel(axis_);
         // On the far side of the bars from the pair, where the shapes' own labels crowd less (lesson 4's pitfall
         // figure put it between the bars and the slab, and pushed the slab's reference face down below it).
