@@ -1263,8 +1263,9 @@ class Painter
             const ScreenRect sight = SceneInSight();
             const ScreenRect inside{sight.minX + 4.0f, sight.minY + 4.0f, sight.maxX - 4.0f, sight.maxY - 4.0f};
             const Vec2 n = Rotate(xf.q, poly.Normal(ref.index));
+            const float length = 30.0f;
             const auto tipOf = [&](ScreenPoint m) {
-                return ScreenPoint{m.x + 30.0f * static_cast<float>(n.x), m.y - 30.0f * static_cast<float>(n.y)};
+                return ScreenPoint{m.x + length * static_cast<float>(n.x), m.y - length * static_cast<float>(n.y)};
             };
             const auto seen = [&](ScreenPoint m) {
                 const ScreenPoint t = tipOf(m);
@@ -2118,9 +2119,9 @@ class Painter
                             12.0f);
         }
         IntervalRow(x(axis_.minA), x(axis_.maxA), rowA, axis_.minA, axis_.maxA, palette::kShapeA, palette::kShapeA,
-                    true);
+                    true, lineLeft - 8.0f);
         IntervalRow(x(axis_.minB), x(axis_.maxB), rowB, axis_.minB, axis_.maxB, palette::kShapeB, palette::kShapeBInk,
-                    false);
+                    false, lineLeft - 8.0f);
         if (axis_.bounded)
         {
             // The bound: a vertex of the other shape lies here, so the other shape's near end is no farther out.
@@ -2146,7 +2147,8 @@ class Painter
         }
     }
 
-    void IntervalRow(float x0, float x1, float y, double v0, double v1, Color color, Color ink, bool above)
+    void IntervalRow(float x0, float x1, float y, double v0, double v1, Color color, Color ink, bool above,
+                     float rowStart)
     {
         canvas_.Segment({x0, y}, {x1, y}, color, 8.0f);
         canvas_.Segment({x0, y - 7.0f}, {x0, y + 7.0f}, ink, 1.5f);
@@ -2162,9 +2164,12 @@ class Painter
             canvas_.Text({0.5f * (x0 + x1) - 0.5f * size0.x, ty}, s0, TextStyle::Label, ink);
             return;
         }
-        // End values sit outside their bar ends, two spaces apart at least, so that they never read as one.
-        canvas_.Text({x0 - size0.x - 4.5f, ty}, s0, TextStyle::Label, ink);
-        canvas_.Text({x1 + 4.5f, ty}, s1, TextStyle::Label, ink);
+        // End values sit outside their bar ends, two spaces apart at least, so that they never read as one; a long
+        // number (a pair far from the origin) slides in along its row rather than reach the image's edge or the
+        // body's name at the row's start.
+        const float size1 = canvas_.MeasureText(s1, TextStyle::Label).x;
+        canvas_.Text({std::max(x0 - size0.x - 4.5f, rowStart), ty}, s0, TextStyle::Label, ink);
+        canvas_.Text({std::min(x1 + 4.5f, Width() - 8.0f - size1), ty}, s1, TextStyle::Label, ink);
     }
 
     // t from 0 to 1: this axis's entry and exit, and the window (latest entry, earliest exit) so far.
@@ -2483,7 +2488,13 @@ View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int
             spans.push_back({lo, hi});
         }
     }
-    const float areaWidth = static_cast<float>(width);
+    // The Minkowski inset takes the scene's top right corner: the pair keeps to the left of it.
+    const float inset = (layers & kLayerMinkowski)
+                            ? std::min(220.0f, 0.42f * std::min(static_cast<float>(width),
+                                                                  layout.sceneBottom - layout.sceneTop)) +
+                                  20.0f
+                            : 0.0f;
+    const float areaWidth = static_cast<float>(width) - inset;
     const float areaHeight = layout.sceneBottom - layout.sceneTop;
     View view;
     view.width = width;
@@ -2523,7 +2534,7 @@ View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int
         view.zoom = std::max(view.zoom, 1e-9);
         const Vec2 middle = 0.5 * (low + high);
         const double offsetY = 0.5 * (layout.sceneTop + layout.sceneBottom) - 0.5 * height;
-        view.center = {middle.x, middle.y + offsetY / view.zoom};
+        view.center = {middle.x + 0.5 * inset / view.zoom, middle.y + offsetY / view.zoom};
     }
     return view;
 }
