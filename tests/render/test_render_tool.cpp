@@ -40,11 +40,30 @@ std::vector<std::string> TakeLines(const std::string& path)
     return lines;
 }
 
+// Where this process writes: a folder of its own under the system's temporary folder, never the folder the tests
+// are run from (a run from a source tree would leave its files among the sources), and never shared with another
+// process (ctest may run the cases of this file in parallel).
+// Removed when the process ends.
+fs::path WorkDirectory()
+{
+    struct Owned
+    {
+        fs::path dir = fs::temp_directory_path() / ("satviz-render-tool-" + std::to_string(::getpid()));
+        ~Owned()
+        {
+            std::error_code ignored;
+            fs::remove_all(dir, ignored);
+        }
+    };
+    static const Owned owned;
+    fs::create_directories(owned.dir);
+    return owned.dir;
+}
+
 Run Render(const std::string& arguments)
 {
-    // ctest may run the cases of this file in parallel: each process keeps its own output files.
-    const std::string out = "render-" + std::to_string(::getpid()) + ".out";
-    const std::string err = "render-" + std::to_string(::getpid()) + ".err";
+    const std::string out = (WorkDirectory() / "render.out").string();
+    const std::string err = (WorkDirectory() / "render.err").string();
     const std::string command = std::string(SATVIZ_RENDER_EXE) + " " + arguments + " > " + out + " 2> " + err;
     const int status = std::system(command.c_str());
     Run run;
@@ -69,7 +88,7 @@ std::string Bytes(const fs::path& path)
 
 fs::path FreshDirectory(const std::string& name)
 {
-    const fs::path dir = fs::current_path() / name;
+    const fs::path dir = WorkDirectory() / name;
     fs::remove_all(dir);
     return dir;
 }
