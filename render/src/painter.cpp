@@ -1275,9 +1275,30 @@ class Painter
             ScreenPoint mid = At(0.5 * (v1 + v2));
             ScreenPoint p = At(v1);
             ScreenPoint q = At(v2);
-            if (!seen(mid) && ClipSegment(p, q, inside))
+            const bool clipped = ClipSegment(p, q, inside);
+            if (!seen(mid) && clipped)
             {
                 mid = {0.5f * (p.x + q.x), 0.5f * (p.y + q.y)};
+            }
+            // Its head off another arrow's head (the best face's normal beside the tested face's, on a small box on
+            // a floor): elsewhere along the face in sight, when the middle's would sit on one.
+            const auto clear = [&](ScreenPoint m) {
+                const ScreenPoint t = tipOf(m);
+                // Only the head matters: a shaft across another head leaves both readable.
+                const ScreenPoint back{t.x - 9.0f * static_cast<float>(n.x), t.y + 9.0f * static_cast<float>(n.y)};
+                return !CrossesHead(back, t, 9.0f);
+            };
+            if (clipped && !clear(mid))
+            {
+                for (const float t : {0.35f, 0.65f, 0.25f, 0.75f, 0.15f, 0.85f})
+                {
+                    const ScreenPoint m{p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
+                    if (seen(m) && clear(m))
+                    {
+                        mid = m;
+                        break;
+                    }
+                }
             }
             if (seen(mid))
             {
