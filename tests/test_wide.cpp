@@ -4,6 +4,7 @@
 
 #include "sat/cpu_dispatch.h"
 #include "sat/face_blocks.h"
+#include "sat/face_query.h"
 #include "sat/face_query_dispatch.h"
 #include "sat/incident_polygon.h"
 #include "sat/lanes.h"
@@ -18,7 +19,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 using namespace satviz;
 using namespace satviz::testing;
@@ -250,47 +253,6 @@ TEST_CASE("512-bit face loops (AVX-512F) and baseline scans give the same bits",
 namespace
 {
 
-// The face query of `ref` against `inc` as the textbook writes it, a face at a time in plain scalar code: each face
-// of ref that is not skipped (in the second pass: anti-parallel to a face of inc, whose test the first pass made),
-// its separation min_j Dot(n, w_j) - Dot(n, v_i) over inc's vertices w_j mapped into ref's frame; the first
-// separating face ends the query, else the query reports the first face of the largest separation. kUnit: unit
-// normals (Collide), else raw edge normals (Overlap).
-template <bool kUnit>
-detail::FaceQuery<double> TextbookFaceQuery(const Polygon& ref, const detail::IncidentPolygon<double>& inc, bool second)
-{
-    const uint64_t skip = detail::SecondPassSkips<true>(ref, inc, second);
-    detail::FaceQuery<double> query;
-    query.face = 0;
-    for (int i = 0; i < ref.Count(); ++i)
-    {
-        if (((skip >> i) & 1) != 0)
-        {
-            continue;
-        }
-        const Vec2 normal = kUnit ? ref.Normal(i) : RightPerp(ref.Edge(i));
-        double low = std::numeric_limits<double>::infinity();
-        for (int j = 0; j < inc.polygon.Count(); ++j)
-        {
-            low = std::min(low, normal.x * inc.x[j] + normal.y * inc.y[j]);
-        }
-        // + 0: a zero separation is +0, whichever zero the minimum kept.
-        const double separation = (low - Dot(normal, ref.Vertices()[i])) + 0.0;
-        if (separation > 0.0)
-        {
-            query.separated = true;
-            query.face = i;
-            query.separation = separation;
-            return query;
-        }
-        if (separation > query.separation)
-        {
-            query.separation = separation;
-            query.face = i;
-        }
-    }
-    return query;
-}
-
 // A polygon turned half a turn in its own frame (every vertex negated, exactly): face i of it is exactly
 // anti-parallel to face i of `p`.
 Polygon HalfTurned(const Polygon& p)
@@ -311,8 +273,8 @@ TEST_CASE("The face loops in lanes give the textbook face loop's answer, skipped
           "[properties][wide]")
 {
     // The face query of both polygons of each pair in both passes, by the loop the queries run for its sizes (four
-    // faces at a time in lanes, or all the faces of a small polygon at once), against the textbook loop above: the
-    // same verdict, face and separation to the bit. Half the pairs are a polygon and itself turned half a turn, at
+    // faces at a time in lanes, or all the faces of a small polygon at once), against the textbook loop (face_query.h):
+    // the same verdict, face and separation to the bit. Half the pairs are a polygon and itself turned half a turn, at
     // the same rotation in the world or a quarter turn apart: then every face of B is exactly anti-parallel to a
     // face of A and the second pass skips it, the last face included, which the lanes past it repeat.
     Rng rng(20261128);
@@ -341,7 +303,7 @@ TEST_CASE("The face loops in lanes give the textbook face loop's answer, skipped
             const detail::IncidentPolygon<double>& inc = second ? incA : incB;
             const int side = second ? 1 : 0;
             INFO((second ? "B's faces" : "A's faces"));
-            const detail::FaceQuery<double> textbook = TextbookFaceQuery<true>(ref, inc, second);
+            const detail::FaceQuery<double> textbook = detail::TextbookFaceQuery<true>(ref, inc, side, second, tracer);
             const detail::FaceQuery<double> lanes =
                 detail::QueryFaces<true>(ref, inc, side, second, -std::numeric_limits<double>::infinity(), tracer);
             REQUIRE(lanes.separated == textbook.separated);
@@ -349,7 +311,7 @@ TEST_CASE("The face loops in lanes give the textbook face loop's answer, skipped
             REQUIRE(SameBits(lanes.separation, textbook.separation));
             skipping += second && detail::SecondPassSkips<true>(ref, inc, true) != 0 ? 1 : 0;
             // Overlap's face query: small polygons all faces at once, larger ones a face at a time.
-            const bool separates = TextbookFaceQuery<false>(ref, inc, second).separated;
+            const bool separates = detail::TextbookFaceQuery<false>(ref, inc, side, second, tracer).separated;
             if (a.Count() <= 8 && b.Count() <= 8)
             {
                 REQUIRE(detail::SmallFacesSeparate(ref, inc, side, second, tracer) == separates);
@@ -357,6 +319,19 @@ TEST_CASE("The face loops in lanes give the textbook face loop's answer, skipped
             else
             {
                 REQUIRE(detail::QueryFaces<false>(ref, inc, side, second, 0.0, tracer).separated == separates);
+                // The face scan also keeps each vertex's largest separation (a vertex inside ref), as the textbook
+                // loop does: the same numbers (== takes the two zeros for one, as the test <= 0 does).
+                alignas(32) double lanesInside[detail::IncidentPolygon<double>::kCapacity];
+                double textbookInside[detail::IncidentPolygon<double>::kCapacity];
+                std::fill(std::begin(lanesInside), std::end(lanesInside), -std::numeric_limits<double>::infinity());
+                std::fill(std::begin(textbookInside), std::end(textbookInside),
+                          -std::numeric_limits<double>::infinity());
+                detail::QueryFaces<false, true>(ref, inc, side, second, 0.0, tracer, lanesInside);
+                detail::TextbookFaceQuery<false, true>(ref, inc, side, second, tracer, textbookInside);
+                for (int j = 0; j < inc.polygon.Count(); ++j)
+                {
+                    REQUIRE(lanesInside[j] == textbookInside[j]);
+                }
             }
         }
     }

@@ -126,7 +126,7 @@ int IncidentEdge(const IncidentPolygon<S>& inc, Vec2T<S> normal, int support, Cl
     }
     else
     {
-        s = support >= 0 ? support : inc.template Support<kWide>(normal);
+        s = support >= 0 ? support : inc.Support(normal);
         const int before = Prev(s, m);
         const S dotLeaving = Dot(normal, Rotate(inc.xf.q, inc.polygon.Normal(s)));
         const S dotEntering = Dot(normal, Rotate(inc.xf.q, inc.polygon.Normal(before)));

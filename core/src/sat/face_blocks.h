@@ -4,7 +4,7 @@
 // face, whose outcome follows the geometry and is mispredicted. Here each vertex is projected on four normals at
 // once, the minimum is kept per lane, and a block of four faces (or all faces of a polygon of up to 8) costs one
 // branch: the face-separation kernel (face_kernel.h), with the products, sums and minimum of the face-at-a-time scan
-// (FaceSeparation), so the same bits; the recorder replays the faces one by one. Collide's face query (unit
+// (TextbookFaceQuery), so the same bits; the recorder replays the faces one by one. Collide's face query (unit
 // normals), the sweep's separations, and Overlap's test of polygons of up to 8 vertices (raw edge normals) use them.
 #pragma once
 
@@ -64,7 +64,7 @@ struct FaceBlock
 
 /// The separations of the faces of a small ref (kBlocks blocks of four, 1 or 2: at most 8 faces) from a scanned inc
 /// of N padded vertices, per block in lanes, in one pass over inc's vertices: each vertex is loaded once, as lanes,
-/// for both blocks, whose normals stay in registers. The same products, sums and minimum as FaceSeparation, so the
+/// for both blocks, whose normals stay in registers. The same products, sums and minimum as TextbookFaceQuery, so the
 /// same bits. (Named members: arrays of lanes end up on the stack.)
 template <int N, int kBlocks, typename L, typename S>
 struct SmallRefSeparations
@@ -121,15 +121,15 @@ S LargestSeparation(const L& block0, const L& block1, int n, int& face)
 }
 
 /// The face query of Collide (unit normals) for a ref of at most 8 faces against a scanned inc of N padded vertices,
-/// with the answer of the textbook loop (ScanFaces): the separations of all of ref's faces from one pass over inc's
-/// vertices, as SmallRefSeparations takes them (the same bits), then one branch for all of them. A separating face ends
-/// the query at the first such face (without the early exit, the query reports the largest separation, as when no
-/// face separates); otherwise the largest separation is one reduction across the lanes and its first face the first
-/// lane equal to it, read from the comparison's bits. ref's normals and vertices are loaded four at
-/// a time, whole: a polygon of at most 8 vertices keeps them inline, so the lanes past its last face read its own
-/// block and are masked out. A skipped face (anti-parallel to one already tested) and a NaN separation take no
-/// part. The recorder replays the faces in order, up to the first separating one, with the same numbers. Against
-/// ScanFaceBlocks with a branch per block, Collide of 8-gons took 0.97 of the time (satviz-bench).
+/// with the answer of the textbook loop (TextbookFaceQuery): the separations of all of ref's faces from one pass over
+/// inc's vertices, as SmallRefSeparations takes them (the same bits), then one branch for all of them. A separating
+/// face ends the query at the first such face (without the early exit, the query reports the largest separation, as
+/// when no face separates); otherwise the largest separation is one reduction across the lanes and its first face the
+/// first lane equal to it, read from the comparison's bits. ref's normals and vertices are loaded four at a time,
+/// whole: a polygon of at most 8 vertices keeps them inline, so the lanes past its last face read its own block and are
+/// masked out. A skipped face (anti-parallel to one already tested) and a NaN separation take no part. The recorder
+/// replays the faces in order, up to the first separating one, with the same numbers. Against ScanFaceBlocks with a
+/// branch per block, Collide of 8-gons took 0.97 of the time (satviz-bench).
 template <int N, int kBlocks, typename S, typename Tracer>
 FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second,
                                Tracer& tracer)
@@ -199,13 +199,13 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
 }
 
 /// The face query of Collide (unit normals) against a scanned inc, four faces of ref at a time in lanes, with the
-/// answer of the textbook loop (ScanFaces). Each vertex of inc is projected on four normals at once, so no minimum is
-/// taken across lanes, and a block of four faces costs one branch instead of one per face, whose outcome follows the
-/// geometry and would be mispredicted. The last block repeats the last face, which changes no answer: a skipped last
-/// face is skipped in every lane that repeats it, else its separation, which may round apart from that of the other
-/// polygon's face it repeats, would count. Each lane keeps the largest separation it saw and its first face; the lanes
-/// combine into the first face of the largest separation, as a face-by-face loop finds it. A block that holds a
-/// separating face ends the query at the first such face. The recorder replays the block's faces in order, up to that
+/// answer of the textbook loop (TextbookFaceQuery). Each vertex of inc is projected on four normals at once, so no
+/// minimum is taken across lanes, and a block of four faces costs one branch instead of one per face, whose outcome
+/// follows the geometry and would be mispredicted. The last block repeats the last face, which changes no answer: a
+/// skipped last face is skipped in every lane that repeats it, else its separation, which may round apart from that of
+/// the other polygon's face it repeats, would count. Each lane keeps the largest separation it saw and its first face;
+/// the lanes combine into the first face of the largest separation, as a face-by-face loop finds it. A block that holds
+/// a separating face ends the query at the first such face. The recorder replays the block's faces in order, up to that
 /// face, with the same numbers. A ref of at most 8 faces takes SmallRefFaceQuery instead, and Overlap of small polygons
 /// SmallFacesSeparate (raw edge normals).
 template <int N, typename S, typename Tracer>
@@ -317,7 +317,7 @@ struct EdgeNormalBlock
 /// time in lanes (Gregorius's face query, as SmallRefFaceQuery does for Collide, with raw edge normals): one pass over
 /// inc's vertices, each projected on all of ref's normals at once, then one branch for all of ref's faces instead
 /// of one per face, whose outcome follows the geometry and is mispredicted. The same products, sums and minimum as
-/// FaceSeparation, so the same separations to the bit. A skipped face (second pass: anti-parallel to one of inc's
+/// TextbookFaceQuery, so the same separations to the bit. A skipped face (second pass: anti-parallel to one of inc's
 /// faces, already tested) and the lanes past the last face take no part. The recorder replays the faces in order,
 /// up to the first separating one. True when a face separates.
 template <int N, int kBlocks, typename S, typename Tracer>

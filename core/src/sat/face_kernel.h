@@ -6,11 +6,13 @@
 // lane, with the products, sums and minimum of the textbook loop in its order: every instantiation gives its bits.
 // It is written once, over the lanes and over where the vertices come from (read one at a time from the arrays of a
 // scanned incident polygon, read four at a time and spread across the lanes from registers, or held in registers
-// already). What a loop decides from the separations is its own: the first separating face (Overlap), the largest
-// separation (Collide), the entry and exit times (the sweep).
+// already). The same kernel turned on its side serves a loop that takes one face at a time: the face's normal in every
+// lane and the other polygon's vertices spread over the lanes, a group of them each time (ColumnVertices), their
+// smallest projection the smallest lane. What a loop decides from the separations is its own: the first separating
+// face (Overlap), the largest separation (Collide), the entry and exit times (the sweep).
 #pragma once
 
-#include "incident_polygon.h"
+#include "lanes.h"
 #include "lanes8.h"
 
 namespace satviz::detail
@@ -21,12 +23,17 @@ namespace satviz::detail
 template <typename L, typename S>
 struct BroadcastVertices
 {
-    static constexpr int kCount = 1; ///< vertices per group
-    const S* x;                      ///< vertex j0's x
-    const S* y;                      ///< and y
+    static constexpr int kCount = 1;       ///< vertices per group
+    static constexpr int kTakes = 1;       ///< projections per lane per group
+    static constexpr bool kColumn = false; ///< a vertex per lane (ColumnVertices)
+    const S* x;                            ///< vertex j0's x
+    const S* y;                            ///< and y
 
-    /// Vertex j0 of `inc`.
-    BroadcastVertices(const IncidentPolygon<S>& inc, int j0) : x(inc.x + j0), y(inc.y + j0) {}
+    /// Vertex j0 of `inc` (an IncidentPolygon: its arrays x and y).
+    template <typename Inc>
+    BroadcastVertices(const Inc& inc, int j0) : x(inc.x + j0), y(inc.y + j0)
+    {
+    }
     /// Vertex j0 + k's x in every lane.
     template <int k>
     L X() const
@@ -46,12 +53,18 @@ struct BroadcastVertices
 template <typename L, typename S>
 struct SpreadVertices
 {
-    static constexpr int kCount = 4; ///< vertices per group
-    L xs;                            ///< the four vertices' x, one per lane
-    L ys;                            ///< and y
+    static constexpr int kCount = 4;       ///< vertices per group
+    static constexpr int kTakes = 4;       ///< projections per lane per group: each vertex in turn
+    static constexpr bool kColumn = false; ///< a vertex per lane (ColumnVertices)
+    L xs;                                  ///< the four vertices' x, one per lane
+    L ys;                                  ///< and y
 
-    /// The four vertices of `inc` from vertex j0 (j0 a multiple of 4: inc's arrays are aligned for whole lanes).
-    SpreadVertices(const IncidentPolygon<S>& inc, int j0) : xs(L::Load(inc.x + j0)), ys(L::Load(inc.y + j0)) {}
+    /// The four vertices of `inc` (an IncidentPolygon) from vertex j0 (j0 a multiple of 4: inc's arrays are
+    /// aligned for whole lanes).
+    template <typename Inc>
+    SpreadVertices(const Inc& inc, int j0) : xs(L::Load(inc.x + j0)), ys(L::Load(inc.y + j0))
+    {
+    }
     /// Vertex j0 + k's x in every lane.
     template <int k>
     L X() const
@@ -66,6 +79,60 @@ struct SpreadVertices
     }
 };
 
+/// Where the vertices of a one-face scan come from: the x and y arrays of a scanned incident polygon, padded to
+/// whole groups, and, when `inside` is not null, the per-vertex largest separation that the scan keeps (kInside).
+template <typename S>
+struct ScannedVertices
+{
+    const S* x; ///< the vertices' x
+    const S* y; ///< and y
+    S offset;   ///< the face's offset Dot(normal, v_i), for `inside`
+    S* inside;  ///< kInside: each vertex's largest separation so far
+};
+
+/// A group of L::kCount vertices of a one-face scan from vertex j0, one per lane (j0 a multiple of L::kCount), the
+/// face's normal in every lane: each lane keeps the smallest projection of its own vertices, and the face's is the
+/// smallest lane. With kInside it also keeps, per vertex, the largest separation over the faces scanned so far:
+/// inside[j] = max(inside[j], projection - offset); a vertex whose largest separation is <= 0 lies inside.
+template <typename L, bool kInside, typename S>
+struct ColumnVertices
+{
+    static constexpr int kCount = L::kCount; ///< vertices per group
+    static constexpr int kTakes = 1;         ///< projections per lane per group
+    static constexpr bool kColumn = true;    ///< a vertex per lane
+    const S* x;                              ///< the group's x
+    const S* y;                              ///< and y
+    S offset;                                ///< the face's offset (kInside), held here: `inside` may not alias it
+    S* inside;                               ///< the group's largest separations (kInside)
+
+    /// The group from vertex j.
+    ColumnVertices(const ScannedVertices<S>& v, int j)
+        : x(v.x + j), y(v.y + j), offset(v.offset), inside(kInside ? v.inside + j : nullptr)
+    {
+    }
+    /// The group's x, one vertex per lane.
+    template <int k>
+    L X() const
+    {
+        return L::Load(x);
+    }
+    /// The group's y.
+    template <int k>
+    L Y() const
+    {
+        return L::Load(y);
+    }
+    /// Keeps each vertex's largest separation (kInside) from its projection on the face's normal.
+    template <int k>
+    void Took(const L& projection) const
+    {
+        if constexpr (kInside)
+        {
+            Max(L::Load(inside), projection - L::Fill(offset)).Store(inside);
+        }
+    }
+};
+
 /// Takes vertex k of group w into the smallest projections of one or two blocks of normals (kBlocks): its
 /// projection on each lane's normal, nx x + ny y, the first (`first`) or the smaller of it and the smallest so far
 /// (Min keeps the second operand when either is NaN, as the textbook loop's comparison does).
@@ -75,6 +142,10 @@ void TakeVertex(const Group& w, bool first, const L& nx0, const L& ny0, const L&
     const L x = w.template X<k>();
     const L y = w.template Y<k>();
     const L projection0 = nx0 * x + ny0 * y;
+    if constexpr (Group::kColumn)
+    {
+        w.template Took<k>(projection0);
+    }
     low0 = first ? projection0 : Min(low0, projection0);
     if constexpr (kBlocks == 2)
     {
@@ -85,18 +156,19 @@ void TakeVertex(const Group& w, bool first, const L& nx0, const L& ny0, const L&
 
 /// The kernel: per lane, the smallest projection min_j (nx x_j + ny y_j) of the N vertices of `vertices` (N a
 /// multiple of 4) on the lane's normal, for one block of normals (nx0, ny0) or two (kBlocks = 2: each vertex read
-/// once for both). The vertices are taken in order, in groups of one or four (Group: how they are read).
+/// once for both). The vertices are taken in order, in groups (Group: how they are read, and how many at a time);
+/// a group of a column (ColumnVertices) holds one vertex per lane, so that each lane sees its own vertices.
 template <int N, int kBlocks, typename Group, typename Vertices, typename L>
 void LowestProjections(const Vertices& vertices, const L& nx0, const L& ny0, const L& nx1, const L& ny1, L& low0,
                        L& low1)
 {
     static_assert(N > 0 && N % 4 == 0 && (kBlocks == 1 || kBlocks == 2), "whole groups, one or two blocks");
-    static_assert(Group::kCount == 1 || Group::kCount == 4, "groups of one or four vertices");
+    static_assert(N % Group::kCount == 0 && (Group::kTakes == 1 || Group::kTakes == 4), "whole groups");
     for (int j0 = 0; j0 < N; j0 += Group::kCount)
     {
         const Group w(vertices, j0);
         TakeVertex<0, kBlocks>(w, j0 == 0, nx0, ny0, nx1, ny1, low0, low1);
-        if constexpr (Group::kCount == 4)
+        if constexpr (Group::kTakes == 4)
         {
             TakeVertex<1, kBlocks>(w, false, nx0, ny0, nx1, ny1, low0, low1);
             TakeVertex<2, kBlocks>(w, false, nx0, ny0, nx1, ny1, low0, low1);
@@ -134,10 +206,12 @@ struct RegisterVertices8
 /// Vertex j0 of them, spread across the lanes from those registers.
 struct SpreadVertices8
 {
-    static constexpr int kCount = 1; ///< vertices per group
-    const Lanes8& xs;                ///< the vertices' x
-    const Lanes8& ys;                ///< and y
-    int j0;                          ///< the vertex
+    static constexpr int kCount = 1;       ///< vertices per group
+    static constexpr int kTakes = 1;       ///< projections per lane per group
+    static constexpr bool kColumn = false; ///< a vertex per lane (ColumnVertices)
+    const Lanes8& xs;                      ///< the vertices' x
+    const Lanes8& ys;                      ///< and y
+    int j0;                                ///< the vertex
 
     /// Vertex j0.
     SpreadVertices8(const RegisterVertices8& v, int j) : xs(v.x), ys(v.y), j0(j) {}

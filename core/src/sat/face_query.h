@@ -3,15 +3,17 @@
 // when the other one lies wholly outside the face's line; in 2D the face normals of both polygons are all the axes
 // the separating axis test needs (Ericson 5.2.1). The face query tests the faces of one polygon, the reference
 // polygon, against the other, the incident polygon: each face's separation is the signed distance of the incident
-// polygon's support point beyond it (Gregorius). Here is the query as the textbook writes it, a face at a time;
-// face_query_dispatch.h picks, for each pair of sizes, this loop or a faster one that gives the same numbers.
+// polygon's support point beyond it (Gregorius). Here is the query as the textbook writes it, a face at a time, in
+// plain scalar code: the reference the faster loops are tested against. The loop itself (FaceByFace) is written once;
+// how a face finds the smallest projection is its argument: here one vertex after another, in face_scan.h the
+// face-separation kernel in lanes. face_query_dispatch.h picks, for each pair of sizes, a loop that gives these
+// numbers.
 //
 // References:
 //   C. Ericson, Real-Time Collision Detection (2005), 5.2.1 (separating-axis test).
 //   D. Gregorius, "The Separating Axis Test between Convex Polyhedra", GDC 2013 (face queries with support points).
 #pragma once
 
-#include "face_scan.h"
 #include "incident_polygon.h"
 #include "select.h"
 
@@ -73,7 +75,15 @@ uint64_t SecondPassSkips(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, 
     return kSkipParallel && second ? AntiParallelFaces(inc.polygon, ref, InvMulRot(inc.xf.q, RotT<S>{})) : uint64_t(0);
 }
 
-/// The smallest projection of a scanned inc's N padded vertices on four normals at once (nx, ny in lanes): each
+/// The separation of a face from the smallest projection `low` of the other polygon's vertices on its normal and the
+/// face's offset Dot(normal, v_i): low - offset. Rounding is monotonic, so subtracting before or after the minimum
+/// gives the same number; adding +0 makes a zero separation +0 whichever zero the minimum kept, so every loop and
+/// every lane width gives the same bits.
+template <typename S>
+S SeparationOf(S low, S offset)
+{
+    return (low - offset) + S(0);
+}
 
 /// Records the separation of face i of the reference polygon in `query`, and in the trace; true when the query
 /// stops there (a separating face, with the early exit). kUnit (unit normals: Collide) also keeps the face of
@@ -111,27 +121,25 @@ bool RecordFace(FaceQuery<S>& query, const IncidentPolygon<S>& inc, int side, in
     return false;
 }
 
-/// Face query of `ref` against a scanned `inc` (Gregorius), the textbook loop: one face at a time.
+/// Face query of `ref` against a scanned `inc` (Gregorius), a face at a time, with `lowest(normal, offset)` the
+/// smallest projection of inc's vertices on the normal (offset: the face's Dot(normal, v_i), for kInside).
 /// Outline:
 ///   1. For each face i of ref, with outward normal n and first vertex v_i, the separation is the signed distance
 ///      from the face to inc's support point in direction -n, which is inc's vertex of smallest projection on n:
 ///          separation_i = Dot(n, support(inc, -n) - v_i) = min_j Dot(n, w_j) - Dot(n, v_i),
-///      over inc's vertices w_j, mapped into ref's frame once (IncidentPolygon). Each face takes one scan of them,
-///      without branches (FaceSeparation, face_scan.h): O(n m) with a tiny constant, and m is at most kScanLimit
-///      (larger polygons are walked, walked_faces.h), so linear in n: the O(n + m) of sat.h.
+///      over inc's vertices w_j, mapped into ref's frame once (IncidentPolygon). Each face takes one pass over them:
+///      O(n m), and m is at most kScanLimit (larger polygons are walked, walked_faces.h), so linear in n: the
+///      O(n + m) of sat.h.
 ///   2. A separation > 0 is a separating axis: stop there (early exit).
 ///   3. Keep the largest separation and its face (kUnit): when no face separates, the face of least penetration.
 ///   4. Second pass only: a face of ref exactly anti-parallel to a face of inc repeats the test the first pass made
 ///      from that face, and is skipped (the faces in SecondPassSkips).
 /// kUnit selects unit normals (Collide: separations are distances, the best face is tracked) or raw edge normals
-/// (Overlap: only the sign matters, so no square root or division is needed). N is inc's padded vertex count, a
-/// multiple of 4. kInside also finds, for each vertex of inc, its largest separation from ref's faces (ScanFace),
-/// in `inside`: a vertex whose largest separation is <= 0 lies inside ref.
-template <bool kUnit, bool kInside, int N, typename S, typename Tracer>
-FaceQuery<S> ScanFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, Tracer& tracer,
-                       S* inside)
+/// (Overlap: only the sign matters, so no square root or division is needed).
+template <bool kUnit, typename S, typename Tracer, typename Lowest>
+FaceQuery<S> FaceByFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, Tracer& tracer,
+                        Lowest&& lowest)
 {
-    static_assert(N > 0 && N % 4 == 0 && N <= IncidentPolygon<S>::kCapacity, "a scan of a padded count");
     const int n = ref.Count();
     FaceQuery<S> query;
     // The best face so far starts as the first one tested, so that it is a valid index even when no comparison
@@ -149,14 +157,36 @@ FaceQuery<S> ScanFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
             }
             continue;
         }
-        const S separation =
-            FaceSeparation<N, kInside, Tracer::kWide>(inc.x, inc.y, normal, Dot(normal, ref.Vertices()[i]), inside);
+        const S offset = Dot(normal, ref.Vertices()[i]);
+        const S separation = SeparationOf(lowest(normal, offset), offset);
         if (RecordFace<kUnit, true>(query, inc, side, i, normal, separation, -1, tracer))
         {
             break;
         }
     }
     return query;
+}
+
+/// The face query of `ref` against a scanned `inc` as the textbook writes it (FaceByFace), each face's smallest
+/// projection taken one vertex after another. kInside also finds, for each vertex of inc, its largest separation
+/// from ref's faces, in `inside`: a vertex whose largest separation is <= 0 lies inside ref.
+template <bool kUnit, bool kInside = false, typename S, typename Tracer>
+FaceQuery<S> TextbookFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second,
+                               Tracer& tracer, S* inside = nullptr)
+{
+    return FaceByFace<kUnit>(ref, inc, side, second, tracer, [&](Vec2T<S> normal, S offset) {
+        S low = std::numeric_limits<S>::infinity();
+        for (int j = 0; j < inc.polygon.Count(); ++j)
+        {
+            const S projection = normal.x * inc.x[j] + normal.y * inc.y[j];
+            if constexpr (kInside)
+            {
+                inside[j] = std::max(inside[j], projection - offset);
+            }
+            low = std::min(low, projection);
+        }
+        return low;
+    });
 }
 
 } // namespace satviz::detail

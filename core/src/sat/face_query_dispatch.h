@@ -6,6 +6,7 @@
 
 #include "face_blocks.h"
 #include "face_query.h"
+#include "face_scan.h"
 #include "incident_polygon.h"
 #include "walked_faces.h"
 

@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: MIT
 // satviz (private), chapter 2: the incident polygon. A face query tests the faces of one polygon, the reference
 // polygon, against the other, the incident polygon, in the reference polygon's frame. A small incident polygon is
-// mapped into that frame once, vertex by vertex, so that each face then costs one scan of its vertices
-// (face_scan.h); a large one is only given its transform, and its support points are walked to.
+// mapped into that frame once, so that each face then costs one pass over its vertices (face_query.h); a large one
+// is only given its transform, and its support points are walked to.
 #pragma once
 
-#include "face_scan.h"
 #include "lanes.h"
 #include "support.h"
 #include "tracer.h"
@@ -105,27 +104,26 @@ struct IncidentPolygon
     }
 
     /// The first vertex whose projection on `normal` (reference frame) is the smallest: the support point in
-    /// direction -normal. kWide: the smallest projection with the wide vectors (the same number).
-    template <bool kWide = false>
+    /// direction -normal. Off the fast path (the face loops need only the smallest projection): for the trace, which
+    /// shows each face's support point, and the rare step that wants the vertex itself.
     int Support(Vec2T<S> normal) const
     {
         if (!scan)
         {
             return BisectSupport(polygon, InvRotate(xf.q, -normal));
         }
-        // The smallest projection is known exactly (MinProjection rounds each projection the same way); mark the
-        // vertices that reach it and take the first. No chain of dependent comparisons.
-        using L = Lanes<S, kWide && std::is_same_v<S, double>>;
-        const S low = MinProjection<L>(x, y, padded, normal.x, normal.y);
-        // Padding repeats vertex 0, so a padded entry that reaches the minimum comes after a real one.
-        const L nx = L::Fill(normal.x);
-        const L ny = L::Fill(normal.y);
-        uint32_t hits = 0;
-        for (int j = 0; j < padded; j += 4)
+        int support = 0;
+        S low = normal.x * x[0] + normal.y * y[0];
+        for (int j = 1; j < polygon.Count(); ++j)
         {
-            hits |= static_cast<uint32_t>((nx * L::Load(x + j) + ny * L::Load(y + j) == L::Fill(low)).Bits()) << j;
+            const S projection = normal.x * x[j] + normal.y * y[j];
+            if (projection < low)
+            {
+                low = projection;
+                support = j;
+            }
         }
-        return hits != 0 ? __builtin_ctz(hits) : 0; // no hit only for NaN input
+        return support;
     }
 };
 

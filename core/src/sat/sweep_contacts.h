@@ -127,7 +127,7 @@ int SweptContacts(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& in
     if (near == 0) [[unlikely]]
     {
         // No vertex within `slop`: no edge either, and the support vertex alone.
-        const int support = inc.template Support<kWide>(normal);
+        const int support = inc.Support(normal);
         vertex = TransformPoint(xfRef, Vec2T<S>{inc.x[support], inc.y[support]});
     }
     // The face in the world at t = 0 from its first vertex along its direction, and moved by ref's velocity.

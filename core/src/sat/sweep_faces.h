@@ -177,7 +177,7 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
             ny = block.ny;
             // The four faces side by side: each vertex of inc is projected on all four normals at once and the
             // minimum kept per lane, so no minimum is taken across lanes. The same products, sums and minimum as
-            // FaceSeparation, so the same bits.
+            // TextbookFaceQuery, so the same bits.
             separations = SeparationsOf(LowestProjection<N, SpreadVertices<L, S>>(inc, nx, ny), block.Offset());
         }
         const L rates = nx * L::Fill(velocity.x) + ny * L::Fill(velocity.y);
