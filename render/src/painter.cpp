@@ -1282,8 +1282,21 @@ class Painter
             }
             // Its head off another arrow's head (the best face's normal beside the tested face's, on a small box on
             // a floor): elsewhere along the face in sight, when the middle's would sit on one.
+            // At the verdict the contacts layer draws the incident edge, on the other body's outline, over it.
+            const std::vector<ScreenPoint> other =
+                verdict_ && Has(figure_, kLayerContacts) && study_.trace.hasClip ? OutlineOf(1 - ref.shape)
+                                                                                  : std::vector<ScreenPoint>{};
             const auto clear = [&](ScreenPoint m) {
                 const ScreenPoint t = tipOf(m);
+                for (size_t k = 0; k < other.size(); ++k)
+                {
+                    ScreenPoint a = other[k];
+                    ScreenPoint b = other[(k + 1) % other.size()];
+                    if (ClipSegment(a, b, {t.x - 6.0f, t.y - 6.0f, t.x + 6.0f, t.y + 6.0f}))
+                    {
+                        return false;
+                    }
+                }
                 // Only the head matters: a shaft across another head leaves both readable.
                 const ScreenPoint back{t.x - 9.0f * static_cast<float>(n.x), t.y + 9.0f * static_cast<float>(n.y)};
                 return !CrossesHead(back, t, 9.0f);
@@ -2055,6 +2068,31 @@ class Painter
             else if (wide >= text.x + 8.0f && tall >= text.y + 4.0f)
             {
                 labels_.Place(At(center), body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f, LabelRank::Name);
+                // A large body's name may move within it when a pitfall's note takes its middle, rather than hang on
+                // a leader line from under that note.
+                std::vector<ScreenPoint> within;
+                const float hx = 0.5f * text.x + 4.0f;
+                const float hy = 0.5f * text.y + 2.0f;
+                for (const auto& [fx, fy] : {std::pair{0.0f, 0.25f}, std::pair{0.0f, -0.25f}, std::pair{-0.25f, 0.0f},
+                                             std::pair{0.25f, 0.0f}, std::pair{-0.25f, 0.25f}, std::pair{0.25f, 0.25f},
+                                             std::pair{-0.25f, -0.25f}, std::pair{0.25f, -0.25f}})
+                {
+                    const ScreenPoint p{middle.x + fx * wide, middle.y + fy * tall};
+                    bool inside = true;
+                    for (const ScreenPoint corner : {ScreenPoint{p.x - hx, p.y - hy}, ScreenPoint{p.x + hx, p.y - hy},
+                                                     ScreenPoint{p.x - hx, p.y + hy}, ScreenPoint{p.x + hx, p.y + hy}})
+                    {
+                        inside = inside && Covered(corner, outline, 0.0f);
+                    }
+                    if (inside)
+                    {
+                        within.push_back(p);
+                    }
+                }
+                if (hasPitfallArrow_)
+                {
+                    labels_.AlsoAt(within);
+                }
             }
             else if (wide < text.x + 8.0f && tall >= 2.0f * text.y)
             {
