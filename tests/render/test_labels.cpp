@@ -867,6 +867,59 @@ struct Drawn
     std::vector<std::string> problems;
 };
 
+// Every check of one drawn figure: its texts against each other, the marks and the image, and, for a pair, its
+// labels against the pair's bodies and (with namedFaces) the faces its sentences name.
+std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Scene& scene, const FigureSetup& setup,
+                                        bool namedFaces = true)
+{
+    std::vector<std::string> problems = HiddenTexts(canvas, setup.figure.view.width, setup.figure.view.height);
+    // A figure of its own (a decomposition, ...) draws no pair: the checks of labels against the pair's bodies
+    // are for the pair's figures.
+    if (setup.figure.kind == FigureKind::Pair)
+    {
+        for (std::string& p : LabelsInOtherBody(canvas, scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : LabelsOnOutlines(canvas, scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : namedFaces ? EdgeNamesBehind(canvas, scene, setup.study, setup.figure.view)
+                                         : std::vector<std::string>{})
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : LabelsOnOtherBodies(canvas, scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : namedFaces ? NamedFacesUnnamed(canvas, scene, setup.study, setup.figure.layers,
+                                                             setup.figure.view)
+                                         : std::vector<std::string>{})
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : NamesAstray(canvas, scene, setup.study))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : LabelsOnDashedOutlines(canvas))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : ReferenceFaceFar(canvas))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : CornersAtTheSides(scene, setup.study, setup.figure.view, setup.figure.layers))
+        {
+            problems.push_back(std::move(p));
+        }
+    }
+    return problems;
+}
+
 // Draws one scene as satviz-render does (its view's sim_steps first), every step or the view's step.
 std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool faces)
 {
@@ -895,48 +948,7 @@ std::vector<Drawn> DrawFigures(const std::string& stem, bool allSteps, bool face
         setup.figure.step = k;
         RecordingCanvas canvas;
         PaintFigure(canvas, loaded.scene, setup.study, setup.figure);
-        std::vector<std::string> problems = HiddenTexts(canvas, setup.figure.view.width, setup.figure.view.height);
-        // A figure of its own (a decomposition, ...) draws no pair: the checks of labels against the pair's bodies
-        // are for the pair's figures.
-        if (setup.figure.kind == FigureKind::Pair)
-        {
-            for (std::string& p : LabelsInOtherBody(canvas, loaded.scene, setup.study, setup.figure.view))
-            {
-                problems.push_back(std::move(p));
-            }
-            for (std::string& p : LabelsOnOutlines(canvas, loaded.scene, setup.study, setup.figure.view))
-            {
-                problems.push_back(std::move(p));
-            }
-            for (std::string& p : EdgeNamesBehind(canvas, loaded.scene, setup.study, setup.figure.view))
-            {
-                problems.push_back(std::move(p));
-            }
-            for (std::string& p : LabelsOnOtherBodies(canvas, loaded.scene, setup.study, setup.figure.view))
-            {
-                problems.push_back(std::move(p));
-            }
-            for (std::string& p : NamedFacesUnnamed(canvas, loaded.scene, setup.study, setup.figure.layers, setup.figure.view))
-            {
-                problems.push_back(std::move(p));
-            }
-            for (std::string& p : NamesAstray(canvas, loaded.scene, setup.study))
-            {
-                problems.push_back(std::move(p));
-            }
-            for (std::string& p : LabelsOnDashedOutlines(canvas))
-            {
-                problems.push_back(std::move(p));
-            }
-            for (std::string& p : ReferenceFaceFar(canvas))
-            {
-                problems.push_back(std::move(p));
-            }
-            for (std::string& p : CornersAtTheSides(loaded.scene, setup.study, setup.figure.view, setup.figure.layers))
-            {
-                problems.push_back(std::move(p));
-            }
-        }
+        std::vector<std::string> problems = FigureProblems(canvas, loaded.scene, setup);
         drawn.push_back({(faces ? "faces/" : "") + stem + (allSteps ? "-step" + std::to_string(k + 1) : "") + ".png",
                          std::move(problems)});
     }
@@ -1190,4 +1202,77 @@ TEST_CASE("In the face view of every pair of the course, every face the sentence
     }
     INFO(failing << " of " << drawn);
     CHECK(drawn > 100);
+}
+
+TEST_CASE("In the face view, every step of every pair of the course keeps its labels apart and in the image",
+          "[labels][faces]")
+{
+    // The app shows any scene in the face view, at any step, on its 800 x 600 canvas or at the scene's own size:
+    // every pair scene of the course drawn so keeps its labels off each other, the arrow heads, the marks, the
+    // bodies' outlines and the image's edge, as the committed figures do. Whether each face a sentence names is
+    // named, and on its outer side, is checked for the course's figures by the tests above.
+    int drawn = 0;
+    int failing = 0;
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry :
+         std::filesystem::recursive_directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    {
+        if (entry.path().extension() == ".json")
+        {
+            files.push_back(entry.path());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    REQUIRE(files.size() > 100);
+    for (const std::filesystem::path& file : files)
+    {
+        SceneResult loaded = LoadScene(file.string(), SceneOptions{true});
+        INFO(file.string() << ": " << loaded.error);
+        REQUIRE(loaded.Ok());
+        REQUIRE(SimulateScene(loaded.scene, loaded.scene.view.simSteps).empty());
+        for (const bool own : {true, false})
+        {
+            if (!own && loaded.scene.view.width == 800 && loaded.scene.view.height == 600)
+            {
+                continue;
+            }
+            FigureOptions options;
+            options.setSteps = true;
+            options.steps = StepView::Faces;
+            if (!own)
+            {
+                options.width = 800;
+                options.height = 600;
+            }
+            FigureSetup setup = SetUpFigure(loaded.scene, options);
+            if (!setup.Ok() || setup.figure.kind != FigureKind::Pair)
+            {
+                continue;
+            }
+            if (!own && !loaded.scene.view.fit)
+            {
+                setup.figure.view = Reframe(loaded.scene.view, setup.study, setup.figure.layers,
+                                             !setup.figure.caption.empty(), 800, 600);
+            }
+            for (int k = 0; k < FigureStepCount(loaded.scene, setup); ++k)
+            {
+                setup.figure.step = k;
+                RecordingCanvas canvas;
+                PaintFigure(canvas, loaded.scene, setup.study, setup.figure);
+                const std::vector<std::string> problems = FigureProblems(canvas, loaded.scene, setup, false);
+                INFO(file.filename().string() << " face step " << k + 1 << " at " << setup.figure.view.width << " x "
+                                              << setup.figure.view.height);
+                for (const std::string& problem : problems)
+                {
+                    UNSCOPED_INFO(problem);
+                }
+                CHECK(problems.empty());
+                failing += problems.empty() ? 0 : 1;
+                ++drawn;
+            }
+        }
+    }
+    INFO(failing << " of " << drawn << " drawings");
+    CHECK(failing == 0);
+    CHECK(drawn > 500);
 }
