@@ -2067,7 +2067,51 @@ class Painter
             }
             else if (wide >= text.x + 8.0f && tall >= text.y + 4.0f)
             {
-                labels_.Place(At(center), body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f, LabelRank::Name);
+                // A face a sentence names that lies flush against the other body along its length (a box on the
+                // floor) has its name just inside its own body: the body's name moves away from that face, where it
+                // still fits, to leave it the room.
+                ScreenPoint anchor = middle;
+                if (body.shape.type == ShapeType::Polygon)
+                {
+                    const std::vector<ScreenPoint> other = OutlineOf(1 - s);
+                    const auto& poly = body.shape.polygon;
+                    for (const int i : NamedIn(sentence, s, "edge", "edges"))
+                    {
+                        const Vec2 n = Rotate(body.Xf().q, poly.Normal(i));
+                        bool flush = true;
+                        for (const double t : {0.2, 0.5, 0.8})
+                        {
+                            const ScreenPoint face = At(TransformPoint(body.Xf(), poly.Vertices()[i] + t * poly.Edge(i)));
+                            const ScreenPoint out{face.x + 4.0f * static_cast<float>(n.x),
+                                                  face.y - 4.0f * static_cast<float>(n.y)};
+                            flush = flush && Covered(out, other, 0.0f);
+                        }
+                        if (!flush)
+                        {
+                            continue;
+                        }
+                        for (const float shift : {20.0f, 16.0f, 12.0f, 8.0f})
+                        {
+                            const ScreenPoint p{anchor.x - shift * static_cast<float>(n.x),
+                                                anchor.y + shift * static_cast<float>(n.y)};
+                            const float hx = 0.5f * text.x + 4.0f;
+                            const float hy = 0.5f * text.y + 2.0f;
+                            bool inside = true;
+                            for (const ScreenPoint corner :
+                                 {ScreenPoint{p.x - hx, p.y - hy}, ScreenPoint{p.x + hx, p.y - hy},
+                                  ScreenPoint{p.x - hx, p.y + hy}, ScreenPoint{p.x + hx, p.y + hy}})
+                            {
+                                inside = inside && Covered(corner, outline, 0.0f);
+                            }
+                            if (inside)
+                            {
+                                anchor = p;
+                                break;
+                            }
+                        }
+                    }
+                }
+                labels_.Place(anchor, body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f, LabelRank::Name);
                 // A large body's name may move within it when a pitfall's note takes its middle, rather than hang on
                 // a leader line from under that note.
                 std::vector<ScreenPoint> within;
