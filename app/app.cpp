@@ -57,45 +57,45 @@ std::string FindBundledScenes(const std::filesystem::path& programDir, const std
 }
 
 App::App(const FigureFonts& fonts, AppOptions options)
-    : fonts_(fonts), options_(std::move(options)), viewer_(options_.backgroundVertices), panels_(*this),
-      recent_(options_.recentFile, options_.updateRecent)
+    : m_fonts(fonts), m_options(std::move(options)), m_viewer(m_options.backgroundVertices), m_panels(*this),
+      m_recent(m_options.recentFile, m_options.updateRecent)
 {
-    if (options_.lessonsDir.empty() && !options_.scenesDir.empty())
+    if (m_options.lessonsDir.empty() && !m_options.scenesDir.empty())
     {
-        options_.lessonsDir = std::filesystem::path(options_.scenesDir).parent_path().string();
+        m_options.lessonsDir = std::filesystem::path(m_options.scenesDir).parent_path().string();
     }
-    if (!options_.lessonsDir.empty())
+    if (!m_options.lessonsDir.empty())
     {
-        lessons_ = FindLessons(options_.lessonsDir);
+        m_lessons = FindLessons(m_options.lessonsDir);
     }
 }
 
 void App::Frame()
 {
     TakeFinishedTest();
-    panels_.Shortcuts();
-    viewer_.Advance(ImGui::GetIO().DeltaTime);
-    if (sim_.Advance(ImGui::GetIO().DeltaTime))
+    m_panels.Shortcuts();
+    m_viewer.Advance(ImGui::GetIO().DeltaTime);
+    if (m_sim.Advance(ImGui::GetIO().DeltaTime))
     {
         Refresh();
     }
-    panels_.Draw();
+    m_panels.Draw();
 }
 
 double App::SecondsUntilChange() const
 {
-    if (viewer_.Studying())
+    if (m_viewer.Studying())
     {
         return 0.03; // the worker thread's figure is taken in by a frame
     }
     double change = -1.0;
-    if (viewer_.Playing())
+    if (m_viewer.Playing())
     {
-        change = viewer_.SecondsUntilNextStep();
+        change = m_viewer.SecondsUntilNextStep();
     }
-    if (sim_.Playing())
+    if (m_sim.Playing())
     {
-        change = change < 0.0 ? sim_.SecondsUntilNextStep() : std::min(change, sim_.SecondsUntilNextStep());
+        change = change < 0.0 ? m_sim.SecondsUntilNextStep() : std::min(change, m_sim.SecondsUntilNextStep());
     }
     return change;
 }
@@ -104,68 +104,68 @@ double App::SecondsUntilChange() const
 
 bool App::Open(const std::string& path)
 {
-    const OpenResult opened = document_.Open(path, options_.scenesDir);
+    const OpenResult opened = m_document.Open(path, m_options.scenesDir);
     if (!opened.ok)
     {
         SetStatus(opened.error, true);
         return false;
     }
-    selected_ = -1;
-    viewer_.Reset(document_.GetScene());
-    sim_ = Simulation{};
+    m_selected = -1;
+    m_viewer.Reset(m_document.GetScene());
+    m_sim = Simulation{};
     Refresh();
     const int simSteps = opened.simSteps;
-    if (simSteps > 0 && sim_.Error().empty())
+    if (simSteps > 0 && m_sim.Error().empty())
     {
         // The view asks for the bodies where these steps leave them: the simulation takes them, so that the
         // scene opens there, ready to play on or to go back to step 0.
-        while (sim_.Shown() < simSteps)
+        while (m_sim.Shown() < simSteps)
         {
-            sim_.StepForward();
+            m_sim.StepForward();
         }
         Refresh();
     }
-    recent_.Remember(path);
+    m_recent.Remember(path);
     SetStatus("Opened " + path +
                   (simSteps > 0
                        ? ", after " + std::to_string(simSteps) + " rigid-body step" + (simSteps == 1 ? "" : "s") +
                              " of the simulation (its view's sim_steps; Reset goes back to the scene as written)"
                        : "") +
-                  (document_.ReadOnly() ? " (a bundled scene: Save asks for a new file)" : ""),
+                  (m_document.ReadOnly() ? " (a bundled scene: Save asks for a new file)" : ""),
               false);
     return true;
 }
 
 bool App::RequestOpen(const std::string& path)
 {
-    if (!document_.Dirty())
+    if (!m_document.Dirty())
     {
         return Open(path);
     }
-    pendingOpen_ = path;
-    panels_.AskBeforeOpening();
+    m_pendingOpen = path;
+    m_panels.AskBeforeOpening();
     return false;
 }
 
 bool App::Save(const std::string& path)
 {
     std::string error;
-    if (!document_.Save(SceneForSaving(), path, error))
+    if (!m_document.Save(SceneForSaving(), path, error))
     {
         SetStatus(error, true);
         return false;
     }
-    recent_.Remember(path);
+    m_recent.Remember(path);
     SetStatus("Saved " + path, false);
     return true;
 }
 
 Scene App::SceneForSaving() const
 {
-    Scene saved = document_.GetScene();
-    viewer_.WriteView(saved);
+    Scene saved = m_document.GetScene();
+    m_viewer.WriteView(saved);
     // The step of the simulation shown: satviz-render steps the scene as far, to the same bits.
-    saved.view.simSteps = sim_.Error().empty() ? sim_.Shown() : 0;
+    saved.view.simSteps = m_sim.Error().empty() ? m_sim.Shown() : 0;
     return saved;
 }
 
@@ -176,24 +176,24 @@ FigureSetup App::ExportFigure() const
 
 void App::RequestExport()
 {
-    exportRequested_ = true;
-    std::filesystem::path target = options_.exportPath;
+    m_exportRequested = true;
+    std::filesystem::path target = m_options.exportPath;
     if (target.empty())
     {
-        const std::filesystem::path base = document_.File().empty() ? "satviz.json" : document_.File();
-        target = base.parent_path() / (base.stem().string() + "-step" + std::to_string(viewer_.Step() + 1) + ".png");
+        const std::filesystem::path base = m_document.File().empty() ? "satviz.json" : m_document.File();
+        target = base.parent_path() / (base.stem().string() + "-step" + std::to_string(m_viewer.Step() + 1) + ".png");
     }
-    exportPath_ = target.string();
+    m_exportPath = target.string();
 }
 
 bool App::TakeExportRequest(std::string& path)
 {
-    if (!exportRequested_)
+    if (!m_exportRequested)
     {
         return false;
     }
-    exportRequested_ = false;
-    path = exportPath_;
+    m_exportRequested = false;
+    path = m_exportPath;
     return true;
 }
 
@@ -201,7 +201,7 @@ std::vector<std::string> App::BundledScenes() const
 {
     std::vector<std::string> files;
     std::error_code code;
-    for (const auto& entry : std::filesystem::directory_iterator(options_.scenesDir, code))
+    for (const auto& entry : std::filesystem::directory_iterator(m_options.scenesDir, code))
     {
         if (entry.path().extension() == ".json")
         {
@@ -214,12 +214,12 @@ std::vector<std::string> App::BundledScenes() const
 
 bool App::RequestQuit()
 {
-    if (!document_.Dirty() || quitConfirmed_)
+    if (!m_document.Dirty() || m_quitConfirmed)
     {
-        quitConfirmed_ = true;
+        m_quitConfirmed = true;
         return true;
     }
-    panels_.AskBeforeQuitting();
+    m_panels.AskBeforeQuitting();
     return false;
 }
 
@@ -227,13 +227,13 @@ bool App::RequestQuit()
 
 bool App::Undo()
 {
-    ViewChoices choices = viewer_.Choices();
-    if (!document_.Undo(choices))
+    ViewChoices choices = m_viewer.Choices();
+    if (!m_document.Undo(choices))
     {
         return false;
     }
-    viewer_.SetChoices(choices);
-    selected_ = std::min(selected_, static_cast<int>(document_.GetScene().bodies.size()) - 1);
+    m_viewer.SetChoices(choices);
+    m_selected = std::min(m_selected, static_cast<int>(m_document.GetScene().bodies.size()) - 1);
     Refresh();
     ClearError();
     return true;
@@ -241,13 +241,13 @@ bool App::Undo()
 
 bool App::Redo()
 {
-    ViewChoices choices = viewer_.Choices();
-    if (!document_.Redo(choices))
+    ViewChoices choices = m_viewer.Choices();
+    if (!m_document.Redo(choices))
     {
         return false;
     }
-    viewer_.SetChoices(choices);
-    selected_ = std::min(selected_, static_cast<int>(document_.GetScene().bodies.size()) - 1);
+    m_viewer.SetChoices(choices);
+    m_selected = std::min(m_selected, static_cast<int>(m_document.GetScene().bodies.size()) - 1);
     Refresh();
     ClearError();
     return true;
@@ -255,37 +255,37 @@ bool App::Redo()
 
 bool App::BodyExists(int index) const
 {
-    return index >= 0 && index < static_cast<int>(document_.GetScene().bodies.size());
+    return index >= 0 && index < static_cast<int>(m_document.GetScene().bodies.size());
 }
 
 void App::BeginEdit()
 {
-    if (!document_.EditOpen())
+    if (!m_document.EditOpen())
     {
-        stateTaken_ = false;
-        sim_.SetPlaying(false);
+        m_stateTaken = false;
+        m_sim.SetPlaying(false);
     }
-    document_.BeginEdit(viewer_.Choices());
+    m_document.BeginEdit(m_viewer.Choices());
 }
 
 void App::EndEdit()
 {
-    document_.CommitEdit();
-    stateTaken_ = false;
+    m_document.CommitEdit();
+    m_stateTaken = false;
 }
 
 void App::TakeShownState()
 {
-    if (stateTaken_ || sim_.Shown() == 0 || !sim_.Error().empty())
+    if (m_stateTaken || m_sim.Shown() == 0 || !m_sim.Error().empty())
     {
         return;
     }
-    stateTaken_ = true;
-    const int step = sim_.Shown();
-    const Scene& shown = sim_.ShownScene();
+    m_stateTaken = true;
+    const int step = m_sim.Shown();
+    const Scene& shown = m_sim.ShownScene();
     for (size_t i = 0; i < shown.bodies.size(); ++i)
     {
-        Body& body = document_.EditBody(i);
+        Body& body = m_document.EditBody(i);
         body.position = shown.bodies[i].position;
         body.angle = shown.bodies[i].angle;
         body.velocity = shown.bodies[i].velocity;
@@ -299,12 +299,12 @@ void App::TakeShownState()
 Body& App::EditBody(int index)
 {
     TakeShownState();
-    return document_.EditBody(static_cast<size_t>(index));
+    return m_document.EditBody(static_cast<size_t>(index));
 }
 
 const Scene& App::ShownScene() const
 {
-    return sim_.Shown() > 0 && sim_.Error().empty() ? sim_.ShownScene() : document_.GetScene();
+    return m_sim.Shown() > 0 && m_sim.Error().empty() ? m_sim.ShownScene() : m_document.GetScene();
 }
 
 void App::MoveBody(int index, Vec2 position)
@@ -314,7 +314,7 @@ void App::MoveBody(int index, Vec2 position)
     {
         return;
     }
-    const bool single = !document_.EditOpen();
+    const bool single = !m_document.EditOpen();
     BeginEdit();
     EditBody(index).position = position;
     if (single)
@@ -331,7 +331,7 @@ void App::TurnBody(int index, double angle)
     {
         return;
     }
-    const bool single = !document_.EditOpen();
+    const bool single = !m_document.EditOpen();
     BeginEdit();
     EditBody(index).angle = angle;
     if (single)
@@ -348,7 +348,7 @@ void App::SetVelocity(int index, Vec2 velocity)
     {
         return;
     }
-    const bool single = !document_.EditOpen();
+    const bool single = !m_document.EditOpen();
     BeginEdit();
     EditBody(index).velocity = velocity;
     if (single)
@@ -387,7 +387,7 @@ bool App::MoveVertex(int index, int vertex, Vec2 world)
         Refresh();
         return false;
     }
-    const bool single = !document_.EditOpen();
+    const bool single = !m_document.EditOpen();
     BeginEdit();
     Body& edited = EditBody(index);
     edited.shape = std::move(reshaped.shape);
@@ -410,7 +410,7 @@ bool App::AddDrawnPolygon(const std::vector<Vec2>& vertices)
         return false;
     }
     Body body;
-    body.name = UniqueName(document_.GetScene(), "polygon");
+    body.name = UniqueName(m_document.GetScene(), "polygon");
     body.position = OutlineCentroid(vertices);
     std::vector<Vec2> local;
     for (const Vec2& v : vertices)
@@ -426,8 +426,8 @@ bool App::AddDrawnPolygon(const std::vector<Vec2>& vertices)
     const std::string name = body.name;
     BeginEdit();
     TakeShownState();
-    document_.AddBody(std::move(body));
-    selected_ = static_cast<int>(document_.GetScene().bodies.size()) - 1;
+    m_document.AddBody(std::move(body));
+    m_selected = static_cast<int>(m_document.GetScene().bodies.size()) - 1;
     EndEdit();
     Refresh();
     SetStatus("Added " + name + ": " + std::to_string(vertices.size()) + " vertices, " +
@@ -499,14 +499,14 @@ int App::CutAlong(Vec2 a, Vec2 b)
             }
             if (k == 0)
             {
-                document_.EditBody(d.index) = std::move(part);
+                m_document.EditBody(d.index) = std::move(part);
                 names.push_back(original.name);
             }
             else
             {
-                part.name = UniqueName(document_.GetScene(), original.name + ".");
+                part.name = UniqueName(m_document.GetScene(), original.name + ".");
                 names.push_back(part.name);
-                document_.AddBody(std::move(part));
+                m_document.AddBody(std::move(part));
             }
         }
         slivers += d.cut.slivers;
@@ -534,12 +534,12 @@ void App::AddBody(Shape shape, const std::string& stem)
     BeginEdit();
     TakeShownState();
     Body body;
-    body.name = UniqueName(document_.GetScene(), stem);
+    body.name = UniqueName(m_document.GetScene(), stem);
     body.shape = std::move(shape);
-    body.position = viewer_.Camera().center;
+    body.position = m_viewer.Camera().center;
     const std::string name = body.name;
-    document_.AddBody(std::move(body));
-    selected_ = static_cast<int>(document_.GetScene().bodies.size()) - 1;
+    m_document.AddBody(std::move(body));
+    m_selected = static_cast<int>(m_document.GetScene().bodies.size()) - 1;
     EndEdit();
     Refresh();
     SetStatus("Added " + name + ": drag it into place", false);
@@ -547,21 +547,21 @@ void App::AddBody(Shape shape, const std::string& stem)
 
 void App::DeleteSelected()
 {
-    if (!BodyExists(selected_))
+    if (!BodyExists(m_selected))
     {
         SetStatus("Select a body first (click it)", true);
         return;
     }
-    if (document_.GetScene().bodies.size() <= 2)
+    if (m_document.GetScene().bodies.size() <= 2)
     {
         SetStatus("The scene keeps at least two bodies: add one before deleting this one", true);
         return;
     }
     BeginEdit();
     TakeShownState();
-    const std::string name = document_.GetScene().bodies[static_cast<size_t>(selected_)].name;
-    document_.RemoveBody(static_cast<size_t>(selected_));
-    selected_ = -1;
+    const std::string name = m_document.GetScene().bodies[static_cast<size_t>(m_selected)].name;
+    m_document.RemoveBody(static_cast<size_t>(m_selected));
+    m_selected = -1;
     EndEdit();
     Refresh();
     SetStatus("Deleted " + name, false);
@@ -571,18 +571,18 @@ void App::DeleteSelected()
 
 void App::ChangeChoices(const ViewChoices& choices)
 {
-    if (choices == viewer_.Choices())
+    if (choices == m_viewer.Choices())
     {
         return;
     }
-    document_.RecordChoices(viewer_.Choices());
-    viewer_.SetChoices(choices);
+    m_document.RecordChoices(m_viewer.Choices());
+    m_viewer.SetChoices(choices);
     Refresh();
 }
 
 void App::SetPair(const std::string& bodyA, const std::string& bodyB)
 {
-    const Viewer& viewer = viewer_;
+    const Viewer& viewer = m_viewer;
     if (viewer.TestsPair())
     {
         // The pair shown may come from the scene's first two bodies rather than from names: naming it is no change.
@@ -593,7 +593,7 @@ void App::SetPair(const std::string& bodyA, const std::string& bodyB)
             return;
         }
     }
-    ViewChoices choices = viewer_.Choices();
+    ViewChoices choices = m_viewer.Choices();
     choices.bodyA = bodyA;
     choices.bodyB = bodyB;
     ChangeChoices(choices);
@@ -601,48 +601,48 @@ void App::SetPair(const std::string& bodyA, const std::string& bodyB)
 
 void App::SetQuery(ViewQuery query)
 {
-    ViewChoices choices = viewer_.Choices();
+    ViewChoices choices = m_viewer.Choices();
     choices.query = query;
     ChangeChoices(choices);
 }
 
 void App::SetStepView(StepView steps)
 {
-    ViewChoices choices = viewer_.Choices();
+    ViewChoices choices = m_viewer.Choices();
     choices.steps = steps;
     ChangeChoices(choices);
 }
 
 void App::SetPitfall(Pitfall pitfall)
 {
-    ViewChoices choices = viewer_.Choices();
+    ViewChoices choices = m_viewer.Choices();
     choices.pitfall = pitfall;
     ChangeChoices(choices);
 }
 
 void App::SetPrecision(bool singlePrecision)
 {
-    ViewChoices choices = viewer_.Choices();
+    ViewChoices choices = m_viewer.Choices();
     choices.singlePrecision = singlePrecision;
     ChangeChoices(choices);
 }
 
 void App::SetLayers(LayerMask layers)
 {
-    ViewChoices choices = viewer_.Choices();
+    ViewChoices choices = m_viewer.Choices();
     choices.layers = layers & kAllLayers;
     ChangeChoices(choices);
 }
 
 void App::FitCamera()
 {
-    viewer_.FitCamera();
+    m_viewer.FitCamera();
     Refresh();
 }
 
 void App::PlaceCanvas(ScreenPoint origin, int width, int height)
 {
-    if (viewer_.PlaceCanvas(origin, width, height))
+    if (m_viewer.PlaceCanvas(origin, width, height))
     {
         Refresh();
     }
@@ -650,45 +650,45 @@ void App::PlaceCanvas(ScreenPoint origin, int width, int height)
 
 void App::Refresh()
 {
-    const Scene& scene = document_.GetScene();
-    if (!sim_.StartedFrom(scene))
+    const Scene& scene = m_document.GetScene();
+    if (!m_sim.StartedFrom(scene))
     {
-        const int was = sim_.Shown();
-        sim_.Restart(scene, -1, -1);
-        if (was > 0 && sim_.Shown() > 0 && !document_.EditOpen())
+        const int was = m_sim.Shown();
+        m_sim.Restart(scene, -1, -1);
+        if (was > 0 && m_sim.Shown() > 0 && !m_document.EditOpen())
         {
-            SetStatus("Back at step " + std::to_string(sim_.Shown()) + " of the simulation", false);
+            SetStatus("Back at step " + std::to_string(m_sim.Shown()) + " of the simulation", false);
         }
     }
     bool fresh = false;
-    if (sim_.Shown() > 0 && sim_.Error().empty())
+    if (m_sim.Shown() > 0 && m_sim.Error().empty())
     {
         Scene shown = scene;
-        CopyWorldState(sim_.Record().world, shown);
+        CopyWorldState(m_sim.Record().world, shown);
         // The scene's caption describes it as written, at step 0.
         char caption[120];
-        std::snprintf(caption, sizeof caption, "After %d step%s of the simulation (time %.4g)", sim_.Shown(),
-                      sim_.Shown() == 1 ? "" : "s", sim_.Record().world.time);
+        std::snprintf(caption, sizeof caption, "After %d step%s of the simulation (time %.4g)", m_sim.Shown(),
+                      m_sim.Shown() == 1 ? "" : "s", m_sim.Record().world.time);
         shown.view.caption = caption;
-        fresh = viewer_.Refresh(shown);
+        fresh = m_viewer.Refresh(shown);
     }
     else
     {
-        fresh = viewer_.Refresh(scene);
+        fresh = m_viewer.Refresh(scene);
     }
-    if (viewer_.TestsPair())
+    if (m_viewer.TestsPair())
     {
-        sim_.ChoosePair(viewer_.Setup().study.bodyA, viewer_.Setup().study.bodyB);
+        m_sim.ChoosePair(m_viewer.Setup().study.bodyA, m_viewer.Setup().study.bodyB);
     }
-    viewer_.SetSim(sim_.Error().empty() ? &sim_.Record() : nullptr);
+    m_viewer.SetSim(m_sim.Error().empty() ? &m_sim.Record() : nullptr);
     // A hit chosen is one of its step's: another step shows every hit again.
-    viewer_.SetHit(sim_.Error().empty() && sim_.Shown() == simHitStep_ &&
-                           simHit_ < static_cast<int>(sim_.Record().lastStep.hits.size())
-                       ? simHit_
+    m_viewer.SetHit(m_sim.Error().empty() && m_sim.Shown() == m_simHitStep &&
+                           m_simHit < static_cast<int>(m_sim.Record().lastStep.hits.size())
+                       ? m_simHit
                        : -1);
-    if (fresh && !viewer_.Setup().Ok())
+    if (fresh && !m_viewer.Setup().Ok())
     {
-        SetStatus(viewer_.Setup().error, true);
+        SetStatus(m_viewer.Setup().error, true);
     }
 }
 
@@ -696,31 +696,31 @@ void App::Refresh()
 
 void App::SimPlay(bool playing)
 {
-    sim_.SetPlaying(playing);
-    if (playing && !sim_.Error().empty())
+    m_sim.SetPlaying(playing);
+    if (playing && !m_sim.Error().empty())
     {
-        SetStatus("This scene cannot be stepped as a world: " + sim_.Error(), true);
+        SetStatus("This scene cannot be stepped as a world: " + m_sim.Error(), true);
     }
 }
 
 void App::SimForward()
 {
-    sim_.SetPlaying(false);
-    sim_.StepForward();
+    m_sim.SetPlaying(false);
+    m_sim.StepForward();
     Refresh();
 }
 
 void App::SimBack()
 {
-    sim_.SetPlaying(false);
-    sim_.StepBack();
+    m_sim.SetPlaying(false);
+    m_sim.StepBack();
     Refresh();
 }
 
 void App::SimShowStep(int step)
 {
-    sim_.SetPlaying(false);
-    sim_.ShowStep(step);
+    m_sim.SetPlaying(false);
+    m_sim.ShowStep(step);
     Refresh();
 }
 
@@ -731,33 +731,33 @@ void App::SimReset()
 
 void App::SimSpeed(double stepsPerSecond)
 {
-    sim_.SetSpeed(stepsPerSecond);
+    m_sim.SetSpeed(stepsPerSecond);
 }
 
 void App::SimHand(int index, Vec2 position, Vec2 pointerVelocity)
 {
-    if (!BodyExists(index) || !sim_.Error().empty())
+    if (!BodyExists(index) || !m_sim.Error().empty())
     {
         return;
     }
     // Simulated time runs Speed() * dt times as fast as the user's.
-    const double rate = sim_.Speed() * sim_.Record().dt;
-    sim_.Hand(index, position, rate > 0.0 ? (1.0 / rate) * pointerVelocity : pointerVelocity);
+    const double rate = m_sim.Speed() * m_sim.Record().dt;
+    m_sim.Hand(index, position, rate > 0.0 ? (1.0 / rate) * pointerVelocity : pointerVelocity);
     Refresh();
 }
 
 void App::SimChooseHit(int hit)
 {
-    sim_.SetPlaying(false);
-    const bool again = hit == simHit_ && simHitStep_ == sim_.Shown();
-    simHit_ = again ? -1 : hit;
-    simHitStep_ = sim_.Shown();
+    m_sim.SetPlaying(false);
+    const bool again = hit == m_simHit && m_simHitStep == m_sim.Shown();
+    m_simHit = again ? -1 : hit;
+    m_simHitStep = m_sim.Shown();
     Refresh();
 }
 
 void App::SimChooseContact(int a, int b)
 {
-    const Scene& scene = document_.GetScene();
+    const Scene& scene = m_document.GetScene();
     if (a < 0 || b < 0 || a >= static_cast<int>(scene.bodies.size()) || b >= static_cast<int>(scene.bodies.size()))
     {
         return;
@@ -777,7 +777,7 @@ void App::SetMaterial(int index, bool isStatic, double density, const Material& 
     {
         return;
     }
-    const bool single = !document_.EditOpen();
+    const bool single = !m_document.EditOpen();
     BeginEdit();
     Body& body = EditBody(index);
     body.isStatic = isStatic;
@@ -792,21 +792,21 @@ void App::SetMaterial(int index, bool isStatic, double density, const Material& 
 
 void App::TakeFinishedTest()
 {
-    if (!viewer_.TakeFinishedTest())
+    if (!m_viewer.TakeFinishedTest())
     {
         return;
     }
-    if (!viewer_.Setup().Ok())
+    if (!m_viewer.Setup().Ok())
     {
-        SetStatus(viewer_.Setup().error, true);
+        SetStatus(m_viewer.Setup().error, true);
     }
-    if (viewer_.TakeRetest())
+    if (m_viewer.TakeRetest())
     {
         Refresh();
     }
-    else if (!statusIsError_)
+    else if (!m_statusIsError)
     {
-        SetStatus("Tested the pair (" + std::to_string(viewer_.PairVertices(document_.GetScene())) +
+        SetStatus("Tested the pair (" + std::to_string(m_viewer.PairVertices(m_document.GetScene())) +
                       " vertices) in the background",
                   false);
     }
@@ -816,11 +816,11 @@ void App::TakeFinishedTest()
 
 bool App::OpenLesson(int index)
 {
-    if (index < 0 || index >= static_cast<int>(lessons_.size()))
+    if (index < 0 || index >= static_cast<int>(m_lessons.size()))
     {
         return false;
     }
-    const Lesson& lesson = lessons_[static_cast<size_t>(index)];
+    const Lesson& lesson = m_lessons[static_cast<size_t>(index)];
     std::vector<LessonBlock> blocks;
     std::string error;
     if (!LoadLesson(lesson.file, blocks, error))
@@ -828,11 +828,11 @@ bool App::OpenLesson(int index)
         SetStatus(error, true);
         return false;
     }
-    lesson_ = index;
-    lessonBlocks_ = std::move(blocks);
-    lessonShown_ = true;
-    panels_.ScrollLessonToTop();
-    if (!lesson.scenes.empty() && lesson.scenes.front() != document_.File())
+    m_lesson = index;
+    m_lessonBlocks = std::move(blocks);
+    m_lessonShown = true;
+    m_panels.ScrollLessonToTop();
+    if (!lesson.scenes.empty() && lesson.scenes.front() != m_document.File())
     {
         RequestOpen(lesson.scenes.front());
     }
@@ -841,14 +841,14 @@ bool App::OpenLesson(int index)
 
 void App::SetStatus(const std::string& message, bool error)
 {
-    status_ = message;
-    statusIsError_ = error;
+    m_status = message;
+    m_statusIsError = error;
 }
 
 void App::ClearError()
 {
     // An error said why an edit was refused or failed: after an undo or a redo it no longer describes the scene.
-    if (statusIsError_ && viewer_.Setup().Ok())
+    if (m_statusIsError && m_viewer.Setup().Ok())
     {
         SetStatus("", false);
     }

@@ -89,7 +89,7 @@ class App
     /// unsaved, else asks first (save and open, open without saving, cancel) and returns false.
     bool RequestOpen(const std::string& file);
     /// The file RequestOpen waits to open until the unsaved changes are dealt with.
-    const std::string& PendingOpen() const { return pendingOpen_; }
+    const std::string& PendingOpen() const { return m_pendingOpen; }
     /// Saves the scene as SceneForSaving() gives it to `file`; true when it was written. The status line says how
     /// it went.
     bool Save(const std::string& file);
@@ -106,28 +106,28 @@ class App
     /// The bundled scenes (AppOptions::scenesDir), sorted.
     std::vector<std::string> BundledScenes() const;
     /// Recently opened files, newest first.
-    const std::vector<std::string>& Recent() const { return recent_.List(); }
+    const std::vector<std::string>& Recent() const { return m_recent.List(); }
 
     /// The user wants to close the window: true when the app may close now; with unsaved changes it asks first.
     bool RequestQuit();
     /// The user confirmed quitting (from the unsaved-changes prompt).
-    void ConfirmQuit() { quitConfirmed_ = true; }
+    void ConfirmQuit() { m_quitConfirmed = true; }
     /// True once the user confirmed quitting (from the prompt or the menu).
-    bool QuitConfirmed() const { return quitConfirmed_; }
+    bool QuitConfirmed() const { return m_quitConfirmed; }
 
     // The document: the scene, its file, the edit history.
 
     /// The scene being edited, its file and its history.
-    const Document& GetDocument() const { return document_; }
+    const Document& GetDocument() const { return m_document; }
     /// Undoes the last edit (of the bodies, or of the pair, query, step view, pitfall, precision or layers);
     /// false when there is nothing to undo.
     bool Undo();
     /// Redoes the last undone edit; false when there is nothing to redo.
     bool Redo();
     /// The selected body, -1 for none.
-    int Selected() const { return selected_; }
+    int Selected() const { return m_selected; }
     /// Selects body `index` (-1: none).
-    void Select(int index) { selected_ = index; }
+    void Select(int index) { m_selected = index; }
     /// Starts an edit of the bodies that lasts until EndEdit (a drag): it is undone in one step.
     void BeginEdit();
     /// Ends the edit begun by BeginEdit; it goes on the undo stack if it changed the scene.
@@ -165,7 +165,7 @@ class App
     // not the scene (Document::Dirty).
 
     /// The viewer: the choices, the step, the camera, the figure of the pair's test.
-    const Viewer& GetViewer() const { return viewer_; }
+    const Viewer& GetViewer() const { return m_viewer; }
     /// Tests the pair named `bodyA` and `bodyB`.
     void SetPair(const std::string& bodyA, const std::string& bodyB);
     /// Shows the static test, the swept test, or either as the pair moves or not.
@@ -179,21 +179,21 @@ class App
     /// Draws the layers of `layers`.
     void SetLayers(LayerMask layers);
     /// Shows trace step `step` (from 0); one that does not exist shows the verdict.
-    void ShowStep(int step) { viewer_.ShowStep(step); }
+    void ShowStep(int step) { m_viewer.ShowStep(step); }
     /// Starts or stops stepping through the trace automatically.
-    void TogglePlay() { viewer_.TogglePlay(); }
+    void TogglePlay() { m_viewer.TogglePlay(); }
     /// Sweeps: draws the moving bodies at time `time` in [0, 1]; -1: not drawn.
-    void SetTime(double time) { viewer_.SetTime(time); }
+    void SetTime(double time) { m_viewer.SetTime(time); }
     /// Frames the pair again, and keeps it framed through edits until the user pans or zooms.
     void FitCamera();
     /// Puts the camera's centre at `center`, `zoom` pixels per world unit.
-    void SetCamera(Vec2 center, double zoom) { viewer_.SetCamera(center, zoom); }
+    void SetCamera(Vec2 center, double zoom) { m_viewer.SetCamera(center, zoom); }
     /// Moves the camera so the world follows a drag of (dx, dy) pixels.
-    void PanCamera(float dx, float dy) { viewer_.PanCamera(dx, dy); }
+    void PanCamera(float dx, float dy) { m_viewer.PanCamera(dx, dy); }
     /// Zooms by `factor` about canvas point `fixed` (the pointer).
-    void ZoomCamera(ScreenPoint fixed, double factor) { viewer_.ZoomCamera(fixed, factor); }
+    void ZoomCamera(ScreenPoint fixed, double factor) { m_viewer.ZoomCamera(fixed, factor); }
     /// Holds the camera where it is while the scene changes under the pointer.
-    void HoldCamera() { viewer_.HoldCamera(); }
+    void HoldCamera() { m_viewer.HoldCamera(); }
     /// Places the canvas in the window (its first frame, a resize): a new size fits the figure to it.
     void PlaceCanvas(ScreenPoint origin, int width, int height);
 
@@ -202,7 +202,7 @@ class App
     // brings back the run it was made in, at that step).
 
     /// The simulation of the document's scene.
-    const Simulation& GetSimulation() const { return sim_; }
+    const Simulation& GetSimulation() const { return m_sim; }
     /// The scene as the canvas shows it: the document's scene with its bodies where the simulation has them at the
     /// step shown.
     const Scene& ShownScene() const;
@@ -237,28 +237,28 @@ class App
     /// scene has unsaved changes). False for an index out of range or a lesson that cannot be read.
     bool OpenLesson(int index);
     /// The lessons found in the lessons folder, in order.
-    const std::vector<Lesson>& Lessons() const { return lessons_; }
+    const std::vector<Lesson>& Lessons() const { return m_lessons; }
     /// The lesson shown, -1 for none.
-    int CurrentLesson() const { return lesson_; }
+    int CurrentLesson() const { return m_lesson; }
     /// The blocks of the lesson shown.
-    const std::vector<LessonBlock>& LessonBlocks() const { return lessonBlocks_; }
+    const std::vector<LessonBlock>& LessonBlocks() const { return m_lessonBlocks; }
     /// True while the lesson window is open.
-    bool LessonShown() const { return lessonShown_; }
+    bool LessonShown() const { return m_lessonShown; }
     /// Closes the lesson window.
-    void CloseLesson() { lessonShown_ = false; }
+    void CloseLesson() { m_lessonShown = false; }
 
     // The status line and the rest.
 
     /// Shows a one-line message in the status bar (an export result, an error).
     void SetStatus(const std::string& message, bool error);
     /// The status line.
-    const std::string& Status() const { return status_; }
+    const std::string& Status() const { return m_status; }
     /// True when the status line reports an error.
-    bool StatusIsError() const { return statusIsError_; }
+    bool StatusIsError() const { return m_statusIsError; }
     /// The start-up choices.
-    const AppOptions& Options() const { return options_; }
+    const AppOptions& Options() const { return m_options; }
     /// The figure fonts.
-    const FigureFonts& Fonts() const { return fonts_; }
+    const FigureFonts& Fonts() const { return m_fonts; }
 
   private:
     // Re-runs the queries on the scene, keeping the step where it still exists. A pair with more vertices than
@@ -273,27 +273,27 @@ class App
     void ClearError();
     bool BodyExists(int index) const;
 
-    FigureFonts fonts_;
-    AppOptions options_;
-    Document document_;
-    Viewer viewer_;
-    Simulation sim_;
-    bool stateTaken_ = false; // this edit already took the simulation's state
-    int simHit_ = -1;         // the hit whose instant is shown, of step simHitStep_
-    int simHitStep_ = -1;
-    Panels panels_;
-    RecentFiles recent_;
-    int selected_ = -1;
-    std::string status_;
-    bool statusIsError_ = false;
-    std::vector<Lesson> lessons_;
-    int lesson_ = -1;
-    std::vector<LessonBlock> lessonBlocks_;
-    bool lessonShown_ = false;
-    std::string pendingOpen_;
-    bool quitConfirmed_ = false;
-    bool exportRequested_ = false;
-    std::string exportPath_;
+    FigureFonts m_fonts;
+    AppOptions m_options;
+    Document m_document;
+    Viewer m_viewer;
+    Simulation m_sim;
+    bool m_stateTaken = false; // this edit already took the simulation's state
+    int m_simHit = -1;         // the hit whose instant is shown, of step m_simHitStep
+    int m_simHitStep = -1;
+    Panels m_panels;
+    RecentFiles m_recent;
+    int m_selected = -1;
+    std::string m_status;
+    bool m_statusIsError = false;
+    std::vector<Lesson> m_lessons;
+    int m_lesson = -1;
+    std::vector<LessonBlock> m_lessonBlocks;
+    bool m_lessonShown = false;
+    std::string m_pendingOpen;
+    bool m_quitConfirmed = false;
+    bool m_exportRequested = false;
+    std::string m_exportPath;
 };
 
 /// The figure the canvas paints: the viewer's, its labels kept off the selected body's turning and velocity handles,

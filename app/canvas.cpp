@@ -145,7 +145,7 @@ void Panels::CanvasWindow()
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     const float top = ImGui::GetFrameHeight();
     // An open lesson takes a column on the left; the canvas keeps the rest.
-    const float lessonWidth = app_.LessonShown() ? kLessonWidth : 0.0f;
+    const float lessonWidth = m_app.LessonShown() ? kLessonWidth : 0.0f;
     const ImVec2 position(viewport->Pos.x + lessonWidth, viewport->Pos.y + top);
     const ImVec2 size(std::max(64.0f, viewport->Size.x - kPanelWidth - lessonWidth),
                       std::max(64.0f, viewport->Size.y - 2.0f * top));
@@ -158,9 +158,9 @@ void Panels::CanvasWindow()
                      ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse |
                      ImGuiWindowFlags_NoBackground); // the figure paints its own ground
     const ImVec2 origin = ImGui::GetCursorScreenPos();
-    app_.PlaceCanvas({origin.x, origin.y}, static_cast<int>(size.x), static_cast<int>(size.y));
-    const Viewer& viewer = app_.GetViewer();
-    if (!canvasAnnounced_)
+    m_app.PlaceCanvas({origin.x, origin.y}, static_cast<int>(size.x), static_cast<int>(size.y));
+    const Viewer& viewer = m_app.GetViewer();
+    if (!m_canvasAnnounced)
     {
         // One line for scripts that drive the window (the end-to-end test): where the canvas is, and its camera
         // (a scene's own framing is scaled to the canvas), so that they can find a world point on the screen.
@@ -168,7 +168,7 @@ void Panels::CanvasWindow()
         std::printf("satviz: canvas at %.0f,%.0f size %dx%d camera %.17g,%.17g zoom %.17g\n", origin.x, origin.y,
                     viewer.CanvasWidth(), viewer.CanvasHeight(), camera.center.x, camera.center.y, camera.zoom);
         std::fflush(stdout);
-        canvasAnnounced_ = true;
+        m_canvasAnnounced = true;
     }
     ImGui::InvisibleButton("##surface", size,
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
@@ -177,10 +177,10 @@ void Panels::CanvasWindow()
     if (viewer.Setup().Ok())
     {
         ImDrawList* list = ImGui::GetWindowDrawList();
-        ImDrawListCanvas canvas(list, app_.Fonts(), origin);
-        canvas.ClearLargeRects(app_.Options().clearRect);
+        ImDrawListCanvas canvas(list, m_app.Fonts(), origin);
+        canvas.ClearLargeRects(m_app.Options().clearRect);
         canvas.PlainFillsUnderOutlines(true);
-        const Figure figure = CanvasFigure(app_);
+        const Figure figure = CanvasFigure(m_app);
         PaintFigure(canvas, viewer.Studied(), viewer.Setup().study, figure);
         Handles(list, origin);
         ToolOverlay(list, origin);
@@ -193,59 +193,59 @@ void Panels::CanvasWindow()
 void Panels::CanvasInput(ImVec2 origin, bool hovered)
 {
     const ImGuiIO& io = ImGui::GetIO();
-    const Viewer& viewer = app_.GetViewer();
-    const std::vector<Body>& bodies = app_.ShownScene().bodies;
+    const Viewer& viewer = m_app.GetViewer();
+    const std::vector<Body>& bodies = m_app.ShownScene().bodies;
     const ScreenPoint mouse{io.MousePos.x - origin.x, io.MousePos.y - origin.y};
     const Vec2 world = ToWorld(viewer.Camera(), mouse);
     if (hovered && io.MouseWheel != 0.0f)
     {
-        app_.ZoomCamera(mouse, std::pow(1.15, static_cast<double>(io.MouseWheel)));
+        m_app.ZoomCamera(mouse, std::pow(1.15, static_cast<double>(io.MouseWheel)));
     }
-    if (drag_ == DragKind::None && hovered && (ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2)))
+    if (m_drag == DragKind::None && hovered && (ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2)))
     {
-        drag_ = DragKind::Pan;
+        m_drag = DragKind::Pan;
     }
-    const bool playing = app_.GetSimulation().Playing();
-    if (tool_ != CanvasTool::Select && drag_ == DragKind::None && hovered && ImGui::IsMouseClicked(0))
+    const bool playing = m_app.GetSimulation().Playing();
+    if (m_tool != CanvasTool::Select && m_drag == DragKind::None && hovered && ImGui::IsMouseClicked(0))
     {
         // Drawing a polygon or a cut: the state shown stays still under the pointer.
-        app_.SimPlay(false);
-        app_.HoldCamera();
-        if (tool_ == CanvasTool::Draw)
+        m_app.SimPlay(false);
+        m_app.HoldCamera();
+        if (m_tool == CanvasTool::Draw)
         {
-            if (drawn_.size() >= 3 && Distance(mouse, ToScreen(viewer.Camera(), drawn_.front())) <= kHandleRadius)
+            if (m_drawn.size() >= 3 && Distance(mouse, ToScreen(viewer.Camera(), m_drawn.front())) <= kHandleRadius)
             {
                 FinishDrawing();
             }
-            else if (drawn_.empty() || Distance(mouse, ToScreen(viewer.Camera(), drawn_.back())) > kHandleRadius)
+            else if (m_drawn.empty() || Distance(mouse, ToScreen(viewer.Camera(), m_drawn.back())) > kHandleRadius)
             {
                 // A second click on the last vertex (a double click) adds nothing.
-                drawn_.push_back(world);
+                m_drawn.push_back(world);
                 DrawingStatus();
             }
             return;
         }
-        drag_ = DragKind::Cut;
-        cutFrom_ = world;
-        cutTo_ = world;
+        m_drag = DragKind::Cut;
+        m_cutFrom = world;
+        m_cutTo = world;
     }
-    if (drag_ == DragKind::Cut)
+    if (m_drag == DragKind::Cut)
     {
-        cutTo_ = world;
+        m_cutTo = world;
         if (!ImGui::IsMouseDown(0))
         {
-            drag_ = DragKind::None;
+            m_drag = DragKind::None;
             // A click is no cut: the segment must span a few pixels.
-            if (Length(cutTo_ - cutFrom_) * viewer.Camera().zoom >= 4.0)
+            if (Length(m_cutTo - m_cutFrom) * viewer.Camera().zoom >= 4.0)
             {
-                app_.CutAlong(cutFrom_, cutTo_);
+                m_app.CutAlong(m_cutFrom, m_cutTo);
             }
         }
         return;
     }
-    if (drag_ == DragKind::None && hovered && ImGui::IsMouseClicked(0))
+    if (m_drag == DragKind::None && hovered && ImGui::IsMouseClicked(0))
     {
-        const int selected = app_.Selected();
+        const int selected = m_app.Selected();
         // While the simulation plays, a body is grabbed and thrown: its handles edit the scene, which pauses.
         if (!playing && selected >= 0 && selected < static_cast<int>(bodies.size()))
         {
@@ -260,146 +260,146 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
                 {
                     if (Distance(mouse, ToScreen(camera, TransformPoint(xf, outline[i]))) <= kHandleRadius)
                     {
-                        drag_ = DragKind::Vertex;
-                        dragVertex_ = static_cast<int>(i);
+                        m_drag = DragKind::Vertex;
+                        m_dragVertex = static_cast<int>(i);
                         break;
                     }
                 }
             }
-            if (drag_ == DragKind::None && Distance(mouse, RotateHandle(camera, body)) <= kHandleRadius)
+            if (m_drag == DragKind::None && Distance(mouse, RotateHandle(camera, body)) <= kHandleRadius)
             {
-                drag_ = DragKind::Rotate;
+                m_drag = DragKind::Rotate;
             }
-            if (drag_ == DragKind::None && Distance(mouse, VelocityHandle(camera, body)) <= kHandleRadius)
+            if (m_drag == DragKind::None && Distance(mouse, VelocityHandle(camera, body)) <= kHandleRadius)
             {
-                drag_ = DragKind::Velocity;
+                m_drag = DragKind::Velocity;
             }
         }
-        if (drag_ == DragKind::None && !io.KeyShift && viewer.Setup().Ok())
+        if (m_drag == DragKind::None && !io.KeyShift && viewer.Setup().Ok())
         {
             // A hit on the hits layer's time bar: the bodies at its instant.
-            ImDrawListCanvas measure(ImGui::GetWindowDrawList(), app_.Fonts(), origin);
+            ImDrawListCanvas measure(ImGui::GetWindowDrawList(), m_app.Fonts(), origin);
             const std::vector<HitMark> marks =
                 HitMarks(measure, viewer.Studied(), viewer.Setup().study, viewer.CurrentFigure());
-            for (size_t h = 0; h < marks.size() && drag_ == DragKind::None; ++h)
+            for (size_t h = 0; h < marks.size() && m_drag == DragKind::None; ++h)
             {
                 const HitMark& mark = marks[h];
                 if (Distance(mouse, mark.dot) <= kHandleRadius ||
                     (mouse.x >= mark.labelMin.x && mouse.x <= mark.labelMax.x && mouse.y >= mark.labelMin.y &&
                      mouse.y <= mark.labelMax.y))
                 {
-                    app_.SimChooseHit(static_cast<int>(h));
-                    drag_ = DragKind::Pan;
+                    m_app.SimChooseHit(static_cast<int>(h));
+                    m_drag = DragKind::Pan;
                 }
             }
         }
-        if (drag_ == DragKind::None && !io.KeyShift && !playing)
+        if (m_drag == DragKind::None && !io.KeyShift && !playing)
         {
             // A contact point of the simulation's step: its pair's response is shown (the panel and the layer).
-            const Simulation& sim = app_.GetSimulation();
+            const Simulation& sim = m_app.GetSimulation();
             for (const WorldContact& contact :
                  sim.Shown() > sim.First() ? sim.Record().world.contacts : std::vector<WorldContact>{})
             {
                 for (int k = 0; k < contact.pointCount && !contact.guard; ++k)
                 {
-                    if (drag_ == DragKind::None &&
+                    if (m_drag == DragKind::None &&
                         Distance(mouse, ToScreen(viewer.Camera(), contact.points[k].point)) <= kHandleRadius * 0.75f)
                     {
-                        app_.SimChooseContact(contact.a, contact.b);
-                        drag_ = DragKind::Pan;
+                        m_app.SimChooseContact(contact.a, contact.b);
+                        m_drag = DragKind::Pan;
                     }
                 }
             }
         }
-        if (drag_ == DragKind::None)
+        if (m_drag == DragKind::None)
         {
-            const int hit = BodyAt(viewer, app_.ShownScene(), world);
-            app_.Select(hit);
+            const int hit = BodyAt(viewer, m_app.ShownScene(), world);
+            m_app.Select(hit);
             const bool dynamic = hit >= 0 && !bodies[static_cast<size_t>(hit)].isStatic;
             if (hit < 0)
             {
-                drag_ = DragKind::Pan;
+                m_drag = DragKind::Pan;
             }
             else if (playing)
             {
-                drag_ = dynamic ? DragKind::Throw : DragKind::Pan;
+                m_drag = dynamic ? DragKind::Throw : DragKind::Pan;
             }
             else
             {
-                drag_ = io.KeyShift ? DragKind::Rotate : DragKind::Body;
+                m_drag = io.KeyShift ? DragKind::Rotate : DragKind::Body;
             }
         }
-        if (drag_ != DragKind::Pan)
+        if (m_drag != DragKind::Pan)
         {
             // The camera holds still while the scene changes under the pointer.
-            app_.HoldCamera();
-            const Body& body = bodies[static_cast<size_t>(app_.Selected())];
-            grabOffset_ = world - body.position;
+            m_app.HoldCamera();
+            const Body& body = bodies[static_cast<size_t>(m_app.Selected())];
+            m_grabOffset = world - body.position;
             const Vec2 arm = world - body.position;
-            grabAngle_ = std::atan2(arm.y, arm.x) - body.angle;
-            throwTrail_.clear();
-            if (drag_ != DragKind::Throw)
+            m_grabAngle = std::atan2(arm.y, arm.x) - body.angle;
+            m_throwTrail.clear();
+            if (m_drag != DragKind::Throw)
             {
-                app_.BeginEdit();
+                m_app.BeginEdit();
             }
         }
     }
-    if (drag_ == DragKind::None)
+    if (m_drag == DragKind::None)
     {
         return;
     }
     const bool down = ImGui::IsMouseDown(0) || ImGui::IsMouseDown(1) || ImGui::IsMouseDown(2);
-    const int selected = app_.Selected();
-    if (drag_ == DragKind::Pan)
+    const int selected = m_app.Selected();
+    if (m_drag == DragKind::Pan)
     {
         if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)
         {
-            app_.PanCamera(io.MouseDelta.x, io.MouseDelta.y);
+            m_app.PanCamera(io.MouseDelta.x, io.MouseDelta.y);
         }
     }
     else if (selected >= 0 && selected < static_cast<int>(bodies.size()))
     {
         const Body& body = bodies[static_cast<size_t>(selected)];
-        switch (drag_)
+        switch (m_drag)
         {
         case DragKind::Body:
-            app_.MoveBody(selected, world - grabOffset_);
+            m_app.MoveBody(selected, world - m_grabOffset);
             break;
         case DragKind::Rotate:
         {
             const Vec2 arm = world - body.position;
             if (Length(arm) > 0.0)
             {
-                app_.TurnBody(selected, std::atan2(arm.y, arm.x) - grabAngle_);
+                m_app.TurnBody(selected, std::atan2(arm.y, arm.x) - m_grabAngle);
             }
             break;
         }
         case DragKind::Vertex:
-            app_.MoveVertex(selected, dragVertex_, world);
+            m_app.MoveVertex(selected, m_dragVertex, world);
             break;
         case DragKind::Velocity:
-            app_.SetVelocity(selected, world - body.position);
+            m_app.SetVelocity(selected, world - body.position);
             break;
         case DragKind::Throw:
         {
             // The body follows the pointer at the pointer's recent speed, so that what it pushes is pushed at
             // that speed, and leaves at it on release.
             const double now = ImGui::GetTime();
-            throwTrail_.emplace_back(now, world);
-            while (throwTrail_.size() > 2 && now - throwTrail_[1].first >= kThrowWindow)
+            m_throwTrail.emplace_back(now, world);
+            while (m_throwTrail.size() > 2 && now - m_throwTrail[1].first >= kThrowWindow)
             {
-                throwTrail_.pop_front();
+                m_throwTrail.pop_front();
             }
-            const double span = now - throwTrail_.front().first;
+            const double span = now - m_throwTrail.front().first;
             const Vec2 velocity = span > 1e-3 && span <= 2.0 * kThrowWindow
-                                      ? (1.0 / span) * (world - throwTrail_.front().second)
+                                      ? (1.0 / span) * (world - m_throwTrail.front().second)
                                       : Vec2{};
-            app_.SimHand(selected, world - grabOffset_, velocity);
+            m_app.SimHand(selected, world - m_grabOffset, velocity);
             if (!down)
             {
-                const Body& thrown = app_.ShownScene().bodies[static_cast<size_t>(selected)];
+                const Body& thrown = m_app.ShownScene().bodies[static_cast<size_t>(selected)];
                 std::printf("satviz: thrown %s at step %d velocity %.17g %.17g\n", thrown.name.c_str(),
-                            app_.GetSimulation().Shown(), thrown.velocity.x, thrown.velocity.y);
+                            m_app.GetSimulation().Shown(), thrown.velocity.x, thrown.velocity.y);
                 std::fflush(stdout);
             }
             break;
@@ -410,12 +410,12 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
     }
     if (!down)
     {
-        if (drag_ != DragKind::Pan && drag_ != DragKind::Throw)
+        if (m_drag != DragKind::Pan && m_drag != DragKind::Throw)
         {
-            app_.EndEdit();
+            m_app.EndEdit();
         }
-        drag_ = DragKind::None;
-        dragVertex_ = -1;
+        m_drag = DragKind::None;
+        m_dragVertex = -1;
     }
 }
 
@@ -423,14 +423,14 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
 // drive the window (the end-to-end test); and the chosen hit's bodies at its instant.
 void Panels::AnnounceHits(Canvas& canvas, const Figure& figure, ImVec2 origin)
 {
-    const Simulation& sim = app_.GetSimulation();
+    const Simulation& sim = m_app.GetSimulation();
     const std::string key = std::to_string(sim.Shown()) + " " + std::to_string(figure.hit);
-    if (figure.sim == nullptr || key == announcedHits_)
+    if (figure.sim == nullptr || key == m_announcedHits)
     {
         return;
     }
-    announcedHits_ = key;
-    const Viewer& viewer = app_.GetViewer();
+    m_announcedHits = key;
+    const Viewer& viewer = m_app.GetViewer();
     const std::vector<HitMark> marks = HitMarks(canvas, viewer.Studied(), viewer.Setup().study, figure);
     for (size_t h = 0; h < marks.size(); ++h)
     {
@@ -452,14 +452,14 @@ void Panels::AnnounceHits(Canvas& canvas, const Figure& figure, ImVec2 origin)
 // The selected body's handles: its vertices, the turning handle above it, and its velocity arrow's tip.
 void Panels::Handles(ImDrawList* list, ImVec2 origin)
 {
-    const int selected = app_.Selected();
-    const std::vector<Body>& bodies = app_.ShownScene().bodies;
+    const int selected = m_app.Selected();
+    const std::vector<Body>& bodies = m_app.ShownScene().bodies;
     if (selected < 0 || selected >= static_cast<int>(bodies.size()))
     {
         return;
     }
     const Body& body = bodies[static_cast<size_t>(selected)];
-    const View& camera = app_.GetViewer().Camera();
+    const View& camera = m_app.GetViewer().Camera();
     auto at = [&](ScreenPoint p) { return ImVec2(p.x + origin.x, p.y + origin.y); };
     const ImU32 ink = IM_COL32(43, 43, 43, 255);
     const ImU32 white = IM_COL32(255, 255, 255, 255);
@@ -486,24 +486,24 @@ void Panels::Handles(ImDrawList* list, ImVec2 origin)
 
 void Panels::SetTool(CanvasTool tool)
 {
-    tool_ = tool;
-    drawn_.clear();
-    if (drag_ == DragKind::Cut)
+    m_tool = tool;
+    m_drawn.clear();
+    if (m_drag == DragKind::Cut)
     {
-        drag_ = DragKind::None;
+        m_drag = DragKind::None;
     }
     switch (tool)
     {
     case CanvasTool::Draw:
-        app_.SetStatus("Draw a polygon: click its vertices; click the first one or press Enter to close it, Esc to "
+        m_app.SetStatus("Draw a polygon: click its vertices; click the first one or press Enter to close it, Esc to "
                        "stop",
                        false);
         break;
     case CanvasTool::Cut:
-        app_.SetStatus("Cut: drag a line across a polygon, from outside to outside; Esc to stop", false);
+        m_app.SetStatus("Cut: drag a line across a polygon, from outside to outside; Esc to stop", false);
         break;
     case CanvasTool::Select:
-        app_.SetStatus("", false);
+        m_app.SetStatus("", false);
         break;
     }
 }
@@ -511,10 +511,10 @@ void Panels::SetTool(CanvasTool tool)
 // The status line while drawing: the vertex count and what the outline so far, closed, decomposes into.
 void Panels::DrawingStatus()
 {
-    std::string said = "Drawing: " + std::to_string(drawn_.size()) + (drawn_.size() == 1 ? " vertex" : " vertices");
-    if (drawn_.size() >= 3)
+    std::string said = "Drawing: " + std::to_string(m_drawn.size()) + (m_drawn.size() == 1 ? " vertex" : " vertices");
+    if (m_drawn.size() >= 3)
     {
-        const Decomposition pieces = Decompose(drawn_, DecomposeMethod::Fast);
+        const Decomposition pieces = Decompose(m_drawn, DecomposeMethod::Fast);
         if (pieces.Ok())
         {
             said += pieces.pieces.size() == 1 ? ", convex"
@@ -523,23 +523,23 @@ void Panels::DrawingStatus()
         }
         else
         {
-            said += "; closed now, the " + DescribeDecomposeError(pieces, drawn_);
+            said += "; closed now, the " + DescribeDecomposeError(pieces, m_drawn);
         }
     }
-    app_.SetStatus(said, false);
+    m_app.SetStatus(said, false);
 }
 
 void Panels::FinishDrawing()
 {
-    if (drawn_.size() < 3)
+    if (m_drawn.size() < 3)
     {
-        app_.SetStatus("A polygon needs at least three vertices: click on", true);
+        m_app.SetStatus("A polygon needs at least three vertices: click on", true);
         return;
     }
-    if (app_.AddDrawnPolygon(drawn_))
+    if (m_app.AddDrawnPolygon(m_drawn))
     {
-        drawn_.clear();
-        tool_ = CanvasTool::Select;
+        m_drawn.clear();
+        m_tool = CanvasTool::Select;
     }
 }
 
@@ -547,7 +547,7 @@ void Panels::FinishDrawing()
 // being drawn.
 void Panels::ToolOverlay(ImDrawList* list, ImVec2 origin)
 {
-    const View& camera = app_.GetViewer().Camera();
+    const View& camera = m_app.GetViewer().Camera();
     auto at = [&](Vec2 world) {
         const ScreenPoint p = ToScreen(camera, world);
         return ImVec2(p.x + origin.x, p.y + origin.y);
@@ -555,11 +555,11 @@ void Panels::ToolOverlay(ImDrawList* list, ImVec2 origin)
     const ImU32 ink = IM_COL32(43, 43, 43, 255);
     const ImU32 cutInk = IM_COL32(213, 94, 0, 255);
     const ImGuiIO& io = ImGui::GetIO();
-    if (tool_ == CanvasTool::Draw && !drawn_.empty())
+    if (m_tool == CanvasTool::Draw && !m_drawn.empty())
     {
-        if (drawn_.size() >= 3)
+        if (m_drawn.size() >= 3)
         {
-            const Decomposition pieces = Decompose(drawn_, DecomposeMethod::Fast);
+            const Decomposition pieces = Decompose(m_drawn, DecomposeMethod::Fast);
             // Distinct fills for the pieces (colour-blind safe, light), their seams dashed.
             static const ImU32 fills[] = {IM_COL32(86, 180, 233, 70), IM_COL32(230, 159, 0, 70),
                                           IM_COL32(0, 158, 115, 70), IM_COL32(204, 121, 167, 70),
@@ -592,34 +592,34 @@ void Panels::ToolOverlay(ImDrawList* list, ImVec2 origin)
                 }
             }
         }
-        for (size_t i = 0; i + 1 < drawn_.size(); ++i)
+        for (size_t i = 0; i + 1 < m_drawn.size(); ++i)
         {
-            list->AddLine(at(drawn_[i]), at(drawn_[i + 1]), ink, 2.0f);
+            list->AddLine(at(m_drawn[i]), at(m_drawn[i + 1]), ink, 2.0f);
         }
         // The edge that follows the pointer, and the one that would close the polygon.
-        list->AddLine(at(drawn_.back()), io.MousePos, IM_COL32(43, 43, 43, 160), 1.0f);
-        if (drawn_.size() >= 2)
+        list->AddLine(at(m_drawn.back()), io.MousePos, IM_COL32(43, 43, 43, 160), 1.0f);
+        if (m_drawn.size() >= 2)
         {
-            list->AddLine(io.MousePos, at(drawn_.front()), IM_COL32(43, 43, 43, 90), 1.0f);
+            list->AddLine(io.MousePos, at(m_drawn.front()), IM_COL32(43, 43, 43, 90), 1.0f);
         }
-        for (size_t i = 0; i < drawn_.size(); ++i)
+        for (size_t i = 0; i < m_drawn.size(); ++i)
         {
-            const ImVec2 p = at(drawn_[i]);
+            const ImVec2 p = at(m_drawn[i]);
             list->AddRectFilled(ImVec2(p.x - 4.0f, p.y - 4.0f), ImVec2(p.x + 4.0f, p.y + 4.0f),
                                 IM_COL32(255, 255, 255, 255));
             list->AddRect(ImVec2(p.x - 4.0f, p.y - 4.0f), ImVec2(p.x + 4.0f, p.y + 4.0f), ink, 0.0f, 0, 1.5f);
         }
         // The first vertex closes the polygon: ringed once there are three.
-        if (drawn_.size() >= 3)
+        if (m_drawn.size() >= 3)
         {
-            list->AddCircle(at(drawn_.front()), kHandleRadius + 2.0f, ink, 0, 1.5f);
+            list->AddCircle(at(m_drawn.front()), kHandleRadius + 2.0f, ink, 0, 1.5f);
         }
     }
-    if (drag_ == DragKind::Cut)
+    if (m_drag == DragKind::Cut)
     {
-        list->AddLine(at(cutFrom_), at(cutTo_), cutInk, 2.5f);
-        list->AddCircleFilled(at(cutFrom_), 3.5f, cutInk);
-        list->AddCircleFilled(at(cutTo_), 3.5f, cutInk);
+        list->AddLine(at(m_cutFrom), at(m_cutTo), cutInk, 2.5f);
+        list->AddCircleFilled(at(m_cutFrom), 3.5f, cutInk);
+        list->AddCircleFilled(at(m_cutTo), 3.5f, cutInk);
     }
 }
 

@@ -24,7 +24,7 @@ std::string SceneContent(Scene scene)
 
 void Document::Measure()
 {
-    dirty_ = SceneContent(scene_) != savedContent_;
+    m_dirty = SceneContent(m_scene) != m_savedContent;
 }
 
 OpenResult Document::Open(const std::string& path, const std::string& bundledDir)
@@ -62,19 +62,19 @@ OpenResult Document::Open(const std::string& path, const std::string& bundledDir
             return opened;
         }
     }
-    scene_ = std::move(result.scene);
-    file_ = path;
+    m_scene = std::move(result.scene);
+    m_file = path;
     std::error_code code;
     const auto canonical = std::filesystem::weakly_canonical(path, code);
     const auto bundled = std::filesystem::weakly_canonical(bundledDir, code);
     // The bundled scenes' folder and its folders (tutorials/scenes/concave...).
     const std::filesystem::path within = canonical.lexically_relative(bundled);
-    readOnly_ = !bundledDir.empty() && !within.empty() && *within.begin() != "..";
-    savedContent_ = SceneContent(scene_);
-    dirty_ = false;
-    undo_.clear();
-    redo_.clear();
-    editOpen_ = false;
+    m_readOnly = !bundledDir.empty() && !within.empty() && *within.begin() != "..";
+    m_savedContent = SceneContent(m_scene);
+    m_dirty = false;
+    m_undo.clear();
+    m_redo.clear();
+    m_editOpen = false;
     opened.ok = true;
     return opened;
 }
@@ -85,84 +85,84 @@ bool Document::Save(Scene saved, const std::string& path, std::string& error)
     {
         return false;
     }
-    scene_ = std::move(saved);
-    file_ = path;
-    readOnly_ = false;
-    savedContent_ = SceneContent(scene_);
-    dirty_ = false;
+    m_scene = std::move(saved);
+    m_file = path;
+    m_readOnly = false;
+    m_savedContent = SceneContent(m_scene);
+    m_dirty = false;
     return true;
 }
 
 void Document::BeginEdit(const ViewChoices& choices)
 {
-    if (editOpen_)
+    if (m_editOpen)
     {
         return;
     }
-    editStart_ = {scene_, choices};
-    editOpen_ = true;
-    editTouched_ = false;
+    m_editStart = {m_scene, choices};
+    m_editOpen = true;
+    m_editTouched = false;
 }
 
 void Document::AddBody(Body body)
 {
-    editTouched_ = true;
-    scene_.bodies.push_back(std::move(body));
+    m_editTouched = true;
+    m_scene.bodies.push_back(std::move(body));
 }
 
 void Document::RemoveBody(size_t index)
 {
-    editTouched_ = true;
-    scene_.bodies.erase(scene_.bodies.begin() + static_cast<std::ptrdiff_t>(index));
+    m_editTouched = true;
+    m_scene.bodies.erase(m_scene.bodies.begin() + static_cast<std::ptrdiff_t>(index));
 }
 
 bool Document::CommitEdit()
 {
-    if (!editOpen_)
+    if (!m_editOpen)
     {
         return false;
     }
-    editOpen_ = false;
-    if (SceneToJson(editStart_.scene) == SceneToJson(scene_))
+    m_editOpen = false;
+    if (SceneToJson(m_editStart.scene) == SceneToJson(m_scene))
     {
         return false; // a click without a change is not an edit
     }
-    undo_.push_back(std::move(editStart_));
-    redo_.clear();
+    m_undo.push_back(std::move(m_editStart));
+    m_redo.clear();
     Measure(); // a drag back to where the file has the body is no change
     return true;
 }
 
 void Document::RecordChoices(const ViewChoices& before)
 {
-    undo_.push_back({scene_, before});
-    redo_.clear();
+    m_undo.push_back({m_scene, before});
+    m_redo.clear();
 }
 
 bool Document::Undo(ViewChoices& choices)
 {
-    if (undo_.empty() || editOpen_)
+    if (m_undo.empty() || m_editOpen)
     {
         return false;
     }
-    redo_.push_back({std::move(scene_), choices});
-    scene_ = std::move(undo_.back().scene);
-    choices = std::move(undo_.back().choices);
-    undo_.pop_back();
+    m_redo.push_back({std::move(m_scene), choices});
+    m_scene = std::move(m_undo.back().scene);
+    choices = std::move(m_undo.back().choices);
+    m_undo.pop_back();
     Measure();
     return true;
 }
 
 bool Document::Redo(ViewChoices& choices)
 {
-    if (redo_.empty() || editOpen_)
+    if (m_redo.empty() || m_editOpen)
     {
         return false;
     }
-    undo_.push_back({std::move(scene_), choices});
-    scene_ = std::move(redo_.back().scene);
-    choices = std::move(redo_.back().choices);
-    redo_.pop_back();
+    m_undo.push_back({std::move(m_scene), choices});
+    m_scene = std::move(m_redo.back().scene);
+    choices = std::move(m_redo.back().choices);
+    m_redo.pop_back();
     Measure();
     return true;
 }

@@ -37,27 +37,27 @@ class Document
     bool Save(Scene saved, const std::string& path, std::string& error);
 
     /// The scene being edited.
-    const Scene& GetScene() const { return scene_; }
+    const Scene& GetScene() const { return m_scene; }
     /// Its file; empty for a scene not read from a file.
-    const std::string& File() const { return file_; }
+    const std::string& File() const { return m_file; }
     /// True for a bundled scene: saving asks for another file.
-    bool ReadOnly() const { return readOnly_; }
+    bool ReadOnly() const { return m_readOnly; }
     /// True when the scene differs from its file: its bodies, description or world, measured against the scene as
     /// it was opened or last saved (undoing back to it is no change). The view block (pair, query, layers,
     /// camera, step...) is how the scene is looked at, not a change of it. During an edit, true once the edit has
     /// touched a body.
-    bool Dirty() const { return dirty_ || (editOpen_ && editTouched_); }
+    bool Dirty() const { return m_dirty || (m_editOpen && m_editTouched); }
 
     /// Starts an edit of the bodies (a drag, a number being dragged): the scene now and the viewer's `choices` are
     /// kept until CommitEdit, so that the whole edit is undone in one step. Does nothing while an edit is open.
     void BeginEdit(const ViewChoices& choices);
     /// True between BeginEdit and CommitEdit.
-    bool EditOpen() const { return editOpen_; }
+    bool EditOpen() const { return m_editOpen; }
     /// Body `index`, to change in place while an edit is open.
     Body& EditBody(size_t index)
     {
-        editTouched_ = true;
-        return scene_.bodies[index];
+        m_editTouched = true;
+        return m_scene.bodies[index];
     }
     /// Adds `body` after the others, while an edit is open.
     void AddBody(Body body);
@@ -76,9 +76,9 @@ class Document
     /// Redoes the last undone edit, as Undo does. False when there is nothing to redo or an edit is open.
     bool Redo(ViewChoices& choices);
     /// Number of edits that can be undone.
-    size_t UndoDepth() const { return undo_.size(); }
+    size_t UndoDepth() const { return m_undo.size(); }
     /// Number of undone edits that can be redone.
-    size_t RedoDepth() const { return redo_.size(); }
+    size_t RedoDepth() const { return m_redo.size(); }
 
   private:
     /// One state of the history: the scene and the viewer's choices of that moment.
@@ -88,19 +88,19 @@ class Document
         ViewChoices choices;
     };
 
-    // Measures dirty_: the scene against savedContent_.
+    // Measures m_dirty: the scene against m_savedContent.
     void Measure();
 
-    Scene scene_;
-    std::string file_;
-    bool readOnly_ = false;
-    std::string savedContent_; // the scene as opened or last saved, without its view block (SceneContent)
-    bool dirty_ = false;
-    bool editTouched_ = false;
-    std::vector<State> undo_;
-    std::vector<State> redo_;
-    bool editOpen_ = false;
-    State editStart_;
+    Scene m_scene;
+    std::string m_file;
+    bool m_readOnly = false;
+    std::string m_savedContent; // the scene as opened or last saved, without its view block (SceneContent)
+    bool m_dirty = false;
+    bool m_editTouched = false;
+    std::vector<State> m_undo;
+    std::vector<State> m_redo;
+    bool m_editOpen = false;
+    State m_editStart;
 };
 
 } // namespace satviz

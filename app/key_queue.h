@@ -26,18 +26,18 @@ class KeyQueue
 {
   public:
     /// Adds an event as it arrives.
-    void Push(const KeyEvent& event) { events_.push_back(event); }
+    void Push(const KeyEvent& event) { m_events.push_back(event); }
     /// True while events wait for a frame.
-    bool Waiting() const { return !events_.empty(); }
+    bool Waiting() const { return !m_events.empty(); }
     /// Hands `deliver` the events of this frame, in order, and keeps the rest.
     template <typename Deliver>
     void TakeFrame(Deliver&& deliver)
     {
         bool pressed = false;
         size_t taken = 0;
-        for (; taken < events_.size(); ++taken)
+        for (; taken < m_events.size(); ++taken)
         {
-            const KeyEvent& event = events_[taken];
+            const KeyEvent& event = m_events[taken];
             if (!event.press && pressed)
             {
                 break;
@@ -45,11 +45,11 @@ class KeyQueue
             pressed = pressed || event.press;
             deliver(event);
         }
-        events_.erase(events_.begin(), events_.begin() + static_cast<std::ptrdiff_t>(taken));
+        m_events.erase(m_events.begin(), m_events.begin() + static_cast<std::ptrdiff_t>(taken));
     }
 
   private:
-    std::vector<KeyEvent> events_;
+    std::vector<KeyEvent> m_events;
 };
 
 } // namespace satviz

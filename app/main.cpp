@@ -53,62 +53,62 @@ class OffscreenTarget
   public:
     OffscreenTarget(int width, int height)
     {
-        genFramebuffers_ = reinterpret_cast<PFNGLGENFRAMEBUFFERSPROC>(glfwGetProcAddress("glGenFramebuffers"));
-        bindFramebuffer_ = reinterpret_cast<PFNGLBINDFRAMEBUFFERPROC>(glfwGetProcAddress("glBindFramebuffer"));
-        deleteFramebuffers_ = reinterpret_cast<PFNGLDELETEFRAMEBUFFERSPROC>(glfwGetProcAddress("glDeleteFramebuffers"));
-        genRenderbuffers_ = reinterpret_cast<PFNGLGENRENDERBUFFERSPROC>(glfwGetProcAddress("glGenRenderbuffers"));
-        bindRenderbuffer_ = reinterpret_cast<PFNGLBINDRENDERBUFFERPROC>(glfwGetProcAddress("glBindRenderbuffer"));
-        deleteRenderbuffers_ =
+        m_genFramebuffers = reinterpret_cast<PFNGLGENFRAMEBUFFERSPROC>(glfwGetProcAddress("glGenFramebuffers"));
+        m_bindFramebuffer = reinterpret_cast<PFNGLBINDFRAMEBUFFERPROC>(glfwGetProcAddress("glBindFramebuffer"));
+        m_deleteFramebuffers = reinterpret_cast<PFNGLDELETEFRAMEBUFFERSPROC>(glfwGetProcAddress("glDeleteFramebuffers"));
+        m_genRenderbuffers = reinterpret_cast<PFNGLGENRENDERBUFFERSPROC>(glfwGetProcAddress("glGenRenderbuffers"));
+        m_bindRenderbuffer = reinterpret_cast<PFNGLBINDRENDERBUFFERPROC>(glfwGetProcAddress("glBindRenderbuffer"));
+        m_deleteRenderbuffers =
             reinterpret_cast<PFNGLDELETERENDERBUFFERSPROC>(glfwGetProcAddress("glDeleteRenderbuffers"));
-        storage_ = reinterpret_cast<PFNGLRENDERBUFFERSTORAGEPROC>(glfwGetProcAddress("glRenderbufferStorage"));
-        attach_ = reinterpret_cast<PFNGLFRAMEBUFFERRENDERBUFFERPROC>(glfwGetProcAddress("glFramebufferRenderbuffer"));
-        status_ = reinterpret_cast<PFNGLCHECKFRAMEBUFFERSTATUSPROC>(glfwGetProcAddress("glCheckFramebufferStatus"));
-        if (!genFramebuffers_ || !bindFramebuffer_ || !deleteFramebuffers_ || !genRenderbuffers_ ||
-            !bindRenderbuffer_ || !deleteRenderbuffers_ || !storage_ || !attach_ || !status_)
+        m_storage = reinterpret_cast<PFNGLRENDERBUFFERSTORAGEPROC>(glfwGetProcAddress("glRenderbufferStorage"));
+        m_attach = reinterpret_cast<PFNGLFRAMEBUFFERRENDERBUFFERPROC>(glfwGetProcAddress("glFramebufferRenderbuffer"));
+        m_status = reinterpret_cast<PFNGLCHECKFRAMEBUFFERSTATUSPROC>(glfwGetProcAddress("glCheckFramebufferStatus"));
+        if (!m_genFramebuffers || !m_bindFramebuffer || !m_deleteFramebuffers || !m_genRenderbuffers ||
+            !m_bindRenderbuffer || !m_deleteRenderbuffers || !m_storage || !m_attach || !m_status)
         {
             return;
         }
-        genFramebuffers_(1, &framebuffer_);
-        genRenderbuffers_(1, &renderbuffer_);
-        bindRenderbuffer_(GL_RENDERBUFFER, renderbuffer_);
-        storage_(GL_RENDERBUFFER, GL_RGBA8, width, height);
-        bindFramebuffer_(GL_FRAMEBUFFER, framebuffer_);
-        attach_(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffer_);
-        ready_ = status_(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+        m_genFramebuffers(1, &m_framebuffer);
+        m_genRenderbuffers(1, &m_renderbuffer);
+        m_bindRenderbuffer(GL_RENDERBUFFER, m_renderbuffer);
+        m_storage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+        m_bindFramebuffer(GL_FRAMEBUFFER, m_framebuffer);
+        m_attach(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_renderbuffer);
+        m_ready = m_status(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
     }
     ~OffscreenTarget()
     {
-        if (bindFramebuffer_ != nullptr)
+        if (m_bindFramebuffer != nullptr)
         {
-            bindFramebuffer_(GL_FRAMEBUFFER, 0);
+            m_bindFramebuffer(GL_FRAMEBUFFER, 0);
         }
-        if (framebuffer_ != 0)
+        if (m_framebuffer != 0)
         {
-            deleteFramebuffers_(1, &framebuffer_);
+            m_deleteFramebuffers(1, &m_framebuffer);
         }
-        if (renderbuffer_ != 0)
+        if (m_renderbuffer != 0)
         {
-            deleteRenderbuffers_(1, &renderbuffer_);
+            m_deleteRenderbuffers(1, &m_renderbuffer);
         }
     }
     OffscreenTarget(const OffscreenTarget&) = delete;
     OffscreenTarget& operator=(const OffscreenTarget&) = delete;
     /// True when the buffer is bound and complete.
-    bool Ready() const { return ready_; }
+    bool Ready() const { return m_ready; }
 
   private:
-    PFNGLGENFRAMEBUFFERSPROC genFramebuffers_ = nullptr;
-    PFNGLBINDFRAMEBUFFERPROC bindFramebuffer_ = nullptr;
-    PFNGLDELETEFRAMEBUFFERSPROC deleteFramebuffers_ = nullptr;
-    PFNGLGENRENDERBUFFERSPROC genRenderbuffers_ = nullptr;
-    PFNGLBINDRENDERBUFFERPROC bindRenderbuffer_ = nullptr;
-    PFNGLDELETERENDERBUFFERSPROC deleteRenderbuffers_ = nullptr;
-    PFNGLRENDERBUFFERSTORAGEPROC storage_ = nullptr;
-    PFNGLFRAMEBUFFERRENDERBUFFERPROC attach_ = nullptr;
-    PFNGLCHECKFRAMEBUFFERSTATUSPROC status_ = nullptr;
-    GLuint framebuffer_ = 0;
-    GLuint renderbuffer_ = 0;
-    bool ready_ = false;
+    PFNGLGENFRAMEBUFFERSPROC m_genFramebuffers = nullptr;
+    PFNGLBINDFRAMEBUFFERPROC m_bindFramebuffer = nullptr;
+    PFNGLDELETEFRAMEBUFFERSPROC m_deleteFramebuffers = nullptr;
+    PFNGLGENRENDERBUFFERSPROC m_genRenderbuffers = nullptr;
+    PFNGLBINDRENDERBUFFERPROC m_bindRenderbuffer = nullptr;
+    PFNGLDELETERENDERBUFFERSPROC m_deleteRenderbuffers = nullptr;
+    PFNGLRENDERBUFFERSTORAGEPROC m_storage = nullptr;
+    PFNGLFRAMEBUFFERRENDERBUFFERPROC m_attach = nullptr;
+    PFNGLCHECKFRAMEBUFFERSTATUSPROC m_status = nullptr;
+    GLuint m_framebuffer = 0;
+    GLuint m_renderbuffer = 0;
+    bool m_ready = false;
 };
 
 // The fallback export without satviz-render: draws the figure into an offscreen buffer of this window's OpenGL
@@ -193,48 +193,48 @@ class WindowInput
     /// Installs, before ImGui's backend chains its own callbacks to them, the callbacks that only note input.
     static void InstallBeforeBackend(GLFWwindow* window)
     {
-        glfwSetMouseButtonCallback(window, [](GLFWwindow*, int, int, int) { events_ = true; });
-        glfwSetScrollCallback(window, [](GLFWwindow*, double, double) { events_ = true; });
-        glfwSetCharCallback(window, [](GLFWwindow*, unsigned int) { events_ = true; });
-        glfwSetWindowFocusCallback(window, [](GLFWwindow*, int) { events_ = true; });
-        glfwSetCursorEnterCallback(window, [](GLFWwindow*, int) { events_ = true; });
+        glfwSetMouseButtonCallback(window, [](GLFWwindow*, int, int, int) { m_events = true; });
+        glfwSetScrollCallback(window, [](GLFWwindow*, double, double) { m_events = true; });
+        glfwSetCharCallback(window, [](GLFWwindow*, unsigned int) { m_events = true; });
+        glfwSetWindowFocusCallback(window, [](GLFWwindow*, int) { m_events = true; });
+        glfwSetCursorEnterCallback(window, [](GLFWwindow*, int) { m_events = true; });
     }
     /// Installs the other callbacks on `window`, after ImGui's backend: the key callback replaces the backend's,
     /// which is handed the keys from the queue; the others only note that something happened.
     static void Install(GLFWwindow* window)
     {
         glfwSetKeyCallback(window, [](GLFWwindow*, int key, int scancode, int action, int mods) {
-            events_ = true;
+            m_events = true;
             if (action != GLFW_REPEAT) // ImGui 1.86 makes its own repeats from the time a key is down
             {
-                keys_.Push({key, scancode, action == GLFW_PRESS, mods});
+                m_keys.Push({key, scancode, action == GLFW_PRESS, mods});
             }
         });
-        glfwSetCursorPosCallback(window, [](GLFWwindow*, double, double) { events_ = true; });
-        glfwSetWindowSizeCallback(window, [](GLFWwindow*, int, int) { events_ = true; });
-        glfwSetWindowRefreshCallback(window, [](GLFWwindow*) { events_ = true; });
+        glfwSetCursorPosCallback(window, [](GLFWwindow*, double, double) { m_events = true; });
+        glfwSetWindowSizeCallback(window, [](GLFWwindow*, int, int) { m_events = true; });
+        glfwSetWindowRefreshCallback(window, [](GLFWwindow*) { m_events = true; });
     }
     /// Hands ImGui's backend the key events of this frame.
     static void DeliverKeys(GLFWwindow* window)
     {
-        keys_.TakeFrame([window](const satviz::KeyEvent& event) {
+        m_keys.TakeFrame([window](const satviz::KeyEvent& event) {
             ImGui_ImplGlfw_KeyCallback(window, event.key, event.scancode, event.press ? GLFW_PRESS : GLFW_RELEASE,
                                        event.mods);
         });
     }
     /// True while key events wait for a frame.
-    static bool KeysWaiting() { return keys_.Waiting(); }
+    static bool KeysWaiting() { return m_keys.Waiting(); }
     /// True, once, when input arrived since the last call.
     static bool TakeEvents()
     {
-        const bool events = events_;
-        events_ = false;
+        const bool events = m_events;
+        m_events = false;
         return events;
     }
 
   private:
-    static inline satviz::KeyQueue keys_;
-    static inline bool events_ = false;
+    static inline satviz::KeyQueue m_keys;
+    static inline bool m_events = false;
 };
 
 /// The directory of this program's file, from /proc/self/exe; empty where that cannot be read.

@@ -126,11 +126,11 @@ void Panels::Draw()
     CanvasWindow();
     SidePanel();
     StatusBar();
-    if (showHelp_)
+    if (m_showHelp)
     {
         HelpOverlay();
     }
-    if (app_.LessonShown())
+    if (m_app.LessonShown())
     {
         LessonWindow();
     }
@@ -149,12 +149,12 @@ void Panels::Announce(const std::string& what)
     const ImVec2 low = ImGui::GetItemRectMin();
     const ImVec2 high = ImGui::GetItemRectMax();
     const ImVec2 center((low.x + high.x) * 0.5f, (low.y + high.y) * 0.5f);
-    const auto seen = announceAt_.find(what);
-    const bool still = seen != announceAt_.end() && seen->second.x == center.x && seen->second.y == center.y;
-    announceAt_[what] = center;
-    if (still && !announced_[what])
+    const auto seen = m_announceAt.find(what);
+    const bool still = seen != m_announceAt.end() && seen->second.x == center.x && seen->second.y == center.y;
+    m_announceAt[what] = center;
+    if (still && !m_announced[what])
     {
-        announced_[what] = true;
+        m_announced[what] = true;
         std::printf("satviz: %s at %.0f,%.0f\n", what.c_str(), center.x, center.y);
         std::fflush(stdout);
     }
@@ -163,14 +163,14 @@ void Panels::Announce(const std::string& what)
 // Saves to the scene's file, or asks for one when it has none or is a bundled scene.
 void Panels::SaveOrAsk()
 {
-    const Document& document = app_.GetDocument();
+    const Document& document = m_app.GetDocument();
     if (document.File().empty() || document.ReadOnly())
     {
-        askSaveAs_ = true;
+        m_askSaveAs = true;
     }
     else
     {
-        app_.Save(document.File());
+        m_app.Save(document.File());
     }
 }
 
@@ -178,38 +178,38 @@ void Panels::SaveOrAsk()
 // Viewer::NextStep), Play, Verdict, and a slider showing `name`.
 void Panels::StepRow(const std::string& name)
 {
-    const Viewer& viewer = app_.GetViewer();
+    const Viewer& viewer = m_app.GetViewer();
     const int step = viewer.Step();
     const int last = viewer.VerdictStep();
     ImGui::BeginDisabled(step <= 0);
     if (ImGui::ArrowButton("##previous", ImGuiDir_Left))
     {
-        app_.ShowStep(viewer.NextStep(step, -1));
+        m_app.ShowStep(viewer.NextStep(step, -1));
     }
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::BeginDisabled(step >= last);
     if (ImGui::ArrowButton("##next", ImGuiDir_Right))
     {
-        app_.ShowStep(viewer.NextStep(step, 1));
+        m_app.ShowStep(viewer.NextStep(step, 1));
     }
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button(viewer.Playing() ? "Pause" : "Play"))
     {
-        app_.TogglePlay();
+        m_app.TogglePlay();
     }
     ImGui::SameLine();
     if (ImGui::Button("Verdict"))
     {
-        app_.ShowStep(last);
+        m_app.ShowStep(last);
     }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     int shown = step;
     if (ImGui::SliderInt("##step", &shown, 0, last, name.c_str()) && shown != step)
     {
-        app_.ShowStep(shown);
+        m_app.ShowStep(shown);
     }
 }
 
@@ -228,21 +228,21 @@ void Panels::Shortcuts()
     {
         return;
     }
-    const AppKeys& k = app_.Options().keys;
+    const AppKeys& k = m_app.Options().keys;
     if (Ctrl())
     {
         if (PressedNamed(ImGuiKey_Z))
         {
-            if (!app_.Undo())
+            if (!m_app.Undo())
             {
-                app_.SetStatus("Nothing to undo", false);
+                m_app.SetStatus("Nothing to undo", false);
             }
         }
         if (PressedNamed(ImGuiKey_Y))
         {
-            if (!app_.Redo())
+            if (!m_app.Redo())
             {
-                app_.SetStatus("Nothing to redo", false);
+                m_app.SetStatus("Nothing to redo", false);
             }
         }
         if (Pressed(k.s))
@@ -251,72 +251,72 @@ void Panels::Shortcuts()
         }
         if (Pressed(k.o))
         {
-            askOpen_ = true;
+            m_askOpen = true;
         }
         if (Pressed(k.e))
         {
-            app_.RequestExport();
+            m_app.RequestExport();
         }
         if (Pressed(k.q))
         {
-            app_.RequestQuit();
+            m_app.RequestQuit();
         }
         return;
     }
     if (Pressed(k.p))
     {
-        app_.SimPlay(!app_.GetSimulation().Playing());
+        m_app.SimPlay(!m_app.GetSimulation().Playing());
     }
     if (Pressed(k.period))
     {
-        app_.SimForward();
+        m_app.SimForward();
     }
     if (Pressed(k.comma))
     {
-        app_.SimBack();
+        m_app.SimBack();
     }
-    const Viewer& viewer = app_.GetViewer();
+    const Viewer& viewer = m_app.GetViewer();
     if (PressedNamed(ImGuiKey_Space))
     {
-        app_.TogglePlay();
+        m_app.TogglePlay();
     }
     // The arrows pass over the faces a sweep decided without evaluating them (PairStudy::NextStep).
     if (PressedNamed(ImGuiKey_RightArrow) && viewer.Step() < viewer.VerdictStep())
     {
-        app_.ShowStep(viewer.NextStep(viewer.Step(), 1));
+        m_app.ShowStep(viewer.NextStep(viewer.Step(), 1));
     }
     if (PressedNamed(ImGuiKey_LeftArrow) && viewer.Step() > 0)
     {
-        app_.ShowStep(viewer.NextStep(viewer.Step(), -1));
+        m_app.ShowStep(viewer.NextStep(viewer.Step(), -1));
     }
     if (PressedNamed(ImGuiKey_Delete))
     {
-        app_.DeleteSelected();
+        m_app.DeleteSelected();
     }
     if (Pressed(k.f1))
     {
-        showHelp_ = !showHelp_;
+        m_showHelp = !m_showHelp;
     }
     if (Pressed(k.f))
     {
-        app_.FitCamera();
+        m_app.FitCamera();
     }
     if (Pressed(k.d))
     {
-        SetTool(tool_ == CanvasTool::Draw ? CanvasTool::Select : CanvasTool::Draw);
+        SetTool(m_tool == CanvasTool::Draw ? CanvasTool::Select : CanvasTool::Draw);
     }
     if (Pressed(k.x))
     {
-        SetTool(tool_ == CanvasTool::Cut ? CanvasTool::Select : CanvasTool::Cut);
+        SetTool(m_tool == CanvasTool::Cut ? CanvasTool::Select : CanvasTool::Cut);
     }
-    if (tool_ == CanvasTool::Draw && PressedNamed(ImGuiKey_Enter))
+    if (m_tool == CanvasTool::Draw && PressedNamed(ImGuiKey_Enter))
     {
         FinishDrawing();
     }
     if (PressedNamed(ImGuiKey_Escape))
     {
-        showHelp_ = false;
-        if (tool_ != CanvasTool::Select)
+        m_showHelp = false;
+        if (m_tool != CanvasTool::Select)
         {
             SetTool(CanvasTool::Select);
         }
@@ -335,27 +335,27 @@ void Panels::MenuBar()
     {
         if (ImGui::MenuItem("Open...", "Ctrl+O"))
         {
-            askOpen_ = true;
+            m_askOpen = true;
         }
         if (ImGui::BeginMenu("Bundled scenes"))
         {
-            for (const std::string& path : app_.BundledScenes())
+            for (const std::string& path : m_app.BundledScenes())
             {
                 if (ImGui::MenuItem(std::filesystem::path(path).stem().string().c_str()))
                 {
-                    app_.RequestOpen(path);
+                    m_app.RequestOpen(path);
                 }
             }
             ImGui::EndMenu();
         }
-        if (ImGui::BeginMenu("Recent", !app_.Recent().empty()))
+        if (ImGui::BeginMenu("Recent", !m_app.Recent().empty()))
         {
             // A copy: opening a file reorders the list.
-            for (const std::string& path : std::vector<std::string>(app_.Recent()))
+            for (const std::string& path : std::vector<std::string>(m_app.Recent()))
             {
                 if (ImGui::MenuItem(path.c_str()))
                 {
-                    app_.RequestOpen(path);
+                    m_app.RequestOpen(path);
                 }
             }
             ImGui::EndMenu();
@@ -367,64 +367,64 @@ void Panels::MenuBar()
         }
         if (ImGui::MenuItem("Save as..."))
         {
-            askSaveAs_ = true;
+            m_askSaveAs = true;
         }
         if (ImGui::MenuItem("Export PNG", "Ctrl+E"))
         {
-            app_.RequestExport();
+            m_app.RequestExport();
         }
         ImGui::Separator();
         if (ImGui::MenuItem("Quit", "Ctrl+Q"))
         {
-            app_.RequestQuit();
+            m_app.RequestQuit();
         }
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit"))
     {
-        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, app_.GetDocument().UndoDepth() > 0))
+        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, m_app.GetDocument().UndoDepth() > 0))
         {
-            app_.Undo();
+            m_app.Undo();
         }
-        if (ImGui::MenuItem("Redo", "Ctrl+Y", false, app_.GetDocument().RedoDepth() > 0))
+        if (ImGui::MenuItem("Redo", "Ctrl+Y", false, m_app.GetDocument().RedoDepth() > 0))
         {
-            app_.Redo();
+            m_app.Redo();
         }
         ImGui::Separator();
         if (ImGui::MenuItem("Add box"))
         {
-            app_.AddBody(MakeShape(MakeBox(0.5, 0.5).polygon), "box");
+            m_app.AddBody(MakeShape(MakeBox(0.5, 0.5).polygon), "box");
         }
         if (ImGui::MenuItem("Add triangle"))
         {
-            app_.AddBody(MakeShape(MakeRegularPolygon(3, 0.6).polygon), "triangle");
+            m_app.AddBody(MakeShape(MakeRegularPolygon(3, 0.6).polygon), "triangle");
         }
         if (ImGui::MenuItem("Add regular polygon"))
         {
-            app_.AddBody(MakeShape(MakeRegularPolygon(newSides_, 0.6).polygon), "polygon");
+            m_app.AddBody(MakeShape(MakeRegularPolygon(m_newSides, 0.6).polygon), "polygon");
         }
         ImGui::SetNextItemWidth(120.0f);
-        if (ImGui::InputInt("sides", &newSides_))
+        if (ImGui::InputInt("sides", &m_newSides))
         {
-            newSides_ = std::clamp(newSides_, 3, 4096);
+            m_newSides = std::clamp(m_newSides, 3, 4096);
         }
         if (ImGui::MenuItem("Add circle"))
         {
-            app_.AddBody(MakeShape(Circle{{0.0, 0.0}, 0.5}), "circle");
+            m_app.AddBody(MakeShape(Circle{{0.0, 0.0}, 0.5}), "circle");
         }
         ImGui::Separator();
-        if (ImGui::MenuItem("Draw a polygon", "D", tool_ == CanvasTool::Draw))
+        if (ImGui::MenuItem("Draw a polygon", "D", m_tool == CanvasTool::Draw))
         {
-            SetTool(tool_ == CanvasTool::Draw ? CanvasTool::Select : CanvasTool::Draw);
+            SetTool(m_tool == CanvasTool::Draw ? CanvasTool::Select : CanvasTool::Draw);
         }
-        if (ImGui::MenuItem("Cut", "X", tool_ == CanvasTool::Cut))
+        if (ImGui::MenuItem("Cut", "X", m_tool == CanvasTool::Cut))
         {
-            SetTool(tool_ == CanvasTool::Cut ? CanvasTool::Select : CanvasTool::Cut);
+            SetTool(m_tool == CanvasTool::Cut ? CanvasTool::Select : CanvasTool::Cut);
         }
         ImGui::Separator();
-        if (ImGui::MenuItem("Delete selected", "Del", false, app_.Selected() >= 0))
+        if (ImGui::MenuItem("Delete selected", "Del", false, m_app.Selected() >= 0))
         {
-            app_.DeleteSelected();
+            m_app.DeleteSelected();
         }
         ImGui::EndMenu();
     }
@@ -432,17 +432,17 @@ void Panels::MenuBar()
     {
         if (ImGui::MenuItem("Fit the pair", "F"))
         {
-            app_.FitCamera();
+            m_app.FitCamera();
         }
         ImGui::Separator();
         LayerToggles();
         ImGui::Separator();
-        ImGui::MenuItem("Help", "F1", &showHelp_);
+        ImGui::MenuItem("Help", "F1", &m_showHelp);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Help"))
     {
-        ImGui::MenuItem("Controls and conventions", "F1", &showHelp_);
+        ImGui::MenuItem("Controls and conventions", "F1", &m_showHelp);
         LessonsMenu();
         ImGui::EndMenu();
     }
@@ -455,7 +455,7 @@ void Panels::MenuBar()
 
 void Panels::LessonsMenu()
 {
-    const std::vector<Lesson>& lessons = app_.Lessons();
+    const std::vector<Lesson>& lessons = m_app.Lessons();
     if (!ImGui::BeginMenu("Lessons", !lessons.empty()))
     {
         Announce("menu Help > Lessons");
@@ -464,11 +464,11 @@ void Panels::LessonsMenu()
     for (size_t i = 0; i < lessons.size(); ++i)
     {
         const bool chosen = ImGui::MenuItem(lessons[i].title.c_str(), nullptr,
-                                            static_cast<int>(i) == app_.CurrentLesson() && app_.LessonShown());
+                                            static_cast<int>(i) == m_app.CurrentLesson() && m_app.LessonShown());
         Announce("menu Help > Lessons > " + std::to_string(i + 1));
         if (chosen)
         {
-            app_.OpenLesson(static_cast<int>(i));
+            m_app.OpenLesson(static_cast<int>(i));
         }
     }
     ImGui::EndMenu();
@@ -477,13 +477,13 @@ void Panels::LessonsMenu()
 // One switch per row of the layer table, with its description as the tooltip.
 void Panels::LayerToggles()
 {
-    const LayerMask layers = app_.GetViewer().Choices().layers;
+    const LayerMask layers = m_app.GetViewer().Choices().layers;
     for (const LayerInfo& layer : kLayerTable)
     {
         bool on = (layers & layer.bit) != 0;
         if (ImGui::Checkbox(std::string(layer.name).c_str(), &on))
         {
-            app_.SetLayers(on ? (layers | layer.bit) : (layers & ~layer.bit));
+            m_app.SetLayers(on ? (layers | layer.bit) : (layers & ~layer.bit));
         }
         if (ImGui::IsItemHovered())
         {
@@ -496,13 +496,13 @@ void Panels::LayerToggles()
 
 ImGuiWindowFlags Panels::ClearedBackground() const
 {
-    return app_.Options().clearRect != nullptr ? ImGuiWindowFlags_NoBackground : ImGuiWindowFlags_None;
+    return m_app.Options().clearRect != nullptr ? ImGuiWindowFlags_NoBackground : ImGuiWindowFlags_None;
 }
 
 // The window's background, opaque, filled by clearing (AppOptions::clearRect) as its first drawing.
 void Panels::ClearBackground()
 {
-    if (app_.Options().clearRect == nullptr)
+    if (m_app.Options().clearRect == nullptr)
     {
         return;
     }
@@ -515,7 +515,7 @@ void Panels::ClearBackground()
     const ImVec2 min = ImGui::GetWindowPos();
     const ImVec2 size = ImGui::GetWindowSize();
     list->PushClipRect(min, ImVec2(min.x + size.x, min.y + size.y), true);
-    list->AddCallback(app_.Options().clearRect, reinterpret_cast<void*>(static_cast<uintptr_t>(color)));
+    list->AddCallback(m_app.Options().clearRect, reinterpret_cast<void*>(static_cast<uintptr_t>(color)));
     list->PopClipRect();
 }
 
@@ -529,7 +529,7 @@ void Panels::SidePanel()
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus | ClearedBackground());
     ClearBackground();
-    const Document& document = app_.GetDocument();
+    const Document& document = m_app.GetDocument();
     const std::string title = (document.File().empty() ? std::string("untitled")
                                                        : std::filesystem::path(document.File()).filename().string()) +
                               (document.Dirty() ? " (modified)" : "");
@@ -540,17 +540,17 @@ void Panels::SidePanel()
     }
     ImGui::Separator();
     SimulationControls();
-    if (app_.GetViewer().TestsPair())
+    if (m_app.GetViewer().TestsPair())
     {
         StepControls();
-        if (app_.GetViewer().CurrentFigure().kind != FigureKind::Pieces)
+        if (m_app.GetViewer().CurrentFigure().kind != FigureKind::Pieces)
         {
             Inspector();
         }
     }
-    else if (app_.GetViewer().Setup().Ok())
+    else if (m_app.GetViewer().Setup().Ok())
     {
-        WrappedText("This figure, \"" + std::string(FigureKindName(app_.GetViewer().CurrentFigure().kind)) +
+        WrappedText("This figure, \"" + std::string(FigureKindName(m_app.GetViewer().CurrentFigure().kind)) +
                     "\", draws one body by itself: no pair is tested, so there are no steps to follow.");
     }
     if (ImGui::CollapsingHeader("Layers"))
@@ -562,7 +562,7 @@ void Panels::SidePanel()
 
 void Panels::StepControls()
 {
-    const Viewer& viewer = app_.GetViewer();
+    const Viewer& viewer = m_app.GetViewer();
     const PairStudy& study = viewer.Setup().study;
     const Scene& studied = viewer.Studied();
     const ViewChoices& choices = viewer.Choices();
@@ -593,7 +593,7 @@ void Panels::StepControls()
                 {
                     const std::string& picked = studied.bodies[i].name;
                     const std::string& kept = studied.bodies[static_cast<size_t>(other)].name;
-                    app_.SetPair(s == 0 ? picked : kept, s == 0 ? kept : picked);
+                    m_app.SetPair(s == 0 ? picked : kept, s == 0 ? kept : picked);
                 }
             }
             ImGui::EndCombo();
@@ -623,14 +623,14 @@ void Panels::StepControls()
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::Combo("##query", &query, queries, 3))
     {
-        app_.SetQuery(static_cast<ViewQuery>(query));
+        m_app.SetQuery(static_cast<ViewQuery>(query));
     }
     int steps = choices.steps == StepView::Faces ? 1 : 0;
     const char* views[] = {"textbook SAT: both intervals per axis", "face tests, as the fast path runs them"};
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::Combo("##steps", &steps, views, 2))
     {
-        app_.SetStepView(steps == 1 ? StepView::Faces : StepView::Textbook);
+        m_app.SetStepView(steps == 1 ? StepView::Faces : StepView::Textbook);
     }
     if (ImGui::IsItemHovered())
     {
@@ -650,7 +650,7 @@ void Panels::StepControls()
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::Combo("##pitfall", &pitfall, pitfalls, static_cast<int>(std::size(pitfalls))))
     {
-        app_.SetPitfall(static_cast<Pitfall>(pitfall));
+        m_app.SetPitfall(static_cast<Pitfall>(pitfall));
     }
     if (ImGui::IsItemHovered())
     {
@@ -702,7 +702,7 @@ void Panels::StepControls()
                 }
                 if (ImGui::Selectable(StepTitle(studied, study, k).c_str(), k == viewer.Step()))
                 {
-                    app_.ShowStep(k);
+                    m_app.ShowStep(k);
                 }
                 if (decided)
                 {
@@ -718,7 +718,7 @@ void Panels::StepControls()
         bool showTime = viewer.Time() >= 0.0;
         if (ImGui::Checkbox("bodies at time", &showTime))
         {
-            app_.SetTime(showTime ? 0.5 : -1.0);
+            m_app.SetTime(showTime ? 0.5 : -1.0);
         }
         ImGui::SameLine();
         float t = static_cast<float>(std::max(viewer.Time(), 0.0));
@@ -726,7 +726,7 @@ void Panels::StepControls()
         ImGui::BeginDisabled(!showTime);
         if (ImGui::SliderFloat("##time", &t, 0.0f, 1.0f, "t = %.3f"))
         {
-            app_.SetTime(t);
+            m_app.SetTime(t);
         }
         ImGui::EndDisabled();
     }
@@ -738,11 +738,11 @@ void Panels::Inspector()
     {
         return;
     }
-    const Viewer& viewer = app_.GetViewer();
+    const Viewer& viewer = m_app.GetViewer();
     bool single = viewer.Choices().singlePrecision;
     if (ImGui::Checkbox("single precision (float)", &single))
     {
-        app_.SetPrecision(single);
+        m_app.SetPrecision(single);
     }
     HelpMarker("Runs the float instantiation of the queries on the shapes rounded to float: compare its numbers "
                "with double's to see what the precision costs.");
@@ -794,7 +794,7 @@ void Panels::Inspector()
     {
         WrappedText("Moving, but overlapping at t = 0: no time of impact; the static test at t = 0:");
     }
-    for (const NumberRow& row : StaticTestNumbers(app_.ShownScene(), study))
+    for (const NumberRow& row : StaticTestNumbers(m_app.ShownScene(), study))
     {
         NumberLine(row.label, row.parts);
     }
@@ -802,8 +802,8 @@ void Panels::Inspector()
     {
         ImGui::Unindent();
     }
-    const int selected = app_.Selected();
-    const std::vector<Body>& bodies = app_.ShownScene().bodies;
+    const int selected = m_app.Selected();
+    const std::vector<Body>& bodies = m_app.ShownScene().bodies;
     if (selected < 0 || selected >= static_cast<int>(bodies.size()))
     {
         return;
@@ -816,43 +816,43 @@ void Panels::Inspector()
     const bool moved = ImGui::DragScalarN("position", ImGuiDataType_Double, &position.x, 2, 0.01f);
     if (ImGui::IsItemActivated())
     {
-        app_.BeginEdit();
+        m_app.BeginEdit();
     }
     if (moved)
     {
-        app_.MoveBody(selected, position);
+        m_app.MoveBody(selected, position);
     }
     if (ImGui::IsItemDeactivated())
     {
-        app_.EndEdit();
+        m_app.EndEdit();
     }
     double angle = bodies[static_cast<size_t>(selected)].angle;
     const bool turned = ImGui::DragScalar("angle", ImGuiDataType_Double, &angle, 0.01f);
     if (ImGui::IsItemActivated())
     {
-        app_.BeginEdit();
+        m_app.BeginEdit();
     }
     if (turned)
     {
-        app_.TurnBody(selected, angle);
+        m_app.TurnBody(selected, angle);
     }
     if (ImGui::IsItemDeactivated())
     {
-        app_.EndEdit();
+        m_app.EndEdit();
     }
     Vec2 velocity = bodies[static_cast<size_t>(selected)].velocity;
     const bool launched = ImGui::DragScalarN("velocity", ImGuiDataType_Double, &velocity.x, 2, 0.01f);
     if (ImGui::IsItemActivated())
     {
-        app_.BeginEdit();
+        m_app.BeginEdit();
     }
     if (launched)
     {
-        app_.SetVelocity(selected, velocity);
+        m_app.SetVelocity(selected, velocity);
     }
     if (ImGui::IsItemDeactivated())
     {
-        app_.EndEdit();
+        m_app.EndEdit();
     }
     Materials(selected);
 }
@@ -861,7 +861,7 @@ void Panels::Inspector()
 // the moment it is grabbed to the moment it is let go, within the values a scene file accepts.
 void Panels::Materials(int selected)
 {
-    const Body& body = app_.ShownScene().bodies[static_cast<size_t>(selected)];
+    const Body& body = m_app.ShownScene().bodies[static_cast<size_t>(selected)];
     bool isStatic = body.isStatic;
     double density = body.density;
     Material material = body.material;
@@ -876,7 +876,7 @@ void Panels::Materials(int selected)
         }
         if (ImGui::IsItemActivated())
         {
-            app_.BeginEdit();
+            m_app.BeginEdit();
         }
         changed = changed || moved;
         return ImGui::IsItemDeactivated();
@@ -902,11 +902,11 @@ void Panels::Materials(int selected)
             ended;
     if (changed)
     {
-        app_.SetMaterial(selected, isStatic, density, material);
+        m_app.SetMaterial(selected, isStatic, density, material);
     }
     if (ended && !single)
     {
-        app_.EndEdit();
+        m_app.EndEdit();
     }
 }
 
@@ -938,7 +938,7 @@ void PrintState(const Simulation& sim)
 
 void Panels::SimulationControls()
 {
-    const Simulation& sim = app_.GetSimulation();
+    const Simulation& sim = m_app.GetSimulation();
     if (!ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen))
     {
         return;
@@ -950,25 +950,25 @@ void Panels::SimulationControls()
     }
     if (ImGui::Button("Reset"))
     {
-        app_.SimReset();
+        m_app.SimReset();
     }
     Announce("simulation Reset");
     ImGui::SameLine();
     if (ImGui::Button("< Back"))
     {
-        app_.SimBack();
+        m_app.SimBack();
     }
     Announce("simulation Back");
     ImGui::SameLine();
     if (ImGui::Button(sim.Playing() ? "Pause###play" : "Play###play", ImVec2(60.0f, 0.0f)))
     {
-        app_.SimPlay(!sim.Playing());
+        m_app.SimPlay(!sim.Playing());
     }
     Announce("simulation Play");
     ImGui::SameLine();
     if (ImGui::Button("Forward >"))
     {
-        app_.SimForward();
+        m_app.SimForward();
     }
     Announce("simulation Forward");
     ImGui::SameLine();
@@ -981,7 +981,7 @@ void Panels::SimulationControls()
     const int last = std::max(sim.Last(), sim.First() + 1);
     if (ImGui::SliderInt("step", &step, sim.First(), last, "%d", ImGuiSliderFlags_AlwaysClamp))
     {
-        app_.SimShowStep(step);
+        m_app.SimShowStep(step);
     }
     if (ImGui::IsItemHovered())
     {
@@ -990,7 +990,7 @@ void Panels::SimulationControls()
     float speed = static_cast<float>(sim.Speed());
     if (ImGui::SliderFloat("steps/s", &speed, 1.0f, 240.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
     {
-        app_.SimSpeed(speed);
+        m_app.SimSpeed(speed);
     }
     const SimRecord& record = sim.Record();
     char line[160];
@@ -1001,14 +1001,14 @@ void Panels::SimulationControls()
     {
         ImGui::TextDisabled("steps before %d are no longer held", sim.First());
     }
-    if (!sim.Playing() && printedStep_ != sim.Shown())
+    if (!sim.Playing() && m_printedStep != sim.Shown())
     {
-        printedStep_ = sim.Shown();
+        m_printedStep = sim.Shown();
         PrintState(sim);
     }
     if (sim.Playing())
     {
-        printedStep_ = -1;
+        m_printedStep = -1;
     }
     ResponseSteps();
 }
@@ -1017,14 +1017,14 @@ void Panels::SimulationControls()
 // the sentences the figure's response panel draws).
 void Panels::ResponseSteps()
 {
-    const Simulation& sim = app_.GetSimulation();
+    const Simulation& sim = m_app.GetSimulation();
     const SimRecord& record = sim.Record();
     if (sim.Shown() == 0 || sim.Shown() == sim.First())
     {
         WrappedTextDisabled("Take a step to see the step's contacts and the solver's response.");
         return;
     }
-    const Scene& scene = app_.ShownScene();
+    const Scene& scene = m_app.ShownScene();
     const auto name = [&](int i) { return scene.bodies[static_cast<size_t>(i)].name; };
     int shown = 0;
     for (const WorldContact& contact : record.world.contacts)
@@ -1065,7 +1065,7 @@ void Panels::ResponseSteps()
                                   separation < 0.0 ? "overlap" : "gap", std::fabs(separation));
                     if (ImGui::Selectable(label, c.a == chosenA && c.b == chosenB))
                     {
-                        app_.SimChooseContact(c.a, c.b);
+                        m_app.SimChooseContact(c.a, c.b);
                     }
                     Announce("contact " + name(c.a) + " " + name(c.b));
                 }
@@ -1089,10 +1089,10 @@ void Panels::ResponseSteps()
         printed += "satviz: response step " + std::to_string(sim.Shown()) + " " + name(chosenA) + " " + name(chosenB) +
                    ": " + step.title + ": " + step.sentence + "\n";
     }
-    if (!sim.Playing() && printed != printedResponse_)
+    if (!sim.Playing() && printed != m_printedResponse)
     {
         // For scripts that drive the window: the steps shown, once per step and pair.
-        printedResponse_ = printed;
+        m_printedResponse = printed;
         std::fputs(printed.c_str(), stdout);
         std::fflush(stdout);
     }
@@ -1110,19 +1110,19 @@ void Panels::StatusBar()
     ImGui::Begin("##status", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus);
-    const bool error = app_.StatusIsError();
+    const bool error = m_app.StatusIsError();
     if (error)
     {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.2f, 0.05f, 1.0f));
     }
-    const Viewer& viewer = app_.GetViewer();
+    const Viewer& viewer = m_app.GetViewer();
     const std::string studying =
-        "Testing the pair (" + std::to_string(viewer.PairVertices(app_.GetDocument().GetScene())) +
+        "Testing the pair (" + std::to_string(viewer.PairVertices(m_app.GetDocument().GetScene())) +
         " vertices) on a worker thread: its traced queries take long at this size; the figure follows when done";
     ImGui::TextUnformatted(viewer.Studying()       ? studying.c_str()
-                           : app_.Status().empty() ? "Drag a body to move it, shift-drag to turn it; arrows step "
+                           : m_app.Status().empty() ? "Drag a body to move it, shift-drag to turn it; arrows step "
                                                      "through the test; F1 for help"
-                                                   : app_.Status().c_str());
+                                                   : m_app.Status().c_str());
     if (error)
     {
         ImGui::PopStyleColor();
@@ -1133,50 +1133,50 @@ void Panels::StatusBar()
 
 void Panels::Popups()
 {
-    const Document& document = app_.GetDocument();
-    if (askOpen_)
+    const Document& document = m_app.GetDocument();
+    if (m_askOpen)
     {
-        askOpen_ = false;
-        pathBuffer_[0] = '\0';
+        m_askOpen = false;
+        m_pathBuffer[0] = '\0';
         ImGui::OpenPopup("Open scene");
     }
-    if (askSaveAs_)
+    if (m_askSaveAs)
     {
-        askSaveAs_ = false;
+        m_askSaveAs = false;
         const std::string suggestion = document.File().empty()
                                            ? "scene.json"
                                            : (std::filesystem::path(document.File()).stem().string() + "-edited.json");
-        std::snprintf(pathBuffer_, sizeof(pathBuffer_), "%s", suggestion.c_str());
+        std::snprintf(m_pathBuffer, sizeof(m_pathBuffer), "%s", suggestion.c_str());
         ImGui::OpenPopup("Save scene as");
     }
-    if (askQuit_)
+    if (m_askQuit)
     {
-        askQuit_ = false;
+        m_askQuit = false;
         ImGui::OpenPopup("Unsaved changes");
     }
-    if (askOpenUnsaved_)
+    if (m_askOpenUnsaved)
     {
-        askOpenUnsaved_ = false;
+        m_askOpenUnsaved = false;
         ImGui::OpenPopup("Unsaved changes before opening");
     }
     const ImVec2 center = ImGui::GetMainViewport()->GetCenter();
-    if (PathPopup("Open scene", "Scene file (JSON):", "Open", pathBuffer_, sizeof(pathBuffer_)))
+    if (PathPopup("Open scene", "Scene file (JSON):", "Open", m_pathBuffer, sizeof(m_pathBuffer)))
     {
-        app_.RequestOpen(pathBuffer_);
+        m_app.RequestOpen(m_pathBuffer);
     }
     const bool saveAsOpen = ImGui::IsPopupOpen("Save scene as");
-    if (PathPopup("Save scene as", "Save to (JSON):", "Save", pathBuffer_, sizeof(pathBuffer_)))
+    if (PathPopup("Save scene as", "Save to (JSON):", "Save", m_pathBuffer, sizeof(m_pathBuffer)))
     {
-        app_.Save(pathBuffer_);
-        if (openAfterSaveAs_ && !document.Dirty())
+        m_app.Save(m_pathBuffer);
+        if (m_openAfterSaveAs && !document.Dirty())
         {
-            app_.Open(app_.PendingOpen());
+            m_app.Open(m_app.PendingOpen());
         }
-        openAfterSaveAs_ = false;
+        m_openAfterSaveAs = false;
     }
     else if (saveAsOpen && !ImGui::IsPopupOpen("Save scene as"))
     {
-        openAfterSaveAs_ = false; // cancelled: the scene stays, nothing is opened
+        m_openAfterSaveAs = false; // cancelled: the scene stays, nothing is opened
     }
     const std::string name = document.File().empty() ? "The scene" : document.File();
     // A button of a question, announced for the scripts that answer it.
@@ -1194,14 +1194,14 @@ void Panels::Popups()
             if (document.File().empty() || document.ReadOnly())
             {
                 ImGui::CloseCurrentPopup();
-                askSaveAs_ = true;
+                m_askSaveAs = true;
             }
             else
             {
-                app_.Save(document.File());
+                m_app.Save(document.File());
                 if (!document.Dirty())
                 {
-                    app_.ConfirmQuit();
+                    m_app.ConfirmQuit();
                 }
                 ImGui::CloseCurrentPopup();
             }
@@ -1209,7 +1209,7 @@ void Panels::Popups()
         ImGui::SameLine();
         if (button("Unsaved changes", "Quit without saving"))
         {
-            app_.ConfirmQuit();
+            m_app.ConfirmQuit();
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
@@ -1223,21 +1223,21 @@ void Panels::Popups()
     if (ImGui::BeginPopupModal("Unsaved changes before opening", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
     {
         ImGui::Text("%s has unsaved changes.", name.c_str());
-        ImGui::Text("Open %s?", app_.PendingOpen().c_str());
+        ImGui::Text("Open %s?", m_app.PendingOpen().c_str());
         if (button("Unsaved changes before opening", "Save and open"))
         {
             ImGui::CloseCurrentPopup();
             if (document.File().empty() || document.ReadOnly())
             {
-                openAfterSaveAs_ = true;
-                askSaveAs_ = true;
+                m_openAfterSaveAs = true;
+                m_askSaveAs = true;
             }
             else
             {
-                app_.Save(document.File());
+                m_app.Save(document.File());
                 if (!document.Dirty())
                 {
-                    app_.Open(app_.PendingOpen());
+                    m_app.Open(m_app.PendingOpen());
                 }
             }
         }
@@ -1245,7 +1245,7 @@ void Panels::Popups()
         if (button("Unsaved changes before opening", "Open without saving"))
         {
             ImGui::CloseCurrentPopup();
-            app_.Open(app_.PendingOpen());
+            m_app.Open(m_app.PendingOpen());
         }
         ImGui::SameLine();
         if (button("Unsaved changes before opening", "Cancel"))
@@ -1262,7 +1262,7 @@ void Panels::HelpOverlay()
     ImGui::SetNextWindowPos(center, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(620.0f, 0.0f));
     ImGui::SetNextWindowBgAlpha(0.96f);
-    if (ImGui::Begin("Help (F1 or Esc closes)", &showHelp_,
+    if (ImGui::Begin("Help (F1 or Esc closes)", &m_showHelp,
                      ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoResize))
     {
         WrappedText("The Separating Axis Theorem: two convex shapes do not touch if and only if some axis "
@@ -1313,16 +1313,16 @@ void Panels::LessonWindow()
     const float top = ImGui::GetFrameHeight();
     ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x, viewport->Pos.y + top));
     ImGui::SetNextWindowSize(ImVec2(kLessonWidth, viewport->Size.y - 2.0f * top));
-    const int current = app_.CurrentLesson();
-    const int count = static_cast<int>(app_.Lessons().size());
-    const Lesson& lesson = app_.Lessons()[static_cast<size_t>(current)];
+    const int current = m_app.CurrentLesson();
+    const int count = static_cast<int>(m_app.Lessons().size());
+    const Lesson& lesson = m_app.Lessons()[static_cast<size_t>(current)];
     bool open = true;
     const bool shown = ImGui::Begin("Lesson###lesson", &open,
                                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                         ImGuiWindowFlags_NoSavedSettings);
     if (!open)
     {
-        app_.CloseLesson();
+        m_app.CloseLesson();
     }
     if (!shown)
     {
@@ -1361,16 +1361,16 @@ void Panels::LessonWindow()
             }
             if (ImGui::SmallButton(name.c_str()))
             {
-                app_.RequestOpen(scene);
+                m_app.RequestOpen(scene);
             }
         }
     }
     ImGui::Separator();
     ImGui::BeginChild("##lesson-text");
-    if (lessonScrollTop_)
+    if (m_lessonScrollTop)
     {
         ImGui::SetScrollY(0.0f);
-        lessonScrollTop_ = false;
+        m_lessonScrollTop = false;
     }
     // A block quote ("In satviz": implementation detail) is drawn in a tinted box with a coloured bar on its
     // left, behind its blocks (drawn first on channel 1, the box after on channel 0). A <details> section (the
@@ -1403,7 +1403,7 @@ void Panels::LessonWindow()
     };
     int details = 0;
     bool detailsOpen = true;
-    for (const LessonBlock& block : app_.LessonBlocks())
+    for (const LessonBlock& block : m_app.LessonBlocks())
     {
         if (inQuote && (!block.quote || block.details != details))
         {
@@ -1446,7 +1446,7 @@ void Panels::LessonWindow()
         {
         case LessonBlock::Kind::Heading:
             ImGui::Spacing();
-            ImGui::PushFont(app_.Fonts().heading);
+            ImGui::PushFont(m_app.Fonts().heading);
             WrappedText(block.text);
             ImGui::PopFont();
             break;
@@ -1480,13 +1480,13 @@ void Panels::LessonWindow()
             WrappedTextDisabled("Figure: " + block.text);
             const std::string stem = SceneOfFigure(block.target);
             const std::string scene =
-                (std::filesystem::path(app_.Options().lessonsDir) / "scenes" / (stem + ".json")).string();
+                (std::filesystem::path(m_app.Options().lessonsDir) / "scenes" / (stem + ".json")).string();
             if (std::filesystem::exists(scene))
             {
                 ImGui::PushID(&block);
                 if (ImGui::SmallButton(("show " + stem).c_str()))
                 {
-                    app_.RequestOpen(scene);
+                    m_app.RequestOpen(scene);
                 }
                 ImGui::PopID();
             }
@@ -1507,7 +1507,7 @@ void Panels::LessonWindow()
     ImGui::End();
     if (go != current)
     {
-        app_.OpenLesson(go);
+        m_app.OpenLesson(go);
     }
 }
 

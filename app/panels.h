@@ -67,7 +67,7 @@ class Panels
 {
   public:
     /// The panels of `app`, which outlives them.
-    explicit Panels(App& app) : app_(app) {}
+    explicit Panels(App& app) : m_app(app) {}
     Panels(const Panels&) = delete;            ///< the panels refer to their app
     Panels& operator=(const Panels&) = delete; ///< the panels refer to their app
 
@@ -76,11 +76,11 @@ class Panels
     /// Builds this frame's windows: menus, canvas, side panel, status bar, popups, help, lesson.
     void Draw();
     /// Asks what to do with the unsaved changes before opening App::PendingOpen() (from the next frame).
-    void AskBeforeOpening() { askOpenUnsaved_ = true; }
+    void AskBeforeOpening() { m_askOpenUnsaved = true; }
     /// Asks what to do with the unsaved changes before quitting (from the next frame).
-    void AskBeforeQuitting() { askQuit_ = true; }
+    void AskBeforeQuitting() { m_askQuit = true; }
     /// Shows the lesson window's text from its top (a lesson was just opened).
-    void ScrollLessonToTop() { lessonScrollTop_ = true; }
+    void ScrollLessonToTop() { m_lessonScrollTop = true; }
 
   private:
     void SaveOrAsk();
@@ -110,34 +110,34 @@ class Panels
     ImGuiWindowFlags ClearedBackground() const;
     void ClearBackground();
 
-    App& app_;
-    DragKind drag_ = DragKind::None;
-    int dragVertex_ = -1;
-    CanvasTool tool_ = CanvasTool::Select;
-    std::vector<Vec2> drawn_; // the vertices of the polygon being drawn, world points
-    Vec2 cutFrom_{};          // the cut being drawn, world points
-    Vec2 cutTo_{};
-    Vec2 grabOffset_{};
-    double grabAngle_ = 0.0;
+    App& m_app;
+    DragKind m_drag = DragKind::None;
+    int m_dragVertex = -1;
+    CanvasTool m_tool = CanvasTool::Select;
+    std::vector<Vec2> m_drawn; // the vertices of the polygon being drawn, world points
+    Vec2 m_cutFrom{};          // the cut being drawn, world points
+    Vec2 m_cutTo{};
+    Vec2 m_grabOffset{};
+    double m_grabAngle = 0.0;
     // A throw: the pointer's world positions over the last kThrowWindow seconds, with their times.
-    std::deque<std::pair<double, Vec2>> throwTrail_;
-    bool canvasAnnounced_ = false;
-    bool showHelp_ = false;
-    int newSides_ = 5;
-    bool askOpen_ = false;
-    bool askSaveAs_ = false;
-    bool askQuit_ = false;
-    bool askOpenUnsaved_ = false;
-    bool openAfterSaveAs_ = false; // the Save as popup was opened by "Save and open"
-    bool lessonScrollTop_ = false;
-    char pathBuffer_[1024] = {};
+    std::deque<std::pair<double, Vec2>> m_throwTrail;
+    bool m_canvasAnnounced = false;
+    bool m_showHelp = false;
+    int m_newSides = 5;
+    bool m_askOpen = false;
+    bool m_askSaveAs = false;
+    bool m_askQuit = false;
+    bool m_askOpenUnsaved = false;
+    bool m_openAfterSaveAs = false; // the Save as popup was opened by "Save and open"
+    bool m_lessonScrollTop = false;
+    char m_pathBuffer[1024] = {};
     // Announce: where each item named was last frame, and whether its place was printed.
-    std::map<std::string, ImVec2> announceAt_;
-    std::map<std::string, bool> announced_;
+    std::map<std::string, ImVec2> m_announceAt;
+    std::map<std::string, bool> m_announced;
     // The simulation's step and pair last printed for scripts (PrintShownState, ResponseSteps).
-    int printedStep_ = -1;
-    std::string printedResponse_;
-    std::string announcedHits_; // the step and hit whose time bar was last printed
+    int m_printedStep = -1;
+    std::string m_printedResponse;
+    std::string m_announcedHits; // the step and hit whose time bar was last printed
 };
 
 } // namespace satviz

@@ -9,51 +9,51 @@
 namespace satviz
 {
 
-RecentFiles::RecentFiles(std::string file, bool update) : file_(std::move(file)), update_(update)
+RecentFiles::RecentFiles(std::string file, bool update) : m_file(std::move(file)), m_update(update)
 {
-    if (file_.empty())
+    if (m_file.empty())
     {
         return;
     }
-    std::ifstream in(file_);
-    for (std::string line; std::getline(in, line) && files_.size() < kMaxFiles;)
+    std::ifstream in(m_file);
+    for (std::string line; std::getline(in, line) && m_files.size() < kMaxFiles;)
     {
         if (!line.empty())
         {
-            files_.push_back(line);
+            m_files.push_back(line);
         }
     }
 }
 
 void RecentFiles::Remember(const std::string& path)
 {
-    if (!update_)
+    if (!m_update)
     {
         return;
     }
     std::error_code code;
     const std::string absolute = std::filesystem::absolute(path, code).string();
-    files_.erase(std::remove(files_.begin(), files_.end(), absolute), files_.end());
-    files_.insert(files_.begin(), absolute);
-    if (files_.size() > kMaxFiles)
+    m_files.erase(std::remove(m_files.begin(), m_files.end(), absolute), m_files.end());
+    m_files.insert(m_files.begin(), absolute);
+    if (m_files.size() > kMaxFiles)
     {
-        files_.resize(kMaxFiles);
+        m_files.resize(kMaxFiles);
     }
     Write();
 }
 
 void RecentFiles::Write() const
 {
-    if (file_.empty())
+    if (m_file.empty())
     {
         return;
     }
     std::error_code code;
-    std::filesystem::create_directories(std::filesystem::path(file_).parent_path(), code);
-    const std::string temporary = file_ + ".tmp";
+    std::filesystem::create_directories(std::filesystem::path(m_file).parent_path(), code);
+    const std::string temporary = m_file + ".tmp";
     {
         std::ofstream out(temporary, std::ios::trunc);
-        for (const std::string& path : files_)
+        for (const std::string& path : m_files)
         {
             out << path << '\n';
         }
@@ -62,7 +62,7 @@ void RecentFiles::Write() const
             return;
         }
     }
-    std::filesystem::rename(temporary, file_, code);
+    std::filesystem::rename(temporary, m_file, code);
 }
 
 } // namespace satviz

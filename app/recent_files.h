@@ -18,7 +18,7 @@ class RecentFiles
     RecentFiles(std::string file, bool update);
 
     /// The files, as absolute paths, newest first.
-    const std::vector<std::string>& List() const { return files_; }
+    const std::vector<std::string>& List() const { return m_files; }
     /// Puts `path` (made absolute) first, drops the oldest beyond kMaxFiles, and writes the list's file atomically.
     void Remember(const std::string& path);
 
@@ -28,9 +28,9 @@ class RecentFiles
   private:
     void Write() const;
 
-    std::string file_;
-    bool update_ = true;
-    std::vector<std::string> files_;
+    std::string m_file;
+    bool m_update = true;
+    std::vector<std::string> m_files;
 };
 
 } // namespace satviz

@@ -57,32 +57,32 @@ bool SameWorld(const Scene& a, const Scene& b)
 
 void Simulation::PutAside()
 {
-    aside_ = Run{
-        std::move(start_), std::move(states_), std::move(samples_), sampleFirst_, std::move(hands_), first_, shown_};
+    m_aside = Run{
+        std::move(m_start), std::move(m_states), std::move(m_samples), m_sampleFirst, std::move(m_hands), m_first, m_shown};
 }
 
 void Simulation::TakeBack(Run& run)
 {
-    start_ = std::move(run.start);
-    states_ = std::move(run.states);
-    samples_ = std::move(run.samples);
-    sampleFirst_ = run.sampleFirst;
-    hands_ = std::move(run.hands);
-    first_ = run.first;
+    m_start = std::move(run.start);
+    m_states = std::move(run.states);
+    m_samples = std::move(run.samples);
+    m_sampleFirst = run.sampleFirst;
+    m_hands = std::move(run.hands);
+    m_first = run.first;
 }
 
 void Simulation::Restart(const Scene& scene, int pairA, int pairB)
 {
-    pairA_ = pairA;
-    pairB_ = pairB;
-    playing_ = false;
-    clock_ = 0.0;
+    m_pairA = pairA;
+    m_pairB = pairB;
+    m_playing = false;
+    m_clock = 0.0;
     // An undo of an edit made at a step gives back the scene the run before started from: that run comes back.
-    const bool tookSteps = !states_.empty() && Last() > 0;
-    if (haveAside_ && SameWorld(aside_.start, scene))
+    const bool tookSteps = !m_states.empty() && Last() > 0;
+    if (m_haveAside && SameWorld(m_aside.start, scene))
     {
-        Run back = std::move(aside_);
-        haveAside_ = tookSteps;
+        Run back = std::move(m_aside);
+        m_haveAside = tookSteps;
         if (tookSteps)
         {
             PutAside();
@@ -94,31 +94,31 @@ void Simulation::Restart(const Scene& scene, int pairA, int pairB)
     if (tookSteps)
     {
         PutAside();
-        haveAside_ = true;
+        m_haveAside = true;
     }
-    start_ = scene;
-    states_.clear();
-    samples_.clear();
-    sampleFirst_ = 0;
-    hands_.clear();
-    first_ = 0;
-    shown_ = 0;
-    error_ = ValidateSceneWorld(scene);
-    if (!error_.empty())
+    m_start = scene;
+    m_states.clear();
+    m_samples.clear();
+    m_sampleFirst = 0;
+    m_hands.clear();
+    m_first = 0;
+    m_shown = 0;
+    m_error = ValidateSceneWorld(scene);
+    if (!m_error.empty())
     {
-        record_ = SimRecord{};
-        shownScene_ = scene;
+        m_record = SimRecord{};
+        m_shownScene = scene;
         return;
     }
-    record_ = StartRecord(scene, pairA_, pairB_);
-    states_.push_back(record_.world);
-    samples_.assign(record_.history.begin(), record_.history.end());
-    shownScene_ = scene;
+    m_record = StartRecord(scene, m_pairA, m_pairB);
+    m_states.push_back(m_record.world);
+    m_samples.assign(m_record.history.begin(), m_record.history.end());
+    m_shownScene = scene;
 }
 
 bool Simulation::StartedFrom(const Scene& scene) const
 {
-    return SameWorld(start_, scene);
+    return SameWorld(m_start, scene);
 }
 
 // Makes the record of step `step` (which the history holds): the step before it taken again from its stored
@@ -126,60 +126,60 @@ bool Simulation::StartedFrom(const Scene& scene) const
 // step taken again gives the same bits as the stored state of `step`.
 void Simulation::Record(int step)
 {
-    shown_ = std::clamp(step, first_, Last());
-    if (!error_.empty())
+    m_shown = std::clamp(step, m_first, Last());
+    if (!m_error.empty())
     {
         return;
     }
-    record_.contact = ContactSolveTrace{};
-    record_.contact.bodyA = pairA_;
-    record_.contact.bodyB = pairB_;
-    record_.lastStep.Clear();
-    record_.before.clear();
-    if (shown_ == first_)
+    m_record.contact = ContactSolveTrace{};
+    m_record.contact.bodyA = m_pairA;
+    m_record.contact.bodyB = m_pairB;
+    m_record.lastStep.Clear();
+    m_record.before.clear();
+    if (m_shown == m_first)
     {
-        record_.world = StateAt(shown_); // its hands are in the stored state
-        record_.steps = shown_;
+        m_record.world = StateAt(m_shown); // its hands are in the stored state
+        m_record.steps = m_shown;
     }
     else
     {
-        record_.world = StateAt(shown_ - 1);
-        record_.steps = shown_ - 1;
-        StepRecord(record_);
-        const auto hands = hands_.find(shown_);
-        if (hands != hands_.end())
+        m_record.world = StateAt(m_shown - 1);
+        m_record.steps = m_shown - 1;
+        StepRecord(m_record);
+        const auto hands = m_hands.find(m_shown);
+        if (hands != m_hands.end())
         {
             for (const BodyHand& hand : hands->second)
             {
-                PutHand(record_.world, hand.body, hand.position, hand.velocity);
+                PutHand(m_record.world, hand.body, hand.position, hand.velocity);
             }
         }
     }
-    SampleHistory(shown_);
-    shownScene_ = start_;
-    CopyWorldState(record_.world, shownScene_);
+    SampleHistory(m_shown);
+    m_shownScene = m_start;
+    CopyWorldState(m_record.world, m_shownScene);
 }
 
 // The record's history: the samples held from the oldest to step `step`.
 void Simulation::SampleHistory(int step)
 {
-    const size_t end = static_cast<size_t>(std::clamp(step - sampleFirst_ + 1, 0, static_cast<int>(samples_.size())));
-    record_.history.assign(samples_.begin(), samples_.begin() + static_cast<std::ptrdiff_t>(end));
+    const size_t end = static_cast<size_t>(std::clamp(step - m_sampleFirst + 1, 0, static_cast<int>(m_samples.size())));
+    m_record.history.assign(m_samples.begin(), m_samples.begin() + static_cast<std::ptrdiff_t>(end));
 }
 
 void Simulation::TakeSample(const SimSample& sample)
 {
-    samples_.push_back(sample);
-    while (samples_.size() > static_cast<size_t>(kMaxSamples))
+    m_samples.push_back(sample);
+    while (m_samples.size() > static_cast<size_t>(kMaxSamples))
     {
-        samples_.pop_front();
-        ++sampleFirst_;
+        m_samples.pop_front();
+        ++m_sampleFirst;
     }
 }
 
 void Simulation::ShowStep(int step)
 {
-    if (states_.empty())
+    if (m_states.empty())
     {
         return;
     }
@@ -188,54 +188,54 @@ void Simulation::ShowStep(int step)
 
 void Simulation::StepForward()
 {
-    if (states_.empty() || !error_.empty())
+    if (m_states.empty() || !m_error.empty())
     {
         return;
     }
-    if (shown_ < Last())
+    if (m_shown < Last())
     {
-        Record(shown_ + 1);
+        Record(m_shown + 1);
         return;
     }
     // The latest step: take a new one from the record of the step shown, whose world is the latest state.
-    record_.contact = ContactSolveTrace{};
-    record_.contact.bodyA = pairA_;
-    record_.contact.bodyB = pairB_;
-    StepRecord(record_);
-    states_.push_back(record_.world);
-    TakeSample(record_.history.back());
-    if (record_.history.size() > static_cast<size_t>(kMaxSamples))
+    m_record.contact = ContactSolveTrace{};
+    m_record.contact.bodyA = m_pairA;
+    m_record.contact.bodyB = m_pairB;
+    StepRecord(m_record);
+    m_states.push_back(m_record.world);
+    TakeSample(m_record.history.back());
+    if (m_record.history.size() > static_cast<size_t>(kMaxSamples))
     {
-        record_.history.erase(record_.history.begin(),
-                              record_.history.end() - static_cast<std::ptrdiff_t>(kMaxSamples));
+        m_record.history.erase(m_record.history.begin(),
+                              m_record.history.end() - static_cast<std::ptrdiff_t>(kMaxSamples));
     }
-    shown_ = Last();
+    m_shown = Last();
     Drop();
-    CopyWorldState(record_.world, shownScene_);
+    CopyWorldState(m_record.world, m_shownScene);
 }
 
 void Simulation::Hand(int body, Vec2 position, Vec2 velocity)
 {
-    if (states_.empty() || !error_.empty() || body < 0 || body >= static_cast<int>(record_.world.bodies.size()) ||
-        record_.world.bodies[static_cast<size_t>(body)].type == BodyType::Static)
+    if (m_states.empty() || !m_error.empty() || body < 0 || body >= static_cast<int>(m_record.world.bodies.size()) ||
+        m_record.world.bodies[static_cast<size_t>(body)].type == BodyType::Static)
     {
         return;
     }
-    if (shown_ == 0)
+    if (m_shown == 0)
     {
         StepForward(); // step 0 is the scene as written
     }
     // What came after the step shown came from the state without the hand: it is dropped.
-    while (Last() > shown_)
+    while (Last() > m_shown)
     {
-        states_.pop_back();
+        m_states.pop_back();
     }
-    while (!samples_.empty() && sampleFirst_ + static_cast<int>(samples_.size()) - 1 > shown_)
+    while (!m_samples.empty() && m_sampleFirst + static_cast<int>(m_samples.size()) - 1 > m_shown)
     {
-        samples_.pop_back();
+        m_samples.pop_back();
     }
-    hands_.erase(hands_.upper_bound(shown_), hands_.end());
-    std::vector<BodyHand>& hands = hands_[shown_];
+    m_hands.erase(m_hands.upper_bound(m_shown), m_hands.end());
+    std::vector<BodyHand>& hands = m_hands[m_shown];
     const auto same = std::find_if(hands.begin(), hands.end(), [&](const BodyHand& h) { return h.body == body; });
     if (same != hands.end())
     {
@@ -245,26 +245,26 @@ void Simulation::Hand(int body, Vec2 position, Vec2 velocity)
     {
         hands.push_back(BodyHand{body, position, velocity});
     }
-    PutHand(states_.back(), body, position, velocity);
-    PutHand(record_.world, body, position, velocity);
+    PutHand(m_states.back(), body, position, velocity);
+    PutHand(m_record.world, body, position, velocity);
     // The plots' totals of this step are those of the state with the hand.
-    const SimSample sample = MeasureWorld(record_.world, shown_);
-    if (!samples_.empty() && sampleFirst_ + static_cast<int>(samples_.size()) - 1 == shown_)
+    const SimSample sample = MeasureWorld(m_record.world, m_shown);
+    if (!m_samples.empty() && m_sampleFirst + static_cast<int>(m_samples.size()) - 1 == m_shown)
     {
-        samples_.back() = sample;
+        m_samples.back() = sample;
     }
-    if (!record_.history.empty())
+    if (!m_record.history.empty())
     {
-        record_.history.back() = sample;
+        m_record.history.back() = sample;
     }
-    CopyWorldState(record_.world, shownScene_);
+    CopyWorldState(m_record.world, m_shownScene);
 }
 
 void Simulation::StepBack()
 {
-    if (shown_ > first_)
+    if (m_shown > m_first)
     {
-        Record(shown_ - 1);
+        Record(m_shown - 1);
     }
 }
 
@@ -272,70 +272,70 @@ void Simulation::StepBack()
 // (kMaxSamples).
 void Simulation::Drop()
 {
-    const long long bodies = std::max<long long>(1, static_cast<long long>(start_.bodies.size()));
+    const long long bodies = std::max<long long>(1, static_cast<long long>(m_start.bodies.size()));
     const size_t most =
         static_cast<size_t>(std::max<long long>(2, std::min<long long>(kMaxStates, kMaxBodyStates / bodies)));
-    while (states_.size() > most)
+    while (m_states.size() > most)
     {
-        states_.pop_front();
-        ++first_;
+        m_states.pop_front();
+        ++m_first;
     }
     // The state of the oldest step held has its hands in it; those of older steps are of no more use.
-    hands_.erase(hands_.begin(), hands_.lower_bound(first_ + 1));
+    m_hands.erase(m_hands.begin(), m_hands.lower_bound(m_first + 1));
 }
 
 void Simulation::SetPlaying(bool playing)
 {
-    playing_ = playing && error_.empty() && !states_.empty();
-    clock_ = 0.0;
+    m_playing = playing && m_error.empty() && !m_states.empty();
+    m_clock = 0.0;
 }
 
 void Simulation::SetSpeed(double stepsPerSecond)
 {
-    speed_ = std::clamp(stepsPerSecond, 1.0, 240.0);
+    m_speed = std::clamp(stepsPerSecond, 1.0, 240.0);
 }
 
 bool Simulation::Advance(double seconds)
 {
-    if (!playing_)
+    if (!m_playing)
     {
         return false;
     }
-    clock_ += seconds;
-    const double interval = 1.0 / speed_;
+    m_clock += seconds;
+    const double interval = 1.0 / m_speed;
     // Several steps in one frame keep the speed when the frames are slower than the steps, as long as they are
     // cheap: past kStepBudget seconds of stepping the simulation runs slower instead, so that a large world does
     // not slow the frames down further.
     using Clock = std::chrono::steady_clock;
     const Clock::time_point start = Clock::now();
     int taken = 0;
-    while (clock_ >= interval && taken < 4 &&
+    while (m_clock >= interval && taken < 4 &&
            (taken == 0 || std::chrono::duration<double>(Clock::now() - start).count() < kStepBudget))
     {
-        clock_ -= interval;
+        m_clock -= interval;
         StepForward();
         ++taken;
     }
-    clock_ = std::min(clock_, interval);
+    m_clock = std::min(m_clock, interval);
     return taken > 0;
 }
 
 double Simulation::SecondsUntilNextStep() const
 {
-    return std::max(0.0, 1.0 / speed_ - clock_);
+    return std::max(0.0, 1.0 / m_speed - m_clock);
 }
 
 void Simulation::ChoosePair(int pairA, int pairB)
 {
-    if (pairA == pairA_ && pairB == pairB_)
+    if (pairA == m_pairA && pairB == m_pairB)
     {
         return;
     }
-    pairA_ = pairA;
-    pairB_ = pairB;
-    if (!states_.empty())
+    m_pairA = pairA;
+    m_pairB = pairB;
+    if (!m_states.empty())
     {
-        Record(shown_);
+        Record(m_shown);
     }
 }
 

@@ -40,14 +40,14 @@ class Simulation
     /// True when the simulation was started from a scene with the same bodies, materials and world as `scene`.
     bool StartedFrom(const Scene& scene) const;
     /// Why the scene cannot be stepped; empty when it can.
-    const std::string& Error() const { return error_; }
+    const std::string& Error() const { return m_error; }
 
     /// The step shown.
-    int Shown() const { return shown_; }
+    int Shown() const { return m_shown; }
     /// The oldest step the history still holds.
-    int First() const { return first_; }
+    int First() const { return m_first; }
     /// The latest step taken.
-    int Last() const { return first_ + static_cast<int>(states_.size()) - 1; }
+    int Last() const { return m_first + static_cast<int>(m_states.size()) - 1; }
     /// Shows step `step`, clamped to [First(), Last()].
     void ShowStep(int step);
     /// Shows the next step, taking it when it is the latest.
@@ -56,11 +56,11 @@ class Simulation
     void StepBack();
 
     /// True while playing.
-    bool Playing() const { return playing_; }
+    bool Playing() const { return m_playing; }
     /// Plays or pauses.
     void SetPlaying(bool playing);
     /// Steps per second while playing.
-    double Speed() const { return speed_; }
+    double Speed() const { return m_speed; }
     /// Sets the steps per second, in [1, 240].
     void SetSpeed(double stepsPerSecond);
     /// Lets `seconds` pass: while playing, one step every 1 / Speed() seconds (at most four in one call, and more
@@ -80,11 +80,11 @@ class Simulation
     /// Records the solver's work on the pair (pairA, pairB) in the step shown.
     void ChoosePair(int pairA, int pairB);
     /// The world at the step shown, with the record of the step that led to it (none at step 0).
-    const SimRecord& Record() const { return record_; }
+    const SimRecord& Record() const { return m_record; }
     /// The scene with its bodies where the world has them at the step shown.
-    const Scene& ShownScene() const { return shownScene_; }
+    const Scene& ShownScene() const { return m_shownScene; }
     /// The world's state at step `step`, which the history must hold.
-    const World& StateAt(int step) const { return states_[static_cast<size_t>(step - first_)]; }
+    const World& StateAt(int step) const { return m_states[static_cast<size_t>(step - m_first)]; }
 
   private:
     /// A hand on a body at one step (Hand).
@@ -114,23 +114,23 @@ class Simulation
     void PutAside();
     void TakeBack(Run& run);
 
-    Scene start_;
-    std::string error_;
-    std::deque<World> states_;      // states_[i] is the world at step first_ + i
-    std::deque<SimSample> samples_; // the totals of the steps from sampleFirst_ to Last(), at most kMaxSamples
-    int sampleFirst_ = 0;
-    std::map<int, std::vector<BodyHand>> hands_; // the hands each step took, by step
-    int first_ = 0;
-    int shown_ = 0;
-    int pairA_ = -1;
-    int pairB_ = -1;
-    bool playing_ = false;
-    double speed_ = 60.0;
-    double clock_ = 0.0;
-    SimRecord record_;
-    Scene shownScene_;
-    bool haveAside_ = false;
-    Run aside_;
+    Scene m_start;
+    std::string m_error;
+    std::deque<World> m_states;      // m_states[i] is the world at step m_first + i
+    std::deque<SimSample> m_samples; // the totals of the steps from m_sampleFirst to Last(), at most kMaxSamples
+    int m_sampleFirst = 0;
+    std::map<int, std::vector<BodyHand>> m_hands; // the hands each step took, by step
+    int m_first = 0;
+    int m_shown = 0;
+    int m_pairA = -1;
+    int m_pairB = -1;
+    bool m_playing = false;
+    double m_speed = 60.0;
+    double m_clock = 0.0;
+    SimRecord m_record;
+    Scene m_shownScene;
+    bool m_haveAside = false;
+    Run m_aside;
 };
 
 /// True when both scenes make the same world: the same bodies (shapes, states, static or dynamic, densities,

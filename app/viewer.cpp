@@ -23,30 +23,30 @@ bool FrameSqueezed(const SceneView& frame, const PairStudy& study, LayerMask lay
 
 } // namespace
 
-Viewer::Viewer(int backgroundVertices) : backgroundVertices_(backgroundVertices) {}
+Viewer::Viewer(int backgroundVertices) : m_backgroundVertices(backgroundVertices) {}
 
 void Viewer::Reset(const Scene& scene)
 {
-    choices_ = ChoicesOfView(scene.view);
-    playing_ = false;
-    cameraFit_ = scene.view.fit;
+    m_choices = ChoicesOfView(scene.view);
+    m_playing = false;
+    m_cameraFit = scene.view.fit;
     // A scene that frames itself (the lessons' scenes) was framed for a figure of its own size, 800 x 600 unless
     // it says otherwise; the canvas left beside the panels and a lesson is another size, so each figure scales
     // that framing to fit it (Adopt).
-    framed_ = !cameraFit_;
-    frame_ = scene.view;
-    if (!cameraFit_)
+    m_framed = !m_cameraFit;
+    m_frame = scene.view;
+    if (!m_cameraFit)
     {
-        camera_.center = scene.view.center;
-        camera_.zoom = scene.view.zoom;
+        m_camera.center = scene.view.center;
+        m_camera.zoom = scene.view.zoom;
     }
-    step_ = scene.view.step;
-    time_ = scene.view.time;
+    m_step = scene.view.step;
+    m_time = scene.view.time;
     // The figure of the scene before is no longer shown, nor a test of it still running taken in.
-    setup_ = FigureSetup{};
-    setup_.error = "testing the pair";
-    job_.reset();
-    retest_ = false;
+    m_setup = FigureSetup{};
+    m_setup.error = "testing the pair";
+    m_job.reset();
+    m_retest = false;
 }
 
 int Viewer::PairVertices(const Scene& scene) const
@@ -66,7 +66,7 @@ int Viewer::PairVertices(const Scene& scene) const
         const Body& body = scene.bodies[fallback];
         return body.shape.type == ShapeType::Polygon ? body.shape.polygon.Count() : 1;
     };
-    return count(choices_.bodyA, 0) + count(choices_.bodyB, 1);
+    return count(m_choices.bodyA, 0) + count(m_choices.bodyB, 1);
 }
 
 bool Viewer::Refresh(const Scene& scene)
@@ -75,23 +75,23 @@ bool Viewer::Refresh(const Scene& scene)
     auto exists = [&](const std::string& name) {
         return std::any_of(scene.bodies.begin(), scene.bodies.end(), [&](const Body& b) { return b.name == name; });
     };
-    if (!exists(choices_.bodyA) || !exists(choices_.bodyB) || choices_.bodyA == choices_.bodyB)
+    if (!exists(m_choices.bodyA) || !exists(m_choices.bodyB) || m_choices.bodyA == m_choices.bodyB)
     {
-        choices_.bodyA.clear();
-        choices_.bodyB.clear();
+        m_choices.bodyA.clear();
+        m_choices.bodyB.clear();
     }
     FigureOptions options;
-    options.width = canvasWidth_;
-    options.height = canvasHeight_;
+    options.width = m_canvasWidth;
+    options.height = m_canvasHeight;
     options.setLayers = true;
-    options.layers = choices_.layers;
+    options.layers = m_choices.layers;
     options.setStep = true;
     options.step = -1;
     Scene fitted = scene;
-    WriteChoices(choices_, fitted.view);
-    fitted.view.time = time_;
+    WriteChoices(m_choices, fitted.view);
+    fitted.view.time = m_time;
     fitted.view.fit = true;
-    if (PairVertices(scene) <= backgroundVertices_)
+    if (PairVertices(scene) <= m_backgroundVertices)
     {
         FigureSetup fresh = SetUpFigure(fitted, options);
         Adopt(std::move(fresh), std::move(fitted));
@@ -99,19 +99,19 @@ bool Viewer::Refresh(const Scene& scene)
     }
     // The traced queries and the fit grow with the square of the vertex count (about 30 s for 100 000
     // vertices): they run on a worker thread while the interface goes on with the figure it has.
-    if (!canvasSized_)
+    if (!m_canvasSized)
     {
         return false; // the canvas's first frame gives its size, then the test starts
     }
-    if (job_ != nullptr)
+    if (m_job != nullptr)
     {
-        retest_ = true; // one worker at a time; the latest scene runs when it ends
+        m_retest = true; // one worker at a time; the latest scene runs when it ends
         return false;
     }
-    job_ = std::make_shared<StudyJob>();
-    job_->scene = std::move(fitted);
-    job_->options = options;
-    std::thread([job = job_] {
+    m_job = std::make_shared<StudyJob>();
+    m_job->scene = std::move(fitted);
+    m_job->options = options;
+    std::thread([job = m_job] {
         job->result = SetUpFigure(job->scene, job->options);
         job->done.store(true, std::memory_order_release);
     }).detach();
@@ -120,20 +120,20 @@ bool Viewer::Refresh(const Scene& scene)
 
 bool Viewer::TakeFinishedTest()
 {
-    if (job_ == nullptr || !job_->done.load(std::memory_order_acquire))
+    if (m_job == nullptr || !m_job->done.load(std::memory_order_acquire))
     {
         return false;
     }
-    const std::shared_ptr<StudyJob> finished = std::move(job_);
-    job_.reset();
+    const std::shared_ptr<StudyJob> finished = std::move(m_job);
+    m_job.reset();
     Adopt(std::move(finished->result), std::move(finished->scene));
     return true;
 }
 
 bool Viewer::TakeRetest()
 {
-    const bool retest = retest_;
-    retest_ = false;
+    const bool retest = m_retest;
+    m_retest = false;
     return retest;
 }
 
@@ -141,45 +141,45 @@ void Viewer::Adopt(FigureSetup fresh, Scene studied)
 {
     // A student reading the verdict stays on it: the new test's verdict may be another step (a drag to overlap
     // adds axes), and its number would now show an axis.
-    const bool onVerdict = setup_.Ok() && step_ == VerdictStep();
-    setup_ = std::move(fresh);
-    studied_ = std::move(studied);
-    if (!setup_.Ok())
+    const bool onVerdict = m_setup.Ok() && m_step == VerdictStep();
+    m_setup = std::move(fresh);
+    m_studied = std::move(studied);
+    if (!m_setup.Ok())
     {
         return;
     }
-    ShowStep(onVerdict ? VerdictStep() : step_);
-    if (cameraFit_ || (framed_ && FrameSqueezed(frame_, setup_.study, choices_.layers, !studied_.view.caption.empty())))
+    ShowStep(onVerdict ? VerdictStep() : m_step);
+    if (m_cameraFit || (m_framed && FrameSqueezed(m_frame, m_setup.study, m_choices.layers, !m_studied.view.caption.empty())))
     {
-        camera_ = setup_.figure.view;
+        m_camera = m_setup.figure.view;
     }
-    else if (framed_)
+    else if (m_framed)
     {
-        camera_ =
-            Reframe(frame_, setup_.study, choices_.layers, !studied_.view.caption.empty(), canvasWidth_, canvasHeight_);
+        m_camera =
+            Reframe(m_frame, m_setup.study, m_choices.layers, !m_studied.view.caption.empty(), m_canvasWidth, m_canvasHeight);
     }
-    if ((cameraFit_ || framed_) && setup_.figure.kind == FigureKind::Slice && setup_.figure.body >= 0 &&
-        setup_.figure.body < static_cast<int>(studied_.bodies.size()))
+    if ((m_cameraFit || m_framed) && m_setup.figure.kind == FigureKind::Slice && m_setup.figure.body >= 0 &&
+        m_setup.figure.body < static_cast<int>(m_studied.bodies.size()))
     {
         // A slice draws its body through the camera in its before panel, the left half of the canvas: the body and
         // the cut fill that panel below the caption, until the camera is panned, zoomed or held by a drag.
-        Figure sized = setup_.figure;
-        sized.view.width = canvasWidth_;
-        sized.view.height = canvasHeight_;
-        camera_ = FrameSlice(studied_, setup_.figure.body, sized);
+        Figure sized = m_setup.figure;
+        sized.view.width = m_canvasWidth;
+        sized.view.height = m_canvasHeight;
+        m_camera = FrameSlice(m_studied, m_setup.figure.body, sized);
     }
-    camera_.width = canvasWidth_;
-    camera_.height = canvasHeight_;
-    setup_.figure.view = camera_;
+    m_camera.width = m_canvasWidth;
+    m_camera.height = m_canvasHeight;
+    m_setup.figure.view = m_camera;
 }
 
 Figure Viewer::CurrentFigure() const
 {
-    Figure figure = setup_.figure;
-    figure.view = camera_;
-    figure.step = step_;
-    figure.sim = sim_;
-    figure.hit = sim_ != nullptr ? hit_ : -1;
+    Figure figure = m_setup.figure;
+    figure.view = m_camera;
+    figure.step = m_step;
+    figure.sim = m_sim;
+    figure.hit = m_sim != nullptr ? m_hit : -1;
     // The canvas maps the pointer by the camera: the pieces, disc-cast and slice figures are drawn through it too.
     figure.framesItself = false;
     return figure;
@@ -187,40 +187,40 @@ Figure Viewer::CurrentFigure() const
 
 int Viewer::VerdictStep() const
 {
-    return setup_.figure.kind == FigureKind::Pieces ? FigureStepCount(studied_, setup_) - 1
-                                                    : setup_.study.VerdictStep();
+    return m_setup.figure.kind == FigureKind::Pieces ? FigureStepCount(m_studied, m_setup) - 1
+                                                    : m_setup.study.VerdictStep();
 }
 
 int Viewer::NextStep(int step, int direction) const
 {
-    if (setup_.figure.kind == FigureKind::Pieces)
+    if (m_setup.figure.kind == FigureKind::Pieces)
     {
         return std::clamp(step + direction, 0, VerdictStep());
     }
-    return setup_.study.NextStep(step, direction);
+    return m_setup.study.NextStep(step, direction);
 }
 
 void Viewer::ShowStep(int step)
 {
-    step_ = step;
-    if (!setup_.Ok())
+    m_step = step;
+    if (!m_setup.Ok())
     {
         return;
     }
-    if (step_ < 0 || step_ > VerdictStep())
+    if (m_step < 0 || m_step > VerdictStep())
     {
-        step_ = VerdictStep();
+        m_step = VerdictStep();
     }
-    setup_.figure.step = step_;
-    setup_.figure.time = time_;
-    setup_.figure.caption = studied_.view.caption;
+    m_setup.figure.step = m_step;
+    m_setup.figure.time = m_time;
+    m_setup.figure.caption = m_studied.view.caption;
 }
 
 void Viewer::TogglePlay()
 {
-    playing_ = !playing_;
-    playClock_ = 0.0;
-    if (playing_ && step_ >= VerdictStep())
+    m_playing = !m_playing;
+    m_playClock = 0.0;
+    if (m_playing && m_step >= VerdictStep())
     {
         ShowStep(NextStep(-1, 1));
     }
@@ -228,60 +228,60 @@ void Viewer::TogglePlay()
 
 void Viewer::Advance(double seconds)
 {
-    if (!playing_)
+    if (!m_playing)
     {
         return;
     }
-    playClock_ += seconds;
-    if (playClock_ >= kPlayInterval)
+    m_playClock += seconds;
+    if (m_playClock >= kPlayInterval)
     {
-        playClock_ = 0.0;
-        if (step_ < VerdictStep())
+        m_playClock = 0.0;
+        if (m_step < VerdictStep())
         {
-            ShowStep(NextStep(step_, 1));
+            ShowStep(NextStep(m_step, 1));
         }
-        playing_ = step_ < VerdictStep();
+        m_playing = m_step < VerdictStep();
     }
 }
 
 void Viewer::SetTime(double time)
 {
-    time_ = time;
-    ShowStep(step_);
+    m_time = time;
+    ShowStep(m_step);
 }
 
 void Viewer::SetCamera(Vec2 center, double zoom)
 {
-    camera_.center = center;
-    camera_.zoom = zoom;
-    cameraFit_ = false;
-    framed_ = false;
+    m_camera.center = center;
+    m_camera.zoom = zoom;
+    m_cameraFit = false;
+    m_framed = false;
 }
 
 void Viewer::PanCamera(float dx, float dy)
 {
-    camera_ = Pan(camera_, dx, dy);
-    cameraFit_ = false;
-    framed_ = false;
+    m_camera = Pan(m_camera, dx, dy);
+    m_cameraFit = false;
+    m_framed = false;
 }
 
 void Viewer::ZoomCamera(ScreenPoint fixed, double factor)
 {
-    camera_ = ZoomAbout(camera_, fixed, factor);
-    cameraFit_ = false;
-    framed_ = false;
+    m_camera = ZoomAbout(m_camera, fixed, factor);
+    m_cameraFit = false;
+    m_framed = false;
 }
 
 bool Viewer::PlaceCanvas(ScreenPoint origin, int width, int height)
 {
-    canvasOrigin_ = origin;
-    if (canvasSized_ && width == canvasWidth_ && height == canvasHeight_)
+    m_canvasOrigin = origin;
+    if (m_canvasSized && width == m_canvasWidth && height == m_canvasHeight)
     {
         return false;
     }
-    canvasWidth_ = width;
-    canvasHeight_ = height;
-    canvasSized_ = true;
+    m_canvasWidth = width;
+    m_canvasHeight = height;
+    m_canvasSized = true;
     return true;
 }
 
@@ -289,23 +289,23 @@ void Viewer::WriteView(Scene& saved) const
 {
     saved.hasView = true;
     SceneView& view = saved.view;
-    view.fit = cameraFit_;
-    if (!cameraFit_)
+    view.fit = m_cameraFit;
+    if (!m_cameraFit)
     {
         // Within what a scene file accepts, so that the saved file opens again (a fit to a huge or tiny pair can
         // leave the camera beyond them).
-        view.center = {std::clamp(camera_.center.x, -kMaxSceneValue, kMaxSceneValue),
-                       std::clamp(camera_.center.y, -kMaxSceneValue, kMaxSceneValue)};
-        view.zoom = std::clamp(camera_.zoom, kMinViewZoom, kMaxViewZoom);
+        view.center = {std::clamp(m_camera.center.x, -kMaxSceneValue, kMaxSceneValue),
+                       std::clamp(m_camera.center.y, -kMaxSceneValue, kMaxSceneValue)};
+        view.zoom = std::clamp(m_camera.zoom, kMinViewZoom, kMaxViewZoom);
     }
-    view.width = canvasWidth_;
-    view.height = canvasHeight_;
-    WriteChoices(choices_, view);
+    view.width = m_canvasWidth;
+    view.height = m_canvasHeight;
+    WriteChoices(m_choices, view);
     if (TestsPair())
     {
         // The pair tested, named as in the scene it was tested on.
-        view.bodyA = studied_.bodies[static_cast<size_t>(setup_.study.bodyA)].name;
-        view.bodyB = studied_.bodies[static_cast<size_t>(setup_.study.bodyB)].name;
+        view.bodyA = m_studied.bodies[static_cast<size_t>(m_setup.study.bodyA)].name;
+        view.bodyB = m_studied.bodies[static_cast<size_t>(m_setup.study.bodyB)].name;
         auto saves = [&](const std::string& name) {
             return std::any_of(saved.bodies.begin(), saved.bodies.end(), [&](const Body& b) { return b.name == name; });
         };
@@ -315,8 +315,8 @@ void Viewer::WriteView(Scene& saved) const
             view.bodyB.clear();
         }
     }
-    view.step = step_;
-    view.time = time_;
+    view.step = m_step;
+    view.time = m_time;
 }
 
 } // namespace satviz

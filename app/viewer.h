@@ -30,9 +30,9 @@ class Viewer
     void Reset(const Scene& scene);
 
     /// The choices of what is shown.
-    const ViewChoices& Choices() const { return choices_; }
+    const ViewChoices& Choices() const { return m_choices; }
     /// Takes other choices (a change in the panels, undo, redo); Refresh then tests the pair again.
-    void SetChoices(const ViewChoices& choices) { choices_ = choices; }
+    void SetChoices(const ViewChoices& choices) { m_choices = choices; }
 
     /// Tests the pair of `scene` again, keeping the verdict shown if it was, else the step where it still exists; a
     /// pair that no longer exists is dropped from the choices (the first two bodies are shown). A pair of more
@@ -45,27 +45,27 @@ class Viewer
     /// True, once, when the scene changed while the worker thread tested it: Refresh should test it again.
     bool TakeRetest();
     /// True while a test of the pair runs on the worker thread.
-    bool Studying() const { return job_ != nullptr; }
+    bool Studying() const { return m_job != nullptr; }
     /// Vertices of the chosen pair of `scene` (a circle counts one).
     int PairVertices(const Scene& scene) const;
     /// The pair's queries and the figure of the last finished test.
-    const FigureSetup& Setup() const { return setup_; }
+    const FigureSetup& Setup() const { return m_setup; }
     /// True when the last finished test is of a pair: a figure of one body (a decomposition or a slice of a scene
     /// that holds that body alone) has a figure but no pair, no steps and nothing to inspect.
-    bool TestsPair() const { return setup_.Ok() && setup_.study.bodyA >= 0 && setup_.study.bodyB >= 0; }
+    bool TestsPair() const { return m_setup.Ok() && m_setup.study.bodyA >= 0 && m_setup.study.bodyB >= 0; }
     /// The scene that Setup() describes: the current one, or the one before the edits whose test still runs.
-    const Scene& Studied() const { return studied_; }
+    const Scene& Studied() const { return m_studied; }
     /// The figure to paint now: the last test's, with the camera, the step and the stepped world.
     Figure CurrentFigure() const;
     /// The stepped world the world's layers draw (not owned; it outlives the viewer's use of it); null: none.
-    void SetSim(const SimRecord* sim) { sim_ = sim; }
+    void SetSim(const SimRecord* sim) { m_sim = sim; }
     /// Shows the instant of hit `hit` of the stepped world's step (Figure::hit); -1: every hit.
-    void SetHit(int hit) { hit_ = hit; }
+    void SetHit(int hit) { m_hit = hit; }
     /// The hit whose instant is shown, -1 for none.
-    int Hit() const { return hit_; }
+    int Hit() const { return m_hit; }
 
     /// The trace step shown, from 0.
-    int Step() const { return step_; }
+    int Step() const { return m_step; }
     /// Shows trace step `step`; one that does not exist shows the verdict.
     void ShowStep(int step);
     /// The last step, the verdict: the pair's SAT test's (PairStudy::VerdictStep), or for a concave pair the
@@ -75,7 +75,7 @@ class Viewer
     /// for a concave pair the next piece step.
     int NextStep(int step, int direction) const;
     /// True while stepping automatically.
-    bool Playing() const { return playing_; }
+    bool Playing() const { return m_playing; }
     /// Starts or stops stepping automatically; starting at the verdict starts from the first step (that is not a
     /// face decided without evaluation, PairStudy::NextStep).
     void TogglePlay();
@@ -83,27 +83,27 @@ class Viewer
     /// PairStudy::NextStep), stopping at the verdict.
     void Advance(double seconds);
     /// While playing, the seconds until Advance shows the next step.
-    double SecondsUntilNextStep() const { return std::max(0.0, kPlayInterval - playClock_); }
+    double SecondsUntilNextStep() const { return std::max(0.0, kPlayInterval - m_playClock); }
     /// Sweeps: the time at which the moving bodies are drawn, in [0, 1]; -1: not drawn.
-    double Time() const { return time_; }
+    double Time() const { return m_time; }
     /// Draws the moving bodies at time `time` in [0, 1]; -1: not drawn.
     void SetTime(double time);
 
     /// The canvas camera.
-    const View& Camera() const { return camera_; }
+    const View& Camera() const { return m_camera; }
     /// True while the camera follows the fit of the pair (until the user pans or zooms).
-    bool CameraFit() const { return cameraFit_; }
+    bool CameraFit() const { return m_cameraFit; }
     /// True while the camera shows the framing of the scene's view block (its centre and zoom, made for a figure
     /// of its width and height) scaled to fit the canvas, until the user pans, zooms or fits the pair.
-    bool CameraFramed() const { return framed_; }
+    bool CameraFramed() const { return m_framed; }
     /// Lets the camera follow the fit of the pair again, from the next Refresh.
     void FitCamera()
     {
-        cameraFit_ = true;
-        framed_ = false;
+        m_cameraFit = true;
+        m_framed = false;
     }
     /// Holds the camera where it is (the scene changes under the pointer).
-    void HoldCamera() { cameraFit_ = false; }
+    void HoldCamera() { m_cameraFit = false; }
     /// Puts the camera's centre at world point `center`, `zoom` pixels per unit, and holds it there.
     void SetCamera(Vec2 center, double zoom);
     /// Moves the camera so the world follows a drag of (dx, dy) pixels, and holds it there.
@@ -115,11 +115,11 @@ class Viewer
     /// its first frame): Refresh then fits the figure to it.
     bool PlaceCanvas(ScreenPoint origin, int width, int height);
     /// The canvas's top-left corner in the window, in pixels.
-    ScreenPoint CanvasOrigin() const { return canvasOrigin_; }
+    ScreenPoint CanvasOrigin() const { return m_canvasOrigin; }
     /// The canvas width in pixels.
-    int CanvasWidth() const { return canvasWidth_; }
+    int CanvasWidth() const { return m_canvasWidth; }
     /// The canvas height in pixels.
-    int CanvasHeight() const { return canvasHeight_; }
+    int CanvasHeight() const { return m_canvasHeight; }
 
     /// Writes what is shown into the view block of `saved` (the document's scene): the camera (or "fit"), the
     /// canvas size, the choices, the pair tested, the step and the time.
@@ -140,26 +140,26 @@ class Viewer
 
     void Adopt(FigureSetup fresh, Scene studied);
 
-    int backgroundVertices_;
-    const SimRecord* sim_ = nullptr;
-    int hit_ = -1;
-    ViewChoices choices_;
-    FigureSetup setup_;
-    Scene studied_;
-    std::shared_ptr<StudyJob> job_;
-    bool retest_ = false;
-    int step_ = 0;
-    bool playing_ = false;
-    double playClock_ = 0.0;
-    double time_ = -1.0;
-    View camera_;
-    bool cameraFit_ = true;
-    bool framed_ = false;
-    SceneView frame_; // the scene's own framing, while framed_
-    ScreenPoint canvasOrigin_{};
-    int canvasWidth_ = 800;
-    int canvasHeight_ = 600;
-    bool canvasSized_ = false;
+    int m_backgroundVertices;
+    const SimRecord* m_sim = nullptr;
+    int m_hit = -1;
+    ViewChoices m_choices;
+    FigureSetup m_setup;
+    Scene m_studied;
+    std::shared_ptr<StudyJob> m_job;
+    bool m_retest = false;
+    int m_step = 0;
+    bool m_playing = false;
+    double m_playClock = 0.0;
+    double m_time = -1.0;
+    View m_camera;
+    bool m_cameraFit = true;
+    bool m_framed = false;
+    SceneView m_frame; // the scene's own framing, while m_framed
+    ScreenPoint m_canvasOrigin{};
+    int m_canvasWidth = 800;
+    int m_canvasHeight = 600;
+    bool m_canvasSized = false;
 };
 
 } // namespace satviz

@@ -49,26 +49,26 @@ bool AddFigureFonts(ImFontAtlas& atlas, FigureFonts& fonts, std::string& error)
 
 ImDrawListCanvas::ImDrawListCanvas(ImDrawList* list, const FigureFonts& fonts, ImVec2 origin,
                                    std::function<ImDrawList*()> more)
-    : list_(list), more_(std::move(more)), fonts_(fonts), origin_(origin)
+    : m_list(list), m_more(std::move(more)), m_fonts(fonts), m_origin(origin)
 {
 }
 
 ImDrawList* ImDrawListCanvas::Target(int vertices)
 {
     constexpr int kLimit = 65535;
-    if (list_->_VtxCurrentIdx + static_cast<unsigned>(vertices) < kLimit)
+    if (m_list->_VtxCurrentIdx + static_cast<unsigned>(vertices) < kLimit)
     {
-        return list_;
+        return m_list;
     }
-    if (more_ && vertices < kLimit)
+    if (m_more && vertices < kLimit)
     {
-        if (ImDrawList* next = more_())
+        if (ImDrawList* next = m_more())
         {
-            list_ = next;
-            return list_;
+            m_list = next;
+            return m_list;
         }
     }
-    ++dropped_;
+    ++m_dropped;
     return nullptr;
 }
 
@@ -77,13 +77,13 @@ ImFont* ImDrawListCanvas::FontOf(TextStyle style) const
     switch (style)
     {
     case TextStyle::Label:
-        return fonts_.label;
+        return m_fonts.label;
     case TextStyle::Body:
-        return fonts_.body;
+        return m_fonts.body;
     case TextStyle::Heading:
-        return fonts_.heading;
+        return m_fonts.heading;
     }
-    return fonts_.body;
+    return m_fonts.body;
 }
 
 void ImDrawListCanvas::Segment(ScreenPoint a, ScreenPoint b, Color color, float thickness)
@@ -102,12 +102,12 @@ void ImDrawListCanvas::Polyline(const ScreenPoint* points, int count, bool close
     }
     if (ImDrawList* list = Target(Estimate(count)))
     {
-        scratch_.resize(count);
+        m_scratch.resize(count);
         for (int i = 0; i < count; ++i)
         {
-            scratch_[i] = P(points[i]);
+            m_scratch[i] = P(points[i]);
         }
-        list->AddPolyline(scratch_.Data, count, ToImColor(color), closed ? ImDrawFlags_Closed : ImDrawFlags_None,
+        list->AddPolyline(m_scratch.Data, count, ToImColor(color), closed ? ImDrawFlags_Closed : ImDrawFlags_None,
                           thickness);
     }
 }
@@ -131,17 +131,17 @@ void ImDrawListCanvas::FillConvex(const ScreenPoint* points, int count, Color co
         const ScreenPoint& q = points[(i + 1) % count];
         area += static_cast<double>(p.x) * q.y - static_cast<double>(q.x) * p.y;
     }
-    scratch_.resize(count);
+    m_scratch.resize(count);
     for (int i = 0; i < count; ++i)
     {
-        scratch_[i] = P(points[area >= 0.0 ? i : count - 1 - i]);
+        m_scratch[i] = P(points[area >= 0.0 ? i : count - 1 - i]);
     }
-    list->AddConvexPolyFilled(scratch_.Data, count, ToImColor(color));
+    list->AddConvexPolyFilled(m_scratch.Data, count, ToImColor(color));
 }
 
 void ImDrawListCanvas::FillOutlined(const ScreenPoint* points, int count, Color fill, Color outline, float thickness)
 {
-    if (!plainUnderOutlines_ || count < 3)
+    if (!m_plainUnderOutlines || count < 3)
     {
         Canvas::FillOutlined(points, count, fill, outline, thickness);
         return;
@@ -174,12 +174,12 @@ void ImDrawListCanvas::FillCircle(ScreenPoint center, float radius, Color color)
 
 void ImDrawListCanvas::FillRect(ScreenPoint min, ScreenPoint max, Color color)
 {
-    if (clear_ != nullptr && (color & 0xFFu) == 0xFFu && (max.x - min.x) * (max.y - min.y) >= kClearArea)
+    if (m_clear != nullptr && (color & 0xFFu) == 0xFFu && (max.x - min.x) * (max.y - min.y) >= kClearArea)
     {
         if (ImDrawList* list = Target(4))
         {
             list->PushClipRect(P(min), P(max), true);
-            list->AddCallback(clear_, reinterpret_cast<void*>(static_cast<uintptr_t>(color)));
+            list->AddCallback(m_clear, reinterpret_cast<void*>(static_cast<uintptr_t>(color)));
             list->PopClipRect();
             return;
         }

@@ -200,7 +200,7 @@ bool OnItsSide(bool onSide, ScreenPoint anchor, float dx, float dy, const Screen
 
 } // namespace
 
-LabelPlacer::LabelPlacer(Canvas& canvas, float width, float height) : canvas_(canvas), width_(width), height_(height) {}
+LabelPlacer::LabelPlacer(Canvas& canvas, float width, float height) : m_canvas(canvas), m_width(width), m_height(height) {}
 
 LabelPlacer::LabelPlacer(Canvas& canvas, const Figure& figure)
     : LabelPlacer(canvas, static_cast<float>(figure.view.width), static_cast<float>(figure.view.height))
@@ -213,23 +213,23 @@ LabelPlacer::LabelPlacer(Canvas& canvas, const Figure& figure)
 
 void LabelPlacer::Reserve(const ScreenRect& rect)
 {
-    taken_.push_back(rect);
+    m_taken.push_back(rect);
 }
 
 void LabelPlacer::ReserveBand(const ScreenRect& rect)
 {
-    taken_.push_back(rect);
-    bands_.push_back(rect);
+    m_taken.push_back(rect);
+    m_bands.push_back(rect);
 }
 
 void LabelPlacer::ReserveShape(const std::vector<ScreenPoint>& outline)
 {
-    shapes_.push_back(outline);
+    m_shapes.push_back(outline);
 }
 
 void LabelPlacer::ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, LabelRank from)
 {
-    lines_.push_back({a, b, thickness, from});
+    m_lines.push_back({a, b, thickness, from});
 }
 
 bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
@@ -237,15 +237,15 @@ bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
 {
     // A number whose vertex or edge cannot be seen would name nothing.
     const bool hidden =
-        anchor.x < 0.0f || anchor.y < 0.0f || anchor.x > width_ || anchor.y > height_ ||
-        std::any_of(bands_.begin(), bands_.end(), [&](const ScreenRect& band) {
+        anchor.x < 0.0f || anchor.y < 0.0f || anchor.x > m_width || anchor.y > m_height ||
+        std::any_of(m_bands.begin(), m_bands.end(), [&](const ScreenRect& band) {
             return anchor.x >= band.minX && anchor.x <= band.maxX && anchor.y >= band.minY && anchor.y <= band.maxY;
         });
     if (hidden && MayLeaveOut(rank))
     {
         return false;
     }
-    labels_.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}});
+    m_labels.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}});
     return true;
 }
 
@@ -258,18 +258,18 @@ bool LabelPlacer::PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoin
     }
     // An anchor inside the other body (a shape contained in the other, a corner pushed into it) has no outside
     // near it: its label stays beside it rather than at the end of a long leader line, off that body's edges.
-    labels_.back().avoid = other;
-    labels_.back().edgesOnly = InsideConvex(other, anchor);
+    m_labels.back().avoid = other;
+    m_labels.back().edgesOnly = InsideConvex(other, anchor);
     return true;
 }
 
 void LabelPlacer::AlsoAt(std::vector<ScreenPoint> anchors)
 {
-    if (labels_.empty())
+    if (m_labels.empty())
     {
         return;
     }
-    Label& label = labels_.back();
+    Label& label = m_labels.back();
     // An anchor in the other body would put the label there, where it reads as that body's, unless the label's own
     // anchor lies there too.
     if (!label.avoid.empty() && !label.edgesOnly)
@@ -283,24 +283,24 @@ void LabelPlacer::AlsoAt(std::vector<ScreenPoint> anchors)
 
 void LabelPlacer::KeepOnSide()
 {
-    if (!labels_.empty())
+    if (!m_labels.empty())
     {
-        labels_.back().onSide = true;
+        m_labels.back().onSide = true;
     }
 }
 
 void LabelPlacer::Centre()
 {
-    if (!labels_.empty())
+    if (!m_labels.empty())
     {
-        labels_.back().centred = true;
+        m_labels.back().centred = true;
     }
 }
 
 bool LabelPlacer::Inside(const ScreenRect& rect) const
 {
-    return rect.minX >= kSideMargin && rect.minY >= kMargin && rect.maxX <= width_ - kSideMargin &&
-           rect.maxY <= height_ - kMargin;
+    return rect.minX >= kSideMargin && rect.minY >= kMargin && rect.maxX <= m_width - kSideMargin &&
+           rect.maxY <= m_height - kMargin;
 }
 
 LabelPlacer::LeaderLine LabelPlacer::Leader(ScreenPoint anchor, const ScreenRect& rect)
@@ -325,10 +325,10 @@ bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
     // Under a label's halo the line would vanish and seem to lead to that label; under a band, from nowhere. The
     // marks at the anchor (a contact point, two close ones that share a label, an arrow head) are where it starts.
     const ScreenRect start{anchor.x - 8.0f, anchor.y - 8.0f, anchor.x + 8.0f, anchor.y + 8.0f};
-    for (size_t k = 0; k < taken_.size(); ++k)
+    for (size_t k = 0; k < m_taken.size(); ++k)
     {
-        const ScreenRect& other = taken_[k];
-        const bool label = k >= reserved_;
+        const ScreenRect& other = m_taken[k];
+        const bool label = k >= m_reserved;
         if (!label && other.Overlaps(start))
         {
             continue;
@@ -350,16 +350,16 @@ bool LabelPlacer::Free(const ScreenRect& rect, float spacing, LabelRank rank, bo
     // that room (the first pass, which also keeps a space beside every label).
     const float room = rank == LabelRank::Name && spacing > 0.0f ? kNameRoom : 0.0f;
     const ScreenRect spaced{foot.minX - spacing - room, foot.minY - room, foot.maxX + spacing + room, foot.maxY + room};
-    if (std::any_of(taken_.begin(), taken_.end(), [&](const ScreenRect& other) { return other.Overlaps(spaced); }))
+    if (std::any_of(m_taken.begin(), m_taken.end(), [&](const ScreenRect& other) { return other.Overlaps(spaced); }))
     {
         return false;
     }
-    if (std::any_of(shapes_.begin(), shapes_.end(),
+    if (std::any_of(m_shapes.begin(), m_shapes.end(),
                     [&](const std::vector<ScreenPoint>& shape) { return RectMeetsConvex(foot, shape); }))
     {
         return false;
     }
-    for (const Line& line : lines_)
+    for (const Line& line : m_lines)
     {
         if (rank < line.from && !everyLine)
         {
@@ -380,7 +380,7 @@ void LabelPlacer::Flush(Color halo)
 {
     // The most important first; labels of one rank in the order they were added.
     std::vector<const Label*> order;
-    for (const Label& label : labels_)
+    for (const Label& label : m_labels)
     {
         order.push_back(&label);
     }
@@ -393,10 +393,10 @@ void LabelPlacer::Flush(Color halo)
         ScreenPoint from; // the anchor it sits beside
     };
     std::vector<Placed> placed;
-    reserved_ = taken_.size(); // the marks, panels and lines reserved; the labels' footprints follow
+    m_reserved = m_taken.size(); // the marks, panels and lines reserved; the labels' footprints follow
     for (const Label* label : order)
     {
-        const ScreenPoint size = canvas_.MeasureText(label->text, label->style);
+        const ScreenPoint size = m_canvas.MeasureText(label->text, label->style);
         const bool directed = label->dx != 0.0f || label->dy != 0.0f;
         const double start = directed ? std::atan2(label->dy, label->dx) : 0.0;
         ScreenRect chosen{};
@@ -521,17 +521,17 @@ void LabelPlacer::Flush(Color halo)
             // No free place: the preferred one, kept inside the image.
             chosen = Around(label->anchor, size, start, label->distance);
             const float shiftX =
-                std::clamp(chosen.minX, kSideMargin, std::max(kSideMargin, width_ - kSideMargin - size.x)) -
+                std::clamp(chosen.minX, kSideMargin, std::max(kSideMargin, m_width - kSideMargin - size.x)) -
                 chosen.minX;
             const float shiftY =
-                std::clamp(chosen.minY, kMargin, std::max(kMargin, height_ - kMargin - size.y)) - chosen.minY;
+                std::clamp(chosen.minY, kMargin, std::max(kMargin, m_height - kMargin - size.y)) - chosen.minY;
             chosen = {chosen.minX + shiftX, chosen.minY + shiftY, chosen.maxX + shiftX, chosen.maxY + shiftY};
         }
         // A body's name keeps more room around it: a number or an edge name close beside it reads as part of it
         // ("plank e0").
         const ScreenRect foot = Footprint(chosen);
         const float room = label->rank == LabelRank::Name ? kNameRoom : 0.0f;
-        taken_.push_back({foot.minX - room, foot.minY - room, foot.maxX + room, foot.maxY + room});
+        m_taken.push_back({foot.minX - room, foot.minY - room, foot.maxX + room, foot.maxY + room});
         placed.push_back({label, chosen, leader, from});
         if (leader)
         {
@@ -539,11 +539,11 @@ void LabelPlacer::Flush(Color halo)
             const LeaderLine line = Leader(from, chosen);
             if (line.drawn)
             {
-                lines_.push_back({line.from, line.to, 1.0f, LabelRank::Vertex});
+                m_lines.push_back({line.from, line.to, 1.0f, LabelRank::Vertex});
             }
         }
     }
-    canvas_.BeginGroup("labels");
+    m_canvas.BeginGroup("labels");
     for (const Placed& p : placed)
     {
         if (p.leader)
@@ -551,16 +551,16 @@ void LabelPlacer::Flush(Color halo)
             const LeaderLine line = Leader(p.from, p.rect);
             if (line.drawn)
             {
-                canvas_.Segment(line.from, line.to, WithAlpha(p.label->color, 0.7f), 1.0f);
+                m_canvas.Segment(line.from, line.to, WithAlpha(p.label->color, 0.7f), 1.0f);
             }
         }
     }
     for (const Placed& p : placed)
     {
-        canvas_.FillRect({p.rect.minX - kHalo, p.rect.minY}, {p.rect.maxX + kHalo, p.rect.maxY}, halo);
-        canvas_.Text({p.rect.minX, p.rect.minY}, p.label->text, p.label->style, p.label->color);
+        m_canvas.FillRect({p.rect.minX - kHalo, p.rect.minY}, {p.rect.maxX + kHalo, p.rect.maxY}, halo);
+        m_canvas.Text({p.rect.minX, p.rect.minY}, p.label->text, p.label->style, p.label->color);
     }
-    labels_.clear();
+    m_labels.clear();
 }
 
 } // namespace satviz

@@ -105,15 +105,15 @@ class LabelPlacer
     bool LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const;
     bool Free(const ScreenRect& rect, float spacing, LabelRank rank, bool everyLine = false) const;
     bool Inside(const ScreenRect& rect) const;
-    Canvas& canvas_;
-    float width_;
-    float height_;
-    std::vector<ScreenRect> taken_;
-    size_t reserved_ = 0; // while placing: taken_ holds the reserved regions before this index, labels after it
-    std::vector<ScreenRect> bands_;
-    std::vector<Line> lines_;
-    std::vector<std::vector<ScreenPoint>> shapes_;
-    std::vector<Label> labels_;
+    Canvas& m_canvas;
+    float m_width;
+    float m_height;
+    std::vector<ScreenRect> m_taken;
+    size_t m_reserved = 0; // while placing: m_taken holds the reserved regions before this index, labels after it
+    std::vector<ScreenRect> m_bands;
+    std::vector<Line> m_lines;
+    std::vector<std::vector<ScreenPoint>> m_shapes;
+    std::vector<Label> m_labels;
 };
 
 } // namespace satviz

@@ -435,119 +435,119 @@ class Painter
 {
   public:
     Painter(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure)
-        : canvas_(canvas), scene_(scene), study_(study), figure_(figure), view_(figure.view),
-          layout_(LayoutFigure(study, figure.layers, figure.view.width, figure.view.height, !figure.caption.empty())),
-          labels_(canvas, figure),
-          bodyA_(scene.bodies[static_cast<size_t>(study.bodyA)]), bodyB_(scene.bodies[static_cast<size_t>(study.bodyB)])
+        : m_canvas(canvas), m_scene(scene), m_study(study), m_figure(figure), m_view(figure.view),
+          m_layout(LayoutFigure(study, figure.layers, figure.view.width, figure.view.height, !figure.caption.empty())),
+          m_labels(canvas, figure),
+          m_bodyA(scene.bodies[static_cast<size_t>(study.bodyA)]), m_bodyB(scene.bodies[static_cast<size_t>(study.bodyB)])
     {
-        bounds_ = {-4.0f, -4.0f, static_cast<float>(view_.width) + 4.0f, static_cast<float>(view_.height) + 4.0f};
-        points_ = PairPoints(scene, study);
-        PairDisc(points_, discCenter_, discRadius_);
-        verdict_ = figure.step == study.VerdictStep();
-        axisIndex_ = verdict_ ? DecidingAxis(study) : figure.step;
-        if (axisIndex_ >= 0 && axisIndex_ < study.AxisCount())
+        m_bounds = {-4.0f, -4.0f, static_cast<float>(m_view.width) + 4.0f, static_cast<float>(m_view.height) + 4.0f};
+        m_points = PairPoints(scene, study);
+        PairDisc(m_points, m_discCenter, m_discRadius);
+        m_verdict = figure.step == study.VerdictStep();
+        m_axisIndex = m_verdict ? DecidingAxis(study) : figure.step;
+        if (m_axisIndex >= 0 && m_axisIndex < study.AxisCount())
         {
-            axis_ = ShowAxis(study, axisIndex_);
-            hasAxis_ = true;
-            if (verdict_)
+            m_axis = ShowAxis(study, m_axisIndex);
+            m_hasAxis = true;
+            if (m_verdict)
             {
-                SetWholeWindow(study, axis_);
+                SetWholeWindow(study, m_axis);
             }
         }
     }
 
     void Paint()
     {
-        canvas_.BeginGroup("background");
-        canvas_.FillRect({0.0f, 0.0f}, {static_cast<float>(view_.width), static_cast<float>(view_.height)},
+        m_canvas.BeginGroup("background");
+        m_canvas.FillRect({0.0f, 0.0f}, {static_cast<float>(m_view.width), static_cast<float>(m_view.height)},
                          palette::kBackground);
-        if ((figure_.layers & ~kLayerCaption) == kLayerLegend)
+        if ((m_figure.layers & ~kLayerCaption) == kLayerLegend)
         {
             // The legend alone: the key to every mark, in the middle of the scene area.
             const std::vector<LegendMark> marks = AllLegendMarks();
-            const ScreenPoint size = LegendSize(canvas_, marks);
-            PaintLegend(canvas_,
+            const ScreenPoint size = LegendSize(m_canvas, marks);
+            PaintLegend(m_canvas,
                         {std::round(0.5f * (Width() - size.x)),
-                         std::round(0.5f * (layout_.sceneTop + layout_.sceneBottom - size.y))},
+                         std::round(0.5f * (m_layout.sceneTop + m_layout.sceneBottom - size.y))},
                         marks);
-            if (Has(figure_, kLayerCaption))
+            if (Has(m_figure, kLayerCaption))
             {
-                caption_ = LayOutCaption();
+                m_caption = LayOutCaption();
                 Caption();
             }
             return;
         }
         Grid();
         ReserveBands();
-        if (Has(figure_, kLayerVoronoi))
+        if (Has(m_figure, kLayerVoronoi))
         {
-            PaintVoronoiRegions(canvas_, view_, scene_, study_);
+            PaintVoronoiRegions(m_canvas, m_view, m_scene, m_study);
         }
-        if (Has(figure_, kLayerAxes))
+        if (Has(m_figure, kLayerAxes))
         {
             CandidateAxes();
         }
-        if (Has(figure_, kLayerShapes))
+        if (Has(m_figure, kLayerShapes))
         {
             Shapes();
         }
-        if (Has(figure_, kLayerNormals))
+        if (Has(m_figure, kLayerNormals))
         {
             Normals();
         }
-        PaintWorldScene(canvas_, labels_, view_, scene_, figure_, bounds_);
-        if (Has(figure_, kLayerSwept) && study_.sweep)
+        PaintWorldScene(m_canvas, m_labels, m_view, m_scene, m_figure, m_bounds);
+        if (Has(m_figure, kLayerSwept) && m_study.sweep)
         {
             Motion();
         }
-        if (Has(figure_, kLayerGhost) && study_.sweep)
+        if (Has(m_figure, kLayerGhost) && m_study.sweep)
         {
             Ghosts();
         }
-        if (hasAxis_ && Has(figure_, kLayerProjection) && !axis_.skipped)
+        if (m_hasAxis && Has(m_figure, kLayerProjection) && !m_axis.skipped)
         {
             AxisInScene();
         }
-        else if (hasAxis_ && Has(figure_, kLayerProjection))
+        else if (m_hasAxis && Has(m_figure, kLayerProjection))
         {
             // A face skipped as anti-parallel to one already tested: its caption names it, so it is marked faintly,
             // without an axis line (its axis was tested with the other face).
-            canvas_.BeginGroup("projection");
-            AxisSource(axis_.Ref(), WithAlpha(palette::kInk, 0.4f));
+            m_canvas.BeginGroup("projection");
+            AxisSource(m_axis.Ref(), WithAlpha(palette::kInk, 0.4f));
         }
         // After the projection, whose bars would hide the best axis's arrow heads where they cross.
-        if (hasAxis_ && Has(figure_, kLayerBest))
+        if (m_hasAxis && Has(m_figure, kLayerBest))
         {
             BestSoFar();
         }
-        if (hasAxis_ && Has(figure_, kLayerExit) && axis_.separating && !axis_.swept)
+        if (m_hasAxis && Has(m_figure, kLayerExit) && m_axis.separating && !m_axis.swept)
         {
             SeparatingLine();
         }
-        if (verdict_ && Has(figure_, kLayerMtv))
+        if (m_verdict && Has(m_figure, kLayerMtv))
         {
             Mtv();
         }
-        if (verdict_ && Has(figure_, kLayerContacts))
+        if (m_verdict && Has(m_figure, kLayerContacts))
         {
             Contacts();
         }
-        if (Has(figure_, kLayerVoronoi))
+        if (Has(m_figure, kLayerVoronoi))
         {
-            MarkVoronoiRegions(canvas_, labels_, view_, scene_, study_);
+            MarkVoronoiRegions(m_canvas, m_labels, m_view, m_scene, m_study);
         }
-        if (Has(figure_, kLayerLabels))
+        if (Has(m_figure, kLayerLabels))
         {
             Labels();
         }
         std::vector<LegendMark> legend;
         ScreenPoint legendAt{};
-        if (Has(figure_, kLayerLegend))
+        if (Has(m_figure, kLayerLegend))
         {
             legend = UsedMarks();
-            legendAt = LegendCorner(LegendSize(canvas_, legend));
+            legendAt = LegendCorner(LegendSize(m_canvas, legend));
         }
-        if (Has(figure_, kLayerShapes))
+        if (Has(m_figure, kLayerShapes))
         {
             // A label astride a body's outline hides it under its halo (a small ball's name over the ball) and
             // reads as either body's: labels keep off both outlines.
@@ -556,49 +556,49 @@ class Painter
                 const std::vector<ScreenPoint> outline = OutlineOf(s);
                 for (size_t i = 0; i < outline.size(); ++i)
                 {
-                    labels_.ReserveLine(outline[i], outline[(i + 1) % outline.size()], 1.0f);
+                    m_labels.ReserveLine(outline[i], outline[(i + 1) % outline.size()], 1.0f);
                 }
             }
         }
-        labels_.Flush(WithAlpha(palette::kBackground, 0.72f));
-        if (hasMtvArrow_)
+        m_labels.Flush(WithAlpha(palette::kBackground, 0.72f));
+        if (m_hasMtvArrow)
         {
             MtvArrow();
         }
-        if (Has(figure_, kLayerMinkowski))
+        if (Has(m_figure, kLayerMinkowski))
         {
             Minkowski();
         }
-        PaintLegend(canvas_, legendAt, legend);
-        if (layout_.panelTop < layout_.worldTop)
+        PaintLegend(m_canvas, legendAt, legend);
+        if (m_layout.panelTop < m_layout.worldTop)
         {
             Panel();
         }
-        PaintWorldPanels(canvas_, scene_, figure_, layout_.worldTop);
-        if (Has(figure_, kLayerCaption))
+        PaintWorldPanels(m_canvas, m_scene, m_figure, m_layout.worldTop);
+        if (Has(m_figure, kLayerCaption))
         {
             Caption();
         }
     }
 
   private:
-    ScreenPoint At(Vec2 world) const { return ToScreen(view_, world); }
-    float Width() const { return static_cast<float>(view_.width); }
-    float Height() const { return static_cast<float>(view_.height); }
+    ScreenPoint At(Vec2 world) const { return ToScreen(m_view, world); }
+    float Width() const { return static_cast<float>(m_view.width); }
+    float Height() const { return static_cast<float>(m_view.height); }
     Color ColorOf(int shape) const { return shape == 0 ? palette::kShapeA : palette::kShapeB; }
     Color InkOf(int shape) const { return shape == 0 ? palette::kShapeA : palette::kShapeBInk; }
-    const Body& BodyOf(int shape) const { return shape == 0 ? bodyA_ : bodyB_; }
+    const Body& BodyOf(int shape) const { return shape == 0 ? m_bodyA : m_bodyB; }
     // A body of the pair's outline on screen, where it stands in the figure.
     std::vector<ScreenPoint> OutlineOf(int shape) const
     {
         const Body& body = BodyOf(shape);
-        return ShapeOutline(view_, body.shape, body.Xf());
+        return ShapeOutline(m_view, body.shape, body.Xf());
     }
 
     // Faint world grid at a round spacing of at least 40 pixels, with the world axes a little stronger.
     void Grid()
     {
-        const double target = 40.0 / view_.zoom;
+        const double target = 40.0 / m_view.zoom;
         const double decade = std::pow(10.0, std::floor(std::log10(target)));
         double spacing = decade;
         for (double factor : {1.0, 2.0, 5.0, 10.0})
@@ -609,59 +609,59 @@ class Painter
                 break;
             }
         }
-        const Vec2 low = ToWorld(view_, {0.0f, Height()});
-        const Vec2 high = ToWorld(view_, {Width(), 0.0f});
+        const Vec2 low = ToWorld(m_view, {0.0f, Height()});
+        const Vec2 high = ToWorld(m_view, {Width(), 0.0f});
         const Color grid = WithAlpha(palette::kFaint, 0.45f);
         for (double x = std::ceil(low.x / spacing) * spacing; x <= high.x; x += spacing)
         {
             const float sx = At({x, 0.0}).x;
-            canvas_.Segment({sx, 0.0f}, {sx, Height()}, x == 0.0 ? palette::kFaint : grid, 1.0f);
+            m_canvas.Segment({sx, 0.0f}, {sx, Height()}, x == 0.0 ? palette::kFaint : grid, 1.0f);
         }
         for (double y = std::ceil(low.y / spacing) * spacing; y <= high.y; y += spacing)
         {
             const float sy = At({0.0, y}).y;
-            canvas_.Segment({0.0f, sy}, {Width(), sy}, y == 0.0 ? palette::kFaint : grid, 1.0f);
+            m_canvas.Segment({0.0f, sy}, {Width(), sy}, y == 0.0 ? palette::kFaint : grid, 1.0f);
         }
     }
 
     // Where the Minkowski inset goes: the scene's top right corner.
     ScreenRect InsetBox() const
     {
-        const float side = std::min(220.0f, 0.42f * std::min(Width(), layout_.sceneBottom - layout_.sceneTop));
+        const float side = std::min(220.0f, 0.42f * std::min(Width(), m_layout.sceneBottom - m_layout.sceneTop));
         const float right = Width() - 10.0f;
-        const float top = layout_.sceneTop + 10.0f;
+        const float top = m_layout.sceneTop + 10.0f;
         return {right - side, top, right, top + side};
     }
 
     // The marks this figure draws, in the key's order, for the legend.
     std::vector<LegendMark> UsedMarks() const
     {
-        std::vector<LegendMark> used = used_;
-        if (Has(figure_, kLayerShapes) && scene_.bodies.size() > 2)
+        std::vector<LegendMark> used = m_used;
+        if (Has(m_figure, kLayerShapes) && m_scene.bodies.size() > 2)
         {
             used.push_back(LegendMark::Other);
         }
-        if (hasAxis_ && Has(figure_, kLayerProjection) && !axis_.skipped)
+        if (m_hasAxis && Has(m_figure, kLayerProjection) && !m_axis.skipped)
         {
-            for (int f = 0; f < axis_.faceCount; ++f)
+            for (int f = 0; f < m_axis.faceCount; ++f)
             {
-                if (axis_.faces[f].kind == AxisKind::FaceNormal)
+                if (m_axis.faces[f].kind == AxisKind::FaceNormal)
                 {
                     used.push_back(LegendMark::AxisFace);
                 }
             }
-            used.push_back(!axis_.textbook ? LegendMark::Behind
-                                           : (axis_.separation > 0.0 ? LegendMark::Gap : LegendMark::Overlap));
-            if (axis_.swept)
+            used.push_back(!m_axis.textbook ? LegendMark::Behind
+                                           : (m_axis.separation > 0.0 ? LegendMark::Gap : LegendMark::Overlap));
+            if (m_axis.swept)
             {
                 used.push_back(LegendMark::Swept);
             }
         }
-        if (hasAxis_ && axis_.swept && layout_.panelTop < Height())
+        if (m_hasAxis && m_axis.swept && m_layout.panelTop < Height())
         {
             used.push_back(LegendMark::TimeMarks);
         }
-        if (hasMtvArrow_)
+        if (m_hasMtvArrow)
         {
             used.push_back(LegendMark::Mtv);
         }
@@ -675,24 +675,24 @@ class Painter
     ScreenPoint LegendCorner(ScreenPoint size)
     {
         ScreenRect pair{INFINITY, INFINITY, -INFINITY, -INFINITY};
-        for (const auto& [p, r] : points_)
+        for (const auto& [p, r] : m_points)
         {
             const ScreenPoint q = At(p);
-            const float pr = ToPixels(view_, r);
+            const float pr = ToPixels(m_view, r);
             pair = {std::min(pair.minX, q.x - pr), std::min(pair.minY, q.y - pr), std::max(pair.maxX, q.x + pr),
                     std::max(pair.maxY, q.y + pr)};
         }
         // The axis line beside the pair and its bars.
         ScreenRect line{INFINITY, INFINITY, -INFINITY, -INFINITY};
-        if (hasAxis_ && Has(figure_, kLayerProjection) && !axis_.skipped)
+        if (m_hasAxis && Has(m_figure, kLayerProjection) && !m_axis.skipped)
         {
-            const Vec2 d = axis_.direction;
-            double lo = std::min(axis_.minA, axis_.minB) - kLinePad / view_.zoom;
-            double hi = std::max(axis_.maxA, axis_.maxB) + kLinePad / view_.zoom;
-            if (axis_.swept)
+            const Vec2 d = m_axis.direction;
+            double lo = std::min(m_axis.minA, m_axis.minB) - kLinePad / m_view.zoom;
+            double hi = std::max(m_axis.maxA, m_axis.maxB) + kLinePad / m_view.zoom;
+            if (m_axis.swept)
             {
-                lo = std::min(lo, axis_.sweptMinB);
-                hi = std::max(hi, axis_.sweptMaxB);
+                lo = std::min(lo, m_axis.sweptMinB);
+                hi = std::max(hi, m_axis.sweptMaxB);
             }
             const Vec2 base = AxisBaseInSight(d, lo, hi);
             for (const double u : {lo, hi})
@@ -708,15 +708,15 @@ class Painter
             return w * h;
         };
         const float m = 8.0f;
-        const ScreenPoint corners[4] = {{m, layout_.sceneBottom - m - size.y},
-                                        {Width() - m - size.x, layout_.sceneBottom - m - size.y},
-                                        {m, layout_.sceneTop + m},
-                                        {Width() - m - size.x, layout_.sceneTop + m}};
+        const ScreenPoint corners[4] = {{m, m_layout.sceneBottom - m - size.y},
+                                        {Width() - m - size.x, m_layout.sceneBottom - m - size.y},
+                                        {m, m_layout.sceneTop + m},
+                                        {Width() - m - size.x, m_layout.sceneTop + m}};
         ScreenPoint best = corners[0];
         float least = INFINITY;
         for (int k = 0; k < 4; ++k)
         {
-            if (k == 3 && Has(figure_, kLayerMinkowski))
+            if (k == 3 && Has(m_figure, kLayerMinkowski))
             {
                 continue;
             }
@@ -728,23 +728,23 @@ class Painter
             }
         }
         best = {std::round(best.x), std::round(best.y)};
-        labels_.ReserveBand({best.x, best.y, best.x + size.x, best.y + size.y});
+        m_labels.ReserveBand({best.x, best.y, best.x + size.x, best.y + size.y});
         return best;
     }
 
     // An arrow whose head and shaft no label may cover.
     void MarkedArrow(ScreenPoint a, ScreenPoint b, Color color, float thickness, float head)
     {
-        const ScreenRect tip = Arrow(canvas_, a, b, color, thickness, head);
-        labels_.Reserve(tip);
-        labels_.ReserveLine(a, b, thickness + 2.0f);
-        heads_.push_back(tip);
+        const ScreenRect tip = Arrow(m_canvas, a, b, color, thickness, head);
+        m_labels.Reserve(tip);
+        m_labels.ReserveLine(a, b, thickness + 2.0f);
+        m_heads.push_back(tip);
     }
 
     // Whether the segment ab runs over an arrow head drawn so far.
     bool CrossesHead(ScreenPoint a, ScreenPoint b, float thickness) const
     {
-        return std::any_of(heads_.begin(), heads_.end(), [&](const ScreenRect& head) {
+        return std::any_of(m_heads.begin(), m_heads.end(), [&](const ScreenRect& head) {
             ScreenPoint p = a;
             ScreenPoint q = b;
             const float r = 0.5f * thickness + 1.0f;
@@ -760,8 +760,8 @@ class Painter
     // The part of the image where the scene shows: below the caption band and above the number line.
     ScreenRect SceneInSight() const
     {
-        const float top = Has(figure_, kLayerCaption) ? caption_.bottom + 1.0f : 0.0f;
-        return {0.0f, top, Width(), std::min(Height(), layout_.panelTop)};
+        const float top = Has(m_figure, kLayerCaption) ? m_caption.bottom + 1.0f : 0.0f;
+        return {0.0f, top, Width(), std::min(Height(), m_layout.panelTop)};
     }
 
     // A dashed outline (where the MTV or a pitfall's push leaves a body) reads as broken, and a label on it hides
@@ -771,34 +771,34 @@ class Painter
     {
         for (size_t i = 0; i < outline.size(); ++i)
         {
-            labels_.ReserveLine(outline[i], outline[(i + 1) % outline.size()], thickness, LabelRank::Named);
+            m_labels.ReserveLine(outline[i], outline[(i + 1) % outline.size()], thickness, LabelRank::Named);
         }
     }
 
     void ReserveBands()
     {
-        if (Has(figure_, kLayerMinkowski))
+        if (Has(m_figure, kLayerMinkowski))
         {
-            labels_.ReserveBand(InsetBox());
+            m_labels.ReserveBand(InsetBox());
         }
-        if (Has(figure_, kLayerCaption))
+        if (Has(m_figure, kLayerCaption))
         {
-            caption_ = LayOutCaption();
-            labels_.ReserveBand({0.0f, 0.0f, Width(), caption_.bottom + 1.0f});
+            m_caption = LayOutCaption();
+            m_labels.ReserveBand({0.0f, 0.0f, Width(), m_caption.bottom + 1.0f});
         }
-        if (layout_.panelTop < Height())
+        if (m_layout.panelTop < Height())
         {
-            labels_.ReserveBand({0.0f, layout_.panelTop, Width(), Height()});
+            m_labels.ReserveBand({0.0f, m_layout.panelTop, Width(), Height()});
         }
     }
 
     // Every axis the full test could try: the face normals of both polygons (and the circle axes recorded).
     void CandidateAxes()
     {
-        canvas_.BeginGroup("axes");
-        const double reach = discRadius_ + kAxisGap / view_.zoom;
+        m_canvas.BeginGroup("axes");
+        const double reach = m_discRadius + kAxisGap / m_view.zoom;
         auto line = [&](Vec2 d) {
-            canvas_.Segment(At(discCenter_ - reach * d), At(discCenter_ + reach * d), palette::kFaint, 1.0f);
+            m_canvas.Segment(At(m_discCenter - reach * d), At(m_discCenter + reach * d), palette::kFaint, 1.0f);
         };
         for (int s = 0; s < 2; ++s)
         {
@@ -812,9 +812,9 @@ class Painter
                 }
             }
         }
-        if (!study_.sweep && study_.Textbook())
+        if (!m_study.sweep && m_study.Textbook())
         {
-            for (const TextbookAxis& t : study_.textbook.axes)
+            for (const TextbookAxis& t : m_study.textbook.axes)
             {
                 if (t.faces[0].kind != AxisKind::FaceNormal)
                 {
@@ -822,9 +822,9 @@ class Painter
                 }
             }
         }
-        else if (!study_.sweep)
+        else if (!m_study.sweep)
         {
-            for (const AxisTest& t : study_.trace.axes)
+            for (const AxisTest& t : m_study.trace.axes)
             {
                 if (t.axis.kind != AxisKind::FaceNormal)
                 {
@@ -836,15 +836,15 @@ class Painter
 
     void Shapes()
     {
-        canvas_.BeginGroup("shapes");
-        for (size_t i = 0; i < scene_.bodies.size(); ++i)
+        m_canvas.BeginGroup("shapes");
+        for (size_t i = 0; i < m_scene.bodies.size(); ++i)
         {
             const int index = static_cast<int>(i);
-            if (index == study_.bodyA || index == study_.bodyB)
+            if (index == m_study.bodyA || index == m_study.bodyB)
             {
                 continue;
             }
-            const Body& body = scene_.bodies[i];
+            const Body& body = m_scene.bodies[i];
             if (OffPicture(body.shape, body.Xf()))
             {
                 continue;
@@ -853,15 +853,15 @@ class Painter
             // A label on a grey body would read as that body's.
             if (!body.IsConcave())
             {
-                labels_.ReserveShape(ShapeOutline(view_, body.shape, body.Xf()));
+                m_labels.ReserveShape(ShapeOutline(m_view, body.shape, body.Xf()));
             }
             for (const ConcavePart& part : body.IsConcave() ? body.concave.parts : std::vector<ConcavePart>{})
             {
-                labels_.ReserveShape(ShapeOutline(view_, part.shape, body.Xf()));
+                m_labels.ReserveShape(ShapeOutline(m_view, part.shape, body.Xf()));
             }
         }
-        DrawBody(bodyA_, palette::kShapeA, 0.22f);
-        DrawBody(bodyB_, palette::kShapeB, 0.28f);
+        DrawBody(m_bodyA, palette::kShapeA, 0.22f);
+        DrawBody(m_bodyB, palette::kShapeB, 0.28f);
     }
 
     // A body as drawn: a concave body by its pieces, filled, its outline as written, and the seams between its
@@ -881,7 +881,7 @@ class Painter
             {
                 piece.push_back(At(TransformPoint(xf, v)));
             }
-            canvas_.FillConvex(piece.data(), static_cast<int>(piece.size()), WithAlpha(color, fill));
+            m_canvas.FillConvex(piece.data(), static_cast<int>(piece.size()), WithAlpha(color, fill));
         }
         const float dash = 6.0f;
         for (const ConcavePart& part : body.concave.parts)
@@ -899,7 +899,7 @@ class Painter
                 for (float t = 0.0f; t < length; t += 2.0f * dash)
                 {
                     const float u = t / length, w = std::min(t + dash, length) / length;
-                    canvas_.Segment({a.x + u * (b.x - a.x), a.y + u * (b.y - a.y)},
+                    m_canvas.Segment({a.x + u * (b.x - a.x), a.y + u * (b.y - a.y)},
                                     {a.x + w * (b.x - a.x), a.y + w * (b.y - a.y)}, WithAlpha(color, 0.6f), 1.0f);
                 }
             }
@@ -909,7 +909,7 @@ class Painter
         {
             outline.push_back(At(TransformPoint(xf, v)));
         }
-        canvas_.Polyline(outline.data(), static_cast<int>(outline.size()), true, color, kOutline);
+        m_canvas.Polyline(outline.data(), static_cast<int>(outline.size()), true, color, kOutline);
     }
 
     // True when the shape placed by xf lies wholly outside the picture (a body the camera does not see), judged by
@@ -931,32 +931,32 @@ class Painter
             }
         }
         const ScreenPoint at = At(center);
-        const float reach = static_cast<float>(radius * view_.zoom) + kOutline;
-        return at.x + reach < bounds_.minX || at.x - reach > bounds_.maxX || at.y + reach < bounds_.minY ||
-               at.y - reach > bounds_.maxY;
+        const float reach = static_cast<float>(radius * m_view.zoom) + kOutline;
+        return at.x + reach < m_bounds.minX || at.x - reach > m_bounds.maxX || at.y + reach < m_bounds.minY ||
+               at.y - reach > m_bounds.maxY;
     }
 
     void DrawShape(const Shape& shape, const Transform& xf, Color color, float fill)
     {
-        const std::vector<ScreenPoint> outline = ShapeOutline(view_, shape, xf);
+        const std::vector<ScreenPoint> outline = ShapeOutline(m_view, shape, xf);
         if (outline.size() >= 3)
         {
-            canvas_.FillOutlined(outline.data(), static_cast<int>(outline.size()), WithAlpha(color, fill), color,
+            m_canvas.FillOutlined(outline.data(), static_cast<int>(outline.size()), WithAlpha(color, fill), color,
                                  kOutline);
         }
         else
         {
-            canvas_.Polyline(outline.data(), static_cast<int>(outline.size()), true, color, kOutline);
+            m_canvas.Polyline(outline.data(), static_cast<int>(outline.size()), true, color, kOutline);
         }
         if (shape.type == ShapeType::Circle)
         {
-            canvas_.FillCircle(At(TransformPoint(xf, shape.circle.center)), 2.5f, color);
+            m_canvas.FillCircle(At(TransformPoint(xf, shape.circle.center)), 2.5f, color);
         }
     }
 
     void Normals()
     {
-        canvas_.BeginGroup("normals");
+        m_canvas.BeginGroup("normals");
         for (int s = 0; s < 2; ++s)
         {
             const Body& body = BodyOf(s);
@@ -1000,7 +1000,7 @@ class Painter
     // Velocity arrows and each moving shape's outline at t = 1.
     void Motion()
     {
-        canvas_.BeginGroup("swept");
+        m_canvas.BeginGroup("swept");
         for (int s = 0; s < 2; ++s)
         {
             const Body& body = BodyOf(s);
@@ -1009,12 +1009,12 @@ class Painter
                 continue;
             }
             // Where the shape would be at the end of the step; after a hit the ghost at impact says more.
-            if (study_.sweepResult.status != SweepStatus::Hit)
+            if (m_study.sweepResult.status != SweepStatus::Hit)
             {
                 const Transform end = BodyTransformAt(body, 1.0);
-                DashedOutline(canvas_, ShapeOutline(view_, body.shape, end), WithAlpha(ColorOf(s), 0.55f), 1.2f,
-                              bounds_);
-                used_.push_back(LegendMark::Dashed);
+                DashedOutline(m_canvas, ShapeOutline(m_view, body.shape, end), WithAlpha(ColorOf(s), 0.55f), 1.2f,
+                              m_bounds);
+                m_used.push_back(LegendMark::Dashed);
             }
             const Vec2 c = ShapeCenter(body.shape, body.Xf());
             ScreenPoint from = At(c);
@@ -1030,7 +1030,7 @@ class Painter
                 tip = {tip.x + side.x, tip.y + side.y};
             }
             MarkedArrow(from, tip, InkOf(s), 2.0f, 11.0f);
-            labels_.Place(tip, "v", TextStyle::Heading, InkOf(s), static_cast<float>(body.velocity.x),
+            m_labels.Place(tip, "v", TextStyle::Heading, InkOf(s), static_cast<float>(body.velocity.x),
                           static_cast<float>(-body.velocity.y), 6.0f, LabelRank::Note);
         }
     }
@@ -1041,7 +1041,7 @@ class Painter
     // where the ray from the origin along the relative motion enters it (van den Bergen; Ericson 3.11).
     void Minkowski()
     {
-        canvas_.BeginGroup("minkowski");
+        m_canvas.BeginGroup("minkowski");
         std::vector<Vec2> points;
         auto outline = [&](const Body& body) {
             std::vector<Vec2> out;
@@ -1064,25 +1064,25 @@ class Painter
             }
             return out;
         };
-        const std::vector<Vec2> a = outline(bodyA_);
-        const std::vector<Vec2> b = outline(bodyB_);
+        const std::vector<Vec2> a = outline(m_bodyA);
+        const std::vector<Vec2> b = outline(m_bodyB);
         const ScreenRect box = InsetBox();
         const float side = box.maxX - box.minX;
-        canvas_.FillRect({box.minX, box.minY}, {box.maxX, box.maxY}, WithAlpha(palette::kPanel, 0.95f));
-        canvas_.Polyline(
+        m_canvas.FillRect({box.minX, box.minY}, {box.maxX, box.maxY}, WithAlpha(palette::kPanel, 0.95f));
+        m_canvas.Polyline(
             std::vector<ScreenPoint>{
                 {box.minX, box.minY}, {box.maxX, box.minY}, {box.maxX, box.maxY}, {box.minX, box.maxY}}
                 .data(),
             4, true, palette::kFaint, 1.0f);
-        canvas_.Text({box.minX + 6.0f, box.minY + 4.0f}, "Minkowski A - B", TextStyle::Label, palette::kMuted);
+        m_canvas.Text({box.minX + 6.0f, box.minY + 4.0f}, "Minkowski A - B", TextStyle::Label, palette::kMuted);
         if (a.size() * b.size() > kMinkowskiPoints)
         {
-            canvas_.Text({box.minX + 6.0f, box.minY + 22.0f}, "too many vertices to draw", TextStyle::Label,
+            m_canvas.Text({box.minX + 6.0f, box.minY + 22.0f}, "too many vertices to draw", TextStyle::Label,
                          palette::kMuted);
             return;
         }
         // Relative to A's position, so that a pair far from the origin keeps its digits.
-        const Vec2 base = bodyA_.position - bodyB_.position;
+        const Vec2 base = m_bodyA.position - m_bodyB.position;
         for (const Vec2& p : a)
         {
             for (const Vec2& q : b)
@@ -1095,8 +1095,8 @@ class Painter
         {
             return;
         }
-        const Vec2 motion = bodyB_.velocity - bodyA_.velocity;
-        const bool sweep = study_.sweep;
+        const Vec2 motion = m_bodyB.velocity - m_bodyA.velocity;
+        const bool sweep = m_study.sweep;
         // The inset's scale: the hull, the origin and (sweeps) the ray's end, with a margin.
         Vec2 low{0.0, 0.0};
         Vec2 high{0.0, 0.0};
@@ -1126,81 +1126,81 @@ class Painter
         {
             screen.push_back(at(p));
         }
-        canvas_.FillConvex(screen.data(), static_cast<int>(screen.size()), WithAlpha(palette::kOverlap, 0.25f));
-        canvas_.Polyline(screen.data(), static_cast<int>(screen.size()), true, palette::kOverlap, 1.5f);
+        m_canvas.FillConvex(screen.data(), static_cast<int>(screen.size()), WithAlpha(palette::kOverlap, 0.25f));
+        m_canvas.Polyline(screen.data(), static_cast<int>(screen.size()), true, palette::kOverlap, 1.5f);
         const ScreenPoint o = at(origin);
-        canvas_.FillCircle(o, 3.5f, palette::kInk);
+        m_canvas.FillCircle(o, 3.5f, palette::kInk);
         // "O" goes on the side away from the arrow or the ray that leaves the origin, whose head it would hide.
         Vec2 leaving{};
-        const bool overlapping = study_.Textbook() ? study_.textbookResult.overlap : study_.manifold.overlap;
+        const bool overlapping = m_study.Textbook() ? m_study.textbookResult.overlap : m_study.manifold.overlap;
         if (sweep)
         {
             leaving = motion;
         }
         else if (overlapping)
         {
-            leaving = study_.Textbook() ? study_.textbookResult.normal : study_.manifold.normal;
+            leaving = m_study.Textbook() ? m_study.textbookResult.normal : m_study.manifold.normal;
         }
         const double leavingLength = Length(leaving);
         if (leavingLength > 0.0)
         {
-            const ScreenPoint size = canvas_.MeasureText("O", TextStyle::Label);
+            const ScreenPoint size = m_canvas.MeasureText("O", TextStyle::Label);
             const float ux = static_cast<float>(leaving.x / leavingLength);
             const float uy = static_cast<float>(-leaving.y / leavingLength);
             const float reach = 0.5f * size.x * std::fabs(ux) + 0.5f * size.y * std::fabs(uy) + 6.0f;
-            canvas_.Text({o.x - ux * reach - 0.5f * size.x, o.y - uy * reach - 0.5f * size.y}, "O", TextStyle::Label,
+            m_canvas.Text({o.x - ux * reach - 0.5f * size.x, o.y - uy * reach - 0.5f * size.y}, "O", TextStyle::Label,
                          palette::kInk);
         }
         else
         {
-            canvas_.Text({o.x + 5.0f, o.y + 2.0f}, "O", TextStyle::Label, palette::kInk);
+            m_canvas.Text({o.x + 5.0f, o.y + 2.0f}, "O", TextStyle::Label, palette::kInk);
         }
         // The inset's closing note, on two lines when the inset is too narrow for one.
         const auto note = [&](const std::string& text, Color color) {
             const float room = side - 12.0f;
             const size_t cut = text.rfind(' ', text.find(" at t"));
-            if (canvas_.MeasureText(text, TextStyle::Label).x <= room || cut == std::string::npos || cut == 0)
+            if (m_canvas.MeasureText(text, TextStyle::Label).x <= room || cut == std::string::npos || cut == 0)
             {
-                canvas_.Text({box.minX + 6.0f, box.maxY - 18.0f}, text, TextStyle::Label, color);
+                m_canvas.Text({box.minX + 6.0f, box.maxY - 18.0f}, text, TextStyle::Label, color);
                 return;
             }
-            canvas_.Text({box.minX + 6.0f, box.maxY - 20.0f - canvas_.MeasureText(text, TextStyle::Label).y}, text.substr(0, cut),
+            m_canvas.Text({box.minX + 6.0f, box.maxY - 20.0f - m_canvas.MeasureText(text, TextStyle::Label).y}, text.substr(0, cut),
                          TextStyle::Label, color);
-            canvas_.Text({box.minX + 6.0f, box.maxY - 18.0f}, text.substr(cut + 1), TextStyle::Label, color);
+            m_canvas.Text({box.minX + 6.0f, box.maxY - 18.0f}, text.substr(cut + 1), TextStyle::Label, color);
         };
         if (sweep)
         {
             // The origin moves by the relative motion relative to the difference: where it enters is the hit.
-            DashedSegment(canvas_, o, at(origin + motion), palette::kShapeBInk, 1.5f, box, 5.0f, 4.0f);
+            DashedSegment(m_canvas, o, at(origin + motion), palette::kShapeBInk, 1.5f, box, 5.0f, 4.0f);
             const SweepStatus status =
-                study_.Textbook() ? study_.textbookSweepResult.status : study_.sweepResult.status;
-            const double toi = study_.Textbook() ? study_.textbookSweepResult.toi : study_.sweepResult.toi;
+                m_study.Textbook() ? m_study.textbookSweepResult.status : m_study.sweepResult.status;
+            const double toi = m_study.Textbook() ? m_study.textbookSweepResult.toi : m_study.sweepResult.toi;
             if (status == SweepStatus::Hit)
             {
                 const ScreenPoint hit = at(origin + toi * motion);
-                canvas_.FillCircle(hit, 4.0f, palette::kResult);
+                m_canvas.FillCircle(hit, 4.0f, palette::kResult);
                 note("the ray enters at t = " + FormatNumber(toi), palette::kResult);
             }
             return;
         }
-        const bool overlap = study_.Textbook() ? study_.textbookResult.overlap : study_.manifold.overlap;
+        const bool overlap = m_study.Textbook() ? m_study.textbookResult.overlap : m_study.manifold.overlap;
         if (overlap)
         {
-            const double depth = study_.Textbook() ? study_.textbookResult.depth : study_.manifold.depth;
-            const Vec2 normal = study_.Textbook() ? study_.textbookResult.normal : study_.manifold.normal;
+            const double depth = m_study.Textbook() ? m_study.textbookResult.depth : m_study.manifold.depth;
+            const Vec2 normal = m_study.Textbook() ? m_study.textbookResult.normal : m_study.manifold.normal;
             // Moving B by depth * normal moves A - B by -depth * normal: the origin reaches the boundary at
             // depth * normal, the nearest boundary point.
-            Arrow(canvas_, o, at(origin + depth * normal), palette::kResult, 2.0f, 8.0f);
+            Arrow(m_canvas, o, at(origin + depth * normal), palette::kResult, 2.0f, 8.0f);
         }
-        canvas_.Text({box.minX + 6.0f, box.maxY - 18.0f}, overlap ? "O inside: overlap" : "O outside: apart",
+        m_canvas.Text({box.minX + 6.0f, box.maxY - 18.0f}, overlap ? "O inside: overlap" : "O outside: apart",
                      TextStyle::Label, overlap ? palette::kResult : 0x006E50FFu);
     }
 
     // The moving shapes at the time of impact, and at the figure's chosen time.
     void Ghosts()
     {
-        canvas_.BeginGroup("ghost");
-        const SweepResult& r = study_.sweepResult;
+        m_canvas.BeginGroup("ghost");
+        const SweepResult& r = m_study.sweepResult;
         auto draw = [&](double t, float alpha, const std::string& label) {
             for (int s = 0; s < 2; ++s)
             {
@@ -1210,12 +1210,12 @@ class Painter
                     continue;
                 }
                 const Transform xf = BodyTransformAt(body, t);
-                const std::vector<ScreenPoint> outline = ShapeOutline(view_, body.shape, xf);
-                canvas_.FillConvex(outline.data(), static_cast<int>(outline.size()), WithAlpha(ColorOf(s), 0.10f));
-                DashedOutline(canvas_, outline, WithAlpha(InkOf(s), alpha), 1.8f, bounds_);
+                const std::vector<ScreenPoint> outline = ShapeOutline(m_view, body.shape, xf);
+                m_canvas.FillConvex(outline.data(), static_cast<int>(outline.size()), WithAlpha(ColorOf(s), 0.10f));
+                DashedOutline(m_canvas, outline, WithAlpha(InkOf(s), alpha), 1.8f, m_bounds);
                 // A contact point's name across the ghost's outline would hide it, as for the MTV's.
                 ReserveOutline(outline, 1.8f);
-                used_.push_back(LegendMark::Dashed);
+                m_used.push_back(LegendMark::Dashed);
                 // The label goes above the ghost, towards its trailing side, the one it came from: its leading
                 // side is where it meets the other body and the contact points are marked, which a label there
                 // would hide and whose marks it would seem to name.
@@ -1228,16 +1228,16 @@ class Painter
                 {
                     back = rank(p) < rank(back) ? p : back;
                 }
-                labels_.Place(back, label, TextStyle::Label, InkOf(s), -ux, -1.0f, 3.0f, LabelRank::Verdict);
+                m_labels.Place(back, label, TextStyle::Label, InkOf(s), -ux, -1.0f, 3.0f, LabelRank::Verdict);
             }
         };
         if (r.status == SweepStatus::Hit)
         {
             draw(r.toi, 1.0f, "t = " + FormatNumber(r.toi));
         }
-        if (figure_.time >= 0.0)
+        if (m_figure.time >= 0.0)
         {
-            draw(figure_.time, 0.6f, "t = " + FormatNumber(figure_.time));
+            draw(m_figure.time, 0.6f, "t = " + FormatNumber(m_figure.time));
         }
     }
 
@@ -1255,9 +1255,9 @@ class Painter
             const Transform xf = body.Xf();
             const Vec2 v1 = TransformPoint(xf, poly.Vertices()[ref.index]);
             const Vec2 v2 = TransformPoint(xf, poly.Vertices()[(ref.index + 1) % poly.Count()]);
-            canvas_.Segment(At(v1), At(v2), color, 4.0f);
+            m_canvas.Segment(At(v1), At(v2), color, 4.0f);
             // The face the axis comes from: its name goes beside the marked face, not on it.
-            labels_.ReserveLine(At(v1), At(v2), 4.0f);
+            m_labels.ReserveLine(At(v1), At(v2), 4.0f);
             // Its normal starts from the middle of the part of the face in sight, and is drawn only when its head
             // shows: the caption or the number line's panel would hide the head of one drawn beyond them.
             const ScreenRect sight = SceneInSight();
@@ -1284,7 +1284,7 @@ class Painter
             // a floor): elsewhere along the face in sight, when the middle's would sit on one.
             // At the verdict the contacts layer draws the incident edge, on the other body's outline, over it.
             const std::vector<ScreenPoint> other =
-                verdict_ && Has(figure_, kLayerContacts) && study_.trace.hasClip ? OutlineOf(1 - ref.shape)
+                m_verdict && Has(m_figure, kLayerContacts) && m_study.trace.hasClip ? OutlineOf(1 - ref.shape)
                                                                                   : std::vector<ScreenPoint>{};
             const auto clear = [&](ScreenPoint m) {
                 const ScreenPoint t = tipOf(m);
@@ -1328,17 +1328,17 @@ class Painter
             }
             const Vec2 v = TransformPoint(poly.Xf(), poly.shape.polygon.Vertices()[ref.index]);
             const Vec2 c = TransformPoint(circle.Xf(), circle.shape.circle.center);
-            DashedSegment(canvas_, At(v), At(c), color, 2.0f, bounds_);
-            canvas_.FillCircle(At(v), 4.0f, color);
-            labels_.Reserve(Disc(At(v), 4.0f));
-            used_.push_back(LegendMark::VertexAxis);
+            DashedSegment(m_canvas, At(v), At(c), color, 2.0f, m_bounds);
+            m_canvas.FillCircle(At(v), 4.0f, color);
+            m_labels.Reserve(Disc(At(v), 4.0f));
+            m_used.push_back(LegendMark::VertexAxis);
         }
         else if (ref.kind == AxisKind::CenterToCenter)
         {
-            const Vec2 a = TransformPoint(bodyA_.Xf(), bodyA_.shape.circle.center);
-            const Vec2 b = TransformPoint(bodyB_.Xf(), bodyB_.shape.circle.center);
-            DashedSegment(canvas_, At(a), At(b), color, 2.0f, bounds_);
-            used_.push_back(LegendMark::VertexAxis);
+            const Vec2 a = TransformPoint(m_bodyA.Xf(), m_bodyA.shape.circle.center);
+            const Vec2 b = TransformPoint(m_bodyB.Xf(), m_bodyB.shape.circle.center);
+            DashedSegment(m_canvas, At(a), At(b), color, 2.0f, m_bounds);
+            m_used.push_back(LegendMark::VertexAxis);
         }
     }
 
@@ -1347,15 +1347,15 @@ class Painter
     // that its arrow head and its bars show.
     Vec2 AxisBaseInSight(Vec2 d, double lo, double hi) const
     {
-        Vec2 base = AxisLineBase(points_, d, kAxisGap / view_.zoom);
+        Vec2 base = AxisLineBase(m_points, d, kAxisGap / m_view.zoom);
         const Vec2 n = AxisSide(d);
         const ScreenPoint middle = At(Along(base, d, 0.5 * (lo + hi)));
         const float across[2] = {static_cast<float>(n.x), static_cast<float>(-n.y)};
         const float at[2] = {middle.x, middle.y};
         const float margin = 12.0f;
         const ScreenRect sight = SceneInSight();
-        const float low[2] = {margin, std::max(layout_.sceneTop, sight.minY) + margin};
-        const float high[2] = {Width() - margin, std::min(layout_.sceneBottom, sight.maxY) - margin};
+        const float low[2] = {margin, std::max(m_layout.sceneTop, sight.minY) + margin};
+        const float high[2] = {Width() - margin, std::min(m_layout.sceneBottom, sight.maxY) - margin};
         float from = -INFINITY;
         float to = INFINITY;
         for (int c = 0; c < 2; ++c)
@@ -1372,63 +1372,63 @@ class Painter
         if (from <= to && (from > 0.0f || to < 0.0f))
         {
             const float shift = from > 0.0f ? from : to;
-            base = base + (static_cast<double>(shift) / view_.zoom) * n;
+            base = base + (static_cast<double>(shift) / m_view.zoom) * n;
         }
         return base;
     }
 
     void AxisInScene()
     {
-        canvas_.BeginGroup("projection");
-        const Vec2 d = axis_.direction;
+        m_canvas.BeginGroup("projection");
+        const Vec2 d = m_axis.direction;
         const Vec2 n = AxisSide(d);
         double lo = 0.0;
         double hi = 0.0;
-        AxisLineSpan(axis_.minA, axis_.maxA, axis_.minB, axis_.maxB, lo, hi);
-        if (axis_.swept)
+        AxisLineSpan(m_axis.minA, m_axis.maxA, m_axis.minB, m_axis.maxB, lo, hi);
+        if (m_axis.swept)
         {
-            lo = std::min(lo, axis_.sweptMinB);
-            hi = std::max(hi, axis_.sweptMaxB);
+            lo = std::min(lo, m_axis.sweptMinB);
+            hi = std::max(hi, m_axis.sweptMaxB);
         }
-        if (axis_.bounded)
+        if (m_axis.bounded)
         {
-            lo = std::min(lo, axis_.boundAt);
-            hi = std::max(hi, axis_.boundAt);
+            lo = std::min(lo, m_axis.boundAt);
+            hi = std::max(hi, m_axis.boundAt);
         }
         const Vec2 base = AxisBaseInSight(d, lo, hi);
         // A face decided without evaluation is drawn faintly: its numbers are the view's, not the test's.
-        const float fade = axis_.decided ? 0.4f : 1.0f;
+        const float fade = m_axis.decided ? 0.4f : 1.0f;
         const auto faint = [fade](Color color, float alpha) { return WithAlpha(color, alpha * fade); };
-        const double pad = kLinePad / view_.zoom;
-        for (int f = 0; f < axis_.faceCount; ++f)
+        const double pad = kLinePad / m_view.zoom;
+        for (int f = 0; f < m_axis.faceCount; ++f)
         {
-            AxisSource(axis_.faces[f], faint(palette::kInk, 1.0f));
+            AxisSource(m_axis.faces[f], faint(palette::kInk, 1.0f));
         }
         // The line ends where the scene leaves sight, so that the caption or the panel never hides its head.
         ScreenPoint tail = At(Along(base, d, lo - pad));
         ScreenPoint head = At(Along(base, d, hi + pad));
         const ScreenRect sight = SceneInSight();
-        const ScreenRect scene{4.0f, std::max(layout_.sceneTop, sight.minY) + 4.0f, Width() - 4.0f,
-                               std::min(layout_.sceneBottom, sight.maxY) - 4.0f};
+        const ScreenRect scene{4.0f, std::max(m_layout.sceneTop, sight.minY) + 4.0f, Width() - 4.0f,
+                               std::min(m_layout.sceneBottom, sight.maxY) - 4.0f};
         if (!ClipSegment(tail, head, scene))
         {
             tail = At(Along(base, d, lo - pad));
             head = At(Along(base, d, hi + pad));
         }
         MarkedArrow(tail, head, faint(palette::kMuted, 1.0f), 1.5f, 11.0f);
-        const std::string name = (axis_.textbook ? "axis " : "face test ") + std::to_string(axis_.index + 1);
+        const std::string name = (m_axis.textbook ? "axis " : "face test ") + std::to_string(m_axis.index + 1);
         // Named at its head.
-        labels_.Place(head,
-                      !axis_.decided ? name : name + (axis_.bounded ? " (not walked to)" : " (not evaluated)"),
+        m_labels.Place(head,
+                      !m_axis.decided ? name : name + (m_axis.bounded ? " (not walked to)" : " (not evaluated)"),
                       TextStyle::Label, palette::kMuted, static_cast<float>(d.x), static_cast<float>(-d.y), 6.0f,
                       LabelRank::Note);
 
         // Projectors: from each shape's extreme points down to the axis line.
-        const Transform xfA = bodyA_.Xf();
-        const Transform xfB = bodyB_.Xf();
+        const Transform xfA = m_bodyA.Xf();
+        const Transform xfB = m_bodyB.Xf();
         Vec2 lowA, highA, lowB, highB;
-        Extremes(bodyA_.shape, xfA, d, lowA, highA);
-        Extremes(bodyB_.shape, xfB, d, lowB, highB);
+        Extremes(m_bodyA.shape, xfA, d, lowA, highA);
+        Extremes(m_bodyB.shape, xfB, d, lowB, highB);
         const float ox = static_cast<float>(n.x);
         const float oy = static_cast<float>(-n.y);
         auto bar = [&](double lo, double hi, float offset, Color color, float thickness) {
@@ -1436,38 +1436,38 @@ class Painter
             ScreenPoint q = At(Along(base, d, hi));
             p = {p.x - ox * offset, p.y - oy * offset};
             q = {q.x - ox * offset, q.y - oy * offset};
-            canvas_.Segment(p, q, color, thickness);
+            m_canvas.Segment(p, q, color, thickness);
             // A label's halo over a bar would hide the interval it draws.
-            labels_.ReserveLine(p, q, thickness);
+            m_labels.ReserveLine(p, q, thickness);
         };
         auto projector = [&](Vec2 from, double value, float offset, Color color) {
             ScreenPoint to = At(Along(base, d, value));
             to = {to.x - ox * offset, to.y - oy * offset};
-            DashedSegment(canvas_, At(from), to, faint(color, 0.55f), 1.0f, bounds_, 4.0f, 4.0f);
+            DashedSegment(m_canvas, At(from), to, faint(color, 0.55f), 1.0f, m_bounds, 4.0f, 4.0f);
         };
-        projector(lowA, axis_.minA, 5.0f, palette::kShapeA);
-        projector(highA, axis_.maxA, 5.0f, palette::kShapeA);
-        projector(lowB, axis_.minB, -5.0f, palette::kShapeBInk);
-        projector(highB, axis_.maxB, -5.0f, palette::kShapeBInk);
+        projector(lowA, m_axis.minA, 5.0f, palette::kShapeA);
+        projector(highA, m_axis.maxA, 5.0f, palette::kShapeA);
+        projector(lowB, m_axis.minB, -5.0f, palette::kShapeBInk);
+        projector(highB, m_axis.maxB, -5.0f, palette::kShapeBInk);
         // The push that separates the pair, or the gap, between the bars, labelled with its size.
-        const bool overlap = axis_.separation <= 0.0;
+        const bool overlap = m_axis.separation <= 0.0;
         const Color mark = overlap ? palette::kOverlap : palette::kGap;
-        const double from = axis_.leadMax;
-        const double to = axis_.otherMin;
+        const double from = m_axis.leadMax;
+        const double to = m_axis.otherMin;
         bar(from, to, 0.0f, faint(mark, overlap ? 0.6f : 1.0f), overlap ? 14.0f : 3.0f);
-        if (axis_.swept)
+        if (m_axis.swept)
         {
-            bar(axis_.sweptMinB, axis_.sweptMaxB, -5.0f, faint(palette::kShapeB, 0.35f), kBar);
+            bar(m_axis.sweptMinB, m_axis.sweptMaxB, -5.0f, faint(palette::kShapeB, 0.35f), kBar);
         }
-        bar(axis_.minA, axis_.maxA, 5.0f, faint(palette::kShapeA, 1.0f), kBar);
-        bar(axis_.minB, axis_.maxB, -5.0f, faint(palette::kShapeB, 1.0f), kBar);
-        if (axis_.bounded)
+        bar(m_axis.minA, m_axis.maxA, 5.0f, faint(palette::kShapeA, 1.0f), kBar);
+        bar(m_axis.minB, m_axis.maxB, -5.0f, faint(palette::kShapeB, 1.0f), kBar);
+        if (m_axis.bounded)
         {
             // The vertex that bounds the gap: the other shape's near end lies no farther out than this tick.
-            const ScreenPoint at = At(Along(base, d, axis_.boundAt));
-            canvas_.Segment({at.x - ox * 16.0f, at.y - oy * 16.0f}, {at.x + ox * 16.0f, at.y + oy * 16.0f},
+            const ScreenPoint at = At(Along(base, d, m_axis.boundAt));
+            m_canvas.Segment({at.x - ox * 16.0f, at.y - oy * 16.0f}, {at.x + ox * 16.0f, at.y + oy * 16.0f},
                             palette::kInk, 2.0f);
-            labels_.Place({at.x + ox * 18.0f, at.y + oy * 18.0f}, "bound", TextStyle::Label, palette::kInk, ox, oy,
+            m_labels.Place({at.x + ox * 18.0f, at.y + oy * 18.0f}, "bound", TextStyle::Label, palette::kInk, ox, oy,
                           6.0f, LabelRank::Note);
         }
 
@@ -1486,36 +1486,36 @@ class Painter
             }
             middle = {0.5f * (bandFrom.x + bandTo.x), 0.5f * (bandFrom.y + bandTo.y)};
         }
-        const std::string text = BandLabel(axis_);
+        const std::string text = BandLabel(m_axis);
         // On the far side of the bars from the pair, where the shapes' own labels crowd less (lesson 4's pitfall
         // figure put it between the bars and the slab, and pushed the slab's reference face down below it).
-        labels_.Place({middle.x + ox * 14.0f, middle.y + oy * 14.0f}, text, TextStyle::Label,
+        m_labels.Place({middle.x + ox * 14.0f, middle.y + oy * 14.0f}, text, TextStyle::Label,
                       overlap ? 0x8E3F6CFFu : 0x006E50FFu, ox, oy, 4.0f, LabelRank::Verdict);
     }
 
     // The separating line of a separating axis: perpendicular to it, through the middle of the gap.
     void SeparatingLine()
     {
-        canvas_.BeginGroup("exit");
-        used_.push_back(LegendMark::Separating);
-        const Vec2 d = axis_.direction;
-        const double lo = std::min(axis_.maxA, axis_.maxB);
-        const double hi = std::max(axis_.minA, axis_.minB);
+        m_canvas.BeginGroup("exit");
+        m_used.push_back(LegendMark::Separating);
+        const Vec2 d = m_axis.direction;
+        const double lo = std::min(m_axis.maxA, m_axis.maxB);
+        const double hi = std::max(m_axis.minA, m_axis.minB);
         const double middle = 0.5 * (lo + hi);
         const Vec2 n = LeftPerp(d);
-        const Vec2 point = discCenter_ + (middle - Dot(discCenter_, d)) * d;
-        const double reach = discRadius_;
-        DashedSegment(canvas_, At(point - reach * n), At(point + reach * n), palette::kGap, 2.5f, bounds_, 10.0f, 6.0f);
+        const Vec2 point = m_discCenter + (middle - Dot(m_discCenter, d)) * d;
+        const double reach = m_discRadius;
+        DashedSegment(m_canvas, At(point - reach * n), At(point + reach * n), palette::kGap, 2.5f, m_bounds, 10.0f, 6.0f);
         // Named at its upper end as far as the scene shows it (the caption or the panel may hide its ends).
         ScreenPoint a = At(point - reach * n);
         ScreenPoint b = At(point + reach * n);
-        const ScreenRect scene{0.0f, layout_.sceneTop + 4.0f, Width(), layout_.sceneBottom - 4.0f};
+        const ScreenRect scene{0.0f, m_layout.sceneTop + 4.0f, Width(), m_layout.sceneBottom - 4.0f};
         if (ClipSegment(a, b, scene))
         {
             // The gap's size or a note on the line would hide it and read as naming it; a vertex number or an edge
             // name may still sit on it, rather than be left out where the line runs close beside its edge.
-            labels_.ReserveLine(a, b, 2.5f, LabelRank::Note);
-            labels_.Place(a.y < b.y ? a : b, "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f, 6.0f,
+            m_labels.ReserveLine(a, b, 2.5f, LabelRank::Note);
+            m_labels.Place(a.y < b.y ? a : b, "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f, 6.0f,
                           LabelRank::Verdict);
         }
     }
@@ -1523,23 +1523,23 @@ class Painter
     // The best axis so far (the smallest push; for sweeps, the latest entry), when it is not the current one.
     void BestSoFar()
     {
-        const size_t k = static_cast<size_t>(axisIndex_);
+        const size_t k = static_cast<size_t>(m_axisIndex);
         int best = -1;
-        if (study_.Textbook())
+        if (m_study.Textbook())
         {
-            best = study_.sweep ? study_.textbookSweep.axes[k].latestEntry : study_.textbook.axes[k].best;
+            best = m_study.sweep ? m_study.textbookSweep.axes[k].latestEntry : m_study.textbook.axes[k].best;
         }
         else
         {
-            best = study_.sweep ? study_.sweepTrace.axes[k].latestEntry : study_.trace.axes[k].best;
+            best = m_study.sweep ? m_study.sweepTrace.axes[k].latestEntry : m_study.trace.axes[k].best;
         }
-        if (best < 0 || best == axisIndex_)
+        if (best < 0 || best == m_axisIndex)
         {
             return;
         }
-        used_.push_back(LegendMark::BestAxis);
-        canvas_.BeginGroup("best");
-        const ShownAxis shown = ShowAxis(study_, best);
+        m_used.push_back(LegendMark::BestAxis);
+        m_canvas.BeginGroup("best");
+        const ShownAxis shown = ShowAxis(m_study, best);
         for (int f = 0; f < shown.faceCount; ++f)
         {
             AxisSource(shown.faces[f], palette::kBest);
@@ -1548,27 +1548,27 @@ class Painter
 
     void Mtv()
     {
-        Manifold m = study_.sweep ? study_.sweepResult.initial : study_.manifold;
-        const bool overlapping = study_.sweep ? study_.sweepResult.status == SweepStatus::Overlapping : m.overlap;
+        Manifold m = m_study.sweep ? m_study.sweepResult.initial : m_study.manifold;
+        const bool overlapping = m_study.sweep ? m_study.sweepResult.status == SweepStatus::Overlapping : m.overlap;
         if (!overlapping)
         {
             return;
         }
-        if (study_.Textbook() && !study_.sweep)
+        if (m_study.Textbook() && !m_study.sweep)
         {
             // The MTV the textbook test found: its smallest overlap, pushed the shorter way.
-            m.depth = study_.textbookResult.depth;
-            m.normal = study_.textbookResult.normal;
+            m.depth = m_study.textbookResult.depth;
+            m.normal = m_study.textbookResult.normal;
         }
-        canvas_.BeginGroup("mtv");
+        m_canvas.BeginGroup("mtv");
         const Vec2 shift = m.depth * m.normal;
-        Transform moved = bodyB_.Xf();
+        Transform moved = m_bodyB.Xf();
         moved.p = moved.p + shift;
-        const std::vector<ScreenPoint> cleared = ShapeOutline(view_, bodyB_.shape, moved);
-        DashedOutline(canvas_, cleared, palette::kShapeBInk, 1.8f, bounds_);
+        const std::vector<ScreenPoint> cleared = ShapeOutline(m_view, m_bodyB.shape, moved);
+        DashedOutline(m_canvas, cleared, palette::kShapeBInk, 1.8f, m_bounds);
         ReserveOutline(cleared, 1.8f);
-        used_.push_back(LegendMark::Dashed);
-        const Vec2 c = ShapeCenter(bodyB_.shape, bodyB_.Xf());
+        m_used.push_back(LegendMark::Dashed);
+        const Vec2 c = ShapeCenter(m_bodyB.shape, m_bodyB.Xf());
         ScreenPoint from = At(c);
         ScreenPoint to = At(c + shift);
         // A depth too small to see still gets a visible arrow in its direction.
@@ -1588,38 +1588,38 @@ class Painter
             to = {to.x + side.x, to.y + side.y};
         }
         // The arrow is drawn over the labels (MtvArrow), so that B's name never hides its shaft.
-        mtvFrom_ = from;
-        mtvTo_ = to;
-        hasMtvArrow_ = true;
+        m_mtvFrom = from;
+        m_mtvTo = to;
+        m_hasMtvArrow = true;
         // The length as the number line prints it: the deciding axis's overlap from its shown ends.
-        const std::string depth = hasAxis_ && axis_.separation <= 0.0
-                                      ? ShownBand(axis_.leadMax, axis_.otherMin, axis_.separation)
+        const std::string depth = m_hasAxis && m_axis.separation <= 0.0
+                                      ? ShownBand(m_axis.leadMax, m_axis.otherMin, m_axis.separation)
                                       : FormatNumber(m.depth);
         // The arrow is drawn over the labels: none may lie under it.
-        labels_.ReserveLine(from, to, 3.0f);
-        labels_.Reserve({to.x - 12.0f, to.y - 12.0f, to.x + 12.0f, to.y + 12.0f});
-        labels_.Place(to, "MTV " + depth, TextStyle::Heading, palette::kResult, static_cast<float>(m.normal.x),
+        m_labels.ReserveLine(from, to, 3.0f);
+        m_labels.Reserve({to.x - 12.0f, to.y - 12.0f, to.x + 12.0f, to.y + 12.0f});
+        m_labels.Place(to, "MTV " + depth, TextStyle::Heading, palette::kResult, static_cast<float>(m.normal.x),
                       static_cast<float>(-m.normal.y), 6.0f, LabelRank::Verdict);
         // A pitfall's push beside the right one, dashed, so that the two can be compared.
-        const PitfallResult& pitfall = study_.pitfall;
-        if (pitfall.ran && pitfall.overlap && !study_.sweep && pitfall.depth > 0.0)
+        const PitfallResult& pitfall = m_study.pitfall;
+        if (pitfall.ran && pitfall.overlap && !m_study.sweep && pitfall.depth > 0.0)
         {
-            pitfallFrom_ = from;
-            pitfallTo_ = At(c + pitfall.depth * pitfall.normal);
-            if (std::hypot(pitfallTo_.x - from.x, pitfallTo_.y - from.y) < 20.0f)
+            m_pitfallFrom = from;
+            m_pitfallTo = At(c + pitfall.depth * pitfall.normal);
+            if (std::hypot(m_pitfallTo.x - from.x, m_pitfallTo.y - from.y) < 20.0f)
             {
-                pitfallTo_ = {from.x + 20.0f * static_cast<float>(pitfall.normal.x),
+                m_pitfallTo = {from.x + 20.0f * static_cast<float>(pitfall.normal.x),
                               from.y - 20.0f * static_cast<float>(pitfall.normal.y)};
             }
-            hasPitfallArrow_ = true;
+            m_hasPitfallArrow = true;
             // Where the pitfall's push leaves B, and how deep B still lies in A there (or lies now, pushed the
             // wrong way): the wrong depth the mistake is about, beside the MTV's outline that just clears A.
-            Transform pushed = bodyB_.Xf();
+            Transform pushed = m_bodyB.Xf();
             pushed.p = pushed.p + pitfall.depth * pitfall.normal;
-            const std::vector<ScreenPoint> outline = ShapeOutline(view_, bodyB_.shape, pushed);
-            DashedOutline(canvas_, outline, palette::kInk, 1.2f, bounds_);
+            const std::vector<ScreenPoint> outline = ShapeOutline(m_view, m_bodyB.shape, pushed);
+            DashedOutline(m_canvas, outline, palette::kInk, 1.2f, m_bounds);
             ReserveOutline(outline, 1.2f);
-            const Manifold left = Collide(bodyA_.shape, bodyA_.Xf(), bodyB_.shape, pushed);
+            const Manifold left = Collide(m_bodyA.shape, m_bodyA.Xf(), m_bodyB.shape, pushed);
             if (left.overlap && left.depth > 0.0)
             {
                 // Anchored where the pushed outline still lies in A (between its contact points), away from B.
@@ -1630,17 +1630,17 @@ class Painter
                 }
                 if (left.contactCount == 0)
                 {
-                    inside = ShapeCenter(bodyB_.shape, pushed);
+                    inside = ShapeCenter(m_bodyB.shape, pushed);
                 }
-                labels_.Place(
+                m_labels.Place(
                     At(inside),
                     "after the pitfall's push: " + std::string(Dot(pitfall.normal, m.normal) >= 0.0 ? "still " : "") +
                         FormatNumber(left.depth) + " deep",
                     TextStyle::Label, palette::kInk, 1.0f, 1.0f, 14.0f, LabelRank::Verdict);
             }
-            labels_.ReserveLine(from, pitfallTo_, 2.0f);
-            labels_.Reserve({pitfallTo_.x - 10.0f, pitfallTo_.y - 10.0f, pitfallTo_.x + 10.0f, pitfallTo_.y + 10.0f});
-            labels_.Place(pitfallTo_, "pitfall " + FormatNumber(pitfall.depth), TextStyle::Label, palette::kInk,
+            m_labels.ReserveLine(from, m_pitfallTo, 2.0f);
+            m_labels.Reserve({m_pitfallTo.x - 10.0f, m_pitfallTo.y - 10.0f, m_pitfallTo.x + 10.0f, m_pitfallTo.y + 10.0f});
+            m_labels.Place(m_pitfallTo, "pitfall " + FormatNumber(pitfall.depth), TextStyle::Label, palette::kInk,
                           static_cast<float>(pitfall.normal.x), static_cast<float>(-pitfall.normal.y), 6.0f,
                           LabelRank::Verdict);
         }
@@ -1648,64 +1648,64 @@ class Painter
 
     void MtvArrow()
     {
-        canvas_.BeginGroup("mtv");
-        Arrow(canvas_, mtvFrom_, mtvTo_, palette::kResult, 3.0f, 12.0f);
-        if (hasPitfallArrow_)
+        m_canvas.BeginGroup("mtv");
+        Arrow(m_canvas, m_mtvFrom, m_mtvTo, palette::kResult, 3.0f, 12.0f);
+        if (m_hasPitfallArrow)
         {
-            const ScreenPoint from = pitfallFrom_;
-            const ScreenPoint to = pitfallTo_;
-            DashedSegment(canvas_, from, to, palette::kInk, 2.0f, bounds_, 6.0f, 4.0f);
-            Arrow(canvas_, {to.x - 0.01f * (to.x - from.x), to.y - 0.01f * (to.y - from.y)}, to, palette::kInk, 2.0f,
+            const ScreenPoint from = m_pitfallFrom;
+            const ScreenPoint to = m_pitfallTo;
+            DashedSegment(m_canvas, from, to, palette::kInk, 2.0f, m_bounds, 6.0f, 4.0f);
+            Arrow(m_canvas, {to.x - 0.01f * (to.x - from.x), to.y - 0.01f * (to.y - from.y)}, to, palette::kInk, 2.0f,
                   10.0f);
         }
     }
 
     void Contacts()
     {
-        canvas_.BeginGroup("contacts");
+        m_canvas.BeginGroup("contacts");
         const ContactPoint* points = nullptr;
         int count = 0;
-        if (study_.sweep)
+        if (m_study.sweep)
         {
-            if (study_.sweepResult.status == SweepStatus::Hit)
+            if (m_study.sweepResult.status == SweepStatus::Hit)
             {
-                points = study_.sweepResult.contacts;
-                count = study_.sweepResult.contactCount;
+                points = m_study.sweepResult.contacts;
+                count = m_study.sweepResult.contactCount;
             }
-            else if (study_.sweepResult.status == SweepStatus::Overlapping)
+            else if (m_study.sweepResult.status == SweepStatus::Overlapping)
             {
-                points = study_.sweepResult.initial.contacts;
-                count = study_.sweepResult.initial.contactCount;
+                points = m_study.sweepResult.initial.contacts;
+                count = m_study.sweepResult.initial.contactCount;
             }
         }
         else
         {
-            points = study_.manifold.contacts;
-            count = study_.manifold.contactCount;
-            if (study_.trace.hasClip)
+            points = m_study.manifold.contacts;
+            count = m_study.manifold.contactCount;
+            if (m_study.trace.hasClip)
             {
-                ClipPlanes(study_.trace.clip);
+                ClipPlanes(m_study.trace.clip);
             }
         }
         ScreenPoint screen[2] = {};
         for (int i = 0; i < count; ++i)
         {
             screen[i] = At(points[i].point);
-            canvas_.FillCircle(screen[i], 5.5f, palette::kResult);
-            used_.push_back(LegendMark::Contact);
-            canvas_.Circle(screen[i], 5.5f, palette::kBackground, 1.5f);
-            labels_.Reserve(Disc(screen[i], 6.5f));
+            m_canvas.FillCircle(screen[i], 5.5f, palette::kResult);
+            m_used.push_back(LegendMark::Contact);
+            m_canvas.Circle(screen[i], 5.5f, palette::kBackground, 1.5f);
+            m_labels.Reserve(Disc(screen[i], 6.5f));
         }
         // Two contacts closer on screen than a label is wide share one label, placed between them.
         if (count == 2 && std::hypot(screen[0].x - screen[1].x, screen[0].y - screen[1].y) < 16.0f)
         {
             const ScreenPoint middle{0.5f * (screen[0].x + screen[1].x), 0.5f * (screen[0].y + screen[1].y)};
-            labels_.Place(middle, "c1, c2", TextStyle::Label, palette::kResult, 1.0f, -1.0f, 6.0f, LabelRank::Verdict);
+            m_labels.Place(middle, "c1, c2", TextStyle::Label, palette::kResult, 1.0f, -1.0f, 6.0f, LabelRank::Verdict);
             return;
         }
         for (int i = 0; i < count; ++i)
         {
-            labels_.Place(screen[i], "c" + std::to_string(i + 1), TextStyle::Label, palette::kResult, 1.0f, -1.0f, 6.0f,
+            m_labels.Place(screen[i], "c" + std::to_string(i + 1), TextStyle::Label, palette::kResult, 1.0f, -1.0f, 6.0f,
                           LabelRank::Verdict);
         }
     }
@@ -1826,21 +1826,21 @@ class Painter
         const ScreenPoint r1 = At(clip.referenceV1);
         const ScreenPoint r2 = At(clip.referenceV2);
         const Vec2 n = clip.referenceNormal;
-        const double reach = 0.5 * discRadius_;
+        const double reach = 0.5 * m_discRadius;
         for (const Vec2& v : {clip.referenceV1, clip.referenceV2})
         {
-            DashedSegment(canvas_, At(v - reach * n), At(v + 0.3 * reach * n), palette::kMuted, 1.2f, bounds_, 5.0f,
+            DashedSegment(m_canvas, At(v - reach * n), At(v + 0.3 * reach * n), palette::kMuted, 1.2f, m_bounds, 5.0f,
                           4.0f);
         }
-        used_.push_back(LegendMark::SidePlanes);
-        canvas_.Segment(r1, r2, InkOf(referenceShape), 5.0f);
+        m_used.push_back(LegendMark::SidePlanes);
+        m_canvas.Segment(r1, r2, InkOf(referenceShape), 5.0f);
         // Labels go beside the reference face and the incident edge, not over them.
-        labels_.ReserveLine(r1, r2, 5.0f);
+        m_labels.ReserveLine(r1, r2, 5.0f);
         // Each name on its own body's side of the contact, out of the other body, where it reads as that body's.
         // Named from the part of the face the figure shows.
         ScreenPoint shown1 = r1;
         ScreenPoint shown2 = r2;
-        if (!ClipSegment(shown1, shown2, bounds_))
+        if (!ClipSegment(shown1, shown2, m_bounds))
         {
             shown1 = r1;
             shown2 = r2;
@@ -1851,28 +1851,28 @@ class Painter
         // this contact), sliding along the face from there (AlsoAt) when the contact's own marks leave no room.
         const std::vector<ScreenPoint> other = OutlineOf(1 - referenceShape);
         ScreenPoint near = FreeMiddle(shown1, shown2, other);
-        if (study_.manifold.contactCount > 0)
+        if (m_study.manifold.contactCount > 0)
         {
             Vec2 middle{};
-            for (int i = 0; i < study_.manifold.contactCount; ++i)
+            for (int i = 0; i < m_study.manifold.contactCount; ++i)
             {
-                middle = middle + (1.0 / study_.manifold.contactCount) * study_.manifold.contacts[i].point;
+                middle = middle + (1.0 / m_study.manifold.contactCount) * m_study.manifold.contacts[i].point;
             }
             const ScreenPoint foot = NearestOnSegment(shown1, shown2, At(middle));
             const std::vector<ScreenPoint> free = AlongFace(shown1, shown2, foot, other, 0.0f, 4.0f);
             near = !Covered(foot, other, 0.0f) || free.empty() ? foot : free.front();
         }
-        labels_.PlaceOutside(other, near, "reference face", TextStyle::Label, InkOf(referenceShape),
+        m_labels.PlaceOutside(other, near, "reference face", TextStyle::Label, InkOf(referenceShape),
                              static_cast<float>(-n.x), static_cast<float>(n.y), 10.0f, LabelRank::Verdict);
-        labels_.AlsoAt(AlongFace(shown1, shown2, near, other, 0.0f, 16.0f, 40.0f));
+        m_labels.AlsoAt(AlongFace(shown1, shown2, near, other, 0.0f, 16.0f, 40.0f));
         const ScreenPoint i1 = At(clip.incidentV1);
         const ScreenPoint i2 = At(clip.incidentV2);
-        canvas_.Segment(i1, i2, InkOf(clip.incidentShape), 5.0f);
-        labels_.ReserveLine(i1, i2, 5.0f);
-        canvas_.Segment(i1, i2, palette::kBackground, 1.5f);
-        used_.push_back(LegendMark::Reference);
-        used_.push_back(LegendMark::Incident);
-        labels_.PlaceOutside(OutlineOf(1 - clip.incidentShape), At(0.5 * (clip.incidentV1 + clip.incidentV2)),
+        m_canvas.Segment(i1, i2, InkOf(clip.incidentShape), 5.0f);
+        m_labels.ReserveLine(i1, i2, 5.0f);
+        m_canvas.Segment(i1, i2, palette::kBackground, 1.5f);
+        m_used.push_back(LegendMark::Reference);
+        m_used.push_back(LegendMark::Incident);
+        m_labels.PlaceOutside(OutlineOf(1 - clip.incidentShape), At(0.5 * (clip.incidentV1 + clip.incidentV2)),
                              "incident edge", TextStyle::Label, InkOf(clip.incidentShape), static_cast<float>(n.x),
                              static_cast<float>(-n.y), 10.0f, LabelRank::Verdict);
     }
@@ -1930,13 +1930,13 @@ class Painter
 
     void Labels()
     {
-        canvas_.BeginGroup("labels");
+        m_canvas.BeginGroup("labels");
         // The faces and corners the step's sentences name keep their names however small their body is drawn (a
         // canvas narrower than the figure, beside a lesson): a sentence about "right wall's edge 3" beside a
         // picture with no "e3" names nothing the student can find. They are placed before the other numbers.
         // The number line's title names the axis's face too.
-        const std::string sentence = DescribeStep(scene_, study_, figure_.step) + " " +
-                                     (hasAxis_ ? DescribeAxis(scene_, study_, axis_.Ref()) : std::string());
+        const std::string sentence = DescribeStep(m_scene, m_study, m_figure.step) + " " +
+                                     (m_hasAxis ? DescribeAxis(m_scene, m_study, m_axis.Ref()) : std::string());
         for (int s = 0; s < 2; ++s)
         {
             const Body& body = BodyOf(s);
@@ -1953,7 +1953,7 @@ class Painter
                 double extent = 0.0;
                 for (const Vec2& v : poly.Vertices())
                 {
-                    extent = std::max(extent, Length(v - poly.Centroid()) * view_.zoom);
+                    extent = std::max(extent, Length(v - poly.Centroid()) * m_view.zoom);
                 }
                 const bool vertexNumbers = extent >= 45.0 && poly.Count() <= 24;
                 const bool edgeNumbers = extent >= 70.0 && poly.Count() <= 16;
@@ -1966,7 +1966,7 @@ class Painter
                     }
                     const Vec2 v = TransformPoint(xf, poly.Vertices()[i]);
                     const Vec2 out = v - centroid;
-                    labels_.PlaceOutside(OutlineOf(1 - s), At(v), std::to_string(i), TextStyle::Label, InkOf(s),
+                    m_labels.PlaceOutside(OutlineOf(1 - s), At(v), std::to_string(i), TextStyle::Label, InkOf(s),
                                          static_cast<float>(out.x), static_cast<float>(-out.y), 4.0f,
                                          isNamed ? LabelRank::Named : LabelRank::Vertex);
                 }
@@ -1994,19 +1994,19 @@ class Painter
                     {
                         continue;
                     }
-                    if (!isNamed && !ClipSegment(from, to, bounds_))
+                    if (!isNamed && !ClipSegment(from, to, m_bounds))
                     {
                         from = wholeFrom;
                         to = wholeTo;
                     }
                     const ScreenPoint mid = FreeMiddle(from, to, other, 12.0f);
                     const Vec2 n = Rotate(xf.q, poly.Normal(i));
-                    if (labels_.PlaceOutside(other, mid, "e" + std::to_string(i), TextStyle::Label,
+                    if (m_labels.PlaceOutside(other, mid, "e" + std::to_string(i), TextStyle::Label,
                                              WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x),
                                              static_cast<float>(-n.y), 5.0f,
                                              isNamed ? LabelRank::Named : LabelRank::Edge))
                     {
-                        labels_.KeepOnSide();
+                        m_labels.KeepOnSide();
                         // A face a sentence names may have its name anywhere along it, away from its corners,
                         // when its middle is taken (a thin wall's name beside it).
                         // One flush against the other body along all its length has its name just inside its
@@ -2014,7 +2014,7 @@ class Painter
                         if (isNamed)
                         {
                             std::vector<ScreenPoint> along = AlongFace(from, to, mid, other, 12.0f, 8.0f, 12.0f);
-                            labels_.AlsoAt(along.empty() ? AlongFace(from, to, mid, {}, 0.0f, 8.0f, 12.0f) : along);
+                            m_labels.AlsoAt(along.empty() ? AlongFace(from, to, mid, {}, 0.0f, 8.0f, 12.0f) : along);
                         }
                     }
                 }
@@ -2029,9 +2029,9 @@ class Painter
             Vec2 low, high, left, right;
             Extremes(body.shape, body.Xf(), {0.0, 1.0}, low, high);
             Extremes(body.shape, body.Xf(), {1.0, 0.0}, left, right);
-            const float wide = static_cast<float>((right.x - left.x) * view_.zoom);
-            const float tall = static_cast<float>((high.y - low.y) * view_.zoom);
-            const ScreenPoint text = canvas_.MeasureText(body.name, TextStyle::Heading);
+            const float wide = static_cast<float>((right.x - left.x) * m_view.zoom);
+            const float tall = static_cast<float>((high.y - low.y) * m_view.zoom);
+            const ScreenPoint text = m_canvas.MeasureText(body.name, TextStyle::Heading);
             // A polygon turned part way round is wide and tall on screen but may be thin (a tilted plank): its name
             // goes inside only when the name's box fits in the outline, else just below the shape's middle.
             const std::vector<ScreenPoint> outline = OutlineOf(s);
@@ -2062,7 +2062,7 @@ class Painter
                         below = std::max(below, a.y + (b.y - a.y) * (middle.x - a.x) / (b.x - a.x));
                     }
                 }
-                labels_.PlaceOutside(OutlineOf(1 - s), {middle.x, below}, body.name, TextStyle::Heading, InkOf(s),
+                m_labels.PlaceOutside(OutlineOf(1 - s), {middle.x, below}, body.name, TextStyle::Heading, InkOf(s),
                                      0.0f, 1.0f, 6.0f, LabelRank::Name);
             }
             else if (wide >= text.x + 8.0f && tall >= text.y + 4.0f)
@@ -2111,7 +2111,7 @@ class Painter
                         }
                     }
                 }
-                labels_.Place(anchor, body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f, LabelRank::Name);
+                m_labels.Place(anchor, body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f, LabelRank::Name);
                 // A large body's name may move within it when a pitfall's note takes its middle, rather than hang on
                 // a leader line from under that note.
                 std::vector<ScreenPoint> within;
@@ -2133,19 +2133,19 @@ class Painter
                         within.push_back(p);
                     }
                 }
-                if (hasPitfallArrow_)
+                if (m_hasPitfallArrow)
                 {
-                    labels_.AlsoAt(within);
+                    m_labels.AlsoAt(within);
                 }
             }
             else if (wide < text.x + 8.0f && tall >= 2.0f * text.y)
             {
-                labels_.PlaceOutside(OutlineOf(1 - s), At({right.x, center.y}), body.name, TextStyle::Heading,
+                m_labels.PlaceOutside(OutlineOf(1 - s), At({right.x, center.y}), body.name, TextStyle::Heading,
                                      InkOf(s), 1.0f, 0.0f, 6.0f, LabelRank::Name);
             }
             else
             {
-                labels_.PlaceOutside(OutlineOf(1 - s), At({center.x, low.y}), body.name, TextStyle::Heading,
+                m_labels.PlaceOutside(OutlineOf(1 - s), At({center.x, low.y}), body.name, TextStyle::Heading,
                                      InkOf(s), 0.0f, 1.0f, 6.0f, LabelRank::Name);
             }
         }
@@ -2154,45 +2154,45 @@ class Painter
     // The number line: both intervals (and for sweeps B's swept extent and a time bar), with their values.
     void Panel()
     {
-        canvas_.BeginGroup("panel");
-        const float top = layout_.panelTop;
-        canvas_.FillRect({0.0f, top}, {Width(), layout_.worldTop}, palette::kPanel);
-        canvas_.Segment({0.0f, top}, {Width(), top}, palette::kFaint, 1.0f);
-        if (!hasAxis_)
+        m_canvas.BeginGroup("panel");
+        const float top = m_layout.panelTop;
+        m_canvas.FillRect({0.0f, top}, {Width(), m_layout.worldTop}, palette::kPanel);
+        m_canvas.Segment({0.0f, top}, {Width(), top}, palette::kFaint, 1.0f);
+        if (!m_hasAxis)
         {
             return;
         }
         const float left = 24.0f;
-        const float nameWidth = std::max(canvas_.MeasureText(bodyA_.name, TextStyle::Heading).x,
-                                         canvas_.MeasureText(bodyB_.name, TextStyle::Heading).x) +
+        const float nameWidth = std::max(m_canvas.MeasureText(m_bodyA.name, TextStyle::Heading).x,
+                                         m_canvas.MeasureText(m_bodyB.name, TextStyle::Heading).x) +
                                 14.0f;
         const float lineLeft = left + nameWidth;
         const float lineRight = Width() - 28.0f;
-        std::string title = verdict_ ? "deciding " : "";
-        title += (axis_.textbook ? "axis " : "face test ") + std::to_string(axis_.index + 1) + ": projections on " +
-                 DescribeAxis(scene_, study_, axis_.Ref()) +
-                 (!axis_.decided  ? " (number line)"
-                  : axis_.bounded ? " (not walked to: numbers for this view only)"
+        std::string title = m_verdict ? "deciding " : "";
+        title += (m_axis.textbook ? "axis " : "face test ") + std::to_string(m_axis.index + 1) + ": projections on " +
+                 DescribeAxis(m_scene, m_study, m_axis.Ref()) +
+                 (!m_axis.decided  ? " (number line)"
+                  : m_axis.bounded ? " (not walked to: numbers for this view only)"
                                   : " (not evaluated: numbers for this view only)");
         // High enough to keep clear of the end values above A's bar.
-        canvas_.Text({left, top + 4.0f}, title, TextStyle::Label, palette::kMuted);
-        if (axis_.skipped)
+        m_canvas.Text({left, top + 4.0f}, title, TextStyle::Label, palette::kMuted);
+        if (m_axis.skipped)
         {
-            canvas_.Text({left, top + 36.0f}, "skipped: anti-parallel to a face already tested (the same axis)",
+            m_canvas.Text({left, top + 36.0f}, "skipped: anti-parallel to a face already tested (the same axis)",
                          TextStyle::Body, palette::kMuted);
             return;
         }
-        double lo = std::min(axis_.minA, axis_.minB);
-        double hi = std::max(axis_.maxA, axis_.maxB);
-        if (axis_.swept)
+        double lo = std::min(m_axis.minA, m_axis.minB);
+        double hi = std::max(m_axis.maxA, m_axis.maxB);
+        if (m_axis.swept)
         {
-            lo = std::min(lo, axis_.sweptMinB);
-            hi = std::max(hi, axis_.sweptMaxB);
+            lo = std::min(lo, m_axis.sweptMinB);
+            hi = std::max(hi, m_axis.sweptMaxB);
         }
-        if (axis_.bounded)
+        if (m_axis.bounded)
         {
-            lo = std::min(lo, axis_.boundAt);
-            hi = std::max(hi, axis_.boundAt);
+            lo = std::min(lo, m_axis.boundAt);
+            hi = std::max(hi, m_axis.boundAt);
         }
         const double pad = 0.06 * std::max(hi - lo, 1e-12);
         lo -= pad;
@@ -2200,51 +2200,51 @@ class Painter
         auto x = [&](double v) { return static_cast<float>(lineLeft + (v - lo) / (hi - lo) * (lineRight - lineLeft)); };
         const float rowA = top + 42.0f;
         const float rowB = top + 78.0f;
-        canvas_.Text({left, rowA - 9.0f}, bodyA_.name, TextStyle::Heading, palette::kShapeA);
-        canvas_.Text({left, rowB - 9.0f}, bodyB_.name, TextStyle::Heading, palette::kShapeBInk);
+        m_canvas.Text({left, rowA - 9.0f}, m_bodyA.name, TextStyle::Heading, palette::kShapeA);
+        m_canvas.Text({left, rowB - 9.0f}, m_bodyB.name, TextStyle::Heading, palette::kShapeBInk);
 
         // Overlap or gap band behind the bars.
-        const bool overlap = axis_.separation <= 0.0;
-        const float bandLo = x(std::min(axis_.leadMax, axis_.otherMin));
-        const float bandHi = std::max(x(std::max(axis_.leadMax, axis_.otherMin)), bandLo + 1.0f);
-        canvas_.FillRect({bandLo, rowA - 12.0f}, {bandHi, rowB + 12.0f},
+        const bool overlap = m_axis.separation <= 0.0;
+        const float bandLo = x(std::min(m_axis.leadMax, m_axis.otherMin));
+        const float bandHi = std::max(x(std::max(m_axis.leadMax, m_axis.otherMin)), bandLo + 1.0f);
+        m_canvas.FillRect({bandLo, rowA - 12.0f}, {bandHi, rowB + 12.0f},
                          WithAlpha(overlap ? palette::kOverlap : palette::kGap, 0.28f));
-        const std::string amount = BandLabel(axis_);
-        const ScreenPoint amountSize = canvas_.MeasureText(amount, TextStyle::Label);
+        const std::string amount = BandLabel(m_axis);
+        const ScreenPoint amountSize = m_canvas.MeasureText(amount, TextStyle::Label);
         const float amountX =
             std::clamp(0.5f * (bandLo + bandHi) - 0.5f * amountSize.x, lineLeft, lineRight - amountSize.x);
-        canvas_.Text({amountX, 0.5f * (rowA + rowB) - 7.0f}, amount, TextStyle::Label,
+        m_canvas.Text({amountX, 0.5f * (rowA + rowB) - 7.0f}, amount, TextStyle::Label,
                      overlap ? 0x8E3F6CFFu : 0x006E50FFu);
 
-        if (axis_.swept)
+        if (m_axis.swept)
         {
-            canvas_.Segment({x(axis_.sweptMinB), rowB}, {x(axis_.sweptMaxB), rowB}, WithAlpha(palette::kShapeB, 0.35f),
+            m_canvas.Segment({x(m_axis.sweptMinB), rowB}, {x(m_axis.sweptMaxB), rowB}, WithAlpha(palette::kShapeB, 0.35f),
                             12.0f);
         }
-        IntervalRow(x(axis_.minA), x(axis_.maxA), rowA, axis_.minA, axis_.maxA, palette::kShapeA, palette::kShapeA,
+        IntervalRow(x(m_axis.minA), x(m_axis.maxA), rowA, m_axis.minA, m_axis.maxA, palette::kShapeA, palette::kShapeA,
                     true, lineLeft - 8.0f);
-        IntervalRow(x(axis_.minB), x(axis_.maxB), rowB, axis_.minB, axis_.maxB, palette::kShapeB, palette::kShapeBInk,
+        IntervalRow(x(m_axis.minB), x(m_axis.maxB), rowB, m_axis.minB, m_axis.maxB, palette::kShapeB, palette::kShapeBInk,
                     false, lineLeft - 8.0f);
-        if (axis_.bounded)
+        if (m_axis.bounded)
         {
             // The bound: a vertex of the other shape lies here, so the other shape's near end is no farther out.
             // Its label goes under B's row, beside the tick on the side clear of B's end values.
-            const float bx = x(axis_.boundAt);
-            DashedSegment(canvas_, {bx, rowA - 14.0f}, {bx, rowB + 14.0f}, palette::kInk, 1.5f, bounds_, 4.0f, 3.0f);
-            const std::string text = "bound " + FormatNumber(axis_.boundAt);
-            const float width = canvas_.MeasureText(text, TextStyle::Label).x;
-            const float lowEnd = x(axis_.minB) - 4.5f;
-            const float lowStart = lowEnd - canvas_.MeasureText(FormatNumber(axis_.minB), TextStyle::Label).x;
-            const float highStart = x(axis_.maxB) + 4.5f;
-            const float highEnd = highStart + canvas_.MeasureText(FormatNumber(axis_.maxB), TextStyle::Label).x;
+            const float bx = x(m_axis.boundAt);
+            DashedSegment(m_canvas, {bx, rowA - 14.0f}, {bx, rowB + 14.0f}, palette::kInk, 1.5f, m_bounds, 4.0f, 3.0f);
+            const std::string text = "bound " + FormatNumber(m_axis.boundAt);
+            const float width = m_canvas.MeasureText(text, TextStyle::Label).x;
+            const float lowEnd = x(m_axis.minB) - 4.5f;
+            const float lowStart = lowEnd - m_canvas.MeasureText(FormatNumber(m_axis.minB), TextStyle::Label).x;
+            const float highStart = x(m_axis.maxB) + 4.5f;
+            const float highEnd = highStart + m_canvas.MeasureText(FormatNumber(m_axis.maxB), TextStyle::Label).x;
             const auto clear = [&](float from) {
                 return (from + width < lowStart || from > lowEnd) && (from + width < highStart || from > highEnd);
             };
             const float tx = clear(bx + 4.0f) ? bx + 4.0f : clear(bx - 4.0f - width) ? bx - 4.0f - width : bx + 4.0f;
-            canvas_.Text({std::clamp(tx, lineLeft, lineRight - width), rowB + 16.0f}, text, TextStyle::Label,
+            m_canvas.Text({std::clamp(tx, lineLeft, lineRight - width), rowB + 16.0f}, text, TextStyle::Label,
                          palette::kInk);
         }
-        if (axis_.swept)
+        if (m_axis.swept)
         {
             TimeBar(top + 128.0f, lineLeft, lineRight);
         }
@@ -2253,66 +2253,66 @@ class Painter
     void IntervalRow(float x0, float x1, float y, double v0, double v1, Color color, Color ink, bool above,
                      float rowStart)
     {
-        canvas_.Segment({x0, y}, {x1, y}, color, 8.0f);
-        canvas_.Segment({x0, y - 7.0f}, {x0, y + 7.0f}, ink, 1.5f);
-        canvas_.Segment({x1, y - 7.0f}, {x1, y + 7.0f}, ink, 1.5f);
+        m_canvas.Segment({x0, y}, {x1, y}, color, 8.0f);
+        m_canvas.Segment({x0, y - 7.0f}, {x0, y + 7.0f}, ink, 1.5f);
+        m_canvas.Segment({x1, y - 7.0f}, {x1, y + 7.0f}, ink, 1.5f);
         const std::string s0 = FormatNumber(v0);
         const std::string s1 = FormatNumber(v1);
-        const ScreenPoint size0 = canvas_.MeasureText(s0, TextStyle::Label);
+        const ScreenPoint size0 = m_canvas.MeasureText(s0, TextStyle::Label);
         const float ty = above ? y - 9.0f - size0.y : y + 9.0f;
         if (s0 == s1)
         {
             // Ends that print alike (a point, or an interval narrower than the printed digits): one value, over
             // the bar, rather than the same number twice side by side.
-            canvas_.Text({0.5f * (x0 + x1) - 0.5f * size0.x, ty}, s0, TextStyle::Label, ink);
+            m_canvas.Text({0.5f * (x0 + x1) - 0.5f * size0.x, ty}, s0, TextStyle::Label, ink);
             return;
         }
         // End values sit outside their bar ends, two spaces apart at least, so that they never read as one; a long
         // number (a pair far from the origin) slides in along its row rather than reach the image's edge or the
         // body's name at the row's start.
-        const float size1 = canvas_.MeasureText(s1, TextStyle::Label).x;
-        canvas_.Text({std::max(x0 - size0.x - 4.5f, rowStart), ty}, s0, TextStyle::Label, ink);
-        canvas_.Text({std::min(x1 + 4.5f, Width() - 8.0f - size1), ty}, s1, TextStyle::Label, ink);
+        const float size1 = m_canvas.MeasureText(s1, TextStyle::Label).x;
+        m_canvas.Text({std::max(x0 - size0.x - 4.5f, rowStart), ty}, s0, TextStyle::Label, ink);
+        m_canvas.Text({std::min(x1 + 4.5f, Width() - 8.0f - size1), ty}, s1, TextStyle::Label, ink);
     }
 
     // t from 0 to 1: this axis's entry and exit, and the window (latest entry, earliest exit) so far.
     void TimeBar(float y, float barLeft, float right)
     {
-        canvas_.BeginGroup("timebar");
-        canvas_.Text({24.0f, y - 8.0f}, "time", TextStyle::Heading, palette::kMuted);
+        m_canvas.BeginGroup("timebar");
+        m_canvas.Text({24.0f, y - 8.0f}, "time", TextStyle::Heading, palette::kMuted);
         // Rows under the bar: the tick labels (y + 10), the marker labels (y + 25, a gap of 2 pixels below the
         // ticks') and a window that never opens (y + 43). The bar and its marker labels keep clear of the heading
         // (short body names leave the rows above a narrow margin), even for a time at or before 0.
-        const float labelsFrom = 24.0f + canvas_.MeasureText("time", TextStyle::Heading).x + 8.0f;
+        const float labelsFrom = 24.0f + m_canvas.MeasureText("time", TextStyle::Heading).x + 8.0f;
         const float left = std::max(barLeft, labelsFrom + 16.0f);
         auto x = [&](double t) { return static_cast<float>(left + std::clamp(t, -0.02, 1.02) * (right - left)); };
-        canvas_.Segment({x(0.0), y}, {x(1.0), y}, palette::kMuted, 2.0f);
+        m_canvas.Segment({x(0.0), y}, {x(1.0), y}, palette::kMuted, 2.0f);
         for (double t : {0.0, 0.5, 1.0})
         {
-            canvas_.Segment({x(t), y - 5.0f}, {x(t), y + 5.0f}, palette::kMuted, 1.5f);
+            m_canvas.Segment({x(t), y - 5.0f}, {x(t), y + 5.0f}, palette::kMuted, 1.5f);
             const std::string text = t == 0.0 ? "t = 0" : (t == 1.0 ? "1" : "0.5");
-            const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
-            canvas_.Text({x(t) - 0.5f * size.x, y + 10.0f}, text, TextStyle::Label, palette::kMuted);
+            const ScreenPoint size = m_canvas.MeasureText(text, TextStyle::Label);
+            m_canvas.Text({x(t) - 0.5f * size.x, y + 10.0f}, text, TextStyle::Label, palette::kMuted);
         }
         // The common window of all axes so far: a hit needs it to be non-empty and to start within [0, 1].
-        const double w0 = std::max(axis_.windowEntry, 0.0);
-        const double w1 = std::min(axis_.windowExit, 1.0);
-        if (w0 <= w1 && axis_.windowEntry <= 1.0)
+        const double w0 = std::max(m_axis.windowEntry, 0.0);
+        const double w1 = std::min(m_axis.windowExit, 1.0);
+        if (w0 <= w1 && m_axis.windowEntry <= 1.0)
         {
-            canvas_.FillRect({x(w0), y - 9.0f}, {std::max(x(w1), x(w0) + 2.0f), y + 1.0f},
+            m_canvas.FillRect({x(w0), y - 9.0f}, {std::max(x(w1), x(w0) + 2.0f), y + 1.0f},
                              WithAlpha(palette::kOverlap, 0.45f));
         }
-        else if (axis_.windowExit < axis_.windowEntry && axis_.windowExit <= 1.0)
+        else if (m_axis.windowExit < m_axis.windowEntry && m_axis.windowExit <= 1.0)
         {
             // Some axis parts before another meets: the shapes never overlap on all axes at once.
-            const float a = x(axis_.windowExit);
-            const float b = std::max(x(axis_.windowEntry), a + 2.0f);
-            canvas_.FillRect({a, y - 3.0f}, {b, y + 3.0f}, WithAlpha(palette::kResult, 0.55f));
-            const std::string text = "no common time: exit " + FormatNumber(axis_.windowExit) + " < entry " +
-                                     FormatNumber(axis_.windowEntry);
-            const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
+            const float a = x(m_axis.windowExit);
+            const float b = std::max(x(m_axis.windowEntry), a + 2.0f);
+            m_canvas.FillRect({a, y - 3.0f}, {b, y + 3.0f}, WithAlpha(palette::kResult, 0.55f));
+            const std::string text = "no common time: exit " + FormatNumber(m_axis.windowExit) + " < entry " +
+                                     FormatNumber(m_axis.windowEntry);
+            const ScreenPoint size = m_canvas.MeasureText(text, TextStyle::Label);
             // A row of its own, under the entry and exit labels.
-            canvas_.Text({std::clamp(0.5f * (a + b) - 0.5f * size.x, left, right - size.x), y + 43.0f}, text,
+            m_canvas.Text({std::clamp(0.5f * (a + b) - 0.5f * size.x, left, right - size.x), y + 43.0f}, text,
                          TextStyle::Label, 0xA04000FFu);
         }
         auto marker = [&](double t, const std::string& name, bool up) {
@@ -2321,8 +2321,8 @@ class Painter
                 const std::string text = std::isnan(t) ? name + ": never overlap"
                                          : t < 0.0     ? name + ": overlapping from the start"
                                                        : name + ": they never part";
-                const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
-                canvas_.Text({right - size.x, up ? y - 10.0f - size.y : y + 25.0f}, text, TextStyle::Label,
+                const ScreenPoint size = m_canvas.MeasureText(text, TextStyle::Label);
+                m_canvas.Text({right - size.x, up ? y - 10.0f - size.y : y + 25.0f}, text, TextStyle::Label,
                              palette::kInk);
                 return;
             }
@@ -2330,43 +2330,43 @@ class Painter
             const float px = x(t);
             const float dir = up ? -1.0f : 1.0f;
             const ScreenPoint tri[3] = {{px, y}, {px - 5.0f, y + dir * 9.0f}, {px + 5.0f, y + dir * 9.0f}};
-            canvas_.FillConvex(tri, 3, palette::kInk);
+            m_canvas.FillConvex(tri, 3, palette::kInk);
             std::string text = name + " " + (std::isinf(t) ? "never" : FormatNumber(t));
             if (!inside)
             {
                 text += t < 0.0 ? " (before)" : " (after)";
             }
-            const ScreenPoint size = canvas_.MeasureText(text, TextStyle::Label);
+            const ScreenPoint size = m_canvas.MeasureText(text, TextStyle::Label);
             const float tx =
                 std::clamp(px - 0.5f * size.x, std::max(left - 40.0f, labelsFrom), Width() - size.x - 4.0f);
-            canvas_.Text({tx, up ? y - 10.0f - size.y : y + 25.0f}, text, TextStyle::Label, palette::kInk);
+            m_canvas.Text({tx, up ? y - 10.0f - size.y : y + 25.0f}, text, TextStyle::Label, palette::kInk);
         };
-        const SweepStatus status = study_.Textbook() ? study_.textbookSweepResult.status : study_.sweepResult.status;
+        const SweepStatus status = m_study.Textbook() ? m_study.textbookSweepResult.status : m_study.sweepResult.status;
         // A hit's verdict is the common window, as its sentence says: the latest entry and the earliest exit of all
         // axes (the deciding axis's own exit may come later).
-        if (verdict_ && status == SweepStatus::Hit)
+        if (m_verdict && status == SweepStatus::Hit)
         {
-            marker(axis_.windowEntry, "latest entry", true);
-            marker(axis_.windowExit, "earliest exit", false);
+            marker(m_axis.windowEntry, "latest entry", true);
+            marker(m_axis.windowExit, "earliest exit", false);
         }
         else
         {
-            if (!std::isinf(axis_.entry) || axis_.separation > 0.0 || axis_.never)
+            if (!std::isinf(m_axis.entry) || m_axis.separation > 0.0 || m_axis.never)
             {
-                marker(axis_.entry, "entry", true);
+                marker(m_axis.entry, "entry", true);
             }
-            const bool noCommonTime = !(w0 <= w1 && axis_.windowEntry <= 1.0) && axis_.windowExit < axis_.windowEntry &&
-                                      axis_.windowExit <= 1.0;
-            if (!(noCommonTime && std::isinf(axis_.exit)) && !axis_.never)
+            const bool noCommonTime = !(w0 <= w1 && m_axis.windowEntry <= 1.0) && m_axis.windowExit < m_axis.windowEntry &&
+                                      m_axis.windowExit <= 1.0;
+            if (!(noCommonTime && std::isinf(m_axis.exit)) && !m_axis.never)
             {
-                marker(axis_.exit, "exit", false);
+                marker(m_axis.exit, "exit", false);
             }
         }
-        if (verdict_ && status == SweepStatus::Hit)
+        if (m_verdict && status == SweepStatus::Hit)
         {
-            const float px = x(study_.Textbook() ? study_.textbookSweepResult.toi : study_.sweepResult.toi);
+            const float px = x(m_study.Textbook() ? m_study.textbookSweepResult.toi : m_study.sweepResult.toi);
             // Short enough to keep clear of the entry label above and the tick labels below.
-            canvas_.Segment({px, y - 9.0f}, {px, y + 8.0f}, palette::kResult, 3.0f);
+            m_canvas.Segment({px, y - 9.0f}, {px, y + 8.0f}, palette::kResult, 3.0f);
         }
     }
 
@@ -2381,7 +2381,7 @@ class Painter
         for (const std::string& word : words)
         {
             const std::string candidate = line.empty() ? word : line + " " + word;
-            if (!line.empty() && canvas_.MeasureText(candidate, style).x > maxWidth)
+            if (!line.empty() && m_canvas.MeasureText(candidate, style).x > maxWidth)
             {
                 lines.push_back(line);
                 line = word;
@@ -2414,14 +2414,14 @@ class Painter
         CaptionLines c;
         // The verdict counts the contact points only where the figure draws them.
         const std::string text = WorldCaption().empty()
-                                     ? DescribeStep(scene_, study_, figure_.step, Has(figure_, kLayerContacts))
+                                     ? DescribeStep(m_scene, m_study, m_figure.step, Has(m_figure, kLayerContacts))
                                      : WorldCaption();
         const float y = kPad - 2.0f;
-        const float room = layout_.sceneTop - 6.0f;
+        const float room = m_layout.sceneTop - 6.0f;
         float used = 0.0f;
-        if (!figure_.caption.empty())
+        if (!m_figure.caption.empty())
         {
-            for (const std::string& l : Wrap(figure_.caption, TextStyle::Heading))
+            for (const std::string& l : Wrap(m_figure.caption, TextStyle::Heading))
             {
                 c.rows.push_back({l, TextStyle::Heading});
                 used += kLineHeight;
@@ -2437,11 +2437,11 @@ class Painter
             c.height = kLabelLineHeight;
             c.lines = Wrap(text, c.style);
         }
-        if (!fits(c.lines, c.height) && view_.width < kSmallFigure)
+        if (!fits(c.lines, c.height) && m_view.width < kSmallFigure)
         {
-            c.lines = Wrap(StepTitle(scene_, study_, figure_.step), c.style);
+            c.lines = Wrap(StepTitle(m_scene, m_study, m_figure.step), c.style);
         }
-        c.bottom = std::max(layout_.sceneTop, y + used + c.height * static_cast<float>(c.lines.size()) + 6.0f);
+        c.bottom = std::max(m_layout.sceneTop, y + used + c.height * static_cast<float>(c.lines.size()) + 6.0f);
         return c;
     }
 
@@ -2451,18 +2451,18 @@ class Painter
     std::string WorldCaption() const
     {
         const LayerMask world = kLayerBroadphase | kLayerResponse | kLayerHits | kLayerPlots;
-        if (figure_.sim == nullptr || (figure_.layers & world) == 0)
+        if (m_figure.sim == nullptr || (m_figure.layers & world) == 0)
         {
             return "";
         }
-        const std::string step = std::to_string(figure_.sim->steps);
-        if (Has(figure_, kLayerResponse))
+        const std::string step = std::to_string(m_figure.sim->steps);
+        if (Has(m_figure, kLayerResponse))
         {
-            return "The panel below follows the solver's response to " + bodyA_.name + " and " + bodyB_.name +
+            return "The panel below follows the solver's response to " + m_bodyA.name + " and " + m_bodyB.name +
                    " in step " + step + ", one stage a line, each from the numbers before it.";
         }
         // The first stage says whether the pair had a contact in the step, and of which kind.
-        const std::vector<ResponseStep> response = DescribeResponse(scene_, *figure_.sim);
+        const std::vector<ResponseStep> response = DescribeResponse(m_scene, *m_figure.sim);
         return response.empty() ? "Step " + step + " of the world." : response.front().sentence;
     }
 
@@ -2471,49 +2471,49 @@ class Painter
     // figures, where it does not fit, the step's short title, so that the scene stays in view.
     void Caption()
     {
-        canvas_.BeginGroup("caption");
-        const CaptionLines& c = caption_;
-        canvas_.FillRect({0.0f, 0.0f}, {Width(), c.bottom}, palette::kPanel);
-        canvas_.Segment({0.0f, c.bottom}, {Width(), c.bottom}, palette::kFaint, 1.0f);
+        m_canvas.BeginGroup("caption");
+        const CaptionLines& c = m_caption;
+        m_canvas.FillRect({0.0f, 0.0f}, {Width(), c.bottom}, palette::kPanel);
+        m_canvas.Segment({0.0f, c.bottom}, {Width(), c.bottom}, palette::kFaint, 1.0f);
         float y = kPad - 2.0f;
         for (const auto& [l, rowStyle] : c.rows)
         {
-            canvas_.Text({kPad, y}, l, rowStyle, palette::kInk);
+            m_canvas.Text({kPad, y}, l, rowStyle, palette::kInk);
             y += kLineHeight;
         }
         for (const std::string& l : c.lines)
         {
-            canvas_.Text({kPad, y}, l, c.style, palette::kInk);
+            m_canvas.Text({kPad, y}, l, c.style, palette::kInk);
             y += c.height;
         }
     }
 
-    Canvas& canvas_;
-    const Scene& scene_;
-    const PairStudy& study_;
-    const Figure& figure_;
-    const View& view_;
-    FigureLayout layout_;
-    LabelPlacer labels_;
-    const Body& bodyA_;
-    const Body& bodyB_;
-    ScreenRect bounds_{};
-    std::vector<std::pair<Vec2, double>> points_;
-    Vec2 discCenter_{};
-    double discRadius_ = 1.0;
-    bool verdict_ = false;
-    int axisIndex_ = -1;
-    bool hasAxis_ = false;
-    ShownAxis axis_{};
-    bool hasMtvArrow_ = false;
-    ScreenPoint mtvFrom_{};
-    ScreenPoint mtvTo_{};
-    CaptionLines caption_;
-    std::vector<LegendMark> used_; // marks drawn that only their drawing knows of
-    bool hasPitfallArrow_ = false;
-    std::vector<ScreenRect> heads_; // the arrow heads drawn so far, which no later arrow may cover
-    ScreenPoint pitfallFrom_{};
-    ScreenPoint pitfallTo_{};
+    Canvas& m_canvas;
+    const Scene& m_scene;
+    const PairStudy& m_study;
+    const Figure& m_figure;
+    const View& m_view;
+    FigureLayout m_layout;
+    LabelPlacer m_labels;
+    const Body& m_bodyA;
+    const Body& m_bodyB;
+    ScreenRect m_bounds{};
+    std::vector<std::pair<Vec2, double>> m_points;
+    Vec2 m_discCenter{};
+    double m_discRadius = 1.0;
+    bool m_verdict = false;
+    int m_axisIndex = -1;
+    bool m_hasAxis = false;
+    ShownAxis m_axis{};
+    bool m_hasMtvArrow = false;
+    ScreenPoint m_mtvFrom{};
+    ScreenPoint m_mtvTo{};
+    CaptionLines m_caption;
+    std::vector<LegendMark> m_used; // marks drawn that only their drawing knows of
+    bool m_hasPitfallArrow = false;
+    std::vector<ScreenRect> m_heads; // the arrow heads drawn so far, which no later arrow may cover
+    ScreenPoint m_pitfallFrom{};
+    ScreenPoint m_pitfallTo{};
 };
 
 } // namespace

@@ -8,7 +8,7 @@ DrawCommand& RecordingCanvas::Add(DrawCommand::Kind kind, Color color)
 {
     DrawCommand& command = commands.emplace_back();
     command.kind = kind;
-    command.group = group_;
+    command.group = m_group;
     command.color = color;
     return command;
 }
@@ -68,7 +68,7 @@ ScreenPoint RecordingCanvas::MeasureText(std::string_view text, TextStyle style)
 
 void RecordingCanvas::BeginGroup(std::string_view name)
 {
-    group_ = std::string(name);
+    m_group = std::string(name);
 }
 
 std::vector<const DrawCommand*> RecordingCanvas::InGroup(std::string_view name) const

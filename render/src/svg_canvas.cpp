@@ -46,7 +46,7 @@ float SvgBaseline(TextStyle style)
 }
 
 SvgCanvas::SvgCanvas(int width, int height, TextMeasure measure)
-    : width_(width), height_(height), measure_(measure ? std::move(measure) : TextMeasure(FontTextSize))
+    : m_width(width), m_height(height), m_measure(measure ? std::move(measure) : TextMeasure(FontTextSize))
 {
 }
 
@@ -70,58 +70,58 @@ void SvgCanvas::Number(float value)
     {
         --end;
     }
-    body_.append(text, end);
+    m_body.append(text, end);
 }
 
 void SvgCanvas::Point(ScreenPoint p)
 {
     Number(p.x);
-    body_ += ',';
+    m_body += ',';
     Number(p.y);
 }
 
 void SvgCanvas::Stroke(Color color, float thickness)
 {
-    body_ += " stroke=\"";
-    body_ += Hex(color);
-    body_ += '"';
+    m_body += " stroke=\"";
+    m_body += Hex(color);
+    m_body += '"';
     if ((color & 0xFF) != 0xFF)
     {
-        body_ += " stroke-opacity=\"";
+        m_body += " stroke-opacity=\"";
         Number(Opacity(color));
-        body_ += '"';
+        m_body += '"';
     }
-    body_ += " stroke-width=\"";
+    m_body += " stroke-width=\"";
     Number(thickness);
-    body_ += '"';
+    m_body += '"';
 }
 
 void SvgCanvas::Fill(Color color)
 {
-    body_ += " fill=\"";
-    body_ += Hex(color);
-    body_ += '"';
+    m_body += " fill=\"";
+    m_body += Hex(color);
+    m_body += '"';
     if ((color & 0xFF) != 0xFF)
     {
-        body_ += " fill-opacity=\"";
+        m_body += " fill-opacity=\"";
         Number(Opacity(color));
-        body_ += '"';
+        m_body += '"';
     }
 }
 
 void SvgCanvas::Segment(ScreenPoint a, ScreenPoint b, Color color, float thickness)
 {
-    body_ += "<line x1=\"";
+    m_body += "<line x1=\"";
     Number(a.x);
-    body_ += "\" y1=\"";
+    m_body += "\" y1=\"";
     Number(a.y);
-    body_ += "\" x2=\"";
+    m_body += "\" x2=\"";
     Number(b.x);
-    body_ += "\" y2=\"";
+    m_body += "\" y2=\"";
     Number(b.y);
-    body_ += '"';
+    m_body += '"';
     Stroke(color, thickness);
-    body_ += "/>\n";
+    m_body += "/>\n";
 }
 
 void SvgCanvas::Polyline(const ScreenPoint* points, int count, bool closed, Color color, float thickness)
@@ -130,18 +130,18 @@ void SvgCanvas::Polyline(const ScreenPoint* points, int count, bool closed, Colo
     {
         return;
     }
-    body_ += closed ? "<polygon points=\"" : "<polyline points=\"";
+    m_body += closed ? "<polygon points=\"" : "<polyline points=\"";
     for (int i = 0; i < count; ++i)
     {
         if (i > 0)
         {
-            body_ += ' ';
+            m_body += ' ';
         }
         Point(points[i]);
     }
-    body_ += "\" fill=\"none\"";
+    m_body += "\" fill=\"none\"";
     Stroke(color, thickness);
-    body_ += " stroke-linejoin=\"round\"/>\n";
+    m_body += " stroke-linejoin=\"round\"/>\n";
 }
 
 void SvgCanvas::FillConvex(const ScreenPoint* points, int count, Color color)
@@ -150,132 +150,132 @@ void SvgCanvas::FillConvex(const ScreenPoint* points, int count, Color color)
     {
         return;
     }
-    body_ += "<polygon points=\"";
+    m_body += "<polygon points=\"";
     for (int i = 0; i < count; ++i)
     {
         if (i > 0)
         {
-            body_ += ' ';
+            m_body += ' ';
         }
         Point(points[i]);
     }
-    body_ += '"';
+    m_body += '"';
     Fill(color);
-    body_ += "/>\n";
+    m_body += "/>\n";
 }
 
 void SvgCanvas::Circle(ScreenPoint center, float radius, Color color, float thickness)
 {
-    body_ += "<circle cx=\"";
+    m_body += "<circle cx=\"";
     Number(center.x);
-    body_ += "\" cy=\"";
+    m_body += "\" cy=\"";
     Number(center.y);
-    body_ += "\" r=\"";
+    m_body += "\" r=\"";
     Number(radius);
-    body_ += "\" fill=\"none\"";
+    m_body += "\" fill=\"none\"";
     Stroke(color, thickness);
-    body_ += "/>\n";
+    m_body += "/>\n";
 }
 
 void SvgCanvas::FillCircle(ScreenPoint center, float radius, Color color)
 {
-    body_ += "<circle cx=\"";
+    m_body += "<circle cx=\"";
     Number(center.x);
-    body_ += "\" cy=\"";
+    m_body += "\" cy=\"";
     Number(center.y);
-    body_ += "\" r=\"";
+    m_body += "\" r=\"";
     Number(radius);
-    body_ += '"';
+    m_body += '"';
     Fill(color);
-    body_ += "/>\n";
+    m_body += "/>\n";
 }
 
 void SvgCanvas::FillRect(ScreenPoint min, ScreenPoint max, Color color)
 {
-    body_ += "<rect x=\"";
+    m_body += "<rect x=\"";
     Number(min.x);
-    body_ += "\" y=\"";
+    m_body += "\" y=\"";
     Number(min.y);
-    body_ += "\" width=\"";
+    m_body += "\" width=\"";
     Number(max.x - min.x);
-    body_ += "\" height=\"";
+    m_body += "\" height=\"";
     Number(max.y - min.y);
-    body_ += '"';
+    m_body += '"';
     Fill(color);
-    body_ += "/>\n";
+    m_body += "/>\n";
 }
 
 void SvgCanvas::Text(ScreenPoint topLeft, std::string_view text, TextStyle style, Color color)
 {
-    body_ += "<text x=\"";
+    m_body += "<text x=\"";
     Number(topLeft.x);
-    body_ += "\" y=\"";
+    m_body += "\" y=\"";
     Number(topLeft.y + SvgBaseline(style));
-    body_ += "\" font-size=\"";
+    m_body += "\" font-size=\"";
     Number(SvgFontSize(style));
-    body_ += '"';
+    m_body += '"';
     if (style == TextStyle::Heading)
     {
-        body_ += " font-weight=\"bold\"";
+        m_body += " font-weight=\"bold\"";
     }
     Fill(color);
-    body_ += '>';
+    m_body += '>';
     for (const char c : text)
     {
         switch (c)
         {
         case '&':
-            body_ += "&amp;";
+            m_body += "&amp;";
             break;
         case '<':
-            body_ += "&lt;";
+            m_body += "&lt;";
             break;
         case '>':
-            body_ += "&gt;";
+            m_body += "&gt;";
             break;
         default:
             // Control characters are not allowed in XML 1.0; the painter never draws them.
             if (static_cast<unsigned char>(c) >= 0x20 || c == '\t')
             {
-                body_ += c;
+                m_body += c;
             }
         }
     }
-    body_ += "</text>\n";
+    m_body += "</text>\n";
 }
 
 ScreenPoint SvgCanvas::MeasureText(std::string_view text, TextStyle style)
 {
-    return measure_(text, style);
+    return m_measure(text, style);
 }
 
 void SvgCanvas::BeginGroup(std::string_view name)
 {
-    if (groupOpen_)
+    if (m_groupOpen)
     {
-        body_ += "</g>\n";
+        m_body += "</g>\n";
     }
-    body_ += "<g class=\"";
+    m_body += "<g class=\"";
     for (const char c : name)
     {
         // Group names are the painter's identifiers; anything else becomes '-' so the attribute stays valid.
         const bool plain =
             (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
-        body_ += plain ? c : '-';
+        m_body += plain ? c : '-';
     }
-    body_ += "\">\n";
-    groupOpen_ = true;
+    m_body += "\">\n";
+    m_groupOpen = true;
 }
 
 std::string SvgCanvas::Document() const
 {
     std::string document = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
                            "version=\"1.1\" width=\"" +
-                           std::to_string(width_) + "\" height=\"" + std::to_string(height_) + "\" viewBox=\"0 0 " +
-                           std::to_string(width_) + " " + std::to_string(height_) +
+                           std::to_string(m_width) + "\" height=\"" + std::to_string(m_height) + "\" viewBox=\"0 0 " +
+                           std::to_string(m_width) + " " + std::to_string(m_height) +
                            "\" font-family=\"DejaVu Sans, sans-serif\" xml:space=\"preserve\">\n";
-    document += body_;
-    if (groupOpen_)
+    document += m_body;
+    if (m_groupOpen)
     {
         document += "</g>\n";
     }

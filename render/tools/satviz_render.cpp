@@ -45,14 +45,14 @@ class HeadlessRenderer
   public:
     ~HeadlessRenderer()
     {
-        if (imgui_ != nullptr)
+        if (m_imgui != nullptr)
         {
             ImGui_ImplOpenGL2_Shutdown();
-            ImGui::DestroyContext(imgui_);
+            ImGui::DestroyContext(m_imgui);
         }
-        if (context_ != nullptr)
+        if (m_context != nullptr)
         {
-            OSMesaDestroyContext(context_);
+            OSMesaDestroyContext(m_context);
         }
     }
 
@@ -67,8 +67,8 @@ class HeadlessRenderer
                                   OSMESA_PROFILE,
                                   OSMESA_COMPAT_PROFILE,
                                   0};
-        context_ = OSMesaCreateContextAttribs(attributes, nullptr);
-        if (context_ == nullptr)
+        m_context = OSMesaCreateContextAttribs(attributes, nullptr);
+        if (m_context == nullptr)
         {
             error = "OSMesa: cannot create an OpenGL context";
             return false;
@@ -79,12 +79,12 @@ class HeadlessRenderer
             return false;
         }
         IMGUI_CHECKVERSION();
-        imgui_ = ImGui::CreateContext();
+        m_imgui = ImGui::CreateContext();
         ImGuiIO& io = ImGui::GetIO();
         io.IniFilename = nullptr;
         io.LogFilename = nullptr;
         io.DeltaTime = 1.0f / 60.0f;
-        if (!satviz::AddFigureFonts(*io.Fonts, fonts_, error))
+        if (!satviz::AddFigureFonts(*io.Fonts, m_fonts, error))
         {
             return false;
         }
@@ -104,7 +104,7 @@ class HeadlessRenderer
     {
         const int width = setup.figure.view.width;
         const int height = setup.figure.view.height;
-        if ((width != width_ || height != height_) && !Resize(width, height))
+        if ((width != m_width || height != m_height) && !Resize(width, height))
         {
             error = "OSMesa: cannot resize the frame buffer";
             return false;
@@ -113,7 +113,7 @@ class HeadlessRenderer
         io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
         ImGui_ImplOpenGL2_NewFrame();
         ImGui::NewFrame();
-        satviz::FigureDrawing drawing(scene, setup.study, setup.figure, fonts_);
+        satviz::FigureDrawing drawing(scene, setup.study, setup.figure, m_fonts);
         ImGui::Render();
         glViewport(0, 0, width, height);
         glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
@@ -129,7 +129,7 @@ class HeadlessRenderer
     /// Paints one figure as an SVG document, its text measured by the figure fonts (the PNG's layout).
     std::string RenderSvg(const satviz::Scene& scene, const satviz::FigureSetup& setup) const
     {
-        const satviz::FigureFonts fonts = fonts_;
+        const satviz::FigureFonts fonts = m_fonts;
         satviz::SvgCanvas canvas(
             setup.figure.view.width, setup.figure.view.height, [fonts](std::string_view text, satviz::TextStyle style) {
                 ImFont* font = style == satviz::TextStyle::Label
@@ -146,22 +146,22 @@ class HeadlessRenderer
   private:
     bool Resize(int width, int height)
     {
-        buffer_.assign(static_cast<size_t>(width) * static_cast<size_t>(height) * 4, 0);
-        if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width, height))
+        m_buffer.assign(static_cast<size_t>(width) * static_cast<size_t>(height) * 4, 0);
+        if (!OSMesaMakeCurrent(m_context, m_buffer.data(), GL_UNSIGNED_BYTE, width, height))
         {
             return false;
         }
-        width_ = width;
-        height_ = height;
+        m_width = width;
+        m_height = height;
         return true;
     }
 
-    OSMesaContext context_ = nullptr;
-    ImGuiContext* imgui_ = nullptr;
-    satviz::FigureFonts fonts_;
-    std::vector<unsigned char> buffer_;
-    int width_ = 0;
-    int height_ = 0;
+    OSMesaContext m_context = nullptr;
+    ImGuiContext* m_imgui = nullptr;
+    satviz::FigureFonts m_fonts;
+    std::vector<unsigned char> m_buffer;
+    int m_width = 0;
+    int m_height = 0;
 };
 
 // Pairs with more vertices than this (both shapes together) get a progress line while they are traced.

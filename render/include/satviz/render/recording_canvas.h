@@ -59,7 +59,7 @@ class RecordingCanvas : public Canvas
 
   private:
     DrawCommand& Add(DrawCommand::Kind kind, Color color);
-    std::string group_;
+    std::string m_group;
 };
 
 } // namespace satviz

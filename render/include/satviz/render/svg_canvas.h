@@ -44,11 +44,11 @@ class SvgCanvas : public Canvas
     void Stroke(Color color, float thickness);
     void Fill(Color color);
 
-    int width_;
-    int height_;
-    TextMeasure measure_;
-    std::string body_;
-    bool groupOpen_ = false;
+    int m_width;
+    int m_height;
+    TextMeasure m_measure;
+    std::string m_body;
+    bool m_groupOpen = false;
 };
 
 /// The font size in an SVG file for a text style. The figure fonts are loaded by pixel height, ascent to descent

@@ -23,16 +23,16 @@ class FigureDrawing
     FigureDrawing(const FigureDrawing&) = delete;
     FigureDrawing& operator=(const FigureDrawing&) = delete;
     /// The draw data to hand to a renderer backend.
-    ImDrawData* DrawData() { return &data_; }
+    ImDrawData* DrawData() { return &m_data; }
 
   private:
     ImDrawList* NewList();
 
-    float width_;
-    float height_;
-    std::vector<std::unique_ptr<ImDrawList>> lists_;
-    std::vector<ImDrawList*> pointers_;
-    ImDrawData data_;
+    float m_width;
+    float m_height;
+    std::vector<std::unique_ptr<ImDrawList>> m_lists;
+    std::vector<ImDrawList*> m_pointers;
+    ImDrawData m_data;
 };
 
 } // namespace satviz

@@ -52,32 +52,32 @@ class ImDrawListCanvas : public Canvas
     ScreenPoint MeasureText(std::string_view text, TextStyle style) override;
 
     /// Number of calls dropped because both draw lists were full.
-    int Dropped() const { return dropped_; }
+    int Dropped() const { return m_dropped; }
     /// Has `clear` fill the opaque rectangles of at least kClearArea pixels (the figure's ground, its panels): the
     /// renderer calls it in the list's order with the command's ClipRect the rectangle and its UserCallbackData
     /// the colour (RGBA, as a Color), and it fills them without shading each pixel (a scissored glClear), which a
     /// software rasterizer does many times faster than two blended, textured triangles. Null: triangles.
-    void ClearLargeRects(ImDrawCallback clear) { clear_ = clear; }
+    void ClearLargeRects(ImDrawCallback clear) { m_clear = clear; }
     /// Fills FillOutlined's polygons without ImGui's anti-aliased fringe, under their anti-aliased outline: two
     /// triangles fewer per edge, each a thin sliver a software rasterizer pays for, and no visible change. Off by
     /// default, so that satviz-render's figures keep the fringe they were drawn with.
-    void PlainFillsUnderOutlines(bool plain) { plainUnderOutlines_ = plain; }
+    void PlainFillsUnderOutlines(bool plain) { m_plainUnderOutlines = plain; }
     /// Least area, in pixels, of a rectangle that ClearLargeRects fills by clearing.
     static constexpr float kClearArea = 4096.0f;
 
   private:
     ImDrawList* Target(int vertices);
-    ImVec2 P(ScreenPoint p) const { return {p.x + origin_.x, p.y + origin_.y}; }
+    ImVec2 P(ScreenPoint p) const { return {p.x + m_origin.x, p.y + m_origin.y}; }
     ImFont* FontOf(TextStyle style) const;
 
-    ImDrawList* list_;
-    std::function<ImDrawList*()> more_;
-    FigureFonts fonts_;
-    ImVec2 origin_;
-    ImVector<ImVec2> scratch_;
-    int dropped_ = 0;
-    ImDrawCallback clear_ = nullptr;
-    bool plainUnderOutlines_ = false;
+    ImDrawList* m_list;
+    std::function<ImDrawList*()> m_more;
+    FigureFonts m_fonts;
+    ImVec2 m_origin;
+    ImVector<ImVec2> m_scratch;
+    int m_dropped = 0;
+    ImDrawCallback m_clear = nullptr;
+    bool m_plainUnderOutlines = false;
 };
 
 /// The colour a ClearLargeRects callback receives in ImDrawCmd::UserCallbackData.
