@@ -74,18 +74,6 @@ MappedIncidentPolygon(const PolygonT<double>& p, const TransformT<double>& xfInc
     });
 }
 
-/// The largest separation over the n faces of a polygon (FaceSeparations512) and its first face, NaN ignored (no
-/// comparison holds for it; face 0 when no face has a number), as SmallRefFaceQuery finds them.
-[[gnu::target("avx512f")]] inline double LargestSeparation512(const Lanes8& separations, int n, int& face)
-{
-    constexpr double kInfinity = std::numeric_limits<double>::infinity();
-    const int numbers = separations.GreaterBits(Lanes8::Fill(-kInfinity));
-    const double largest = separations.Replace(~numbers & 0xFF, -kInfinity).MaxLane();
-    const int hits = separations.EqualBits(Lanes8::Fill(largest)) & ((1 << n) - 1);
-    face = hits != 0 ? __builtin_ctz(static_cast<unsigned>(hits)) : 0;
-    return largest;
-}
-
 /// The manifold of two polygons of at most 8 vertices of which no face separates, from the separations of their
 /// faces (FaceSeparations512: B's skipped faces at -infinity): the reference face is the face of largest separation,
 /// A's on a tie; the incident polygon, as the face loops mapped it (`m`), is clipped as in CollidePolygons.
@@ -99,8 +87,8 @@ ManifoldFromSeparations512(const PolygonT<double>& a, const TransformT<double>& 
 {
     int faceA = 0;
     int faceB = 0;
-    const double largestA = LargestSeparation512(sepA, a.Count(), faceA);
-    const double largestB = LargestSeparation512(sepB, b.Count(), faceB);
+    const double largestA = LargestSeparation(a.Count(), faceA, sepA);
+    const double largestB = LargestSeparation(b.Count(), faceB, sepB);
     // Reference face: B's only when strictly better, so ties (and skipped duplicates) keep A's face.
     const bool flip = largestB > largestA;
     const PolygonT<double>& ref = SelectRef(flip, b, a);

@@ -106,20 +106,6 @@ void HideFaces(uint64_t skip, int n, L& block0, L& block1)
     }
 }
 
-/// The largest separation over a small ref's n faces from its blocks (HideFaces applied), NaN ignored (no comparison
-/// holds for it), and in `face` its first face (none for NaN input: face 0).
-template <typename L, typename S = std::decay_t<decltype(std::declval<L>().Get(0))>>
-S LargestSeparation(const L& block0, const L& block1, int n, int& face)
-{
-    const L low = L::Fill(-std::numeric_limits<S>::infinity());
-    const L best0 = Select(block0 > low, block0, low);
-    const L best = Select(block1 > best0, block1, best0);
-    const S largest = best.MaxLane();
-    const int hits = ((block0 == L::Fill(largest)).Bits() | (block1 == L::Fill(largest)).Bits() << 4) & ((1 << n) - 1);
-    face = hits != 0 ? __builtin_ctz(static_cast<unsigned>(hits)) : 0;
-    return largest;
-}
-
 /// The face query of Collide (unit normals) for a ref of at most 8 faces against a scanned inc of N padded vertices,
 /// with the answer of the textbook loop (TextbookFaceQuery): the separations of all of ref's faces from one pass over
 /// inc's vertices, as SmallRefSeparations takes them (the same bits), then one branch for all of them. A separating
@@ -179,7 +165,7 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
     {
         // No face separates, or (without the early exit) every face counts: the largest separation.
         query.separated = separating != 0;
-        query.separation = LargestSeparation(block0, block1, n, query.face);
+        query.separation = LargestSeparation(n, query.face, block0, block1);
     }
     if constexpr (Tracer::kEnabled)
     {

@@ -15,6 +15,10 @@
 #include "lanes.h"
 #include "lanes8.h"
 
+#include <limits>
+#include <type_traits>
+#include <utility>
+
 namespace satviz::detail
 {
 
@@ -193,6 +197,27 @@ template <typename L>
 L SeparationsOf(const L& low, const L& offset)
 {
     return (low - offset) + L::Fill(0);
+}
+
+/// The largest separation over the n faces of a small polygon whose separations are held in lanes, one face a lane
+/// (block0: faces 0 on, and the `more` blocks the faces after them, L::kCount a block), NaN ignored (no comparison
+/// holds for it), and in `face` its first face (none for NaN input: face 0). Written once over the lane width: four
+/// lanes in two blocks (face_blocks.h), eight in one (collide512.h).
+template <typename L, typename... More>
+auto LargestSeparation(int n, int& face, const L& block0, const More&... more)
+{
+    using S = std::decay_t<decltype(std::declval<L>().Get(0))>;
+    const L low = L::Fill(-std::numeric_limits<S>::infinity());
+    L best = Select(block0 > low, block0, low);
+    ((best = Select(more > best, more, best)), ...);
+    const S largest = best.MaxLane();
+    const L top = L::Fill(largest);
+    int hits = (block0 == top).Bits();
+    [[maybe_unused]] int shift = 0;
+    ((hits |= (more == top).Bits() << (shift += L::kCount)), ...);
+    hits &= (1 << n) - 1;
+    face = hits != 0 ? __builtin_ctz(static_cast<unsigned>(hits)) : 0;
+    return largest;
 }
 
 #if SATVIZ_LANES8

@@ -19,7 +19,8 @@ namespace satviz::detail
 /// Eight doubles in one AVX-512 register.
 struct Lanes8
 {
-    __m512d v; ///< the lanes
+    static constexpr int kCount = 8; ///< lanes
+    __m512d v;                       ///< the lanes
 
     /// Every lane x.
     [[gnu::target("avx512f")]] static Lanes8 Fill(double x) { return {_mm512_set1_pd(x)}; }
@@ -51,6 +52,28 @@ struct Lanes8
     [[gnu::target("avx512f")]] int EqualBits(const Lanes8& b) const
     {
         return static_cast<int>(_mm512_cmp_pd_mask(v, b.v, _CMP_EQ_OQ));
+    }
+    /// A per-lane truth value, one bit a lane.
+    struct Mask
+    {
+        __mmask8 m; ///< the lanes
+        /// The lanes as eight bits.
+        [[gnu::target("avx512f")]] int Bits() const { return static_cast<int>(m); }
+    };
+    /// The lanes greater than b's.
+    [[gnu::target("avx512f")]] friend Mask operator>(const Lanes8& a, const Lanes8& b)
+    {
+        return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_GT_OQ)};
+    }
+    /// The lanes equal to b's.
+    [[gnu::target("avx512f")]] friend Mask operator==(const Lanes8& a, const Lanes8& b)
+    {
+        return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_EQ_OQ)};
+    }
+    /// a in the lanes of `mask`, b in the others.
+    [[gnu::target("avx512f")]] friend Lanes8 Select(Mask mask, const Lanes8& a, const Lanes8& b)
+    {
+        return {_mm512_mask_blend_pd(mask.m, b.v, a.v)};
     }
     /// These lanes, with x in the lanes whose bit is set in `bits` (Blend with x in every lane).
     [[gnu::target("avx512f")]] Lanes8 Replace(int bits, double x) const { return Blend(bits, Fill(x)); }

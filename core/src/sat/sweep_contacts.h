@@ -161,7 +161,7 @@ ManifoldT<S> InterpenetratingManifold(const PolygonT<S>& a, const TransformT<S>&
         {
             HideFaces<1>(skip, n, block0, block1);
         }
-        return LargestSeparation(block0, block1, n, face);
+        return LargestSeparation(n, face, block0, block1);
     };
     const uint64_t skip = SecondPassSkips<AlgorithmChoices::kSkipParallel>(b, incA, true);
     int faceA = 0;
