@@ -868,8 +868,8 @@ TEST_CASE("The caption of a step states the trace's numbers", "[painter]")
                 // With the contact points drawn the verdict counts them; without, it leaves the count out.
                 for (const bool contacts : {false, true})
                 {
-                    const RecordingCanvas drawnCanvas =
-                        Paint(scene, setup, step, kLayerCaption | (contacts ? kLayerContacts : 0));
+                    const LayerMask shown = contacts ? LayerMask{kLayerContacts} : LayerMask{0};
+                    const RecordingCanvas drawnCanvas = Paint(scene, setup, step, kLayerCaption | shown);
                     std::string drawn;
                     for (const DrawCommand* c : drawnCanvas.InGroup("caption"))
                     {
