@@ -37,6 +37,10 @@ const char* Meaning(LegendMark mark)
         return "pale bar: the interval swept from t = 0 to t = 1";
     case LegendMark::TimeMarks:
         return "dark triangles on the time bar: entry and exit";
+    case LegendMark::Window:
+        return "pink band on the time bar: when every axis so far overlaps";
+    case LegendMark::NoWindow:
+        return "orange band on the time bar: no common time, the axes' windows miss";
     case LegendMark::Other:
         return "grey body: not in the tested pair (a wall, a mark)";
     case LegendMark::Asleep:
@@ -97,6 +101,18 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
         canvas.Segment({x, cy}, {x1, cy}, palette::kMuted, 2.0f);
         canvas.FillConvex(down, 3, palette::kInk);
         canvas.FillConvex(up, 3, palette::kInk);
+        break;
+    }
+    case LegendMark::Window:
+    {
+        canvas.Segment({x, cy + 4.0f}, {x1, cy + 4.0f}, palette::kMuted, 2.0f);
+        canvas.FillRect({x + 6.0f, cy - 5.0f}, {x1 - 6.0f, cy + 5.0f}, WithAlpha(palette::kOverlap, 0.45f));
+        break;
+    }
+    case LegendMark::NoWindow:
+    {
+        canvas.Segment({x, cy}, {x1, cy}, palette::kMuted, 2.0f);
+        canvas.FillRect({x + 6.0f, cy - 3.0f}, {x1 - 6.0f, cy + 3.0f}, WithAlpha(palette::kResult, 0.55f));
         break;
     }
     case LegendMark::Other:

@@ -21,6 +21,8 @@ enum class LegendMark
     Behind,     ///< the band of a face test: how far the other shape lies behind (or beyond) the face
     Swept,      ///< the pale bar: the interval B sweeps from t = 0 to 1 (a step; a second in a world's scene)
     TimeMarks,  ///< the dark triangles on the time bar: entry and exit
+    Window,     ///< the pink band on the time bar: the times at which every axis so far overlaps
+    NoWindow,   ///< the orange band under the time bar: the axes' windows do not meet, no common time
     Other,      ///< a grey body: not in the tested pair (a wall, a mark)
     Asleep,     ///< a hatched body: asleep in a world (neither moved nor tested)
     Reference,  ///< the thick edge in a body's colour: the reference face

@@ -660,6 +660,14 @@ class Painter
         if (m_hasAxis && m_axis.swept && m_layout.panelTop < Height())
         {
             used.push_back(LegendMark::TimeMarks);
+            if (CommonWindow() == WindowShown::Open)
+            {
+                used.push_back(LegendMark::Window);
+            }
+            else if (CommonWindow() == WindowShown::Never)
+            {
+                used.push_back(LegendMark::NoWindow);
+            }
         }
         if (m_hasMtvArrow)
         {
@@ -2276,6 +2284,29 @@ class Painter
     }
 
     // t from 0 to 1: this axis's entry and exit, and the window (latest entry, earliest exit) so far.
+    // What the time bar shows of the common window of all axes so far: a band where it is open within the step,
+    // one where it never opens (some axis parts before another meets), or neither.
+    enum class WindowShown
+    {
+        None,
+        Open,
+        Never,
+    };
+    WindowShown CommonWindow() const
+    {
+        const double w0 = std::max(m_axis.windowEntry, 0.0);
+        const double w1 = std::min(m_axis.windowExit, 1.0);
+        if (w0 <= w1 && m_axis.windowEntry <= 1.0)
+        {
+            return WindowShown::Open;
+        }
+        if (m_axis.windowExit < m_axis.windowEntry && m_axis.windowExit <= 1.0)
+        {
+            return WindowShown::Never;
+        }
+        return WindowShown::None;
+    }
+
     void TimeBar(float y, float barLeft, float right)
     {
         m_canvas.BeginGroup("timebar");
@@ -2297,12 +2328,12 @@ class Painter
         // The common window of all axes so far: a hit needs it to be non-empty and to start within [0, 1].
         const double w0 = std::max(m_axis.windowEntry, 0.0);
         const double w1 = std::min(m_axis.windowExit, 1.0);
-        if (w0 <= w1 && m_axis.windowEntry <= 1.0)
+        if (CommonWindow() == WindowShown::Open)
         {
             m_canvas.FillRect({x(w0), y - 9.0f}, {std::max(x(w1), x(w0) + 2.0f), y + 1.0f},
                              WithAlpha(palette::kOverlap, 0.45f));
         }
-        else if (m_axis.windowExit < m_axis.windowEntry && m_axis.windowExit <= 1.0)
+        else if (CommonWindow() == WindowShown::Never)
         {
             // Some axis parts before another meets: the shapes never overlap on all axes at once.
             const float a = x(m_axis.windowExit);

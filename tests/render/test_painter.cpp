@@ -1948,3 +1948,33 @@ TEST_CASE("A figure's key explains the vertex axis and the side planes where the
     CHECK(boxes.find("side planes") != std::string::npos);
     CHECK(boxes.find("dark dot") == std::string::npos);
 }
+
+TEST_CASE("A swept figure's key explains the time bar's window band, or its no-common-time band", "[painter]")
+{
+    // fly_by's axes never overlap at one time: its time bar says "no common time" on an orange band; the ball of
+    // circle_and_polygon hits the pentagon: at the verdict its time bar shows the common window in pink.
+    for (const auto& [stem, open] : {std::pair<std::string, bool>{"fly_by", false}, {"circle_and_polygon", true}})
+    {
+        INFO(stem);
+        const Scene scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + stem + ".json");
+        FigureSetup setup = SetUpFigure(scene, {});
+        REQUIRE(setup.Ok());
+        const RecordingCanvas canvas =
+            Paint(scene, setup, setup.study.VerdictStep(), kDefaultLayers | kLayerLegend);
+        std::string key, bar;
+        for (const DrawCommand* c : canvas.InGroup("legend"))
+        {
+            key += c->kind == DrawCommand::Kind::Text ? c->text + "\n" : "";
+        }
+        for (const DrawCommand* c : canvas.InGroup("timebar"))
+        {
+            bar += c->kind == DrawCommand::Kind::Text ? c->text + "\n" : "";
+        }
+        INFO(key);
+        INFO(bar);
+        REQUIRE(bar.find("time") != std::string::npos); // the time bar was drawn
+        CHECK((bar.find("no common time") != std::string::npos) == !open);
+        CHECK((key.find("orange band on the time bar") != std::string::npos) == !open);
+        CHECK((key.find("pink band on the time bar") != std::string::npos) == open);
+    }
+}
