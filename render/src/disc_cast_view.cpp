@@ -116,8 +116,18 @@ std::string DescribeDiscCast(const Body& target, const Body& disc, const DiscHit
                "'s outline pushed out by the radius (dashed), so the disc passes " + target.name +
                " without touching it.";
     }
-    const std::string piece =
-        hit.piece >= 0 ? " (piece " + std::to_string(hit.piece + 1) + " of " + target.name + ")" : "";
+    // Said as an ordinal, counted from 1 as the figures name pieces, so that it is not read as the index from 0
+    // that satviz-query prints.
+    const auto ordinal = [](int n) {
+        const int tens = n % 100;
+        const char* suffix = tens >= 11 && tens <= 13 ? "th"
+                             : n % 10 == 1             ? "st"
+                             : n % 10 == 2             ? "nd"
+                             : n % 10 == 3             ? "rd"
+                                                       : "th";
+        return std::to_string(n) + suffix;
+    };
+    const std::string piece = hit.piece >= 0 ? " (the " + ordinal(hit.piece + 1) + " piece of " + target.name + ")" : "";
     // The check a reader makes, from the numbers as printed: where it differs from the centre printed, only by
     // rounding, the sentence says so.
     const Vec2 sum = Printed(hit.point) + std::stod(FormatNumber(r)) * Printed(hit.normal);
