@@ -1393,16 +1393,7 @@ class Painter
         double lo = 0.0;
         double hi = 0.0;
         AxisLineSpan(m_axis.minA, m_axis.maxA, m_axis.minB, m_axis.maxB, lo, hi);
-        if (m_axis.swept)
-        {
-            lo = std::min(lo, m_axis.sweptMinB);
-            hi = std::max(hi, m_axis.sweptMaxB);
-        }
-        if (m_axis.bounded)
-        {
-            lo = std::min(lo, m_axis.boundAt);
-            hi = std::max(hi, m_axis.boundAt);
-        }
+        WidenBySweepAndBound(lo, hi);
         const Vec2 base = AxisBaseInSight(d, lo, hi);
         // A face decided without evaluation is drawn faintly: its numbers are the view's, not the test's.
         const float fade = m_axis.decided ? 0.4f : 1.0f;
@@ -2192,16 +2183,7 @@ class Painter
         }
         double lo = std::min(m_axis.minA, m_axis.minB);
         double hi = std::max(m_axis.maxA, m_axis.maxB);
-        if (m_axis.swept)
-        {
-            lo = std::min(lo, m_axis.sweptMinB);
-            hi = std::max(hi, m_axis.sweptMaxB);
-        }
-        if (m_axis.bounded)
-        {
-            lo = std::min(lo, m_axis.boundAt);
-            hi = std::max(hi, m_axis.boundAt);
-        }
+        WidenBySweepAndBound(lo, hi);
         const double pad = 0.06 * std::max(hi - lo, 1e-12);
         lo -= pad;
         hi += pad;
@@ -2284,6 +2266,22 @@ class Painter
     }
 
     // t from 0 to 1: this axis's entry and exit, and the window (latest entry, earliest exit) so far.
+    // [lo, hi] on the axis grown to hold what the axis draws besides the intervals: the interval B sweeps, and the
+    // vertex that bounds a decided face's gap. The axis line and the number line both span it.
+    void WidenBySweepAndBound(double& lo, double& hi) const
+    {
+        if (m_axis.swept)
+        {
+            lo = std::min(lo, m_axis.sweptMinB);
+            hi = std::max(hi, m_axis.sweptMaxB);
+        }
+        if (m_axis.bounded)
+        {
+            lo = std::min(lo, m_axis.boundAt);
+            hi = std::max(hi, m_axis.boundAt);
+        }
+    }
+
     // What the time bar shows of the common window of all axes so far: a band where it is open within the step,
     // one where it never opens (some axis parts before another meets), or neither.
     enum class WindowShown
