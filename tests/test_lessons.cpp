@@ -7,7 +7,7 @@
 //     the overlap is <!--check overlapping_boxes /pairs/0/depth-->0.18
 // or, with @N after the scene, into the last line satviz-sim prints for it after N steps (with --counts):
 //     it stops at <!--check l14_slide@60 /bodies/1/position/0-->-1.107
-// The number must equal the value rounded to the decimals it shows.
+// The number must equal the value rounded to the decimals it shows; its minus may be a hyphen or the minus sign.
 
 #include <satviz/query_json.h>
 #include <satviz/scene.h>
@@ -137,6 +137,27 @@ struct CheckMark
     std::string shown;
 };
 
+// The number written from `at`: digits and '.', after a minus that typeset prose may write as the minus sign U+2212
+// rather than the hyphen-minus; either is read as '-', the form std::stod reads.
+std::string ShownNumber(const std::string& text, size_t at)
+{
+    static const std::string kMinusSign = "\u2212";
+    std::string sign;
+    if (text.compare(at, kMinusSign.size(), kMinusSign) == 0)
+    {
+        sign = "-";
+        at += kMinusSign.size();
+    }
+    else if (at < text.size() && text[at] == '-')
+    {
+        sign = "-";
+        ++at;
+    }
+    const std::string digits =
+        Run(text, at, [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == '.'; });
+    return digits.empty() ? std::string() : sign + digits;
+}
+
 std::vector<CheckMark> CheckMarks(const std::string& text)
 {
     std::vector<CheckMark> out;
@@ -168,8 +189,7 @@ std::vector<CheckMark> CheckMarks(const std::string& text)
             continue;
         }
         mark.pointer = text.substr(p + 1, close - p - 1);
-        mark.shown = Run(text, close + 3,
-                         [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-'; });
+        mark.shown = ShownNumber(text, close + 3);
         // A sentence's full stop after the number is not one of its decimals.
         while (!mark.shown.empty() && mark.shown.back() == '.')
         {
@@ -276,6 +296,19 @@ TEST_CASE("Every scene a lesson names loads and can be pictured", "[lessons]")
         }
     }
     CHECK(scenes > 0);
+}
+
+TEST_CASE("A checked number may be written with the minus sign of typeset text", "[lessons]")
+{
+    const std::vector<CheckMark> marks = CheckMarks("a gap of <!--check pair /pairs/0/gap-->\u2212""1.40, a depth of "
+                                                    "<!--check pair /pairs/0/depth-->-0.50. and <!--check pair /x-->2.5.");
+    REQUIRE(marks.size() == 3);
+    CHECK(marks[0].shown == "-1.40");
+    CHECK(std::stod(marks[0].shown) == -1.40);
+    CHECK(marks[1].shown == "-0.50");
+    CHECK(marks[2].shown == "2.5");
+    // A minus sign alone is no number.
+    CHECK(CheckMarks("<!--check pair /x-->\u2212 then")[0].shown.empty());
 }
 
 TEST_CASE("Every checked number of a worked example matches satviz-query or satviz-sim on its scene", "[lessons]")
