@@ -9,20 +9,6 @@
 namespace satviz
 {
 
-namespace
-{
-
-// True when the scene's own framing leaves its scene almost no room in a figure of its own size with these layers
-// (the world's layers take the bottom of the figure for their panels): scaled to the canvas, that sliver would
-// show nothing, so the figure fits the pair instead.
-bool FrameSqueezed(const SceneView& frame, const PairStudy& study, LayerMask layers, bool titled)
-{
-    const FigureLayout from = LayoutFigure(study, layers, frame.width, frame.height, titled);
-    return from.sceneBottom - from.sceneTop < 0.25 * frame.height;
-}
-
-} // namespace
-
 Viewer::Viewer(int backgroundVertices) : m_backgroundVertices(backgroundVertices) {}
 
 void Viewer::Reset(const Scene& scene)
@@ -149,14 +135,12 @@ void Viewer::Adopt(FigureSetup fresh, Scene studied)
         return;
     }
     ShowStep(onVerdict ? VerdictStep() : m_step);
-    if (m_cameraFit || (m_framed && FrameSqueezed(m_frame, m_setup.study, m_choices.layers, !m_studied.view.caption.empty())))
+    // A scene that frames itself is framed for the canvas as satviz-render frames it for another size (FrameScene),
+    // and fitted when that framing would show nothing.
+    if (m_cameraFit ||
+        (m_framed && !FrameScene(m_frame, m_setup.study, m_choices.layers, m_canvasWidth, m_canvasHeight, m_camera)))
     {
         m_camera = m_setup.figure.view;
-    }
-    else if (m_framed)
-    {
-        m_camera =
-            Reframe(m_frame, m_setup.study, m_choices.layers, !m_studied.view.caption.empty(), m_canvasWidth, m_canvasHeight);
     }
     if ((m_cameraFit || m_framed) && m_setup.figure.kind == FigureKind::Slice && m_setup.figure.body >= 0 &&
         m_setup.figure.body < static_cast<int>(m_studied.bodies.size()))
@@ -294,8 +278,9 @@ void Viewer::WriteView(Scene& saved) const
     {
         // Within what a scene file accepts, so that the saved file opens again (a fit to a huge or tiny pair can
         // leave the camera beyond them).
-        view.center = {std::clamp(m_camera.center.x, -kMaxSceneValue, kMaxSceneValue),
-                       std::clamp(m_camera.center.y, -kMaxSceneValue, kMaxSceneValue)};
+        const Vec2 center = SceneViewCenter(m_camera, m_choices.layers);
+        view.center = {std::clamp(center.x, -kMaxSceneValue, kMaxSceneValue),
+                       std::clamp(center.y, -kMaxSceneValue, kMaxSceneValue)};
         view.zoom = std::clamp(m_camera.zoom, kMinViewZoom, kMaxViewZoom);
     }
     view.width = m_canvasWidth;

@@ -80,6 +80,27 @@ int FigureStepCount(const Scene& scene, const FigureSetup& setup)
     }
 }
 
+bool FrameScene(const SceneView& frame, const PairStudy& study, LayerMask layers, int width, int height, View& view)
+{
+    const bool titled = !frame.caption.empty();
+    const FigureLayout own = LayoutFigure(study, layers, frame.width, frame.height, titled);
+    if (own.sceneBottom - own.sceneTop < 0.25f * static_cast<float>(frame.height))
+    {
+        return false;
+    }
+    // The world's panels take the bottom of the image: the view's centre moves up by half their height, to the
+    // middle of what is left.
+    SceneView shifted = frame;
+    shifted.center.y -= 0.5 * WorldPanelsHeight(layers) / frame.zoom;
+    view = Reframe(shifted, study, layers, titled, width, height);
+    return true;
+}
+
+Vec2 SceneViewCenter(const View& camera, LayerMask layers)
+{
+    return {camera.center.x, camera.center.y + 0.5 * WorldPanelsHeight(layers) / camera.zoom};
+}
+
 FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
 {
     FigureSetup setup;
@@ -115,19 +136,9 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
         options.setLayers ? options.layers : (view.layers.empty() ? kDefaultLayers : LayersFromNames(view.layers));
     const int width = options.width > 0 ? options.width : view.width;
     const int height = options.height > 0 ? options.height : view.height;
-    if (view.fit)
+    if (view.fit || !FrameScene(view, setup.study, figure.layers, width, height, figure.view))
     {
         figure.view = FitFigure(scene, setup.study, figure.layers, width, height);
-    }
-    else
-    {
-        // The world's panels take the bottom of the image: the view's centre moves up by half their height, to the
-        // middle of what is left.
-        figure.view.center = view.center;
-        figure.view.center.y -= 0.5 * WorldPanelsHeight(figure.layers) / view.zoom;
-        figure.view.zoom = view.zoom;
-        figure.view.width = width;
-        figure.view.height = height;
     }
     const int step = options.setStep ? options.step : view.step;
     figure.kind = kind;

@@ -2673,6 +2673,16 @@ View FitFigure(const Scene& scene, const PairStudy& study, LayerMask layers, int
 
 View Reframe(const SceneView& frame, const PairStudy& study, LayerMask layers, bool titled, int width, int height)
 {
+    if (width == frame.width && height == frame.height)
+    {
+        // The frame itself, not the same up to rounding: a figure at its scene's size is drawn as framed.
+        View same;
+        same.center = frame.center;
+        same.zoom = frame.zoom;
+        same.width = width;
+        same.height = height;
+        return same;
+    }
     const FigureLayout from = LayoutFigure(study, layers, frame.width, frame.height, titled);
     const FigureLayout to = LayoutFigure(study, layers, width, height, titled);
     const double fromHeight = std::max(1.0, static_cast<double>(from.sceneBottom - from.sceneTop));

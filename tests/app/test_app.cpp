@@ -1756,14 +1756,17 @@ TEST_CASE("A scene that frames itself keeps its framing, scaled to the canvas le
         REQUIRE(viewer.Setup().Ok());
         CHECK(viewer.CameraFramed());
         CHECK(viewer.CanvasWidth() < scene.view.width);
-        View authored;
-        authored.center = scene.view.center;
-        authored.zoom = scene.view.zoom;
-        authored.width = scene.view.width;
-        authored.height = scene.view.height;
         const bool titled = !scene.view.caption.empty();
         const PairStudy& study = viewer.Setup().study;
         const LayerMask layers = viewer.Choices().layers;
+        // The scene's own figure, as satviz-render draws it at the scene's size.
+        FigureOptions own;
+        own.setLayers = true;
+        own.layers = layers;
+        const FigureSetup ownFigure = SetUpFigure(scene, own);
+        REQUIRE(ownFigure.Ok());
+        const View authored = ownFigure.figure.view;
+        REQUIRE(authored.width == scene.view.width);
         const FigureLayout from = LayoutFigure(study, layers, authored.width, authored.height, titled);
         const FigureLayout to = LayoutFigure(study, layers, viewer.CanvasWidth(), viewer.CanvasHeight(), titled);
         const View& camera = viewer.Camera();

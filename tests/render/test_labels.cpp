@@ -1130,8 +1130,10 @@ TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentence
             }
             for (const auto& [width, height] : {std::pair{460, 758}, std::pair{360, 600}})
             {
-                setup.figure.view = Reframe(loaded.scene.view, setup.study, setup.figure.layers,
-                                             !setup.figure.caption.empty(), width, height);
+                if (!FrameScene(loaded.scene.view, setup.study, setup.figure.layers, width, height, setup.figure.view))
+                {
+                    setup.figure.view = FitFigure(loaded.scene, setup.study, setup.figure.layers, width, height);
+                }
                 for (int k = 0; k < FigureStepCount(loaded.scene, setup); ++k)
                 {
                     setup.figure.step = k;
@@ -1248,11 +1250,6 @@ TEST_CASE("In the face view, every step of every pair of the course keeps its la
             if (!setup.Ok() || setup.figure.kind != FigureKind::Pair)
             {
                 continue;
-            }
-            if (!own && !loaded.scene.view.fit)
-            {
-                setup.figure.view = Reframe(loaded.scene.view, setup.study, setup.figure.layers,
-                                             !setup.figure.caption.empty(), 800, 600);
             }
             for (int k = 0; k < FigureStepCount(loaded.scene, setup); ++k)
             {

@@ -402,3 +402,67 @@ TEST_CASE("satviz-render --sim-steps draws a falling body where N steps leave it
           "satviz-render: --sim-steps: expected a whole number of steps from 0 to 1000000, got -1");
     CHECK(!fs::exists(dir / "negative.png"));
 }
+
+TEST_CASE("satviz-render --size shows what the scene's own view frames, scaled to fit the new size", "[render-tool]")
+{
+    const fs::path dir = FreshDirectory("render-size");
+    fs::create_directories(dir);
+    // Two unit squares 16 apart, framed for 800 x 600 at 40 pixels a unit: at x = 80 and x = 720 in the scene's
+    // own figure, 640 pixels apart, at mid-height. Only the shapes are drawn, so the whole image is the scene area.
+    std::ofstream(dir / "apart.json")
+        << R"({"bodies": [{"name": "a", "box": [1, 1], "position": [-8, 0]},
+                          {"name": "b", "box": [1, 1], "position": [8, 0]}],
+              "view": {"zoom": 40, "center": [0, 0], "size": [800, 600], "layers": ["shapes"]}})";
+    // The squares' centres as drawn: the mean of each filled polygon's corners, in the order the bodies are drawn.
+    auto centres = [&](const std::string& size) {
+        const fs::path out = dir / ("apart-" + size + ".svg");
+        const Run run = Render((dir / "apart.json").string() + " --size " + size + " -q -o " + out.string());
+        INFO(Joined(run.errLines));
+        REQUIRE(run.exitCode == 0);
+        const auto parsed = satviz::test::ParseXml(Bytes(out));
+        REQUIRE(parsed.root != nullptr);
+        std::vector<const satviz::test::XmlElement*> elements;
+        satviz::test::CollectElements(*parsed.root, elements);
+        std::vector<std::pair<double, double>> found;
+        for (const auto* element : elements)
+        {
+            const auto fill = element->attributes.find("fill");
+            if (element->name != "polygon" || fill == element->attributes.end() || fill->second == "none")
+            {
+                continue;
+            }
+            std::istringstream points(element->attributes.at("points"));
+            double sx = 0.0;
+            double sy = 0.0;
+            int n = 0;
+            for (std::string pair; points >> pair; ++n)
+            {
+                const size_t comma = pair.find(',');
+                sx += std::stod(pair.substr(0, comma));
+                sy += std::stod(pair.substr(comma + 1));
+            }
+            found.push_back({sx / n, sy / n});
+        }
+        return found;
+    };
+    struct Expected
+    {
+        std::string size;
+        double scale;  // the world rectangle of 800 x 600 pixels fits the new image: the smaller ratio of sides
+        double middleX;
+        double middleY;
+    };
+    for (const Expected& expected : {Expected{"800x600", 1.0, 400.0, 300.0}, Expected{"400x600", 0.5, 200.0, 300.0},
+                                     Expected{"1600x600", 1.0, 800.0, 300.0}, Expected{"800x300", 0.5, 400.0, 150.0},
+                                     Expected{"200x150", 0.25, 100.0, 75.0}})
+    {
+        INFO("--size " << expected.size);
+        const std::vector<std::pair<double, double>> found = centres(expected.size);
+        REQUIRE(found.size() == 2);
+        // Centred where the view's centre goes, the middle of the image, and as far apart as the scale makes 640.
+        CHECK(found[0].first == Approx(expected.middleX - 320.0 * expected.scale).margin(0.6));
+        CHECK(found[1].first == Approx(expected.middleX + 320.0 * expected.scale).margin(0.6));
+        CHECK(found[0].second == Approx(expected.middleY).margin(0.6));
+        CHECK(found[1].second == Approx(expected.middleY).margin(0.6));
+    }
+}

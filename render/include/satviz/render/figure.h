@@ -50,8 +50,22 @@ int FigureStepCount(const Scene& scene, const FigureSetup& setup);
 /// gives both panels when it frames itself. The app draws the slice through its camera and opens it so.
 View FrameSlice(const Scene& scene, int body, const Figure& figure);
 
+/// The camera of a pair figure of `width` x `height` for a scene that frames itself: `frame` is its view block, a
+/// centre and zoom for a figure of frame.width x frame.height whose centre is the middle of what the world's panels
+/// leave above them. The same world rectangle is shown, scaled to the new scene area and centred in it (Reframe); at
+/// the frame's own size, that is the frame. False, leaving `view` as it was, when the frame leaves its scene almost no
+/// room at its own size (the world's panels fill that figure): scaled, that sliver would show nothing, and the caller
+/// fits the pair instead (FitFigure). SetUpFigure frames a figure of another size than its scene's so, and the app
+/// frames a lesson's scene so on the canvas left beside the panels.
+bool FrameScene(const SceneView& frame, const PairStudy& study, LayerMask layers, int width, int height, View& view);
+
+/// The centre a view block gives for `camera` to be the camera of a figure of its size with these layers: the
+/// inverse of FrameScene at the frame's own size. The app saves a scene's view so, and it opens as it was shown.
+Vec2 SceneViewCenter(const View& camera, LayerMask layers);
+
 /// Sets up the figure of a scene: picks the pair (view.pair, or the first two bodies), runs the queries, frames
-/// the camera, resolves the step (-1: the verdict). Errors name the scene field at fault.
+/// the camera (fitting the pair, or framing the scene's own view for the figure's size: FrameScene), resolves the
+/// step (-1: the verdict). Errors name the scene field at fault.
 FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options);
 
 } // namespace satviz
