@@ -94,8 +94,11 @@ std::string DescribeDecomposition(const std::vector<Vec2>& outline, const Decomp
     return text;
 }
 
-void PaintDecomposition(Canvas& canvas, const Scene& scene, int bodyIndex, const Figure& figure)
+void PaintDecomposition(Canvas& surface, const Scene& scene, int bodyIndex, const Figure& figure)
 {
+    // Every line is drawn through the watch, so that the labels keep off it.
+    LabelPlacer labels(surface, figure);
+    LineWatch canvas(surface, labels);
     const Body& body = scene.bodies[static_cast<size_t>(bodyIndex)];
     const float width = static_cast<float>(figure.view.width);
     const float height = static_cast<float>(figure.view.height);
@@ -109,7 +112,6 @@ void PaintDecomposition(Canvas& canvas, const Scene& scene, int bodyIndex, const
     const float top = (figure.layers & kLayerCaption)
                           ? DrawCaptionBand(canvas, figure.caption, DescribeDecomposition(outline, fast, fewest), width)
                           : 0.0f;
-    LabelPlacer labels(canvas, figure);
     labels.ReserveBand({0.0f, 0.0f, width, top});
 
     Vec2 low{INFINITY, INFINITY};

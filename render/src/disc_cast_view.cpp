@@ -148,8 +148,11 @@ DiscHit CastFigureDisc(const Body& target, const Body& disc)
                               : CastDisc(target.shape, target.Xf(), p1, p2, disc.shape.circle.radius);
 }
 
-void PaintDiscCast(Canvas& canvas, const Scene& scene, int targetIndex, int discIndex, const Figure& figure)
+void PaintDiscCast(Canvas& surface, const Scene& scene, int targetIndex, int discIndex, const Figure& figure)
 {
+    // Every line is drawn through the watch, so that the labels keep off it.
+    LabelPlacer labels(surface, figure);
+    LineWatch canvas(surface, labels);
     const Body& target = scene.bodies[static_cast<size_t>(targetIndex)];
     const Body& disc = scene.bodies[static_cast<size_t>(discIndex)];
     const float width = static_cast<float>(figure.view.width);
@@ -164,7 +167,6 @@ void PaintDiscCast(Canvas& canvas, const Scene& scene, int targetIndex, int disc
     const float top = (figure.layers & kLayerCaption)
                           ? DrawCaptionBand(canvas, figure.caption, DescribeDiscCast(target, disc, hit), width)
                           : 0.0f;
-    LabelPlacer labels(canvas, figure);
     labels.ReserveBand({0.0f, 0.0f, width, top});
 
     // The target, the pushed-out outline and both discs in the frame.

@@ -232,6 +232,11 @@ void LabelPlacer::ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, Lab
     m_lines.push_back({a, b, thickness, from});
 }
 
+void LabelPlacer::ReserveFaintLine(ScreenPoint a, ScreenPoint b, float thickness)
+{
+    m_lines.push_back({a, b, thickness, LabelRank::Vertex, true});
+}
+
 bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
                         float distance, LabelRank rank)
 {
@@ -361,7 +366,7 @@ bool LabelPlacer::Free(const ScreenRect& rect, float spacing, LabelRank rank, bo
     }
     for (const Line& line : m_lines)
     {
-        if (rank < line.from && !everyLine)
+        if ((rank < line.from || (line.faint && rank > LabelRank::Named)) && !everyLine)
         {
             continue;
         }
@@ -561,6 +566,95 @@ void LabelPlacer::Flush(Color halo)
         m_canvas.Text({p.rect.minX, p.rect.minY}, p.label->text, p.label->style, p.label->color);
     }
     m_labels.clear();
+}
+
+bool LineWatch::Watched(Color color) const
+{
+    // A line almost transparent (a body's faint fill edge, a ghost) shows too little to be read as cut.
+    return m_group != "background" && m_group != "axes" && m_group != "labels" && (color & 0xFFu) >= 0x40u;
+}
+
+void LineWatch::Note(const ScreenPoint* points, int count, bool closed, Color color, float thickness)
+{
+    if (!Watched(color))
+    {
+        return;
+    }
+    for (int i = 0; i + 1 < count + (closed ? 1 : 0); ++i)
+    {
+        if ((color & 0xFFu) >= 0xC0u)
+        {
+            m_labels.ReserveLine(points[i], points[(i + 1) % count], std::max(thickness, 1.0f));
+        }
+        else
+        {
+            m_labels.ReserveFaintLine(points[i], points[(i + 1) % count], std::max(thickness, 1.0f));
+        }
+    }
+}
+
+void LineWatch::Segment(ScreenPoint a, ScreenPoint b, Color color, float thickness)
+{
+    const ScreenPoint ends[2] = {a, b};
+    Note(ends, 2, false, color, thickness);
+    m_canvas.Segment(a, b, color, thickness);
+}
+
+void LineWatch::Polyline(const ScreenPoint* points, int count, bool closed, Color color, float thickness)
+{
+    Note(points, count, closed, color, thickness);
+    m_canvas.Polyline(points, count, closed, color, thickness);
+}
+
+void LineWatch::FillConvex(const ScreenPoint* points, int count, Color color)
+{
+    m_canvas.FillConvex(points, count, color);
+}
+
+void LineWatch::FillOutlined(const ScreenPoint* points, int count, Color fill, Color outline, float thickness)
+{
+    Note(points, count, true, outline, thickness);
+    m_canvas.FillOutlined(points, count, fill, outline, thickness);
+}
+
+void LineWatch::Circle(ScreenPoint center, float radius, Color color, float thickness)
+{
+    // The circle as a polygon of 32 sides, close enough at the sizes a label keeps off it.
+    ScreenPoint points[32];
+    for (int i = 0; i < 32; ++i)
+    {
+        const double a = 2.0 * kPi * i / 32.0;
+        points[i] = {center.x + radius * static_cast<float>(std::cos(a)),
+                     center.y + radius * static_cast<float>(std::sin(a))};
+    }
+    Note(points, 32, true, color, thickness);
+    m_canvas.Circle(center, radius, color, thickness);
+}
+
+void LineWatch::FillCircle(ScreenPoint center, float radius, Color color)
+{
+    m_canvas.FillCircle(center, radius, color);
+}
+
+void LineWatch::FillRect(ScreenPoint min, ScreenPoint max, Color color)
+{
+    m_canvas.FillRect(min, max, color);
+}
+
+void LineWatch::Text(ScreenPoint topLeft, std::string_view text, TextStyle style, Color color)
+{
+    m_canvas.Text(topLeft, text, style, color);
+}
+
+ScreenPoint LineWatch::MeasureText(std::string_view text, TextStyle style)
+{
+    return m_canvas.MeasureText(text, style);
+}
+
+void LineWatch::BeginGroup(std::string_view name)
+{
+    m_group = std::string(name);
+    m_canvas.BeginGroup(name);
 }
 
 } // namespace satviz

@@ -49,6 +49,10 @@ class LabelPlacer
     /// would hide (a projection bar, a marked face). With `from` above LabelRank::Vertex only labels of that rank
     /// and above keep off it: a vertex number or an edge name may still sit on it rather than be left out.
     void ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, LabelRank from = LabelRank::Vertex);
+    /// Marks a faint line (a dashed projection line, a ghost's outline, drawn translucent): a vertex number or an
+    /// edge name keeps off it, where it would read as the number of the line's end; a larger label only where the
+    /// room allows, as the line shows through its halo's gaps and is not read as part of it.
+    void ReserveFaintLine(ScreenPoint a, ScreenPoint b, float thickness);
     /// Marks a body outside the tested pair (a convex outline on screen): no label may lie on it or in it, where it
     /// would read as that body's.
     void ReserveShape(const std::vector<ScreenPoint>& outline);
@@ -95,6 +99,7 @@ class LabelPlacer
         ScreenPoint a, b;
         float thickness;
         LabelRank from = LabelRank::Vertex; // the lowest rank of label that keeps off the line
+        bool faint = false;                 // labels above LabelRank::Named keep off it only where the room allows
     };
     struct LeaderLine
     {
@@ -114,6 +119,36 @@ class LabelPlacer
     std::vector<Line> m_lines;
     std::vector<std::vector<ScreenPoint>> m_shapes;
     std::vector<Label> m_labels;
+};
+
+/// A canvas that draws on another and tells a label placer of every line it draws there: a body's outline, a
+/// piece's seam, a dashed projection line or outline, a separating line, a path. No label is placed over one: the
+/// label's halo would cut the line, and its words would read as part of it (an edge name on the separating line, a
+/// vertex number on the dashed line from its corner to the axis). Only the faint grid and candidate axes under
+/// everything (the groups "background" and "axes") and the labels' own leader lines are not told.
+class LineWatch final : public Canvas
+{
+  public:
+    /// Draws on `canvas`, telling `labels` of each line.
+    LineWatch(Canvas& canvas, LabelPlacer& labels) : m_canvas(canvas), m_labels(labels) {}
+    void Segment(ScreenPoint a, ScreenPoint b, Color color, float thickness) override;
+    void Polyline(const ScreenPoint* points, int count, bool closed, Color color, float thickness) override;
+    void FillConvex(const ScreenPoint* points, int count, Color color) override;
+    void FillOutlined(const ScreenPoint* points, int count, Color fill, Color outline, float thickness) override;
+    void Circle(ScreenPoint center, float radius, Color color, float thickness) override;
+    void FillCircle(ScreenPoint center, float radius, Color color) override;
+    void FillRect(ScreenPoint min, ScreenPoint max, Color color) override;
+    void Text(ScreenPoint topLeft, std::string_view text, TextStyle style, Color color) override;
+    ScreenPoint MeasureText(std::string_view text, TextStyle style) override;
+    void BeginGroup(std::string_view name) override;
+
+  private:
+    // Whether lines drawn now are ones a label keeps off.
+    bool Watched(Color color) const;
+    void Note(const ScreenPoint* points, int count, bool closed, Color color, float thickness);
+    Canvas& m_canvas;
+    LabelPlacer& m_labels;
+    std::string m_group;
 };
 
 } // namespace satviz

@@ -435,9 +435,9 @@ class Painter
 {
   public:
     Painter(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure)
-        : m_canvas(canvas), m_scene(scene), m_study(study), m_figure(figure), m_view(figure.view),
+        : m_labels(canvas, figure), m_watch(canvas, m_labels), m_canvas(m_watch), m_scene(scene), m_study(study),
+          m_figure(figure), m_view(figure.view),
           m_layout(LayoutFigure(study, figure.layers, figure.view.width, figure.view.height, !figure.caption.empty())),
-          m_labels(canvas, figure),
           m_bodyA(scene.bodies[static_cast<size_t>(study.bodyA)]), m_bodyB(scene.bodies[static_cast<size_t>(study.bodyB)])
     {
         m_bounds = {-4.0f, -4.0f, static_cast<float>(m_view.width) + 4.0f, static_cast<float>(m_view.height) + 4.0f};
@@ -1038,8 +1038,10 @@ class Painter
                 tip = {tip.x + side.x, tip.y + side.y};
             }
             MarkedArrow(from, tip, InkOf(s), 2.0f, 11.0f);
-            m_labels.Place(tip, "v", TextStyle::Heading, InkOf(s), static_cast<float>(body.velocity.x),
-                          static_cast<float>(-body.velocity.y), 6.0f, LabelRank::Note);
+            // Kept out of the other body, where it would read as that body's velocity.
+            m_labels.PlaceOutside(OutlineOf(1 - s), tip, "v", TextStyle::Heading, InkOf(s),
+                                 static_cast<float>(body.velocity.x), static_cast<float>(-body.velocity.y), 6.0f,
+                                 LabelRank::Note);
         }
     }
 
@@ -2111,8 +2113,8 @@ class Painter
                     }
                 }
                 m_labels.Place(anchor, body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f, LabelRank::Name);
-                // A large body's name may move within it when a pitfall's note takes its middle, rather than hang on
-                // a leader line from under that note.
+                // A large body's name may move within it when its middle is taken (by a pitfall's note, a line
+                // across it), rather than hang on a leader line.
                 std::vector<ScreenPoint> within;
                 const float hx = 0.5f * text.x + 4.0f;
                 const float hy = 0.5f * text.y + 2.0f;
@@ -2132,10 +2134,7 @@ class Painter
                         within.push_back(p);
                     }
                 }
-                if (m_hasPitfallArrow)
-                {
-                    m_labels.AlsoAt(within);
-                }
+                m_labels.AlsoAt(within);
             }
             else if (wide < text.x + 8.0f && tall >= 2.0f * text.y)
             {
@@ -2517,13 +2516,14 @@ class Painter
         }
     }
 
+    LabelPlacer m_labels;
+    LineWatch m_watch; // everything is drawn through it, so that the labels keep off every line drawn before them
     Canvas& m_canvas;
     const Scene& m_scene;
     const PairStudy& m_study;
     const Figure& m_figure;
     const View& m_view;
     FigureLayout m_layout;
-    LabelPlacer m_labels;
     const Body& m_bodyA;
     const Body& m_bodyB;
     ScreenRect m_bounds{};

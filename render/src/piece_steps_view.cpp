@@ -244,8 +244,11 @@ int PieceStepCount(const Scene& scene, const PairStudy& study)
            2;
 }
 
-void PaintPieceSteps(Canvas& canvas, const Scene& scene, const PairStudy& pair, const Figure& figure)
+void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair, const Figure& figure)
 {
+    // Every line is drawn through the watch, so that the labels keep off it.
+    LabelPlacer labels(surface, figure);
+    LineWatch canvas(surface, labels);
     const Body& a = scene.bodies[static_cast<size_t>(pair.bodyA)];
     const Body& b = scene.bodies[static_cast<size_t>(pair.bodyB)];
     const PieceStudy study = StudyPieces(a, b);
@@ -265,7 +268,6 @@ void PaintPieceSteps(Canvas& canvas, const Scene& scene, const PairStudy& pair, 
     const float top = (figure.layers & kLayerCaption)
                           ? DrawCaptionBand(canvas, figure.caption, DescribePieceStep(a, b, study, step), width, lines)
                           : 0.0f;
-    LabelPlacer labels(canvas, figure);
     labels.ReserveBand({0.0f, 0.0f, width, top});
 
     Vec2 low{INFINITY, INFINITY};

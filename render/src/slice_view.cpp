@@ -256,8 +256,11 @@ View FrameSlice(const Scene& scene, int bodyIndex, const Figure& figure)
         .view;
 }
 
-void PaintSlice(Canvas& canvas, const Scene& scene, int bodyIndex, const Figure& figure)
+void PaintSlice(Canvas& surface, const Scene& scene, int bodyIndex, const Figure& figure)
 {
+    // Every line is drawn through the watch, so that the labels keep off it.
+    LabelPlacer labels(surface, figure);
+    LineWatch canvas(surface, labels);
     const Body& body = scene.bodies[static_cast<size_t>(bodyIndex)];
     const float width = static_cast<float>(figure.view.width);
     const float height = static_cast<float>(figure.view.height);
@@ -277,7 +280,6 @@ void PaintSlice(Canvas& canvas, const Scene& scene, int bodyIndex, const Figure&
     const float top = (figure.layers & kLayerCaption)
                           ? DrawCaptionBand(canvas, figure.caption, DescribeSlice(body, a, b, parts, pieces), width)
                           : 0.0f;
-    LabelPlacer labels(canvas, figure);
     labels.ReserveBand({0.0f, 0.0f, width, top});
 
     const SliceLayout layout = LayOutSlice(outline, a, b, top, width, height);

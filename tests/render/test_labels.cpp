@@ -535,6 +535,73 @@ std::vector<std::string> LabelsOnOtherBodies(const RecordingCanvas& canvas, cons
     return problems;
 }
 
+// Labels drawn over a line of the scene drawn before them: a body's outline, a piece's seam, a dashed projection
+// line, a separating line, an axis. The label's halo cuts the line, and the words read as part of it (an edge name
+// on the separating line, a vertex number on the dashed line from its corner to the axis). The faint grid and the
+// candidate axes under everything are the only lines a label may cross, and a translucent line (a dashed projection
+// line, a ghost's outline) only a label larger than a number or an edge name, which is not read as its end's.
+std::vector<std::string> LabelsOnLines(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    const std::vector<DrawCommand>& commands = canvas.commands;
+    for (size_t i = 0; i < commands.size(); ++i)
+    {
+        const DrawCommand& c = commands[i];
+        if (c.kind != DrawCommand::Kind::Text || c.group != "labels")
+        {
+            continue;
+        }
+        const std::string& t = c.text;
+        const bool digits = !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
+        const bool edge = t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+        const ScreenPoint size = measure.MeasureText(c.text, c.style);
+        const Box ink{c.points[0].x + 1.0f, c.points[0].y + 2.0f, c.points[0].x + size.x - 1.0f,
+                      c.points[0].y + size.y - 2.0f};
+        for (size_t j = 0; j < i; ++j)
+        {
+            const DrawCommand& d = commands[j];
+            if (d.group == "background" || d.group == "axes" || d.group == "labels" || (d.color & 0xFFu) < 0x40u ||
+                (!Opaque(d.color) && !digits && !edge))
+            {
+                continue;
+            }
+            bool on = false;
+            if (d.kind == DrawCommand::Kind::Segment)
+            {
+                on = SegmentCovers(d.points[0], d.points[1], std::max(d.thickness, 1.0f), ink);
+            }
+            else if (d.kind == DrawCommand::Kind::Polyline)
+            {
+                for (size_t k = 0; k + 1 < d.points.size() + (d.closed ? 1 : 0) && !on; ++k)
+                {
+                    on = SegmentCovers(d.points[k], d.points[(k + 1) % d.points.size()], std::max(d.thickness, 1.0f),
+                                       ink);
+                }
+            }
+            else if (d.kind == DrawCommand::Kind::Circle)
+            {
+                float nearest = INFINITY, farthest = 0.0f;
+                for (const ScreenPoint p : {ScreenPoint{ink.minX, ink.minY}, ScreenPoint{ink.maxX, ink.minY},
+                                            ScreenPoint{ink.minX, ink.maxY}, ScreenPoint{ink.maxX, ink.maxY}})
+                {
+                    farthest = std::max(farthest, std::hypot(p.x - d.points[0].x, p.y - d.points[0].y));
+                }
+                const float x = std::clamp(d.points[0].x, ink.minX, ink.maxX);
+                const float y = std::clamp(d.points[0].y, ink.minY, ink.maxY);
+                nearest = std::hypot(x - d.points[0].x, y - d.points[0].y);
+                on = nearest < d.radius && farthest > d.radius;
+            }
+            if (on)
+            {
+                problems.push_back(Describe(c) + " lies on the line " + Describe(d));
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
 // How many pixels of the segment ab lie inside the box.
 float LengthIn(ScreenPoint a, ScreenPoint b, const Box& box)
 {
@@ -873,6 +940,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
                                         bool namedFaces = true)
 {
     std::vector<std::string> problems = HiddenTexts(canvas, setup.figure.view.width, setup.figure.view.height);
+    for (std::string& p : LabelsOnLines(canvas))
+    {
+        problems.push_back(std::move(p));
+    }
     // A figure of its own (a decomposition, ...) draws no pair: the checks of labels against the pair's bodies
     // are for the pair's figures.
     if (setup.figure.kind == FigureKind::Pair)
