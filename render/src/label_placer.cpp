@@ -125,6 +125,30 @@ bool InOutline(const std::vector<ScreenPoint>& outline, const ScreenRect& rect, 
     return inside >= 2;
 }
 
+// Whether a label's rectangle lies clear of the outline: its middle outside it, no two of the points a quarter in
+// from its corners inside it, and none of its edges through the text.
+bool ClearOf(const std::vector<ScreenPoint>& outline, const ScreenRect& rect)
+{
+    if (outline.size() < 3)
+    {
+        return true;
+    }
+    if (InsideConvex(outline, {0.5f * (rect.minX + rect.maxX), 0.5f * (rect.minY + rect.maxY)}) ||
+        InOutline(outline, rect, true, {}))
+    {
+        return false;
+    }
+    const float qx = 0.25f * (rect.maxX - rect.minX);
+    const float qy = 0.25f * (rect.maxY - rect.minY);
+    int inside = 0;
+    for (const ScreenPoint p : {ScreenPoint{rect.minX + qx, rect.minY + qy}, ScreenPoint{rect.maxX - qx, rect.minY + qy},
+                                ScreenPoint{rect.minX + qx, rect.maxY - qy}, ScreenPoint{rect.maxX - qx, rect.maxY - qy}})
+    {
+        inside += InsideConvex(outline, p) ? 1 : 0;
+    }
+    return inside < 2;
+}
+
 // Whether a rectangle and a convex outline share interior: no separating axis among the rectangle's two and the
 // outline's edge normals.
 bool RectMeetsConvex(const ScreenRect& rect, const std::vector<ScreenPoint>& outline)
@@ -250,7 +274,7 @@ bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
     {
         return false;
     }
-    m_labels.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}});
+    m_labels.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}, false, {}});
     return true;
 }
 
@@ -284,6 +308,14 @@ void LabelPlacer::AlsoAt(std::vector<ScreenPoint> anchors)
                       anchors.end());
     }
     label.alternates = std::move(anchors);
+}
+
+void LabelPlacer::OutsideBoth(std::vector<ScreenPoint> own)
+{
+    if (!m_labels.empty())
+    {
+        m_labels.back().own = std::move(own);
+    }
 }
 
 void LabelPlacer::KeepOnSide()
@@ -399,6 +431,14 @@ void LabelPlacer::Flush(Color halo)
     };
     std::vector<Placed> placed;
     m_reserved = m_taken.size(); // the marks, panels and lines reserved; the labels' footprints follow
+    // Whether a place keeps the label out of the other body (and, with OutsideBoth, out of its own too).
+    const auto Away = [](const Label& label, const ScreenRect& rect, ScreenPoint at) {
+        if (!label.own.empty())
+        {
+            return ClearOf(label.avoid, rect) && ClearOf(label.own, rect);
+        }
+        return !InOutline(label.avoid, rect, label.edgesOnly, at);
+    };
     for (const Label* label : order)
     {
         const ScreenPoint size = m_canvas.MeasureText(label->text, label->style);
@@ -458,7 +498,7 @@ void LabelPlacer::Flush(Color halo)
                 const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
                 const ScreenRect rect = Around(at, size, start + c.turn * 0.25 * kPi, reach);
                 if (Inside(rect) && Free(rect, pass <= 0 ? kLabelSpacing : 0.0f, label->rank, pass < 0) &&
-                    !InOutline(label->avoid, rect, label->edgesOnly, at) &&
+                    Away(*label, rect, at) &&
                     OnItsSide(label->onSide, at, label->dx, label->dy, rect))
                 {
                     chosen = rect;
@@ -486,7 +526,7 @@ void LabelPlacer::Flush(Color halo)
                 const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
                 const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
                 if (Inside(rect) && Free(rect, 0.0f, label->rank) &&
-                    !InOutline(label->avoid, rect, label->edgesOnly, label->anchor) &&
+                    Away(*label, rect, label->anchor) &&
                     OnItsSide(label->onSide, label->anchor, label->dx, label->dy, rect, true) &&
                     (!strict || LeaderClear(label->anchor, rect)))
                 {
@@ -508,7 +548,7 @@ void LabelPlacer::Flush(Color halo)
                     const ScreenRect rect = Around(at, size, start + turn * 0.25 * kPi,
                                                    label->distance + static_cast<float>(ring) * 9.0f);
                     if (!found && Inside(rect) && Free(rect, 0.0f, label->rank) &&
-                        !InOutline(label->avoid, rect, label->edgesOnly, at))
+                        Away(*label, rect, at))
                     {
                         chosen = rect;
                         from = at;

@@ -65,6 +65,11 @@ class LabelPlacer
     /// anchor lies inside that body. False as for Place.
     bool PlaceOutside(const std::vector<ScreenPoint>& other, ScreenPoint anchor, std::string_view text,
                       TextStyle style, Color color, float dx, float dy, float distance, LabelRank rank);
+    /// Keeps the label added last (a vertex number placed with PlaceOutside whose corner is pushed into the other
+    /// body) out of both bodies: out of `own`, the outline of its own body, and out of the other body though its
+    /// anchor lies there, where it would read as that body's. Only the places near its corner are tried: with none
+    /// free, a vertex number is left out and a named one hangs on a leader line.
+    void OutsideBoth(std::vector<ScreenPoint> own);
     /// Lets the label added last sit beside any of `anchors` (points along the face or edge it names, nearest
     /// first) when no place near its own anchor is free: it slides along what it names, on its preferred side
     /// or the other, before it moves farther out on a leader line.
@@ -93,6 +98,7 @@ class LabelPlacer
         bool onSide = false;            // the label's middle stays beyond its anchor along (dx, dy)
         std::vector<ScreenPoint> alternates; // other anchors along what it names, nearest first
         bool centred = false;                // tried first centred on its anchor
+        std::vector<ScreenPoint> own;        // with OutsideBoth: its own body's outline, which it keeps out of too
     };
     struct Line
     {

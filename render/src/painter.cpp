@@ -1958,6 +1958,16 @@ class Painter
                 }
                 const bool vertexNumbers = extent >= 45.0 && poly.Count() <= 24;
                 const bool edgeNumbers = extent >= 70.0 && poly.Count() <= 16;
+                // Which corners lie inside the other body; a body wholly inside it (a box in a box) has its
+                // numbers there, as it has no outside near its corners.
+                const std::vector<ScreenPoint> other = OutlineOf(1 - s);
+                const std::vector<ScreenPoint> own = OutlineOf(s);
+                std::vector<bool> pokedIn;
+                for (const Vec2& corner : poly.Vertices())
+                {
+                    pokedIn.push_back(Covered(At(TransformPoint(xf, corner)), other, 0.0f));
+                }
+                const bool contained = std::all_of(pokedIn.begin(), pokedIn.end(), [](bool b) { return b; });
                 for (int i = 0; i < poly.Count(); ++i)
                 {
                     const bool isNamed = std::find(namedVertices.begin(), namedVertices.end(), i) != namedVertices.end();
@@ -1967,9 +1977,15 @@ class Painter
                     }
                     const Vec2 v = TransformPoint(xf, poly.Vertices()[i]);
                     const Vec2 out = v - centroid;
-                    m_labels.PlaceOutside(OutlineOf(1 - s), At(v), std::to_string(i), TextStyle::Label, InkOf(s),
-                                         static_cast<float>(out.x), static_cast<float>(-out.y), 4.0f,
-                                         isNamed ? LabelRank::Named : LabelRank::Vertex);
+                    if (m_labels.PlaceOutside(other, At(v), std::to_string(i), TextStyle::Label, InkOf(s),
+                                              static_cast<float>(out.x), static_cast<float>(-out.y), 4.0f,
+                                              isNamed ? LabelRank::Named : LabelRank::Vertex) &&
+                        pokedIn[static_cast<size_t>(i)] && !contained)
+                    {
+                        // A corner pushed into the other body is numbered just outside both, where the number
+                        // reads as that corner's, not the other body's; with no room there it is left out.
+                        m_labels.OutsideBoth(own);
+                    }
                 }
                 for (int i = 0; i < poly.Count(); ++i)
                 {
@@ -1983,7 +1999,6 @@ class Painter
                     // behind it (a ball resting against a wall covers the middle of the wall's face).
                     // Only the part of the edge the figure shows counts: a long floor's free stretch off the image
                     // would put the name out of sight.
-                    const std::vector<ScreenPoint> other = OutlineOf(1 - s);
                     ScreenPoint from = At(TransformPoint(xf, poly.Vertices()[i]));
                     ScreenPoint to = At(TransformPoint(xf, poly.Vertices()[(i + 1) % poly.Count()]));
                     const ScreenPoint wholeFrom = from;

@@ -405,6 +405,47 @@ std::vector<std::string> LabelsInOtherBody(const RecordingCanvas& canvas, const 
     return problems;
 }
 
+// Vertex numbers of one body of the pair drawn inside the other body, where they read as the other's: "2" in B's
+// colour inside A. A body wholly inside the other (a box in a box) has its numbers there, as it has no outside near
+// its corners; every other corner, even one pushed into the other body, is numbered outside it or left out.
+std::vector<std::string> VertexNumbersInOtherBody(const RecordingCanvas& canvas, const Scene& scene,
+                                                  const PairStudy& study, const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    const Body* bodies[2] = {&scene.bodies[static_cast<size_t>(study.bodyA)],
+                             &scene.bodies[static_cast<size_t>(study.bodyB)]};
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || c->text.empty() ||
+            c->text.find_first_not_of("0123456789") != std::string::npos)
+        {
+            continue;
+        }
+        for (int s = 0; s < 2; ++s)
+        {
+            if ((c->color >> 8) != (inks[s] >> 8) || bodies[s]->shape.type != ShapeType::Polygon)
+            {
+                continue;
+            }
+            bool contained = true;
+            for (const Vec2& v : bodies[s]->shape.polygon.Vertices())
+            {
+                contained = contained && InsideBody(*bodies[1 - s], TransformPoint(bodies[s]->Xf(), v));
+            }
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            const Vec2 middle = ToWorld(view, {c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y});
+            if (!contained && InsideBody(*bodies[1 - s], middle))
+            {
+                problems.push_back(Describe(*c) + ", a vertex number of " + bodies[s]->name + ", lies inside " +
+                                   bodies[1 - s]->name);
+            }
+        }
+    }
+    return problems;
+}
+
 // A body of the pair as drawn: its outline on screen (a circle as a polygon of many sides).
 std::vector<ScreenPoint> Outline(const Body& body, const View& view)
 {
@@ -949,6 +990,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
     if (setup.figure.kind == FigureKind::Pair)
     {
         for (std::string& p : LabelsInOtherBody(canvas, scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : VertexNumbersInOtherBody(canvas, scene, setup.study, setup.figure.view))
         {
             problems.push_back(std::move(p));
         }
