@@ -18,6 +18,7 @@ constexpr float kSideMargin = 4.0f;   // and its left and right edges, beyond th
 // ("-3.00 -3.00", "c2 1"), and stacked labels that touch read as one block.
 constexpr float kKeepX = 4.0f;
 constexpr float kKeepY = 3.0f;
+constexpr float kLabelApart = 4.0f; // and two labels side by side this much more
 constexpr float kNameRoom = 5.0f; // and a body's name this much more
 constexpr double kPi = 3.14159265358979323846;
 
@@ -387,9 +388,16 @@ bool LabelPlacer::Free(const ScreenRect& rect, float spacing, LabelRank rank, bo
     // that room (the first pass, which also keeps a space beside every label).
     const float room = rank == LabelRank::Name && spacing > 0.0f ? kNameRoom : 0.0f;
     const ScreenRect spaced{foot.minX - spacing - room, foot.minY - room, foot.maxX + spacing + room, foot.maxY + room};
-    if (std::any_of(m_taken.begin(), m_taken.end(), [&](const ScreenRect& other) { return other.Overlaps(spaced); }))
+    for (size_t k = 0; k < m_taken.size(); ++k)
     {
-        return false;
+        // Two labels side by side keep more room between them than a label and a mark: closer than about three
+        // spaces they read as one phrase ("c2 e2", "c1 pitfall 0.20").
+        const float apart = k >= m_reserved ? kLabelApart : 0.0f;
+        const ScreenRect& other = m_taken[k];
+        if (other.Overlaps({spaced.minX - apart, spaced.minY, spaced.maxX + apart, spaced.maxY}))
+        {
+            return false;
+        }
     }
     if (std::any_of(m_shapes.begin(), m_shapes.end(),
                     [&](const std::vector<ScreenPoint>& shape) { return RectMeetsConvex(foot, shape); }))

@@ -213,6 +213,9 @@ constexpr float kEdgeMargin = 4.0f;
 constexpr float kStackGap = 2.0f;
 constexpr float kLabelStackGap = 6.0f;
 constexpr float kLineGap = 8.0f;
+// Two labels in the scene side by side on one line, closer than about three spaces, read as one phrase ("c2 e2",
+// "c1 pitfall 0.20 c2"): they keep farther apart than words of the number line.
+constexpr float kLabelLineGap = 12.0f;
 
 Box Grown(const Box& b, float dx, float dy)
 {
@@ -284,8 +287,9 @@ std::vector<std::string> HiddenTexts(const RecordingCanvas& canvas, int width, i
             const bool oneLine = shared > 0.5f * std::min(p.maxY - p.minY, q.maxY - q.minY);
             const bool labels = commands[texts[a].first].group == "labels" && commands[texts[b].first].group == "labels";
             const float stack = labels ? kLabelStackGap : kStackGap;
-            if (Grown(p, oneLine ? 0.5f * kLineGap : 0.5f * kStackGap, 0.5f * stack).Overlaps(
-                    Grown(q, oneLine ? 0.5f * kLineGap : 0.5f * kStackGap, 0.5f * stack)))
+            const float line = labels ? kLabelLineGap : kLineGap;
+            if (Grown(p, oneLine ? 0.5f * line : 0.5f * kStackGap, 0.5f * stack).Overlaps(
+                    Grown(q, oneLine ? 0.5f * line : 0.5f * kStackGap, 0.5f * stack)))
             {
                 problems.push_back(Describe(commands[texts[a].first]) + " and " + Describe(commands[texts[b].first]) +
                                    (p.Overlaps(q) ? " overlap" : " touch"));
