@@ -18,7 +18,7 @@ constexpr float kSideMargin = 4.0f;   // and its left and right edges, beyond th
 // ("-3.00 -3.00", "c2 1"), and stacked labels that touch read as one block.
 constexpr float kKeepX = 4.0f;
 constexpr float kKeepY = 3.0f;
-constexpr float kLabelApart = 4.0f; // and two labels side by side this much more
+constexpr float kLabelApart = 8.0f; // and two labels side by side this much more
 constexpr float kNameRoom = 5.0f; // and a body's name this much more
 constexpr double kPi = 3.14159265358979323846;
 

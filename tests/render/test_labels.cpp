@@ -215,7 +215,7 @@ constexpr float kLabelStackGap = 6.0f;
 constexpr float kLineGap = 8.0f;
 // Two labels in the scene side by side on one line, closer than about three spaces, read as one phrase ("c2 e2",
 // "c1 pitfall 0.20 c2"): they keep farther apart than words of the number line.
-constexpr float kLabelLineGap = 12.0f;
+constexpr float kLabelLineGap = 16.0f;
 
 Box Grown(const Box& b, float dx, float dy)
 {
