@@ -315,10 +315,11 @@ void PaintDiscCast(Canvas& surface, const Scene& scene, int targetIndex, int dis
         const ScreenPoint p = ToScreen(view, hit.point);
         canvas.FillCircle(c, radius, WithAlpha(palette::kShapeB, 0.35f));
         canvas.Circle(c, radius, palette::kShapeBInk, 2.0f);
-        canvas.FillCircle(c, 3.0f, palette::kInk);
-        // The normal from the contact point through the centre and beyond: the centre lies one radius along it.
+        // The normal from the contact point through the centre and beyond: the centre lies one radius along it,
+        // its dot drawn over the arrow.
         const ScreenPoint tip = ToScreen(view, hit.point + (r + 22.0 / view.zoom) * hit.normal);
         labels.Reserve(Arrow(canvas, p, tip, palette::kResult, 2.0f));
+        canvas.FillCircle(c, 3.0f, palette::kInk);
         canvas.FillCircle(p, 4.5f, palette::kResult);
         labels.Reserve({p.x - 5.0f, p.y - 5.0f, p.x + 5.0f, p.y + 5.0f});
         labels.Reserve({c.x - 4.0f, c.y - 4.0f, c.x + 4.0f, c.y + 4.0f});

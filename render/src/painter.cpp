@@ -496,13 +496,18 @@ class Painter
             Normals();
         }
         PaintWorldScene(m_canvas, m_labels, m_view, m_scene, m_figure, m_bounds);
+        // The shapes at the time of impact under the velocity arrows, whose heads their outlines would cut.
+        if (Has(m_figure, kLayerGhost) && m_study.sweep)
+        {
+            Ghosts();
+        }
         if (Has(m_figure, kLayerSwept) && m_study.sweep)
         {
             Motion();
         }
-        if (Has(m_figure, kLayerGhost) && m_study.sweep)
+        else if (Has(m_figure, kLayerSwept))
         {
-            Ghosts();
+            Velocities();
         }
         if (m_hasAxis && Has(m_figure, kLayerProjection) && !m_axis.skipped)
         {
@@ -515,6 +520,24 @@ class Painter
             m_canvas.BeginGroup("projection");
             AxisSource(m_axis.Ref(), WithAlpha(palette::kInk, 0.4f));
         }
+        // The face the axis comes from, over the axis line's bars and projectors, which would hide its normal's
+        // head; a vertex's dot and line last, over the best axis's edge ending at that vertex, the separating line
+        // through the narrow gap beside it and the body moved out by the MTV.
+        const auto axisSource = [&](bool faces) {
+            if (m_hasAxis && Has(m_figure, kLayerProjection) && !m_axis.skipped)
+            {
+                m_canvas.BeginGroup("projection");
+                const Color ink = WithAlpha(palette::kInk, m_axis.decided ? 0.4f : 1.0f);
+                for (int f = 0; f < m_axis.faceCount; ++f)
+                {
+                    if ((m_axis.faces[f].kind == AxisKind::FaceNormal) == faces)
+                    {
+                        AxisSource(m_axis.faces[f], ink);
+                    }
+                }
+            }
+        };
+        axisSource(true);
         // After the projection, whose bars would hide the best axis's arrow heads where they cross.
         if (m_hasAxis && Has(m_figure, kLayerBest))
         {
@@ -528,6 +551,7 @@ class Painter
         {
             Mtv();
         }
+        axisSource(false);
         if (m_verdict && Has(m_figure, kLayerContacts))
         {
             Contacts();
@@ -974,13 +998,51 @@ class Painter
             }
             const Transform xf = body.Xf();
             const auto& poly = body.shape.polygon;
+            const std::vector<ScreenPoint> other = OutlineOf(1 - s);
+            // Whether the arrow from `a` runs along an edge of the other body, which is drawn over it (as the
+            // tested face, thick and dark) and would hide it: two boxes side by side, one's middle level with the
+            // other's edge.
+            const auto alongOther = [&](ScreenPoint a, ScreenPoint tip) {
+                for (size_t k = 0; k < other.size(); ++k)
+                {
+                    const ScreenPoint p = other[k];
+                    const ScreenPoint q = other[(k + 1) % other.size()];
+                    const float length = std::hypot(q.x - p.x, q.y - p.y);
+                    if (length < 1.0f)
+                    {
+                        continue;
+                    }
+                    const auto off = [&](ScreenPoint m) {
+                        return std::fabs((q.x - p.x) * (m.y - p.y) - (q.y - p.y) * (m.x - p.x)) / length;
+                    };
+                    const auto within = [&](ScreenPoint m) {
+                        const float t = ((m.x - p.x) * (q.x - p.x) + (m.y - p.y) * (q.y - p.y)) / (length * length);
+                        return t > -0.05f && t < 1.05f;
+                    };
+                    if (off(a) < 4.0f && off(tip) < 4.0f && (within(a) || within(tip)))
+                    {
+                        return true;
+                    }
+                }
+                return false;
+            };
             for (int i = 0; i < poly.Count(); ++i)
             {
-                const Vec2 mid = TransformPoint(xf, poly.Vertices()[i] + 0.5 * poly.Edge(i));
                 const Vec2 n = Rotate(xf.q, poly.Normal(i));
-                const ScreenPoint a = At(mid);
-                MarkedArrow(a, {a.x + 22.0f * static_cast<float>(n.x), a.y - 22.0f * static_cast<float>(n.y)}, InkOf(s),
-                            1.5f, 7.0f);
+                const auto from = [&](double t) { return At(TransformPoint(xf, poly.Vertices()[i] + t * poly.Edge(i))); };
+                const auto tipOf = [&](ScreenPoint a) {
+                    return ScreenPoint{a.x + 22.0f * static_cast<float>(n.x), a.y - 22.0f * static_cast<float>(n.y)};
+                };
+                ScreenPoint a = from(0.5);
+                for (const double t : {0.5, 0.35, 0.65, 0.25, 0.75})
+                {
+                    if (!alongOther(from(t), tipOf(from(t))))
+                    {
+                        a = from(t);
+                        break;
+                    }
+                }
+                MarkedArrow(a, tipOf(a), InkOf(s), 1.5f, 7.0f);
             }
         }
     }
@@ -1042,6 +1104,63 @@ class Painter
             m_labels.PlaceOutside(OutlineOf(1 - s), tip, "v", TextStyle::Heading, InkOf(s),
                                  static_cast<float>(body.velocity.x), static_cast<float>(-body.velocity.y), 6.0f,
                                  LabelRank::Note);
+        }
+    }
+
+    // A figure of one instant (a static query) with the swept layer: each moving body's velocity as an arrow from
+    // its centre, named with its speed. A second's travel is drawn when it fits in the scene; a longer one is drawn
+    // shorter, where its head shows, and the speed in its name says how fast.
+    void Velocities()
+    {
+        m_canvas.BeginGroup("swept");
+        const ScreenRect sight = SceneInSight();
+        const ScreenRect inside{sight.minX + 16.0f, std::max(sight.minY, m_layout.sceneTop) + 16.0f, sight.maxX - 16.0f,
+                                std::min(sight.maxY, m_layout.sceneBottom) - 16.0f};
+        for (int s = 0; s < 2; ++s)
+        {
+            const Body& body = BodyOf(s);
+            const double speed = Length(body.velocity);
+            if (speed <= 0.0)
+            {
+                continue;
+            }
+            const ScreenPoint from = At(ShapeCenter(body.shape, body.Xf()));
+            ScreenPoint tip = At(ShapeCenter(body.shape, body.Xf()) + body.velocity);
+            float keep = 1.0f;
+            const float dx = tip.x - from.x;
+            const float dy = tip.y - from.y;
+            if (dx > 0.0f && tip.x > inside.maxX)
+            {
+                keep = std::min(keep, (inside.maxX - from.x) / dx);
+            }
+            if (dx < 0.0f && tip.x < inside.minX)
+            {
+                keep = std::min(keep, (inside.minX - from.x) / dx);
+            }
+            if (dy > 0.0f && tip.y > inside.maxY)
+            {
+                keep = std::min(keep, (inside.maxY - from.y) / dy);
+            }
+            if (dy < 0.0f && tip.y < inside.minY)
+            {
+                keep = std::min(keep, (inside.minY - from.y) / dy);
+            }
+            if (keep < 1.0f)
+            {
+                // Not to scale: a modest arrow, which points the way without crossing the figure.
+                keep = std::min(keep, 140.0f / std::max(std::hypot(dx, dy), 1e-3f));
+            }
+            keep = std::max(keep, 0.0f);
+            tip = {from.x + keep * dx, from.y + keep * dy};
+            if (std::hypot(tip.x - from.x, tip.y - from.y) < 20.0f)
+            {
+                continue; // no room for an arrow
+            }
+            MarkedArrow(from, tip, InkOf(s), 2.0f, 11.0f);
+            const std::string unit = m_scene.hasWorld ? " m/s" : " per step";
+            m_labels.Place(tip, "v = " + FormatNumber(speed) + unit, TextStyle::Label, InkOf(s),
+                          static_cast<float>(body.velocity.x), static_cast<float>(-body.velocity.y), 6.0f,
+                          LabelRank::Note);
         }
     }
 
@@ -1139,7 +1258,8 @@ class Painter
         m_canvas.FillConvex(screen.data(), static_cast<int>(screen.size()), WithAlpha(palette::kOverlap, 0.25f));
         m_canvas.Polyline(screen.data(), static_cast<int>(screen.size()), true, palette::kOverlap, 1.5f);
         const ScreenPoint o = at(origin);
-        m_canvas.FillCircle(o, 3.5f, palette::kInk);
+        // The origin's dot goes over the ray or the arrow that leaves it, whose start would hide it.
+        const auto originDot = [&] { m_canvas.FillCircle(o, 3.5f, palette::kInk); };
         // "O" goes on the side away from the arrow or the ray that leaves the origin, whose head it would hide.
         Vec2 leaving{};
         const bool overlapping = m_study.Textbook() ? m_study.textbookResult.overlap : m_study.manifold.overlap;
@@ -1191,6 +1311,7 @@ class Painter
                 m_canvas.FillCircle(hit, 4.0f, palette::kResult);
                 note("the ray enters at t = " + FormatNumber(toi), palette::kResult);
             }
+            originDot();
             return;
         }
         const bool overlap = m_study.Textbook() ? m_study.textbookResult.overlap : m_study.manifold.overlap;
@@ -1200,7 +1321,19 @@ class Painter
             const Vec2 normal = m_study.Textbook() ? m_study.textbookResult.normal : m_study.manifold.normal;
             // Moving B by depth * normal moves A - B by -depth * normal: the origin reaches the boundary at
             // depth * normal, the nearest boundary point.
-            Arrow(m_canvas, o, at(origin + depth * normal), palette::kResult, 2.0f, 8.0f);
+            ScreenPoint tip = at(origin + depth * normal);
+            // A depth too small to see still gets a visible arrow in its direction, as the MTV's in the scene, its
+            // head clear of the origin's dot.
+            if (std::hypot(tip.x - o.x, tip.y - o.y) < 16.0f)
+            {
+                tip = {o.x + 16.0f * static_cast<float>(normal.x), o.y - 16.0f * static_cast<float>(normal.y)};
+            }
+            Arrow(m_canvas, o, tip, palette::kResult, 2.0f, 8.0f);
+            originDot();
+        }
+        else
+        {
+            originDot();
         }
         m_canvas.Text({box.minX + 6.0f, box.maxY - 18.0f}, overlap ? "O inside: overlap" : "O outside: apart",
                      TextStyle::Label, overlap ? palette::kResult : 0x006E50FFu);
@@ -1273,7 +1406,7 @@ class Painter
             const ScreenRect sight = SceneInSight();
             const ScreenRect inside{sight.minX + 4.0f, sight.minY + 4.0f, sight.maxX - 4.0f, sight.maxY - 4.0f};
             const Vec2 n = Rotate(xf.q, poly.Normal(ref.index));
-            const float length = 30.0f;
+            float length = 30.0f;
             const auto tipOf = [&](ScreenPoint m) {
                 return ScreenPoint{m.x + length * static_cast<float>(n.x), m.y - length * static_cast<float>(n.y)};
             };
@@ -1296,31 +1429,84 @@ class Painter
             const std::vector<ScreenPoint> other =
                 m_verdict && Has(m_figure, kLayerContacts) && m_study.trace.hasClip ? OutlineOf(1 - ref.shape)
                                                                                   : std::vector<ScreenPoint>{};
+            // Nor on B's outline moved out by the MTV, dashed over it at the verdict.
+            const std::vector<ScreenPoint> moved = MtvOutline();
             const auto clear = [&](ScreenPoint m) {
                 const ScreenPoint t = tipOf(m);
-                for (size_t k = 0; k < other.size(); ++k)
+                const ScreenPoint base{t.x - 9.0f * static_cast<float>(n.x), t.y + 9.0f * static_cast<float>(n.y)};
+                const ScreenRect headBox{std::min(t.x, base.x) - 5.0f, std::min(t.y, base.y) - 5.0f,
+                                         std::max(t.x, base.x) + 5.0f, std::max(t.y, base.y) + 5.0f};
+                for (const std::vector<ScreenPoint>* outline : {&other, &moved})
                 {
-                    ScreenPoint a = other[k];
-                    ScreenPoint b = other[(k + 1) % other.size()];
-                    if (ClipSegment(a, b, {t.x - 6.0f, t.y - 6.0f, t.x + 6.0f, t.y + 6.0f}))
+                    for (size_t k = 0; k < outline->size(); ++k)
+                    {
+                        ScreenPoint a = (*outline)[k];
+                        ScreenPoint b = (*outline)[(k + 1) % outline->size()];
+                        if (ClipSegment(a, b, outline == &other ? ScreenRect{t.x - 6.0f, t.y - 6.0f, t.x + 6.0f, t.y + 6.0f}
+                                                                : headBox))
+                        {
+                            return false;
+                        }
+                    }
+                }
+                // Nor on the axis line's bars, where a head of the body's colour on its own interval's bar is lost
+                // (a face below its body, facing the axis line a short way off).
+                const ScreenPoint back{t.x - 9.0f * static_cast<float>(n.x), t.y + 9.0f * static_cast<float>(n.y)};
+                for (const Bar& bar : m_bars)
+                {
+                    ScreenPoint a = bar.a;
+                    ScreenPoint b = bar.b;
+                    const float r = 0.5f * bar.thickness + 1.0f;
+                    if (ClipSegment(a, b,
+                                    {std::min(t.x, back.x) - 4.0f - r, std::min(t.y, back.y) - 4.0f - r,
+                                     std::max(t.x, back.x) + 4.0f + r, std::max(t.y, back.y) + 4.0f + r}))
+                    {
+                        return false;
+                    }
+                }
+                // Nor under the MTV's arrow, drawn over everything last.
+                if (m_hasMtvArrow)
+                {
+                    ScreenPoint a = m_mtvFrom;
+                    ScreenPoint b = m_mtvTo;
+                    if (ClipSegment(a, b,
+                                    {std::min(t.x, back.x) - 7.0f, std::min(t.y, back.y) - 7.0f,
+                                     std::max(t.x, back.x) + 7.0f, std::max(t.y, back.y) + 7.0f}))
                     {
                         return false;
                     }
                 }
                 // Only the head matters: a shaft across another head leaves both readable.
-                const ScreenPoint back{t.x - 9.0f * static_cast<float>(n.x), t.y + 9.0f * static_cast<float>(n.y)};
                 return !CrossesHead(back, t, 9.0f);
             };
             if (clipped && !clear(mid))
             {
-                for (const float t : {0.35f, 0.65f, 0.25f, 0.75f, 0.15f, 0.85f})
+                // Elsewhere along the face, then shorter or longer: a normal that stops short of the bars, or
+                // reaches past the outline moved out by the MTV close beside the face, still shows its direction.
+                const ScreenPoint middle = mid;
+                bool found = false;
+                for (const float tried : {30.0f, 22.0f, 42.0f, 16.0f})
                 {
-                    const ScreenPoint m{p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
-                    if (seen(m) && clear(m))
+                    length = tried;
+                    for (const float t : {0.5f, 0.35f, 0.65f, 0.25f, 0.75f, 0.15f, 0.85f})
                     {
-                        mid = m;
+                        const ScreenPoint m = t == 0.5f ? middle : ScreenPoint{p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
+                        if (seen(m) && clear(m))
+                        {
+                            mid = m;
+                            found = true;
+                            break;
+                        }
+                    }
+                    if (found)
+                    {
                         break;
                     }
+                }
+                if (!found)
+                {
+                    length = 30.0f;
+                    mid = middle;
                 }
             }
             if (seen(mid))
@@ -1401,10 +1587,6 @@ class Painter
         const float fade = m_axis.decided ? 0.4f : 1.0f;
         const auto faint = [fade](Color color, float alpha) { return WithAlpha(color, alpha * fade); };
         const double pad = kLinePad / m_view.zoom;
-        for (int f = 0; f < m_axis.faceCount; ++f)
-        {
-            AxisSource(m_axis.faces[f], faint(palette::kInk, 1.0f));
-        }
         // The line ends where the scene leaves sight, so that the caption or the panel never hides its head.
         ScreenPoint tail = At(Along(base, d, lo - pad));
         ScreenPoint head = At(Along(base, d, hi + pad));
@@ -1438,6 +1620,7 @@ class Painter
             p = {p.x - ox * offset, p.y - oy * offset};
             q = {q.x - ox * offset, q.y - oy * offset};
             m_canvas.Segment(p, q, color, thickness);
+            m_bars.push_back({p, q, thickness});
             // A label's halo over a bar would hide the interval it draws.
             m_labels.ReserveLine(p, q, thickness);
         };
@@ -1547,13 +1730,14 @@ class Painter
         }
     }
 
-    void Mtv()
+    // The MTV the verdict draws; false when the pair does not overlap.
+    bool ShownMtv(Manifold& m) const
     {
-        Manifold m = m_study.sweep ? m_study.sweepResult.initial : m_study.manifold;
+        m = m_study.sweep ? m_study.sweepResult.initial : m_study.manifold;
         const bool overlapping = m_study.sweep ? m_study.sweepResult.status == SweepStatus::Overlapping : m.overlap;
         if (!overlapping)
         {
-            return;
+            return false;
         }
         if (m_study.Textbook() && !m_study.sweep)
         {
@@ -1561,11 +1745,32 @@ class Painter
             m.depth = m_study.textbookResult.depth;
             m.normal = m_study.textbookResult.normal;
         }
+        return true;
+    }
+
+    // B's outline moved out by the MTV, dashed at the verdict; empty when the figure does not draw it.
+    std::vector<ScreenPoint> MtvOutline() const
+    {
+        Manifold m;
+        if (!m_verdict || !Has(m_figure, kLayerMtv) || !ShownMtv(m))
+        {
+            return {};
+        }
+        Transform moved = m_bodyB.Xf();
+        moved.p = moved.p + m.depth * m.normal;
+        return ShapeOutline(m_view, m_bodyB.shape, moved);
+    }
+
+    void Mtv()
+    {
+        Manifold m;
+        if (!ShownMtv(m))
+        {
+            return;
+        }
         m_canvas.BeginGroup("mtv");
         const Vec2 shift = m.depth * m.normal;
-        Transform moved = m_bodyB.Xf();
-        moved.p = moved.p + shift;
-        const std::vector<ScreenPoint> cleared = ShapeOutline(m_view, m_bodyB.shape, moved);
+        const std::vector<ScreenPoint> cleared = MtvOutline();
         DashedOutline(m_canvas, cleared, palette::kShapeBInk, 1.8f, m_bounds);
         ReserveOutline(cleared, 1.8f);
         m_used.push_back(LegendMark::Dashed);
@@ -2385,6 +2590,13 @@ class Painter
             m_canvas.Text({tx, up ? y - 10.0f - size.y : y + 25.0f}, text, TextStyle::Label, palette::kInk);
         };
         const SweepStatus status = m_study.Textbook() ? m_study.textbookSweepResult.status : m_study.sweepResult.status;
+        if (m_verdict && status == SweepStatus::Hit)
+        {
+            const float px = x(m_study.Textbook() ? m_study.textbookSweepResult.toi : m_study.sweepResult.toi);
+            // Short enough to keep clear of the entry label above and the tick labels below; under the latest
+            // entry's triangle, at the same time, which it would hide.
+            m_canvas.Segment({px, y - 9.0f}, {px, y + 8.0f}, palette::kResult, 3.0f);
+        }
         // A hit's verdict is the common window, as its sentence says: the latest entry and the earliest exit of all
         // axes (the deciding axis's own exit may come later).
         if (m_verdict && status == SweepStatus::Hit)
@@ -2404,12 +2616,6 @@ class Painter
             {
                 marker(m_axis.exit, "exit", false);
             }
-        }
-        if (m_verdict && status == SweepStatus::Hit)
-        {
-            const float px = x(m_study.Textbook() ? m_study.textbookSweepResult.toi : m_study.sweepResult.toi);
-            // Short enough to keep clear of the entry label above and the tick labels below.
-            m_canvas.Segment({px, y - 9.0f}, {px, y + 8.0f}, palette::kResult, 3.0f);
         }
     }
 
@@ -2556,6 +2762,12 @@ class Painter
     std::vector<LegendMark> m_used; // marks drawn that only their drawing knows of
     bool m_hasPitfallArrow = false;
     std::vector<ScreenRect> m_heads; // the arrow heads drawn so far, which no later arrow may cover
+    struct Bar
+    {
+        ScreenPoint a, b;
+        float thickness;
+    };
+    std::vector<Bar> m_bars; // the axis line's bars, which would hide an arrow head of like colour drawn on them
     ScreenPoint m_pitfallFrom{};
     ScreenPoint m_pitfallTo{};
 };

@@ -1,0 +1,377 @@
+// SPDX-License-Identifier: MIT
+// No figure hides its own marks: a dot (a vertex axis's vertex, a contact, the origin of the Minkowski inset) or a
+// small arrow head (a normal, a velocity, the axis line, a time marker) is not drawn under a later line, fill or
+// head that covers it, and each moving body of a figure that draws motion has its velocity arrow. Labels over
+// marks are the label test's (test_labels.cpp); this one checks the drawing order and placement of the marks.
+
+#include "painter_support.h"
+
+#include <satviz/render/palette.h>
+#include <satviz/render/view.h>
+#include <satviz/scene_world.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace satviz;
+
+namespace
+{
+
+// The lists of tutorials/figures.cmake: set(NAME scene scene ...) blocks, by name.
+std::map<std::string, std::vector<std::string>> FigureScenes()
+{
+    std::ifstream in(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/figures.cmake");
+    REQUIRE(in);
+    std::map<std::string, std::vector<std::string>> lists;
+    std::string current;
+    for (std::string line; std::getline(in, line);)
+    {
+        if (line.rfind("set(SATVIZ_", 0) == 0)
+        {
+            current = line.substr(4, line.find_first_of(" )", 4) - 4);
+            continue;
+        }
+        std::istringstream words(line);
+        for (std::string word; !current.empty() && words >> word;)
+        {
+            if (word == ")")
+            {
+                current.clear();
+                break;
+            }
+            lists[current].push_back(word);
+        }
+    }
+    return lists;
+}
+
+float Alpha(Color color)
+{
+    return static_cast<float>(color & 0xFFu) / 255.0f;
+}
+
+float SegmentDistance(ScreenPoint a, ScreenPoint b, ScreenPoint p)
+{
+    const float dx = b.x - a.x;
+    const float dy = b.y - a.y;
+    const float length2 = dx * dx + dy * dy;
+    float t = length2 > 0.0f ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / length2 : 0.0f;
+    t = std::fmax(0.0f, std::fmin(1.0f, t));
+    return std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
+}
+
+// Whether the drawing call paints the point p.
+bool Paints(const DrawCommand& c, ScreenPoint p, RecordingCanvas& canvas)
+{
+    switch (c.kind)
+    {
+    case DrawCommand::Kind::Segment:
+        return SegmentDistance(c.points[0], c.points[1], p) < 0.5f * c.thickness;
+    case DrawCommand::Kind::Polyline:
+    {
+        const size_t n = c.points.size();
+        for (size_t i = 0; i + 1 < n + (c.closed ? 1 : 0); ++i)
+        {
+            if (SegmentDistance(c.points[i], c.points[(i + 1) % n], p) < 0.5f * c.thickness)
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+    case DrawCommand::Kind::FillConvex:
+    {
+        const size_t n = c.points.size();
+        int sign = 0;
+        for (size_t i = 0; i < n; ++i)
+        {
+            const ScreenPoint a = c.points[i];
+            const ScreenPoint b = c.points[(i + 1) % n];
+            const float cross = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+            const int s = cross > 0.0f ? 1 : (cross < 0.0f ? -1 : 0);
+            if (s != 0 && sign != 0 && s != sign)
+            {
+                return false;
+            }
+            sign = sign == 0 ? s : sign;
+        }
+        return true;
+    }
+    case DrawCommand::Kind::FillCircle:
+        return std::hypot(p.x - c.points[0].x, p.y - c.points[0].y) < c.radius;
+    case DrawCommand::Kind::Circle:
+        return std::fabs(std::hypot(p.x - c.points[0].x, p.y - c.points[0].y) - c.radius) < 0.5f * c.thickness;
+    case DrawCommand::Kind::FillRect:
+        return p.x > c.points[0].x && p.x < c.points[1].x && p.y > c.points[0].y && p.y < c.points[1].y;
+    case DrawCommand::Kind::Text:
+    {
+        const ScreenPoint size = canvas.MeasureText(c.text, c.style);
+        return p.x > c.points[0].x && p.x < c.points[0].x + size.x && p.y > c.points[0].y &&
+               p.y < c.points[0].y + size.y;
+    }
+    }
+    return false;
+}
+
+// A mark: an opaque dot of a few pixels or an opaque triangle of at most 20 pixels (an arrow head, a time marker),
+// with the points of it that must stay in sight: its middle and halfway out from it.
+bool MarkSamples(const DrawCommand& c, std::vector<ScreenPoint>& samples)
+{
+    samples.clear();
+    if (Alpha(c.color) < 0.75f)
+    {
+        return false;
+    }
+    if (c.kind == DrawCommand::Kind::FillCircle && c.radius >= 3.0f && c.radius <= 8.0f)
+    {
+        const ScreenPoint m = c.points[0];
+        const float r = 0.5f * c.radius;
+        samples = {m, {m.x + r, m.y}, {m.x - r, m.y}, {m.x, m.y + r}, {m.x, m.y - r}};
+        return true;
+    }
+    if (c.kind == DrawCommand::Kind::FillConvex && c.points.size() == 3)
+    {
+        float minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
+        ScreenPoint m{0.0f, 0.0f};
+        for (const ScreenPoint& p : c.points)
+        {
+            minX = std::fmin(minX, p.x);
+            maxX = std::fmax(maxX, p.x);
+            minY = std::fmin(minY, p.y);
+            maxY = std::fmax(maxY, p.y);
+            m = {m.x + p.x / 3.0f, m.y + p.y / 3.0f};
+        }
+        if (maxX - minX > 20.0f || maxY - minY > 20.0f)
+        {
+            return false;
+        }
+        samples.push_back(m);
+        for (const ScreenPoint& p : c.points)
+        {
+            samples.push_back({0.5f * (m.x + p.x), 0.5f * (m.y + p.y)});
+        }
+        return true;
+    }
+    return false;
+}
+
+// The marks of a recorded figure that later calls hide: two or more of a mark's points painted over by a later
+// call of another group, or of another colour, at least 40% opaque. Labels are left to the label test, the key
+// draws its own swatches, and a contact point drawn on a vertex axis's vertex (the contact is that vertex) is the
+// same point marked twice.
+std::vector<std::string> HiddenMarks(RecordingCanvas& canvas)
+{
+    std::vector<std::string> hidden;
+    const std::vector<DrawCommand>& commands = canvas.commands;
+    std::vector<ScreenPoint> samples;
+    for (size_t i = 0; i < commands.size(); ++i)
+    {
+        const DrawCommand& mark = commands[i];
+        if (mark.group == "labels" || mark.group == "legend" || !MarkSamples(mark, samples))
+        {
+            continue;
+        }
+        int covered = 0;
+        std::string by;
+        for (const ScreenPoint& p : samples)
+        {
+            for (size_t j = i + 1; j < commands.size(); ++j)
+            {
+                const DrawCommand& later = commands[j];
+                if (later.group == "labels" || later.group == "legend" || Alpha(later.color) < 0.4f ||
+                    (later.group == mark.group && later.color == mark.color))
+                {
+                    continue;
+                }
+                // A ring of the background round a dot, drawn with it, sets it off.
+                if (later.group == mark.group && j <= i + 2 && (later.color | 0xFFu) == (palette::kBackground | 0xFFu))
+                {
+                    continue;
+                }
+                if (later.group == "contacts" && mark.group == "projection" &&
+                    later.kind == DrawCommand::Kind::FillCircle && mark.kind == DrawCommand::Kind::FillCircle)
+                {
+                    continue;
+                }
+                if (Paints(later, p, canvas))
+                {
+                    ++covered;
+                    by = later.group;
+                    break;
+                }
+            }
+        }
+        if (covered >= 2)
+        {
+            std::ostringstream text;
+            text << (mark.kind == DrawCommand::Kind::FillCircle ? "a dot" : "a head") << " of " << mark.group << " at ("
+                 << mark.points[0].x << ", " << mark.points[0].y << ") is hidden by " << by << " (" << covered << " of "
+                 << samples.size() << " points)";
+            hidden.push_back(text.str());
+        }
+    }
+    return hidden;
+}
+
+} // namespace
+
+TEST_CASE("The hidden-mark check finds a dot or a head under a later line, and not one drawn over it", "[marks]")
+{
+    RecordingCanvas under;
+    under.BeginGroup("projection");
+    under.FillCircle({50.0f, 50.0f}, 4.0f, palette::kInk);
+    under.BeginGroup("exit");
+    under.Segment({40.0f, 48.0f}, {60.0f, 52.0f}, palette::kGap, 2.5f);
+    CHECK(HiddenMarks(under).size() == 1);
+
+    RecordingCanvas over;
+    over.BeginGroup("exit");
+    over.Segment({40.0f, 48.0f}, {60.0f, 52.0f}, palette::kGap, 2.5f);
+    over.BeginGroup("projection");
+    over.FillCircle({50.0f, 50.0f}, 4.0f, palette::kInk);
+    CHECK(HiddenMarks(over).empty());
+
+    // A head on a bar of a like colour drawn after it is lost; a faint fill over it is not a cover.
+    RecordingCanvas bar;
+    bar.BeginGroup("best");
+    const ScreenPoint head[3] = {{50.0f, 60.0f}, {45.0f, 51.0f}, {55.0f, 51.0f}};
+    bar.FillConvex(head, 3, palette::kBest);
+    bar.BeginGroup("projection");
+    bar.Segment({20.0f, 55.0f}, {90.0f, 55.0f}, palette::kShapeA, 6.0f);
+    CHECK(HiddenMarks(bar).size() == 1);
+    RecordingCanvas faint;
+    faint.BeginGroup("best");
+    faint.FillConvex(head, 3, palette::kBest);
+    faint.BeginGroup("shapes");
+    faint.FillRect({0.0f, 0.0f}, {100.0f, 100.0f}, WithAlpha(palette::kShapeA, 0.22f));
+    CHECK(HiddenMarks(faint).empty());
+}
+
+TEST_CASE("No figure of the course draws a mark under a later line, fill or head that hides it", "[marks]")
+{
+    const auto lists = FigureScenes();
+    int figures = 0;
+    int failing = 0;
+    for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES", "SATVIZ_FACE_STEP_SCENES"})
+    {
+        const bool allSteps = std::string(list) != "SATVIZ_FIGURE_SCENES";
+        const bool faces = std::string(list) == "SATVIZ_FACE_STEP_SCENES";
+        for (const std::string& stem : lists.at(list))
+        {
+            const std::string file = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + stem + ".json";
+            Scene scene = painter_test::Load(file);
+            REQUIRE(SimulateScene(scene, scene.view.simSteps).empty());
+            FigureOptions options;
+            options.setSteps = faces;
+            options.steps = StepView::Faces;
+            FigureSetup setup = SetUpFigure(scene, options);
+            REQUIRE(setup.Ok());
+            const int first = allSteps ? 0 : setup.figure.step;
+            const int last = allSteps ? FigureStepCount(scene, setup) - 1 : setup.figure.step;
+            for (int k = first; k <= last; ++k)
+            {
+                setup.figure.step = k;
+                RecordingCanvas canvas;
+                PaintFigure(canvas, scene, setup.study, setup.figure);
+                const std::vector<std::string> hidden = HiddenMarks(canvas);
+                INFO((faces ? "faces/" : "") << stem << " step " << k + 1);
+                for (const std::string& problem : hidden)
+                {
+                    UNSCOPED_INFO(problem);
+                }
+                CHECK(hidden.empty());
+                failing += hidden.empty() ? 0 : 1;
+                ++figures;
+            }
+        }
+    }
+    INFO(failing << " of " << figures << " figures");
+    CHECK(figures > 100);
+    CHECK(failing == 0);
+}
+
+TEST_CASE("A figure that draws motion draws each moving body's velocity, in a static figure too", "[marks]")
+{
+    // l16_peg tests the plank against the peg at one instant (a static query): its velocity, 2 m/s down, is drawn
+    // from its centre, pointing down, and named with its speed.
+    Scene scene = painter_test::Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/l16_peg.json");
+    FigureSetup setup = SetUpFigure(scene, {});
+    REQUIRE(setup.Ok());
+    REQUIRE(!setup.study.sweep);
+    REQUIRE((setup.figure.layers & kLayerSwept) != 0);
+    RecordingCanvas canvas;
+    PaintFigure(canvas, scene, setup.study, setup.figure);
+    const Body& plank = scene.bodies[static_cast<size_t>(setup.study.bodyB)];
+    REQUIRE(plank.name == "plank");
+    const ScreenPoint centre = ToScreen(setup.figure.view, plank.position);
+    bool arrow = false;
+    for (const DrawCommand* c : canvas.InGroup("swept"))
+    {
+        if (c->kind == DrawCommand::Kind::Segment && std::hypot(c->points[0].x - centre.x, c->points[0].y - centre.y) < 1.0f)
+        {
+            arrow = std::fabs(c->points[1].x - centre.x) < 1.0f && c->points[1].y > centre.y + 40.0f;
+        }
+    }
+    CHECK(arrow);
+    bool named = false;
+    for (const std::string& text : canvas.Texts())
+    {
+        named = named || text == "v = 2.00 m/s";
+    }
+    CHECK(named);
+
+    // Without the swept layer, no arrow.
+    setup.figure.layers &= ~kLayerSwept;
+    RecordingCanvas plain;
+    PaintFigure(plain, scene, setup.study, setup.figure);
+    CHECK(plain.InGroup("swept").empty());
+}
+
+TEST_CASE("A face's normal arrow keeps its head off the axis line's bars, where it would merge with them", "[marks]")
+{
+    // fly_by's verdict: the best axis so far is the normal of block's edge 0, which faces the axis line a short way
+    // below the block; a head of light blue on the block's dark blue bar could not be told from it.
+    Scene scene = painter_test::Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/fly_by.json");
+    FigureSetup setup = SetUpFigure(scene, {});
+    REQUIRE(setup.Ok());
+    RecordingCanvas canvas;
+    PaintFigure(canvas, scene, setup.study, setup.figure);
+    std::vector<const DrawCommand*> bars;
+    for (const DrawCommand* c : canvas.InGroup("projection"))
+    {
+        if (c->kind == DrawCommand::Kind::Segment && c->thickness >= 5.0f)
+        {
+            bars.push_back(c);
+        }
+    }
+    REQUIRE(bars.size() >= 2);
+    int heads = 0;
+    std::vector<ScreenPoint> samples;
+    for (const char* group : {"best", "projection"})
+    {
+        for (const DrawCommand* c : canvas.InGroup(group))
+        {
+            if (!MarkSamples(*c, samples) || c->kind != DrawCommand::Kind::FillConvex)
+            {
+                continue;
+            }
+            ++heads;
+            for (const ScreenPoint& p : samples)
+            {
+                for (const DrawCommand* bar : bars)
+                {
+                    INFO(group << " head at (" << p.x << ", " << p.y << ")");
+                    CHECK(SegmentDistance(bar->points[0], bar->points[1], p) >= 0.5f * bar->thickness + 1.0f);
+                }
+            }
+        }
+    }
+    CHECK(heads >= 2);
+}
