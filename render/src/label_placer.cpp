@@ -18,7 +18,8 @@ constexpr float kSideMargin = 4.0f;   // and its left and right edges, beyond th
 // ("-3.00 -3.00", "c2 1"), and stacked labels that touch read as one block.
 constexpr float kKeepX = 4.0f;
 constexpr float kKeepY = 3.0f;
-constexpr float kLabelApart = 8.0f; // and two labels side by side this much more
+constexpr float kLabelApart = 8.0f;
+constexpr float kSmallLabel = 18.0f; // a label narrower than this is a glyph or two // and two labels side by side this much more
 constexpr float kNameRoom = 5.0f; // and a body's name this much more
 constexpr double kPi = 3.14159265358979323846;
 
@@ -406,7 +407,10 @@ bool LabelPlacer::Free(const ScreenRect& rect, float spacing, LabelRank rank, bo
     }
     for (const Line& line : m_lines)
     {
-        if ((rank < line.from || (line.faint && rank > LabelRank::Named)) && !everyLine)
+        // A label of a glyph or two (a number, "e2", "c1", "v") on a faint line reads as the name of its end, as
+        // a vertex number does; a longer one is read as words across it.
+        const bool small = rect.maxX - rect.minX < kSmallLabel;
+        if ((rank < line.from || (line.faint && rank > LabelRank::Named && !small)) && !everyLine)
         {
             continue;
         }

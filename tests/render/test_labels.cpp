@@ -584,7 +584,8 @@ std::vector<std::string> LabelsOnOtherBodies(const RecordingCanvas& canvas, cons
 // line, a separating line, an axis. The label's halo cuts the line, and the words read as part of it (an edge name
 // on the separating line, a vertex number on the dashed line from its corner to the axis). The faint grid and the
 // candidate axes under everything are the only lines a label may cross, and a translucent line (a dashed projection
-// line, a ghost's outline) only a label larger than a number or an edge name, which is not read as its end's.
+// line, a ghost's outline) only a label wider than a glyph or two ("c2", "v", a number, an edge name), which is not
+// read as the name of its end.
 std::vector<std::string> LabelsOnLines(const RecordingCanvas& canvas)
 {
     std::vector<std::string> problems;
@@ -607,7 +608,7 @@ std::vector<std::string> LabelsOnLines(const RecordingCanvas& canvas)
         {
             const DrawCommand& d = commands[j];
             if (d.group == "background" || d.group == "axes" || d.group == "labels" || (d.color & 0xFFu) < 0x40u ||
-                (!Opaque(d.color) && !digits && !edge))
+                (!Opaque(d.color) && !digits && !edge && size.x >= 18.0f))
             {
                 continue;
             }
