@@ -276,7 +276,7 @@ bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
     {
         return false;
     }
-    m_labels.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}, false, {}});
+    m_labels.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}, false, {}, {}});
     return true;
 }
 
@@ -317,6 +317,14 @@ void LabelPlacer::OutsideBoth(std::vector<ScreenPoint> own)
     if (!m_labels.empty())
     {
         m_labels.back().own = std::move(own);
+    }
+}
+
+void LabelPlacer::KeepOutOf(std::vector<ScreenPoint> outline)
+{
+    if (!m_labels.empty())
+    {
+        m_labels.back().keepOut.push_back(std::move(outline));
     }
 }
 
@@ -445,6 +453,11 @@ void LabelPlacer::Flush(Color halo)
     m_reserved = m_taken.size(); // the marks, panels and lines reserved; the labels' footprints follow
     // Whether a place keeps the label out of the other body (and, with OutsideBoth, out of its own too).
     const auto Away = [](const Label& label, const ScreenRect& rect, ScreenPoint at) {
+        if (!std::all_of(label.keepOut.begin(), label.keepOut.end(),
+                         [&](const std::vector<ScreenPoint>& outline) { return ClearOf(outline, rect); }))
+        {
+            return false;
+        }
         if (!label.own.empty())
         {
             return ClearOf(label.avoid, rect) && ClearOf(label.own, rect);

@@ -70,6 +70,9 @@ class LabelPlacer
     /// anchor lies there, where it would read as that body's. Only the places near its corner are tried: with none
     /// free, a vertex number is left out and a named one hangs on a leader line.
     void OutsideBoth(std::vector<ScreenPoint> own);
+    /// Keeps the label added last out of `outline` too (a convex outline on screen): a body's velocity out of the
+    /// other body drawn where it will be (its dashed ghost), where it would read as that ghost's.
+    void KeepOutOf(std::vector<ScreenPoint> outline);
     /// Lets the label added last sit beside any of `anchors` (points along the face or edge it names, nearest
     /// first) when no place near its own anchor is free: it slides along what it names, on its preferred side
     /// or the other, before it moves farther out on a leader line.
@@ -99,6 +102,7 @@ class LabelPlacer
         std::vector<ScreenPoint> alternates; // other anchors along what it names, nearest first
         bool centred = false;                // tried first centred on its anchor
         std::vector<ScreenPoint> own;        // with OutsideBoth: its own body's outline, which it keeps out of too
+        std::vector<std::vector<ScreenPoint>> keepOut; // more outlines it stays out of
     };
     struct Line
     {

@@ -1104,6 +1104,15 @@ class Painter
             m_labels.PlaceOutside(OutlineOf(1 - s), tip, "v", TextStyle::Heading, InkOf(s),
                                  static_cast<float>(body.velocity.x), static_cast<float>(-body.velocity.y), 6.0f,
                                  LabelRank::Note);
+            // And out of the other body where its ghost shows it (at the hit, at the figure's time).
+            for (const double t : {m_study.sweepResult.status == SweepStatus::Hit ? m_study.sweepResult.toi : -1.0,
+                                   m_figure.time})
+            {
+                if (t >= 0.0 && Has(m_figure, kLayerGhost) && other.velocity != Vec2{})
+                {
+                    m_labels.KeepOutOf(ShapeOutline(m_view, other.shape, BodyTransformAt(other, t)));
+                }
+            }
         }
     }
 

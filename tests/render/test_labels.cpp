@@ -450,6 +450,48 @@ std::vector<std::string> VertexNumbersInOtherBody(const RecordingCanvas& canvas,
     return problems;
 }
 
+// A body's velocity "v" inside the other body where the figure shows it at the hit (its dashed ghost): there it
+// reads as the velocity of that ghost.
+std::vector<std::string> VelocityInOtherGhost(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
+                                              const View& view, LayerMask layers)
+{
+    std::vector<std::string> problems;
+    if (!study.sweep || study.sweepResult.status != SweepStatus::Hit || !(layers & kLayerGhost))
+    {
+        return problems;
+    }
+    RecordingCanvas measure;
+    const Body* bodies[2] = {&scene.bodies[static_cast<size_t>(study.bodyA)],
+                             &scene.bodies[static_cast<size_t>(study.bodyB)]};
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || c->text != "v")
+        {
+            continue;
+        }
+        for (int s = 0; s < 2; ++s)
+        {
+            const Body& other = *bodies[1 - s];
+            if ((c->color >> 8) != (inks[s] >> 8) || other.velocity == Vec2{})
+            {
+                continue;
+            }
+            Body ghost = other;
+            const Transform at = BodyTransformAt(other, study.sweepResult.toi);
+            ghost.position = at.p;
+            ghost.angle = std::atan2(at.q.s, at.q.c);
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            if (InsideBody(ghost, ToWorld(view, {c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y})))
+            {
+                problems.push_back(Describe(*c) + ", " + bodies[s]->name + "'s velocity, lies inside " + other.name +
+                                   " at the hit");
+            }
+        }
+    }
+    return problems;
+}
+
 // A body of the pair as drawn: its outline on screen (a circle as a polygon of many sides).
 std::vector<ScreenPoint> Outline(const Body& body, const View& view)
 {
@@ -995,6 +1037,11 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
     if (setup.figure.kind == FigureKind::Pair)
     {
         for (std::string& p : LabelsInOtherBody(canvas, scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p :
+             VelocityInOtherGhost(canvas, scene, setup.study, setup.figure.view, setup.figure.layers))
         {
             problems.push_back(std::move(p));
         }
