@@ -21,6 +21,8 @@ const char* Meaning(LegendMark mark)
 {
     switch (mark)
     {
+    case LegendMark::CandidateAxis:
+        return "long grey dashes through the pair: the candidate axes";
     case LegendMark::AxisFace:
         return "thick dark edge: the face whose normal is the axis";
     case LegendMark::VertexAxis:
@@ -37,6 +39,8 @@ const char* Meaning(LegendMark mark)
         return "pale bar: the interval swept from t = 0 to t = 1";
     case LegendMark::TimeMarks:
         return "dark triangles on the time bar: entry and exit";
+    case LegendMark::Impact:
+        return "vermillion tick on the time bar: the time of first contact";
     case LegendMark::Window:
         return "pink band on the time bar: when every axis so far overlaps";
     case LegendMark::NoWindow:
@@ -59,6 +63,12 @@ const char* Meaning(LegendMark mark)
         return "dashed outline: a body at another time, or moved by the MTV";
     case LegendMark::Separating:
         return "green dashed line: a separating line";
+    case LegendMark::Seam:
+        return "thin dashed line inside a body: a seam between two of its convex pieces";
+    case LegendMark::PieceBox:
+        return "grey dashed rectangle: a piece's box, which the broadphase compares";
+    case LegendMark::SeamPush:
+        return "grey arrow: a push through a seam, into the body's next piece (not used)";
     }
     return "";
 }
@@ -69,6 +79,10 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
     const float cy = y + 0.5f * kRow;
     switch (mark)
     {
+    case LegendMark::CandidateAxis:
+        DashedSegment(canvas, {x, cy}, {x1, cy}, kCandidateAxisColor, kCandidateAxisWidth,
+                      {x - 1.0f, y, x1 + 1.0f, y + kRow}, kCandidateAxisDash, kCandidateAxisGap);
+        break;
     case LegendMark::AxisFace:
         canvas.Segment({x, cy}, {x1, cy}, palette::kInk, 4.0f);
         break;
@@ -103,6 +117,10 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
         canvas.FillConvex(up, 3, palette::kInk);
         break;
     }
+    case LegendMark::Impact:
+        canvas.Segment({x, cy}, {x1, cy}, palette::kMuted, 2.0f);
+        canvas.Segment({x + 0.5f * kSwatch, cy - 7.0f}, {x + 0.5f * kSwatch, cy + 7.0f}, palette::kResult, 3.0f);
+        break;
     case LegendMark::Window:
     {
         canvas.Segment({x, cy + 4.0f}, {x1, cy + 4.0f}, palette::kMuted, 2.0f);
@@ -178,6 +196,23 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
     case LegendMark::Separating:
         DashedSegment(canvas, {x, cy}, {x1, cy}, palette::kGap, 2.5f, {x - 1.0f, y, x1 + 1.0f, y + kRow}, 10.0f, 6.0f);
         break;
+    case LegendMark::Seam:
+        // As the pieces figure draws a seam: a thin dashed line in the body's colour across its fill.
+        canvas.FillRect({x, y + 3.0f}, {x1, y + kRow - 3.0f}, WithAlpha(palette::kShapeA, 0.3f));
+        DashedSegment(canvas, {x, cy}, {x1, cy}, WithAlpha(palette::kShapeA, 0.8f), 1.2f,
+                      {x - 1.0f, y, x1 + 1.0f, y + kRow}, 5.0f, 4.0f);
+        break;
+    case LegendMark::PieceBox:
+    {
+        const ScreenPoint box[4] = {
+            {x + 2.0f, y + 2.0f}, {x1 - 2.0f, y + 2.0f}, {x1 - 2.0f, y + kRow - 2.0f}, {x + 2.0f, y + kRow - 2.0f}};
+        DashedOutline(canvas, std::vector<ScreenPoint>(box, box + 4), kPieceBoxColor, kPieceBoxWidth,
+                      {x - 1.0f, y, x1 + 1.0f, y + kRow});
+        break;
+    }
+    case LegendMark::SeamPush:
+        Arrow(canvas, {x, cy}, {x1, cy}, palette::kMuted, 2.0f);
+        break;
     }
 }
 
@@ -186,7 +221,7 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
 std::vector<LegendMark> AllLegendMarks()
 {
     std::vector<LegendMark> marks;
-    for (int k = static_cast<int>(LegendMark::AxisFace); k <= static_cast<int>(LegendMark::Separating); ++k)
+    for (int k = static_cast<int>(LegendMark::CandidateAxis); k <= static_cast<int>(LegendMark::SeamPush); ++k)
     {
         marks.push_back(static_cast<LegendMark>(k));
     }

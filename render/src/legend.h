@@ -5,6 +5,8 @@
 
 #include "draw_kit.h"
 
+#include <satviz/render/palette.h>
+
 #include <vector>
 
 namespace satviz
@@ -13,6 +15,7 @@ namespace satviz
 /// A colour or mark a figure can use, in the order the key lists them.
 enum class LegendMark
 {
+    CandidateAxis, ///< the long grey dashes through the pair: every candidate axis
     AxisFace,   ///< the thick dark edge whose normal is the current axis
     VertexAxis, ///< the dark dot and dashed line: an axis from a vertex (or a centre) to a circle's centre
     BestAxis,   ///< the light-blue edge of the best axis so far
@@ -21,6 +24,7 @@ enum class LegendMark
     Behind,     ///< the band of a face test: how far the other shape lies behind (or beyond) the face
     Swept,      ///< the pale bar: the interval B sweeps from t = 0 to 1 (a step; a second in a world's scene)
     TimeMarks,  ///< the dark triangles on the time bar: entry and exit
+    Impact,     ///< the vermillion tick on the time bar: the time of first contact
     Window,     ///< the pink band on the time bar: the times at which every axis so far overlaps
     NoWindow,   ///< the orange band under the time bar: the axes' windows do not meet, no common time
     Other,      ///< a grey body: not in the tested pair (a wall, a mark)
@@ -32,7 +36,24 @@ enum class LegendMark
     Mtv,        ///< the vermillion arrow: the minimum translation vector
     Dashed,     ///< a dashed outline: a body at another time, or moved out by the MTV
     Separating, ///< the green dashed line: a separating line
+    Seam,       ///< the thin dashed line inside a concave body: a seam between two of its convex pieces
+    PieceBox,   ///< the grey dashed rectangle round a piece: its box, which the broadphase compares
+    SeamPush,   ///< the grey arrow: a pair of pieces' push that points through a seam, which the seam rule drops
 };
+
+/// The colour of a piece's box in the pieces figure and its key: grey dashes, apart from the body's own seams.
+constexpr Color kPieceBoxColor = palette::kMuted;
+/// The width of a piece's box's dashes.
+constexpr float kPieceBoxWidth = 1.2f;
+
+/// How the candidate axes are drawn, in the figure and its key: long grey dashes, unlike the grid's solid lines.
+constexpr Color kCandidateAxisColor = WithAlpha(palette::kMuted, 0.6f);
+/// The width of a candidate axis's dashes.
+constexpr float kCandidateAxisWidth = 1.2f;
+/// The length of a candidate axis's dashes.
+constexpr float kCandidateAxisDash = 14.0f;
+/// The gap between a candidate axis's dashes.
+constexpr float kCandidateAxisGap = 6.0f;
 
 /// Every mark, in the key's order.
 std::vector<LegendMark> AllLegendMarks();

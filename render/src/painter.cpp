@@ -661,6 +661,10 @@ class Painter
     std::vector<LegendMark> UsedMarks() const
     {
         std::vector<LegendMark> used = m_used;
+        if (Has(m_figure, kLayerAxes))
+        {
+            used.push_back(LegendMark::CandidateAxis);
+        }
         if (Has(m_figure, kLayerShapes) && m_scene.bodies.size() > 2)
         {
             used.push_back(LegendMark::Other);
@@ -684,6 +688,12 @@ class Painter
         if (m_hasAxis && m_axis.swept && m_layout.panelTop < Height())
         {
             used.push_back(LegendMark::TimeMarks);
+            const SweepStatus status =
+                m_study.Textbook() ? m_study.textbookSweepResult.status : m_study.sweepResult.status;
+            if (m_verdict && status == SweepStatus::Hit)
+            {
+                used.push_back(LegendMark::Impact);
+            }
             if (CommonWindow() == WindowShown::Open)
             {
                 used.push_back(LegendMark::Window);
@@ -829,8 +839,11 @@ class Painter
     {
         m_canvas.BeginGroup("axes");
         const double reach = m_discRadius + kAxisGap / m_view.zoom;
+        // Long grey dashes, which the solid faint lines of the grid (as often square to the world as the axes) do
+        // not look like.
         auto line = [&](Vec2 d) {
-            m_canvas.Segment(At(m_discCenter - reach * d), At(m_discCenter + reach * d), palette::kFaint, 1.0f);
+            DashedSegment(m_canvas, At(m_discCenter - reach * d), At(m_discCenter + reach * d), kCandidateAxisColor,
+                          kCandidateAxisWidth, m_bounds, kCandidateAxisDash, kCandidateAxisGap);
         };
         for (int s = 0; s < 2; ++s)
         {

@@ -3,6 +3,7 @@
 // broadphase over the pieces' boxes, each pair of pieces whose boxes overlap tested as a convex pair, and the merged
 // verdict.
 #include "concave_views.h"
+#include "legend.h"
 
 #include <satviz/collide.h>
 #include <satviz/render/describe.h>
@@ -180,7 +181,7 @@ std::string DescribePieceStep(const Body& a, const Body& b, const PieceStudy& st
             list += (k == 0 ? "" : (k + 1 == study.tested.size() ? " and " : ", ")) + PieceName(a, study.tested[k].i) +
                     " with " + PieceName(b, study.tested[k].j);
         }
-        return header + "a broadphase over the pieces' boxes (dashed). " + a.name + " has " +
+        return header + "a broadphase over the pieces' boxes (grey, dashed). " + a.name + " has " +
                std::to_string(PartCount(a)) + (PartCount(a) == 1 ? " piece" : " pieces") + " and " + b.name + " " +
                std::to_string(PartCount(b)) + ", so there are " + std::to_string(pieces) + " pairs of pieces; " +
                (tested == 0 ? "no two boxes overlap, so no pair is tested."
@@ -205,8 +206,8 @@ std::string DescribePieceStep(const Body& a, const Body& b, const PieceStudy& st
         {
             const bool circle =
                 PartShape(a, t.i).type == ShapeType::Circle || PartShape(b, t.j).type == ShapeType::Circle;
-            text += " But that push points through a seam (dashed), where the body goes on past the piece: a ghost "
-                    "collision. " +
+            text += " But that push (grey) points through a seam (dashed, inside the body), where the body goes on "
+                    "past the piece: a ghost collision. " +
                     std::string(circle ? "The pair is left out, unless every overlapping pair is."
                                        : "The pair is tested again on the axes of the pieces' outline edges alone.");
         }
@@ -298,6 +299,7 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
         focusA = std::max(0, study.merged.pieceA);
         focusB = std::max(0, study.merged.pieceB);
     }
+    std::vector<LegendMark> used; // the marks drawn, for the key
     canvas.BeginGroup("pieces");
     for (int side = 0; side < 2; ++side)
     {
@@ -323,6 +325,7 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
                     if (seam)
                     {
                         DashedSegment(canvas, p, q, WithAlpha(color, 0.8f), 1.2f, rect, 5.0f, 4.0f);
+                        used.push_back(LegendMark::Seam);
                     }
                     else
                     {
@@ -350,10 +353,15 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
             {
                 continue;
             }
-            const ScreenPoint p = ToScreen(view, boxes[i].min);
-            const ScreenPoint q = ToScreen(view, boxes[i].max);
-            DashedOutline(canvas, {{p.x, p.y}, {q.x, p.y}, {q.x, q.y}, {p.x, q.y}},
-                          side == 0 ? palette::kShapeA : palette::kShapeBInk, 1.0f, rect);
+            // Grey, and a few pixels outside the piece, so that a box's side along a seam is not read as the seam
+            // (dashed in the body's colour) nor hidden on the outline.
+            ScreenPoint p = ToScreen(view, boxes[i].min);
+            ScreenPoint q = ToScreen(view, boxes[i].max);
+            p = {p.x - 4.0f, p.y + 4.0f};
+            q = {q.x + 4.0f, q.y - 4.0f};
+            DashedOutline(canvas, {{p.x, p.y}, {q.x, p.y}, {q.x, q.y}, {p.x, q.y}}, kPieceBoxColor, kPieceBoxWidth,
+                          rect);
+            used.push_back(LegendMark::PieceBox);
         }
     }
     // A push: at a pair's step that pair's own, at the verdict the merged one; from the middle of B's piece.
@@ -380,6 +388,7 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
                                                 : ScreenPoint{s.x + 24.0f * static_cast<float>(push->normal.x),
                                                               s.y - 24.0f * static_cast<float>(push->normal.y)};
         labels.Reserve(Arrow(canvas, s, tip, seam ? palette::kMuted : palette::kResult, 2.0f));
+        used.push_back(seam ? LegendMark::SeamPush : LegendMark::Mtv);
         labels.ReserveLine(s, tip, 2.0f);
         labels.Place(tip, (seam ? "through a seam: " : "") + FormatNumber(push->depth), TextStyle::Label,
                      seam ? palette::kMuted : palette::kResult, tip.x - s.x, tip.y - s.y, 6.0f, LabelRank::Verdict);
@@ -390,10 +399,43 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
                 const ScreenPoint c = ToScreen(view, push->contacts[k].point);
                 canvas.FillCircle(c, 4.5f, palette::kResult);
                 labels.Reserve({c.x - 5.0f, c.y - 5.0f, c.x + 5.0f, c.y + 5.0f});
+                used.push_back(LegendMark::Contact);
             }
         }
     }
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    ScreenPoint keyAt{};
+    if ((figure.layers & kLayerLegend) && !used.empty())
+    {
+        // The key in the corner of the picture that hides least of the pieces, kept free of labels.
+        const ScreenPoint size = LegendSize(canvas, used);
+        const ScreenPoint lo = ToScreen(view, low);
+        const ScreenPoint hi = ToScreen(view, high);
+        const ScreenRect pieces{std::min(lo.x, hi.x), std::min(lo.y, hi.y), std::max(lo.x, hi.x), std::max(lo.y, hi.y)};
+        const float m = 8.0f;
+        const ScreenPoint corners[4] = {{m, height - m - size.y},
+                                        {width - m - size.x, height - m - size.y},
+                                        {m, top + m},
+                                        {width - m - size.x, top + m}};
+        float least = INFINITY;
+        for (const ScreenPoint& c : corners)
+        {
+            const float w = std::max(0.0f, std::min(c.x + size.x, pieces.maxX) - std::max(c.x, pieces.minX));
+            const float h = std::max(0.0f, std::min(c.y + size.y, pieces.maxY) - std::max(c.y, pieces.minY));
+            if (w * h < least)
+            {
+                least = w * h;
+                keyAt = c;
+            }
+        }
+        labels.ReserveBand({keyAt.x, keyAt.y, keyAt.x + size.x, keyAt.y + size.y});
+    }
     labels.Flush(palette::kBackground);
+    if ((figure.layers & kLayerLegend) && !used.empty())
+    {
+        PaintLegend(surface, keyAt, used);
+    }
 }
 
 } // namespace satviz

@@ -1949,6 +1949,94 @@ TEST_CASE("A figure's key explains the vertex axis and the side planes where the
     CHECK(boxes.find("dark dot") == std::string::npos);
 }
 
+TEST_CASE("A pieces figure's key explains its seams, boxes and pushes where the step draws them", "[painter]")
+{
+    // l18_seam, step by step: the broadphase draws every piece's box; L1's push on the box is an MTV; L2's points
+    // through the seam between L1 and L2, drawn grey.
+    const Scene scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/concave/l18_seam.json");
+    FigureSetup setup = SetUpFigure(scene, {});
+    REQUIRE(setup.Ok());
+    REQUIRE(setup.figure.kind == FigureKind::Pieces);
+    REQUIRE(FigureStepCount(scene, setup) == 4);
+    struct Drawn
+    {
+        std::string key;
+        bool greyArrow = false;
+        bool boxes = false;
+    };
+    auto draw = [&](int step) {
+        const RecordingCanvas canvas = Paint(scene, setup, step, setup.figure.layers | kLayerLegend);
+        Drawn drawn;
+        for (const DrawCommand* c : canvas.InGroup("legend"))
+        {
+            drawn.key += c->kind == DrawCommand::Kind::Text ? c->text + "\n" : "";
+        }
+        for (const DrawCommand* c : canvas.InGroup("push"))
+        {
+            drawn.greyArrow = drawn.greyArrow || (c->kind == DrawCommand::Kind::FillConvex && c->color == palette::kMuted);
+        }
+        drawn.boxes = !canvas.InGroup("boxes").empty();
+        return drawn;
+    };
+    for (int step = 0; step < 4; ++step)
+    {
+        const Drawn drawn = draw(step);
+        INFO("step " << step + 1 << "\n" << drawn.key);
+        CHECK((drawn.key.find("grey arrow: a push through a seam") != std::string::npos) == drawn.greyArrow);
+        CHECK((drawn.key.find("grey dashed rectangle: a piece's box") != std::string::npos) == drawn.boxes);
+        CHECK(drawn.key.find("a seam between two of its convex pieces") != std::string::npos);
+    }
+    CHECK(draw(2).greyArrow);
+    CHECK(!draw(1).greyArrow);
+    CHECK(draw(1).key.find("minimum translation vector") != std::string::npos);
+    CHECK(draw(0).boxes);
+}
+
+TEST_CASE("A pieces figure draws the pieces' boxes apart from the seams: grey, outside the pieces", "[painter]")
+{
+    // l18_notch's broadphase: L's two pieces meet at a seam, and each piece's box runs along it.
+    const Scene scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/concave/l18_notch.json");
+    FigureSetup setup = SetUpFigure(scene, {});
+    REQUIRE(setup.Ok());
+    const RecordingCanvas canvas = Paint(scene, setup, 0, setup.figure.layers);
+    std::vector<Color> seams;
+    for (const DrawCommand* c : canvas.InGroup("pieces"))
+    {
+        if (c->kind == DrawCommand::Kind::Segment && c->thickness < 2.0f)
+        {
+            seams.push_back(c->color);
+        }
+    }
+    REQUIRE(!seams.empty());
+    const std::vector<const DrawCommand*> boxes = canvas.InGroup("boxes");
+    REQUIRE(!boxes.empty());
+    // The pieces' outline in pixels: every box's dash lies outside the box of the whole L and the box, by a few.
+    float minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
+    for (const DrawCommand* c : canvas.InGroup("pieces"))
+    {
+        for (const ScreenPoint& p : c->points)
+        {
+            minX = std::min(minX, p.x);
+            maxX = std::max(maxX, p.x);
+            minY = std::min(minY, p.y);
+            maxY = std::max(maxY, p.y);
+        }
+    }
+    bool outside = false;
+    for (const DrawCommand* c : boxes)
+    {
+        for (const Color seam : seams)
+        {
+            CHECK((c->color | 0xFFu) != (seam | 0xFFu));
+        }
+        for (const ScreenPoint& p : c->points)
+        {
+            outside = outside || p.x < minX - 2.0f || p.y > maxY + 2.0f;
+        }
+    }
+    CHECK(outside);
+}
+
 TEST_CASE("A swept figure's key explains the time bar's window band, or its no-common-time band", "[painter]")
 {
     // fly_by's axes never overlap at one time: its time bar says "no common time" on an orange band; the ball of
@@ -1976,5 +2064,13 @@ TEST_CASE("A swept figure's key explains the time bar's window band, or its no-c
         CHECK((bar.find("no common time") != std::string::npos) == !open);
         CHECK((key.find("orange band on the time bar") != std::string::npos) == !open);
         CHECK((key.find("pink band on the time bar") != std::string::npos) == open);
+        // The hit's time of first contact, a vermillion tick on the bar, where the verdict is a hit.
+        bool tick = false;
+        for (const DrawCommand* c : canvas.InGroup("timebar"))
+        {
+            tick = tick || (c->kind == DrawCommand::Kind::Segment && c->color == palette::kResult);
+        }
+        CHECK(tick == open);
+        CHECK((key.find("vermillion tick on the time bar") != std::string::npos) == tick);
     }
 }
