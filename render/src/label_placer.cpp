@@ -390,6 +390,20 @@ bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
     return true;
 }
 
+bool LabelPlacer::LeaderCrossesLine(ScreenPoint anchor, const ScreenRect& rect) const
+{
+    // An edge's name led across a drawn line (the separating line beside the face) lands on the far side of it,
+    // among the other body's labels: the face is named just inside its own body instead.
+    const LeaderLine leader = Leader(anchor, rect);
+    if (!leader.drawn)
+    {
+        return false;
+    }
+    return std::any_of(m_lines.begin(), m_lines.end(), [&](const Line& line) {
+        return !line.faint && line.thickness >= 2.0f && Cross(leader.from, leader.to, line.a, line.b);
+    });
+}
+
 bool LabelPlacer::Free(const ScreenRect& rect, float spacing, LabelRank rank, bool everyLine) const
 {
     const ScreenRect foot = Footprint(rect);
@@ -553,7 +567,8 @@ void LabelPlacer::Flush(Color halo)
                 if (Inside(rect) && Free(rect, 0.0f, label->rank) &&
                     Away(*label, rect, label->anchor) &&
                     OnItsSide(label->onSide, label->anchor, label->dx, label->dy, rect, true) &&
-                    (!strict || LeaderClear(label->anchor, rect)))
+                    (!strict || LeaderClear(label->anchor, rect)) &&
+                    !(label->onSide && LeaderCrossesLine(label->anchor, rect)))
                 {
                     chosen = rect;
                     found = true;

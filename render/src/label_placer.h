@@ -118,6 +118,7 @@ class LabelPlacer
     };
     static LeaderLine Leader(ScreenPoint anchor, const ScreenRect& rect);
     bool LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const;
+    bool LeaderCrossesLine(ScreenPoint anchor, const ScreenRect& rect) const;
     bool Free(const ScreenRect& rect, float spacing, LabelRank rank, bool everyLine = false) const;
     bool Inside(const ScreenRect& rect) const;
     Canvas& m_canvas;

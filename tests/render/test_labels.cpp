@@ -492,6 +492,38 @@ std::vector<std::string> VelocityInOtherGhost(const RecordingCanvas& canvas, con
     return problems;
 }
 
+// Leader lines across the separating line: the label lands on the other body's side of the line that parts the
+// two, among that body's labels (an edge's name led over the line beside its face).
+std::vector<std::string> LeadersAcrossSeparatingLine(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    const std::vector<const DrawCommand*> separating = canvas.InGroup("exit");
+    for (const DrawCommand* leader : canvas.InGroup("labels"))
+    {
+        if (leader->kind != DrawCommand::Kind::Segment)
+        {
+            continue;
+        }
+        for (const DrawCommand* d : separating)
+        {
+            const ScreenPoint a = leader->points[0];
+            const ScreenPoint b = leader->points[1];
+            const ScreenPoint u = d->kind == DrawCommand::Kind::Segment ? d->points[0] : ScreenPoint{};
+            const ScreenPoint v = d->kind == DrawCommand::Kind::Segment ? d->points[1] : ScreenPoint{};
+            auto side = [](ScreenPoint p, ScreenPoint q, ScreenPoint r) {
+                return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
+            };
+            if (d->kind == DrawCommand::Kind::Segment && side(a, b, u) * side(a, b, v) < 0.0f &&
+                side(u, v, a) * side(u, v, b) < 0.0f)
+            {
+                problems.push_back(Describe(*leader) + ", a leader line, crosses the separating line");
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
 // A body of the pair as drawn: its outline on screen (a circle as a polygon of many sides).
 std::vector<ScreenPoint> Outline(const Body& body, const View& view)
 {
@@ -749,11 +781,20 @@ Box SceneInSight(const RecordingCanvas& canvas, const View& view)
 std::vector<std::string> EdgeNamesBehind(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
                                          const View& view)
 {
+    constexpr float kSeparatingRoom = 16.0f; // a label's width and its room from the line
     const Box sight = SceneInSight(canvas, view);
     std::vector<std::string> problems;
     RecordingCanvas measure;
     const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
     const int bodies[2] = {study.bodyA, study.bodyB};
+    std::vector<const DrawCommand*> separating;
+    for (const DrawCommand* d : canvas.InGroup("exit"))
+    {
+        if (d->kind == DrawCommand::Kind::Segment)
+        {
+            separating.push_back(d);
+        }
+    }
     for (const DrawCommand* c : canvas.InGroup("labels"))
     {
         if (c->kind != DrawCommand::Kind::Text || c->text.size() < 2 || c->text[0] != 'e' ||
@@ -780,10 +821,23 @@ std::vector<std::string> EdgeNamesBehind(const RecordingCanvas& canvas, const Sc
             const double behind = Dot(poly.Normal(edge), local - poly.Vertices()[edge]);
             const Vec2 mirror = TransformPoint(body.Xf(), local - 2.0 * behind * poly.Normal(edge));
             const ScreenPoint mirrorOnScreen = ToScreen(view, mirror);
-            const bool noRoomOutside =
-                InsideBody(scene.bodies[static_cast<size_t>(bodies[1 - s])], mirror) ||
+            // Or the separating line runs so close outside the face that a name there would sit on it or
+            // beyond it, among the other body's labels.
+            const bool lineOutside = std::any_of(separating.begin(), separating.end(), [&](const DrawCommand* d) {
+                return SegmentCovers(d->points[0], d->points[1], 2.0f * kSeparatingRoom,
+                                     {mirrorOnScreen.x, mirrorOnScreen.y, mirrorOnScreen.x, mirrorOnScreen.y});
+            });
+            // A body outside the pair flush against the face (a wall standing on a floor's end) leaves no room
+            // either: a name there would read as that body's.
+            bool otherBody = false;
+            for (size_t b = 0; b < scene.bodies.size(); ++b)
+            {
+                otherBody = otherBody || (static_cast<int>(b) != bodies[s] && !scene.bodies[b].IsConcave() &&
+                                          InsideBody(scene.bodies[b], mirror));
+            }
+            const bool noRoomOutside = otherBody ||
                 mirrorOnScreen.x < sight.minX || mirrorOnScreen.x > sight.maxX || mirrorOnScreen.y < sight.minY ||
-                mirrorOnScreen.y > sight.maxY;
+                mirrorOnScreen.y > sight.maxY || lineOutside;
             if (behind <= 0.0 && !(InsideBody(body, middle) && noRoomOutside))
             {
                 problems.push_back(Describe(*c) + " lies behind edge " + std::to_string(edge) + " of " + body.name);
@@ -1042,6 +1096,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         }
         for (std::string& p :
              VelocityInOtherGhost(canvas, scene, setup.study, setup.figure.view, setup.figure.layers))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : LeadersAcrossSeparatingLine(canvas))
         {
             problems.push_back(std::move(p));
         }
