@@ -1077,9 +1077,8 @@ struct Drawn
 };
 
 // Every check of one drawn figure: its texts against each other, the marks and the image, and, for a pair, its
-// labels against the pair's bodies and (with namedFaces) the faces its sentences name.
-std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Scene& scene, const FigureSetup& setup,
-                                        bool namedFaces = true)
+// labels against the pair's bodies and the faces its sentences name.
+std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Scene& scene, const FigureSetup& setup)
 {
     std::vector<std::string> problems = HiddenTexts(canvas, setup.figure.view.width, setup.figure.view.height);
     for (std::string& p : LabelsOnLines(canvas))
@@ -1111,8 +1110,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         {
             problems.push_back(std::move(p));
         }
-        for (std::string& p : namedFaces ? EdgeNamesBehind(canvas, scene, setup.study, setup.figure.view)
-                                         : std::vector<std::string>{})
+        for (std::string& p : EdgeNamesBehind(canvas, scene, setup.study, setup.figure.view))
         {
             problems.push_back(std::move(p));
         }
@@ -1120,9 +1118,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         {
             problems.push_back(std::move(p));
         }
-        for (std::string& p : namedFaces ? NamedFacesUnnamed(canvas, scene, setup.study, setup.figure.layers,
-                                                             setup.figure.view)
-                                         : std::vector<std::string>{})
+        for (std::string& p : NamedFacesUnnamed(canvas, scene, setup.study, setup.figure.layers, setup.figure.view))
         {
             problems.push_back(std::move(p));
         }
@@ -1437,8 +1433,8 @@ TEST_CASE("In the face view, every step of every pair of the course keeps its la
 {
     // The app shows any scene in the face view, at any step, on its 800 x 600 canvas or at the scene's own size:
     // every pair scene of the course drawn so keeps its labels off each other, the arrow heads, the marks, the
-    // bodies' outlines and the image's edge, as the committed figures do. Whether each face a sentence names is
-    // named, and on its outer side, is checked for the course's figures by the tests above.
+    // bodies' outlines and the image's edge, and names each face a sentence names, on its outer side, as the
+    // committed figures do.
     int drawn = 0;
     int failing = 0;
     std::vector<std::filesystem::path> files;
@@ -1482,7 +1478,7 @@ TEST_CASE("In the face view, every step of every pair of the course keeps its la
                 setup.figure.step = k;
                 RecordingCanvas canvas;
                 PaintFigure(canvas, loaded.scene, setup.study, setup.figure);
-                const std::vector<std::string> problems = FigureProblems(canvas, loaded.scene, setup, false);
+                const std::vector<std::string> problems = FigureProblems(canvas, loaded.scene, setup);
                 INFO(file.filename().string() << " face step " << k + 1 << " at " << setup.figure.view.width << " x "
                                               << setup.figure.view.height);
                 for (const std::string& problem : problems)
