@@ -263,6 +263,11 @@ void LabelPlacer::ReserveFaintLine(ScreenPoint a, ScreenPoint b, float thickness
     m_lines.push_back({a, b, thickness, LabelRank::Vertex, true});
 }
 
+void LabelPlacer::ReservePartingLine(ScreenPoint a, ScreenPoint b, float thickness)
+{
+    m_lines.push_back({a, b, thickness, LabelRank::Vertex, false, true});
+}
+
 bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle style, Color color, float dx, float dy,
                         float distance, LabelRank rank)
 {
@@ -392,15 +397,15 @@ bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
 
 bool LabelPlacer::LeaderCrossesLine(ScreenPoint anchor, const ScreenRect& rect) const
 {
-    // An edge's name led across a drawn line (the separating line beside the face) lands on the far side of it,
-    // among the other body's labels: the face is named just inside its own body instead.
+    // An edge's name led across the separating line beside its face lands on the far side of it, among the other
+    // body's labels: the face is named just inside its own body instead.
     const LeaderLine leader = Leader(anchor, rect);
     if (!leader.drawn)
     {
         return false;
     }
     return std::any_of(m_lines.begin(), m_lines.end(), [&](const Line& line) {
-        return !line.faint && line.thickness >= 2.0f && Cross(leader.from, leader.to, line.a, line.b);
+        return line.parting && Cross(leader.from, leader.to, line.a, line.b);
     });
 }
 

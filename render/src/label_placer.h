@@ -53,6 +53,9 @@ class LabelPlacer
     /// edge name keeps off it, where it would read as the number of the line's end; a larger label only where the
     /// room allows, as the line shows through its halo's gaps and is not read as part of it.
     void ReserveFaintLine(ScreenPoint a, ScreenPoint b, float thickness);
+    /// Marks the separating line, which parts the two bodies: as any line no label covers it, and no edge's name is
+    /// led across it, where it would land on the other body's side.
+    void ReservePartingLine(ScreenPoint a, ScreenPoint b, float thickness);
     /// Marks a body outside the tested pair (a convex outline on screen): no label may lie on it or in it, where it
     /// would read as that body's.
     void ReserveShape(const std::vector<ScreenPoint>& outline);
@@ -110,6 +113,7 @@ class LabelPlacer
         float thickness;
         LabelRank from = LabelRank::Vertex; // the lowest rank of label that keeps off the line
         bool faint = false;                 // labels above LabelRank::Named keep off it only where the room allows
+        bool parting = false;               // the separating line
     };
     struct LeaderLine
     {

@@ -1720,7 +1720,7 @@ class Painter
         {
             // The gap's size or a note on the line would hide it and read as naming it; a vertex number or an edge
             // name may still sit on it, rather than be left out where the line runs close beside its edge.
-            m_labels.ReserveLine(a, b, 2.5f, LabelRank::Note);
+            m_labels.ReservePartingLine(a, b, 2.5f);
             m_labels.Place(a.y < b.y ? a : b, "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f, 6.0f,
                           LabelRank::Verdict);
         }
