@@ -374,6 +374,14 @@ bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
     {
         return true;
     }
+    // Two leader lines that cross read as leading each to the other's label.
+    for (const Line& other : m_lines)
+    {
+        if (other.leader && Cross(line.from, line.to, other.a, other.b))
+        {
+            return false;
+        }
+    }
     // Under a label's halo the line would vanish and seem to lead to that label; under a band, from nowhere. The
     // marks at the anchor (a contact point, two close ones that share a label, an arrow head) are where it starts.
     const ScreenRect start{anchor.x - 8.0f, anchor.y - 8.0f, anchor.x + 8.0f, anchor.y + 8.0f};
@@ -629,7 +637,7 @@ void LabelPlacer::Flush(Color halo)
             const LeaderLine line = Leader(from, chosen);
             if (line.drawn)
             {
-                m_lines.push_back({line.from, line.to, 1.0f, LabelRank::Vertex});
+                m_lines.push_back({line.from, line.to, 1.0f, LabelRank::Vertex, false, false, true});
             }
         }
     }

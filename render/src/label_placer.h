@@ -114,6 +114,7 @@ class LabelPlacer
         LabelRank from = LabelRank::Vertex; // the lowest rank of label that keeps off the line
         bool faint = false;                 // labels above LabelRank::Named keep off it only where the room allows
         bool parting = false;               // the separating line
+        bool leader = false;                // a leader line drawn for a label placed before
     };
     struct LeaderLine
     {

@@ -334,6 +334,33 @@ std::vector<std::string> HiddenTexts(const RecordingCanvas& canvas, int width, i
             }
         }
     }
+    // Two leader lines that cross read as leading each to the other's label.
+    std::vector<const DrawCommand*> leaders;
+    for (const DrawCommand& c : commands)
+    {
+        if (c.kind == DrawCommand::Kind::Segment && c.group == "labels")
+        {
+            leaders.push_back(&c);
+        }
+    }
+    for (size_t i = 0; i < leaders.size(); ++i)
+    {
+        for (size_t j = i + 1; j < leaders.size(); ++j)
+        {
+            const ScreenPoint a = leaders[i]->points[0], b = leaders[i]->points[1];
+            const ScreenPoint u = leaders[j]->points[0], v = leaders[j]->points[1];
+            auto side = [](ScreenPoint p, ScreenPoint q, ScreenPoint r) {
+                return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
+            };
+            if (side(a, b, u) * side(a, b, v) < 0.0f && side(u, v, a) * side(u, v, b) < 0.0f)
+            {
+                problems.push_back("the leader lines at (" + std::to_string(static_cast<int>(a.x)) + ", " +
+                                   std::to_string(static_cast<int>(a.y)) + ") and (" +
+                                   std::to_string(static_cast<int>(u.x)) + ", " + std::to_string(static_cast<int>(u.y)) +
+                                   ") cross");
+            }
+        }
+    }
     // An arrow head stays in sight: no opaque line or fill of another colour drawn over it (an arrow over an arrow).
     for (size_t i = 0; i < commands.size(); ++i)
     {
