@@ -15,12 +15,43 @@
 #include "lanes.h"
 #include "lanes8.h"
 
+#include <satviz/polygon.h>
+
 #include <limits>
 #include <type_traits>
 #include <utility>
 
 namespace satviz::detail
 {
+
+/// Maps a polygon's vertices by a transform into arrays x and y four at a time, in lanes (kWide: with the wide
+/// vectors, whose stores the wide scans then read whole), with the operations of TransformPoint, so the same bits as
+/// MapOneByOne (incident_polygon.h). The last block may read up to three points past the vertices: a polygon's
+/// block holds vertex 0 again and the normals there.
+template <bool kWide>
+struct MapInLanes
+{
+    /// Writes the vertices of `p` mapped by `xf` to x[0 .. count) and y[0 .. count), and up to 3 entries beyond.
+    template <typename S>
+    void operator()(const PolygonT<S>& p, const TransformT<S>& xf, S* x, S* y) const
+    {
+        using L = Lanes<S, kWide && std::is_same_v<S, double>>;
+        const int count = p.Count();
+        const L c = L::Fill(xf.q.c);
+        const L s = L::Fill(xf.q.s);
+        const L px = L::Fill(xf.p.x);
+        const L py = L::Fill(xf.p.y);
+        const Vec2T<S>* vertices = count <= PolygonT<S>::kInlineVertices ? p.InlineBlock() : p.Vertices().data;
+        for (int j = 0; j < count; j += 4)
+        {
+            L vx;
+            L vy;
+            L::LoadPoints(&vertices[j].x, vx, vy);
+            ((c * vx - s * vy) + px).Store(x + j);
+            ((s * vx + c * vy) + py).Store(y + j);
+        }
+    }
+};
 
 /// Vertex j0 of a scanned inc, its x (X<0>) and y (Y<0>) in every lane of L, read from inc's arrays by itself (a
 /// broadcast load): the form for two blocks of faces taken together, whose normals fill the registers.

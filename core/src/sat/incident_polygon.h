@@ -5,14 +5,12 @@
 // is only given its transform, and its support points are walked to.
 #pragma once
 
-#include "lanes.h"
 #include "support.h"
 #include "tracer.h"
 
 #include <satviz/polygon.h>
 
 #include <cstdint>
-#include <type_traits>
 
 namespace satviz::detail
 {
@@ -20,6 +18,23 @@ namespace satviz::detail
 /// Polygons with at most this many vertices are scanned whole for each face instead of walked: for small
 /// counts a branch-free scan of a few projections beats the data-dependent branches of the walk.
 constexpr int kScanLimit = AlgorithmChoices::kScanLimit;
+
+/// Maps a polygon's vertices by a transform into arrays x and y, one vertex at a time, as TransformPoint does.
+struct MapOneByOne
+{
+    /// Writes the vertices of `p` mapped by `xf` to x[0 .. count) and y[0 .. count).
+    template <typename S>
+    void operator()(const PolygonT<S>& p, const TransformT<S>& xf, S* x, S* y) const
+    {
+        const Vec2T<S>* vertices = p.Vertices().data;
+        for (int j = 0; j < p.Count(); ++j)
+        {
+            const Vec2T<S> w = TransformPoint(xf, vertices[j]);
+            x[j] = w.x;
+            y[j] = w.y;
+        }
+    }
+};
 
 /// The incident polygon of a face query: the polygon, its transform into the reference frame, and, when it is
 /// small enough to scan, its vertices mapped into that frame as a structure of arrays on the stack, followed by
@@ -38,12 +53,14 @@ struct IncidentPolygon
     alignas(32) S y[kCapacity];
 
     /// `p` with transform `xfInc` against a reference polygon with transform `xfRef`. `scanLimit` (at most
-    /// kScanLimit) is the largest vertex count that is scanned. kWide: mapped with the wide vectors (the same bits),
-    /// whose stores the wide scans then read whole. The relative transform is computed into the member itself: built
-    /// elsewhere and copied in, its scalar stores were read back as pairs, which stalled store forwarding.
-    template <bool kWide = false>
+    /// kScanLimit) is the largest vertex count that is scanned. `map` maps the vertices of a scanned polygon into the
+    /// reference frame: one at a time as the textbook does (MapOneByOne), or four at a time in lanes with the same
+    /// bits (MapInLanes, face_kernel.h), which the scans of the face loops then read whole. The relative transform
+    /// is computed into the member itself: built elsewhere and copied in, its scalar stores were read back as pairs,
+    /// which stalled store forwarding.
+    template <typename Map = MapOneByOne>
     IncidentPolygon(const PolygonT<S>& p, const TransformT<S>& xfRef, const TransformT<S>& xfInc,
-                    int scanLimit = kScanLimit, std::bool_constant<kWide> = {})
+                    int scanLimit = kScanLimit, Map map = {})
         : polygon(p), xf(InvMulTransforms(xfRef, xfInc)), scan(p.Count() > 0 && p.Count() <= scanLimit),
           centroid(TransformPoint(xf, p.Centroid()))
     {
@@ -53,31 +70,7 @@ struct IncidentPolygon
         }
         const int count = polygon.Count();
         padded = (count + 3) & ~3;
-        // Four vertices at a time, with the operations of TransformPoint, so the same bits. The last block may read
-        // up to three points past the vertices: the polygon's block holds vertex 0 again and the normals there.
-        using L = Lanes<S, kWide && std::is_same_v<S, double>>;
-        const L c = L::Fill(xf.q.c);
-        const L s = L::Fill(xf.q.s);
-        const L px = L::Fill(xf.p.x);
-        const L py = L::Fill(xf.p.y);
-        const auto map = [&](const Vec2T<S>* vertices) {
-            for (int j = 0; j < count; j += 4)
-            {
-                L vx;
-                L vy;
-                L::LoadPoints(&vertices[j].x, vx, vy);
-                ((c * vx - s * vy) + px).Store(x + j);
-                ((s * vx + c * vy) + py).Store(y + j);
-            }
-        };
-        if (count <= PolygonT<S>::kInlineVertices)
-        {
-            map(polygon.InlineBlock());
-        }
-        else
-        {
-            map(polygon.Vertices().data);
-        }
+        map(polygon, xf, x, y);
         // Vertex 0 again in the four entries after the last vertex (at most kScanLimit + 3 < kCapacity): those up to
         // `padded`, which the scans read, and one more. A fixed count, so no loop and no branch.
         for (int k = 0; k < 4; ++k)

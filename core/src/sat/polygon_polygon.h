@@ -67,13 +67,13 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
         }
     }
 #endif
-    const IncidentPolygon<S> incB(b, xfA, xfB, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
+    const IncidentPolygon<S> incB(b, xfA, xfB, Tracer::kScanLimit, MapInLanes<Tracer::kWide>{});
     if (incB.scan && a.Count() <= 8 && b.Count() <= 8)
     {
         bool separated = SmallFacesSeparate(a, incB, 0, false, tracer);
         if (!separated || !Tracer::kEarlyExit)
         {
-            const IncidentPolygon<S> incA(a, xfB, xfA, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
+            const IncidentPolygon<S> incA(a, xfB, xfA, Tracer::kScanLimit, MapInLanes<Tracer::kWide>{});
             separated = SmallFacesSeparate(b, incA, 1, true, tracer) || separated;
         }
         if constexpr (Tracer::kEnabled)
@@ -117,7 +117,7 @@ bool OverlapPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, const Polyg
     }
     if (overlap || !Tracer::kEarlyExit)
     {
-        const IncidentPolygon<S> incA(a, xfB, xfA, Tracer::kScanLimit, std::bool_constant<Tracer::kWide>{});
+        const IncidentPolygon<S> incA(a, xfB, xfA, Tracer::kScanLimit, MapInLanes<Tracer::kWide>{});
         overlap = !QueryFaces<false>(b, incA, 1, true, S(0), tracer).separated && overlap;
     }
     if constexpr (Tracer::kEnabled)
@@ -160,7 +160,7 @@ bool OverlapPolygonsCached(const PolygonT<S>& a, const TransformT<S>& xfA, const
         }
     }
     NullTracer tracer;
-    const IncidentPolygon<S> incB(b, xfA, xfB);
+    const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, MapInLanes<false>{});
     FaceQuery<S> query = QueryFaces<false>(a, incB, 0, false, S(0), tracer);
     if (query.separated)
     {
@@ -168,7 +168,7 @@ bool OverlapPolygonsCached(const PolygonT<S>& a, const TransformT<S>& xfA, const
         cachedSupport = query.support;
         return false;
     }
-    const IncidentPolygon<S> incA(a, xfB, xfA);
+    const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, MapInLanes<false>{});
     query = QueryFaces<false>(b, incA, 1, true, S(0), tracer);
     if (query.separated)
     {
@@ -205,7 +205,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
         }
     }
 #endif
-    const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, std::bool_constant<Tracer::kWide>{});
+    const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, MapInLanes<Tracer::kWide>{});
     const FaceQuery<S> queryA = QueryFaces<true>(a, incB, 0, false, -std::numeric_limits<S>::infinity(), tracer);
     if (queryA.separated)
     {
@@ -224,7 +224,7 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
         }
         return manifold;
     }
-    const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, std::bool_constant<Tracer::kWide>{});
+    const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, MapInLanes<Tracer::kWide>{});
     const FaceQuery<S> queryB = QueryFaces<true>(b, incA, 1, true, queryA.separation, tracer);
     if (queryB.separated)
     {

@@ -46,7 +46,7 @@ ManifoldT<S> SpeculativePolygons(const PolygonT<S>& a, const TransformT<S>& xfA,
                                  const TransformT<S>& xfB, S margin)
 {
     EveryFaceTracer tracer;
-    const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, std::false_type{});
+    const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, MapInLanes<false>{});
     const FaceQuery<S> queryA = QueryFaces<true>(a, incB, 0, false, -std::numeric_limits<S>::infinity(), tracer);
     ManifoldT<S> manifold;
     if (queryA.separation > margin)
@@ -56,7 +56,7 @@ ManifoldT<S> SpeculativePolygons(const PolygonT<S>& a, const TransformT<S>& xfA,
         manifold.axis = {AxisKind::FaceNormal, 0, queryA.face};
         return manifold;
     }
-    const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, std::false_type{});
+    const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, MapInLanes<false>{});
     const FaceQuery<S> queryB = QueryFaces<true>(b, incA, 1, true, queryA.separation, tracer);
     if (queryB.separation > margin)
     {
@@ -100,7 +100,7 @@ ManifoldT<S> ReclippedWithin(const PolygonT<S>& a, const TransformT<S>& xfA, con
     const PolygonT<S>& ref = SelectRef(flip, b, a);
     const TransformT<S>& xfRef = SelectRef(flip, xfB, xfA);
     const IncidentPolygon<S> inc(SelectRef(flip, a, b), xfRef, SelectRef(flip, xfA, xfB), kScanLimit,
-                                 std::false_type{});
+                                 MapInLanes<false>{});
     const ClipResult<S> clip = ClipIncidentEdge(ref, m.axis.index, inc, -1, margin);
     m.contacts[0] = WorldContact(clip, 0, xfRef);
     m.contacts[1] = WorldContact(clip, 1, xfRef);

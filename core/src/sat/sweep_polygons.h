@@ -140,7 +140,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
         }
     }
 #endif
-    const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, std::bool_constant<Tracer::kWide>{});
+    const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, MapInLanes<Tracer::kWide>{});
     SweepLanes<Lanes<S, Tracer::kWide && std::is_same_v<S, double>>, S> lanes;
     SweepState<S> view; // the recorder's view: the latest entry and earliest exit so far, and why the test ended
     const auto finish = [&]() {
@@ -166,7 +166,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
         return result;
     }
     // A's faces did not rule a hit out: now B's, with A mapped into B's frame.
-    const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, std::bool_constant<Tracer::kWide>{});
+    const IncidentPolygon<S> incA(a, xfB, xfA, kScanLimit, MapInLanes<Tracer::kWide>{});
     bool going = SweepFaces(b, incA, 1, -velocityInB, lanes, view, tracer, known, walkB, keptB);
     // Bounded face loops: the exits their first pass left, now that the latest entry is known.
     going = going && !(walkA.walked && !SweepBoundedExits(a, incB, 0, velocityInA, lanes, walkA, view, tracer));
