@@ -281,7 +281,7 @@ bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
     {
         return false;
     }
-    m_labels.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}, false, {}, {}});
+    m_labels.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}, false, {}, {}, {}});
     return true;
 }
 
@@ -330,6 +330,14 @@ void LabelPlacer::KeepOutOf(std::vector<ScreenPoint> outline)
     if (!m_labels.empty())
     {
         m_labels.back().keepOut.push_back(std::move(outline));
+    }
+}
+
+void LabelPlacer::Within(std::vector<ScreenPoint> own)
+{
+    if (!m_labels.empty())
+    {
+        m_labels.back().home = std::move(own);
     }
 }
 
@@ -590,9 +598,20 @@ void LabelPlacer::Flush(Color halo)
             }
         }
         // A face a sentence names with no room on its outside (flush against the other body, or facing the image's
-        // border) is named just inside its own body, beside it, where it still reads as that face's.
-        for (int ring = 0; ring < 3 && !found && label->rank == LabelRank::Named && label->onSide; ++ring)
+        // border) is named just inside its own body, beside it, where it still reads as that face's; with its body's
+        // outline known, a little deeper in too (beside the body's name, the arrow or the ghost over it), wholly
+        // inside that outline, where it cannot be read as a neighbouring face's.
+        const auto Home = [&](const ScreenRect& rect) {
+            return label->home.size() >= 3 && InsideConvex(label->home, {rect.minX, rect.minY}) &&
+                   InsideConvex(label->home, {rect.maxX, rect.minY}) && InsideConvex(label->home, {rect.minX, rect.maxY}) &&
+                   InsideConvex(label->home, {rect.maxX, rect.maxY});
+        };
+        for (int ring = 0; ring < 7 && !found && label->rank == LabelRank::Named && label->onSide; ++ring)
         {
+            if (ring >= 3 && label->home.size() < 3)
+            {
+                break;
+            }
             for (size_t k = 0; k <= label->alternates.size() && !found; ++k)
             {
                 const ScreenPoint at = k == 0 ? label->anchor : label->alternates[k - 1];
@@ -601,12 +620,34 @@ void LabelPlacer::Flush(Color halo)
                     const ScreenRect rect = Around(at, size, start + turn * 0.25 * kPi,
                                                    label->distance + static_cast<float>(ring) * 9.0f);
                     if (!found && Inside(rect) && Free(rect, 0.0f, label->rank) &&
-                        Away(*label, rect, at))
+                        Away(*label, rect, at) && (ring < 3 || Home(rect)))
                     {
                         chosen = rect;
                         from = at;
                         found = true;
                     }
+                }
+            }
+        }
+        // With no room inside either (a small body, its arrow and ghost over it), the face is named beyond the other
+        // body it rests on, on a leader line across that body: the line shows which face the name belongs to, and
+        // the name itself still keeps out of that body, off every label and clear of the separating line.
+        for (int ring = 0; ring < 9 && !found && label->rank == LabelRank::Named && label->onSide; ++ring)
+        {
+            const float reach = std::max(label->distance, 0.0f) + 28.0f + 16.0f * static_cast<float>(ring);
+            for (int i = 0; i < 16 && !found; ++i)
+            {
+                const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
+                const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
+                if (Inside(rect) && Free(rect, 0.0f, label->rank) && ClearOf(label->avoid, rect) &&
+                    std::all_of(label->keepOut.begin(), label->keepOut.end(),
+                                [&](const std::vector<ScreenPoint>& outline) { return ClearOf(outline, rect); }) &&
+                    OnItsSide(true, label->anchor, label->dx, label->dy, rect, true) &&
+                    LeaderClear(label->anchor, rect) && !LeaderCrossesLine(label->anchor, rect))
+                {
+                    chosen = rect;
+                    found = true;
+                    leader = true;
                 }
             }
         }

@@ -80,6 +80,9 @@ class LabelPlacer
     /// first) when no place near its own anchor is free: it slides along what it names, on its preferred side
     /// or the other, before it moves farther out on a leader line.
     void AlsoAt(std::vector<ScreenPoint> anchors);
+    /// Tells the label added last (a face's name) the outline of its own body (on screen): with no room outside the
+    /// face, it may sit farther inside that body, wholly within it, where it still reads as that face's.
+    void Within(std::vector<ScreenPoint> own);
     /// Keeps the label added last on the side its preferred direction points to, beyond the line through its anchor
     /// square to that direction: an edge's name outside its edge, where it names that edge and not the one opposite.
     void KeepOnSide();
@@ -106,6 +109,7 @@ class LabelPlacer
         bool centred = false;                // tried first centred on its anchor
         std::vector<ScreenPoint> own;        // with OutsideBoth: its own body's outline, which it keeps out of too
         std::vector<std::vector<ScreenPoint>> keepOut; // more outlines it stays out of
+        std::vector<ScreenPoint> home;                 // with Within: its own body, which it may sit deep in
     };
     struct Line
     {

@@ -2256,6 +2256,7 @@ class Painter
                         // own body, anywhere along it.
                         if (isNamed)
                         {
+                            m_labels.Within(own);
                             std::vector<ScreenPoint> along = AlongFace(from, to, mid, other, 12.0f, 8.0f, 12.0f);
                             m_labels.AlsoAt(along.empty() ? AlongFace(from, to, mid, {}, 0.0f, 8.0f, 12.0f) : along);
                         }

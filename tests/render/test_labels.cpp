@@ -15,6 +15,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <set>
 
 using namespace satviz;
 
@@ -1050,6 +1051,42 @@ std::vector<std::string> ReferenceFaceFar(const RecordingCanvas& canvas)
     return problems;
 }
 
+// Whether the sentences name `number` in a list of a body's edges ("box's edges 0 and 2", "B's edges 0, 1 and 3").
+bool InEdgeList(const std::string& sentences, const std::string& name, const std::string& number)
+{
+    const std::string head = name + "'s edges ";
+    for (size_t at = sentences.find(head); at != std::string::npos; at = sentences.find(head, at + 1))
+    {
+        size_t k = at + head.size();
+        while (k < sentences.size() && std::isdigit(static_cast<unsigned char>(sentences[k])))
+        {
+            size_t end = k;
+            while (end < sentences.size() && std::isdigit(static_cast<unsigned char>(sentences[end])))
+            {
+                ++end;
+            }
+            if (sentences.compare(k, end - k, number) == 0 && end - k == number.size())
+            {
+                return true;
+            }
+            k = end;
+            if (sentences.compare(k, 2, ", ") == 0)
+            {
+                k += 2;
+            }
+            else if (sentences.compare(k, 5, " and ") == 0)
+            {
+                k += 5;
+            }
+            else
+            {
+                break;
+            }
+        }
+    }
+    return false;
+}
+
 // Vertex numbers and edge names hung on leader lines (a number at the end of a line, among the outlines, reads as
 // any corner's: the floor's "3" led into the box standing on it), unless a sentence names them and they must show.
 std::vector<std::string> NamesAstray(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study)
@@ -1104,9 +1141,10 @@ std::vector<std::string> NamesAstray(const RecordingCanvas& canvas, const Scene&
                 const std::string phrase =
                     bodies[s]->name + (edge ? "'s edge " + t.substr(1) : "'s vertex " + t);
                 const size_t at = sentences.find(phrase);
-                const bool named = at != std::string::npos &&
-                                   (at + phrase.size() == sentences.size() ||
-                                    !std::isdigit(static_cast<unsigned char>(sentences[at + phrase.size()])));
+                const bool named = (at != std::string::npos &&
+                                    (at + phrase.size() == sentences.size() ||
+                                     !std::isdigit(static_cast<unsigned char>(sentences[at + phrase.size()])))) ||
+                                   (edge && InEdgeList(sentences, bodies[s]->name, t.substr(1)));
                 if (!named)
                 {
                     problems.push_back(Describe(*c) + " hangs on a leader line");
@@ -1425,6 +1463,67 @@ TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentence
             }
         }
     }
+    CHECK(drawn > 100);
+}
+
+TEST_CASE("On the app's narrower canvas beside a lesson, the face view names every face the sentences name",
+          "[labels][faces]")
+{
+    // The face view at 460 x 758 and 360 x 600: a small body whose named face rests on the other body has no room
+    // outside that face and little inside it (l09_stuck's box on the floor, its arrow and ghost beside it), and
+    // must still have the face named.
+    // Left out, with no room yet: the reference face of l04_wrong_way's and pitfall_unnormalised's verdicts, among
+    // the verdict's labels; pitfall_tunnel's bullet, its name and arrow head below the face; l03_corner_gap's B,
+    // the separating line just outside the face and the body's name filling its inside.
+    const std::set<std::string> crowded = {"l04_wrong_way 9 360", "pitfall_unnormalised 9 460",
+                                           "pitfall_tunnel 5 360", "l03_corner_gap 8 360", "l03_corner_gap 9 360"};
+    const auto lists = FigureLists();
+    int drawn = 0;
+    int failing = 0;
+    for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES"})
+    {
+        for (const std::string& stem : lists.at(list))
+        {
+            const std::string file = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + stem + ".json";
+            SceneResult loaded = LoadScene(file, SceneOptions{true});
+            REQUIRE(loaded.Ok());
+            REQUIRE(SimulateScene(loaded.scene, loaded.scene.view.simSteps).empty());
+            for (const auto& [width, height] : {std::pair{460, 758}, std::pair{360, 600}})
+            {
+                FigureOptions options;
+                options.setSteps = true;
+                options.steps = StepView::Faces;
+                options.width = width;
+                options.height = height;
+                FigureSetup setup = SetUpFigure(loaded.scene, options);
+                if (!setup.Ok() || setup.figure.kind != FigureKind::Pair)
+                {
+                    continue;
+                }
+                for (int k = 0; k < FigureStepCount(loaded.scene, setup); ++k)
+                {
+                    setup.figure.step = k;
+                    RecordingCanvas canvas;
+                    PaintFigure(canvas, loaded.scene, setup.study, setup.figure);
+                    INFO(stem << " face step " << k + 1 << " at " << width << " x " << height);
+                    if (crowded.count(stem + " " + std::to_string(k + 1) + " " + std::to_string(width)) == 1)
+                    {
+                        continue;
+                    }
+                    const std::vector<std::string> problems =
+                        NamedFacesUnnamed(canvas, loaded.scene, setup.study, setup.figure.layers, setup.figure.view);
+                    for (const std::string& problem : problems)
+                    {
+                        UNSCOPED_INFO(problem);
+                    }
+                    CHECK(problems.empty());
+                    failing += problems.empty() ? 0 : 1;
+                    ++drawn;
+                }
+            }
+        }
+    }
+    INFO(failing << " of " << drawn);
     CHECK(drawn > 100);
 }
 
