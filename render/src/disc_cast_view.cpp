@@ -325,6 +325,17 @@ void PaintDiscCast(Canvas& surface, const Scene& scene, int targetIndex, int dis
         labels.Reserve({c.x - 4.0f, c.y - 4.0f, c.x + 4.0f, c.y + 4.0f});
         labels.Place(c, "t = " + FormatNumber(hit.fraction), TextStyle::Label, palette::kInk,
                      static_cast<float>(side.x), static_cast<float>(-side.y), radius + 6.0f, LabelRank::Verdict);
+        // The time names the disc where it stops, not the target: it keeps out of the target's pieces (a cup's arm
+        // beside the disc), where it would read as a note on that piece.
+        for (const ConcavePart& part : target.concave.parts)
+        {
+            std::vector<ScreenPoint> outline;
+            for (const Vec2& v : part.shape.polygon.Vertices())
+            {
+                outline.push_back(ToScreen(view, TransformPoint(xf, v)));
+            }
+            labels.KeepOutOf(std::move(outline));
+        }
         labels.Place(p, "contact", TextStyle::Label, palette::kResult, static_cast<float>(-hit.normal.y),
                      static_cast<float>(-hit.normal.x), 8.0f, LabelRank::Verdict);
     }
