@@ -264,6 +264,46 @@ TEST_CASE("The incident polygon mapped in lanes has the textbook's vertices to t
     }
 }
 
+TEST_CASE("A trace says which instructions the same query runs on untraced", "[wide]")
+{
+    // The oracle: the processor's features (cpu_dispatch.h) and the rule that 512-bit face loops take two polygons
+    // of up to 8 vertices each, in double.
+    const auto expected = [](bool small) {
+        if (detail::WideVectorsEnabled() && detail::Wide512Enabled() && small)
+        {
+            return InstructionPath::Avx512;
+        }
+        return detail::WideVectorsEnabled() ? InstructionPath::Avx2 : InstructionPath::Baseline;
+    };
+    Rng rng(5152);
+    int small = 0, large = 0;
+    for (int k = 0; k < 400; ++k)
+    {
+        RandomPair pair = ContactPair(rng, rng.Int(3, 20), static_cast<PairCategory>(rng.Int(0, 2)));
+        const bool isSmall = pair.a.polygon.Count() <= 8 && pair.b.polygon.Count() <= 8;
+        small += isSmall;
+        large += !isSmall;
+        Trace trace;
+        trace.untracedPath = InstructionPath::Avx512; // a leftover the query must overwrite
+        Collide(pair.a.polygon, pair.xfA, pair.b.polygon, pair.xfB, &trace);
+        INFO("pair " << k << ": " << pair.a.polygon.Count() << " and " << pair.b.polygon.Count() << " vertices");
+        CHECK(trace.untracedPath == expected(isSmall));
+        SweepTrace sweep;
+        Sweep(pair.a, pair.xfA, Vec2{}, pair.b, pair.xfB, Vec2{0.5, -0.25}, &sweep);
+        CHECK(sweep.untracedPath == expected(isSmall));
+    }
+    CHECK(small > 50);
+    CHECK(large > 50);
+    // With the wide scans turned off, as a processor without AVX2 runs: the baseline.
+    const bool wide = detail::WideVectorsEnabled();
+    detail::WideVectorsEnabled() = false;
+    RandomPair pair = ContactPair(rng, 5, PairCategory::Overlap);
+    Trace trace;
+    Collide(pair.a.polygon, pair.xfA, pair.b.polygon, pair.xfB, &trace);
+    detail::WideVectorsEnabled() = wide;
+    CHECK(trace.untracedPath == InstructionPath::Baseline);
+}
+
 TEST_CASE("Traced queries and baseline scans give the same bits", "[properties][wide]")
 {
     CheckAgainstBaseline(Kind::Traced);

@@ -278,7 +278,12 @@ Json TraceJson(const Trace& trace)
         }
         axes.push_back(entry);
     }
-    Json out = {{"view", "faces"}, {"axes", axes}, {"exit", ExitName(trace.exit)}};
+    Json out = {{"view", "faces"},
+                {"axes", axes},
+                {"exit", ExitName(trace.exit)},
+                {"untraced_path", trace.untracedPath == InstructionPath::Avx512 ? "avx512"
+                                  : trace.untracedPath == InstructionPath::Avx2 ? "avx2"
+                                                                                : "baseline"}};
     if (trace.hasClip)
     {
         const ClipTrace& clip = trace.clip;

@@ -64,6 +64,30 @@ template <typename Query>
 }
 #endif
 
+// The instructions an untraced query runs on: 512-bit face loops for double where `wide512` and the processor has
+// them, the wide scans where it has those and `wide`, else the baseline, which a traced call says in its trace.
+// The untraced branches of WithTracer and WithSweepTracer take the same decision inline, on their fast path (an
+// enum chosen here and switched on there cost Overlap of small polygons a nanosecond); a property test holds
+// the two together (tests/test_wide.cpp).
+template <typename S>
+InstructionPath UntracedPath(bool wide, bool wide512)
+{
+#if SATVIZ_WIDE
+    if (std::is_same_v<S, double> && wide512 && HasWide512())
+    {
+        return InstructionPath::Avx512;
+    }
+    if (wide && HasWideVectors())
+    {
+        return InstructionPath::Avx2;
+    }
+#else
+    (void)wide;
+    (void)wide512;
+#endif
+    return InstructionPath::Baseline;
+}
+
 // Runs `query(tracer)` with the null tracer (on the wide scans where the processor has them, unless kWide is
 // false; for double, with 512-bit face loops where it has those too and kWide512 is set), or with a recorder
 // filling `trace` when it is non-null.
@@ -89,7 +113,9 @@ auto WithTracer(TraceT<S>* trace, const A& a, const TransformT<S>& xfA, const B&
         NullTracer tracer;
         return query(tracer);
     }
-    return Traced(*trace, a, xfA, b, xfB, query);
+    auto result = Traced(*trace, a, xfA, b, xfB, query);
+    trace->untracedPath = UntracedPath<S>(kWide, kWide512);
+    return result;
 }
 
 // WithTracer for the sweep: `query(tracer)` with the null tracer, each instruction set's path one function (on
@@ -117,7 +143,9 @@ auto WithSweepTracer(SweepTraceT<S>* trace, const A& a, const TransformT<S>& xfA
         return RunScalar(query);
     }
     SweepRecorder<S> tracer(*trace, Ref(a), xfA, Ref(b), xfB, velocity);
-    return query(tracer);
+    auto result = query(tracer);
+    trace->untracedPath = UntracedPath<S>(true, wide512);
+    return result;
 }
 
 // Calls query(shapeA, shapeB) with the polygon or circle each shape holds.

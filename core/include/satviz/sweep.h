@@ -4,6 +4,7 @@
 
 #include <satviz/manifold.h>
 #include <satviz/shape.h>
+#include <satviz/trace.h>
 
 #include <vector>
 
@@ -80,6 +81,9 @@ struct SweepTraceT
 {
     std::vector<SweepAxisT<S>> axes;  ///< axes in test order
     SweepExit exit = SweepExit::None; ///< why the test ended
+    /// The instructions the same sweep runs on, untraced, on this processor (see TraceT::untracedPath): the trace
+    /// shows the baseline loops, whose numbers are those of every path, to the bit.
+    InstructionPath untracedPath = InstructionPath::Baseline;
     /// Empties the trace for reuse.
     void Clear() { *this = SweepTraceT<S>(); }
 };

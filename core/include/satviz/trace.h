@@ -76,6 +76,14 @@ enum class TraceExit
     VertexInside,
 };
 
+/// The instructions a query's loops run on. Each path gives the same answers to the bit.
+enum class InstructionPath
+{
+    Baseline, ///< the lanes every processor of the architecture has (SSE2 on x86-64); a traced query runs these
+    Avx2,     ///< 256-bit vectors (AVX2)
+    Avx512,   ///< 512-bit vectors (AVX-512F): the face loops of two polygons of up to 8 vertices each, in double
+};
+
 /// The complete record of one query: every axis in the order tested, the contact clipping, and the result.
 /// Recorded in every build type. Filling it allocates; the untraced queries never do.
 template <typename S>
@@ -88,6 +96,10 @@ struct TraceT
     int containedShape = -1;          ///< with VertexInside: the polygon (0 = A, 1 = B) whose vertex lies inside
     int containedVertex = -1;         ///< with VertexInside: that vertex
     ManifoldT<S> result{};            ///< the query's result (for Overlap: only `overlap` is set)
+    /// The instructions the same query runs on, untraced, on this processor. The trace shows the baseline loops,
+    /// whose numbers are those of every path, to the bit (the property tests of tests/test_wide.cpp hold them so);
+    /// the order in which wider loops take the faces is their own.
+    InstructionPath untracedPath = InstructionPath::Baseline;
     /// Empties the trace for reuse.
     void Clear() { *this = TraceT<S>(); }
 };
