@@ -184,7 +184,7 @@ std::string DescribePieceStep(const Body& a, const Body& b, const PieceStudy& st
         return header + "a broadphase over the pieces' boxes (grey, dashed). " + a.name + " has " +
                std::to_string(PartCount(a)) + (PartCount(a) == 1 ? " piece" : " pieces") + " and " + b.name + " " +
                std::to_string(PartCount(b)) + ", so there are " + std::to_string(pieces) + " pairs of pieces; " +
-               (tested == 0 ? "no two boxes overlap, so no pair is tested."
+               (tested == 0 ? "no box of " + a.name + "'s pieces overlaps one of " + b.name + "'s, so no pair is tested."
                             : std::to_string(tested) + (tested == 1 ? " has" : " have") +
                                   " overlapping boxes: " + list + ". Only " + (tested == 1 ? "it is" : "these are") +
                                   " tested; pieces whose boxes are apart cannot touch.");
