@@ -59,11 +59,22 @@ struct Lanes8
         __mmask8 m; ///< the lanes
         /// The lanes as eight bits.
         [[gnu::target("avx512f")]] int Bits() const { return static_cast<int>(m); }
+        /// The lanes set in both.
+        [[gnu::target("avx512f")]] friend Mask operator&(Mask a, Mask b) { return {static_cast<__mmask8>(a.m & b.m)}; }
+        /// The lanes set in either.
+        [[gnu::target("avx512f")]] friend Mask operator|(Mask a, Mask b) { return {static_cast<__mmask8>(a.m | b.m)}; }
+        /// The lanes not set.
+        [[gnu::target("avx512f")]] friend Mask operator~(Mask a) { return {static_cast<__mmask8>(~a.m)}; }
     };
     /// The lanes greater than b's.
     [[gnu::target("avx512f")]] friend Mask operator>(const Lanes8& a, const Lanes8& b)
     {
         return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_GT_OQ)};
+    }
+    /// The lanes greater than or equal to b's.
+    [[gnu::target("avx512f")]] friend Mask operator>=(const Lanes8& a, const Lanes8& b)
+    {
+        return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_GE_OQ)};
     }
     /// The lanes equal to b's.
     [[gnu::target("avx512f")]] friend Mask operator==(const Lanes8& a, const Lanes8& b)

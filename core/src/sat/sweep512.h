@@ -35,10 +35,11 @@ struct SmallSweepVerdict
 
 // The entry and exit times of the faces of `ref` (at most 8, one per lane) whose separations are `separations`
 // (FaceSeparations512; -infinity past the last face), moving at `velocity` (ref's frame, as SweepFaces takes it):
-// AxisLanes' rule lane by lane, with the same operations, so the same bits. A lane past the last face enters never
-// (-infinity) and exits never (+infinity): it takes no part. NaN entries and exits become -infinity and +infinity,
-// which the lanes of SweepLanes never take either. Returns the lanes of the faces that are apart (separation >= 0)
-// and, in `never`, those that never close.
+// AxisLanes in eight lanes, so the same bits as the face loops of four. A lane past the last face enters never
+// (-infinity) and exits never (+infinity): it takes no part. NaN entries and exits (0 / 0: a face touching at t = 0
+// with the motion along it) become -infinity and +infinity, which the lanes of SweepLanes never take either, so that
+// the reductions of one register see no NaN. Returns the lanes of the faces that are apart (separation >= 0) and,
+// in `never`, those that never close.
 [[gnu::target("avx2,avx512f")]] inline int FaceTimes512(const PolygonT<double>& ref, const Lanes8& separations,
                                                         Vec2T<double> velocity, Lanes8& entry, Lanes8& leave,
                                                         int& never)
@@ -48,17 +49,12 @@ struct SmallSweepVerdict
     Lanes8 nx;
     Lanes8 ny;
     Lanes8::LoadPoints(&ref.InlineBlock()[n + 1].x, nx, ny);
-    const Lanes8 raw = nx * Lanes8::Fill(velocity.x) + ny * Lanes8::Fill(velocity.y);
-    const Lanes8 zero = Lanes8::Fill(0.0);
-    // Moving: a rate within StillRate of 0 is 0.
-    const Lanes8 rate = zero.Blend(Max(raw, -raw).GreaterBits(Lanes8::Fill(StillRate(velocity))), raw);
-    const int apart = separations.GreaterEqualBits(zero);
-    const Lanes8 q = separations / -rate;
-    const int numbers = q.GreaterEqualBits(Lanes8::Fill(-kInf));
-    entry = Lanes8::Fill(-kInf).Blend(apart & numbers, q);
-    leave = Lanes8::Fill(kInf).Blend(~apart & rate.GreaterBits(zero) & numbers & 0xFF, q);
-    never = apart & rate.GreaterEqualBits(zero);
-    return apart;
+    const Lanes8 rates = nx * Lanes8::Fill(velocity.x) + ny * Lanes8::Fill(velocity.y);
+    const AxisLanes<Lanes8> axes(separations, rates, StillRate(velocity));
+    entry = Select(axes.entry == axes.entry, axes.entry, Lanes8::Fill(-kInf));
+    leave = Select(axes.leave == axes.leave, axes.leave, Lanes8::Fill(kInf));
+    never = axes.never.Bits();
+    return axes.apart.Bits();
 }
 
 // The face loops of a sweep of two polygons of at most 8 faces (SweepFaces of A, then of B) on 512-bit vectors:
