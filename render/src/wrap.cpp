@@ -11,53 +11,124 @@ namespace satviz
 namespace
 {
 
-// A web address wider than the line, in pieces that fit: broken after a '/' or before a '.', '-', '?', '#', '&',
-// '=' or '_', where a reader still sees one address going on, and only failing those after the last character that
-// fits (never inside a UTF-8 character).
-std::vector<std::string> BreakLink(const std::string& link, float width,
+// The index of the bracket that closes a pair or list of numbers opened at `open` ("(0.96, 0.28)",
+// "[-0.25, 0.5]": digits, points, commas, spaces and signs only, a digit at least), or npos when the bracket opens
+// prose ("(0.1645 in full; ...)"), which wraps like any text.
+size_t NumberTupleEnd(const std::string& text, size_t open)
+{
+    const char close = text[open] == '(' ? ')' : ']';
+    bool digit = false;
+    for (size_t i = open + 1; i < text.size(); ++i)
+    {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c == static_cast<unsigned char>(close))
+        {
+            return digit ? i : std::string::npos;
+        }
+        if (std::isdigit(c))
+        {
+            digit = true;
+        }
+        else if (text.compare(i, 3, "\xE2\x88\x92") == 0) // U+2212 MINUS SIGN
+        {
+            i += 2;
+        }
+        else if (std::strchr(".,+- ", static_cast<char>(c)) == nullptr || c == 0)
+        {
+            return std::string::npos;
+        }
+    }
+    return std::string::npos;
+}
+
+// A word wider than the line, in pieces that fit, so that nothing of it is cut at the panel's edge. A web address
+// breaks after a '/' or before a '.', '-', '?', '#', '&', '=' or '_', where a reader still sees one address going
+// on; any other word after a ',', ':', ';', ')' or ']', before a bracket or at a space (an equation kept as one
+// word has them), as in "[-0.2,0.2],", and inside a pair of numbers only when nothing else fits; failing all of
+// those after the last character that fits (never inside a UTF-8 character).
+std::vector<std::string> BreakWord(const std::string& word, float width,
                                    const std::function<float(const std::string&)>& measure)
 {
+    const bool link = word.find("://") != std::string::npos;
+    // Where a pair of numbers glued into the word (by an "=") lies: broken there only when nothing else will do.
+    std::vector<bool> inTuple(word.size(), false);
+    for (size_t i = 0; i < word.size(); ++i)
+    {
+        if (word[i] == '(' || word[i] == '[')
+        {
+            const size_t close = NumberTupleEnd(word, i);
+            for (size_t j = i + 1; close != std::string::npos && j <= close; ++j)
+            {
+                inTuple[j] = true;
+            }
+        }
+    }
     std::vector<std::string> pieces;
     size_t start = 0;
-    while (start < link.size())
+    while (start < word.size())
     {
-        if (measure(link.substr(start)) <= width)
+        if (measure(word.substr(start)) <= width)
         {
-            pieces.push_back(link.substr(start));
+            pieces.push_back(word.substr(start));
             break;
         }
         size_t natural = 0;
+        size_t inside = 0;
         size_t fits = 0;
-        for (size_t length = 1; start + length < link.size(); ++length)
+        for (size_t length = 1; start + length < word.size(); ++length)
         {
-            const char next = link[start + length];
+            const char next = word[start + length];
             if ((static_cast<unsigned char>(next) & 0xC0) == 0x80)
             {
                 continue;
             }
-            if (measure(link.substr(start, length)) > width)
+            std::string piece = word.substr(start, length);
+            while (!piece.empty() && piece.back() == ' ')
+            {
+                piece.pop_back();
+            }
+            if (measure(piece) > width)
             {
                 break;
             }
             fits = length;
-            const char previous = link[start + length - 1];
-            if ((previous == '/' && next != '/') || std::strchr(".-?#&=_", next) != nullptr)
+            const char previous = word[start + length - 1];
+            const bool breaks =
+                link ? ((previous == '/' && next != '/') || std::strchr(".-?#&=_", next) != nullptr)
+                     : (std::strchr(",:;])", previous) != nullptr || std::strchr(" ([", next) != nullptr);
+            if (breaks)
             {
-                natural = length;
+                (inTuple[start + length] ? inside : natural) = length;
             }
         }
-        size_t take = natural > 0 ? natural : fits;
+        size_t take = natural > 0 ? natural : inside > 0 ? inside : fits;
         if (take == 0)
         {
             // Not even one character fits: one anyway, whole.
             take = 1;
-            while (start + take < link.size() && (static_cast<unsigned char>(link[start + take]) & 0xC0) == 0x80)
+            while (start + take < word.size() && (static_cast<unsigned char>(word[start + take]) & 0xC0) == 0x80)
             {
                 ++take;
             }
         }
-        pieces.push_back(link.substr(start, take));
+        std::string piece = word.substr(start, take);
+        while (!piece.empty() && piece.back() == ' ')
+        {
+            piece.pop_back();
+        }
+        if (!piece.empty())
+        {
+            pieces.push_back(piece);
+        }
         start += take;
+        while (start < word.size() && word[start] == ' ')
+        {
+            ++start;
+        }
+    }
+    if (pieces.empty())
+    {
+        pieces.push_back(word);
     }
     return pieces;
 }
@@ -67,7 +138,9 @@ std::vector<std::string> BreakLink(const std::string& link, float width,
 std::vector<std::string> WrapWords(const std::string& text)
 {
     std::vector<std::string> words;
-    int depth = 0;
+    // The words up to this index of `text` join the word before them: the inside of a pair of numbers.
+    size_t tupleEnd = 0;
+    bool inTuple = false;
     size_t start = 0;
     while (start <= text.size())
     {
@@ -78,7 +151,7 @@ std::vector<std::string> WrapWords(const std::string& text)
         }
         const std::string word = text.substr(start, end - start);
         // "t = 0.438" stays on one line: "=" joins the words on both sides of it.
-        const bool glued = depth > 0 || word == "=" ||
+        const bool glued = (inTuple && start <= tupleEnd) || word == "=" ||
                            (!words.empty() && words.back().size() >= 2 &&
                             words.back().compare(words.back().size() - 2, 2, " =") == 0);
         if (glued && !words.empty() && !word.empty())
@@ -89,15 +162,23 @@ std::vector<std::string> WrapWords(const std::string& text)
         {
             words.push_back(word);
         }
-        for (size_t i = 0; i < word.size(); ++i)
+        if (inTuple && tupleEnd < end)
         {
-            // Only a bracket that opens a number ("[-0.25," or "(0.96,") groups; prose in parentheses wraps.
-            const bool number = i + 1 < word.size() &&
-                                (std::isdigit(static_cast<unsigned char>(word[i + 1])) || word[i + 1] == '-');
-            depth += ((word[i] == '[' || word[i] == '(') && number) ? 1 : 0;
-            depth -= (word[i] == ']' || word[i] == ')') && depth > 0 ? 1 : 0;
+            inTuple = false;
         }
-        depth = std::max(depth, 0);
+        for (size_t i = start; i < end; ++i)
+        {
+            // Only a bracket that opens numbers alone ("[-0.25, 0.5]", "(0.96, 0.28)") groups; prose wraps.
+            if (!inTuple && (text[i] == '[' || text[i] == '('))
+            {
+                const size_t close = NumberTupleEnd(text, i);
+                if (close != std::string::npos && close >= end)
+                {
+                    inTuple = true;
+                    tupleEnd = close;
+                }
+            }
+        }
         start = end + 1;
     }
     return words;
@@ -123,14 +204,14 @@ std::vector<std::string> WrapLines(const std::string& text, float width,
         for (const std::string& word : WrapWords(paragraph))
         {
             const std::string candidate = line.empty() ? indent + word : line + " " + word;
-            if (word.find("://") != std::string::npos && measure(word) > width)
+            if (measure((line.empty() ? indent : std::string()) + word) > width)
             {
-                // A link that would run past the edge alone starts a line and goes on over the next ones.
+                // A word that would run past the edge even alone starts a line and goes on over the next ones.
                 if (!line.empty())
                 {
                     lines.push_back(line);
                 }
-                std::vector<std::string> pieces = BreakLink(word, width, measure);
+                std::vector<std::string> pieces = BreakWord(word, width, measure);
                 lines.insert(lines.end(), pieces.begin(), pieces.end() - 1);
                 line = pieces.back();
                 continue;
