@@ -333,7 +333,8 @@ std::vector<std::string> NamedScenes(const std::string& markdown)
     {
         size_t end = at + marker.size();
         while (end < markdown.size() &&
-               (std::isalnum(static_cast<unsigned char>(markdown[end])) || markdown[end] == '_'))
+               (std::isalnum(static_cast<unsigned char>(markdown[end])) || markdown[end] == '_' ||
+                markdown[end] == '/'))
         {
             ++end;
         }
@@ -360,6 +361,28 @@ std::string SceneOfFigure(const std::string& figure)
         stem.erase(digits - 5);
     }
     return stem;
+}
+
+std::string FigureSceneFile(const std::string& folder, const std::string& figure)
+{
+    const std::string name = SceneOfFigure(figure) + ".json";
+    const fs::path scenes = fs::path(folder) / "scenes";
+    std::error_code code;
+    if (fs::is_regular_file(scenes / name, code))
+    {
+        return (scenes / name).string();
+    }
+    // The scenes of a topic of their own (scenes/concave/...).
+    std::vector<fs::path> found;
+    for (fs::directory_iterator it(scenes, code), end; !code && it != end; it.increment(code))
+    {
+        if (it->is_directory(code) && fs::is_regular_file(it->path() / name, code))
+        {
+            found.push_back(it->path() / name);
+        }
+    }
+    std::sort(found.begin(), found.end());
+    return found.empty() ? std::string() : found.front().string();
 }
 
 namespace
@@ -407,9 +430,40 @@ std::vector<Lesson> FindLessons(const std::string& folder)
         {
             lesson.title = file;
         }
+        // The scenes of its figures and those its text names, in order of first mention; the scene of its first
+        // figure first of all, which the lesson opens on.
+        std::vector<std::pair<size_t, std::string>> mentioned;
+        std::string first;
+        for (const LessonBlock& block : ParseLesson(text))
+        {
+            if (block.kind != LessonBlock::Kind::Figure)
+            {
+                continue;
+            }
+            const std::string scene = FigureSceneFile(folder, block.target);
+            if (!scene.empty())
+            {
+                first = first.empty() ? scene : first;
+                mentioned.emplace_back(text.find(block.target), scene);
+            }
+        }
         for (const std::string& name : NamedScenes(text))
         {
-            lesson.scenes.push_back((fs::path(folder) / "scenes" / (name + ".json")).string());
+            mentioned.emplace_back(text.find("scenes/" + name + ".json"),
+                                   (fs::path(folder) / "scenes" / (name + ".json")).string());
+        }
+        std::stable_sort(mentioned.begin(), mentioned.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        if (!first.empty())
+        {
+            lesson.scenes.push_back(first);
+        }
+        for (const auto& [at, scene] : mentioned)
+        {
+            if (std::find(lesson.scenes.begin(), lesson.scenes.end(), scene) == lesson.scenes.end())
+            {
+                lesson.scenes.push_back(scene);
+            }
         }
         lessons.push_back(lesson);
     }

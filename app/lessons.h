@@ -15,14 +15,21 @@ struct Lesson
 {
     std::string file;                ///< path of the Markdown file
     std::string title;               ///< its first heading, without the "#"
-    std::vector<std::string> scenes; ///< the scene files it names (tutorials/scenes/NAME.json), in order, no repeats
+    /// The scene files of its figures and those its text names (tutorials/scenes/NAME.json, scenes/concave/NAME.json),
+    /// in order of first mention, no repeats, except that the scene of its first figure comes first.
+    std::vector<std::string> scenes;
 };
 
-/// The scenes a lesson's text names ("scenes/NAME.json"), as NAME, in order of first mention, no repeats.
+/// The scenes a lesson's text names ("scenes/NAME.json", "scenes/concave/NAME.json"), as NAME ("concave/NAME"), in
+/// order of first mention, no repeats.
 std::vector<std::string> NamedScenes(const std::string& markdown);
 
 /// The scene a figure was rendered from: "figures/faces/overlapping_boxes-step6.png" -> "overlapping_boxes".
 std::string SceneOfFigure(const std::string& figure);
+
+/// The scene file a figure of the lessons in `folder` was rendered from: `folder`/scenes/NAME.json or, failing that,
+/// NAME.json in a folder of scenes/ (scenes/concave/), NAME as SceneOfFigure gives it; empty when there is none.
+std::string FigureSceneFile(const std::string& folder, const std::string& figure);
 
 /// The lessons in `folder` (files named NN-slug.md), in order; empty when there are none or the folder is missing.
 std::vector<Lesson> FindLessons(const std::string& folder);

@@ -1479,9 +1479,8 @@ void Panels::LessonWindow()
             // The figure is the canvas: a figure of a scene opens that scene there.
             WrappedTextDisabled("Figure: " + block.text);
             const std::string stem = SceneOfFigure(block.target);
-            const std::string scene =
-                (std::filesystem::path(m_app.Options().lessonsDir) / "scenes" / (stem + ".json")).string();
-            if (std::filesystem::exists(scene))
+            const std::string scene = FigureSceneFile(m_app.Options().lessonsDir, block.target);
+            if (!scene.empty())
             {
                 ImGui::PushID(&block);
                 if (ImGui::SmallButton(("show " + stem).c_str()))

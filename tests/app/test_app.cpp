@@ -27,6 +27,7 @@
 #include <fstream>
 #include <memory>
 #include <set>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <thread>
@@ -1672,6 +1673,67 @@ After.
     }
 }
 
+TEST_CASE("Every lesson has a button for each scene it shows or names and opens on its first figure's scene",
+          "[app][lessons]")
+{
+    // The scene files on disk, by name, in scenes/ and its folders (scenes/concave/); a figure "NAME-stepN.png" or
+    // "NAME.png" is drawn from NAME.json.
+    const fs::path tutorials = fs::path(SATVIZ_SOURCE_DIR) / "tutorials";
+    std::map<std::string, std::string> onDisk;
+    for (const auto& entry : fs::recursive_directory_iterator(tutorials / "scenes"))
+    {
+        if (entry.path().extension() == ".json")
+        {
+            onDisk.emplace(entry.path().stem().string(), fs::weakly_canonical(entry.path()).string());
+        }
+    }
+    const std::vector<Lesson> lessons = FindLessons(tutorials.string());
+    REQUIRE(lessons.size() >= 19);
+    for (const Lesson& lesson : lessons)
+    {
+        INFO(lesson.file);
+        std::vector<std::string> buttons;
+        for (const std::string& scene : lesson.scenes)
+        {
+            INFO(scene);
+            REQUIRE(fs::is_regular_file(scene));
+            buttons.push_back(fs::weakly_canonical(scene).string());
+        }
+        const auto has = [&](const std::string& file) {
+            return std::find(buttons.begin(), buttons.end(), file) != buttons.end();
+        };
+        std::ifstream in(lesson.file);
+        std::stringstream read;
+        read << in.rdbuf();
+        const std::string text = read.str();
+        static const std::regex figure(R"(\]\(([^) ]*figures/[^) ]+\.png)\))");
+        static const std::regex step(R"(-step[0-9]+$)");
+        std::string first;
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), figure); it != std::sregex_iterator(); ++it)
+        {
+            const std::string name = std::regex_replace(fs::path((*it)[1].str()).stem().string(), step, "");
+            const auto found = onDisk.find(name);
+            if (found == onDisk.end())
+            {
+                continue;
+            }
+            INFO("figure " << (*it)[1].str());
+            first = first.empty() ? found->second : first;
+            CHECK(has(found->second));
+            // The figure's own "show" button.
+            CHECK(fs::weakly_canonical(FigureSceneFile(tutorials.string(), (*it)[1].str())).string() == found->second);
+        }
+        static const std::regex named(R"(scenes/([A-Za-z0-9_/]+)\.json)");
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), named); it != std::sregex_iterator(); ++it)
+        {
+            INFO("named " << (*it)[0].str());
+            CHECK(has(fs::weakly_canonical(tutorials / (*it)[0].str()).string()));
+        }
+        REQUIRE(!buttons.empty());
+        CHECK(buttons.front() == (first.empty() ? buttons.front() : first));
+    }
+}
+
 TEST_CASE("Help > Lessons lists the lessons, and opening one shows its text and loads its scene", "[app][lessons]")
 {
     Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
@@ -1837,6 +1899,9 @@ TEST_CASE("A scene that frames itself keeps its framing, scaled to the canvas le
     h.Frames(3);
     CHECK(h.View().Camera().zoom > narrow);
     CHECK(h.View().CameraFramed());
+    // Lesson 17's own first scene, open when the lesson opens again: the lesson keeps the view the student set.
+    REQUIRE(h.app->RequestOpen(h.app->Lessons()[16].scenes.front()));
+    h.Frames(3);
     const ImVec2 empty(h.CanvasOrigin().x + 20.0f, h.CanvasOrigin().y + 300.0f);
     h.Drag(empty, ImVec2(empty.x + 40.0f, empty.y));
     CHECK(!h.View().CameraFramed());
