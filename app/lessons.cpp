@@ -80,6 +80,10 @@ struct Reader
         }
         else if (open)
         {
+            if (inCell && !current.cells.empty())
+            {
+                current.cells.back() += text;
+            }
             current.text += text;
         }
     }
@@ -151,8 +155,10 @@ int EnterBlock(MD_BLOCKTYPE type, void* detail, void* user)
         break;
     case MD_BLOCK_TH:
     case MD_BLOCK_TD:
-        r.Append(r.firstCell ? "" : " | ");
+        r.current.text += r.firstCell ? "" : " | ";
         r.firstCell = false;
+        r.current.cells.emplace_back();
+        r.current.header = r.current.header || type == MD_BLOCK_TH;
         break;
     default:
         break;

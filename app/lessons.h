@@ -60,6 +60,9 @@ struct LessonBlock
     /// collapsed under `summary` until the student opens it (the exercises' answers).
     int details = 0;
     std::string summary; ///< the `<summary>` text of that section ("Answers")
+    /// A row of a table (a Paragraph whose `text` is its cells joined by " | "): its cells' texts, empty otherwise.
+    std::vector<std::string> cells;
+    bool header = false; ///< the row is the table's heading row
 };
 
 /// Parses a lesson's Markdown (CommonMark with tables, as md4c reads it) into blocks. HTML comments (the lessons'

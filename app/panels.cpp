@@ -1403,6 +1403,7 @@ void Panels::LessonWindow()
     };
     int details = 0;
     bool detailsOpen = true;
+    std::vector<std::string> tableHeader; // the cells of the last table heading row
     for (const LessonBlock& block : m_app.LessonBlocks())
     {
         if (inQuote && (!block.quote || block.details != details))
@@ -1451,6 +1452,25 @@ void Panels::LessonWindow()
             ImGui::PopFont();
             break;
         case LessonBlock::Kind::Paragraph:
+            if (block.header)
+            {
+                // A table's heading row names the cells of the rows below, each shown under its row's first cell.
+                tableHeader = block.cells;
+                break;
+            }
+            if (!block.cells.empty())
+            {
+                WrappedText(block.cells.front());
+                ImGui::Indent(14.0f);
+                for (size_t i = 1; i < block.cells.size(); ++i)
+                {
+                    const std::string name = i < tableHeader.size() ? tableHeader[i] + ": " : std::string();
+                    WrappedTextDisabled(name + block.cells[i]);
+                }
+                ImGui::Unindent(14.0f);
+                ImGui::Spacing();
+                break;
+            }
             WrappedText(block.text);
             ImGui::Spacing();
             break;

@@ -1597,6 +1597,12 @@ satviz tutorials/scenes/x.json
     CHECK(blocks[6].text.find("satviz tutorials/scenes/x.json") == 0);
     CHECK(blocks[7].text == "a | b");
     CHECK(blocks[8].text == "1 | 2");
+    // A table's rows keep their cells apart, for the panel to show each under its row's first cell.
+    CHECK(blocks[7].cells == std::vector<std::string>{"a", "b"});
+    CHECK(blocks[7].header);
+    CHECK(blocks[8].cells == std::vector<std::string>{"1", "2"});
+    CHECK(!blocks[8].header);
+    CHECK(blocks[6].cells.empty());
     CHECK(blocks.back().kind == LessonBlock::Kind::Rule);
     // A numbered list keeps its numbers, from its start, and a list nested in it its bullets.
     const std::vector<LessonBlock> numbered = ParseLesson("3. third\n4. fourth\n   - under it\n5. fifth\n");
