@@ -320,16 +320,24 @@ ManifoldT<S> ReferenceFaceManifold(const PolygonT<S>& ref, const TransformT<S>& 
             -1};
 }
 
+/// Puts the contacts of `clip` (reference frame, whose transform is xfRef) in world space into `manifold`, with
+/// their count and the incident edge.
+template <typename S>
+void TakeContacts(ManifoldT<S>& manifold, const ClipResult<S>& clip, const TransformT<S>& xfRef)
+{
+    manifold.contacts[0] = WorldContact(clip, 0, xfRef);
+    manifold.contacts[1] = WorldContact(clip, 1, xfRef);
+    manifold.contactCount = clip.contactCount;
+    manifold.incidentEdge = clip.incidentEdge;
+}
+
 /// The same with the contacts of `clip` (reference frame) in world space and its incident edge.
 template <typename S>
 ManifoldT<S> ReferenceFaceManifold(const PolygonT<S>& ref, const TransformT<S>& xfRef, int face, bool flip,
                                    S separation, const ClipResult<S>& clip)
 {
     ManifoldT<S> manifold = ReferenceFaceManifold(ref, xfRef, face, flip, separation);
-    manifold.contacts[0] = WorldContact(clip, 0, xfRef);
-    manifold.contacts[1] = WorldContact(clip, 1, xfRef);
-    manifold.contactCount = clip.contactCount;
-    manifold.incidentEdge = clip.incidentEdge;
+    TakeContacts(manifold, clip, xfRef);
     return manifold;
 }
 

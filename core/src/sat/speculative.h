@@ -81,11 +81,8 @@ ManifoldT<S> SpeculativePolygons(const PolygonT<S>& a, const TransformT<S>& xfA,
     manifold.depth = manifold.overlap ? -query.separation : S(0);
     manifold.gap = manifold.overlap ? S(0) : query.separation;
     manifold.normal = Select(flip, -worldNormal, worldNormal);
-    manifold.contacts[0] = WorldContact(clip, 0, xfRef);
-    manifold.contacts[1] = WorldContact(clip, 1, xfRef);
-    manifold.contactCount = clip.contactCount;
     manifold.axis = {AxisKind::FaceNormal, Select(flip, 1, 0), query.face};
-    manifold.incidentEdge = clip.incidentEdge;
+    TakeContacts(manifold, clip, xfRef);
     return manifold;
 }
 
@@ -101,11 +98,7 @@ ManifoldT<S> ReclippedWithin(const PolygonT<S>& a, const TransformT<S>& xfA, con
     const TransformT<S>& xfRef = SelectRef(flip, xfB, xfA);
     const IncidentPolygon<S> inc(SelectRef(flip, a, b), xfRef, SelectRef(flip, xfA, xfB), kScanLimit,
                                  MapInLanes<false>{});
-    const ClipResult<S> clip = ClipIncidentEdge(ref, m.axis.index, inc, -1, margin);
-    m.contacts[0] = WorldContact(clip, 0, xfRef);
-    m.contacts[1] = WorldContact(clip, 1, xfRef);
-    m.contactCount = clip.contactCount;
-    m.incidentEdge = clip.incidentEdge;
+    TakeContacts(m, ClipIncidentEdge(ref, m.axis.index, inc, -1, margin), xfRef);
     return m;
 }
 
