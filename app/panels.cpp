@@ -1031,7 +1031,17 @@ void Panels::ResponseSteps()
     {
         shown += contact.guard ? 0 : 1;
     }
-    ImGui::Text("Contacts of step %d: %d", sim.Shown(), shown);
+    // A pair with no body awake is neither tested nor solved: its contact is the one kept from the last step it was
+    // awake, so the list says so rather than calling it this step's.
+    const std::vector<RigidBody>& start = record.before.empty() ? record.world.bodies : record.before;
+    const auto resting = [&](int i) {
+        const RigidBody& body = start[static_cast<size_t>(i)];
+        return body.type == BodyType::Static || !body.awake;
+    };
+    const auto kept = [&](const WorldContact& c) { return resting(c.a) && resting(c.b); };
+    ImGui::Text("Contacts held after step %d: %d", sim.Shown(), shown);
+    WrappedTextDisabled("Overlap or gap as found at the start of the step; kept: a sleeping pair's contact, from "
+                        "the last step it was awake.");
     const int chosenA = std::min(record.contact.bodyA, record.contact.bodyB);
     const int chosenB = std::max(record.contact.bodyA, record.contact.bodyB);
     if (shown > 0)
@@ -1060,9 +1070,10 @@ void Panels::ResponseSteps()
                         separation = std::min(separation, c.points[k].separation);
                     }
                     char label[200];
-                    std::snprintf(label, sizeof label, "%s and %s: %d point%s, %s %.3g", name(c.a).c_str(),
+                    std::snprintf(label, sizeof label, "%s and %s: %d point%s, %s %.3g%s", name(c.a).c_str(),
                                   name(c.b).c_str(), c.pointCount, c.pointCount == 1 ? "" : "s",
-                                  separation < 0.0 ? "overlap" : "gap", std::fabs(separation));
+                                  separation < 0.0 ? "overlap" : "gap", std::fabs(separation),
+                                  kept(c) ? " (kept)" : "");
                     if (ImGui::Selectable(label, c.a == chosenA && c.b == chosenB))
                     {
                         m_app.SimChooseContact(c.a, c.b);
