@@ -11,14 +11,22 @@ namespace satviz
 namespace
 {
 
+// Round-off leaves residues like -2.78e-17 where the arithmetic gives 0; printed, they read as real numbers a
+// student cannot reproduce, so anything below 1e-12 of the scale it sits beside is shown as 0.
+double Clean(double value, double scale)
+{
+    return std::fabs(value) <= 1e-12 * std::max(1.0, std::fabs(scale)) ? 0.0 : value;
+}
+
 std::string N(double value)
 {
-    return FormatNumber(value);
+    return FormatNumber(Clean(value, value));
 }
 
 std::string V(Vec2 v)
 {
-    return "(" + FormatNumber(v.x) + ", " + FormatNumber(v.y) + ")";
+    const double scale = std::max(std::fabs(v.x), std::fabs(v.y));
+    return "(" + FormatNumber(Clean(v.x, scale)) + ", " + FormatNumber(Clean(v.y, scale)) + ")";
 }
 
 const ContactPointSolve* LastPass(const ContactSolveTrace& trace, int point)
