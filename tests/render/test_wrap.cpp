@@ -11,7 +11,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,6 +19,44 @@ using namespace satviz;
 
 namespace
 {
+
+// The brackets of numbers in `text`, left to right: an opening bracket, a sign or none, a digit, then digits, points,
+// commas, spaces and signs, and a closing bracket (written out rather than as a std::regex, whose GCC 12 header trips
+// -Wmaybe-uninitialized under the sanitizers).
+std::vector<std::string> NumberBrackets(const std::string& text)
+{
+    std::vector<std::string> found;
+    const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    size_t i = 0;
+    while (i < text.size())
+    {
+        if (text[i] != '(' && text[i] != '[')
+        {
+            ++i;
+            continue;
+        }
+        size_t j = i + 1;
+        if (j < text.size() && (text[j] == '-' || text[j] == '+'))
+        {
+            ++j;
+        }
+        if (j < text.size() && digit(text[j]))
+        {
+            while (j < text.size() && (digit(text[j]) || std::strchr("., +-", text[j]) != nullptr))
+            {
+                ++j;
+            }
+            if (j < text.size() && (text[j] == ')' || text[j] == ']'))
+            {
+                found.push_back(text.substr(i, j + 1 - i));
+                i = j + 1;
+                continue;
+            }
+        }
+        ++i;
+    }
+    return found;
+}
 
 // A monospaced measure: 7 px a character (a UTF-8 character counts once).
 float Measure(const std::string& text)
@@ -67,11 +104,9 @@ void CheckWrapped(const std::string& text, float width)
     }
     INFO("\"" << text << "\" at " << width << " px");
     REQUIRE(WithoutSpaces(joined) == WithoutSpaces(text));
-    // Pairs and lists of numbers, found by a pattern of their own, that fit the width sit on one line.
-    static const std::regex tuple(R"([\(\[][-+]?[0-9][0-9., +-]*[\)\]])");
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), tuple); it != std::sregex_iterator(); ++it)
+    // Pairs and lists of numbers, found by a scan of their own, that fit the width sit on one line.
+    for (const std::string& found : NumberBrackets(text))
     {
-        const std::string found = it->str();
         if (found.find(' ') == std::string::npos || Measure(found) > width)
         {
             continue;
