@@ -409,9 +409,14 @@ int main(int argc, char** argv)
     }
     int windowWidth = 1280;
     int windowHeight = 800;
-    if (std::sscanf(size.c_str(), "%dx%d", &windowWidth, &windowHeight) != 2 || windowWidth < 320 || windowHeight < 240)
+    // Any size of at least a pixel is taken: one smaller than the panels need is raised to it (KeepMinimumSize), as
+    // the help says, rather than refused.
+    int parsed = 0;
+    if (std::sscanf(size.c_str(), "%dx%d%n", &windowWidth, &windowHeight, &parsed) != 2 ||
+        parsed != static_cast<int>(size.size()) || windowWidth < 1 || windowHeight < 1)
     {
-        std::fprintf(stderr, "satviz: --window: expected WxH of at least 320x240, got \"%s\"\n", size.c_str());
+        std::fprintf(stderr, "satviz: --window: expected WxH, two whole numbers of pixels of at least 1, got \"%s\"\n",
+                     size.c_str());
         return 2;
     }
 

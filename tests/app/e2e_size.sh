@@ -21,8 +21,8 @@ check_size() {
   fi
   echo "$what: ${geometry}"
 }
-start_app "$scene" --window 400x300
-check_size 740 "asked for 400x300"
+start_app "$scene" --window 200x150
+check_size 740 "asked for 200x150"
 xdotool search --name '^satviz$' windowsize 300 200
 check_size 740 "shrunk to 300x200"
 kill "$pid"

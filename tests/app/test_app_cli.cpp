@@ -118,3 +118,28 @@ TEST_CASE("satviz finds its bundled scenes from its own folder, with no path com
     REQUIRE(named.errLines.size() == 1);
     CHECK(named.errLines[0].find("cannot open a window") != std::string::npos);
 }
+
+TEST_CASE("satviz --window takes a size smaller than the panels need, to be raised, and refuses a malformed one",
+          "[app-cli]")
+{
+    // The help says a small size is raised to the smallest the panels need: such a size gets as far as the window.
+    for (const char* size : {"200x150", "1x1", "319x239"})
+    {
+        INFO("--window " << size);
+        const Run run = App(std::string("--window ") + size);
+        CHECK(run.exitCode == 1);
+        REQUIRE(run.errLines.size() == 1);
+        CHECK(run.errLines[0].find("cannot open a window") != std::string::npos);
+    }
+    // What is not a size is refused in one line, before any window.
+    for (const char* size : {"0x600", "800x-1", "800", "800x600x2", "wide"})
+    {
+        INFO("--window " << size);
+        const Run run = App(std::string("--window ") + size);
+        CHECK(run.exitCode == 2);
+        REQUIRE(run.errLines.size() == 1);
+        CHECK(run.errLines[0] ==
+              std::string("satviz: --window: expected WxH, two whole numbers of pixels of at least 1, got \"") + size +
+                  "\"");
+    }
+}
