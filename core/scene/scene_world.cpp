@@ -72,6 +72,27 @@ void CopyWorldState(const World& world, Scene& scene)
     }
 }
 
+std::string StoreWorldState(const World& world, Scene& scene, int steps)
+{
+    const std::string after = "after " + std::to_string(steps) + (steps == 1 ? " step" : " steps");
+    for (size_t i = 0; i < world.bodies.size(); ++i)
+    {
+        const RigidBody& body = world.bodies[i];
+        const double values[] = {body.position.x, body.position.y, body.velocity.x, body.velocity.y,
+                                 body.angularVelocity};
+        for (const double v : values)
+        {
+            if (!(std::fabs(v) <= kMaxSceneValue))
+            {
+                return "bodies[" + std::to_string(i) + "] (\"" + scene.bodies[i].name + "\"): " + after +
+                       " its state is beyond what a scene holds (at most 1e12)";
+            }
+        }
+    }
+    CopyWorldState(world, scene);
+    return {};
+}
+
 std::string SimulateScene(Scene& scene, int steps)
 {
     if (steps < 0)
@@ -91,24 +112,7 @@ std::string SimulateScene(Scene& scene, int steps)
     {
         Step(world, scene.world.dt);
     }
-    // The scene keeps what it can hold, as a file would: a state beyond that is refused whole.
-    const std::string after = "after " + std::to_string(steps) + (steps == 1 ? " step" : " steps");
-    for (size_t i = 0; i < world.bodies.size(); ++i)
-    {
-        const RigidBody& body = world.bodies[i];
-        const double values[] = {body.position.x, body.position.y, body.velocity.x, body.velocity.y,
-                                 body.angularVelocity};
-        for (const double v : values)
-        {
-            if (!(std::fabs(v) <= kMaxSceneValue))
-            {
-                return "bodies[" + std::to_string(i) + "] (\"" + scene.bodies[i].name + "\"): " + after +
-                       " its state is beyond what a scene holds (at most 1e12)";
-            }
-        }
-    }
-    CopyWorldState(world, scene);
-    return {};
+    return StoreWorldState(world, scene, steps);
 }
 
 } // namespace satviz

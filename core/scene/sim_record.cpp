@@ -84,24 +84,7 @@ std::string SimulateSceneRecorded(Scene& scene, int steps, int pairA, int pairB,
     {
         StepRecord(record);
     }
-    // The scene keeps what it can hold, by SimulateScene's rule: a state beyond that is refused whole.
-    const std::string after = "after " + std::to_string(steps) + (steps == 1 ? " step" : " steps");
-    for (size_t i = 0; i < record.world.bodies.size(); ++i)
-    {
-        const RigidBody& body = record.world.bodies[i];
-        const double values[] = {body.position.x, body.position.y, body.velocity.x, body.velocity.y,
-                                 body.angularVelocity};
-        for (const double v : values)
-        {
-            if (!(std::fabs(v) <= kMaxSceneValue))
-            {
-                return "bodies[" + std::to_string(i) + "] (\"" + scene.bodies[i].name + "\"): " + after +
-                       " its state is beyond what a scene holds (at most 1e12)";
-            }
-        }
-    }
-    CopyWorldState(record.world, scene);
-    return {};
+    return StoreWorldState(record.world, scene, steps);
 }
 
 } // namespace satviz

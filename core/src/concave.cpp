@@ -165,6 +165,45 @@ bool SurfaceManifold(const Side<S>& a, int i, const Side<S>& b, int j, ManifoldT
     return true;
 }
 
+// The manifold of a concave pair keeps, of the contacts its piece pairs found along the deciding normal, the two
+// farthest apart across that normal: the pair that spans the contact, so a body resting on several pieces is held
+// at both ends as on one face. Piece pairs whose normal differs (beyond round-off) push another way and give none,
+// nor do those the caller leaves out.
+template <typename S, typename Candidate, typename LeftOut>
+void KeepWidestContacts(const std::vector<Candidate>& candidates, const Candidate& deciding, LeftOut leftOut,
+                        ManifoldT<S>& out)
+{
+    const Vec2T<S> normal = deciding.manifold.normal;
+    std::vector<ContactPointT<S>> points;
+    for (const Candidate& c : candidates)
+    {
+        if (leftOut(c) || Dot(c.manifold.normal, normal) < S(1) - S(64) * std::numeric_limits<S>::epsilon())
+        {
+            continue;
+        }
+        for (int k = 0; k < c.manifold.contactCount; ++k)
+        {
+            points.push_back(c.manifold.contacts[k]);
+        }
+    }
+    if (points.empty())
+    {
+        return;
+    }
+    const Vec2T<S> tangent = LeftPerp(normal);
+    const Vec2T<S> origin = deciding.manifold.contacts[0].point;
+    auto along = [&](const ContactPointT<S>& p) { return Dot(p.point - origin, tangent); };
+    const auto [low, high] =
+        std::minmax_element(points.begin(), points.end(), [&](const auto& p, const auto& q) { return along(p) < along(q); });
+    out.contacts[0] = *low;
+    out.contactCount = 1;
+    if (along(*high) > along(*low))
+    {
+        out.contacts[1] = *high;
+        out.contactCount = 2;
+    }
+}
+
 template <typename S>
 bool OverlapSides(const Side<S>& a, const Side<S>& b)
 {
@@ -276,38 +315,11 @@ ConcaveManifoldT<S> CollideSides(const Side<S>& a, const Side<S>& b)
             deciding = &c;
         }
     }
-    const ManifoldT<S>& best = deciding->manifold;
-    result.manifold = best;
+    result.manifold = deciding->manifold;
     result.pieceA = a.Piece(deciding->i);
     result.pieceB = b.Piece(deciding->j);
-    // Contacts of the pairs left with the deciding normal: the two farthest apart across the normal.
-    std::vector<ContactPointT<S>> points;
-    for (const Candidate& c : overlapping)
-    {
-        if ((c.seam && anyOnSurface) ||
-            Dot(c.manifold.normal, best.normal) < S(1) - S(64) * std::numeric_limits<S>::epsilon())
-        {
-            continue;
-        }
-        for (int k = 0; k < c.manifold.contactCount; ++k)
-        {
-            points.push_back(c.manifold.contacts[k]);
-        }
-    }
-    if (!points.empty())
-    {
-        const Vec2T<S> tangent = LeftPerp(best.normal);
-        auto along = [&](const ContactPointT<S>& p) { return Dot(p.point - best.contacts[0].point, tangent); };
-        const auto [low, high] = std::minmax_element(points.begin(), points.end(),
-                                                     [&](const auto& p, const auto& q) { return along(p) < along(q); });
-        result.manifold.contacts[0] = *low;
-        result.manifold.contactCount = 1;
-        if (along(*high) > along(*low))
-        {
-            result.manifold.contacts[1] = *high;
-            result.manifold.contactCount = 2;
-        }
-    }
+    KeepWidestContacts(overlapping, *deciding, [&](const Candidate& c) { return c.seam && anyOnSurface; },
+                       result.manifold);
     return result;
 }
 
@@ -369,31 +381,7 @@ ConcaveManifoldT<S> CollideWithinSides(const Side<S>& a, const Side<S>& b, S mar
     result.manifold = deciding->manifold;
     result.pieceA = a.Piece(deciding->i);
     result.pieceB = b.Piece(deciding->j);
-    const Vec2T<S> normal = deciding->manifold.normal;
-    std::vector<ContactPointT<S>> points;
-    for (const Candidate& c : near)
-    {
-        if (Dot(c.manifold.normal, normal) < S(1) - S(64) * std::numeric_limits<S>::epsilon())
-        {
-            continue;
-        }
-        for (int k = 0; k < c.manifold.contactCount; ++k)
-        {
-            points.push_back(c.manifold.contacts[k]);
-        }
-    }
-    const Vec2T<S> tangent = LeftPerp(normal);
-    const Vec2T<S> origin = deciding->manifold.contacts[0].point;
-    auto along = [&](const ContactPointT<S>& p) { return Dot(p.point - origin, tangent); };
-    const auto [low, high] =
-        std::minmax_element(points.begin(), points.end(), [&](const auto& p, const auto& q) { return along(p) < along(q); });
-    result.manifold.contacts[0] = *low;
-    result.manifold.contactCount = 1;
-    if (along(*high) > along(*low))
-    {
-        result.manifold.contacts[1] = *high;
-        result.manifold.contactCount = 2;
-    }
+    KeepWidestContacts(near, *deciding, [](const Candidate&) { return false; }, result.manifold);
     return result;
 }
 

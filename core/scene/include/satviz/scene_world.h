@@ -30,6 +30,11 @@ World MakeWorld(const Scene& scene);
 /// been made from the scene (the same number of bodies).
 void CopyWorldState(const World& world, Scene& scene);
 
+/// CopyWorldState for a world stepped `steps` times, unless a body's position, velocity or angular velocity is
+/// beyond what a scene holds (kMaxSceneValue): then it returns that problem, naming the body and the step count,
+/// and leaves the scene unchanged, as a file keeps a state whole or not at all. Returns "" when copied.
+std::string StoreWorldState(const World& world, Scene& scene, int steps);
+
 /// Steps the scene as a world `steps` (>= 0) times by its dt and copies the state back: MakeWorld, Step,
 /// CopyWorldState. What satviz-render and the app do for a view's sim_steps. Returns "" on success, else the
 /// problem, the scene unchanged: a scene that fails ValidateSceneWorld, a negative count, or a state the scene
