@@ -685,9 +685,29 @@ void Panels::StepControls()
     {
         // Only the rows in sight are built: a polygon of 100 000 vertices has as many steps.
         const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
-        if (ImGui::IsWindowAppearing())
+        // The row of the step shown stays in sight when the step or the list changes (an edit, an undo, a change of
+        // view rebuilds the list, and a student on the verdict stays on it, whose row may now be far down): the list
+        // follows it until it is in sight, which may take a frame while the list grows. A scroll by the user leaves
+        // the step as it is and is kept.
+        const int steps = study.StepCount();
+        if (ImGui::IsWindowAppearing() || viewer.Step() != m_listStep || steps != m_listSteps)
         {
-            ImGui::SetScrollY(std::max(0.0f, (static_cast<float>(viewer.Step()) - 4.0f) * rowHeight));
+            m_listStep = viewer.Step();
+            m_listSteps = steps;
+            m_listFollow = true;
+        }
+        if (m_listFollow)
+        {
+            const float top = static_cast<float>(viewer.Step()) * rowHeight;
+            const float seen = ImGui::GetWindowHeight() - 2.0f * ImGui::GetStyle().WindowPadding.y;
+            if (top >= ImGui::GetScrollY() && top + ImGui::GetTextLineHeight() <= ImGui::GetScrollY() + seen)
+            {
+                m_listFollow = false;
+            }
+            else
+            {
+                ImGui::SetScrollY(std::max(0.0f, (static_cast<float>(viewer.Step()) - 4.0f) * rowHeight));
+            }
         }
         ImGuiListClipper clipper;
         clipper.Begin(study.StepCount(), rowHeight);

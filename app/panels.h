@@ -130,6 +130,9 @@ class Panels
     bool m_askOpenUnsaved = false;
     bool m_openAfterSaveAs = false; // the Save as popup was opened by "Save and open"
     bool m_lessonScrollTop = false;
+    int m_listStep = -1;       // the step and the number of steps the step list last showed
+    int m_listSteps = -1;
+    bool m_listFollow = false; // the step list scrolls until the row of the step shown is in sight
     char m_pathBuffer[1024] = {};
     // Announce: where each item named was last frame, and whether its place was printed.
     std::map<std::string, ImVec2> m_announceAt;

@@ -2506,3 +2506,77 @@ TEST_CASE("The window's canvas clears large opaque rectangles and fills outlined
     CHECK(smooth - plain == 5);
     ImGui::Render();
 }
+
+// The rows of the step list in sight: [first, last] by its scroll and height; -1, -1 when the list is not shown.
+std::pair<int, int> StepRowsInSight()
+{
+    for (ImGuiWindow* window : ImGui::GetCurrentContext()->Windows)
+    {
+        if (window->Active && std::string(window->Name).find("/##axes_") != std::string::npos)
+        {
+            // Row k's text spans [start + k * row, start + k * row + text] on the screen; in sight when the list's
+            // clip rectangle holds it whole.
+            const float row = ImGui::GetTextLineHeightWithSpacing();
+            const float text = ImGui::GetTextLineHeight();
+            const float start = window->Pos.y + window->WindowPadding.y - window->Scroll.y;
+            const float low = window->InnerClipRect.Min.y;
+            const float high = window->InnerClipRect.Max.y;
+            return {static_cast<int>(std::ceil((low - start) / row - 1e-3f)),
+                    static_cast<int>(std::floor((high - start - text) / row + 1e-3f))};
+        }
+    }
+    return {-1, -1};
+}
+
+TEST_CASE("Undo and redo keep a student reading the verdict on the verdict, and its row in the step list in sight",
+          "[app]")
+{
+    for (const std::string scene : {"many_sides.json", "separated_triangle.json", "overlapping_boxes.json",
+                                    "concave/l18_notch.json", "concave/l18_across.json"})
+    {
+        INFO(scene);
+        Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + scene);
+        auto onVerdict = [&](const char* after) {
+            INFO("after " << after);
+            CHECK(h.View().Step() == h.View().VerdictStep());
+            if (h.View().Setup().figure.kind != FigureKind::Pieces)
+            {
+                // The list has a row per step of the pair's test; the verdict's must be in sight.
+                h.Frames(2);
+                const auto [first, last] = StepRowsInSight();
+                INFO("rows " << first << " to " << last << " in sight, of " << h.View().Setup().study.StepCount());
+                CHECK(first <= h.View().Step());
+                CHECK(h.View().Step() <= last);
+            }
+        };
+        onVerdict("opening");
+        // Far off, the pair is apart on its first axis, or one of the first few: a short list. Undo brings the long
+        // one back, on its verdict.
+        const int moved = h.View().TestsPair() ? h.View().Setup().study.bodyB : 1;
+        const ImVec2 from = h.OnScreen(Centroid(h.Doc().GetScene().bodies[static_cast<size_t>(moved)]));
+        h.Drag(from, ImVec2(from.x + 150.0f, from.y + 10.0f));
+        onVerdict("a drag");
+        h.Key(kZ, true);
+        onVerdict("undoing the drag");
+        h.Key(kY, true);
+        onVerdict("redoing the drag");
+        h.Key(kZ, true);
+        onVerdict("undoing it again");
+        h.app->SetStepView(StepView::Faces);
+        onVerdict("the face view");
+        h.app->SetQuery(ViewQuery::Sweep);
+        onVerdict("the swept test");
+        h.app->SetLayers(h.View().Choices().layers ^ kLayerLabels);
+        onVerdict("a layer");
+        for (int i = 0; i < 4; ++i)
+        {
+            h.Key(kZ, true);
+            onVerdict("an undo");
+        }
+        for (int i = 0; i < 4; ++i)
+        {
+            h.Key(kY, true);
+            onVerdict("a redo");
+        }
+    }
+}
