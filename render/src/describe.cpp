@@ -870,6 +870,25 @@ std::string FormatNumber(double value)
     return text == "-0.00" ? "0.00" : text;
 }
 
+std::string FormatNumber(double value, int significant)
+{
+    // Only from 0.01 to 0.1 do three decimals give fewer than three significant digits: below, FormatNumber gives
+    // three significant digits; above, three decimals are three digits or more.
+    const double magnitude = std::fabs(value);
+    if (!(magnitude >= 0.01 && magnitude < 0.1))
+    {
+        return FormatNumber(value);
+    }
+    const int decimals = 1 + std::clamp(significant, 1, 3);
+    if (decimals <= 3)
+    {
+        return FormatNumber(value);
+    }
+    char buffer[48];
+    std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, value);
+    return buffer;
+}
+
 std::string FormatPair(double x, double y, const char* open, const char* close)
 {
     std::string a = FormatNumber(x);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace satviz
 {
@@ -20,13 +21,41 @@ double Clean(double value, double scale)
 
 std::string N(double value)
 {
-    return FormatNumber(Clean(value, value));
+    return FormatNumber(Clean(value, value), kResponseDigits);
 }
 
 std::string V(Vec2 v)
 {
     const double scale = std::max(std::fabs(v.x), std::fabs(v.y));
-    return "(" + FormatNumber(Clean(v.x, scale)) + ", " + FormatNumber(Clean(v.y, scale)) + ")";
+    return "(" + FormatNumber(Clean(v.x, scale), kResponseDigits) + ", " +
+           FormatNumber(Clean(v.y, scale), kResponseDigits) + ")";
+}
+
+// A number as N prints it, read back: a speed printed as 0.00 is no approach.
+double Shown(double value)
+{
+    return std::strtod(N(value).c_str(), nullptr);
+}
+
+// The unit of the last digit of a printed number: 0.01 for 0.45, 1e-5 for 0.00511, 1e-6 for 2.5e-5.
+double LastDigit(const std::string& text)
+{
+    const size_t e = text.find('e');
+    const std::string mantissa = text.substr(0, e);
+    const int exponent = e == std::string::npos ? 0 : std::atoi(text.c_str() + e + 1);
+    const size_t point = mantissa.find('.');
+    const int decimals = point == std::string::npos ? 0 : static_cast<int>(mantissa.size() - point - 1);
+    return std::pow(10.0, exponent - decimals);
+}
+
+// The result of a computation a sentence writes out ("0.50 x 0.0161 = ..."), `byHand` being the computation redone
+// from its printed numbers: the solver's value when that agrees with it to within one in its last digit, else
+// `byHand`, so that a student redoing it gets the printed result. The rounding of the numbers before it can move a
+// product of small numbers by more than its last digit (0.50 x 0.0161 = 0.00805, the solver's 0.00803).
+std::string Result(double byHand, double value)
+{
+    const std::string text = N(value);
+    return std::fabs(byHand - Shown(value)) <= LastDigit(text) * (1.0 + 1e-9) ? text : N(byHand);
 }
 
 const ContactPointSolve* LastPass(const ContactSolveTrace& trace, int point)
@@ -131,7 +160,7 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
     const double vn = trace.approachSpeed[0];
     std::string approach =
         "vn = (v" + b + " - v" + a + ") . n at the point = " + N(vn) + " m/s, before the step's " + "gravity: ";
-    approach += vn < 0.0 ? "they approach at " + N(-vn) + " m/s." : "they do not approach.";
+    approach += Shown(vn) < 0.0 ? "they approach at " + N(-vn) + " m/s." : "they do not approach.";
     if (points == 2)
     {
         approach += " At point 2: " + N(trace.approachSpeed[1]) + " m/s.";
@@ -149,9 +178,11 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
         const double rnA = Cross(rA, trace.normal), rnB = Cross(rB, trace.normal);
         turning = rnA * rnA * startA.invInertia + rnB * rnB * startB.invInertia;
     }
-    std::string mass = "m_eff = 1 / (1/m" + a + " + 1/m" + b + " + (rA x n)^2/IA + (rB x n)^2/IB) = 1 / (" +
-                       N(bodyA.invMass) + " + " + N(bodyB.invMass) + " + " + N(turning) + ") = " +
-                       N(trace.normalMass[0]) + " kg";
+    std::string mass =
+        "m_eff = 1 / (1/m" + a + " + 1/m" + b + " + (rA x n)^2/IA + (rB x n)^2/IB) = 1 / (" + N(bodyA.invMass) + " + " +
+        N(bodyB.invMass) + " + " + N(turning) +
+        ") = " + Result(1.0 / (Shown(bodyA.invMass) + Shown(bodyB.invMass) + Shown(turning)), trace.normalMass[0]) +
+        " kg";
     mass += bodyA.invMass == 0.0 || bodyB.invMass == 0.0 ? " (a static body adds 0)." : ".";
     steps.push_back({"Effective mass", mass});
 
@@ -160,7 +191,8 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
     if (trace.bounceSpeed[0] > 0.0)
     {
         target = "e = " + N(trace.restitution) + " and the approach " + N(-vn) + " m/s is above the " + N(threshold) +
-                 " m/s threshold: the point is to leave at e x " + N(-vn) + " = " + N(trace.bounceSpeed[0]) + " m/s.";
+                 " m/s threshold: the point is to leave at e x " + N(-vn) + " = " +
+                 Result(Shown(trace.restitution) * Shown(-vn), trace.bounceSpeed[0]) + " m/s.";
     }
     else
     {
@@ -187,23 +219,55 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
         trace.warmNormal[0] > 0.0 ? " (the passes start from last step's " + N(trace.warmNormal[0]) + ")." : ".";
     steps.push_back({"Normal impulse", compression});
 
-    if (trace.restitutionImpulse[0] > 0.0)
+    const double jr = trace.restitutionImpulse[0];
+    if (jr > 0.0)
     {
-        steps.push_back({"Bounce", "Restitution adds " + N(trace.restitutionFactor[0]) + " x " + N(jn) + " = " +
-                                       N(trace.restitutionImpulse[0]) + " N s: in all j = " + N(jn) + " + " +
-                                       N(trace.restitutionImpulse[0]) + " = " + N(jn + trace.restitutionImpulse[0]) +
-                                       " N s."});
+        // The restitution impulse is the factor times jn unless that would return more than the contact alone needs
+        // for its bounce, or give the bodies more energy than they had: then it is less, and the sentence says so.
+        const double asked = trace.restitutionFactor[0] * jn;
+        const std::string askedText = Result(Shown(trace.restitutionFactor[0]) * Shown(jn), asked);
+        const bool whole = std::fabs(jr - trace.restitutionFactor[0] * jn) <= 1e-9 * std::max(jr, 1e-300);
+        std::string bounce = "Restitution adds " + N(trace.restitutionFactor[0]) + " x " + N(jn) + " = ";
+        bounce += whole ? askedText + " N s"
+                        : askedText + " N s, held to " + N(jr) +
+                              " N s: no more than the contact alone needs for its bounce, nor than would give the "
+                              "bodies energy";
+        const std::string jrText = whole ? askedText : N(jr);
+        const double shownJr = std::strtod(jrText.c_str(), nullptr);
+        bounce += ": in all j = " + N(jn) + " + " + jrText + " = " + Result(Shown(jn) + shownJr, jn + jr) + " N s.";
+        steps.push_back({"Bounce", bounce});
     }
 
     if (last != nullptr)
     {
         const double needed = std::fabs(last->tangentImpulseWanted);
+        // Friction comes first in a pass: its limits are the coefficients times the normal impulse as the pass
+        // began, the one the pass before left (or last step's, for the first pass).
+        const ContactPointSolve* before = nullptr;
+        for (const ContactPointSolve& pass : trace.passes)
+        {
+            if (&pass != last && pass.point == 0 && pass.pass >= 0 && pass.pass < last->pass)
+            {
+                before = &pass;
+            }
+        }
+        const double jnStart = before != nullptr ? before->normalImpulse : trace.warmNormal[0];
+        const ContactMaterial material =
+            contact != nullptr ? contact->material : CombineMaterials(bodyA.material, bodyB.material);
+        const std::string startJn =
+            N(jnStart) == N(jn) ? "" : ", with jn as the last pass began (friction comes first in a pass)";
+        const std::string limit = Result(Shown(material.staticFriction) * Shown(jnStart), last->staticLimit);
+        // Printed alike, the two differ beyond the digits shown: saying so keeps "beyond" from reading as a slip.
+        const std::string close = N(needed) == limit ? " (by less than the digits shown)" : "";
         std::string friction = "Stopping the slip (" + N(last->tangentSpeed) + " m/s) needs |jt| = " + N(needed) +
-                               " N s; the static limit mu_s jn is " + N(last->staticLimit) + ": ";
-        friction += last->stuck ? "within it, so the point sticks, and friction takes " +
-                                      N(std::fabs(last->tangentImpulse)) + " N s."
-                                : "beyond it, so the point slides, and friction gives the dynamic limit mu jn = " +
-                                      N(last->dynamicLimit) + " N s.";
+                               " N s; the static limit is mu_s jn = " + N(material.staticFriction) + " x " +
+                               N(jnStart) + " = " + limit + " N s" + startJn + ": ";
+        friction += last->stuck
+                        ? "within it" + close + ", so the point sticks, and friction takes " +
+                              N(std::fabs(last->tangentImpulse)) + " N s."
+                        : "beyond it" + close + ", so the point slides, and friction gives the dynamic limit mu jn = " +
+                              N(material.friction) + " x " + N(jnStart) + " = " +
+                              Result(Shown(material.friction) * Shown(jnStart), last->dynamicLimit) + " N s.";
         steps.push_back({last->stuck ? "Friction: sticks" : "Friction: slides", friction});
     }
 

@@ -94,8 +94,9 @@ void PaintResponseScene(Canvas& canvas, LabelPlacer& labels, const View& view, c
             const ScreenPoint tip{at.x + static_cast<float>(d.x) * length, at.y - static_cast<float>(d.y) * length};
             labels.Reserve(Arrow(canvas, at, tip, color, 2.5f, 11.0f));
             labels.ReserveLine(at, tip, 4.5f);
-            labels.Place(tip, name + " = " + FormatNumber(std::fabs(impulse)) + " N s", TextStyle::Label, color,
-                         static_cast<float>(d.x), static_cast<float>(-d.y), 6.0f, LabelRank::Verdict);
+            labels.Place(tip, name + " = " + FormatNumber(std::fabs(impulse), kResponseDigits) + " N s",
+                         TextStyle::Label, color, static_cast<float>(d.x), static_cast<float>(-d.y), 6.0f,
+                         LabelRank::Verdict);
         };
         const std::string suffix = trace.pointCount == 2 ? std::to_string(p + 1) : "";
         arrow(n, normal[p], palette::kResult, "j" + suffix);
@@ -157,9 +158,9 @@ void PaintResponsePanel(Canvas& canvas, const Scene& scene, const SimRecord& sim
         const float x = textLeft + column * static_cast<float>(k);
         const bool clamped = passes.wanted[k] != passes.kept[k];
         canvas.Text({x, rows[0]}, std::to_string(k + 1), TextStyle::Label, palette::kMuted);
-        canvas.Text({x, rows[1]}, FormatNumber(passes.wanted[k]), TextStyle::Label,
+        canvas.Text({x, rows[1]}, FormatNumber(passes.wanted[k], kResponseDigits), TextStyle::Label,
                     clamped ? palette::kResult : palette::kInk);
-        canvas.Text({x, rows[2]}, FormatNumber(passes.kept[k]), TextStyle::Label, palette::kInk);
+        canvas.Text({x, rows[2]}, FormatNumber(passes.kept[k], kResponseDigits), TextStyle::Label, palette::kInk);
     }
 }
 

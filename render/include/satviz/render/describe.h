@@ -13,6 +13,11 @@ namespace satviz
 /// significant digits otherwise, exponents as written (1.41e6), never -0, and an exact 0 as 0.00.
 std::string FormatNumber(double value);
 
+/// FormatNumber with at least `significant` (up to 3) significant digits: from 0.01 to 0.1, where its three
+/// decimals give fewer (0.0102 shows as 0.01), four decimals, so that a sentence that multiplies small numbers can
+/// be checked by hand from the numbers it prints (0.50 x 0.0102 = 0.0051). Otherwise the same as FormatNumber(value).
+std::string FormatNumber(double value, int significant);
+
 /// Two numbers as FormatNumber shows them, written side by side with as many decimals each: "(-0.342, 0.940)", not
 /// "(-0.342, 0.94)". Only the trailing 0 FormatNumber drops is put back, so the values read the same.
 std::string FormatPair(double x, double y, const char* open = "(", const char* close = ")");

@@ -13,6 +13,10 @@
 namespace satviz
 {
 
+/// The significant digits the response's numbers have at least, in its sentences, its arrows' labels and its table
+/// of passes alike: FormatNumber(value, kResponseDigits) shows an impulse of 0.0102 as 0.0102, not 0.01.
+constexpr int kResponseDigits = 3;
+
 /// One step of the response: a short title ("Approach", "Effective mass", ...) and its sentence.
 struct ResponseStep
 {
