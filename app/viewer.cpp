@@ -234,12 +234,26 @@ void Viewer::SetTime(double time)
     ShowStep(m_step);
 }
 
+void Viewer::HoldCamera()
+{
+    m_cameraFit = false;
+    Hold();
+}
+
+void Viewer::Hold()
+{
+    m_held = m_camera;
+    m_held.width = m_canvasWidth;
+    m_held.height = m_canvasHeight;
+}
+
 void Viewer::SetCamera(Vec2 center, double zoom)
 {
     m_camera.center = center;
     m_camera.zoom = zoom;
     m_cameraFit = false;
     m_framed = false;
+    Hold();
 }
 
 void Viewer::PanCamera(float dx, float dy)
@@ -247,6 +261,7 @@ void Viewer::PanCamera(float dx, float dy)
     m_camera = Pan(m_camera, dx, dy);
     m_cameraFit = false;
     m_framed = false;
+    Hold();
 }
 
 void Viewer::ZoomCamera(ScreenPoint fixed, double factor)
@@ -254,6 +269,7 @@ void Viewer::ZoomCamera(ScreenPoint fixed, double factor)
     m_camera = ZoomAbout(m_camera, fixed, factor);
     m_cameraFit = false;
     m_framed = false;
+    Hold();
 }
 
 bool Viewer::PlaceCanvas(ScreenPoint origin, int width, int height)
@@ -262,6 +278,14 @@ bool Viewer::PlaceCanvas(ScreenPoint origin, int width, int height)
     if (m_canvasSized && width == m_canvasWidth && height == m_canvasHeight)
     {
         return false;
+    }
+    if (m_canvasSized && !m_cameraFit && !m_framed && m_held.width > 0 && m_held.height > 0)
+    {
+        // A camera held where the user left it (a drag, a pan, a zoom) shows the world it showed then, scaled to the
+        // new canvas about its centre: a lesson column that appears beside it, or a smaller window, does not cut off
+        // what was in sight, and the canvas back at its size gives the same view again.
+        m_camera.zoom = m_held.zoom * std::min(static_cast<double>(width) / m_held.width,
+                                               static_cast<double>(height) / m_held.height);
     }
     m_canvasWidth = width;
     m_canvasHeight = height;

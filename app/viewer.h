@@ -103,7 +103,7 @@ class Viewer
         m_framed = false;
     }
     /// Holds the camera where it is (the scene changes under the pointer).
-    void HoldCamera() { m_cameraFit = false; }
+    void HoldCamera();
     /// Puts the camera's centre at world point `center`, `zoom` pixels per unit, and holds it there.
     void SetCamera(Vec2 center, double zoom);
     /// Moves the camera so the world follows a drag of (dx, dy) pixels, and holds it there.
@@ -112,7 +112,8 @@ class Viewer
     void ZoomCamera(ScreenPoint fixed, double factor);
 
     /// Places the canvas at `origin` in the window, `width` x `height` pixels; true when its size changed (or on
-    /// its first frame): Refresh then fits the figure to it.
+    /// its first frame): Refresh then fits the figure to it. A held camera keeps its centre and scales its zoom by
+    /// the canvas's change, so that what was in sight stays in sight.
     bool PlaceCanvas(ScreenPoint origin, int width, int height);
     /// The canvas's top-left corner in the window, in pixels.
     ScreenPoint CanvasOrigin() const { return m_canvasOrigin; }
@@ -139,6 +140,8 @@ class Viewer
     };
 
     void Adopt(FigureSetup fresh, Scene studied);
+    // Keeps the camera as the user leaves it, with the canvas size of that moment (m_held).
+    void Hold();
 
     int m_backgroundVertices;
     const SimRecord* m_sim = nullptr;
@@ -156,6 +159,7 @@ class Viewer
     bool m_cameraFit = true;
     bool m_framed = false;
     SceneView m_frame; // the scene's own framing, while m_framed
+    View m_held{{}, 0.0, 0, 0}; // the camera as the user held it, and the canvas size then (PlaceCanvas scales it)
     ScreenPoint m_canvasOrigin{};
     int m_canvasWidth = 800;
     int m_canvasHeight = 600;

@@ -1789,6 +1789,23 @@ TEST_CASE("Opening a lesson with unsaved changes shows it and asks before its sc
     REQUIRE(h.ClickButton("Unsaved changes before opening", "Cancel"));
     CHECK(h.Doc().Dirty());
     CHECK(h.BodyNamed("B").position == moved);
+    // The scene still open is shown whole on the canvas left beside the lesson, narrower than the one it was dragged
+    // on: every corner of both boxes lies inside it.
+    h.Frames(2);
+    REQUIRE(h.View().CanvasWidth() < 900);
+    for (const Body& body : h.Doc().GetScene().bodies)
+    {
+        for (const Vec2& v : body.shape.polygon.Vertices())
+        {
+            const ScreenPoint p = ToScreen(h.View().Camera(), TransformPoint(body.Xf(), v));
+            INFO(body.name << " corner at " << p.x << "," << p.y << " on a canvas of " << h.View().CanvasWidth() << "x"
+                           << h.View().CanvasHeight());
+            CHECK(p.x >= 0.0f);
+            CHECK(p.x <= static_cast<float>(h.View().CanvasWidth()));
+            CHECK(p.y >= 0.0f);
+            CHECK(p.y <= static_cast<float>(h.View().CanvasHeight()));
+        }
+    }
     // F1 and a lesson in the same frame as the question: the help window appears after it too.
     h.app->CloseLesson();
     h.Frames(2);
@@ -1905,16 +1922,26 @@ TEST_CASE("A scene that frames itself keeps its framing, scaled to the canvas le
     h.Frames(3);
     CHECK(h.View().Camera().zoom > narrow);
     CHECK(h.View().CameraFramed());
-    // Lesson 17's own first scene, open when the lesson opens again: the lesson keeps the view the student set.
+    // Lesson 17's own first scene, open when the lesson opens again: the lesson keeps the view the student set, its
+    // centre and all it showed, scaled to the narrower canvas.
     REQUIRE(h.app->RequestOpen(h.app->Lessons()[16].scenes.front()));
     h.Frames(3);
     const ImVec2 empty(h.CanvasOrigin().x + 20.0f, h.CanvasOrigin().y + 300.0f);
     h.Drag(empty, ImVec2(empty.x + 40.0f, empty.y));
     CHECK(!h.View().CameraFramed());
-    const double held = h.View().Camera().zoom;
+    const View held = h.View().Camera();
     REQUIRE(h.app->OpenLesson(16));
     h.Frames(3);
-    CHECK(h.View().Camera().zoom == held);
+    const View narrowed = h.View().Camera();
+    REQUIRE(narrowed.width < held.width);
+    CHECK(narrowed.center == held.center);
+    CHECK(narrowed.width / narrowed.zoom >= held.width / held.zoom * (1.0 - 1e-12));
+    CHECK(narrowed.height / narrowed.zoom >= held.height / held.zoom * (1.0 - 1e-12));
+    // Closed again, the canvas shows the view as the student left it.
+    h.app->CloseLesson();
+    h.Frames(3);
+    CHECK(h.View().Camera().center == held.center);
+    CHECK(h.View().Camera().zoom == Approx(held.zoom).epsilon(1e-12));
 }
 
 TEST_CASE("The Numbers panel gives the deciding axis as the figure and the lessons do, the normal as satviz-query",
