@@ -4,6 +4,7 @@
 #include "time_of_impact.h"
 
 #include "body_queries.h"
+#include "parallel_for.h"
 #include "world_lookup.h"
 
 #include <satviz/collide.h>
@@ -26,6 +27,10 @@ bool SkipSlowPair(const void* context, int i, int j)
 
 // Most passes of conservative advancement for one pair; a pair still apart after them counts as a miss.
 constexpr int kMaxAdvances = 64;
+
+// Bodies that one piece of parallel work takes at least: fewer cost more to hand to another thread than to move here.
+constexpr int kBodiesPerPiece = 128;
+constexpr int kPairsPerPiece = 32; // the same for pairs to sweep
 
 } // namespace
 
@@ -194,7 +199,7 @@ double TimeOfImpactStage::CloseSpeed(double t) const
 }
 
 // Conservative advancement of a pair whose turning matters, from t0: see the outline in the header.
-bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
+bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event) const
 {
     const RigidBody& a = m_world.bodies[i];
     const RigidBody& b = m_world.bodies[j];
@@ -286,14 +291,28 @@ bool TimeOfImpactStage::Advance(int i, int j, double t0, Event& event)
 
 void TimeOfImpactStage::SweepPair(int i, int j, bool anySpeed)
 {
+    Event event;
+    const SweepOutcome outcome = SweepPairEvent(i, j, anySpeed, event);
+    if (outcome != SweepOutcome::Skipped)
+    {
+        ++m_world.counts.swept;
+    }
+    if (outcome == SweepOutcome::Hit)
+    {
+        m_queue.push(event);
+    }
+}
+
+TimeOfImpactStage::SweepOutcome TimeOfImpactStage::SweepPairEvent(int i, int j, bool anySpeed, Event& event) const
+{
     if (!anySpeed && !m_fast[i] && !m_fast[j])
     {
-        return;
+        return SweepOutcome::Skipped;
     }
     const double t0 = std::max(m_motion[i].t, m_motion[j].t);
     if (t0 >= 1.0)
     {
-        return;
+        return SweepOutcome::Skipped;
     }
     if (i > j)
     {
@@ -310,7 +329,7 @@ void TimeOfImpactStage::SweepPair(int i, int j, bool anySpeed)
     if (!anySpeed && m_world.settings.sweepOnlyFast &&
         !OutrunsPair(m_world.settings, a, mi.v, mi.w, b, mj.v, mj.w, span))
     {
-        return;
+        return SweepOutcome::Skipped;
     }
     // Where each body can be over the rest of the step: the box of its outer circle along the path of its centre
     // (a body at rest, its own box). The swept broadphase drew its boxes about the centre at the start, grown by the
@@ -318,10 +337,8 @@ void TimeOfImpactStage::SweepPair(int i, int j, bool anySpeed)
     // are apart by them.
     if (!AabbOverlap(PathBox(i, t0), PathBox(j, t0)))
     {
-        return;
+        return SweepOutcome::Skipped;
     }
-    ++m_world.counts.swept;
-    Event event;
     if (turning <= 0.25 * m_world.settings.linearSlop)
     {
         const Transform xi = PoseAt(i, t0);
@@ -349,19 +366,41 @@ void TimeOfImpactStage::SweepPair(int i, int j, bool anySpeed)
             // contact takes it, and a resting pile does not turn into a string of tiny hits.
             if (!Approaching(i, j, t0, event.normal, event.points, event.count, CloseSpeed(t0)))
             {
-                return;
+                return SweepOutcome::Missed;
             }
         }
         else
         {
-            return;
+            return SweepOutcome::Missed;
         }
     }
     else if (!Advance(i, j, t0, event))
     {
-        return;
+        return SweepOutcome::Missed;
     }
-    m_queue.push(event);
+    return SweepOutcome::Hit;
+}
+
+// A pair the step's contacts hold is left to them until a hit changes one of its bodies' course. They hold it if the
+// solver left its points closing no faster than the slop (and a speculative point's gap) allows to the step's end,
+// and neither body turning faster than a contact follows (WorldSettings::speculativeTurn): a contact found at the
+// start of the step follows a turn only to first order, and the passes do not always bring a small body pressed by
+// a heavy one to a stop against the floor.
+bool TimeOfImpactStage::HeldByContact(int i, int j) const
+{
+    const WorldContact* contact = ContactOf(m_world.contacts, i, j);
+    if (contact == nullptr || TurnsFast(i) || TurnsFast(j))
+    {
+        return false;
+    }
+    Vec2 points[2];
+    double gaps[2];
+    for (int k = 0; k < contact->pointCount; ++k)
+    {
+        points[k] = contact->points[k].point;
+        gaps[k] = contact->points[k].separation;
+    }
+    return !Approaching(i, j, 0.0, contact->normal, points, contact->pointCount, CloseSpeed(0.0), gaps);
 }
 
 void TimeOfImpactStage::Run()
@@ -394,33 +433,32 @@ void TimeOfImpactStage::Run()
         m_connected = m_fast;
         m_stamp.assign(n, 0);
         m_hits.assign(n, 0);
-        for (const auto& [i, j] : pairs)
-        {
-            // A pair the step's contacts hold is left to them until a hit changes one of its bodies' course. They
-            // hold it if the solver left its points closing no faster than the slop (and a speculative point's gap)
-            // allows to the step's end, and neither body turning faster than a contact follows
-            // (WorldSettings::speculativeTurn): a contact found
-            // at the start of the step follows a turn only to first order, and the passes do not always bring a
-            // small body pressed by a heavy one to a stop against the floor.
-            const WorldContact* contact = ContactOf(world.contacts, i, j);
-            if (contact != nullptr && !TurnsFast(i) && !TurnsFast(j))
+        // The first sweeps: before any hit, each pair's depends on the start of the step alone, so each goes into
+        // its own slot on any thread, and the events are queued in the pairs' order.
+        const int pairCount = static_cast<int>(pairs.size());
+        std::vector<Event> events(pairs.size());
+        std::vector<SweepOutcome> outcomes(pairs.size(), SweepOutcome::Skipped);
+        const auto sweep = [&](int begin, int end) {
+            for (int k = begin; k < end; ++k)
             {
-                Vec2 points[2];
-                double gaps[2];
-                for (int k = 0; k < contact->pointCount; ++k)
+                const auto [i, j] = pairs[static_cast<size_t>(k)];
+                if (!HeldByContact(i, j))
                 {
-                    points[k] = contact->points[k].point;
-                    gaps[k] = contact->points[k].separation;
-                }
-                if (!Approaching(i, j, 0.0, contact->normal, points, contact->pointCount, CloseSpeed(0.0), gaps))
-                {
-                    continue;
+                    outcomes[static_cast<size_t>(k)] = SweepPairEvent(i, j, false, events[static_cast<size_t>(k)]);
                 }
             }
-            SweepPair(i, j);
+        };
+        ParallelFor(world.tasks, pairCount, kPairsPerPiece, sweep);
+        for (int k = 0; k < pairCount; ++k)
+        {
+            const SweepOutcome outcome = outcomes[static_cast<size_t>(k)];
+            world.counts.swept += outcome != SweepOutcome::Skipped;
+            if (outcome == SweepOutcome::Hit)
+            {
+                m_queue.push(events[static_cast<size_t>(k)]);
+            }
         }
-        std::vector<Event> group;
-        while (!m_queue.empty())
+        std::vector<Event> group;        while (!m_queue.empty())
         {
             const Event event = m_queue.top();
             m_queue.pop();
@@ -447,22 +485,26 @@ void TimeOfImpactStage::Run()
             Resolve(group);
         }
     }
+    // Every body moves on to the end of the step, body by body on any thread.
     m_rotation.resize(static_cast<size_t>(n));
-    for (int i = 0; i < n; ++i)
-    {
-        Motion& m = m_motion[i];
-        if (!m.moves)
+    const auto finish = [&](int begin, int end) {
+        for (int i = begin; i < end; ++i)
         {
-            m_rotation[static_cast<size_t>(i)] = m_xfs[i].q;
-            continue;
+            Motion& m = m_motion[i];
+            if (!m.moves)
+            {
+                m_rotation[static_cast<size_t>(i)] = m_xfs[i].q;
+                continue;
+            }
+            RigidBody& body = world.bodies[i];
+            const Vec2 center = CenterAt(i, 1.0);
+            body.angle = m.angle + (1.0 - m.t) * m_dt * m.w;
+            const Rot q = MakeRot(body.angle);
+            m_rotation[static_cast<size_t>(i)] = q;
+            body.position = center - Rotate(q, body.localCenter);
         }
-        RigidBody& body = world.bodies[i];
-        const Vec2 center = CenterAt(i, 1.0);
-        body.angle = m.angle + (1.0 - m.t) * m_dt * m.w;
-        const Rot q = MakeRot(body.angle);
-        m_rotation[static_cast<size_t>(i)] = q;
-        body.position = center - Rotate(q, body.localCenter);
-    }
+    };
+    ParallelFor(world.tasks, n, kBodiesPerPiece, finish);
 }
 
 } // namespace satviz::detail

@@ -6,6 +6,7 @@
 
 #include <satviz/world.h>
 
+#include <cstdint>
 #include <queue>
 #include <vector>
 
@@ -100,8 +101,17 @@ class TimeOfImpactStage
     bool Approaching(int i, int j, double t, Vec2 normal, const Vec2* points, int count, double minSpeed = 0.0,
                      const double* gaps = nullptr) const;
     double CloseSpeed(double t) const;
+    // What sweeping a pair found: nothing to sweep, swept without a hit, or a hit (its event).
+    enum class SweepOutcome : uint8_t
+    {
+        Skipped,
+        Missed,
+        Hit,
+    };
     void SweepPair(int i, int j, bool anySpeed = false); // anySpeed: also a pair that is not fast
-    bool Advance(int i, int j, double t0, Event& event);
+    SweepOutcome SweepPairEvent(int i, int j, bool anySpeed, Event& event) const;
+    bool HeldByContact(int i, int j) const;
+    bool Advance(int i, int j, double t0, Event& event) const;
     void Resolve(const std::vector<Event>& group);
     void Connect(int i, int j);
 

@@ -3,6 +3,7 @@
 
 #include "body_queries.h"
 #include "stepper.h"
+#include "parallel_for.h"
 #include "time_of_impact.h"
 #include "world_lookup.h"
 
@@ -36,6 +37,11 @@ uint32_t FeatureKey(const Manifold& m, int pieceA, int pieceB, int slot)
     const uint32_t foldB = static_cast<uint32_t>(pieceB + 1) & 0x3fu;
     return FeatureKey(m, slot) ^ (foldA << 11 | foldB << 24);
 }
+
+// Candidate pairs (or bodies) that one piece of parallel work takes at least: fewer cost more to hand to another
+// thread than to do here.
+constexpr int kPairsPerPiece = 64;
+constexpr int kBodiesPerPiece = 128;
 
 struct PairFilter
 {
@@ -148,39 +154,6 @@ void Stepper::FindContacts()
     const int64_t idlePairs = idle * (idle - 1) / 2 - statics * (statics - 1) / 2;
     counts.sleepingPairs = idlePairs;
 
-    xfs.resize(n);
-    for (int i = 0; i < n; ++i)
-    {
-        xfs[i] = bodies[i].Xf();
-    }
-    // How far each awake dynamic body can move within the step (its speed after gravity, and the turn of its
-    // farthest point), at most speculativeReach outer radii: a body that moves farther is a bullet, and the sweep
-    // finds its hits; none for a body turning more than speculativeTurn.
-    bodyReach.assign(static_cast<size_t>(n), 0.0);
-    bullets.assign(static_cast<size_t>(n), 0);
-    if (settings.speculativeContacts)
-    {
-        const double fall = Length(settings.gravity) * dt;
-        for (int i = 0; i < n; ++i)
-        {
-            const RigidBody& body = bodies[i];
-            if (!IsAwakeDynamic(body))
-            {
-                continue;
-            }
-            const double move = dt * (Length(body.velocity) + fall + std::fabs(body.angularVelocity) * body.turnRadius);
-            const double cap = settings.speculativeReach * body.outerRadius;
-            // A body that turns fast is left to the sweep: a contact found at the start of the step follows a
-            // turn only to first order.
-            const bool turnsFast =
-                body.turnRadius > 0.0 && std::fabs(body.angularVelocity) * dt > settings.speculativeTurn;
-            bullets[static_cast<size_t>(i)] = turnsFast || move > cap ? 1 : 0;
-            if (!turnsFast)
-            {
-                bodyReach[static_cast<size_t>(i)] = std::min(move, cap);
-            }
-        }
-    }
     // How far a pass of the position correction can move a body at a point (maxCorrection): a body beside a static
     // one within this distance beyond its reach gets a guard, so that the passes, pushing it out of another body,
     // do not push it into the static one. (Several passes can move it farther, but only out of an overlap that
@@ -190,20 +163,51 @@ void Stepper::FindContacts()
     std::vector<std::pair<int, int>> candidates;
     StepTrace* stepTrace = world.stepTrace;
     std::vector<Aabb> boxes;
-    if (settings.broadphase || stepTrace != nullptr)
+    const bool withBoxes = settings.broadphase || stepTrace != nullptr;
+    if (withBoxes)
     {
         boxes.resize(n);
         if (stepTrace != nullptr)
         {
             stepTrace->grow.resize(n);
         }
-        for (int i = 0; i < n; ++i)
+    }
+    xfs.resize(n);
+    bodyReach.assign(static_cast<size_t>(n), 0.0);
+    bullets.assign(static_cast<size_t>(n), 0);
+    const double fall = Length(settings.gravity) * dt;
+    // Each body's transform, reach and box, body by body on any thread.
+    const auto bound = [&](int begin, int end) {
+        for (int i = begin; i < end; ++i)
         {
-            boxes[i] = ComputeAabb(bodies[i].shape, xfs[i]);
+            const RigidBody& body = bodies[i];
+            xfs[i] = body.Xf();
+            // How far each awake dynamic body can move within the step (its speed after gravity, and the turn of its
+            // farthest point), at most speculativeReach outer radii: a body that moves farther is a bullet, and the
+            // sweep finds its hits; none for a body turning more than speculativeTurn.
+            if (settings.speculativeContacts && IsAwakeDynamic(body))
+            {
+                const double move =
+                    dt * (Length(body.velocity) + fall + std::fabs(body.angularVelocity) * body.turnRadius);
+                const double cap = settings.speculativeReach * body.outerRadius;
+                // A body that turns fast is left to the sweep: a contact found at the start of the step follows a
+                // turn only to first order.
+                const bool turnsFast =
+                    body.turnRadius > 0.0 && std::fabs(body.angularVelocity) * dt > settings.speculativeTurn;
+                bullets[static_cast<size_t>(i)] = turnsFast || move > cap ? 1 : 0;
+                if (!turnsFast)
+                {
+                    bodyReach[static_cast<size_t>(i)] = std::min(move, cap);
+                }
+            }
+            if (!withBoxes)
+            {
+                continue;
+            }
+            boxes[i] = ComputeAabb(body.shape, xfs[i]);
             // A body's box grows by the reach of its speculative contacts, so the pairs within it are found; a
             // static body's by how far the position passes can move a body, so its guards are found.
-            const double grow =
-                bodies[i].type == BodyType::Static ? correctionReach : bodyReach[static_cast<size_t>(i)];
+            const double grow = body.type == BodyType::Static ? correctionReach : bodyReach[static_cast<size_t>(i)];
             boxes[i].min = boxes[i].min - Vec2{grow, grow};
             boxes[i].max = boxes[i].max + Vec2{grow, grow};
             if (stepTrace != nullptr)
@@ -211,7 +215,8 @@ void Stepper::FindContacts()
                 stepTrace->grow[i] = grow;
             }
         }
-    }
+    };
+    ParallelFor(world.tasks, n, kBodiesPerPiece, bound);
     if (settings.broadphase)
     {
         FindPairs(world.broadphase, boxes, candidates, SkipPair, &filter);
@@ -238,12 +243,7 @@ void Stepper::FindContacts()
     }
     counts.boundsApart = counts.pairs - counts.staticPairs - counts.sleepingPairs - counts.tested;
 
-    std::vector<int> wake;
     std::vector<WorldContact> previous = std::move(world.contacts);
-    std::vector<WorldContact>& contacts = world.contacts;
-    contacts.clear();
-    int64_t touching = 0, speculative = 0;
-    contacts.reserve(previous.size() + 16);
     // The previous contacts are in pair order: those of body a are previous[firstOf[a]] up to firstOf[a + 1], a
     // few to scan for b.
     std::vector<int> firstOf(static_cast<size_t>(n) + 1, 0);
@@ -265,93 +265,118 @@ void Stepper::FindContacts()
         }
         return nullptr;
     };
-    for (const auto& pair : candidates)
-    {
-        const int i = pair.first, j = pair.second;
-        RigidBody& a = bodies[i];
-        RigidBody& b = bodies[j];
-        // A pair with a concave body takes the concave queries (one merged manifold, seams dropped), and the
-        // pieces that decided it name its points (CollidePair).
-        if (a.type == BodyType::Static && b.type == BodyType::Static)
+    // Each candidate pair's contact goes into its own slot (a = -1: none), so the pairs may be collided on any
+    // thread; the slots are then kept in the candidates' order.
+    const int pairCount = static_cast<int>(candidates.size());
+    std::vector<WorldContact> slots(candidates.size());
+    std::vector<uint8_t> overlaps(candidates.size(), 0);
+    const auto collide = [&](int begin, int end) {
+        for (int slot = begin; slot < end; ++slot)
         {
-            detail::CollidePair(a, xfs[i], b, xfs[j]);
-            continue;
-        }
-        // The pair's speculative margin: how far the two can close within the step.
-        const double margin = bodyReach[static_cast<size_t>(i)] + bodyReach[static_cast<size_t>(j)];
-        ConcaveManifold cm = detail::CollidePair(a, xfs[i], b, xfs[j], margin);
-        const Manifold& m = cm.manifold;
-        bool guard = false;
-        if (m.contactCount == 0)
-        {
-            // Beyond reach of a static body, but within what the position passes can move it: a guard.
-            if (correctionReach > 0.0 && (a.type == BodyType::Static) != (b.type == BodyType::Static))
+            const int i = candidates[static_cast<size_t>(slot)].first;
+            const int j = candidates[static_cast<size_t>(slot)].second;
+            const RigidBody& a = bodies[i];
+            const RigidBody& b = bodies[j];
+            // A pair with a concave body takes the concave queries (one merged manifold, seams dropped), and the
+            // pieces that decided it name its points (CollidePair).
+            if (a.type == BodyType::Static && b.type == BodyType::Static)
             {
-                cm = detail::CollidePair(a, xfs[i], b, xfs[j], margin + correctionReach);
-                guard = m.contactCount > 0 && !m.overlap;
-            }
-            if (!guard)
-            {
+                detail::CollidePair(a, xfs[i], b, xfs[j]);
                 continue;
             }
-        }
-        WorldContact c;
-        // A pair still apart that the sweep takes gets no speculative contact, only a guard (see LeftToSweep).
-        c.guard = guard || (!m.overlap && LeftToSweep(i, j));
-        touching += m.overlap;
-        speculative += !m.overlap && !c.guard;
-        c.a = i;
-        c.b = j;
-        c.normal = m.normal;
-        c.normalBody = m.axis.shape == 1 ? 1 : 0;
-        c.pointCount = m.contactCount;
-        c.material = CombineMaterials(a.material, b.material);
-        const WorldContact* old = previousOf(i, j);
-        const double reach = 0.25 * std::min(a.type == BodyType::Dynamic ? a.innerRadius : INFINITY,
-                                             b.type == BodyType::Dynamic ? b.innerRadius : INFINITY);
-        for (int k = 0; k < m.contactCount; ++k)
-        {
-            WorldContactPoint& p = c.points[k];
-            p.point = m.contacts[k].point;
-            p.separation = m.contacts[k].separation;
-            p.key = FeatureKey(m, cm.pieceA, cm.pieceB, k);
-            if (old != nullptr && !c.guard)
+            // The pair's speculative margin: how far the two can close within the step.
+            const double margin = bodyReach[static_cast<size_t>(i)] + bodyReach[static_cast<size_t>(j)];
+            ConcaveManifold cm = detail::CollidePair(a, xfs[i], b, xfs[j], margin);
+            const Manifold& m = cm.manifold;
+            bool guard = false;
+            if (m.contactCount == 0)
             {
-                bool matched = false;
-                for (int l = 0; l < old->pointCount; ++l)
+                // Beyond reach of a static body, but within what the position passes can move it: a guard.
+                if (correctionReach > 0.0 && (a.type == BodyType::Static) != (b.type == BodyType::Static))
                 {
-                    if (old->points[l].key == p.key)
-                    {
-                        p.normalImpulse = old->points[l].normalImpulse;
-                        p.tangentImpulse = old->points[l].tangentImpulse;
-                        matched = true;
-                    }
+                    cm = detail::CollidePair(a, xfs[i], b, xfs[j], margin + correctionReach);
+                    guard = m.contactCount > 0 && !m.overlap;
                 }
-                // The reference face can pass from one body to the other between steps when two faces are
-                // nearly parallel (a stack of equal boxes): the point is the same, its key is not. Such a point
-                // takes the impulses of the old point nearest to it, if close and the normal has not turned.
-                if (!matched && Dot(old->normal, c.normal) > 0.95)
+                if (!guard)
                 {
-                    double nearest = reach * reach;
+                    continue;
+                }
+            }
+            WorldContact& c = slots[static_cast<size_t>(slot)];
+            // A pair still apart that the sweep takes gets no speculative contact, only a guard (see LeftToSweep).
+            c.guard = guard || (!m.overlap && LeftToSweep(i, j));
+            overlaps[static_cast<size_t>(slot)] = m.overlap ? 1 : 0;
+            c.a = i;
+            c.b = j;
+            c.normal = m.normal;
+            c.normalBody = m.axis.shape == 1 ? 1 : 0;
+            c.pointCount = m.contactCount;
+            c.material = CombineMaterials(a.material, b.material);
+            const WorldContact* old = previousOf(i, j);
+            const double reach = 0.25 * std::min(a.type == BodyType::Dynamic ? a.innerRadius : INFINITY,
+                                                 b.type == BodyType::Dynamic ? b.innerRadius : INFINITY);
+            for (int k = 0; k < m.contactCount; ++k)
+            {
+                WorldContactPoint& p = c.points[k];
+                p.point = m.contacts[k].point;
+                p.separation = m.contacts[k].separation;
+                p.key = FeatureKey(m, cm.pieceA, cm.pieceB, k);
+                if (old != nullptr && !c.guard)
+                {
+                    bool matched = false;
                     for (int l = 0; l < old->pointCount; ++l)
                     {
-                        const double d2 = LengthSquared(old->points[l].point - p.point);
-                        if (d2 < nearest)
+                        if (old->points[l].key == p.key)
                         {
-                            nearest = d2;
                             p.normalImpulse = old->points[l].normalImpulse;
                             p.tangentImpulse = old->points[l].tangentImpulse;
                             matched = true;
                         }
                     }
+                    // The reference face can pass from one body to the other between steps when two faces are
+                    // nearly parallel (a stack of equal boxes): the point is the same, its key is not. Such a point
+                    // takes the impulses of the old point nearest to it, if close and the normal has not turned.
+                    if (!matched && Dot(old->normal, c.normal) > 0.95)
+                    {
+                        double nearest = reach * reach;
+                        for (int l = 0; l < old->pointCount; ++l)
+                        {
+                            const double d2 = LengthSquared(old->points[l].point - p.point);
+                            if (d2 < nearest)
+                            {
+                                nearest = d2;
+                                p.normalImpulse = old->points[l].normalImpulse;
+                                p.tangentImpulse = old->points[l].tangentImpulse;
+                                matched = true;
+                            }
+                        }
+                    }
                 }
             }
         }
+    };
+    ParallelFor(world.tasks, pairCount, kPairsPerPiece, collide);
+
+    std::vector<int> wake;
+    std::vector<WorldContact>& contacts = world.contacts;
+    contacts.clear();
+    contacts.reserve(previous.size() + 16);
+    int64_t touching = 0, speculative = 0;
+    for (int slot = 0; slot < pairCount; ++slot)
+    {
+        const WorldContact& c = slots[static_cast<size_t>(slot)];
+        if (c.a < 0)
+        {
+            continue;
+        }
+        const bool overlap = overlaps[static_cast<size_t>(slot)] != 0;
+        touching += overlap;
+        speculative += !overlap && !c.guard;
         contacts.push_back(c);
         // A body that touches a sleeping one wakes its island.
-        if (awakeAtStart[i] != awakeAtStart[j])
+        if (awakeAtStart[c.a] != awakeAtStart[c.b])
         {
-            wake.push_back(awakeAtStart[i] ? j : i);
+            wake.push_back(awakeAtStart[c.a] ? c.b : c.a);
         }
     }
     // The contacts of pairs skipped because neither body was awake are kept as they were: neither body moved. Both

@@ -2,6 +2,7 @@
 // satviz: the step's velocity stages: the order of the passes, the velocity passes, the limit on the energy they
 // gain, and the impulses kept for the next step's warm start.
 
+#include "parallel_for.h"
 #include "stepper.h"
 #include "world_lookup.h"
 
@@ -12,6 +13,15 @@
 
 namespace satviz::detail
 {
+
+namespace
+{
+
+// Contacts that one piece of parallel work takes at least: fewer cost more to hand to another thread than to prepare
+// here.
+constexpr int kContactsPerPiece = 64;
+
+} // namespace
 
 // Stage 2: gravity and the velocity passes (with the restitution targets taken before gravity).
 // The order of the velocity and position passes: the contacts from the highest to the lowest along gravity, ties
@@ -104,52 +114,89 @@ void Stepper::SolveVelocities()
     }
 
     ContactSolveTrace* trace = world.trace;
+    // The normal velocity of each point of a contact before gravity: what decides its bounce.
+    const auto approachOf = [&](const SolverContact& c, double approach[2]) {
+        for (int i = 0; i < c.count; ++i)
+        {
+            const detail::SolverPoint& p = c.points[i];
+            approach[i] = Dot(detail::RelativeVelocity(solverBodies[c.a], solverBodies[c.b], p.rA, p.rB), c.normal);
+        }
+    };
+    // Each contact prepared into its own slot, on any thread; then kept in the contacts' order.
+    enum : uint8_t
+    {
+        kSkipped,
+        kContact,
+        kGuard,
+    };
+    const int contactCount = static_cast<int>(world.contacts.size());
+    std::vector<SolverContact> prepared(world.contacts.size());
+    std::vector<uint8_t> kinds(world.contacts.size(), kSkipped);
+    const auto prepare = [&](int begin, int end) {
+        for (int k = begin; k < end; ++k)
+        {
+            const WorldContact& wc = world.contacts[static_cast<size_t>(k)];
+            if (!IsAwakeDynamic(bodies[wc.a]) && !IsAwakeDynamic(bodies[wc.b]))
+            {
+                continue;
+            }
+            SolverContact& c = prepared[static_cast<size_t>(k)];
+            c.a = wc.a;
+            c.b = wc.b;
+            c.normal = wc.normal;
+            c.normalBody = wc.normalBody;
+            c.count = wc.pointCount;
+            c.material = wc.material;
+            for (int i = 0; i < c.count; ++i)
+            {
+                c.points[i].rA = wc.points[i].point - centers[wc.a];
+                c.points[i].rB = wc.points[i].point - centers[wc.b];
+                c.points[i].separation = wc.points[i].separation;
+            }
+            if (wc.guard)
+            {
+                kinds[static_cast<size_t>(k)] = kGuard;
+                continue;
+            }
+            double approach[2] = {0.0, 0.0};
+            approachOf(c, approach);
+            for (int i = 0; i < c.count; ++i)
+            {
+                detail::SolverPoint& p = c.points[i];
+                p.gapSpeed = std::max(0.0, p.separation) / dt;
+                p.normalImpulse = wc.points[i].normalImpulse;
+                p.tangentImpulse = wc.points[i].tangentImpulse;
+            }
+            // How fast gravity closes the pair along the normal: it pulls only the awake dynamic bodies.
+            const Vec2 gravityA = IsAwakeDynamic(bodies[c.a]) ? settings.gravity : Vec2{};
+            const Vec2 gravityB = IsAwakeDynamic(bodies[c.b]) ? settings.gravity : Vec2{};
+            const double pull = std::max(0.0, -Dot(gravityB - gravityA, c.normal));
+            detail::PrepareContact(c, solverBodies[c.a], solverBodies[c.b], approach, pull, dt,
+                                   settings.restitutionThreshold);
+            kinds[static_cast<size_t>(k)] = kContact;
+        }
+    };
+    ParallelFor(world.tasks, contactCount, kContactsPerPiece, prepare);
     solverContacts.clear();
     solverContacts.reserve(world.contacts.size());
     guards.clear();
-    for (size_t k = 0; k < world.contacts.size(); ++k)
+    for (int k = 0; k < contactCount; ++k)
     {
-        const WorldContact& wc = world.contacts[k];
-        if (!IsAwakeDynamic(bodies[wc.a]) && !IsAwakeDynamic(bodies[wc.b]))
-        {
-            continue;
-        }
-        SolverContact c;
-        c.a = wc.a;
-        c.b = wc.b;
-        c.normal = wc.normal;
-        c.normalBody = wc.normalBody;
-        c.count = wc.pointCount;
-        c.material = wc.material;
-        for (int i = 0; i < c.count; ++i)
-        {
-            c.points[i].rA = wc.points[i].point - centers[wc.a];
-            c.points[i].rB = wc.points[i].point - centers[wc.b];
-            c.points[i].separation = wc.points[i].separation;
-        }
-        if (wc.guard)
+        SolverContact& c = prepared[static_cast<size_t>(k)];
+        if (kinds[static_cast<size_t>(k)] == kGuard)
         {
             guards.push_back(c);
             continue;
         }
-        double approach[2] = {0.0, 0.0};
-        for (int i = 0; i < c.count; ++i)
+        if (kinds[static_cast<size_t>(k)] != kContact)
         {
-            detail::SolverPoint& p = c.points[i];
-            p.gapSpeed = std::max(0.0, p.separation) / dt;
-            p.normalImpulse = wc.points[i].normalImpulse;
-            p.tangentImpulse = wc.points[i].tangentImpulse;
-            approach[i] = Dot(detail::RelativeVelocity(solverBodies[c.a], solverBodies[c.b], p.rA, p.rB), c.normal);
+            continue;
         }
-        // How fast gravity closes the pair along the normal: it pulls only the awake dynamic bodies.
-        const Vec2 gravityA = IsAwakeDynamic(bodies[c.a]) ? settings.gravity : Vec2{};
-        const Vec2 gravityB = IsAwakeDynamic(bodies[c.b]) ? settings.gravity : Vec2{};
-        const double pull = std::max(0.0, -Dot(gravityB - gravityA, c.normal));
-        detail::PrepareContact(c, solverBodies[c.a], solverBodies[c.b], approach, pull, dt,
-                               settings.restitutionThreshold);
         if (trace != nullptr &&
             ((trace->bodyA == c.a && trace->bodyB == c.b) || (trace->bodyA == c.b && trace->bodyB == c.a)))
         {
+            double approach[2] = {0.0, 0.0};
+            approachOf(c, approach);
             c.traced = true;
             trace->found = true;
             trace->normal = c.normal;

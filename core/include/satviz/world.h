@@ -10,6 +10,7 @@
 #include <satviz/shape.h>
 #include <satviz/solver_trace.h>
 #include <satviz/step_trace.h>
+#include <satviz/tasks.h>
 
 #include <cstdint>
 #include <string>
@@ -193,6 +194,10 @@ struct World
     /// When not null, each step records there its grown boxes, the broadphase's pairs and its time-ordered hits
     /// (cleared at the start of the step). Null: nothing is recorded and nothing is paid.
     StepTrace* stepTrace = nullptr;
+    /// Where the step runs its work whose results do not depend on order (the narrowphase of each pair, each body's
+    /// pose and move): on the caller's parallel-for (PoolTasks of a ThreadPool, or the caller's own). The default
+    /// runs it all on the calling thread. Every body ends each step with the same bits for any number of workers.
+    TaskRunner tasks{};
 
     /// The broadphase's box order, kept between steps so that sorting costs close to linear time. Working memory,
     /// not state: two worlds with the same bodies and contacts step alike whatever it holds.
