@@ -293,6 +293,38 @@ TEST_CASE("satviz-sim --every prints every K-th step and the last, --dt override
     CHECK(last["bodies"][0]["position"][1].get<double>() == Approx(0.0).margin(1e-12));
 }
 
+TEST_CASE("satviz-sim --threads prints the same bytes on 1, 2 and 3 threads, and refuses a bad count", "[sim]")
+{
+    // A pile that falls, collides and settles, so the world has pairs to split between the threads.
+    std::string pile = R"({"world": {"gravity": [0, -9.81], "dt": 0.0166666}, "bodies": [)"
+                       R"({"name": "floor", "box": [40, 1], "position": [0, -1], "static": true})";
+    for (int k = 0; k < 300; ++k)
+    {
+        const std::string shape = k % 2 == 0 ? R"("box": [0.6, 0.4])" : R"("circle": {"radius": 0.3})";
+        pile += R"(, {"name": "b)" + std::to_string(k) + R"(", )" + shape + R"(, "position": [)" +
+                std::to_string(-15.0 + 1.1 * (k % 25)) + ", " + std::to_string(0.5 + 1.1 * (k / 25)) +
+                R"(], "angle": )" + std::to_string(0.1 * (k % 7)) + "}";
+    }
+    pile += "]}";
+    WriteFile(kSim / "threads.json", pile);
+    const SimRun one = Sim(kSim / "threads.json --steps 120 --every 20");
+    INFO(one.err);
+    REQUIRE(one.exitCode == 0);
+    REQUIRE(one.out.size() == 6);
+    for (const char* threads : {"2", "3"})
+    {
+        const SimRun many = Sim(kSim / "threads.json --steps 120 --every 20 --threads " + threads);
+        REQUIRE(many.exitCode == 0);
+        CHECK(many.out == one.out);
+    }
+    for (const char* bad : {"0", "-1", "two", "1000"})
+    {
+        const SimRun run = Sim(kSim / "threads.json --steps 1 --threads " + bad);
+        CHECK(run.exitCode == 2);
+        CHECK(run.err.find("satviz-sim: --threads: expected a whole number from 1 to 256") == 0);
+    }
+}
+
 TEST_CASE("satviz-sim --counts adds what each step did with the pairs", "[sim]")
 {
     WriteFile(kSim / "drop.json", kDrop);

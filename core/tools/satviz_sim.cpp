@@ -3,6 +3,7 @@
 
 #include <satviz/scene.h>
 #include <satviz/scene_world.h>
+#include <satviz/tasks.h>
 #include <satviz/world.h>
 
 #include <CLI/CLI.hpp>
@@ -36,6 +37,9 @@ bool ParseCount(const std::string& text, long long& value)
     value = std::strtoll(text.c_str(), &end, 10);
     return errno == 0 && end != nullptr && *end == '\0' && value >= 1;
 }
+
+// Most threads --threads takes: more than a machine has only slows the step down.
+constexpr int kMaxThreads = 256;
 
 // -0 prints as 0.
 Json Pair(satviz::Vec2 v)
@@ -86,6 +90,7 @@ int main(int argc, char** argv)
     std::string stepsText;
     std::string dtText;
     std::string everyText = "1";
+    std::string threadsText = "1";
     std::string savePath;
     bool withCounts = false;
     app.add_option("scene", file, "Scene file (JSON)")->required()->type_name("SCENE.json");
@@ -93,6 +98,10 @@ int main(int argc, char** argv)
     app.add_option("--dt", dtText, "Step length in time units, > 0 (default: the scene's world.dt, else 1)")
         ->type_name("S");
     app.add_option("--every", everyText, "Print every K-th step (default 1), and always the last")->type_name("K");
+    app.add_option("--threads", threadsText,
+                   "Threads the world steps on, the caller's included (default 1); the results are the same bits for "
+                   "any number")
+        ->type_name("T");
     app.add_option("--save", savePath, "Write the final state as a scene file (atomically)")->type_name("OUT.json");
     app.add_flag("--counts", withCounts,
                  "Add each printed step's counts: pairs, static_pairs, sleeping_pairs, bounds_apart, tested, "
@@ -111,6 +120,13 @@ int main(int argc, char** argv)
     {
         std::fprintf(stderr, "satviz-sim: --every: expected a whole number of at least 1, got \"%s\"\n",
                      everyText.c_str());
+        return 2;
+    }
+    long long threads = 0;
+    if (!ParseCount(threadsText, threads) || threads > kMaxThreads)
+    {
+        std::fprintf(stderr, "satviz-sim: --threads: expected a whole number from 1 to %d, got \"%s\"\n", kMaxThreads,
+                     threadsText.c_str());
         return 2;
     }
     double dt = 0.0;
@@ -150,6 +166,8 @@ int main(int argc, char** argv)
 
     std::ios::sync_with_stdio(false);
     satviz::World world = satviz::MakeWorld(scene);
+    satviz::ThreadPool pool(static_cast<int>(threads));
+    world.tasks = satviz::PoolTasks(pool);
     long long hits = 0;
     const auto start = std::chrono::steady_clock::now();
     for (long long step = 1; step <= steps; ++step)

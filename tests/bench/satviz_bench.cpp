@@ -1861,6 +1861,14 @@ int main(int argc, char** argv)
     app.add_option("--bodies", w.bodies, "--world: dynamic bodies per scene (each at least 1)");
     app.add_option("--steps", w.steps, "--world: steps per run (at least 4; the last quarter is the tail)");
     app.add_option("--scenes", w.scenes, "--world: the scenes to run: pile, rain (default: both)");
+    app.add_option("--threads", w.threads,
+                   "--world: threads satviz's world steps on, the caller's included (default 1; above 1 its figures "
+                   "are by the wall clock)");
+    std::string scenesDirectory;
+    app.add_option("--write-scenes", scenesDirectory,
+                   "--world: write the scenes as scene files DIR/SCENE-N.json for satviz-sim (created if missing) "
+                   "and run nothing")
+        ->type_name("DIR");
     bool concave = false;
     app.add_flag("--concave", concave,
                  "Time the convex decomposition instead of the queries: ms and pieces per method from 10 to 10 000 "
@@ -1916,6 +1924,24 @@ int main(int argc, char** argv)
         if (quick)
         {
             w = bench::QuickWorldBenchSettings(w);
+        }
+        if (!scenesDirectory.empty())
+        {
+            std::error_code code;
+            std::filesystem::create_directories(scenesDirectory, code);
+            if (code)
+            {
+                std::fprintf(stderr, "satviz-bench: --write-scenes %s: cannot create the directory (%s)\n",
+                             scenesDirectory.c_str(), code.message().c_str());
+                return 2;
+            }
+            std::string error;
+            if (!bench::WriteWorldScenes(w, scenesDirectory, error))
+            {
+                std::fprintf(stderr, "satviz-bench: --write-scenes: %s\n", error.c_str());
+                return 1;
+            }
+            return 0;
         }
         PrintMachine(argc, argv);
         if (quick)

@@ -43,6 +43,8 @@
 #include "support/random_shapes.h"
 
 #include <satviz/collide.h>
+#include <satviz/scene.h>
+#include <satviz/tasks.h>
 #include <satviz/world.h>
 
 #ifdef SATVIZ_HAVE_BOX2D
@@ -378,7 +380,8 @@ double MeanMs(const std::vector<double>& ms, int from)
     return sum / static_cast<double>(ms.size() - static_cast<size_t>(from));
 }
 
-TimedRun TimeRun(const Scene& scene, int config, int steps)
+// threads: what satviz's world steps on; above 1, its ms are the wall clock's (see WorldBenchSettings::threads).
+TimedRun TimeRun(const Scene& scene, int config, int steps, int threads)
 {
     TimedRun run;
     run.ms.resize(static_cast<size_t>(steps));
@@ -386,6 +389,8 @@ TimedRun TimeRun(const Scene& scene, int config, int steps)
     if (IsSatviz(config))
     {
         World world = BuildSatviz(scene, SettingsOf(config));
+        ThreadPool pool(threads);
+        world.tasks = PoolTasks(pool);
         for (int i = 0; i < steps; ++i)
         {
             const Clock::time_point start = Clock::now();
@@ -394,6 +399,10 @@ TimedRun TimeRun(const Scene& scene, int config, int steps)
             run.ms[static_cast<size_t>(i)] = ThreadMs() - cpu;
             run.wallMs[static_cast<size_t>(i)] =
                 std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+            if (threads > 1)
+            {
+                run.ms[static_cast<size_t>(i)] = run.wallMs[static_cast<size_t>(i)];
+            }
             run.tested += static_cast<double>(world.counts.tested);
             run.swept += static_cast<double>(world.counts.swept);
             run.compared += static_cast<double>(world.counts.broadphaseComparisons);
@@ -845,7 +854,7 @@ SceneResult RunScene(const WorldBenchSettings& s, bool rain, int n)
             {
                 continue;
             }
-            const TimedRun run = TimeRun(scene, c, s.steps);
+            const TimedRun run = TimeRun(scene, c, s.steps, s.threads);
             whole[c] = MeanMs(run.ms, 0);
             tailMs[c] = MeanMs(run.ms, tail);
             wall[c] = MeanMs(run.wallMs, 0);
@@ -911,6 +920,10 @@ void PrintTables(const WorldBenchSettings& s, const std::vector<SceneResult>& re
                 "steps %d to %d), median of %d rounds; ratios: median over the rounds of the ratio of two runs of one\n"
                 "round (<1: satviz faster); wall: the same ratio by the wall clock\n",
                 s.steps, tail + 1, s.steps, s.rounds);
+    if (s.threads > 1)
+    {
+        std::printf("satviz steps on %d threads (--threads): its ms per step are the wall clock's\n", s.threads);
+    }
     std::printf(
         "(n dynamic bodies, a third each boxes, circles and convex 3- to 8-gons of size 0.5 to 1; density 1,\n"
         " friction 0.6, restitution 0.1; gravity 10; satviz: its defaults, %d velocity and %d position passes;\n"
@@ -942,8 +955,8 @@ void PrintTables(const WorldBenchSettings& s, const std::vector<SceneResult>& re
     {
         std::printf("\nbeside Box2D v3 %s (built outside this repository; b2World_Step(dt, %d sub-steps), its own scheduler;\n"
                     "ratio 1 worker: satviz's processor time over v3's, same round; 2 workers: satviz's wall clock over\n"
-                    "v3's, same round; satviz steps on one thread)\n",
-                    Box2DV3Version().c_str(), V3Settings{}.subSteps);
+                    "v3's, same round; satviz steps on %d thread%s)\n",
+                    Box2DV3Version().c_str(), V3Settings{}.subSteps, s.threads, s.threads == 1 ? "" : "s");
         std::printf("%-6s %6s %10s %12s %8s %14s %8s %14s\n", "scene", "bodies", "satviz", "v3 1 worker", "ratio",
                     "v3 2 (wall)", "ratio", "awake at end");
         for (const SceneResult& r : results)
@@ -1207,6 +1220,10 @@ std::string CheckWorldBenchSettings(const WorldBenchSettings& settings)
     {
         return "--rounds: at least 1 round, got " + std::to_string(settings.rounds);
     }
+    if (settings.threads < 1 || settings.threads > 256)
+    {
+        return "--threads: from 1 to 256 threads, got " + std::to_string(settings.threads);
+    }
     return "";
 }
 
@@ -1217,6 +1234,52 @@ WorldBenchSettings QuickWorldBenchSettings(WorldBenchSettings settings)
     settings.rounds = 1;
     settings.quick = true;
     return settings;
+}
+
+bool WriteWorldScenes(const WorldBenchSettings& settings, const std::string& directory, std::string& error)
+{
+    for (const char* name : {"pile", "rain"})
+    {
+        if (std::find(settings.scenes.begin(), settings.scenes.end(), name) == settings.scenes.end())
+        {
+            continue;
+        }
+        for (int n : settings.bodies)
+        {
+            const Scene scene = MakeScene(std::string(name) == "rain", n, settings.steps, settings.seed);
+            satviz::Scene file;
+            file.description = "satviz-bench --world's " + scene.name + " of " + std::to_string(n) +
+                               " bodies, seed " + std::to_string(settings.seed) + ", " +
+                               std::to_string(settings.steps) + " steps";
+            file.hasWorld = true;
+            file.world.gravity = {0.0, -kGravity};
+            file.world.dt = kDt;
+            int walls = 0, dynamic = 0;
+            for (const SceneBody& from : scene.bodies)
+            {
+                satviz::Body body;
+                body.name = from.dynamic ? "body " + std::to_string(dynamic++) : "static " + std::to_string(walls++);
+                body.shape = from.shape;
+                body.isStatic = !from.dynamic;
+                body.density = kDensity;
+                body.material.restitution = kRestitution;
+                body.material.friction = kFriction;
+                body.material.staticFriction = kFriction;
+                body.position = from.position;
+                body.angle = from.angle;
+                body.velocity = from.velocity;
+                body.angularVelocity = from.angularVelocity;
+                file.bodies.push_back(std::move(body));
+            }
+            const std::string path = directory + "/" + scene.name + "-" + std::to_string(n) + ".json";
+            if (!SaveScene(file, path, error))
+            {
+                return false;
+            }
+            std::fprintf(stderr, "satviz-bench: %s written\n", path.c_str());
+        }
+    }
+    return true;
 }
 
 bool RunWorldBench(const WorldBenchSettings& settings)

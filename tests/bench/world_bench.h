@@ -18,6 +18,9 @@ struct WorldBenchSettings
     int steps = 600;                                    ///< steps of 1/60 per run; the last quarter is the settled tail
     int rounds = 5;                                     ///< timed rounds; a figure is the median over the rounds
     uint64_t seed = 20240601;                           ///< seed of the scenes' shapes and placements
+    /// Threads satviz's world steps on (its default task pool, satviz/tasks.h), the caller's included. Above 1,
+    /// satviz's figures are by the wall clock, the processor time of one thread no longer being its cost.
+    int threads = 1;
     bool quick = false;       ///< set by QuickWorldBenchSettings: the figures are no measurement
     std::string csvDirectory; ///< where world.csv is written; empty: nowhere
 };
@@ -33,6 +36,11 @@ std::string CheckWorldBenchSettings(const WorldBenchSettings& settings);
 
 /// The settings of --quick: two small scenes, few steps, one round, so that a run takes a second or two.
 WorldBenchSettings QuickWorldBenchSettings(WorldBenchSettings settings);
+
+/// Writes each scene of the settings (each scene at each size, settings.seed) as a scene file DIR/SCENE-N.json that
+/// satviz-sim steps as the benchmark does (its bodies, materials, gravity and dt), for timing a whole process.
+/// Returns false with a one-line error naming the file when one cannot be written.
+bool WriteWorldScenes(const WorldBenchSettings& settings, const std::string& directory, std::string& error);
 
 /// Builds the scenes, runs them and prints the tables to stdout (progress to stderr), and writes world.csv into
 /// settings.csvDirectory when it is set. Returns false when the CSV file could not be written.
