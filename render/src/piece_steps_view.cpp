@@ -94,6 +94,40 @@ Vec2 PartMiddle(const Body& body, int i)
     return TransformPoint(body.Xf(), (1.0 / shape.polygon.Count()) * sum);
 }
 
+// The interval part i of the body covers along unit direction n: [low, high].
+void PartRange(const Body& body, int i, Vec2 n, double& low, double& high)
+{
+    const Shape& shape = PartShape(body, i);
+    const Transform xf = body.Xf();
+    if (shape.type == ShapeType::Circle)
+    {
+        const double c = Dot(TransformPoint(xf, shape.circle.center), n);
+        low = c - shape.circle.radius;
+        high = c + shape.circle.radius;
+        return;
+    }
+    low = INFINITY;
+    high = -INFINITY;
+    for (const Vec2& v : shape.polygon.Vertices())
+    {
+        const double d = Dot(TransformPoint(xf, v), n);
+        low = std::min(low, d);
+        high = std::max(high, d);
+    }
+}
+
+// The interval a piece's box covers along unit direction n: [low, high].
+void BoxRange(const PieceBox& box, Vec2 n, double& low, double& high)
+{
+    low = INFINITY;
+    high = -INFINITY;
+    for (const Vec2 corner : {box.min, Vec2{box.max.x, box.min.y}, box.max, Vec2{box.min.x, box.max.y}})
+    {
+        low = std::min(low, Dot(corner, n));
+        high = std::max(high, Dot(corner, n));
+    }
+}
+
 } // namespace
 
 PieceBox PartBox(const Body& body, int i)
@@ -294,11 +328,19 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
         focusA = study.tested[static_cast<size_t>(step - 1)].i;
         focusB = study.tested[static_cast<size_t>(step - 1)].j;
     }
-    else if (step == tested + 1 && study.merged.manifold.overlap)
+    else if (step == tested + 1 && (study.merged.manifold.overlap || std::isfinite(study.merged.manifold.gap)))
     {
+        // The pair that decides: the deepest overlap, or apart the one with the least gap.
         focusA = std::max(0, study.merged.pieceA);
         focusB = std::max(0, study.merged.pieceB);
     }
+    // Apart at the verdict, the least gap was found between two pieces tested as a convex pair, or between the boxes
+    // of two pieces that the broadphase parted: those boxes are drawn, as the gap is theirs.
+    const bool apartVerdict = step == tested + 1 && focusA >= 0 && !study.merged.manifold.overlap;
+    const bool gapOfBoxes =
+        apartVerdict && std::none_of(study.tested.begin(), study.tested.end(), [&](const PiecePairTest& t) {
+            return t.i == focusA && t.j == focusB;
+        });
     std::vector<LegendMark> used; // the marks drawn, for the key
     canvas.BeginGroup("pieces");
     for (int side = 0; side < 2; ++side)
@@ -349,7 +391,7 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
         for (size_t i = 0; i < boxes.size(); ++i)
         {
             const int focus = side == 0 ? focusA : focusB;
-            if (!(step == 0 || (step <= tested && static_cast<int>(i) == focus)))
+            if (!(step == 0 || ((step <= tested || gapOfBoxes) && static_cast<int>(i) == focus)))
             {
                 continue;
             }
@@ -402,6 +444,58 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
                 used.push_back(LegendMark::Contact);
             }
         }
+    }
+    if (apartVerdict)
+    {
+        // The gap, as the static convex verdict draws it: the separating line through its middle, perpendicular to the
+        // normal, and the gap itself as a bar from one piece (or box) to the other, named by its size.
+        canvas.BeginGroup("gap");
+        const Vec2 n = study.merged.manifold.normal;
+        const Vec2 across = LeftPerp(n);
+        double loA = 0.0, hiA = 0.0, loB = 0.0, hiB = 0.0;
+        double sideA[2] = {0.0, 0.0};
+        double sideB[2] = {0.0, 0.0};
+        if (gapOfBoxes)
+        {
+            BoxRange(study.boxesA[static_cast<size_t>(focusA)], n, loA, hiA);
+            BoxRange(study.boxesB[static_cast<size_t>(focusB)], n, loB, hiB);
+            BoxRange(study.boxesA[static_cast<size_t>(focusA)], across, sideA[0], sideA[1]);
+            BoxRange(study.boxesB[static_cast<size_t>(focusB)], across, sideB[0], sideB[1]);
+        }
+        else
+        {
+            PartRange(a, focusA, n, loA, hiA);
+            PartRange(b, focusB, n, loB, hiB);
+            PartRange(a, focusA, across, sideA[0], sideA[1]);
+            PartRange(b, focusB, across, sideB[0], sideB[1]);
+        }
+        const double gap = study.merged.manifold.gap;
+        const double middle = hiA + 0.5 * gap;
+        // The line runs where both pieces lie across the normal (else between them), a little beyond: it parts these
+        // two, not the whole bodies, and must not cut through another piece of a concave body. The bar crosses in
+        // the middle of that stretch.
+        const double overlapLow = std::max(sideA[0], sideB[0]);
+        const double overlapHigh = std::min(sideA[1], sideB[1]);
+        const double spanLow = overlapLow <= overlapHigh ? overlapLow : overlapHigh;
+        const double spanHigh = overlapLow <= overlapHigh ? overlapHigh : overlapLow;
+        const double shared = 0.5 * (spanLow + spanHigh);
+        const double reach = 0.1 * (spanHigh - spanLow) + 12.0 / view.zoom;
+        const ScreenPoint lineFrom = ToScreen(view, middle * n + (spanLow - reach) * across);
+        const ScreenPoint lineTo = ToScreen(view, middle * n + (spanHigh + reach) * across);
+        DashedSegment(canvas, lineFrom, lineTo, palette::kGap, 2.5f, rect, 10.0f, 6.0f);
+        labels.ReservePartingLine(lineFrom, lineTo, 2.5f);
+        used.push_back(LegendMark::Separating);
+        const ScreenPoint barFrom = ToScreen(view, hiA * n + shared * across);
+        const ScreenPoint barTo = ToScreen(view, (hiA + gap) * n + shared * across);
+        canvas.Segment(barFrom, barTo, palette::kGap, 4.0f);
+        labels.ReserveLine(barFrom, barTo, 4.0f);
+        used.push_back(LegendMark::Gap);
+        const std::string size = FormatNumber(gap);
+        const ScreenPoint mid{0.5f * (barFrom.x + barTo.x), 0.5f * (barFrom.y + barTo.y)};
+        // Beside the bar, across the normal: the label reads as naming the bar, not the line. Between boxes the
+        // gap is a bound: the pieces may lie farther apart than their boxes.
+        labels.Place(mid, (gapOfBoxes ? "gap at least " : "gap ") + size, TextStyle::Label, 0x006E50FFu,
+                     static_cast<float>(-across.x), static_cast<float>(across.y), 8.0f, LabelRank::Verdict);
     }
     std::sort(used.begin(), used.end());
     used.erase(std::unique(used.begin(), used.end()), used.end());

@@ -481,3 +481,60 @@ TEST_CASE("The pieces figure tests the pairs of pieces whose boxes overlap, one 
     CHECK(m.manifold.depth == Approx(0.6));
     CHECK(captions.back().find("along (1.00, 0.00)") != std::string::npos);
 }
+
+TEST_CASE("The pieces figure's verdict on a pair apart draws the gap, as the convex verdict does", "[concave-views]")
+{
+    // Lesson 18's box in the notch of the L: the L's foot ends at y = 1 and the box's bottom is at 1.5; no box of a
+    // piece overlaps the box, so the gap is the one between the foot's box and the box: 0.5, along (0, 1).
+    const Scene scene = LoadConcave(R"({"bodies": [{"name": "L", "polygon": [[0, 0], [4, 0], [4, 1], [1, 1], [1, 3],
+        [0, 3]]}, {"name": "box", "box": [1, 1], "position": [2, 2]}], "view": {"figure": "pieces"}})");
+    FigureSetup setup = SetUpFigure(scene, {});
+    REQUIRE(setup.Ok());
+    // Drawn through the figure's camera, as the app draws it, so that screen points map back to the world.
+    setup.figure.framesItself = false;
+    RecordingCanvas canvas;
+    PaintFigure(canvas, scene, setup.study, setup.figure);
+    const View& view = setup.figure.view;
+    // The separating line, dashed in the gap's green: every dash on y = 1.25, the middle of the gap, along the box's
+    // width (x from 1.5 to 2.5) where it faces the foot, and clear of the L's arm (x < 1), which it does not part.
+    int dashes = 0;
+    int bars = 0;
+    double left = INFINITY;
+    double right = -INFINITY;
+    for (const DrawCommand* c : canvas.InGroup("gap"))
+    {
+        REQUIRE(c->kind == DrawCommand::Kind::Segment);
+        CHECK(c->color == palette::kGap);
+        const Vec2 p = ToWorld(view, c->points[0]);
+        const Vec2 q = ToWorld(view, c->points[1]);
+        if (c->thickness < 3.0f)
+        {
+            ++dashes;
+            CHECK(p.y == Approx(1.25).margin(1.0 / view.zoom));
+            CHECK(q.y == Approx(1.25).margin(1.0 / view.zoom));
+            left = std::min({left, p.x, q.x});
+            right = std::max({right, p.x, q.x});
+        }
+        else
+        {
+            // The gap itself: from the foot's top to the box's bottom, where both lie across x (1.5 to 2.5).
+            ++bars;
+            CHECK(std::min(p.y, q.y) == Approx(1.0).margin(1.0 / view.zoom));
+            CHECK(std::max(p.y, q.y) == Approx(1.5).margin(1.0 / view.zoom));
+            CHECK(p.x == Approx(q.x).margin(1.0 / view.zoom));
+            CHECK(p.x > 1.5);
+            CHECK(p.x < 2.5);
+        }
+    }
+    CHECK(dashes > 3);
+    CHECK(bars == 1);
+    CHECK(left <= 1.5);
+    CHECK(left > 1.0);
+    CHECK(right >= 2.5);
+    bool named = false;
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        named = named || (c->kind == DrawCommand::Kind::Text && c->text == "gap at least 0.50");
+    }
+    CHECK(named);
+}
