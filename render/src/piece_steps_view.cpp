@@ -491,11 +491,13 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
         labels.ReserveLine(barFrom, barTo, 4.0f);
         used.push_back(LegendMark::Gap);
         const std::string size = FormatNumber(gap);
-        const ScreenPoint mid{0.5f * (barFrom.x + barTo.x), 0.5f * (barFrom.y + barTo.y)};
-        // Beside the bar, across the normal: the label reads as naming the bar, not the line. Between boxes the
-        // gap is a bound: the pieces may lie farther apart than their boxes.
-        labels.Place(mid, (gapOfBoxes ? "gap at least " : "gap ") + size, TextStyle::Label, 0x006E50FFu,
-                     static_cast<float>(-across.x), static_cast<float>(across.y), 8.0f, LabelRank::Verdict);
+        // At an end of the line, beyond it: in the gap itself a label would hide the bar or lie on a piece. Between
+        // boxes the gap is a bound: the pieces may lie farther apart than their boxes.
+        const ScreenPoint end = lineTo.y < lineFrom.y || (lineTo.y == lineFrom.y && lineTo.x > lineFrom.x) ? lineTo
+                                                                                                            : lineFrom;
+        const ScreenPoint start = end.x == lineTo.x && end.y == lineTo.y ? lineFrom : lineTo;
+        labels.Place(end, (gapOfBoxes ? "gap at least " : "gap ") + size, TextStyle::Label, 0x006E50FFu,
+                     end.x - start.x, end.y - start.y, 6.0f, LabelRank::Verdict);
     }
     std::sort(used.begin(), used.end());
     used.erase(std::unique(used.begin(), used.end()), used.end());
