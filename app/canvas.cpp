@@ -26,35 +26,58 @@ float Distance(ScreenPoint a, ScreenPoint b)
     return std::hypot(a.x - b.x, a.y - b.y);
 }
 
-// Largest distance of the shape from the body origin, in world units.
-double Extent(const Body& body)
+// The box of the body as drawn, in canvas pixels (y down).
+struct PixelBox
+{
+    float minX, minY, maxX, maxY;
+};
+
+PixelBox BodyPixels(const View& view, const Body& body)
 {
     if (body.shape.type == ShapeType::Circle)
     {
-        return Length(body.shape.circle.center) + body.shape.circle.radius;
+        const ScreenPoint c = ToScreen(view, TransformPoint(body.Xf(), body.shape.circle.center));
+        const float r = static_cast<float>(body.shape.circle.radius * view.zoom);
+        return {c.x - r, c.y - r, c.x + r, c.y + r};
     }
-    double extent = 0.0;
+    PixelBox box{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    const Transform xf = body.Xf();
     for (const Vec2& v : body.shape.polygon.Vertices())
     {
-        extent = std::max(extent, Length(v));
+        const ScreenPoint p = ToScreen(view, TransformPoint(xf, v));
+        box = {std::min(box.minX, p.x), std::min(box.minY, p.y), std::max(box.maxX, p.x), std::max(box.maxY, p.y)};
     }
-    return extent;
+    return box;
 }
 
+// The turning handle sits just above the body as drawn, over its origin (the point it turns about) as far as the
+// body reaches, and inside the canvas: a handle placed by the body's reach from its origin floated far above a body
+// whose origin is a corner (lesson 18's L and U) and left the canvas.
 ScreenPoint RotateHandle(const View& view, const Body& body)
 {
     const ScreenPoint origin = ToScreen(view, body.position);
-    return {origin.x, origin.y - static_cast<float>(Extent(body) * view.zoom) - 26.0f};
+    const PixelBox box = BodyPixels(view, body);
+    return {std::clamp(origin.x, box.minX, box.maxX), std::max(box.minY - 26.0f, 10.0f)};
 }
 
+// Where the turning handle's stem meets the body: straight below the handle, at the top of the body as drawn.
+ScreenPoint StemFoot(const View& view, const Body& body)
+{
+    const ScreenPoint turn = RotateHandle(view, body);
+    return {turn.x, std::max(BodyPixels(view, body).minY, turn.y + 6.0f)};
+}
+
+// The velocity handle: the velocity arrow's tip, or, for a velocity too short to grab, just right of the body as
+// drawn, level with its origin as far as the body reaches.
 ScreenPoint VelocityHandle(const View& view, const Body& body)
 {
-    const ScreenPoint origin = ToScreen(view, body.position);
     if (Length(body.velocity) * view.zoom >= 14.0)
     {
         return ToScreen(view, body.position + body.velocity);
     }
-    return {origin.x + static_cast<float>(Extent(body) * view.zoom) + 22.0f, origin.y};
+    const ScreenPoint origin = ToScreen(view, body.position);
+    const PixelBox box = BodyPixels(view, body);
+    return {box.maxX + 22.0f, std::clamp(origin.y, box.minY, box.maxY)};
 }
 
 // Up to this many vertices a selected body shows a handle on each (more would hide its outline).
@@ -65,8 +88,10 @@ constexpr size_t kMaxVertexHandles = 64;
 std::vector<DrawnOver> HandleRegions(const View& view, const Body& body)
 {
     const ScreenPoint turn = RotateHandle(view, body);
+    const ScreenPoint foot = StemFoot(view, body);
     const ScreenPoint velocity = VelocityHandle(view, body);
     std::vector<DrawnOver> regions{{{turn.x - 7.0f, turn.y - 7.0f}, {turn.x + 7.0f, turn.y + 7.0f}},
+                                   {{turn.x - 2.0f, turn.y}, {turn.x + 2.0f, std::max(foot.y, turn.y)}},
                                    {{velocity.x - 6.0f, velocity.y - 8.0f}, {velocity.x + 16.0f, velocity.y + 8.0f}}};
     const std::vector<Vec2> outline = EditableOutline(body);
     if (outline.size() <= kMaxVertexHandles)
@@ -449,7 +474,7 @@ void Panels::AnnounceHits(Canvas& canvas, const Figure& figure, ImVec2 origin)
     std::fflush(stdout);
 }
 
-// The selected body's handles: its vertices, the turning handle above it, and its velocity arrow's tip.
+// The selected body's handles: its vertices, the turning handle on a stem above it, and its velocity arrow's tip.
 void Panels::Handles(ImDrawList* list, ImVec2 origin)
 {
     const int selected = m_app.Selected();
@@ -474,9 +499,8 @@ void Panels::Handles(ImDrawList* list, ImVec2 origin)
             list->AddRect(ImVec2(p.x - 4.0f, p.y - 4.0f), ImVec2(p.x + 4.0f, p.y + 4.0f), ink, 0.0f, 0, 1.5f);
         }
     }
-    const ImVec2 center = at(ToScreen(camera, body.position));
     const ImVec2 turn = at(RotateHandle(camera, body));
-    list->AddLine(center, turn, IM_COL32(43, 43, 43, 120), 1.0f);
+    list->AddLine(at(StemFoot(camera, body)), turn, IM_COL32(43, 43, 43, 120), 1.0f);
     list->AddCircleFilled(turn, 6.0f, white);
     list->AddCircle(turn, 6.0f, ink, 0, 1.5f);
     const ImVec2 velocity = at(VelocityHandle(camera, body));

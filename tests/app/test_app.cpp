@@ -698,21 +698,52 @@ TEST_CASE("Shift-drag turns a body and the velocity handle sets its velocity", "
     h.Drag(grab, h.OnScreen(b.position + Vec2{0.0, 0.3}), 0, true);
     CHECK(std::remainder(h.BodyNamed("B").angle - angle - 1.5707963267948966, 6.283185307179586) ==
           Approx(0.0).margin(0.02));
-    // The velocity handle sits right of the selected body while it does not move.
+    // The velocity handle sits just right of the selected body as drawn, level with its origin, while it does not
+    // move.
     const Body& turned = h.BodyNamed("B");
-    double extent = 0.0;
+    float right = -INFINITY;
     for (const Vec2& v : turned.shape.polygon.Vertices())
     {
-        extent = std::max(extent, Length(v));
+        right = std::max(right, ToScreen(h.View().Camera(), TransformPoint(turned.Xf(), v)).x);
     }
     const ScreenPoint origin = ToScreen(h.View().Camera(), turned.position);
-    const ImVec2 handle(origin.x + static_cast<float>(extent * h.View().Camera().zoom) + 22.0f + h.CanvasOrigin().x,
-                        origin.y + h.CanvasOrigin().y);
+    const ImVec2 handle(right + 22.0f + h.CanvasOrigin().x, origin.y + h.CanvasOrigin().y);
     const Vec2 target = turned.position + Vec2{-1.5, -0.25};
     h.Drag(handle, h.OnScreen(target));
     CHECK(Length(h.BodyNamed("B").velocity - Vec2{-1.5, -0.25}) < 2.0 / h.View().Camera().zoom);
     // The pair now moves but overlaps at t = 0: the swept test ran and handed over to the static one.
     CHECK(h.View().Setup().study.startsOverlapping);
+}
+
+TEST_CASE("A concave body's turning handle sits just above it, on the canvas, and follows it when it is dragged",
+          "[app]")
+{
+    // Lesson 18's L turns about its corner (0, 0), 3.2 units from its far corner: the handle stands 26 pixels above
+    // the L's top as drawn, over the corner, wherever the L is dragged; grabbed there it turns the L.
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/concave/l18_notch.json");
+    auto handle = [&] {
+        const Body& l = h.BodyNamed("L");
+        float top = INFINITY;
+        for (const Vec2& v : l.outline)
+        {
+            top = std::min(top, ToScreen(h.View().Camera(), TransformPoint(l.Xf(), v)).y);
+        }
+        const ScreenPoint corner = ToScreen(h.View().Camera(), l.position);
+        return ImVec2(corner.x + h.CanvasOrigin().x, top - 26.0f + h.CanvasOrigin().y);
+    };
+    // Selected by a drag of its foot, down and to the right.
+    const ImVec2 foot = h.OnScreen(Vec2{3.0, 0.5});
+    h.Drag(foot, ImVec2(foot.x + 40.0f, foot.y + 30.0f));
+    REQUIRE(h.app->Selected() == 0);
+    REQUIRE(h.BodyNamed("L").position.x > 0.0);
+    const ImVec2 grab = handle();
+    CHECK(grab.y > h.CanvasOrigin().y);
+    const View camera = h.View().Camera();
+    // A drag from the handle to the right of the corner turns the L clockwise, and the camera stays.
+    const ImVec2 corner = h.OnScreen(h.BodyNamed("L").position);
+    h.Drag(grab, ImVec2(corner.x + (grab.y - corner.y) * -1.0f, corner.y));
+    CHECK(h.BodyNamed("L").angle == Approx(-1.5707963267948966).margin(0.05));
+    CHECK(h.View().Camera().center == camera.center);
 }
 
 TEST_CASE("Pair, query, step view, pitfall, precision and layer changes are edits that undo and redo restore", "[app]")
