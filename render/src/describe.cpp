@@ -134,16 +134,21 @@ std::string Time(double t)
 
 // The span a sweep covers, t from 0 to 1: one step of a scene without a world, where a velocity is the displacement
 // over a step; one second of a world's scene, whose velocities are in units per second and whose figures sweep them
-// over a second (many steps of dt).
+// over a second (many steps of dt). A world that counts time in steps (dt = 1) says "step", as its lesson does.
+bool SweepsSteps(const Scene& scene)
+{
+    return !scene.hasWorld || scene.world.dt == 1.0;
+}
+
 std::string SweptSpan(const Scene& scene)
 {
-    return scene.hasWorld ? "the swept second" : "the step";
+    return SweepsSteps(scene) ? "the step" : "the swept second";
 }
 
 // How far an interval moves over the swept span, in the same words.
 std::string PerSpan(const Scene& scene)
 {
-    return scene.hasWorld ? "per second" : "per step";
+    return SweepsSteps(scene) ? "per step" : "per second";
 }
 
 std::string SweepExitReason(const Scene& scene, SweepExit exit)

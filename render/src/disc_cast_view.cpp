@@ -103,7 +103,7 @@ std::string DescribeDiscCast(const Body& target, const Body& disc, const DiscHit
     const double r = disc.shape.circle.radius;
     const Vec2 p1 = TransformPoint(disc.Xf(), disc.shape.circle.center);
     const Vec2 p2 = p1 + disc.velocity;
-    std::string text = "A disc of radius " + FormatNumber(r) + ", " + disc.name + ", moves its centre from " +
+    std::string text = "A disc of radius " + FormatNumber(r) + " (" + disc.name + ") moves its centre from " +
                        Point(p1) + " to " + Point(p2) + ". ";
     if (hit.startsInside)
     {
