@@ -50,21 +50,51 @@ PixelBox BodyPixels(const View& view, const Body& body)
     return box;
 }
 
-// The turning handle sits just above the body as drawn, over its origin (the point it turns about) as far as the
-// body reaches, and inside the canvas: a handle placed by the body's reach from its origin floated far above a body
-// whose origin is a corner (lesson 18's L and U) and left the canvas.
+// The highest point of the body as drawn straight above or below canvas column x (within its box): where a stem
+// from above meets it.
+ScreenPoint TopAt(const View& view, const Body& body, float x)
+{
+    const PixelBox box = BodyPixels(view, body);
+    float top = box.maxY;
+    if (body.shape.type == ShapeType::Circle)
+    {
+        const ScreenPoint c = ToScreen(view, TransformPoint(body.Xf(), body.shape.circle.center));
+        const float r = static_cast<float>(body.shape.circle.radius * view.zoom);
+        top = c.y - std::sqrt(std::max(0.0f, r * r - (x - c.x) * (x - c.x)));
+    }
+    else
+    {
+        const std::vector<Vec2> outline = EditableOutline(body);
+        const Transform xf = body.Xf();
+        for (size_t i = 0; i < outline.size(); ++i)
+        {
+            const ScreenPoint p = ToScreen(view, TransformPoint(xf, outline[i]));
+            const ScreenPoint q = ToScreen(view, TransformPoint(xf, outline[(i + 1) % outline.size()]));
+            if (std::min(p.x, q.x) <= x && x <= std::max(p.x, q.x))
+            {
+                top = std::min(top, p.x == q.x ? std::min(p.y, q.y) : p.y + (q.y - p.y) * (x - p.x) / (q.x - p.x));
+            }
+        }
+    }
+    return {x, std::clamp(top, box.minY, box.maxY)};
+}
+
+// The turning handle stands 26 pixels above the body as drawn, over its origin (the point it turns about) as far as
+// the body reaches, and inside the canvas: a handle placed by the body's reach from its origin floated far above a
+// body whose origin is a corner (lesson 18's L and U) and left the canvas.
 ScreenPoint RotateHandle(const View& view, const Body& body)
 {
     const ScreenPoint origin = ToScreen(view, body.position);
     const PixelBox box = BodyPixels(view, body);
-    return {std::clamp(origin.x, box.minX, box.maxX), std::max(box.minY - 26.0f, 10.0f)};
+    const ScreenPoint top = TopAt(view, body, std::clamp(origin.x, box.minX, box.maxX));
+    return {top.x, std::max(top.y - 26.0f, 10.0f)};
 }
 
-// Where the turning handle's stem meets the body: straight below the handle, at the top of the body as drawn.
+// Where the turning handle's stem meets the body: straight below the handle, on the body's outline.
 ScreenPoint StemFoot(const View& view, const Body& body)
 {
     const ScreenPoint turn = RotateHandle(view, body);
-    return {turn.x, std::max(BodyPixels(view, body).minY, turn.y + 6.0f)};
+    return {turn.x, std::max(TopAt(view, body, turn.x).y, turn.y + 6.0f)};
 }
 
 // The velocity handle: the velocity arrow's tip, or, for a velocity too short to grab, just right of the body as

@@ -142,15 +142,18 @@ void Viewer::Adopt(FigureSetup fresh, Scene studied)
     {
         m_camera = m_setup.figure.view;
     }
-    if ((m_cameraFit || m_framed) && m_setup.figure.kind == FigureKind::Slice && m_setup.figure.body >= 0 &&
-        m_setup.figure.body < static_cast<int>(m_studied.bodies.size()))
+    if ((m_cameraFit || m_framed) &&
+        (m_setup.figure.kind == FigureKind::Slice || m_setup.figure.kind == FigureKind::Decomposition) &&
+        m_setup.figure.body >= 0 && m_setup.figure.body < static_cast<int>(m_studied.bodies.size()))
     {
-        // A slice draws its body through the camera in its before panel, the left half of the canvas: the body and
-        // the cut fill that panel below the caption, until the camera is panned, zoomed or held by a drag.
+        // A slice or a decomposition draws its body through the camera in its left panel, the left half of the
+        // canvas: the body (and a slice's cut) fill that panel below the caption, until the camera is panned,
+        // zoomed or held by a drag.
         Figure sized = m_setup.figure;
         sized.view.width = m_canvasWidth;
         sized.view.height = m_canvasHeight;
-        m_camera = FrameSlice(m_studied, m_setup.figure.body, sized);
+        m_camera = m_setup.figure.kind == FigureKind::Slice ? FrameSlice(m_studied, m_setup.figure.body, sized)
+                                                            : FrameDecomposition(m_studied, m_setup.figure.body, sized);
     }
     m_camera.width = m_canvasWidth;
     m_camera.height = m_canvasHeight;

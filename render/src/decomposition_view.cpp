@@ -2,6 +2,8 @@
 // The decomposition figure: one outline cut into convex pieces by both methods, side by side at one scale.
 #include "concave_views.h"
 
+#include <satviz/render/recording_canvas.h>
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -94,6 +96,55 @@ std::string DescribeDecomposition(const std::vector<Vec2>& outline, const Decomp
     return text;
 }
 
+namespace
+{
+
+// The world box of the outline placed by xf.
+void OutlineBox(const std::vector<Vec2>& outline, const Transform& xf, Vec2& low, Vec2& high)
+{
+    low = {INFINITY, INFINITY};
+    high = {-INFINITY, -INFINITY};
+    for (const Vec2& v : outline)
+    {
+        const Vec2 p = TransformPoint(xf, v);
+        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+    }
+}
+
+// The two panels below the caption band whose bottom is `top`.
+void PanelRects(float top, float width, float height, ScreenRect (&rects)[2])
+{
+    rects[0] = {0.0f, top + kHeaderHeight, 0.5f * width, height};
+    rects[1] = {0.5f * width, top + kHeaderHeight, width, height};
+}
+
+} // namespace
+
+View FrameDecomposition(const Scene& scene, int bodyIndex, const Figure& figure)
+{
+    const Body& body = scene.bodies[static_cast<size_t>(bodyIndex)];
+    const float width = static_cast<float>(figure.view.width);
+    const std::vector<Vec2> outline = BodyOutline(body);
+    float top = 0.0f;
+    if (figure.layers & kLayerCaption)
+    {
+        // The band's height, from its wrapped lines, measured as the canvas measures them.
+        RecordingCanvas measure;
+        top = DrawCaptionBand(measure, figure.caption,
+                              DescribeDecomposition(outline, Decompose(outline, DecomposeMethod::Fast),
+                                                    Decompose(outline, DecomposeMethod::Fewest)),
+                              width);
+    }
+    ScreenRect rects[2];
+    PanelRects(top, width, static_cast<float>(figure.view.height), rects);
+    Vec2 low{};
+    Vec2 high{};
+    OutlineBox(outline, body.Xf(), low, high);
+    const double zoom = std::min(FitZoom(rects[0], low, high, kMargin), FitZoom(rects[1], low, high, kMargin));
+    return FramePanel(rects[0], low, high, figure.view.width, figure.view.height, kMargin, zoom).view;
+}
+
 void PaintDecomposition(Canvas& surface, const Scene& scene, int bodyIndex, const Figure& figure)
 {
     // Every line is drawn through the watch, so that the labels keep off it.
@@ -105,7 +156,10 @@ void PaintDecomposition(Canvas& surface, const Scene& scene, int bodyIndex, cons
     const std::vector<Vec2> outline = BodyOutline(body);
     const Decomposition fast = Decompose(outline, DecomposeMethod::Fast);
     const Decomposition fewest = Decompose(outline, DecomposeMethod::Fewest);
-    const Transform xf = MakeTransform(Vec2{}, body.angle);
+    // Framing itself, the figure shows the outline alone, wherever the body stands; in the app the left panel draws
+    // it through the camera, by which the pointer is mapped to the world (FrameDecomposition opens it framed), and
+    // the right panel at the same scale half the image to the right.
+    const Transform xf = figure.framesItself ? MakeTransform(Vec2{}, body.angle) : body.Xf();
 
     canvas.BeginGroup("background");
     canvas.FillRect({0.0f, 0.0f}, {width, height}, palette::kBackground);
@@ -114,16 +168,11 @@ void PaintDecomposition(Canvas& surface, const Scene& scene, int bodyIndex, cons
                           : 0.0f;
     labels.ReserveBand({0.0f, 0.0f, width, top});
 
-    Vec2 low{INFINITY, INFINITY};
-    Vec2 high{-INFINITY, -INFINITY};
-    for (const Vec2& v : outline)
-    {
-        const Vec2 p = TransformPoint(xf, v);
-        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
-        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
-    }
-    const ScreenRect rects[2] = {{0.0f, top + kHeaderHeight, 0.5f * width, height},
-                                 {0.5f * width, top + kHeaderHeight, width, height}};
+    Vec2 low{};
+    Vec2 high{};
+    OutlineBox(outline, xf, low, high);
+    ScreenRect rects[2];
+    PanelRects(top, width, height, rects);
     const double zoom = std::min(FitZoom(rects[0], low, high, kMargin), FitZoom(rects[1], low, high, kMargin));
     const Decomposition* results[2] = {&fast, &fewest};
     const char* names[2] = {"Fast", "Fewest"};
@@ -139,7 +188,15 @@ void PaintDecomposition(Canvas& surface, const Scene& scene, int bodyIndex, cons
     canvas.Segment({0.5f * width, top}, {0.5f * width, height}, palette::kFaint, 1.0f);
     for (int side = 0; side < 2; ++side)
     {
-        const Panel panel = FramePanel(rects[side], low, high, figure.view.width, figure.view.height, kMargin, zoom);
+        Panel panel{rects[side], figure.view};
+        if (figure.framesItself)
+        {
+            panel = FramePanel(rects[side], low, high, figure.view.width, figure.view.height, kMargin, zoom);
+        }
+        else
+        {
+            panel.view.center.x -= side * 0.5 * width / figure.view.zoom;
+        }
         const Decomposition& d = *results[side];
         canvas.BeginGroup(side == 0 ? "fast" : "fewest");
         const int pieces = static_cast<int>(d.pieces.size());

@@ -1556,12 +1556,14 @@ TEST_CASE("A slice opens with its body and cut filling the before panel below th
     }
 }
 
-TEST_CASE("In the disc-cast and slice figures a dragged body is drawn where the pointer put it", "[app]")
+TEST_CASE("In the disc-cast, slice and decomposition figures a dragged body is drawn where the pointer put it", "[app]")
 {
     // The canvas maps the pointer to the world by its camera: each corner of the dragged polygon must be drawn at the
-    // camera's image of that corner, not where a figure framing its bodies anew would put it.
+    // camera's image of that corner, not where a figure framing its bodies anew would put it (the decomposition
+    // figure drew its outline framed in both panels, so that a drag moved the handles and not the shape).
     for (const auto& [scene, name] : {std::pair<std::string, std::string>{"disc_cast_corner.json", "wall"},
-                                      std::pair<std::string, std::string>{"l19_bar_cut.json", "bar"}})
+                                      std::pair<std::string, std::string>{"l19_bar_cut.json", "bar"},
+                                      std::pair<std::string, std::string>{"l18_decompose.json", "flag"}})
     {
         INFO(scene);
         Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/concave/" + scene);

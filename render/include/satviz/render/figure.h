@@ -50,6 +50,12 @@ int FigureStepCount(const Scene& scene, const FigureSetup& setup);
 /// gives both panels when it frames itself. The app draws the slice through its camera and opens it so.
 View FrameSlice(const Scene& scene, int body, const Figure& figure);
 
+/// The camera of a decomposition figure (FigureKind::Decomposition) of the figure's size that draws `body` filling
+/// the left panel below the caption band and the panel's title, at the scale the figure gives both panels when it
+/// frames itself. The app draws the decomposition through its camera, the right panel half the image to the right,
+/// and opens it so.
+View FrameDecomposition(const Scene& scene, int body, const Figure& figure);
+
 /// The camera of a pair figure of `width` x `height` for a scene that frames itself: `frame` is its view block, a
 /// centre and zoom for a figure of frame.width x frame.height whose centre is the middle of what the world's panels
 /// leave above them. The same world rectangle is shown, scaled to the new scene area and centred in it (Reframe); at
