@@ -2409,18 +2409,43 @@ class Painter
                                 14.0f;
         const float lineLeft = left + nameWidth;
         const float lineRight = Width() - 28.0f;
-        std::string title = m_verdict ? "deciding " : "";
-        title += (m_axis.textbook ? "axis " : "face test ") + std::to_string(m_axis.index + 1) + ": projections on " +
-                 DescribeAxis(m_scene, m_study, m_axis.Ref()) +
-                 (!m_axis.decided  ? " (number line)"
-                  : m_axis.bounded ? " (not walked to: numbers for this view only)"
-                                  : " (not evaluated: numbers for this view only)");
-        // High enough to keep clear of the end values above A's bar.
+        const std::string name = std::string(m_verdict ? "deciding " : "") +
+                                 (m_axis.textbook ? "axis " : "face test ") + std::to_string(m_axis.index + 1);
+        const std::string axis = DescribeAxis(m_scene, m_study, m_axis.Ref());
+        const std::string note = !m_axis.decided  ? ""
+                                 : m_axis.bounded ? " (not walked to: numbers for this view only)"
+                                                  : " (not evaluated: numbers for this view only)";
+        const std::string shortNote = !m_axis.decided ? "" : " (numbers for this view only)";
+        // One line, high enough to keep clear of the end values above A's bar: on a narrow figure (the app's
+        // smallest canvas) the words that the sentence and the picture also give go first, rather than the line
+        // being cut at the figure's edge.
+        const std::string titles[] = {name + ": projections on " + axis + (m_axis.decided ? note : " (number line)"),
+                                      name + ": projections on " + axis + note,
+                                      name + ": " + axis + shortNote,
+                                      name + shortNote,
+                                      name};
+        std::string title = titles[4];
+        for (const std::string& t : titles)
+        {
+            if (m_canvas.MeasureText(t, TextStyle::Label).x <= Width() - left - 8.0f)
+            {
+                title = t;
+                break;
+            }
+        }
         m_canvas.Text({left, top + 4.0f}, title, TextStyle::Label, palette::kMuted);
         if (m_axis.skipped)
         {
-            m_canvas.Text({left, top + 36.0f}, "skipped: anti-parallel to a face already tested (the same axis)",
-                         TextStyle::Body, palette::kMuted);
+            // Wrapped to the figure (the rows it stands for are empty): the app's smallest canvas is narrower.
+            const std::vector<std::string> lines =
+                WrapLines("skipped: anti-parallel to a face already tested (the same axis)", Width() - left - 8.0f,
+                          [&](const std::string& t) { return m_canvas.MeasureText(t, TextStyle::Body).x; });
+            float y = top + 36.0f;
+            for (const std::string& line : lines)
+            {
+                m_canvas.Text({left, y}, line, TextStyle::Body, palette::kMuted);
+                y += m_canvas.MeasureText(line, TextStyle::Body).y + 3.0f;
+            }
             return;
         }
         double lo = std::min(m_axis.minA, m_axis.minB);

@@ -2075,3 +2075,55 @@ TEST_CASE("A swept figure's key explains the time bar's window band, or its no-c
         CHECK((key.find("vermillion tick on the time bar") != std::string::npos) == tick);
     }
 }
+
+TEST_CASE("The number line's title fits the width of the app's smallest canvas in every scene, step and view",
+          "[painter]")
+{
+    // The app's smallest canvas is 360 x 600 pixels beside its panels (app/panels.h): there the title over the number
+    // line ran off the figure's edge, "deciding axis 4: projections on the normal of B's edge 3 (nu". Each text of
+    // the panel, measured as the canvas measures it, lies inside the figure.
+    int checked = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    {
+        if (entry.path().extension() != ".json")
+        {
+            continue;
+        }
+        SceneResult loaded = LoadScene(entry.path().string(), SceneOptions{true});
+        REQUIRE(loaded.Ok());
+        REQUIRE(SimulateScene(loaded.scene, loaded.scene.view.simSteps).empty());
+        for (const StepView view : {StepView::Textbook, StepView::Faces})
+        {
+            FigureOptions options;
+            options.width = 360;
+            options.height = 600;
+            options.setSteps = true;
+            options.steps = view;
+            FigureSetup setup = SetUpFigure(loaded.scene, options);
+            if (!setup.Ok() || setup.figure.kind != FigureKind::Pair)
+            {
+                continue;
+            }
+            for (int k = 0; k < FigureStepCount(loaded.scene, setup); ++k)
+            {
+                setup.figure.step = k;
+                RecordingCanvas canvas;
+                PaintFigure(canvas, loaded.scene, setup.study, setup.figure);
+                for (const DrawCommand* c : canvas.InGroup("panel"))
+                {
+                    if (c->kind != DrawCommand::Kind::Text)
+                    {
+                        continue;
+                    }
+                    INFO(entry.path().filename().string() << (view == StepView::Textbook ? " textbook" : " faces")
+                                                          << " step " << k + 1 << ": \"" << c->text << "\"");
+                    const ScreenPoint size = canvas.MeasureText(c->text, c->style);
+                    CHECK(c->points[0].x >= 0.0f);
+                    CHECK(c->points[0].x + size.x <= 360.0f);
+                    ++checked;
+                }
+            }
+        }
+    }
+    CHECK(checked > 1000);
+}
