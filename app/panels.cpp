@@ -776,13 +776,10 @@ void Panels::Inspector()
     {
         WrappedText("A polygon is not valid once rounded to float: the numbers are double.");
     }
-    // Every number in full, as the shortest decimal that reads back as the same value, with at least the two
-    // decimals the figures and the lessons give.
-    auto full = [&](double v) {
-        return study.singlePrecision ? FullDecimal(static_cast<float>(v)) : FullDecimal(v);
-    };
-    auto number = [&](const std::string& label, double v) { NumberLine(label, {full(v)}); };
-    auto point = [&](const std::string& label, Vec2 p) { NumberLine(label, {full(p.x), full(p.y)}); };
+    // Every number as the step's sentence and the figure print it (FormatNumber, FormatPair), so that the same
+    // number reads alike in the panel and beside the picture.
+    auto number = [&](const std::string& label, double v) { NumberLine(label, {FormatNumber(v)}); };
+    auto point = [&](const std::string& label, Vec2 p) { NumberLine(label, PairParts(p)); };
     // A sweep's numbers first, as its verdict gives them; then the static test where the bodies start (t = 0),
     // under a heading of its own, since its gap or overlap is not the sweep's answer.
     if (study.sweep)

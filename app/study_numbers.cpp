@@ -6,24 +6,30 @@
 namespace satviz
 {
 
+std::vector<std::string> PairParts(Vec2 p)
+{
+    // FormatPair gives both coordinates as many decimals: "(-0.342, 0.940)".
+    const std::string pair = FormatPair(p.x, p.y, "", "");
+    const size_t comma = pair.find(", ");
+    return {pair.substr(0, comma), pair.substr(comma + 2)};
+}
+
 std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study)
 {
-    // In single precision the queries ran on floats: their numbers are floats widened, shown as floats.
-    auto full = [&](double v) {
-        return study.singlePrecision ? FullDecimal(static_cast<float>(v)) : FullDecimal(v);
-    };
     std::vector<NumberRow> rows;
-    auto point = [&](const std::string& label, Vec2 p) { rows.push_back({label, {full(p.x), full(p.y)}}); };
+    // As the sentences and the figures print them: a number here reads as the same number there.
+    auto point = [&](const std::string& label, Vec2 p) { rows.push_back({label, PairParts(p)}); };
     const Manifold& m = study.manifold;
     // The textbook view shows the MTV its own test found; the contact points come from Collide's clipping.
     const bool textbook = study.Textbook();
-    const double depth = textbook ? study.textbookResult.depth : m.depth;
-    // Shapes in contact at depth 0 touch without overlapping, as the verdict says: not "overlap: yes".
-    rows.push_back({"overlap", {!m.overlap ? "no" : depth == 0.0 ? "no, they touch (in contact)" : "yes"}});
-    const double gap = textbook ? study.textbookResult.gap : m.gap;
+    // The depth or the gap as the verdict's sentence gives it (the difference of the interval ends it shows); shapes
+    // in contact whose depth shows as 0.00 touch without overlapping, as the verdict says: not "overlap: yes".
+    const std::string amount = ShownVerdictAmount(study);
+    const bool touch = m.overlap && amount == FormatNumber(0.0);
+    rows.push_back({"overlap", {!m.overlap ? "no" : touch ? "no, they touch (in contact)" : "yes"}});
     const Vec2 normal = textbook ? study.textbookResult.normal : m.normal;
-    rows.push_back(m.overlap ? NumberRow{"MTV length (depth)", {full(depth)}}
-                             : NumberRow{"gap on the separating axis", {full(gap)}});
+    rows.push_back(m.overlap ? NumberRow{"MTV length (depth)", {amount}}
+                             : NumberRow{"gap on the separating axis", {amount}});
     // The axis the verdict decides on, as the figure's verdict step draws it: the axis that separates, else the
     // one of the smallest push (textbook) or the best face (face tests). A sweep's steps are those of the sweep.
     if (!study.sweep)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // satviz app: the numbers of the static test that the Numbers panel lists, in the words and the decimals of the
-// figures and the lessons.
+// figures, the step sentences and the lessons.
 #pragma once
 
 #include <satviz/render/study.h>
@@ -15,10 +15,14 @@ namespace satviz
 struct NumberRow
 {
     std::string label;              ///< "deciding axis 4, the normal of B's edge 3"
-    std::vector<std::string> parts; ///< one value, or a point's x and y, in full (FullDecimal)
+    std::vector<std::string> parts; ///< one value, or a point's x and y, as the sentences print them (FormatNumber)
 };
 
-/// The static test's numbers, in full: overlap or not, the depth or the gap, the deciding axis as the figure draws
+/// A point's two coordinates as the sentences print a pair (FormatPair): "-0.342" and "0.940", not "0.94".
+std::vector<std::string> PairParts(Vec2 p);
+
+/// The static test's numbers, as the sentences and the figures print them (FormatNumber, FormatPair, the verdict's
+/// ShownVerdictAmount), so that a number in the panel and the same number in the step's sentence read alike: overlap or not, the depth or the gap, the deciding axis as the figure draws
 /// it and the lessons' tables list it (the outward normal of the face that names it, the direction satviz-query's
 /// trace gives), the normal from A to B (satviz-query's "normal"; against the axis when that is a face of B), and
 /// the contact points c1, c2 (only numbered in a sweep, whose c1 and c2 are the contacts at the time of impact).

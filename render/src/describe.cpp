@@ -127,6 +127,26 @@ std::string VerdictAmount(const PairStudy& study)
     return FormatNumber(study.manifold.overlap ? study.manifold.depth : study.manifold.gap);
 }
 
+} // namespace
+
+std::string ShownVerdictAmount(const PairStudy& study)
+{
+    if (study.Textbook() && study.textbookResult.axis >= 0 &&
+        static_cast<size_t>(study.textbookResult.axis) < study.textbook.axes.size())
+    {
+        const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(study.textbookResult.axis)];
+        return study.textbookResult.overlap ? ShownOverlap(t) : ShownGap(t);
+    }
+    if (study.manifold.overlap && study.manifold.depth == 0.0)
+    {
+        return FormatNumber(0.0);
+    }
+    return VerdictAmount(study);
+}
+
+namespace
+{
+
 std::string Time(double t)
 {
     return std::isinf(t) ? (t > 0 ? "never" : "always") : "t = " + FormatNumber(t);
@@ -151,12 +171,26 @@ std::string PerSpan(const Scene& scene)
     return SweepsSteps(scene) ? "per step" : "per second";
 }
 
-std::string SweepExitReason(const Scene& scene, SweepExit exit)
+// What the static test at t = 0 found, for a sweep it decides (nothing moves): the gap or the depth as the Numbers
+// panel and the static verdict print them.
+std::string StaticAtStart(const PairStudy& study)
+{
+    const bool overlap = study.Textbook() ? study.textbookResult.overlap : study.manifold.overlap;
+    const std::string amount = ShownVerdictAmount(study);
+    if (!overlap)
+    {
+        return "it finds them apart at t = 0, with a gap of " + amount + " that nothing closes";
+    }
+    return amount == FormatNumber(0.0) ? "it finds them touching without overlapping at t = 0, and touching is not a hit"
+                                       : "it finds them overlapping by " + amount + " at t = 0";
+}
+
+std::string SweepExitReason(const Scene& scene, const PairStudy& study, SweepExit exit)
 {
     switch (exit)
     {
     case SweepExit::NotMoving:
-        return "nothing moves, so the static test decides";
+        return "nothing moves relative to the other, so the static test at t = 0 decides: " + StaticAtStart(study);
     case SweepExit::NeverCloses:
         return "on this axis the intervals never overlap during " + SweptSpan(scene) + ", so the shapes cannot interpenetrate";
     case SweepExit::EntryAfterStep:
@@ -401,9 +435,10 @@ std::string FaceNeverClosesReason(const Scene& scene, const std::string& other, 
 }
 
 // The reason a textbook sweep ended on axis `t`.
-std::string TextbookExitReason(const Scene& scene, const TextbookSweepTrace& trace, const TextbookSweepAxis& t)
+std::string TextbookExitReason(const Scene& scene, const PairStudy& study, const TextbookSweepAxis& t)
 {
-    return trace.exit == SweepExit::NeverCloses ? NeverClosesReason(scene, t) : SweepExitReason(scene, trace.exit);
+    const TextbookSweepTrace& trace = study.textbookSweep;
+    return trace.exit == SweepExit::NeverCloses ? NeverClosesReason(scene, t) : SweepExitReason(scene, study, trace.exit);
 }
 
 std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, int step)
@@ -442,7 +477,7 @@ std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, in
     }
     if (t.endsTest)
     {
-        return text + " This ends the test: " + TextbookExitReason(scene, study.textbookSweep, t) + ".";
+        return text + " This ends the test: " + TextbookExitReason(scene, study, t) + ".";
     }
     if (t.latestEntry >= 0 && t.earliestExit >= 0 && step > 0)
     {
@@ -527,7 +562,7 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
         return "Verdict: no hit during " + SweptSpan(scene) + ": on axis " + std::to_string(trace.result.axis + 1) +
                reason.substr(std::string("on this axis").size()) + ".";
     }
-    return "Verdict: no hit during " + SweptSpan(scene) + ": " + SweepExitReason(scene, trace.exit) + ".";
+    return "Verdict: no hit during " + SweptSpan(scene) + ": " + SweepExitReason(scene, study, trace.exit) + ".";
 }
 
 // Where the count of FaceTestStep's "Face test 1 of N" comes from, in words that add up to it: one test per edge,
@@ -748,7 +783,7 @@ std::string FaceSweepStep(const Scene& scene, const PairStudy& study, int step)
     {
         const bool never = face && axis.separation >= 0.0 && axis.rate >= 0.0;
         text += " This ends the test: " +
-                (never ? FaceNeverClosesReason(scene, other, "this face", axis) : SweepExitReason(scene, study.sweepTrace.exit)) + ".";
+                (never ? FaceNeverClosesReason(scene, other, "this face", axis) : SweepExitReason(scene, study, study.sweepTrace.exit)) + ".";
     }
     else if (axis.latestEntry >= 0 && axis.earliestExit >= 0)
     {
@@ -794,7 +829,7 @@ std::string FaceSweepVerdict(const Scene& scene, const PairStudy& study, bool co
                    FaceNeverClosesReason(scene, other, FaceName(scene, study, axis.axis), axis) + ".";
         }
     }
-    return "Verdict: no hit during " + SweptSpan(scene) + ": " + SweepExitReason(scene, study.sweepTrace.exit) + ".";
+    return "Verdict: no hit during " + SweptSpan(scene) + ": " + SweepExitReason(scene, study, study.sweepTrace.exit) + ".";
 }
 
 // Against a polygon above 16 vertices: how many face tests the sweep evaluated, and how many faces it decided without

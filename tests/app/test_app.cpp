@@ -2010,27 +2010,95 @@ TEST_CASE("The Numbers panel gives the deciding axis as the figure and the lesso
         INFO(which);
         REQUIRE(axis != nullptr);
         REQUIRE(axis->parts.size() == 2);
-        CHECK(std::stod(axis->parts[0]) == axes[last]["direction"][0].get<double>());
-        CHECK(std::stod(axis->parts[1]) == axes[last]["direction"][1].get<double>());
+        CHECK(axis->parts[0] == FormatNumber(axes[last]["direction"][0].get<double>()));
+        CHECK(axis->parts[1] == FormatNumber(axes[last]["direction"][1].get<double>()));
         CHECK(axis->parts[0] == "-0.80");
         CHECK(axis->parts[1] == "-0.60");
         const NumberRow* normal = row("normal (A to B)");
         REQUIRE(normal != nullptr);
-        CHECK(std::stod(normal->parts[0]) == pair["normal"][0].get<double>());
-        CHECK(std::stod(normal->parts[1]) == pair["normal"][1].get<double>());
+        CHECK(normal->parts[0] == FormatNumber(pair["normal"][0].get<double>()));
+        CHECK(normal->parts[1] == FormatNumber(pair["normal"][1].get<double>()));
         CHECK(normal->parts[0] == "0.80");
         CHECK(normal->parts[1] == "0.60");
     }
-    CHECK(FullDecimal(0.8) == "0.80");
-    CHECK(FullDecimal(-1.0) == "-1.00");
-    CHECK(FullDecimal(-0.0) == "0.00");
-    CHECK(FullDecimal(0.20000000000000018) == "0.20000000000000018");
-    CHECK(FullDecimal(0.4825f) == "0.4825");
-    CHECK(FullDecimal(2.5e-5) == ShortestDecimal(2.5e-5));
-    for (const double x : {0.1, -2.55, 123.0, 1e-7, 3e21, 0.30000000000000004})
+}
+
+namespace
+{
+
+// Whether a number is printed as the sentences print them: at most three decimals, or three significant digits in
+// an exponent form or below 0.01 (never a double in full, 0.44999999999999996), but for FormatPair's padding.
+bool PrintedAsSentences(const std::string& text)
+{
+    const size_t e = text.find('e');
+    std::string mantissa = text.substr(0, e);
+    // FormatPair pads a coordinate with zeros to its partner's decimals: (0.99100, 0.00123).
+    while (mantissa.find('.') != std::string::npos && mantissa.size() > mantissa.find('.') + 4 && mantissa.back() == '0')
     {
-        CHECK(std::strtod(FullDecimal(x).c_str(), nullptr) == x);
+        mantissa.pop_back();
     }
+    const size_t point = mantissa.find('.');
+    const size_t decimals = point == std::string::npos ? 0 : mantissa.size() - point - 1;
+    const size_t digits = mantissa.find_first_of("123456789");
+    const size_t significant = digits == std::string::npos ? 0 : mantissa.size() - digits - (digits < point ? 1 : 0);
+    return decimals <= 3 || significant <= 3;
+}
+
+} // namespace
+
+TEST_CASE("The Numbers panel prints every number as the step's sentences do, the verdict's depth or gap as it",
+          "[app]")
+{
+    // A student reads "gap 0.45" in the verdict and the same gap in the panel: both from one formatting, the
+    // verdict's amount being the difference of the interval ends it shows. Every bundled scene, both views, the
+    // static test and, for a moving pair, the static test at the start of its sweep.
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    {
+        if (entry.path().extension() != ".json")
+        {
+            continue;
+        }
+        SceneResult loaded = LoadScene(entry.path().string());
+        if (!loaded.Ok() || loaded.scene.bodies.size() < 2)
+        {
+            continue;
+        }
+        ++scenes;
+        for (const StepView view : {StepView::Textbook, StepView::Faces})
+        {
+            for (const ViewQuery query : {ViewQuery::Collide, ViewQuery::Automatic})
+            {
+                const PairStudy study = StudyPair(loaded.scene, 0, 1, query, false, view);
+                const std::string verdict = DescribeStep(loaded.scene, study, study.VerdictStep());
+                INFO(entry.path().filename().string() << ": " << verdict);
+                for (const NumberRow& row : StaticTestNumbers(loaded.scene, study))
+                {
+                    for (const std::string& part : row.parts)
+                    {
+                        INFO(row.label << ": " << part);
+                        if (part.find_first_of("0123456789") != std::string::npos)
+                        {
+                            CHECK(PrintedAsSentences(part));
+                        }
+                    }
+                    // The static verdict gives the depth or the gap: the panel gives the same digits.
+                    const bool amount = row.label == "MTV length (depth)" || row.label == "gap on the separating axis";
+                    if (amount && !study.sweep && !study.startsOverlapping && row.parts[0] != FormatNumber(0.0))
+                    {
+                        CHECK(verdict.find(" " + row.parts[0]) != std::string::npos);
+                    }
+                    if (row.label == "MTV direction (A to B)" && !study.sweep && !study.startsOverlapping &&
+                        verdict.find("direction (") != std::string::npos)
+                    {
+                        CHECK(verdict.find("direction (" + row.parts[0] + ", " + row.parts[1] + ")") !=
+                              std::string::npos);
+                    }
+                }
+            }
+        }
+    }
+    CHECK(scenes > 50);
 }
 
 TEST_CASE("The Numbers panel says touching shapes touch, as the verdict does, and overlap only when they do",

@@ -4,11 +4,13 @@
 #include "render/painter_support.h"
 #include "support/random_shapes.h"
 
+#include <satviz/render/describe.h>
 #include <satviz/render/study.h>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
 #include <utility>
 
 using namespace satviz;
@@ -46,4 +48,30 @@ TEST_CASE("The single-precision study agrees with double within float rounding, 
         ++compared;
     }
     CHECK(compared > 1500);
+}
+
+TEST_CASE("A sweep where nothing moves says what the static test at t = 0 decided, with its gap", "[study]")
+{
+    // Two unit boxes moving together: no relative motion, so the static test decides. Apart, B's left face is
+    // 1.50 - 0.50 - 0.50 = 0.50 beyond A's right one; at 1.00 they touch.
+    auto verdict = [](double x, StepView view) {
+        const std::string text = R"({"bodies": [
+            {"name": "A", "box": [1, 1], "position": [0, 0], "velocity": [1, 0.5]},
+            {"name": "B", "box": [1, 1], "position": [)" + std::to_string(x) + R"(, 0], "velocity": [1, 0.5]}]})";
+        SceneResult loaded = ParseScene(text, "moving_together.json");
+        REQUIRE(loaded.Ok());
+        const PairStudy study = StudyPair(loaded.scene, 0, 1, ViewQuery::Sweep, false, view);
+        REQUIRE(study.sweep);
+        return DescribeStep(loaded.scene, study, study.VerdictStep());
+    };
+    for (const StepView view : {StepView::Textbook, StepView::Faces})
+    {
+        const std::string apart = verdict(1.5, view);
+        INFO(apart);
+        CHECK(apart.find("nothing moves") != std::string::npos);
+        CHECK(apart.find("apart at t = 0, with a gap of 0.50") != std::string::npos);
+        const std::string touching = verdict(1.0, view);
+        INFO(touching);
+        CHECK(touching.find("touching without overlapping at t = 0") != std::string::npos);
+    }
 }

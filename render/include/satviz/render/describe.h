@@ -43,6 +43,10 @@ std::string ShownOverlap(const TextbookAxis& axis);
 /// A textbook axis's gap as the figures print it, from the shown interval ends.
 std::string ShownGap(const TextbookAxis& axis);
 
+/// The depth (shapes that overlap) or the gap (apart) of a static test's verdict as its sentence and the step list
+/// print it: the difference of the deciding axis's shown interval ends, so that a panel listing it agrees with them.
+std::string ShownVerdictAmount(const PairStudy& study);
+
 /// The shortest decimal that reads back as the same double (0.4825, not 0.48249999999999998): for the panels that
 /// show a number in full.
 std::string ShortestDecimal(double value);
