@@ -5,6 +5,8 @@
 
 #include "outline_edit.h"
 
+#include <satviz/render/describe.h>
+#include <satviz/render/response_steps.h>
 #include <satviz/scene_world.h>
 #include <satviz/world_cut.h>
 
@@ -665,11 +667,10 @@ void App::Refresh()
     {
         Scene shown = scene;
         CopyWorldState(m_sim.Record().world, shown);
-        // The scene's caption describes it as written, at step 0.
-        char caption[120];
-        std::snprintf(caption, sizeof caption, "After %d step%s of the simulation (time %.4g)", m_sim.Shown(),
-                      m_sim.Shown() == 1 ? "" : "s", m_sim.Record().world.time);
-        shown.view.caption = caption;
+        // The scene's caption describes it as written, at step 0. The time in the digits of the simulation panel.
+        shown.view.caption = "After " + std::to_string(m_sim.Shown()) + (m_sim.Shown() == 1 ? " step" : " steps") +
+                             " of the simulation (time " +
+                             FormatNumber(m_sim.Record().world.time, kResponseDigits) + " s)";
         fresh = m_viewer.Refresh(shown);
     }
     else

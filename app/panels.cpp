@@ -15,6 +15,7 @@
 #include <satviz/render/describe.h>
 #include <satviz/layers.h>
 #include <satviz/render/response_steps.h>
+#include <satviz/render/world_words.h>
 
 #include <algorithm>
 #include <cctype>
@@ -1009,11 +1010,12 @@ void Panels::SimulationControls()
     {
         m_app.SimSpeed(speed);
     }
-    const SimRecord& record = sim.Record();
-    char line[160];
-    std::snprintf(line, sizeof line, "step %d, time %.4g (dt %.4g); %d step%s taken", sim.Shown(), record.world.time,
-                  record.dt, sim.Last(), sim.Last() == 1 ? "" : "s");
-    ImGui::TextUnformatted(line);
+    // The step's time in the digits of the response's sentences (DescribeWorld); how many steps the app took is its
+    // own.
+    const WorldWords world = DescribeWorld(m_app.ShownScene(), sim.Record());
+    ImGui::TextUnformatted((world.time + "; " + std::to_string(sim.Last()) + (sim.Last() == 1 ? " step" : " steps") +
+                            " taken")
+                               .c_str());
     if (sim.First() > 0)
     {
         ImGui::TextDisabled("steps before %d are no longer held", sim.First());
@@ -1043,55 +1045,25 @@ void Panels::ResponseSteps()
     }
     const Scene& scene = m_app.ShownScene();
     const auto name = [&](int i) { return scene.bodies[static_cast<size_t>(i)].name; };
-    int shown = 0;
-    for (const WorldContact& contact : record.world.contacts)
-    {
-        shown += contact.guard ? 0 : 1;
-    }
-    // A pair with no body awake is neither tested nor solved: its contact is the one kept from the last step it was
-    // awake, so the list says so rather than calling it this step's.
-    const std::vector<RigidBody>& start = record.before.empty() ? record.world.bodies : record.before;
-    const auto resting = [&](int i) {
-        const RigidBody& body = start[static_cast<size_t>(i)];
-        return body.type == BodyType::Static || !body.awake;
-    };
-    const auto kept = [&](const WorldContact& c) { return resting(c.a) && resting(c.b); };
-    ImGui::Text("Contacts held after step %d: %d", sim.Shown(), shown);
-    WrappedTextDisabled("Overlap or gap as found at the start of the step; kept: a sleeping pair's contact, from "
-                        "the last step it was awake.");
+    // The words come from DescribeWorld, which the render tests check against the world they describe.
+    const WorldWords world = DescribeWorld(scene, record);
+    ImGui::TextUnformatted(world.contactsTitle.c_str());
+    WrappedTextDisabled(world.contactsNote);
     const int chosenA = std::min(record.contact.bodyA, record.contact.bodyB);
     const int chosenB = std::max(record.contact.bodyA, record.contact.bodyB);
-    if (shown > 0)
+    if (!world.contacts.empty())
     {
-        const float rows = static_cast<float>(std::min(shown, 5));
+        const float rows = static_cast<float>(std::min<size_t>(world.contacts.size(), 5));
         if (ImGui::BeginChild("##contacts", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 8.0f), true))
         {
             ImGuiListClipper clipper;
-            std::vector<const WorldContact*> list;
-            for (const WorldContact& contact : record.world.contacts)
-            {
-                if (!contact.guard)
-                {
-                    list.push_back(&contact);
-                }
-            }
-            clipper.Begin(static_cast<int>(list.size()));
+            clipper.Begin(static_cast<int>(world.contacts.size()));
             while (clipper.Step())
             {
                 for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i)
                 {
-                    const WorldContact& c = *list[static_cast<size_t>(i)];
-                    double separation = c.points[0].separation;
-                    for (int k = 1; k < c.pointCount; ++k)
-                    {
-                        separation = std::min(separation, c.points[k].separation);
-                    }
-                    char label[200];
-                    std::snprintf(label, sizeof label, "%s and %s: %d point%s, %s %.3g%s", name(c.a).c_str(),
-                                  name(c.b).c_str(), c.pointCount, c.pointCount == 1 ? "" : "s",
-                                  separation < 0.0 ? "overlap" : "gap", std::fabs(separation),
-                                  kept(c) ? " (kept)" : "");
-                    if (ImGui::Selectable(label, c.a == chosenA && c.b == chosenB))
+                    const WorldContactWords& c = world.contacts[static_cast<size_t>(i)];
+                    if (ImGui::Selectable(c.text.c_str(), c.a == chosenA && c.b == chosenB))
                     {
                         m_app.SimChooseContact(c.a, c.b);
                     }
@@ -1100,6 +1072,14 @@ void Panels::ResponseSteps()
             }
         }
         ImGui::EndChild();
+    }
+    if (ImGui::TreeNode("Bodies after this step"))
+    {
+        for (const std::string& line : world.bodies)
+        {
+            WrappedText(line);
+        }
+        ImGui::TreePop();
     }
     if (chosenA < 0)
     {

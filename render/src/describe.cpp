@@ -926,7 +926,8 @@ std::string FormatNumber(double value, int significant)
     }
     char buffer[48];
     std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, value);
-    return buffer;
+    // 0.09999 rounds up to 0.1000: from 0.1 on, three decimals are three digits.
+    return std::fabs(std::strtod(buffer, nullptr)) >= 0.1 ? FormatNumber(value) : buffer;
 }
 
 std::string FormatPair(double x, double y, const char* open, const char* close)

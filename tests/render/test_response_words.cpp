@@ -3,6 +3,7 @@
 // ("a x b = c", "a + b = c", "1 / (a + b + c) = d") is redone by hand from the numbers as printed and must give the
 // printed result to within one in its last printed digit. The sentences come from every lesson scene with a world,
 // stepped, each pair of bodies in turn; the oracle is the arithmetic on the printed text alone.
+#include <satviz/render/describe.h>
 #include <satviz/render/response_steps.h>
 #include <satviz/scene.h>
 #include <satviz/sim_record.h>
@@ -280,4 +281,20 @@ TEST_CASE("Every computation in the response's sentences checks by hand at the p
     }
     CHECK(frictions > 100);
     CHECK(checked > 1000);
+}
+
+TEST_CASE("Numbers with three significant digits at least: four decimals from 0.01 to 0.1 only", "[response]")
+{
+    CHECK(FormatNumber(0.0102, 3) == "0.0102");
+    CHECK(FormatNumber(-0.0327, 3) == "-0.0327");
+    CHECK(FormatNumber(0.0999999, 3) == FormatNumber(0.0999999));
+    CHECK(FormatNumber(0.45, 3) == FormatNumber(0.45));
+    CHECK(FormatNumber(0.00511, 3) == FormatNumber(0.00511));
+    CHECK(FormatNumber(2.5, 3) == FormatNumber(2.5));
+    CHECK(FormatNumber(0.0, 3) == FormatNumber(0.0));
+    for (const double x : {0.0123456, 0.05, 0.0999, 0.01})
+    {
+        // Three significant digits: the value to within half of the fourth decimal.
+        CHECK(std::fabs(std::strtod(FormatNumber(x, 3).c_str(), nullptr) - x) <= 0.5e-4);
+    }
 }
