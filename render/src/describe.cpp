@@ -179,10 +179,10 @@ std::string StaticAtStart(const PairStudy& study)
     const std::string amount = ShownVerdictAmount(study);
     if (!overlap)
     {
-        return "it finds them apart at t = 0, with a gap of " + amount + " that nothing closes";
+        return "it finds them apart, with a gap of " + amount + " that nothing closes";
     }
-    return amount == FormatNumber(0.0) ? "it finds them touching without overlapping at t = 0, and touching is not a hit"
-                                       : "it finds them overlapping by " + amount + " at t = 0";
+    return amount == FormatNumber(0.0) ? "it finds them touching without overlapping, and touching is not a hit"
+                                       : "it finds them overlapping by " + amount;
 }
 
 std::string SweepExitReason(const Scene& scene, const PairStudy& study, SweepExit exit)

@@ -69,9 +69,9 @@ TEST_CASE("A sweep where nothing moves says what the static test at t = 0 decide
         const std::string apart = verdict(1.5, view);
         INFO(apart);
         CHECK(apart.find("nothing moves") != std::string::npos);
-        CHECK(apart.find("apart at t = 0, with a gap of 0.50") != std::string::npos);
+        CHECK(apart.find("static test at t = 0 decides: it finds them apart, with a gap of 0.50") != std::string::npos);
         const std::string touching = verdict(1.0, view);
         INFO(touching);
-        CHECK(touching.find("touching without overlapping at t = 0") != std::string::npos);
+        CHECK(touching.find("static test at t = 0 decides: it finds them touching without overlapping") != std::string::npos);
     }
 }
