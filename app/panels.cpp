@@ -777,10 +777,15 @@ void Panels::Inspector()
     {
         WrappedText("A polygon is not valid once rounded to float: the numbers are double.");
     }
+    ImGui::Checkbox("all digits", &m_allDigits);
+    HelpMarker("Shows each number as the shortest decimal that reads back as the same value (0.44999999999999996), "
+               "where the panel otherwise gives the digits of the sentences and the figures (0.45).");
     // Every number as the step's sentence and the figure print it (FormatNumber, FormatPair), so that the same
-    // number reads alike in the panel and beside the picture.
-    auto number = [&](const std::string& label, double v) { NumberLine(label, {FormatNumber(v)}); };
-    auto point = [&](const std::string& label, Vec2 p) { NumberLine(label, PairParts(p)); };
+    // number reads alike in the panel and beside the picture; with "all digits", in full.
+    auto number = [&](const std::string& label, double v) {
+        NumberLine(label, {PanelNumber(v, study, m_allDigits)});
+    };
+    auto point = [&](const std::string& label, Vec2 p) { NumberLine(label, PanelPair(p, study, m_allDigits)); };
     // A sweep's numbers first, as its verdict gives them; then the static test where the bodies start (t = 0),
     // under a heading of its own, since its gap or overlap is not the sweep's answer.
     if (study.sweep)
@@ -812,7 +817,7 @@ void Panels::Inspector()
     {
         WrappedText("Moving, but overlapping at t = 0: no time of impact; the static test at t = 0:");
     }
-    for (const NumberRow& row : StaticTestNumbers(m_app.ShownScene(), study))
+    for (const NumberRow& row : StaticTestNumbers(m_app.ShownScene(), study, m_allDigits))
     {
         NumberLine(row.label, row.parts);
     }

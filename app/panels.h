@@ -133,6 +133,7 @@ class Panels
     int m_listStep = -1;       // the step and the number of steps the step list last showed
     int m_listSteps = -1;
     bool m_listFollow = false; // the step list scrolls until the row of the step shown is in sight
+    bool m_allDigits = false;  // the Numbers panel gives every number in full
     char m_pathBuffer[1024] = {};
     // Announce: where each item named was last frame, and whether its place was printed.
     std::map<std::string, ImVec2> m_announceAt;

@@ -6,19 +6,33 @@
 namespace satviz
 {
 
-std::vector<std::string> PairParts(Vec2 p)
+std::string PanelNumber(double value, const PairStudy& study, bool allDigits)
 {
+    if (!allDigits)
+    {
+        return FormatNumber(value);
+    }
+    // In single precision the queries ran on floats: their numbers are floats widened, shown as floats.
+    return study.singlePrecision ? FullDecimal(static_cast<float>(value)) : FullDecimal(value);
+}
+
+std::vector<std::string> PanelPair(Vec2 p, const PairStudy& study, bool allDigits)
+{
+    if (allDigits)
+    {
+        return {PanelNumber(p.x, study, true), PanelNumber(p.y, study, true)};
+    }
     // FormatPair gives both coordinates as many decimals: "(-0.342, 0.940)".
     const std::string pair = FormatPair(p.x, p.y, "", "");
     const size_t comma = pair.find(", ");
     return {pair.substr(0, comma), pair.substr(comma + 2)};
 }
 
-std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study)
+std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study, bool allDigits)
 {
     std::vector<NumberRow> rows;
     // As the sentences and the figures print them: a number here reads as the same number there.
-    auto point = [&](const std::string& label, Vec2 p) { rows.push_back({label, PairParts(p)}); };
+    auto point = [&](const std::string& label, Vec2 p) { rows.push_back({label, PanelPair(p, study, allDigits)}); };
     const Manifold& m = study.manifold;
     // The textbook view shows the MTV its own test found; the contact points come from Collide's clipping.
     const bool textbook = study.Textbook();
@@ -28,8 +42,11 @@ std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& st
     const bool touch = m.overlap && amount == FormatNumber(0.0);
     rows.push_back({"overlap", {!m.overlap ? "no" : touch ? "no, they touch (in contact)" : "yes"}});
     const Vec2 normal = textbook ? study.textbookResult.normal : m.normal;
-    rows.push_back(m.overlap ? NumberRow{"MTV length (depth)", {amount}}
-                             : NumberRow{"gap on the separating axis", {amount}});
+    const double depth = textbook ? study.textbookResult.depth : m.depth;
+    const double gap = textbook ? study.textbookResult.gap : m.gap;
+    rows.push_back(m.overlap
+                       ? NumberRow{"MTV length (depth)", {allDigits ? PanelNumber(depth, study, true) : amount}}
+                       : NumberRow{"gap on the separating axis", {allDigits ? PanelNumber(gap, study, true) : amount}});
     // The axis the verdict decides on, as the figure's verdict step draws it: the axis that separates, else the
     // one of the smallest push (textbook) or the best face (face tests). A sweep's steps are those of the sweep.
     if (!study.sweep)
@@ -37,9 +54,8 @@ std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& st
         if (textbook && !study.textbook.axes.empty())
         {
             const int last = static_cast<int>(study.textbook.axes.size()) - 1;
-            const int k = study.textbookResult.axis >= 0 && study.textbookResult.axis <= last
-                              ? study.textbookResult.axis
-                              : last;
+            const int k =
+                study.textbookResult.axis >= 0 && study.textbookResult.axis <= last ? study.textbookResult.axis : last;
             const TextbookAxis& axis = study.textbook.axes[static_cast<size_t>(k)];
             point("deciding axis " + std::to_string(k + 1) + ", " + DescribeAxis(scene, study, axis.faces[0]),
                   axis.direction);

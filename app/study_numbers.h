@@ -18,14 +18,22 @@ struct NumberRow
     std::vector<std::string> parts; ///< one value, or a point's x and y, as the sentences print them (FormatNumber)
 };
 
-/// A point's two coordinates as the sentences print a pair (FormatPair): "-0.342" and "0.940", not "0.94".
-std::vector<std::string> PairParts(Vec2 p);
+/// A number of the panel: as the sentences and the figures print it (FormatNumber), or with `allDigits` as the
+/// shortest decimal that reads back as the same value (FullDecimal; as a float in a single-precision study), for a
+/// student comparing digits far down (lesson 11).
+std::string PanelNumber(double value, const PairStudy& study, bool allDigits);
+
+/// A point's two coordinates: as the sentences print a pair (FormatPair: "-0.342" and "0.940", not "0.94"), or with
+/// `allDigits` each as PanelNumber gives it.
+std::vector<std::string> PanelPair(Vec2 p, const PairStudy& study, bool allDigits);
 
 /// The static test's numbers, as the sentences and the figures print them (FormatNumber, FormatPair, the verdict's
-/// ShownVerdictAmount), so that a number in the panel and the same number in the step's sentence read alike: overlap or not, the depth or the gap, the deciding axis as the figure draws
-/// it and the lessons' tables list it (the outward normal of the face that names it, the direction satviz-query's
-/// trace gives), the normal from A to B (satviz-query's "normal"; against the axis when that is a face of B), and
-/// the contact points c1, c2 (only numbered in a sweep, whose c1 and c2 are the contacts at the time of impact).
-std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study);
+/// ShownVerdictAmount), so that a number in the panel and the same number in the step's sentence read alike: overlap or
+/// not, the depth or the gap, the deciding axis as the figure draws it and the lessons' tables list it (the outward
+/// normal of the face that names it, the direction satviz-query's trace gives), the normal from A to B (satviz-query's
+/// "normal"; against the axis when that is a face of B), and the contact points c1, c2 (only numbered in a sweep, whose
+/// c1 and c2 are the contacts at the time of impact). With `allDigits`, every number as PanelNumber gives it with all
+/// its digits.
+std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study, bool allDigits = false);
 
 } // namespace satviz

@@ -2020,6 +2020,25 @@ TEST_CASE("The Numbers panel gives the deciding axis as the figure and the lesso
         CHECK(normal->parts[1] == FormatNumber(pair["normal"][1].get<double>()));
         CHECK(normal->parts[0] == "0.80");
         CHECK(normal->parts[1] == "0.60");
+        // With "all digits", each number reads back as the double satviz-query gives.
+        for (const NumberRow& r : StaticTestNumbers(loaded.scene, study, true))
+        {
+            if (r.label.rfind(which, 0) == 0)
+            {
+                CHECK(std::stod(r.parts[0]) == axes[last]["direction"][0].get<double>());
+                CHECK(std::stod(r.parts[1]) == axes[last]["direction"][1].get<double>());
+            }
+            if (r.label == "gap on the separating axis" && view == StepView::Faces) // the query's gap is Collide's
+            {
+                CHECK(std::stod(r.parts[0]) == pair["gap"].get<double>());
+            }
+        }
+    }
+    CHECK(FullDecimal(0.20000000000000018) == "0.20000000000000018");
+    CHECK(FullDecimal(0.4825f) == "0.4825");
+    for (const double x : {0.1, -2.55, 123.0, 1e-7, 3e21, 0.30000000000000004})
+    {
+        CHECK(std::strtod(FullDecimal(x).c_str(), nullptr) == x);
     }
 }
 
