@@ -210,13 +210,23 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
                               "contact only pushes): after " +
                               std::to_string(ResponsePassesOf(record, 0).kept.size()) + " passes jn = " + N(jn) +
                               " N s";
+    // Both points' impulses move the bodies: a student adding up the velocities needs the second one too.
+    const ContactPointSolve* last2 = points == 2 ? LastPass(trace, 1) : nullptr;
+    if (last2 != nullptr)
+    {
+        compression += " at point 1 and jn = " + N(last2->normalImpulse) + " N s at point 2" +
+                       (trace.blockSolved ? ", the two solved together" : "");
+    }
     if (trace.gapSpeed[0] > 0.0)
     {
         compression += ", which leaves the point approaching at " + N(trace.gapSpeed[0]) +
                        " m/s, the speed that closes its gap within the step";
     }
-    compression +=
-        trace.warmNormal[0] > 0.0 ? " (the passes start from last step's " + N(trace.warmNormal[0]) + ")." : ".";
+    const std::string warm =
+        last2 != nullptr ? N(trace.warmNormal[0]) + " and " + N(trace.warmNormal[1]) : N(trace.warmNormal[0]);
+    compression += trace.warmNormal[0] > 0.0 || (last2 != nullptr && trace.warmNormal[1] > 0.0)
+                       ? " (the passes start from last step's " + warm + ")."
+                       : ".";
     steps.push_back({"Normal impulse", compression});
 
     const double jr = trace.restitutionImpulse[0];
@@ -238,37 +248,52 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
         steps.push_back({"Bounce", bounce});
     }
 
-    if (last != nullptr)
-    {
-        const double needed = std::fabs(last->tangentImpulseWanted);
+    // Friction at one point of the last pass: what stopping the slip needs against the static limit, and what it
+    // took or gave.
+    const ContactMaterial material =
+        contact != nullptr ? contact->material : CombineMaterials(bodyA.material, bodyB.material);
+    auto friction = [&](const ContactPointSolve& pass, double jnEnd) {
+        const double needed = std::fabs(pass.tangentImpulseWanted);
         // Friction comes first in a pass: its limits are the coefficients times the normal impulse as the pass
         // began, the one the pass before left (or last step's, for the first pass).
         const ContactPointSolve* before = nullptr;
-        for (const ContactPointSolve& pass : trace.passes)
+        for (const ContactPointSolve& earlier : trace.passes)
         {
-            if (&pass != last && pass.point == 0 && pass.pass >= 0 && pass.pass < last->pass)
+            if (earlier.point == pass.point && earlier.pass >= 0 && earlier.pass < pass.pass)
             {
-                before = &pass;
+                before = &earlier;
             }
         }
-        const double jnStart = before != nullptr ? before->normalImpulse : trace.warmNormal[0];
-        const ContactMaterial material =
-            contact != nullptr ? contact->material : CombineMaterials(bodyA.material, bodyB.material);
+        const double jnStart = before != nullptr ? before->normalImpulse : trace.warmNormal[pass.point];
         const std::string startJn =
-            N(jnStart) == N(jn) ? "" : ", with jn as the last pass began (friction comes first in a pass)";
-        const std::string limit = Result(Shown(material.staticFriction) * Shown(jnStart), last->staticLimit);
+            N(jnStart) == N(jnEnd) ? "" : ", with jn as the last pass began (friction comes first in a pass)";
+        const std::string limit = Result(Shown(material.staticFriction) * Shown(jnStart), pass.staticLimit);
         // Printed alike, the two differ beyond the digits shown: saying so keeps "beyond" from reading as a slip.
         const std::string close = N(needed) == limit ? " (by less than the digits shown)" : "";
-        std::string friction = "Stopping the slip (" + N(last->tangentSpeed) + " m/s) needs |jt| = " + N(needed) +
-                               " N s; the static limit is mu_s jn = " + N(material.staticFriction) + " x " +
-                               N(jnStart) + " = " + limit + " N s" + startJn + ": ";
-        friction += last->stuck
-                        ? "within it" + close + ", so the point sticks, and friction takes " +
-                              N(std::fabs(last->tangentImpulse)) + " N s."
-                        : "beyond it" + close + ", so the point slides, and friction gives the dynamic limit mu jn = " +
-                              N(material.friction) + " x " + N(jnStart) + " = " +
-                              Result(Shown(material.friction) * Shown(jnStart), last->dynamicLimit) + " N s.";
-        steps.push_back({last->stuck ? "Friction: sticks" : "Friction: slides", friction});
+        std::string text = "Stopping the slip (" + N(pass.tangentSpeed) + " m/s) needs |jt| = " + N(needed) +
+                           " N s; the static limit is mu_s jn = " + N(material.staticFriction) + " x " + N(jnStart) +
+                           " = " + limit + " N s" + startJn + ": ";
+        text += pass.stuck
+                    ? "within it" + close + ", so the point sticks, and friction takes " +
+                          N(std::fabs(pass.tangentImpulse)) + " N s."
+                    : "beyond it" + close + ", so the point slides, and friction gives the dynamic limit mu jn = " +
+                          N(material.friction) + " x " + N(jnStart) + " = " +
+                          Result(Shown(material.friction) * Shown(jnStart), pass.dynamicLimit) + " N s.";
+        return text;
+    };
+    if (last != nullptr)
+    {
+        std::string text = friction(*last, jn);
+        std::string title = last->stuck ? "Friction: sticks" : "Friction: slides";
+        if (last2 != nullptr)
+        {
+            std::string second = friction(*last2, last2->normalImpulse);
+            text[0] = 's';
+            second[0] = 's';
+            text = "At point 1, " + text + " At point 2, " + second;
+            title = last->stuck == last2->stuck ? title : "Friction: one sticks, one slides";
+        }
+        steps.push_back({title, text});
     }
 
     auto motion = [&](int side, const RigidBody& body, const std::string& name) {
