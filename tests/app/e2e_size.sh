@@ -11,15 +11,19 @@ rm -rf "$work"
 mkdir -p "$work"
 # The side panel is 380 pixels wide, the lesson column 440; the menu and status bars take some 40 pixels.
 check_size() {
-  local least=$1 what=$2 geometry width height
-  sleep 0.5
-  geometry=$(xdotool search --name '^satviz$' getwindowgeometry | sed -n 's/.*Geometry: //p')
-  width=${geometry%x*} height=${geometry#*x}
-  if [ "$width" -lt "$least" ] || [ "$height" -lt 640 ]; then
-    echo "FAILED: $what: the window is ${geometry}, smaller than ${least}x640"
-    exit 1
-  fi
-  echo "$what: ${geometry}"
+  local least=$1 what=$2 geometry width height tries
+  # The app enlarges the window on one of its next frames: a loaded machine may take seconds to draw them.
+  for tries in $(seq 40); do
+    sleep 0.25
+    geometry=$(xdotool search --name '^satviz$' getwindowgeometry | sed -n 's/.*Geometry: //p')
+    width=${geometry%x*} height=${geometry#*x}
+    if [ "$width" -ge "$least" ] && [ "$height" -ge 640 ]; then
+      echo "$what: ${geometry}"
+      return
+    fi
+  done
+  echo "FAILED: $what: the window is ${geometry} after 10 s, smaller than ${least}x640"
+  exit 1
 }
 start_app "$scene" --window 200x150
 check_size 740 "asked for 200x150"
