@@ -882,6 +882,7 @@ class Painter
     void Shapes()
     {
         m_canvas.BeginGroup("shapes");
+        int others = 0;
         for (size_t i = 0; i < m_scene.bodies.size(); ++i)
         {
             const int index = static_cast<int>(i);
@@ -894,6 +895,7 @@ class Painter
             {
                 continue;
             }
+            ++others;
             DrawBody(body, palette::kOther, 0.18f);
             // A label on a grey body would read as that body's.
             if (!body.IsConcave())
@@ -907,7 +909,47 @@ class Painter
         }
         DrawBody(m_bodyA, palette::kShapeA, 0.22f);
         DrawBody(m_bodyB, palette::kShapeB, 0.28f);
+        FrameSmallPair(others);
     }
+
+    // Among many other bodies a pair drawn small is lost (crowd.json: two hundred bodies, the pair in the middle a
+    // few pixels wide): a frame round it, named, shows which pair is tested.
+    void FrameSmallPair(int others)
+    {
+        if (others < kCrowd)
+        {
+            return;
+        }
+        float minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
+        for (const Body* body : {&m_bodyA, &m_bodyB})
+        {
+            for (const ScreenPoint& p : ShapeOutline(m_view, body->shape, body->Xf()))
+            {
+                minX = std::min(minX, p.x);
+                minY = std::min(minY, p.y);
+                maxX = std::max(maxX, p.x);
+                maxY = std::max(maxY, p.y);
+            }
+        }
+        const float sceneHeight = m_layout.sceneBottom - m_layout.sceneTop;
+        if (std::max(maxX - minX, maxY - minY) > 0.2f * std::min(Width(), sceneHeight))
+        {
+            return;
+        }
+        m_canvas.BeginGroup("tested pair");
+        const float pad = 10.0f;
+        const ScreenPoint corners[4] = {
+            {minX - pad, minY - pad}, {maxX + pad, minY - pad}, {maxX + pad, maxY + pad}, {minX - pad, maxY + pad}};
+        m_canvas.Polyline(corners, 4, true, palette::kInk, 1.5f);
+        for (int k = 0; k < 4; ++k)
+        {
+            m_labels.ReserveLine(corners[k], corners[(k + 1) % 4], 1.5f);
+        }
+        m_labels.Place({0.5f * (minX + maxX), minY - pad}, "tested: " + m_bodyA.name + " and " + m_bodyB.name,
+                       TextStyle::Label, palette::kInk, 0.0f, -1.0f, 4.0f, LabelRank::Name);
+    }
+    // Other bodies in the picture from which on a small pair is framed.
+    static constexpr int kCrowd = 12;
 
     // A body as drawn: a concave body by its pieces, filled, its outline as written, and the seams between its
     // pieces dashed (they are no surface: nothing collides with them); any other body by its shape.

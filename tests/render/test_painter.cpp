@@ -959,7 +959,7 @@ TEST_CASE("The layer table is what scene files accept, and its names and bits ar
 TEST_CASE("A layer that is off draws nothing, and each layer draws only its own groups", "[painter]")
 {
     const std::map<LayerMask, std::set<std::string>> own = {
-        {kLayerShapes, {"shapes"}},
+        {kLayerShapes, {"shapes", "tested pair", "labels"}}, // a small pair among many bodies is framed and named
         {kLayerLabels, {"labels"}},
         {kLayerNormals, {"normals"}},
         {kLayerAxes, {"axes"}},
@@ -2126,4 +2126,56 @@ TEST_CASE("The number line's title fits the width of the app's smallest canvas i
         }
     }
     CHECK(checked > 1000);
+}
+
+TEST_CASE("A pair drawn small among many other bodies is framed and named, a pair on its own is not", "[painter]")
+{
+    // crowd.json: two hundred bodies, the tested pair a few pixels wide in the middle of them.
+    SceneResult crowd = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/crowd.json");
+    REQUIRE(crowd.Ok());
+    FigureSetup setup = SetUpFigure(crowd.scene, {});
+    REQUIRE(setup.Ok());
+    RecordingCanvas canvas;
+    PaintFigure(canvas, crowd.scene, setup.study, setup.figure);
+    const std::vector<const DrawCommand*> frame = canvas.InGroup("tested pair");
+    REQUIRE(frame.size() == 1);
+    REQUIRE(frame[0]->kind == DrawCommand::Kind::Polyline);
+    REQUIRE(frame[0]->closed);
+    float minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
+    for (const ScreenPoint& p : frame[0]->points)
+    {
+        minX = std::min(minX, p.x);
+        minY = std::min(minY, p.y);
+        maxX = std::max(maxX, p.x);
+        maxY = std::max(maxY, p.y);
+    }
+    // Every corner of both bodies inside the frame, and the frame small beside the figure: round the pair alone.
+    for (const int index : {setup.study.bodyA, setup.study.bodyB})
+    {
+        const Body& body = crowd.scene.bodies[static_cast<size_t>(index)];
+        for (const Vec2& v : body.shape.polygon.Vertices())
+        {
+            const ScreenPoint p = ToScreen(setup.figure.view, TransformPoint(body.Xf(), v));
+            CHECK(p.x > minX);
+            CHECK(p.x < maxX);
+            CHECK(p.y > minY);
+            CHECK(p.y < maxY);
+        }
+    }
+    CHECK(maxX - minX < 0.25f * static_cast<float>(setup.figure.view.width));
+    bool named = false;
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        named = named || (c->kind == DrawCommand::Kind::Text && c->text == "tested: A and B");
+    }
+    CHECK(named);
+
+    // Two bodies alone need no frame.
+    SceneResult pair = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    REQUIRE(pair.Ok());
+    FigureSetup alone = SetUpFigure(pair.scene, {});
+    REQUIRE(alone.Ok());
+    RecordingCanvas plain;
+    PaintFigure(plain, pair.scene, alone.study, alone.figure);
+    CHECK(plain.InGroup("tested pair").empty());
 }
