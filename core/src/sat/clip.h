@@ -28,6 +28,20 @@
 namespace satviz::detail
 {
 
+/// Whether the reference face is B's, from the largest separation of A's faces (`separationA`) and of B's
+/// (`separationB`): only when B's is strictly larger. On a tie the reference face is A's, so the normal and the
+/// contacts are those of A's face (manifold.h), and a NaN on either side keeps A's face too. Box2D's
+/// b2CollidePolygons keeps A's face unless B's is larger by a tolerance, 0.1 b2_linearSlop, a length in metres that
+/// keeps the reference face of a resting contact from switching between steps; satviz has no unit of length and
+/// gives the textbook loop's answer to the bit, so its tolerance is zero: the face of largest separation, as Ericson
+/// (Real-Time Collision Detection, 5.2.1) takes the axis of least penetration. Every query that picks a reference
+/// face from both polygons' face queries picks it here.
+template <typename S>
+bool ReferenceFaceIsB(S separationA, S separationB)
+{
+    return separationB > separationA;
+}
+
 /// Contact points from clipping, in the reference polygon's frame, with what the trace shows of the clipping.
 /// The arrays are valid up to their counts and left uninitialised beyond: zeroing the whole struct cost a block
 /// store (rep stos) per manifold, about a tenth of Collide's time for 8-gons.

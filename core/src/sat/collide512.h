@@ -89,8 +89,8 @@ ManifoldFromSeparations512(const PolygonT<double>& a, const TransformT<double>& 
     int faceB = 0;
     const double largestA = LargestSeparation(a.Count(), faceA, sepA);
     const double largestB = LargestSeparation(b.Count(), faceB, sepB);
-    // Reference face: B's only when strictly better, so ties (and skipped duplicates) keep A's face.
-    const bool flip = largestB > largestA;
+    // Reference face (a skipped duplicate of A's face keeps A's).
+    const bool flip = ReferenceFaceIsB(largestA, largestB);
     const PolygonT<double>& ref = SelectRef(flip, b, a);
     const TransformT<double>& xfRef = SelectRef(flip, xfB, xfA);
     const int face = Select(flip, faceB, faceA);

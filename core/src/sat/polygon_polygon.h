@@ -243,8 +243,8 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
         return manifold;
     }
 
-    // Reference face: B's only when strictly better, so ties (and skipped duplicates) keep A's face.
-    const bool flip = queryB.separation > queryA.separation;
+    // Reference face (a skipped duplicate of A's face keeps A's).
+    const bool flip = ReferenceFaceIsB(queryA.separation, queryB.separation);
     const PolygonT<S>& ref = SelectRef(flip, b, a);
     const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
     const TransformT<S>& xfRef = SelectRef(flip, xfB, xfA);

@@ -168,7 +168,7 @@ ManifoldT<S> InterpenetratingManifold(const PolygonT<S>& a, const TransformT<S>&
     int faceB = 0;
     const S largestA = largest(keptA, 0, a.Count(), faceA);
     const S largestB = largest(keptB, skip, b.Count(), faceB);
-    const bool flip = largestB > largestA;
+    const bool flip = ReferenceFaceIsB(largestA, largestB);
     const PolygonT<S>& ref = SelectRef(flip, b, a);
     const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
     const TransformT<S>& xfRef = SelectRef(flip, xfB, xfA);
