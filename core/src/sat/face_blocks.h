@@ -4,8 +4,9 @@
 // face, whose outcome follows the geometry and is mispredicted. Here each vertex is projected on four normals at
 // once, the minimum is kept per lane, and a block of four faces (or all faces of a polygon of up to 8) costs one
 // branch: the face-separation kernel (face_kernel.h), with the products, sums and minimum of the face-at-a-time scan
-// (TextbookFaceQuery), so the same bits; the recorder replays the faces one by one. Collide's face query (unit
-// normals), the sweep's separations, and Overlap's test of polygons of up to 8 vertices (raw edge normals) use them.
+// (TextbookFaceQuery), so the same bits; the recorder takes the faces from the lanes the loop decided from, up to the
+// face where it stopped (RecordLanes). Collide's face query (unit normals), the sweep's separations, and Overlap's test
+// of polygons of up to 8 vertices (raw edge normals) use them.
 #pragma once
 
 #include "face_kernel.h"
@@ -106,6 +107,21 @@ void HideFaces(uint64_t skip, int n, L& block0, L& block1)
     }
 }
 
+/// For the trace: the first `shown` faces of a small ref (at most 8) as its face loop holds them, in one or two blocks
+/// of lanes (normals nx0, ny0 and separations block0: faces 0 to 3; nx1, ny1, block1: faces 4 to 7), the `skip`ped
+/// ones (bits) as skipped. The loop calls it where it decides, with the face it stopped at: the trace is the lanes'
+/// numbers, not a second computation.
+template <typename Tracer, typename L, typename S>
+void RecordLanes(Tracer& tracer, const IncidentPolygon<S>& inc, int side, int shown, uint64_t skip, const L& nx0,
+                 const L& ny0, const L& block0, const L& nx1, const L& ny1, const L& block1)
+{
+    tracer.FaceLanes(side, 0, std::min(shown, 4), nx0, ny0, block0, skip, inc);
+    if (shown > 4)
+    {
+        tracer.FaceLanes(side, 4, shown - 4, nx1, ny1, block1, skip >> 4, inc);
+    }
+}
+
 /// The face query of Collide (unit normals) for a ref of at most 8 faces against a scanned inc of N padded vertices,
 /// with the answer of the textbook loop (TextbookFaceQuery): the separations of all of ref's faces from one pass over
 /// inc's vertices, as SmallRefSeparations takes them (the same bits), then one branch for all of them. A separating
@@ -114,8 +130,8 @@ void HideFaces(uint64_t skip, int n, L& block0, L& block1)
 /// first lane equal to it, read from the comparison's bits. ref's normals and vertices are loaded four at a time,
 /// whole: a polygon of at most 8 vertices keeps them inline, so the lanes past its last face read its own block and are
 /// masked out. A skipped face (anti-parallel to one already tested) and a NaN separation take no part. The recorder
-/// replays the faces in order, up to the first separating one, with the same numbers. Against ScanFaceBlocks with a
-/// branch per block, Collide of 8-gons took 0.97 of the time (satviz-bench).
+/// takes the faces from the lanes, in order, up to the face where the query stopped (the first separating one).
+/// Against ScanFaceBlocks with a branch per block, Collide of 8-gons took 0.97 of the time (satviz-bench).
 template <int N, int kBlocks, typename S, typename Tracer>
 FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second,
                                Tracer& tracer)
@@ -152,14 +168,14 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
     const int separating = ((block0 > zero).Bits() | (block1 > zero).Bits() << 4) & ((1 << n) - 1);
     FaceQuery<S> query;
     query.face = 0;
-    int replayed = n; // faces the recorder shows
+    int tested = n; // the faces up to the one the query stopped at
     if (separating != 0 && Tracer::kEarlyExit)
     {
         const int i = __builtin_ctz(static_cast<unsigned>(separating));
         query.separated = true;
         query.face = i;
         query.separation = i < 4 ? block0.Get(i) : block1.Get(i - 4);
-        replayed = i + 1;
+        tested = i + 1;
     }
     else
     {
@@ -169,17 +185,7 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
     }
     if constexpr (Tracer::kEnabled)
     {
-        for (int i = 0; i < replayed; ++i)
-        {
-            if ((skip >> i) & 1)
-            {
-                tracer.SkippedFace(i, -1);
-                continue;
-            }
-            const Vec2T<S> normal = ref.Normal(i);
-            const S value = i < 4 ? block0.Get(i) : block1.Get(i - 4);
-            tracer.FaceAxis(side, i, normal, value, inc.Support(normal), value > S(0));
-        }
+        RecordLanes(tracer, inc, side, tested, skip, n0x, n0y, block0, n1x, n1y, block1);
     }
     return query;
 }
@@ -191,9 +197,9 @@ FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>&
 /// skipped last face is skipped in every lane that repeats it, else its separation, which may round apart from that of
 /// the other polygon's face it repeats, would count. Each lane keeps the largest separation it saw and its first face;
 /// the lanes combine into the first face of the largest separation, as a face-by-face loop finds it. A block that holds
-/// a separating face ends the query at the first such face. The recorder replays the block's faces in order, up to that
-/// face, with the same numbers. A ref of at most 8 faces takes SmallRefFaceQuery instead, and Overlap of small polygons
-/// SmallFacesSeparate (raw edge normals).
+/// a separating face ends the query at the first such face. The recorder takes each block's faces from its lanes as
+/// the loop decides on the block, in order, up to that face. A ref of at most 8 faces takes SmallRefFaceQuery instead,
+/// and Overlap of small polygons SmallFacesSeparate (raw edge normals).
 template <int N, typename S, typename Tracer>
 FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second,
                             Tracer& tracer)
@@ -226,17 +232,11 @@ FaceQuery<S> ScanFaceBlocks(const PolygonT<S>& ref, const IncidentPolygon<S>& in
         const int stop = separating != 0 ? __builtin_ctz(static_cast<unsigned>(separating)) : 4;
         if constexpr (Tracer::kEnabled)
         {
-            for (int l = 0; l < 4 && i0 + l < n && (l <= stop || !Tracer::kEarlyExit); ++l)
-            {
-                if ((skipped >> l) & 1)
-                {
-                    tracer.SkippedFace(i0 + l, -1);
-                    continue;
-                }
-                const Vec2T<S> normal = ref.Normal(i0 + l);
-                const S value = separation.Get(l);
-                tracer.FaceAxis(side, i0 + l, normal, value, inc.Support(normal), value > S(0));
-            }
+            // The block's faces, up to the one the query stops at, with the normals the loop loaded for them (loaded
+            // again here: handing the block in changes how the untraced loop is compiled).
+            const FaceBlock<L, S> block(ref, ref.Vertices().data, i0);
+            const int tested = std::min(n - i0, Tracer::kEarlyExit ? std::min(stop + 1, 4) : 4);
+            tracer.FaceLanes(side, i0, tested, block.nx, block.ny, separation, static_cast<uint64_t>(skipped), inc);
         }
         if (separating != 0 && !query.separated)
         {
@@ -304,8 +304,8 @@ struct EdgeNormalBlock
 /// inc's vertices, each projected on all of ref's normals at once, then one branch for all of ref's faces instead
 /// of one per face, whose outcome follows the geometry and is mispredicted. The same products, sums and minimum as
 /// TextbookFaceQuery, so the same separations to the bit. A skipped face (second pass: anti-parallel to one of inc's
-/// faces, already tested) and the lanes past the last face take no part. The recorder replays the faces in order,
-/// up to the first separating one. True when a face separates.
+/// faces, already tested) and the lanes past the last face take no part. The recorder takes the faces from the lanes,
+/// in order, up to the face where the test stopped (the first separating one). True when a face separates.
 template <int N, int kBlocks, typename S, typename Tracer>
 bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second, Tracer& tracer)
 {
@@ -324,19 +324,10 @@ bool SmallFacesSeparate(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
     const int separating = (((separation0 > L::Fill(S(0))).Bits() | (separation1 > L::Fill(S(0))).Bits() << 4) & live);
     if constexpr (Tracer::kEnabled)
     {
-        const int stop =
-            separating != 0 && Tracer::kEarlyExit ? __builtin_ctz(static_cast<unsigned>(separating)) : n - 1;
-        for (int i = 0; i <= stop; ++i)
-        {
-            if ((skip >> i) & 1)
-            {
-                tracer.SkippedFace(i, -1);
-                continue;
-            }
-            const Vec2T<S> normal = RightPerp(ref.Edge(i));
-            const S value = i < 4 ? separation0.Get(i) : separation1.Get(i - 4);
-            tracer.FaceAxis(side, i, normal, value, inc.Support(normal), value > S(0));
-        }
+        const int tested =
+            separating != 0 && Tracer::kEarlyExit ? __builtin_ctz(static_cast<unsigned>(separating)) + 1 : n;
+        RecordLanes(tracer, inc, side, tested, skip, faces0.nx, faces0.ny, separation0, faces1.nx, faces1.ny,
+                    separation1);
     }
     return separating != 0;
 }

@@ -194,7 +194,7 @@ bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
         if ((c == 0 || candidate.face != candidates[c - 1].face) &&
             evaluation.Add(candidate.face, candidate.lo, candidate.hi))
         {
-            return EndPass(tracer, view, lanes, false);
+            return EndPass(tracer, view, false);
         }
     }
     if constexpr (Tracer::kEnabled)
@@ -207,17 +207,17 @@ bool SweepBisectedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, i
     {
         if (evaluation.Add(f, frontLastSupport, frontLastSupport))
         {
-            return EndPass(tracer, view, lanes, false);
+            return EndPass(tracer, view, false);
         }
     }
     for (int f = Next(backLast, n), k = 0; f != frontFirst && k < n; f = Next(f, n), ++k)
     {
         if (evaluation.Add(f, backLastSupport, backLastSupport))
         {
-            return EndPass(tracer, view, lanes, false);
+            return EndPass(tracer, view, false);
         }
     }
-    return EndPass(tracer, view, lanes, !evaluation.Flush() && !(lanes.first.MaxLane() >= lanes.last.MinLane()));
+    return EndPass(tracer, view, !evaluation.Flush() && !(lanes.first.MaxLane() >= lanes.last.MinLane()));
 }
 
 } // namespace satviz::detail

@@ -87,35 +87,21 @@ struct KeptSeparations
     bool twoBlocks = false;
 };
 
-// The recorder's face-by-face view of a block of faces i0 .. i0 + 3 (those below n), with the block's own numbers:
-// the latest entry and earliest exit so far, and the first face that ends the test (then `viewEnded`).
-template <typename L, typename S, typename Tracer>
-void Replay(Tracer& tracer, SweepState<S>& view, bool& viewEnded, int side, int i0, int n, const L& separations,
-            const L& rates, const AxisLanes<L>& axes)
+// The end of a pass over the faces of a polygon: `going` is whether the test goes on. A pass that ended the test on the
+// latest entry against the earliest exit, which the loops compare once per pass (a face that ends it on its own said
+// so as the lanes took it in), shows it on its last face evaluated. `view` holds why the test ended, for the trace.
+template <typename S, typename Tracer>
+bool EndPass(Tracer& tracer, SweepState<S>& view, bool going)
 {
-    for (int l = 0; l < 4 && i0 + l < n && !viewEnded; ++l)
+    if constexpr (Tracer::kEnabled)
     {
-        const S entry = axes.entry.Get(l);
-        const S leave = axes.leave.Get(l);
-        const bool never = axes.never.Get(l);
-        if (entry > view.first)
+        if (!going && view.exit == SweepExit::AllAxesOverlap)
         {
-            view.first = entry;
-            view.firstSide = side;
-            view.firstFace = i0 + l;
-        }
-        view.last = std::min(view.last, leave);
-        viewEnded = never || view.first > S(1) || view.first >= view.last;
-        // The trace shows an overlapping axis (no entry) as entering at 0, as its interval overlaps from t = 0.
-        tracer.Axis(side, i0 + l, separations.Get(l), rates.Get(l), never ? S(0) : std::max(entry, S(0)),
-                    never ? kInfinity<S> : leave, viewEnded);
-        if (viewEnded)
-        {
-            view.exit = never               ? SweepExit::NeverCloses
-                        : view.first > S(1) ? SweepExit::EntryAfterStep
-                                            : SweepExit::EntryAfterExit;
+            view.exit = SweepExit::EntryAfterExit;
+            tracer.EndedAfterPass();
         }
     }
+    return going;
 }
 
 // The faces of `ref` (side 0 = A, 1 = B) against `inc` mapped into ref's frame; `velocity` is B's motion relative
@@ -129,8 +115,9 @@ void Replay(Tracer& tracer, SweepState<S>& view, bool& viewEnded, int side, int 
 //   changes no bound. A block that holds an axis that never closes, or an entry after t = 1, ends the test; the
 //   latest entry against the earliest exit is compared once per polygon. Both bounds only tighten from face to
 //   face, so this ends with the same verdict as stopping at the first face that fails, and the lanes combine to
-//   the first face of the latest entry, as a face-by-face loop finds it. The recorder has the faces in order up to
-//   that first failing face, with the lanes' numbers.
+//   the first face of the latest entry, as a face-by-face loop finds it. The recorder takes each block's faces from
+//   the lanes as they take it in, up to a face that ends the test on its own, and a pass that ends on the latest
+//   entry against the earliest exit on its last face (EndPass).
 template <int N, int kBlocks, typename L, typename S, typename Tracer>
 bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, Vec2T<S> velocity,
                 SweepLanes<L, S>& lanes, SweepState<S>& view, Tracer& tracer, KeptSeparations<L>& kept)
@@ -156,7 +143,6 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
     // A small ref has exactly kBlocks blocks, so its loop unrolls.
     const int blocksEnd = kSmall ? 4 * kBlocks : n;
     typename L::Mask ends = L::Mask::Fill(false);
-    bool viewEnded = view.exit != SweepExit::AllAxesOverlap;
     for (int i0 = 0; i0 < blocksEnd && !ends.Any(); i0 += 4)
     {
         // The block's normals and separations; the last block repeats the last face.
@@ -187,12 +173,16 @@ bool SweepFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side,
         ends = lanes.Add(axes, L::Fill(S(side * kSideStride + i0)) + L::Set(S(0), S(1), S(2), S(3)));
         if constexpr (Tracer::kEnabled)
         {
-            Replay(tracer, view, viewEnded, side, i0, n, separations, rates, axes);
+            const int ended = tracer.Block(side, i0, std::min(4, n - i0), separations, rates, axes, ends);
+            if (ended >= 0)
+            {
+                view.exit = axes.never.Get(ended) ? SweepExit::NeverCloses : SweepExit::EntryAfterStep;
+            }
         }
     }
     // A latest entry after t = 1 ended its own block (`ends`), so what is left to compare is the latest entry
     // against the earliest exit. Why the test ended is for the trace only, which the view has.
-    return !ends.Any() && !(lanes.first.MaxLane() >= lanes.last.MinLane());
+    return EndPass(tracer, view, !ends.Any() && !(lanes.first.MaxLane() >= lanes.last.MinLane()));
 }
 
 } // namespace satviz::detail

@@ -142,7 +142,7 @@ SweepResultT<S> SweepPolygons(const PolygonT<S>& a, const TransformT<S>& xfA, Ve
 #endif
     const IncidentPolygon<S> incB(b, xfA, xfB, kScanLimit, MapInLanes<Tracer::kWide>{});
     SweepLanes<Lanes<S, Tracer::kWide && std::is_same_v<S, double>>, S> lanes;
-    SweepState<S> view; // the recorder's view: the latest entry and earliest exit so far, and why the test ended
+    SweepState<S> view; // for the recorder: why the test ended
     const auto finish = [&]() {
         if constexpr (Tracer::kEnabled)
         {

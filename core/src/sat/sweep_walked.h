@@ -20,7 +20,7 @@ namespace satviz::detail
 
 // For the trace only: face i of `ref` as the face loops would evaluate it, for a face they decided without
 // evaluating it: its exact separation (inc's support point searched for alone), its rate, and its entry and exit as
-// the lanes compute them (AxisLanes; the trace shows an overlapping axis as entering at 0, as Replay does).
+// the lanes compute them (AxisLanes; the trace shows an overlapping axis as entering at 0, as the recorder does).
 template <typename S>
 struct ViewedFace
 {
@@ -40,31 +40,6 @@ ViewedFace<S> ViewFace(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
     const bool never = axes.never.Get(0);
     return {separation, rate, never ? S(0) : std::max(axes.entry.Get(0), S(0)),
             never ? kInfinity<S> : axes.leave.Get(0)};
-}
-
-// The end of a pass over the faces of a polygon in a large polygon's face loop (walked or bisected): `going` is
-// whether the test goes on. For the trace, the face-by-face view of a scanned polygon after it (Replay) goes on from
-// the lanes' latest entry and earliest exit, and a pass that ended the test on the latest entry against the
-// earliest exit (a face that ends it on its own said so as the lanes took it in) shows it on its last face
-// evaluated.
-template <typename L, typename S, typename Tracer>
-bool EndPass(Tracer& tracer, SweepState<S>& view, const SweepLanes<L, S>& lanes, bool going)
-{
-    if constexpr (Tracer::kEnabled)
-    {
-        SweepState<S> state;
-        lanes.Combine(state);
-        view.first = state.first;
-        view.firstSide = state.firstSide;
-        view.firstFace = state.firstFace;
-        view.last = state.last;
-        if (!going && view.exit == SweepExit::AllAxesOverlap)
-        {
-            view.exit = SweepExit::EntryAfterExit;
-            tracer.EndedAfterPass();
-        }
-    }
-    return going;
 }
 
 // What the bounded face loop of one polygon (SweepBoundedFaces) leaves for its second pass (SweepBoundedExits).
@@ -339,7 +314,7 @@ bool SweepBoundedFaces(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
         return ~((zero > distance) | ((L::Fill(-still) > rate) & (L::Fill(known * shrink) * -rate > distance)));
     };
     const bool ends = VisitBounds<L>(ref, walk.witness, velocity, select, evaluation, seed) || evaluation.Flush();
-    return EndPass(tracer, view, lanes, !ends && !(lanes.first.MaxLane() >= lanes.last.MinLane()));
+    return EndPass(tracer, view, !ends && !(lanes.first.MaxLane() >= lanes.last.MinLane()));
 }
 
 // The second pass of a walked face loop, once the latest entry is known: every face that recedes (r > 0) and
@@ -365,9 +340,9 @@ bool SweepBoundedExits(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, in
     };
     if (VisitBounds<L>(ref, walk.witness, velocity, select, evaluation) || evaluation.Flush())
     {
-        return EndPass(tracer, view, lanes, false);
+        return EndPass(tracer, view, false);
     }
-    return EndPass(tracer, view, lanes, !(first >= lanes.last.MinLane()));
+    return EndPass(tracer, view, !(first >= lanes.last.MinLane()));
 }
 
 } // namespace satviz::detail

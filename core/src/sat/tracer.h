@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // satviz (private): the tracer policies of the SAT templates. NullTracer is the fast path and records nothing;
-// TraceRecorder fills a TraceT, SweepRecorder a SweepTraceT. The algorithm calls a tracer only inside `if constexpr (Tracer::kEnabled)`, so
-// everything the trace needs beyond the result (world axes, full projection intervals) is computed only when
-// recording, and the arithmetic that produces the result is the same in both instantiations.
+// TraceRecorder fills a TraceT, SweepRecorder a SweepTraceT. The algorithm calls a tracer only inside
+// `if constexpr (Tracer::kEnabled)`, so everything the trace needs beyond the result (world axes, full projection
+// intervals) is computed only when recording, and the arithmetic that produces the result is the same in both
+// instantiations. A face loop in lanes hands the recorder its lanes where it decides on them (FaceLanes, Block), so
+// the trace holds the numbers the loop decided from.
 #pragma once
 
 #include "sweep_axis.h"
@@ -13,6 +15,7 @@
 #include <satviz/trace.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 
 namespace satviz::detail
@@ -110,6 +113,27 @@ class TraceRecorder : public AlgorithmChoices
         test.supportB = side == 0 ? support : face;
         test.separating = separating;
         Push(test);
+    }
+
+    /// Faces i0 .. i0 + count - 1 of polygon `side` as a face loop holds them in lanes, lane l face i0 + l: their
+    /// normals (nx, ny; in that polygon's frame, unit or not) and separations, recorded as FaceAxis records one. The
+    /// faces in the bits of `skipped` (bit l: lane l) were skipped (SkippedFace); `inc`, the other polygon mapped
+    /// into this one's frame, gives the support point shown for each face.
+    template <typename L, typename Inc>
+    void FaceLanes(int side, int i0, int count, const L& nx, const L& ny, const L& separations, uint64_t skipped,
+                   const Inc& inc)
+    {
+        for (int l = 0; l < count; ++l)
+        {
+            if ((skipped >> l) & 1u)
+            {
+                SkippedFace(i0 + l, -1);
+                continue;
+            }
+            const Vec2T<S> normal{nx.Get(l), ny.Get(l)};
+            const S separation = separations.Get(l);
+            FaceAxis(side, i0 + l, normal, separation, inc.Support(normal), separation > S(0));
+        }
     }
 
     /// A face was pruned: the separation `bound` of one point of the other polygon showed it could neither
@@ -304,16 +328,35 @@ class SweepRecorder
         for (int l = 0; l < m_pendingCount; ++l)
         {
             SweepAxisT<S>& axis = m_trace.axes[static_cast<size_t>(m_pending[l])];
-            const bool never = axes.never.Get(l);
-            // As Replay: an overlapping axis (no entry) enters at 0, as its interval overlaps from t = 0.
             axis.rate = rates.Get(l);
-            axis.entry = never ? S(0) : std::max(axes.entry.Get(l), S(0));
-            axis.exit = never ? kInfinity<S> : axes.leave.Get(l);
+            Times(axes, l, axis.entry, axis.exit);
             axis.endsTest = ended < 0 && ends.Get(l);
             ended = axis.endsTest ? l : ended;
         }
         m_pendingCount = 0;
         return ended;
+    }
+
+    // Faces i0 .. i0 + count - 1 of polygon `side` as a face loop that scans the other polygon holds them in lanes
+    // (lane l: face i0 + l), with their separations, rates, entries (-infinity: none) and exits, and `ends` the lanes
+    // whose axis ends the test (SweepLanes::Add). Records the faces up to the first that ends the test, and returns
+    // its lane, or -1.
+    template <typename L, typename Axes, typename Mask>
+    int Block(int side, int i0, int count, const L& separations, const L& rates, const Axes& axes, const Mask& ends)
+    {
+        for (int l = 0; l < count; ++l)
+        {
+            S entry;
+            S exit;
+            Times(axes, l, entry, exit);
+            const bool endsTest = ends.Get(l);
+            Axis(side, i0 + l, separations.Get(l), rates.Get(l), entry, exit, endsTest);
+            if (endsTest)
+            {
+                return l;
+            }
+        }
+        return -1;
     }
 
     // A face of a walked loop decided by the bound of a point of the other polygon, not walked to (see
@@ -393,6 +436,16 @@ class SweepRecorder
     }
 
   private:
+    // The entry and exit the trace shows for lane l of `axes`: an overlapping axis (no entry) enters at 0, as its
+    // interval overlaps from t = 0; one that never closes has neither.
+    template <typename Axes>
+    static void Times(const Axes& axes, int l, S& entry, S& exit)
+    {
+        const bool never = axes.never.Get(l);
+        entry = never ? S(0) : std::max(axes.entry.Get(l), S(0));
+        exit = never ? kInfinity<S> : axes.leave.Get(l);
+    }
+
     SweepTraceT<S>& m_trace;
     ShapeRef<S> m_a;
     ShapeRef<S> m_b;
