@@ -308,3 +308,57 @@ TEST_CASE("Speculative contacts of a concave shape: the nearest surface, across 
     CHECK(deep.manifold.depth == merged.manifold.depth);
     CHECK(deep.manifold.contactCount == merged.manifold.contactCount);
 }
+
+TEST_CASE("The broadphase over pieces boxes each piece as placed, by its own corners, however the body is turned",
+          "[concave]")
+{
+    // An L turned by 45 degrees: each piece's box in the body frame, turned and boxed again, grows well past the
+    // piece (the upright piece's box reaches 0.7 beyond its corners). A pair is tested only when the boxes of the
+    // pieces as placed overlap: worked out here from each piece's corners, transformed one by one.
+    const Concave l = ConcaveOf({{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 3}, {0, 3}});
+    REQUIRE(l.parts.size() == 2);
+    const Transform xf = MakeTransform(Vec2{0.0, 0.0}, 0.7853981633974483);
+    int probes = 0;
+    int looser = 0;
+    for (double x = -3.0; x <= 3.0; x += 0.05)
+    {
+        for (double y = -0.5; y <= 4.0; y += 0.05)
+        {
+            const Shape probe = MakeShape(
+                MakePolygon(std::vector<Vec2>{{-0.01, -0.01}, {0.01, -0.01}, {0.01, 0.01}, {-0.01, 0.01}}).polygon);
+            const Transform at = MakeTransform(Vec2{x, y}, 0.0);
+            int overlapping = 0;
+            bool inLooseBox = false;
+            for (const ConcavePart& part : l.parts)
+            {
+                Vec2 low{INFINITY, INFINITY};
+                Vec2 high{-INFINITY, -INFINITY};
+                for (const Vec2& v : Placed({part.shape.polygon.Vertices().begin(), part.shape.polygon.Vertices().end()},
+                                            xf))
+                {
+                    low = {std::min(low.x, v.x), std::min(low.y, v.y)};
+                    high = {std::max(high.x, v.x), std::max(high.y, v.y)};
+                }
+                overlapping += x - 0.01 <= high.x && x + 0.01 >= low.x && y - 0.01 <= high.y && y + 0.01 >= low.y;
+                Vec2 loose{INFINITY, INFINITY};
+                Vec2 looseHigh{-INFINITY, -INFINITY};
+                for (const Vec2& c : Placed({part.bounds.min, {part.bounds.max.x, part.bounds.min.y}, part.bounds.max,
+                                             {part.bounds.min.x, part.bounds.max.y}},
+                                            xf))
+                {
+                    loose = {std::min(loose.x, c.x), std::min(loose.y, c.y)};
+                    looseHigh = {std::max(looseHigh.x, c.x), std::max(looseHigh.y, c.y)};
+                }
+                inLooseBox = inLooseBox || (x > loose.x && x < looseHigh.x && y > loose.y && y < looseHigh.y);
+            }
+            const ConcaveManifold m = Collide(l, xf, probe, at);
+            INFO("probe at " << x << ", " << y);
+            CHECK(m.pairsTested == overlapping);
+            ++probes;
+            looser += inLooseBox && overlapping == 0 ? 1 : 0;
+        }
+    }
+    CHECK(probes > 5000);
+    // Many probes lie in a piece's box turned with the body but in no piece's own box: they test no pair.
+    CHECK(looser > 100);
+}

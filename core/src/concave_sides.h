@@ -45,32 +45,26 @@ BoundsT<S> Empty()
     return {{inf, inf}, {-inf, -inf}};
 }
 
-// The box of part i in world coordinates, widened by a few ulps of its magnitude so that rounding in the corners'
-// transform cannot part boxes of shapes that touch.
+// The box of part i in world coordinates: the box of its corners as placed, widened by a few ulps of its magnitude
+// so that rounding in the corners' transform cannot part boxes of shapes that touch. Each piece's own box, however
+// the body is turned: the box of its box in the body frame, turned, grows past the piece by up to half its size (a
+// pair the broadphase should part was tested, and the pieces figure drew boxes that did not hug the pieces).
 template <typename S>
 BoundsT<S> WorldBox(const Side<S>& side, int i)
 {
     BoundsT<S> box = Empty<S>();
-    if (side.concave != nullptr)
+    const ShapeT<S>& part = side.Part(i);
+    if (part.type == ShapeType::Polygon)
     {
-        const BoundsT<S>& local = side.concave->parts[i].bounds;
-        for (Vec2T<S> corner :
-             {local.min, Vec2T<S>{local.max.x, local.min.y}, local.max, Vec2T<S>{local.min.x, local.max.y}})
-        {
-            box = Grow(box, TransformPoint(side.xf, corner));
-        }
-    }
-    else if (side.single->type == ShapeType::Polygon)
-    {
-        for (const Vec2T<S>& v : side.single->polygon.Vertices())
+        for (const Vec2T<S>& v : part.polygon.Vertices())
         {
             box = Grow(box, TransformPoint(side.xf, v));
         }
     }
     else
     {
-        const Vec2T<S> c = TransformPoint(side.xf, side.single->circle.center);
-        const S r = side.single->circle.radius;
+        const Vec2T<S> c = TransformPoint(side.xf, part.circle.center);
+        const S r = part.circle.radius;
         box = {{c.x - r, c.y - r}, {c.x + r, c.y + r}};
     }
     const S magnitude = std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.max.x), std::abs(box.max.y)});

@@ -139,16 +139,8 @@ PieceBox PartBox(const Body& body, int i)
         box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
         box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
     };
-    if (body.IsConcave())
-    {
-        // As the concave queries take it: the piece's box in the body frame, its corners placed.
-        const BoundsT<double>& local = body.concave.parts[static_cast<size_t>(i)].bounds;
-        for (const Vec2 corner : {local.min, Vec2{local.max.x, local.min.y}, local.max, Vec2{local.min.x, local.max.y}})
-        {
-            grow(TransformPoint(xf, corner));
-        }
-    }
-    else if (shape.type == ShapeType::Polygon)
+    // As the concave queries take it: the box of the piece's corners as placed.
+    if (shape.type == ShapeType::Polygon)
     {
         for (const Vec2& v : shape.polygon.Vertices())
         {

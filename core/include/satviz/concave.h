@@ -27,7 +27,7 @@ struct ConcavePartT
 {
     ShapeT<S> shape;            ///< the piece, a convex polygon in the body frame
     std::vector<bool> internal; ///< for each edge of the piece: shared with another piece (a seam, not a surface)
-    BoundsT<S> bounds;          ///< the piece's box in the body frame, for the broadphase over pieces
+    BoundsT<S> bounds;          ///< the piece's box in the body frame (the broadphase boxes each piece as placed)
 };
 
 /// Double-precision piece.
