@@ -21,6 +21,7 @@ constexpr float kKeepY = 3.0f;
 constexpr float kLabelApart = 8.0f;
 constexpr float kSmallLabel = 18.0f; // a label narrower than this is a glyph or two // and two labels side by side this much more
 constexpr float kNameRoom = 5.0f; // and a body's name this much more
+constexpr float kNearAnchor = 24.0f; // a leader line's first pixels, beside the mark it starts from
 constexpr double kPi = 3.14159265358979323846;
 
 // Labels that are left out when no place is free: numbers of vertices and names of edges.
@@ -317,6 +318,15 @@ void LabelPlacer::AlsoAt(std::vector<ScreenPoint> anchors)
     label.alternates = std::move(anchors);
 }
 
+void LabelPlacer::AlsoBeside(std::vector<ScreenPoint> anchors)
+{
+    if (!m_labels.empty())
+    {
+        m_labels.back().alternates = std::move(anchors);
+        m_labels.back().across = true;
+    }
+}
+
 void LabelPlacer::OutsideBoth(std::vector<ScreenPoint> own)
 {
     if (!m_labels.empty())
@@ -347,6 +357,62 @@ void LabelPlacer::KeepOnSide()
     {
         m_labels.back().onSide = true;
     }
+}
+
+void LabelPlacer::AddMark(MarkKind kind, ScreenPoint at)
+{
+    m_marks.push_back({kind, at});
+}
+
+void LabelPlacer::Names(MarkKind kind)
+{
+    if (!m_labels.empty())
+    {
+        m_labels.back().names = static_cast<int>(kind);
+    }
+}
+
+bool LabelPlacer::NearestOwn(const Label& label, const ScreenRect& rect, ScreenPoint at) const
+{
+    if (label.names < 0)
+    {
+        return true;
+    }
+    const MarkKind kind = static_cast<MarkKind>(label.names);
+    // The marks at the anchor are its own: an arrow's head lies a few pixels back from the tip it is anchored at,
+    // and a corner resting on the other body's is one place.
+    const float own = kind == MarkKind::ArrowHead ? 14.0f : 3.0f;
+    const ScreenPoint middle{0.5f * (rect.minX + rect.maxX), 0.5f * (rect.minY + rect.maxY)};
+    // Measured to its own mark, beside its anchor: an arrow's head, not the tip it is anchored at.
+    ScreenPoint mark = at;
+    float nearest = own;
+    for (const Mark& m : m_marks)
+    {
+        const float d = std::hypot(m.at.x - at.x, m.at.y - at.y);
+        if (m.kind == kind && d <= nearest)
+        {
+            mark = m.at;
+            nearest = d;
+        }
+    }
+    const float mine = std::hypot(middle.x - mark.x, middle.y - mark.y);
+    // A corner's number or a contact's name keeps a few pixels' lead, so that it reads as its mark's at a glance;
+    // an arrow's name, larger and beside a larger mark, only gives way to a head clearly nearer than its own.
+    // Beside its shaft, away from its head, it keeps well clear of every other head: a shaft runs past them.
+    const bool alongShaft = at.x != label.anchor.x || at.y != label.anchor.y;
+    const float lead = kind != MarkKind::ArrowHead ? 3.0f : (alongShaft ? 10.0f : -6.0f);
+    for (const Mark& m : m_marks)
+    {
+        if (m.kind != kind || std::hypot(m.at.x - label.anchor.x, m.at.y - label.anchor.y) <= own)
+        {
+            continue;
+        }
+        if (std::hypot(middle.x - m.at.x, middle.y - m.at.y) <= mine + lead)
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 void LabelPlacer::Centre()
@@ -409,6 +475,23 @@ bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
         }
     }
     return true;
+}
+
+bool LabelPlacer::LeaderCrossesBar(ScreenPoint anchor, const ScreenRect& rect) const
+{
+    // A leader line across a thick bar (a projection interval, a marked face) seems to name the bar. Only the
+    // stretch away from the anchor counts: a contact point on a face is led out across that face.
+    const LeaderLine leader = Leader(anchor, rect);
+    const float length = std::hypot(leader.to.x - leader.from.x, leader.to.y - leader.from.y);
+    if (!leader.drawn || length <= kNearAnchor)
+    {
+        return false;
+    }
+    const ScreenPoint from{leader.from.x + (leader.to.x - leader.from.x) * kNearAnchor / length,
+                           leader.from.y + (leader.to.y - leader.from.y) * kNearAnchor / length};
+    return std::any_of(m_lines.begin(), m_lines.end(), [&](const Line& line) {
+        return !line.leader && line.thickness >= 4.0f && Cross(from, leader.to, line.a, line.b);
+    });
 }
 
 bool LabelPlacer::LeaderCrossesLine(ScreenPoint anchor, const ScreenRect& rect) const
@@ -528,8 +611,8 @@ void LabelPlacer::Flush(Color halo)
             }
             for (size_t k = 1; k <= label->alternates.size(); ++k)
             {
-                candidates.push_back({0, ring, k});
-                candidates.push_back({4, ring, k});
+                candidates.push_back({label->across ? 2 : 0, ring, k});
+                candidates.push_back({label->across ? -2 : 4, ring, k});
             }
         }
         auto cost = [](const Candidate& c) { return 4 * std::abs(c.turn) + 3 * c.ring + 3 * static_cast<int>(c.anchor); };
@@ -558,7 +641,7 @@ void LabelPlacer::Flush(Color halo)
                 const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
                 const ScreenRect rect = Around(at, size, start + c.turn * 0.25 * kPi, reach);
                 if (Inside(rect) && Free(rect, pass <= 0 ? kLabelSpacing : 0.0f, label->rank, pass < 0) &&
-                    Away(*label, rect, at) &&
+                    Away(*label, rect, at) && NearestOwn(*label, rect, at) &&
                     OnItsSide(label->onSide, at, label->dx, label->dy, rect))
                 {
                     chosen = rect;
@@ -572,14 +655,16 @@ void LabelPlacer::Flush(Color halo)
         // number or an edge name that no sentence names: a number at the end of a line, among the shapes' outlines,
         // reads as any corner's (the floor's "3" led into the box standing on it); it is left out instead.
         // A label that is always drawn tries those places once more when none is free, its leader line then
-        // allowed across other marks, before it is drawn over something at its preferred place.
-        for (int ring = 0; ring < 18 && !found && label->rank > LabelRank::Edge; ++ring)
+        // allowed across other marks (across a thick bar only on a last try), before it is drawn over something at
+        // its preferred place.
+        for (int ring = 0; ring < 27 && !found && label->rank > LabelRank::Edge; ++ring)
         {
             if (ring >= 9 && MayLeaveOut(label->rank))
             {
                 break;
             }
             const bool strict = ring < 9;
+            const bool clearOfBars = ring < 18; // and its leader line off the bars while it can
             const float reach = std::max(label->distance, 0.0f) + 28.0f + 16.0f * static_cast<float>(ring % 9);
             for (int i = 0; i < 16 && !found; ++i)
             {
@@ -589,6 +674,7 @@ void LabelPlacer::Flush(Color halo)
                     Away(*label, rect, label->anchor) &&
                     OnItsSide(label->onSide, label->anchor, label->dx, label->dy, rect, true) &&
                     (!strict || LeaderClear(label->anchor, rect)) &&
+                    (!clearOfBars || !LeaderCrossesBar(label->anchor, rect)) &&
                     !(label->onSide && LeaderCrossesLine(label->anchor, rect)))
                 {
                     chosen = rect;
@@ -643,7 +729,8 @@ void LabelPlacer::Flush(Color halo)
                     std::all_of(label->keepOut.begin(), label->keepOut.end(),
                                 [&](const std::vector<ScreenPoint>& outline) { return ClearOf(outline, rect); }) &&
                     OnItsSide(true, label->anchor, label->dx, label->dy, rect, true) &&
-                    LeaderClear(label->anchor, rect) && !LeaderCrossesLine(label->anchor, rect))
+                    LeaderClear(label->anchor, rect) && !LeaderCrossesLine(label->anchor, rect) &&
+                    !LeaderCrossesBar(label->anchor, rect))
                 {
                     chosen = rect;
                     found = true;
@@ -742,6 +829,17 @@ void LineWatch::Polyline(const ScreenPoint* points, int count, bool closed, Colo
 
 void LineWatch::FillConvex(const ScreenPoint* points, int count, Color color)
 {
+    // A small, nearly opaque triangle is an arrow's head (or a time's marker): a label names the one beside it.
+    if (count == 3 && (color & 0xFFu) >= 0x80u && m_group != "background" && m_group != "axes" && m_group != "labels")
+    {
+        const float w = std::max({points[0].x, points[1].x, points[2].x}) - std::min({points[0].x, points[1].x, points[2].x});
+        const float h = std::max({points[0].y, points[1].y, points[2].y}) - std::min({points[0].y, points[1].y, points[2].y});
+        if (w <= 24.0f && h <= 24.0f)
+        {
+            m_labels.AddMark(MarkKind::ArrowHead, {(points[0].x + points[1].x + points[2].x) / 3.0f,
+                                                   (points[0].y + points[1].y + points[2].y) / 3.0f});
+        }
+    }
     m_canvas.FillConvex(points, count, color);
 }
 

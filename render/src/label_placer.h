@@ -29,6 +29,16 @@ enum class LabelRank
     Verdict, ///< what the verdict shows: the MTV, contact points, the band's size, reference and incident faces
 };
 
+/// A kind of mark a label can name: a label sits nearer the mark it names than any other mark of that kind, where
+/// which one it names would otherwise be a guess ("c1" between two contact points, a corner's number beside the
+/// corner of the dashed outline where the MTV leaves its body, a velocity's "v" beside a face's normal).
+enum class MarkKind
+{
+    Corner,    ///< a corner of a body of the pair, or of a dashed outline of where a body is moved to
+    Contact,   ///< a contact point
+    ArrowHead, ///< the head of an arrow (told by the line watch, as drawn)
+};
+
 /// Collects a figure's labels and places them: each tries eight directions around its anchor at three distances,
 /// then (all but vertex numbers and edge names) farther places joined to the anchor by a thin leader line; a label
 /// that finds no free place is left out when it is a vertex number or an edge name, and otherwise drawn at its
@@ -80,12 +90,22 @@ class LabelPlacer
     /// first) when no place near its own anchor is free: it slides along what it names, on its preferred side
     /// or the other, before it moves farther out on a leader line.
     void AlsoAt(std::vector<ScreenPoint> anchors);
+    /// Lets the label added last (an arrow's name) sit beside any of `anchors` (points along the arrow's shaft, from
+    /// its head back) when no place near its own anchor is free, square to its preferred direction on either side:
+    /// beside its own arrow rather than beside another arrow's head.
+    void AlsoBeside(std::vector<ScreenPoint> anchors);
     /// Tells the label added last (a face's name) the outline of its own body (on screen): with no room outside the
     /// face, it may sit farther inside that body, wholly within it, where it still reads as that face's.
     void Within(std::vector<ScreenPoint> own);
     /// Keeps the label added last on the side its preferred direction points to, beyond the line through its anchor
     /// square to that direction: an edge's name outside its edge, where it names that edge and not the one opposite.
     void KeepOnSide();
+    /// Marks a point a label may name: a corner, a contact point, an arrow head.
+    void AddMark(MarkKind kind, ScreenPoint at);
+    /// Tells the label added last that it names the mark of `kind` at its anchor: beside its anchor (or beside what
+    /// leads to it, with AlsoBeside) it only takes a place nearer there than any other mark of the kind (farther out,
+    /// its leader line shows which it names).
+    void Names(MarkKind kind);
     /// Puts the label added last centred on its anchor when that place is free: a name inside the shape it names.
     /// Elsewhere it is placed as any other label.
     void Centre();
@@ -110,6 +130,13 @@ class LabelPlacer
         std::vector<ScreenPoint> own;        // with OutsideBoth: its own body's outline, which it keeps out of too
         std::vector<std::vector<ScreenPoint>> keepOut; // more outlines it stays out of
         std::vector<ScreenPoint> home;                 // with Within: its own body, which it may sit deep in
+        int names = -1;                                // with Names: the MarkKind it names, else -1
+        bool across = false;                           // with AlsoBeside: beside its alternates, not beyond them
+    };
+    struct Mark
+    {
+        MarkKind kind;
+        ScreenPoint at;
     };
     struct Line
     {
@@ -128,8 +155,10 @@ class LabelPlacer
     static LeaderLine Leader(ScreenPoint anchor, const ScreenRect& rect);
     bool LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const;
     bool LeaderCrossesLine(ScreenPoint anchor, const ScreenRect& rect) const;
+    bool LeaderCrossesBar(ScreenPoint anchor, const ScreenRect& rect) const;
     bool Free(const ScreenRect& rect, float spacing, LabelRank rank, bool everyLine = false) const;
     bool Inside(const ScreenRect& rect) const;
+    bool NearestOwn(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
     Canvas& m_canvas;
     float m_width;
     float m_height;
@@ -139,6 +168,7 @@ class LabelPlacer
     std::vector<Line> m_lines;
     std::vector<std::vector<ScreenPoint>> m_shapes;
     std::vector<Label> m_labels;
+    std::vector<Mark> m_marks;
 };
 
 /// A canvas that draws on another and tells a label placer of every line it draws there: a body's outline, a

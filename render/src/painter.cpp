@@ -811,6 +811,11 @@ class Painter
     // it rather than be left out, as the outline lies close beside the body's own.
     void ReserveOutline(const std::vector<ScreenPoint>& outline, float thickness)
     {
+        // A polygon's corners (not a round outline's many points): a number beside one reads as that corner's.
+        for (size_t i = 0; i < outline.size() && outline.size() <= 24; ++i)
+        {
+            m_labels.AddMark(MarkKind::Corner, outline[i]);
+        }
         for (size_t i = 0; i < outline.size(); ++i)
         {
             m_labels.ReserveLine(outline[i], outline[(i + 1) % outline.size()], thickness, LabelRank::Named);
@@ -1159,6 +1164,14 @@ class Painter
             m_labels.PlaceOutside(OutlineOf(1 - s), tip, "v", TextStyle::Heading, InkOf(s),
                                  static_cast<float>(body.velocity.x), static_cast<float>(-body.velocity.y), 6.0f,
                                  LabelRank::Note);
+            m_labels.Names(MarkKind::ArrowHead);
+            // Beside its own shaft, where the head is crowded (beside a face's normal, whose "v" it would seem).
+            std::vector<ScreenPoint> shaft;
+            for (const float f : {0.2f, 0.4f, 0.6f})
+            {
+                shaft.push_back({tip.x + (from.x - tip.x) * f, tip.y + (from.y - tip.y) * f});
+            }
+            m_labels.AlsoBeside(std::move(shaft));
             // And out of the other body where its ghost shows it (at the hit, at the figure's time).
             for (const double t : {m_study.sweepResult.status == SweepStatus::Hit ? m_study.sweepResult.toi : -1.0,
                                    m_figure.time})
@@ -1225,6 +1238,7 @@ class Painter
             m_labels.Place(tip, "v = " + FormatNumber(speed) + unit, TextStyle::Label, InkOf(s),
                           static_cast<float>(body.velocity.x), static_cast<float>(-body.velocity.y), 6.0f,
                           LabelRank::Note);
+            m_labels.Names(MarkKind::ArrowHead);
         }
     }
 
@@ -1870,6 +1884,13 @@ class Painter
         m_labels.Reserve({to.x - 12.0f, to.y - 12.0f, to.x + 12.0f, to.y + 12.0f});
         m_labels.Place(to, "MTV " + depth, TextStyle::Heading, palette::kResult, static_cast<float>(m.normal.x),
                       static_cast<float>(-m.normal.y), 6.0f, LabelRank::Verdict);
+        m_labels.Names(MarkKind::ArrowHead);
+        std::vector<ScreenPoint> shaft;
+        for (const float f : {0.3f, 0.6f})
+        {
+            shaft.push_back({to.x + (from.x - to.x) * f, to.y + (from.y - to.y) * f});
+        }
+        m_labels.AlsoBeside(std::move(shaft));
         // A pitfall's push beside the right one, dashed, so that the two can be compared.
         const PitfallResult& pitfall = m_study.pitfall;
         if (pitfall.ran && pitfall.overlap && !m_study.sweep && pitfall.depth > 0.0)
@@ -1965,6 +1986,7 @@ class Painter
             m_used.push_back(LegendMark::Contact);
             m_canvas.Circle(screen[i], 5.5f, palette::kBackground, 1.5f);
             m_labels.Reserve(Disc(screen[i], 6.5f));
+            m_labels.AddMark(MarkKind::Contact, screen[i]);
         }
         // Two contacts closer on screen than a label is wide share one label, placed between them.
         if (count == 2 && std::hypot(screen[0].x - screen[1].x, screen[0].y - screen[1].y) < 16.0f)
@@ -1977,6 +1999,7 @@ class Painter
         {
             m_labels.Place(screen[i], "c" + std::to_string(i + 1), TextStyle::Label, palette::kResult, 1.0f, -1.0f, 6.0f,
                           LabelRank::Verdict);
+            m_labels.Names(MarkKind::Contact);
         }
     }
 
@@ -2207,6 +2230,15 @@ class Painter
         // The number line's title names the axis's face too.
         const std::string sentence = DescribeStep(m_scene, m_study, m_figure.step) + " " +
                                      (m_hasAxis ? DescribeAxis(m_scene, m_study, m_axis.Ref()) : std::string());
+        // Every corner of the pair, that a vertex number keeps nearer its own corner than any other.
+        for (int s = 0; s < 2; ++s)
+        {
+            const Body& body = BodyOf(s);
+            for (size_t i = 0; body.shape.type == ShapeType::Polygon && i < body.shape.polygon.Vertices().size(); ++i)
+            {
+                m_labels.AddMark(MarkKind::Corner, At(TransformPoint(body.Xf(), body.shape.polygon.Vertices()[i])));
+            }
+        }
         for (int s = 0; s < 2; ++s)
         {
             const Body& body = BodyOf(s);
@@ -2246,10 +2278,14 @@ class Painter
                     }
                     const Vec2 v = TransformPoint(xf, poly.Vertices()[i]);
                     const Vec2 out = v - centroid;
-                    if (m_labels.PlaceOutside(other, At(v), std::to_string(i), TextStyle::Label, InkOf(s),
-                                              static_cast<float>(out.x), static_cast<float>(-out.y), 4.0f,
-                                              isNamed ? LabelRank::Named : LabelRank::Vertex) &&
-                        pokedIn[static_cast<size_t>(i)] && !contained)
+                    if (!m_labels.PlaceOutside(other, At(v), std::to_string(i), TextStyle::Label, InkOf(s),
+                                               static_cast<float>(out.x), static_cast<float>(-out.y), 4.0f,
+                                               isNamed ? LabelRank::Named : LabelRank::Vertex))
+                    {
+                        continue;
+                    }
+                    m_labels.Names(MarkKind::Corner);
+                    if (pokedIn[static_cast<size_t>(i)] && !contained)
                     {
                         // A corner pushed into the other body is numbered just outside both, where the number
                         // reads as that corner's, not the other body's; with no room there it is left out.
