@@ -265,12 +265,18 @@ void Stepper::FindContacts()
         }
         return nullptr;
     };
-    // Each candidate pair's contact goes into its own slot (a = -1: none), so the pairs may be collided on any
-    // thread; the slots are then kept in the candidates' order.
+    // The candidates are cut into pieces that may be collided on any thread, each piece's contacts appended to a
+    // list of its own; the first piece's list is the world's, and the others follow it in order: the contacts come
+    // in the candidates' order, as from one pass over them. On one thread there is one piece.
     const int pairCount = static_cast<int>(candidates.size());
-    std::vector<WorldContact> slots(candidates.size());
-    std::vector<uint8_t> overlaps(candidates.size(), 0);
-    const auto collide = [&](int begin, int end) {
+    const int pieces = PieceCount(world.tasks, pairCount, kPairsPerPiece);
+    std::vector<WorldContact>& contacts = world.contacts;
+    contacts.clear();
+    contacts.reserve(previous.size() + 16);
+    std::vector<std::vector<WorldContact>> later(static_cast<size_t>(pieces - 1));
+    std::vector<int64_t> touchingOf(static_cast<size_t>(pieces), 0), speculativeOf(static_cast<size_t>(pieces), 0);
+    const auto collide = [&](int piece, int begin, int end) {
+        std::vector<WorldContact>& out = piece == 0 ? contacts : later[static_cast<size_t>(piece - 1)];
         for (int slot = begin; slot < end; ++slot)
         {
             const int i = candidates[static_cast<size_t>(slot)].first;
@@ -302,10 +308,11 @@ void Stepper::FindContacts()
                     continue;
                 }
             }
-            WorldContact& c = slots[static_cast<size_t>(slot)];
+            WorldContact c;
             // A pair still apart that the sweep takes gets no speculative contact, only a guard (see LeftToSweep).
             c.guard = guard || (!m.overlap && LeftToSweep(i, j));
-            overlaps[static_cast<size_t>(slot)] = m.overlap ? 1 : 0;
+            touchingOf[static_cast<size_t>(piece)] += m.overlap;
+            speculativeOf[static_cast<size_t>(piece)] += !m.overlap && !c.guard;
             c.a = i;
             c.b = j;
             c.normal = m.normal;
@@ -353,27 +360,25 @@ void Stepper::FindContacts()
                     }
                 }
             }
+            out.push_back(c);
         }
     };
-    ParallelFor(world.tasks, pairCount, kPairsPerPiece, collide);
-
-    std::vector<int> wake;
-    std::vector<WorldContact>& contacts = world.contacts;
-    contacts.clear();
-    contacts.reserve(previous.size() + 16);
+    ParallelForPieces(world.tasks, pairCount, pieces, collide);
     int64_t touching = 0, speculative = 0;
-    for (int slot = 0; slot < pairCount; ++slot)
+    for (int piece = 0; piece < pieces; ++piece)
     {
-        const WorldContact& c = slots[static_cast<size_t>(slot)];
-        if (c.a < 0)
+        if (piece > 0)
         {
-            continue;
+            const std::vector<WorldContact>& more = later[static_cast<size_t>(piece - 1)];
+            contacts.insert(contacts.end(), more.begin(), more.end());
         }
-        const bool overlap = overlaps[static_cast<size_t>(slot)] != 0;
-        touching += overlap;
-        speculative += !overlap && !c.guard;
-        contacts.push_back(c);
-        // A body that touches a sleeping one wakes its island.
+        touching += touchingOf[static_cast<size_t>(piece)];
+        speculative += speculativeOf[static_cast<size_t>(piece)];
+    }
+    // A body that touches a sleeping one wakes its island.
+    std::vector<int> wake;
+    for (const WorldContact& c : contacts)
+    {
         if (awakeAtStart[c.a] != awakeAtStart[c.b])
         {
             wake.push_back(awakeAtStart[c.a] ? c.b : c.a);

@@ -122,17 +122,20 @@ void Stepper::SolveVelocities()
             approach[i] = Dot(detail::RelativeVelocity(solverBodies[c.a], solverBodies[c.b], p.rA, p.rB), c.normal);
         }
     };
-    // Each contact prepared into its own slot, on any thread; then kept in the contacts' order.
-    enum : uint8_t
-    {
-        kSkipped,
-        kContact,
-        kGuard,
-    };
+    // The contacts are cut into pieces prepared on any thread, each piece's solver contacts and guards appended to
+    // lists of its own; the first piece's lists are the step's, and the others follow them in order, as from one
+    // pass over the contacts. On one thread there is one piece.
     const int contactCount = static_cast<int>(world.contacts.size());
-    std::vector<SolverContact> prepared(world.contacts.size());
-    std::vector<uint8_t> kinds(world.contacts.size(), kSkipped);
-    const auto prepare = [&](int begin, int end) {
+    const int pieces = PieceCount(world.tasks, contactCount, kContactsPerPiece);
+    solverContacts.clear();
+    solverContacts.reserve(world.contacts.size());
+    guards.clear();
+    std::vector<std::vector<SolverContact>> laterContacts(static_cast<size_t>(pieces - 1));
+    std::vector<std::vector<SolverContact>> laterGuards(static_cast<size_t>(pieces - 1));
+    const auto prepare = [&](int piece, int begin, int end) {
+        std::vector<SolverContact>& contactsOut =
+            piece == 0 ? solverContacts : laterContacts[static_cast<size_t>(piece - 1)];
+        std::vector<SolverContact>& guardsOut = piece == 0 ? guards : laterGuards[static_cast<size_t>(piece - 1)];
         for (int k = begin; k < end; ++k)
         {
             const WorldContact& wc = world.contacts[static_cast<size_t>(k)];
@@ -140,7 +143,7 @@ void Stepper::SolveVelocities()
             {
                 continue;
             }
-            SolverContact& c = prepared[static_cast<size_t>(k)];
+            SolverContact c;
             c.a = wc.a;
             c.b = wc.b;
             c.normal = wc.normal;
@@ -155,7 +158,7 @@ void Stepper::SolveVelocities()
             }
             if (wc.guard)
             {
-                kinds[static_cast<size_t>(k)] = kGuard;
+                guardsOut.push_back(c);
                 continue;
             }
             double approach[2] = {0.0, 0.0};
@@ -173,27 +176,25 @@ void Stepper::SolveVelocities()
             const double pull = std::max(0.0, -Dot(gravityB - gravityA, c.normal));
             detail::PrepareContact(c, solverBodies[c.a], solverBodies[c.b], approach, pull, dt,
                                    settings.restitutionThreshold);
-            kinds[static_cast<size_t>(k)] = kContact;
+            contactsOut.push_back(c);
         }
     };
-    ParallelFor(world.tasks, contactCount, kContactsPerPiece, prepare);
-    solverContacts.clear();
-    solverContacts.reserve(world.contacts.size());
-    guards.clear();
-    for (int k = 0; k < contactCount; ++k)
+    ParallelForPieces(world.tasks, contactCount, pieces, prepare);
+    for (int piece = 1; piece < pieces; ++piece)
     {
-        SolverContact& c = prepared[static_cast<size_t>(k)];
-        if (kinds[static_cast<size_t>(k)] == kGuard)
+        const std::vector<SolverContact>& more = laterContacts[static_cast<size_t>(piece - 1)];
+        solverContacts.insert(solverContacts.end(), more.begin(), more.end());
+        const std::vector<SolverContact>& moreGuards = laterGuards[static_cast<size_t>(piece - 1)];
+        guards.insert(guards.end(), moreGuards.begin(), moreGuards.end());
+    }
+    // The traced pair's contact, if any, records what it starts the passes with.
+    for (SolverContact& c : solverContacts)
+    {
+        if (trace == nullptr)
         {
-            guards.push_back(c);
-            continue;
+            break;
         }
-        if (kinds[static_cast<size_t>(k)] != kContact)
-        {
-            continue;
-        }
-        if (trace != nullptr &&
-            ((trace->bodyA == c.a && trace->bodyB == c.b) || (trace->bodyA == c.b && trace->bodyB == c.a)))
+        if (((trace->bodyA == c.a && trace->bodyB == c.b) || (trace->bodyA == c.b && trace->bodyB == c.a)))
         {
             double approach[2] = {0.0, 0.0};
             approachOf(c, approach);
@@ -219,7 +220,6 @@ void Stepper::SolveVelocities()
                 trace->warmTangent[i] = c.points[i].tangentImpulse;
             }
         }
-        solverContacts.push_back(c);
     }
 
     for (int i = 0; i < n; ++i)
