@@ -194,9 +194,10 @@ struct World
     /// When not null, each step records there its grown boxes, the broadphase's pairs and its time-ordered hits
     /// (cleared at the start of the step). Null: nothing is recorded and nothing is paid.
     StepTrace* stepTrace = nullptr;
-    /// Where the step runs its work whose results do not depend on order (the narrowphase of each pair, each body's
-    /// pose and move): on the caller's parallel-for (PoolTasks of a ThreadPool, or the caller's own). The default
-    /// runs it all on the calling thread. Every body ends each step with the same bits for any number of workers.
+    /// Where the step runs its work whose results do not depend on order (each body's pose, box and move, the
+    /// narrowphase of each pair, the preparation of each contact, the first sweeps of the fast pairs): on the
+    /// caller's parallel-for (PoolTasks of a ThreadPool, or the caller's own). The default runs it all on the calling
+    /// thread. Every body ends each step with the same bits for any number of workers.
     TaskRunner tasks{};
 
     /// The broadphase's box order, kept between steps so that sorting costs close to linear time. Working memory,
