@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // satviz-bench as a program: settings it cannot run and a --csv directory it cannot write are refused with one line
 // before the run starts, --quick says that its figures are not measurements (--world --quick too), --help names the
-// peers.
+// peers, --world --write-scenes writes its scenes and --world --threads says what satviz steps on.
 
 #include <catch2/catch.hpp>
 
@@ -139,6 +139,43 @@ TEST_CASE("satviz-bench --world refuses no bodies, too few steps, no rounds and 
     CheckRefused("--world --rounds 0", {"--rounds", "got 0"});
     CheckRefused("--world --quick --steps 0", {"--steps", "got 0"});
     CheckRefused("--world --scenes pile drizzle", {"--scenes", "got drizzle"});
+    CheckRefused("--world --threads 0", {"--threads", "got 0"});
+    CheckRefused("--world --threads 257", {"--threads", "got 257"});
+}
+
+TEST_CASE("satviz-bench --world --write-scenes writes each scene at each size as a scene file, and runs nothing",
+          "[bench-tool]")
+{
+    const fs::path dir = kScratch.dir / "scenes";
+    const Run run = Bench("--world --bodies 30 7 --write-scenes " + dir.string());
+    REQUIRE(run.exitCode == 0);
+    CHECK(run.out.empty());
+    for (const char* name : {"pile-30.json", "pile-7.json", "rain-30.json", "rain-7.json"})
+    {
+        INFO(name);
+        REQUIRE(fs::is_regular_file(dir / name));
+        std::ifstream file(dir / name);
+        std::ostringstream text;
+        text << file.rdbuf();
+        const std::string json = text.str();
+        // The dynamic bodies and the ground and two walls, with the benchmark's gravity and step.
+        const int bodies = std::string(name).find("-30") != std::string::npos ? 30 : 7;
+        size_t names = 0;
+        for (size_t at = json.find("\"name\""); at != std::string::npos; at = json.find("\"name\"", at + 1))
+        {
+            ++names;
+        }
+        CHECK(names == static_cast<size_t>(bodies + 3));
+        CHECK(json.find("\"gravity\":[0.0,-10.0]") != std::string::npos);
+    }
+}
+
+TEST_CASE("satviz-bench --world --threads 2 steps satviz on two threads and says so", "[bench-tool]")
+{
+    const Run run = Bench("--world --quick --threads 2");
+    CHECK(run.exitCode == 0);
+    CHECK(run.out.find("satviz steps on 2 threads (--threads): its ms per step are the wall clock's") !=
+          std::string::npos);
 }
 
 TEST_CASE("satviz-bench --world --quick says its figures are not measurements, and writes world.csv", "[bench-tool]")
