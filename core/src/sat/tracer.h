@@ -123,6 +123,13 @@ class TraceRecorder : public AlgorithmChoices
     void FaceLanes(int side, int i0, int count, const L& nx, const L& ny, const L& separations, uint64_t skipped,
                    const Inc& inc)
     {
+        // The lanes stored once, rather than a lane at a time.
+        alignas(64) S x[L::kCount];
+        alignas(64) S y[L::kCount];
+        alignas(64) S values[L::kCount];
+        nx.Store(x);
+        ny.Store(y);
+        separations.Store(values);
         for (int l = 0; l < count; ++l)
         {
             if ((skipped >> l) & 1u)
@@ -130,9 +137,8 @@ class TraceRecorder : public AlgorithmChoices
                 SkippedFace(i0 + l, -1);
                 continue;
             }
-            const Vec2T<S> normal{nx.Get(l), ny.Get(l)};
-            const S separation = separations.Get(l);
-            FaceAxis(side, i0 + l, normal, separation, inc.Support(normal), separation > S(0));
+            const Vec2T<S> normal{x[l], y[l]};
+            FaceAxis(side, i0 + l, normal, values[l], inc.Support(normal), values[l] > S(0));
         }
     }
 
