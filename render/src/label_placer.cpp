@@ -19,6 +19,7 @@ constexpr float kSideMargin = 4.0f;   // and its left and right edges, beyond th
 constexpr float kKeepX = 4.0f;
 constexpr float kKeepY = 3.0f;
 constexpr float kLabelApart = 8.0f;
+constexpr float kOtherLabelApart = 14.0f;
 constexpr float kSmallLabel = 18.0f; // a label narrower than this is a glyph or two // and two labels side by side this much more
 constexpr float kNameRoom = 5.0f; // and a body's name this much more
 constexpr float kNearAnchor = 24.0f; // a leader line's first pixels, beside the mark it starts from
@@ -518,8 +519,11 @@ bool LabelPlacer::Free(const ScreenRect& rect, float spacing, LabelRank rank, bo
     for (size_t k = 0; k < m_taken.size(); ++k)
     {
         // Two labels side by side keep more room between them than a label and a mark: closer than about three
-        // spaces they read as one phrase ("c2 e2", "c1 pitfall 0.20").
-        const float apart = k >= m_reserved ? kLabelApart : 0.0f;
+        // spaces they read as one phrase, and two of different things (colours) closer than about four read as
+        // naming one thing ("c2 e2", "c1 pitfall 0.20").
+        const float apart = k < m_reserved                                      ? 0.0f
+                            : (m_takenColors[k - m_reserved] >> 8) == (m_placing >> 8) ? kLabelApart
+                                                                                      : kOtherLabelApart;
         const ScreenRect& other = m_taken[k];
         if (other.Overlaps({spaced.minX - apart, spaced.minY, spaced.maxX + apart, spaced.maxY}))
         {
@@ -569,6 +573,7 @@ void LabelPlacer::Flush(Color halo)
     };
     std::vector<Placed> placed;
     m_reserved = m_taken.size(); // the marks, panels and lines reserved; the labels' footprints follow
+    m_takenColors.clear();
     // Whether a place keeps the label out of the other body (and, with OutsideBoth, out of its own too).
     const auto Away = [](const Label& label, const ScreenRect& rect, ScreenPoint at) {
         if (!std::all_of(label.keepOut.begin(), label.keepOut.end(),
@@ -585,6 +590,7 @@ void LabelPlacer::Flush(Color halo)
     for (const Label* label : order)
     {
         const ScreenPoint size = m_canvas.MeasureText(label->text, label->style);
+        m_placing = label->color;
         const bool directed = label->dx != 0.0f || label->dy != 0.0f;
         const double start = directed ? std::atan2(label->dy, label->dx) : 0.0;
         ScreenRect chosen{};
@@ -758,6 +764,7 @@ void LabelPlacer::Flush(Color halo)
         const ScreenRect foot = Footprint(chosen);
         const float room = label->rank == LabelRank::Name ? kNameRoom : 0.0f;
         m_taken.push_back({foot.minX - room, foot.minY - room, foot.maxX + room, foot.maxY + room});
+        m_takenColors.push_back(label->color);
         placed.push_back({label, chosen, leader, from});
         if (leader)
         {

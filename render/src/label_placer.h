@@ -169,6 +169,8 @@ class LabelPlacer
     std::vector<std::vector<ScreenPoint>> m_shapes;
     std::vector<Label> m_labels;
     std::vector<Mark> m_marks;
+    std::vector<Color> m_takenColors; // the colour of each label placed, in m_taken's order from m_reserved on
+    Color m_placing = 0;              // the colour of the label being placed
 };
 
 /// A canvas that draws on another and tells a label placer of every line it draws there: a body's outline, a

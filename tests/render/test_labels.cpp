@@ -217,6 +217,9 @@ constexpr float kLineGap = 8.0f;
 // Two labels in the scene side by side on one line, closer than about three spaces, read as one phrase ("c2 e2",
 // "c1 pitfall 0.20 c2"): they keep farther apart than words of the number line.
 constexpr float kLabelLineGap = 16.0f;
+// And two of different things (different colours) closer than about four spaces read as naming one thing ("c2 e2"
+// with the floor's e2 beside the plank's contact, "c1 pitfall 0.20 c2" in a row).
+constexpr float kOtherLabelLineGap = 22.0f;
 
 Box Grown(const Box& b, float dx, float dy)
 {
@@ -288,7 +291,8 @@ std::vector<std::string> HiddenTexts(const RecordingCanvas& canvas, int width, i
             const bool oneLine = shared > 0.5f * std::min(p.maxY - p.minY, q.maxY - q.minY);
             const bool labels = commands[texts[a].first].group == "labels" && commands[texts[b].first].group == "labels";
             const float stack = labels ? kLabelStackGap : kStackGap;
-            const float line = labels ? kLabelLineGap : kLineGap;
+            const bool others = (commands[texts[a].first].color >> 8) != (commands[texts[b].first].color >> 8);
+            const float line = labels ? (others ? kOtherLabelLineGap : kLabelLineGap) : kLineGap;
             if (Grown(p, oneLine ? 0.5f * line : 0.5f * kStackGap, 0.5f * stack).Overlaps(
                     Grown(q, oneLine ? 0.5f * line : 0.5f * kStackGap, 0.5f * stack)))
             {
