@@ -121,11 +121,17 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
     }
     if (!trace.found)
     {
-        std::string sentence = "In " + when + " " + a + " and " + b + " had no contact: they were farther apart than " +
-                               "they could close within the step.";
+        // A pair that approaches is farther apart than it can close in the step; one whose centres move apart (after
+        // a bounce) closes nothing, and saying "close" there would read as if they still came together.
+        const std::vector<RigidBody>& start = record.before.empty() ? record.world.bodies : record.before;
+        const RigidBody& first = start[static_cast<size_t>(lo)];
+        const RigidBody& second = start[static_cast<size_t>(hi)];
+        const bool parting = Dot(second.position - first.position, second.velocity - first.velocity) > 0.0;
+        std::string sentence = "In " + when + " " + a + " and " + b + " had no contact: " +
+                               (parting ? "they were apart at its start and their centres were moving apart."
+                                        : "they were farther apart than they could close within the step.");
         // A pair with no body awake keeps its contact from the step it fell asleep in, but the world neither tests
         // nor solves it: saying they were apart would contradict the contact drawn.
-        const std::vector<RigidBody>& start = record.before.empty() ? record.world.bodies : record.before;
         const auto resting = [&](int i) {
             const RigidBody& body = start[static_cast<size_t>(i)];
             return body.type == BodyType::Static || !body.awake;

@@ -154,6 +154,21 @@ TEST_CASE("World layers: the response before the pair meets says there was no co
     const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerResponse);
     CHECK(AnyTextContains(canvas, "had no contact"));
     CHECK(canvas.InGroup("response").empty());
+    // Before the hit the balls approach (A at 3 m/s towards B at -1 m/s); long after it they part, and the sentence
+    // must not speak of closing a gap then. The direction is read from the world, apart from the sentence.
+    for (const int steps : {5, 40})
+    {
+        Stepped t = Step("l14_head_on.json", steps);
+        const std::vector<RigidBody>& bodies = t.record.world.bodies;
+        const bool parting =
+            (bodies[1].velocity.x - bodies[0].velocity.x) * (bodies[1].position.x - bodies[0].position.x) > 0.0;
+        CHECK(parting == (steps == 40));
+        const RecordingCanvas painted = Paint(t, kLayerShapes | kLayerResponse);
+        INFO("step " << steps);
+        CHECK(AnyTextContains(painted, "had no contact"));
+        CHECK(AnyTextContains(painted, "could close") == !parting);
+        CHECK(AnyTextContains(painted, "moving apart") == parting);
+    }
 }
 
 TEST_CASE("World layers: the response of a sleeping pair says it sleeps, not that it had no contact",
