@@ -12,23 +12,14 @@ namespace satviz
 namespace
 {
 
-// Round-off leaves residues like -2.78e-17 where the arithmetic gives 0; printed, they read as real numbers a
-// student cannot reproduce, so anything below 1e-12 of the scale it sits beside is shown as 0.
-double Clean(double value, double scale)
-{
-    return std::fabs(value) <= 1e-12 * std::max(1.0, std::fabs(scale)) ? 0.0 : value;
-}
-
 std::string N(double value)
 {
-    return FormatNumber(Clean(value, value), kResponseDigits);
+    return FormatResponseNumber(value);
 }
 
 std::string V(Vec2 v)
 {
-    const double scale = std::max(std::fabs(v.x), std::fabs(v.y));
-    return "(" + FormatNumber(Clean(v.x, scale), kResponseDigits) + ", " +
-           FormatNumber(Clean(v.y, scale), kResponseDigits) + ")";
+    return FormatResponseVector(v);
 }
 
 // A number as N prints it, read back: a speed printed as 0.00 is no approach.
@@ -103,6 +94,25 @@ ResponsePasses ResponsePassesOf(const SimRecord& record, int point)
         }
     }
     return passes;
+}
+
+// Round-off leaves residues like -2.78e-17 where the arithmetic gives 0; printed, they read as real numbers a
+// student cannot reproduce, so anything below 1e-12 of the scale it sits beside is shown as 0.
+static double Clean(double value, double scale)
+{
+    return std::fabs(value) <= 1e-12 * std::max(1.0, std::fabs(scale)) ? 0.0 : value;
+}
+
+std::string FormatResponseNumber(double value)
+{
+    return FormatNumber(Clean(value, value), kResponseDigits);
+}
+
+std::string FormatResponseVector(Vec2 v)
+{
+    const double scale = std::max(std::fabs(v.x), std::fabs(v.y));
+    return "(" + FormatNumber(Clean(v.x, scale), kResponseDigits) + ", " +
+           FormatNumber(Clean(v.y, scale), kResponseDigits) + ")";
 }
 
 std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& record)

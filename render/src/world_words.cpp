@@ -12,23 +12,14 @@ namespace satviz
 namespace
 {
 
-// Round-off residues (a velocity of -1.11e-13 beside -0.992) are shown as 0, as in the response's sentences: below
-// 1e-12 of the numbers beside them.
-double Clean(double value, double scale)
-{
-    return std::fabs(value) <= 1e-12 * std::max(1.0, std::fabs(scale)) ? 0.0 : value;
-}
-
 std::string N(double value)
 {
-    return FormatNumber(Clean(value, value), kResponseDigits);
+    return FormatResponseNumber(value);
 }
 
 std::string V(Vec2 v)
 {
-    const double scale = std::max(std::fabs(v.x), std::fabs(v.y));
-    return "(" + FormatNumber(Clean(v.x, scale), kResponseDigits) + ", " +
-           FormatNumber(Clean(v.y, scale), kResponseDigits) + ")";
+    return FormatResponseVector(v);
 }
 
 std::string Name(const Scene& scene, int body)

@@ -17,6 +17,14 @@ namespace satviz
 /// of passes alike: FormatNumber(value, kResponseDigits) shows an impulse of 0.0102 as 0.0102, not 0.01.
 constexpr int kResponseDigits = 3;
 
+/// A number as the response and the world panel print it: kResponseDigits significant digits, and a round-off
+/// residue (below 1e-12 of the value itself) shown as 0.
+std::string FormatResponseNumber(double value);
+
+/// A vector as the response and the world panel print it: "(x, y)", each part as FormatResponseNumber, with a
+/// residue below 1e-12 of the larger part shown as 0 (a velocity of (2.918, -2.78e-17) reads (2.92, 0.00)).
+std::string FormatResponseVector(Vec2 v);
+
 /// One step of the response: a short title ("Approach", "Effective mass", ...) and its sentence.
 struct ResponseStep
 {
