@@ -106,6 +106,12 @@ class LabelPlacer
     /// leads to it, with AlsoBeside) it only takes a place nearer there than any other mark of the kind (farther out,
     /// its leader line shows which it names).
     void Names(MarkKind kind);
+    /// Tells the label added last (a face's name: "e2", "reference face") that it names the face ab, of a body
+    /// whose partner in the pair has the outline `rival` (on screen): beside its anchor it only takes a place whose
+    /// middle lies nearer that face than the rival's outline, less a few pixels, where it would read as the rival's
+    /// (a floor's "e2" beside the plank's corner, "reference face" over the small box inside the large one). Farther
+    /// out, its leader line shows which face it names.
+    void NamesFace(ScreenPoint a, ScreenPoint b, std::vector<ScreenPoint> rival);
     /// Puts the label added last centred on its anchor when that place is free: a name inside the shape it names.
     /// Elsewhere it is placed as any other label.
     void Centre();
@@ -132,6 +138,8 @@ class LabelPlacer
         std::vector<ScreenPoint> home;                 // with Within: its own body, which it may sit deep in
         int names = -1;                                // with Names: the MarkKind it names, else -1
         bool across = false;                           // with AlsoBeside: beside its alternates, not beyond them
+        std::vector<ScreenPoint> face;                 // with NamesFace: the face it names, and the rival's outline
+        std::vector<ScreenPoint> rival;
     };
     struct Mark
     {
@@ -159,6 +167,7 @@ class LabelPlacer
     bool Free(const ScreenRect& rect, float spacing, LabelRank rank, bool everyLine = false) const;
     bool Inside(const ScreenRect& rect) const;
     bool NearestOwn(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
+    static bool NearestFace(const Label& label, const ScreenRect& rect);
     Canvas& m_canvas;
     float m_width;
     float m_height;

@@ -2157,7 +2157,14 @@ class Painter
         }
         m_labels.PlaceOutside(other, near, "reference face", TextStyle::Label, InkOf(referenceShape),
                              static_cast<float>(-n.x), static_cast<float>(n.y), 10.0f, LabelRank::Verdict);
-        m_labels.AlsoAt(AlongFace(shown1, shown2, near, other, 0.0f, 16.0f, 40.0f));
+        // Not so far along a long face that the name no longer reads as the contact's face: farther than that,
+        // a leader line from the contact's foot shows it.
+        std::vector<ScreenPoint> along = AlongFace(shown1, shown2, near, other, 0.0f, 16.0f, 40.0f);
+        along.erase(std::remove_if(along.begin(), along.end(),
+                                   [&](ScreenPoint p) { return std::hypot(p.x - near.x, p.y - near.y) > 64.0f; }),
+                    along.end());
+        m_labels.AlsoAt(along);
+        m_labels.NamesFace(r1, r2, other);
         const ScreenPoint i1 = At(clip.incidentV1);
         const ScreenPoint i2 = At(clip.incidentV2);
         m_canvas.Segment(i1, i2, InkOf(clip.incidentShape), 5.0f);
@@ -2168,6 +2175,7 @@ class Painter
         m_labels.PlaceOutside(OutlineOf(1 - clip.incidentShape), At(0.5 * (clip.incidentV1 + clip.incidentV2)),
                              "incident edge", TextStyle::Label, InkOf(clip.incidentShape), static_cast<float>(n.x),
                              static_cast<float>(-n.y), 10.0f, LabelRank::Verdict);
+        m_labels.NamesFace(i1, i2, OutlineOf(1 - clip.incidentShape));
     }
 
     // The edges (or vertices) of body `shape` that a sentence names: "floor's edge 2", "box's edges 0 and 2", "B's
@@ -2328,6 +2336,7 @@ class Painter
                                              isNamed ? LabelRank::Named : LabelRank::Edge))
                     {
                         m_labels.KeepOnSide();
+                        m_labels.NamesFace(wholeFrom, wholeTo, other);
                         // A face a sentence names may have its name anywhere along it, away from its corners,
                         // when its middle is taken (a thin wall's name beside it).
                         // One flush against the other body along all its length has its name just inside its
@@ -2337,6 +2346,12 @@ class Painter
                             m_labels.Within(own);
                             std::vector<ScreenPoint> along = AlongFace(from, to, mid, other, 12.0f, 8.0f, 12.0f);
                             m_labels.AlsoAt(along.empty() ? AlongFace(from, to, mid, {}, 0.0f, 8.0f, 12.0f) : along);
+                        }
+                        else
+                        {
+                            // Any other edge's name slides along its edge, away from the corners, rather than be
+                            // left out where the other body crowds its middle.
+                            m_labels.AlsoAt(AlongFace(from, to, mid, other, 12.0f, 8.0f, 16.0f));
                         }
                     }
                 }

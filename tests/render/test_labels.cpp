@@ -828,6 +828,43 @@ Box SceneInSight(const RecordingCanvas& canvas, const View& view)
     return sight;
 }
 
+// The distance from p to the segment ab.
+float ToSegment(ScreenPoint p, ScreenPoint a, ScreenPoint b)
+{
+    const float dx = b.x - a.x;
+    const float dy = b.y - a.y;
+    const float length2 = dx * dx + dy * dy;
+    const float t = length2 > 0.0f ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0f, 1.0f) : 0.0f;
+    return std::hypot(a.x + dx * t - p.x, a.y + dy * t - p.y);
+}
+
+// Whether a face's name with its middle at `middle` reads as the rival body's: nearer the rival's outline than the
+// face ab it names, less a lead of a few pixels and half its distance from the face (a name farther out is read by
+// what lies nearest around it). A rival's edge flush along the face (a box standing on the floor) is where the face
+// is, and does not count.
+bool ReadsAsRivals(ScreenPoint middle, ScreenPoint a, ScreenPoint b, const std::vector<ScreenPoint>& rival)
+{
+    const float own = ToSegment(middle, a, b);
+    const float length = std::hypot(b.x - a.x, b.y - a.y);
+    for (size_t i = 0; i < rival.size() && length > 0.0f; ++i)
+    {
+        const ScreenPoint& u = rival[i];
+        const ScreenPoint& v = rival[(i + 1) % rival.size()];
+        const auto off = [&](ScreenPoint p) {
+            return std::fabs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / length;
+        };
+        if (off(u) < 2.0f && off(v) < 2.0f)
+        {
+            continue;
+        }
+        if (ToSegment(middle, u, v) < own + std::max(4.0f, 0.5f * own))
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
 // Edge names on the wrong side of their edge: an edge's name "eN" whose middle lies behind the line of that edge,
 // where it names the face opposite (on a thin wall, the other face).
 std::vector<std::string> EdgeNamesBehind(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
@@ -887,7 +924,25 @@ std::vector<std::string> EdgeNamesBehind(const RecordingCanvas& canvas, const Sc
                 otherBody = otherBody || (static_cast<int>(b) != bodies[s] && !scene.bodies[b].IsConcave() &&
                                           InsideBody(scene.bodies[b], mirror));
             }
-            const bool noRoomOutside = otherBody ||
+            // Or the place outside reads as the other body of the pair's, nearer its outline than the face.
+            const Body& rival = scene.bodies[static_cast<size_t>(bodies[1 - s])];
+            const std::vector<ScreenPoint> face = Outline(body, view);
+            const bool rivals = ReadsAsRivals(mirrorOnScreen, face[static_cast<size_t>(edge)],
+                                              face[static_cast<size_t>(edge + 1) % face.size()], Outline(rival, view));
+            // Or other labels fill the place outside (the body's name, led out beside the face's normal).
+            const Box there{mirrorOnScreen.x - 0.5f * size.x - 3.0f, mirrorOnScreen.y - 0.5f * size.y - 3.0f,
+                            mirrorOnScreen.x + 0.5f * size.x + 3.0f, mirrorOnScreen.y + 0.5f * size.y + 3.0f};
+            bool taken = false;
+            for (const DrawCommand* o : canvas.InGroup("labels"))
+            {
+                if (o != c && o->kind == DrawCommand::Kind::Text)
+                {
+                    const ScreenPoint other = measure.MeasureText(o->text, o->style);
+                    taken = taken || (o->points[0].x < there.maxX && o->points[0].x + other.x > there.minX &&
+                                      o->points[0].y < there.maxY && o->points[0].y + other.y > there.minY);
+                }
+            }
+            const bool noRoomOutside = otherBody || rivals || taken ||
                 mirrorOnScreen.x < sight.minX || mirrorOnScreen.x > sight.maxX || mirrorOnScreen.y < sight.minY ||
                 mirrorOnScreen.y > sight.maxY || lineOutside;
             if (behind <= 0.0 && !(InsideBody(body, middle) && noRoomOutside))
@@ -1050,6 +1105,76 @@ std::vector<std::string> ReferenceFaceFar(const RecordingCanvas& canvas)
         {
             problems.push_back(Describe(*c) + " lies " + std::to_string(static_cast<int>(nearest)) +
                                " pixels from the contact points");
+        }
+    }
+    return problems;
+}
+
+bool OnLeader(const RecordingCanvas& canvas, const DrawCommand& text);
+
+// Names of a face ("e2", "reference face", "incident edge") that do not sit clearly nearer the face they name than
+// the other body of the pair (ReadsAsRivals): beside the other body's corner or over its edge the name reads as that
+// body's (the floor's "e2" at the plank's corner, "reference face" over the small box inside the large one, beside
+// the large one's face). Measured from the middle of the label; one on a leader line is joined to its face.
+std::vector<std::string> FaceNamesAstray(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
+                                         const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    const Body* bodies[2] = {&scene.bodies[static_cast<size_t>(study.bodyA)],
+                             &scene.bodies[static_cast<size_t>(study.bodyB)]};
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    const std::vector<ScreenPoint> outlines[2] = {Outline(*bodies[0], view), Outline(*bodies[1], view)};
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || OnLeader(canvas, *c))
+        {
+            continue;
+        }
+        const std::string& t = c->text;
+        const bool edge = t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+        const bool clip = t == "reference face" || t == "incident edge";
+        int s = -1;
+        for (int k = 0; k < 2; ++k)
+        {
+            s = (c->color >> 8) == (inks[k] >> 8) ? k : s;
+        }
+        if ((!edge && !clip) || s < 0)
+        {
+            continue;
+        }
+        ScreenPoint a{}, b{};
+        bool found = false;
+        if (edge)
+        {
+            const size_t n = static_cast<size_t>(std::stoi(t.substr(1)));
+            if (bodies[s]->shape.type != ShapeType::Polygon || n >= outlines[s].size())
+            {
+                continue;
+            }
+            a = outlines[s][n];
+            b = outlines[s][(n + 1) % outlines[s].size()];
+            found = true;
+        }
+        for (const DrawCommand* d : canvas.InGroup("contacts"))
+        {
+            if (clip && !found && d->kind == DrawCommand::Kind::Segment && d->thickness >= 4.5f && d->color == c->color)
+            {
+                a = d->points[0];
+                b = d->points[1];
+                found = true;
+            }
+        }
+        if (!found)
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(t, c->style);
+        const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+        if (ReadsAsRivals(middle, a, b, outlines[1 - s]))
+        {
+            problems.push_back(Describe(*c) + " lies " + std::to_string(static_cast<int>(ToSegment(middle, a, b))) +
+                               " pixels from the face it names, as near " + bodies[1 - s]->name + "'s outline");
         }
     }
     return problems;
@@ -1472,6 +1597,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
             problems.push_back(std::move(p));
         }
         for (std::string& p : ReferenceFaceFar(canvas))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : FaceNamesAstray(canvas, scene, setup.study, setup.figure.view))
         {
             problems.push_back(std::move(p));
         }
