@@ -42,6 +42,11 @@ bool OutrunsBody(const WorldSettings& settings, const RigidBody& body, Vec2 v, d
            settings.sweepFraction * body.innerRadius;
 }
 
+bool TurnsBeyondContacts(const WorldSettings& settings, const RigidBody& body, double w, double span)
+{
+    return body.turnRadius > 0.0 && std::fabs(w) * span > settings.speculativeTurn;
+}
+
 bool OutrunsPair(const WorldSettings& settings, const RigidBody& a, Vec2 va, double wa, const RigidBody& b, Vec2 vb,
                  double wb, double span)
 {
@@ -138,7 +143,7 @@ bool TimeOfImpactStage::IsFast(int i) const
 
 bool TimeOfImpactStage::TurnsFast(int i) const
 {
-    return m_world.bodies[i].turnRadius > 0.0 && std::fabs(m_motion[i].w) * m_dt > m_world.settings.speculativeTurn;
+    return TurnsBeyondContacts(m_world.settings, m_world.bodies[i], m_motion[i].w, m_dt);
 }
 
 Aabb TimeOfImpactStage::Reach(int i, double speed) const

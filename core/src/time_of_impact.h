@@ -17,6 +17,11 @@ namespace satviz::detail
 /// than sweepFraction of its inner radius within `span` time units.
 bool OutrunsBody(const WorldSettings& settings, const RigidBody& body, Vec2 v, double w, double span);
 
+/// The contacts' rule for one body (WorldSettings::speculativeTurn): turning at w, it turns farther within `span`
+/// than a contact found at the start of the step follows (to first order), so the sweep holds its pairs, and the
+/// position passes measure its overlaps afresh. A circle turning about its centre moves no point of its outline.
+bool TurnsBeyondContacts(const WorldSettings& settings, const RigidBody& body, double w, double span);
+
 /// The sweep's rule for a pair: a point of one body can travel, relative to the other, more than sweepFraction of
 /// the smaller inner radius of the pair's dynamic bodies within `span`. Bodies that move together (a pile falling
 /// as one) do not outrun each other. A body that does not move has velocities 0.

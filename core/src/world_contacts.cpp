@@ -192,8 +192,7 @@ void Stepper::FindContacts()
                 const double cap = settings.speculativeReach * body.outerRadius;
                 // A body that turns fast is left to the sweep: a contact found at the start of the step follows a
                 // turn only to first order.
-                const bool turnsFast =
-                    body.turnRadius > 0.0 && std::fabs(body.angularVelocity) * dt > settings.speculativeTurn;
+                const bool turnsFast = TurnsBeyondContacts(settings, body, body.angularVelocity, dt);
                 bullets[static_cast<size_t>(i)] = turnsFast || move > cap ? 1 : 0;
                 if (!turnsFast)
                 {

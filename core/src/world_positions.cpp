@@ -160,6 +160,7 @@ void Stepper::CorrectPositions()
     // a full turn in a step would otherwise be pushed along a normal turned any which way).
     std::vector<Rot> turn(n);
     std::vector<uint8_t> turns(n); // turning moves the outline: not a circle about its centre
+    std::vector<uint8_t> spinning(n); // turned farther in the move than a contact's anchors follow
     for (int i = 0; i < n; ++i)
     {
         angle[i] = bodies[i].angle;
@@ -167,6 +168,7 @@ void Stepper::CorrectPositions()
         c[i] = bodies[i].position + Rotate(q, bodies[i].localCenter);
         turns[i] = bodies[i].turnRadius > 0.0 ? 1 : 0;
         turn[i] = turns[i] ? InvMulRot(xfs[i].q, q) : Rot{};
+        spinning[i] = TurnsBeyondContacts(settings, bodies[i], solverBodies[i].w, dt) ? 1 : 0;
     }
     if (settings.positionIterations > 0)
     {
@@ -207,52 +209,6 @@ void Stepper::CorrectPositions()
         if (turns[b])
         {
             turn[b] = TurnBy(turn[b], turnB);
-        }
-    };
-    // One contact's points moved apart by `factor` of their overlap beyond the slop.
-    const auto correct = [&](const SolverContact& sc, double factor) {
-        const int a = sc.a, b = sc.b;
-        // A body that took a hit went where the sweep sent it, which may be far from where this contact was
-        // found: the contact's anchors and normal no longer describe its surroundings (measured from them, a
-        // ball that crossed the room would seem deep in the wall it started beside, and be pushed through the
-        // floor). The sweep leaves its bodies apart; the next step finds their contacts afresh.
-        if (hit[static_cast<size_t>(a)] || hit[static_cast<size_t>(b)])
-        {
-            return;
-        }
-        const SolverBody& sa = solverBodies[a];
-        const SolverBody& sb = solverBodies[b];
-        // The normal turns with the body that holds it; between two circles it joins their centres.
-        Vec2 n0 = Rotate(turn[sc.normalBody == 1 ? b : a], sc.normal);
-        if (!turns[a] && !turns[b])
-        {
-            const Vec2 d = c[b] - c[a];
-            const double length = std::sqrt(LengthSquared(d));
-            if (length > 0.0)
-            {
-                n0 = (1.0 / length) * d;
-            }
-        }
-        for (int k = 0; k < sc.count; ++k)
-        {
-            // Each body's anchor is the point of its own surface: the contact point lies halfway between them, a
-            // half separation along the normal from each. Turned with its body, an anchor off the surface would
-            // swing by the turn times that offset: a body turning towards the floor across a wide speculative gap
-            // would seem to reach it, and be lifted.
-            const detail::SolverPoint& p = sc.points[k];
-            const Vec2 half = (0.5 * p.separation) * sc.normal;
-            const Vec2 rA = Rotate(turn[a], p.rA - half);
-            const Vec2 rB = Rotate(turn[b], p.rB + half);
-            const double sep = Dot((c[b] + rB) - (c[a] + rA), n0);
-            // A bounce that carries the point out of this much overlap within the step is left to do so: the
-            // separating speed the velocity passes left at the point, not the one the restitution asked for,
-            // which other contacts may have taken back.
-            const double C = std::max(-settings.maxCorrection, std::min(0.0, factor * (sep + settings.linearSlop)));
-            if (p.bounce > 0.0 && Dot(detail::RelativeVelocity(sa, sb, p.rA, p.rB), sc.normal) * dt >= -C)
-            {
-                continue;
-            }
-            push(a, b, n0, rA, rB, sep, factor);
         }
     };
     // A guard's pair may have moved far against each other: anchors found at the start of the step say nothing of
@@ -398,6 +354,63 @@ void Stepper::CorrectPositions()
         {
             const Vec2 point = m.contacts[k].point;
             push(a, b, m.normal, point - c[a], point - c[b], m.contacts[k].separation, factor);
+        }
+    };
+    // One contact's points moved apart by `factor` of their overlap beyond the slop.
+    const auto correct = [&](const SolverContact& sc, double factor) {
+        const int a = sc.a, b = sc.b;
+        // A body that took a hit went where the sweep sent it, which may be far from where this contact was
+        // found: the contact's anchors and normal no longer describe its surroundings (measured from them, a
+        // ball that crossed the room would seem deep in the wall it started beside, and be pushed through the
+        // floor). The sweep leaves its bodies apart; the next step finds their contacts afresh.
+        if (hit[static_cast<size_t>(a)] || hit[static_cast<size_t>(b)])
+        {
+            return;
+        }
+        // A position pass moves a body only out of an overlap its shapes have now: any other push lifts it with no
+        // cause, energy from nowhere. The anchors and the normal follow a body's turn to first order only: for a
+        // body that turned farther in the step than a contact follows (TurnsBeyondContacts: the sweep, not this
+        // contact, held the pair), they measure an overlap that is not there (a spinning box's face, turned half a
+        // radian about its centre, still reaching a post its outline has left), and each push turns that face
+        // further in. Such a pair is measured afresh at the present poses, as a guard is.
+        if (spinning[static_cast<size_t>(a)] || spinning[static_cast<size_t>(b)])
+        {
+            guard(sc, factor, false);
+            return;
+        }
+        const SolverBody& sa = solverBodies[a];
+        const SolverBody& sb = solverBodies[b];
+        // The normal turns with the body that holds it; between two circles it joins their centres.
+        Vec2 n0 = Rotate(turn[sc.normalBody == 1 ? b : a], sc.normal);
+        if (!turns[a] && !turns[b])
+        {
+            const Vec2 d = c[b] - c[a];
+            const double length = std::sqrt(LengthSquared(d));
+            if (length > 0.0)
+            {
+                n0 = (1.0 / length) * d;
+            }
+        }
+        for (int k = 0; k < sc.count; ++k)
+        {
+            // Each body's anchor is the point of its own surface: the contact point lies halfway between them, a
+            // half separation along the normal from each. Turned with its body, an anchor off the surface would
+            // swing by the turn times that offset: a body turning towards the floor across a wide speculative gap
+            // would seem to reach it, and be lifted.
+            const detail::SolverPoint& p = sc.points[k];
+            const Vec2 half = (0.5 * p.separation) * sc.normal;
+            const Vec2 rA = Rotate(turn[a], p.rA - half);
+            const Vec2 rB = Rotate(turn[b], p.rB + half);
+            const double sep = Dot((c[b] + rB) - (c[a] + rA), n0);
+            // A bounce that carries the point out of this much overlap within the step is left to do so: the
+            // separating speed the velocity passes left at the point, not the one the restitution asked for,
+            // which other contacts may have taken back.
+            const double C = std::max(-settings.maxCorrection, std::min(0.0, factor * (sep + settings.linearSlop)));
+            if (p.bounce > 0.0 && Dot(detail::RelativeVelocity(sa, sb, p.rA, p.rB), sc.normal) * dt >= -C)
+            {
+                continue;
+            }
+            push(a, b, n0, rA, rB, sep, factor);
         }
     };
     const std::vector<Vec2> afterMove = c; // where the move left the centres, before the passes
