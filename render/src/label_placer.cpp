@@ -260,6 +260,37 @@ void LabelPlacer::ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, Lab
     m_lines.push_back({a, b, thickness, from});
 }
 
+void LabelPlacer::ReserveShaft(ScreenPoint a, ScreenPoint b, float thickness)
+{
+    ReserveLine(a, b, thickness);
+    m_shafts.push_back({a, b});
+}
+
+bool LabelPlacer::ShaftBetween(const Label& label, const ScreenRect& rect, ScreenPoint at) const
+{
+    if (label.rank > LabelRank::Named)
+    {
+        return false;
+    }
+    const ScreenPoint middle{0.5f * (rect.minX + rect.maxX), 0.5f * (rect.minY + rect.maxY)};
+    // What it names: its corner, or the point of its face nearest it.
+    ScreenPoint to = at;
+    if (label.face.size() == 2)
+    {
+        const ScreenPoint a = label.face[0];
+        const ScreenPoint b = label.face[1];
+        const float dx = b.x - a.x;
+        const float dy = b.y - a.y;
+        const float length2 = dx * dx + dy * dy;
+        const float t =
+            length2 > 0.0f ? std::clamp(((middle.x - a.x) * dx + (middle.y - a.y) * dy) / length2, 0.0f, 1.0f) : 0.0f;
+        to = {a.x + dx * t, a.y + dy * t};
+    }
+    return std::any_of(m_shafts.begin(), m_shafts.end(), [&](const std::pair<ScreenPoint, ScreenPoint>& shaft) {
+        return Cross(middle, to, shaft.first, shaft.second);
+    });
+}
+
 void LabelPlacer::ReserveFaintLine(ScreenPoint a, ScreenPoint b, float thickness)
 {
     m_lines.push_back({a, b, thickness, LabelRank::Vertex, true});
@@ -708,7 +739,7 @@ void LabelPlacer::Flush(Color halo)
                     const ScreenRect rect = Around(at, size, start + c.turn * 0.25 * kPi, reach);
                     if (Inside(rect) && Free(rect, pass <= 0 ? kLabelSpacing : 0.0f, label->rank, pass < 0) &&
                         Away(*label, rect, at) && NearestOwn(*label, rect, at) &&
-                        (faceFree || NearestFace(*label, rect)) &&
+                        (faceFree || NearestFace(*label, rect)) && !ShaftBetween(*label, rect, at) &&
                         OnItsSide(label->onSide, at, label->dx, label->dy, rect))
                     {
                         chosen = rect;

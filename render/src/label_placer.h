@@ -59,6 +59,9 @@ class LabelPlacer
     /// would hide (a projection bar, a marked face). With `from` above LabelRank::Vertex only labels of that rank
     /// and above keep off it: a vertex number or an edge name may still sit on it rather than be left out.
     void ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, LabelRank from = LabelRank::Vertex);
+    /// Marks an arrow's shaft: as any line no label covers it, and no vertex number or edge name has it between
+    /// itself and what it names, where the arrow cuts the number off from its corner and it reads as the arrow's.
+    void ReserveShaft(ScreenPoint a, ScreenPoint b, float thickness);
     /// Marks a faint line (a dashed projection line, a ghost's outline, drawn translucent): a vertex number or an
     /// edge name keeps off it, where it would read as the number of the line's end; a larger label only where the
     /// room allows, as the line shows through its halo's gaps and is not read as part of it.
@@ -168,6 +171,7 @@ class LabelPlacer
     bool Inside(const ScreenRect& rect) const;
     bool NearestOwn(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
     static bool NearestFace(const Label& label, const ScreenRect& rect);
+    bool ShaftBetween(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
     Canvas& m_canvas;
     float m_width;
     float m_height;
@@ -176,6 +180,7 @@ class LabelPlacer
     std::vector<ScreenRect> m_bands;
     std::vector<Line> m_lines;
     std::vector<std::vector<ScreenPoint>> m_shapes;
+    std::vector<std::pair<ScreenPoint, ScreenPoint>> m_shafts;
     std::vector<Label> m_labels;
     std::vector<Mark> m_marks;
     std::vector<Color> m_takenColors; // the colour of each label placed, in m_taken's order from m_reserved on

@@ -779,7 +779,7 @@ class Painter
     {
         const ScreenRect tip = Arrow(m_canvas, a, b, color, thickness, head);
         m_labels.Reserve(tip);
-        m_labels.ReserveLine(a, b, thickness + 2.0f);
+        m_labels.ReserveShaft(a, b, thickness + 2.0f);
         m_heads.push_back(tip);
     }
 

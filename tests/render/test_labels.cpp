@@ -1180,6 +1180,83 @@ std::vector<std::string> FaceNamesAstray(const RecordingCanvas& canvas, const Sc
     return problems;
 }
 
+// Vertex numbers and edge names with an arrow's shaft between them and what they name: the arrow cuts the number
+// off from its corner (A's "2" above the velocity arrow that runs past A's corner), and it reads as the arrow's.
+// Measured from the middle of the label to its corner, or to the nearest point of its edge; a label on a leader
+// line is joined to what it names.
+std::vector<std::string> ArrowsBetween(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
+                                       const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    std::vector<const DrawCommand*> shafts;
+    const std::vector<DrawCommand>& commands = canvas.commands;
+    for (size_t i = 0; i + 1 < commands.size(); ++i)
+    {
+        if (commands[i].kind == DrawCommand::Kind::Segment && commands[i].group != "labels" &&
+            commands[i].group != "legend" && IsArrowHead(commands[i + 1]))
+        {
+            shafts.push_back(&commands[i]);
+        }
+    }
+    const Body* bodies[2] = {&scene.bodies[static_cast<size_t>(study.bodyA)],
+                             &scene.bodies[static_cast<size_t>(study.bodyB)]};
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    const std::vector<ScreenPoint> outlines[2] = {Outline(*bodies[0], view), Outline(*bodies[1], view)};
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || OnLeader(canvas, *c))
+        {
+            continue;
+        }
+        const std::string& t = c->text;
+        const bool digits = !t.empty() && t.size() <= 3 && t.find_first_not_of("0123456789") == std::string::npos;
+        const bool edge = t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+        if (!digits && !edge)
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(t, c->style);
+        const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+        for (int s = 0; s < 2; ++s)
+        {
+            const size_t n = static_cast<size_t>(std::stoi(edge ? t.substr(1) : t));
+            if ((c->color >> 8) != (inks[s] >> 8) || bodies[s]->shape.type != ShapeType::Polygon ||
+                n >= outlines[s].size())
+            {
+                continue;
+            }
+            ScreenPoint to = outlines[s][n];
+            if (edge)
+            {
+                const ScreenPoint a = outlines[s][n];
+                const ScreenPoint b = outlines[s][(n + 1) % outlines[s].size()];
+                const float dx = b.x - a.x;
+                const float dy = b.y - a.y;
+                const float length2 = dx * dx + dy * dy;
+                const float u = length2 > 0.0f
+                                    ? std::clamp(((middle.x - a.x) * dx + (middle.y - a.y) * dy) / length2, 0.0f, 1.0f)
+                                    : 0.0f;
+                to = {a.x + dx * u, a.y + dy * u};
+            }
+            auto side = [](ScreenPoint p, ScreenPoint q, ScreenPoint r) {
+                return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
+            };
+            for (const DrawCommand* d : shafts)
+            {
+                const ScreenPoint u = d->points[0], v = d->points[1];
+                if (side(middle, to, u) * side(middle, to, v) < 0.0f && side(u, v, middle) * side(u, v, to) < 0.0f)
+                {
+                    problems.push_back(Describe(*c) + " has the arrow " + Describe(*d) +
+                                       " between it and what it names");
+                    break;
+                }
+            }
+        }
+    }
+    return problems;
+}
+
 // Whether the sentences name `number` in a list of a body's edges ("box's edges 0 and 2", "B's edges 0, 1 and 3").
 bool InEdgeList(const std::string& sentences, const std::string& name, const std::string& number)
 {
@@ -1601,6 +1678,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
             problems.push_back(std::move(p));
         }
         for (std::string& p : FaceNamesAstray(canvas, scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : ArrowsBetween(canvas, scene, setup.study, setup.figure.view))
         {
             problems.push_back(std::move(p));
         }
