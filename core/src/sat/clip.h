@@ -42,6 +42,29 @@ bool ReferenceFaceIsB(S separationA, S separationB)
     return separationB > separationA;
 }
 
+/// The reference face of a pair: the polygon that holds it (B's when `flip`), that polygon's transform, the face and
+/// its separation.
+template <typename S>
+struct ReferenceFace
+{
+    bool flip;                  ///< B holds the reference face (ReferenceFaceIsB)
+    const PolygonT<S>& polygon; ///< the polygon that holds it
+    const TransformT<S>& xf;    ///< that polygon's transform
+    int face;                   ///< the face, of `polygon`
+    S separation;               ///< its separation, the largest of that polygon's faces
+};
+
+/// The reference face of a pair from each polygon's face of largest separation (A's `faceA` with `separationA`, B's
+/// `faceB` with `separationB`), by ReferenceFaceIsB: every choice on it a mask, not a branch.
+template <typename S>
+ReferenceFace<S> ChooseReferenceFace(const PolygonT<S>& a, const TransformT<S>& xfA, int faceA, S separationA,
+                                     const PolygonT<S>& b, const TransformT<S>& xfB, int faceB, S separationB)
+{
+    const bool flip = ReferenceFaceIsB(separationA, separationB);
+    return {flip, SelectRef(flip, b, a), SelectRef(flip, xfB, xfA), Select(flip, faceB, faceA),
+            Select(flip, separationB, separationA)};
+}
+
 /// Contact points from clipping, in the reference polygon's frame, with what the trace shows of the clipping.
 /// The arrays are valid up to their counts and left uninitialised beyond: zeroing the whole struct cost a block
 /// store (rep stos) per manifold, about a tenth of Collide's time for 8-gons.
@@ -316,21 +339,19 @@ ContactPointT<S> WorldContact(const ClipResult<S>& clip, int k, const TransformT
             Select(real, clip.contacts[k].separation, S(0))};
 }
 
-/// The manifold of two overlapping polygons from their reference face, face `face` of `ref` (B's when `flip`) with
-/// the separation `separation` (<= 0): the depth and the MTV's direction along the face's normal, from A to B; no
-/// contact points and no incident edge.
+/// The manifold of two overlapping polygons from their reference face `ref`, whose separation is <= 0: the depth and
+/// the MTV's direction along the face's normal, from A to B; no contact points and no incident edge.
 template <typename S>
-ManifoldT<S> ReferenceFaceManifold(const PolygonT<S>& ref, const TransformT<S>& xfRef, int face, bool flip,
-                                   S separation)
+ManifoldT<S> ReferenceFaceManifold(const ReferenceFace<S>& ref)
 {
-    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(face));
+    const Vec2T<S> worldNormal = Rotate(ref.xf.q, ref.polygon.Normal(ref.face));
     return {true,
-            -separation,
+            -ref.separation,
             S(0),
-            Select(flip, -worldNormal, worldNormal),
+            Select(ref.flip, -worldNormal, worldNormal),
             {},
             0,
-            {AxisKind::FaceNormal, Select(flip, 1, 0), face},
+            {AxisKind::FaceNormal, Select(ref.flip, 1, 0), ref.face},
             -1};
 }
 
@@ -347,11 +368,10 @@ void TakeContacts(ManifoldT<S>& manifold, const ClipResult<S>& clip, const Trans
 
 /// The same with the contacts of `clip` (reference frame) in world space and its incident edge.
 template <typename S>
-ManifoldT<S> ReferenceFaceManifold(const PolygonT<S>& ref, const TransformT<S>& xfRef, int face, bool flip,
-                                   S separation, const ClipResult<S>& clip)
+ManifoldT<S> ReferenceFaceManifold(const ReferenceFace<S>& ref, const ClipResult<S>& clip)
 {
-    ManifoldT<S> manifold = ReferenceFaceManifold(ref, xfRef, face, flip, separation);
-    TakeContacts(manifold, clip, xfRef);
+    ManifoldT<S> manifold = ReferenceFaceManifold(ref);
+    TakeContacts(manifold, clip, ref.xf);
     return manifold;
 }
 

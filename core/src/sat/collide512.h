@@ -90,21 +90,18 @@ ManifoldFromSeparations512(const PolygonT<double>& a, const TransformT<double>& 
     const double largestA = LargestSeparation(a.Count(), faceA, sepA);
     const double largestB = LargestSeparation(b.Count(), faceB, sepB);
     // Reference face (a skipped duplicate of A's face keeps A's).
-    const bool flip = ReferenceFaceIsB(largestA, largestB);
-    const PolygonT<double>& ref = SelectRef(flip, b, a);
-    const TransformT<double>& xfRef = SelectRef(flip, xfB, xfA);
-    const int face = Select(flip, faceB, faceA);
-    const double separation = Select(flip, largestB, largestA);
+    const ReferenceFace<double> ref = ChooseReferenceFace(a, xfA, faceA, largestA, b, xfB, faceB, largestB);
     if constexpr (!kContacts)
     {
-        return ReferenceFaceManifold(ref, xfRef, face, flip, separation);
+        return ReferenceFaceManifold(ref);
     }
     // The incident polygon for the clipping: its vertices as the face queries mapped them, from the registers.
-    const int flipBits = Select(flip, 0xFF, 0);
-    const IncidentPolygon<double> inc = MappedIncidentPolygon(SelectRef(flip, a, b), Select(flip, aInB, bInA),
-                                                              m.bx.Blend(flipBits, m.ax), m.by.Blend(flipBits, m.ay));
-    const ClipResult<double> clip = ClipIncidentEdge<true>(ref, face, inc, -1, 0.0);
-    return ReferenceFaceManifold(ref, xfRef, face, flip, separation, clip);
+    const int flipBits = Select(ref.flip, 0xFF, 0);
+    const IncidentPolygon<double> inc =
+        MappedIncidentPolygon(SelectRef(ref.flip, a, b), Select(ref.flip, aInB, bInA), m.bx.Blend(flipBits, m.ax),
+                              m.by.Blend(flipBits, m.ay));
+    const ClipResult<double> clip = ClipIncidentEdge<true>(ref.polygon, ref.face, inc, -1, 0.0);
+    return ReferenceFaceManifold(ref, clip);
 }
 
 /// Collide of two polygons of at most 8 vertices on AVX-512 (CollidePolygons, step 0). The face queries of A and B

@@ -244,19 +244,19 @@ ManifoldT<S> CollidePolygons(const PolygonT<S>& a, const TransformT<S>& xfA, con
     }
 
     // Reference face (a skipped duplicate of A's face keeps A's).
-    const bool flip = ReferenceFaceIsB(queryA.separation, queryB.separation);
-    const PolygonT<S>& ref = SelectRef(flip, b, a);
-    const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
-    const TransformT<S>& xfRef = SelectRef(flip, xfB, xfA);
-    const FaceQuery<S>& query = SelectRef(flip, queryB, queryA);
+    const ReferenceFace<S> ref =
+        ChooseReferenceFace(a, xfA, queryA.face, queryA.separation, b, xfB, queryB.face, queryB.separation);
+    const IncidentPolygon<S>& inc = SelectRef(ref.flip, incA, incB);
+    const int support = Select(ref.flip, queryB.support, queryA.support);
 
     const ClipResult<S> clip =
-        ClipIncidentEdge<Tracer::kWide>(ref, query.face, inc, inc.scan ? -1 : query.support, S(0));
-    const ManifoldT<S> manifold = ReferenceFaceManifold(ref, xfRef, query.face, flip, query.separation, clip);
+        ClipIncidentEdge<Tracer::kWide>(ref.polygon, ref.face, inc, inc.scan ? -1 : support, S(0));
+    const ManifoldT<S> manifold = ReferenceFaceManifold(ref, clip);
 
     if constexpr (Tracer::kEnabled)
     {
-        tracer.Clip(ClipTraceOf(clip, manifold.axis, ref, xfRef, inc.polygon, flip ? xfA : xfB, flip ? 0 : 1));
+        tracer.Clip(ClipTraceOf(clip, manifold.axis, ref.polygon, ref.xf, inc.polygon, ref.flip ? xfA : xfB,
+                                ref.flip ? 0 : 1));
         tracer.Finish(TraceExit::AllAxesOverlap, manifold);
     }
     return manifold;

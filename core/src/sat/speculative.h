@@ -66,23 +66,22 @@ ManifoldT<S> SpeculativePolygons(const PolygonT<S>& a, const TransformT<S>& xfA,
         return manifold;
     }
     // Reference face (a skipped duplicate of A's face keeps A's).
-    const bool flip = ReferenceFaceIsB(queryA.separation, queryB.separation);
-    const PolygonT<S>& ref = SelectRef(flip, b, a);
-    const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
-    const TransformT<S>& xfRef = SelectRef(flip, xfB, xfA);
-    const FaceQuery<S>& query = SelectRef(flip, queryB, queryA);
-    ClipResult<S> clip = ClipIncidentEdge(ref, query.face, inc, inc.scan ? -1 : query.support, margin);
+    const ReferenceFace<S> ref =
+        ChooseReferenceFace(a, xfA, queryA.face, queryA.separation, b, xfB, queryB.face, queryB.separation);
+    const IncidentPolygon<S>& inc = SelectRef(ref.flip, incA, incB);
+    const int support = Select(ref.flip, queryB.support, queryA.support);
+    ClipResult<S> clip = ClipIncidentEdge(ref.polygon, ref.face, inc, inc.scan ? -1 : support, margin);
     if (clip.fallback && clip.contacts[0].separation > margin)
     {
         clip.contactCount = 0; // the deepest vertex is beyond the margin too
     }
-    const Vec2T<S> worldNormal = Rotate(xfRef.q, ref.Normal(query.face));
-    manifold.overlap = query.separation <= S(0);
-    manifold.depth = manifold.overlap ? -query.separation : S(0);
-    manifold.gap = manifold.overlap ? S(0) : query.separation;
-    manifold.normal = Select(flip, -worldNormal, worldNormal);
-    manifold.axis = {AxisKind::FaceNormal, Select(flip, 1, 0), query.face};
-    TakeContacts(manifold, clip, xfRef);
+    const Vec2T<S> worldNormal = Rotate(ref.xf.q, ref.polygon.Normal(ref.face));
+    manifold.overlap = ref.separation <= S(0);
+    manifold.depth = manifold.overlap ? -ref.separation : S(0);
+    manifold.gap = manifold.overlap ? S(0) : ref.separation;
+    manifold.normal = Select(ref.flip, -worldNormal, worldNormal);
+    manifold.axis = {AxisKind::FaceNormal, Select(ref.flip, 1, 0), ref.face};
+    TakeContacts(manifold, clip, ref.xf);
     return manifold;
 }
 

@@ -168,18 +168,14 @@ ManifoldT<S> InterpenetratingManifold(const PolygonT<S>& a, const TransformT<S>&
     int faceB = 0;
     const S largestA = largest(keptA, 0, a.Count(), faceA);
     const S largestB = largest(keptB, skip, b.Count(), faceB);
-    const bool flip = ReferenceFaceIsB(largestA, largestB);
-    const PolygonT<S>& ref = SelectRef(flip, b, a);
-    const IncidentPolygon<S>& inc = SelectRef(flip, incA, incB);
-    const TransformT<S>& xfRef = SelectRef(flip, xfB, xfA);
-    const int face = Select(flip, faceB, faceA);
-    const S separation = Select(flip, largestB, largestA);
+    const ReferenceFace<S> ref = ChooseReferenceFace(a, xfA, faceA, largestA, b, xfB, faceB, largestB);
     if constexpr (!kContacts)
     {
-        return ReferenceFaceManifold(ref, xfRef, face, flip, separation);
+        return ReferenceFaceManifold(ref);
     }
-    const ClipResult<S> clip = ClipIncidentEdge<kWide>(ref, face, inc, -1, S(0));
-    return ReferenceFaceManifold(ref, xfRef, face, flip, separation, clip);
+    const IncidentPolygon<S>& inc = SelectRef(ref.flip, incA, incB);
+    const ClipResult<S> clip = ClipIncidentEdge<kWide>(ref.polygon, ref.face, inc, -1, S(0));
+    return ReferenceFaceManifold(ref, clip);
 }
 
 // The result of a hit (SweepPolygons, step 5), written into `result`: the time of impact, the axis of the latest
