@@ -185,6 +185,25 @@ void PlacePair(const ShapeT<S>& a, const TransformT<S>& xfA, const ShapeT<S>& b,
     pb.xf = InvMulTransforms(xfA, xfB);
 }
 
+// Both shapes' projection intervals on the axis u: [minA, maxA] and [minB, maxB].
+template <typename S>
+struct PairIntervals
+{
+    S minA{};
+    S maxA{};
+    S minB{};
+    S maxB{};
+};
+
+template <typename S>
+PairIntervals<S> ProjectPair(const Placed<S>& pa, const Placed<S>& pb, Vec2T<S> u)
+{
+    PairIntervals<S> p;
+    pa.Project(u, p.minA, p.maxA);
+    pb.Project(u, p.minB, p.maxB);
+    return p;
+}
+
 // The trace's copy of an axis: world direction and world intervals (A's frame shifted by A's position).
 template <typename Axis, typename S>
 void ToWorld(const Candidate<S>& c, const TransformT<S>& xfA, S minA, S maxA, S minB, S maxB, Axis& out)
@@ -276,12 +295,7 @@ TextbookResultT<S> TextbookCollideWith(const ShapeT<S>& a, const TransformT<S>& 
     for (size_t k = 0; k < axes.size(); ++k)
     {
         const Vec2T<S> u = axes[k].u;
-        S minA{};
-        S maxA{};
-        S minB{};
-        S maxB{};
-        pa.Project(u, minA, maxA);
-        pb.Project(u, minB, maxB);
+        const auto [minA, maxA, minB, maxB] = ProjectPair(pa, pb, u);
         result.axesTested = static_cast<int>(k) + 1;
 
         const S gapAlong = minB - maxA;   // B beyond A along u
@@ -403,12 +417,7 @@ TextbookSweepResultT<S> TextbookSweepWith(const ShapeT<S>& a, const TransformT<S
     for (size_t k = 0; k < axes.size(); ++k)
     {
         const Vec2T<S> u = axes[k].u;
-        S minA{};
-        S maxA{};
-        S minB{};
-        S maxB{};
-        pa.Project(u, minA, maxA);
-        pb.Project(u, minB, maxB);
+        const auto [minA, maxA, minB, maxB] = ProjectPair(pa, pb, u);
         const S rawRate = Dot(u, v);
         const S rate = std::abs(rawRate) > still ? rawRate : S(0);
         S entry{};
