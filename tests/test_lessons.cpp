@@ -12,6 +12,8 @@
 #include <satviz/query_json.h>
 #include <satviz/scene.h>
 
+#include "support/run_tool.h"
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -23,8 +25,6 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 using namespace satviz;
 namespace fs = std::filesystem;
@@ -217,24 +217,14 @@ nlohmann::json SimulatedState(const std::string& scene, int steps)
     {
         return found->second;
     }
-    const fs::path out = fs::temp_directory_path() / ("satviz-lessons-sim-" + std::to_string(::getpid()) + ".out");
-    const std::string command =
-        std::string(SATVIZ_SIM_EXE) + " " + (kTutorials / "scenes" / (scene + ".json")).string() + " --steps " +
-        std::to_string(steps) + " --every " + std::to_string(steps) + " --counts > " + out.string() + " 2> /dev/null";
-    const int status = std::system(command.c_str());
-    std::string last;
-    {
-        std::ifstream in(out);
-        for (std::string line; std::getline(in, line);)
-        {
-            last = line;
-        }
-    }
-    fs::remove(out);
+    const testing::ToolRun run =
+        testing::RunTool(std::string(SATVIZ_SIM_EXE) + " " + (kTutorials / "scenes" / (scene + ".json")).string() +
+                         " --steps " + std::to_string(steps) + " --every " + std::to_string(steps) + " --counts");
+    const std::vector<std::string> lines = testing::SplitLines(run.out);
     nlohmann::json state;
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && !last.empty())
+    if (run.exitCode == 0 && !lines.empty() && !lines.back().empty())
     {
-        state = nlohmann::json::parse(last);
+        state = nlohmann::json::parse(lines.back());
     }
     done.emplace(key, state);
     return state;

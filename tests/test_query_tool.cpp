@@ -11,6 +11,7 @@
 
 #include "support/random_concave.h"
 #include "support/random_shapes.h"
+#include "support/run_tool.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -22,7 +23,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
 #include <unistd.h>
 
 using namespace satviz;
@@ -36,17 +36,6 @@ struct Run
     std::vector<std::string> out;
     std::string err;
 };
-
-std::vector<std::string> Lines(const std::string& path)
-{
-    std::ifstream in(path);
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);)
-    {
-        lines.push_back(line);
-    }
-    return lines;
-}
 
 /// The files these tests write live in a directory of their own, removed at exit, never in the directory the tests
 /// were started from.
@@ -74,16 +63,8 @@ const ScratchDirectory kScratch;
 
 Run Query(const std::string& arguments)
 {
-    const std::string command = std::string(SATVIZ_QUERY_EXE) + " " + arguments + " > query.out 2> query.err";
-    const int status = std::system(command.c_str());
-    Run run;
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = Lines("query.out");
-    std::ifstream err("query.err");
-    std::ostringstream text;
-    text << err.rdbuf();
-    run.err = text.str();
-    return run;
+    const testing::ToolRun run = testing::RunTool(std::string(SATVIZ_QUERY_EXE) + " " + arguments);
+    return {run.exitCode, testing::SplitLines(run.out), run.err};
 }
 
 void Write(const std::string& path, const std::string& text)

@@ -7,6 +7,8 @@
 #include <satviz/scene_world.h>
 #include <satviz/world.h>
 
+#include "support/run_tool.h"
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -14,7 +16,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
 #include <unistd.h>
 
 using namespace satviz;
@@ -58,19 +59,8 @@ std::string ReadAll(const std::string& path)
 
 SimRun Sim(const std::string& arguments)
 {
-    const std::string out = kSim / "sim.out";
-    const std::string err = kSim / "sim.err";
-    const std::string command = std::string(SATVIZ_SIM_EXE) + " " + arguments + " > " + out + " 2> " + err;
-    const int status = std::system(command.c_str());
-    SimRun run;
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::istringstream lines(ReadAll(out));
-    for (std::string line; std::getline(lines, line);)
-    {
-        run.out.push_back(line);
-    }
-    run.err = ReadAll(err);
-    return run;
+    const testing::ToolRun run = testing::RunTool(std::string(SATVIZ_SIM_EXE) + " " + arguments);
+    return {run.exitCode, testing::SplitLines(run.out), run.err};
 }
 
 void WriteFile(const std::string& path, const std::string& text)

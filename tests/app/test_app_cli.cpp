@@ -3,14 +3,14 @@
 // options as docs/programs.md lists them. Runs the real program without a display, so a check that came too late would
 // fail at the window instead.
 
+#include "support/run_tool.h"
+
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
@@ -27,30 +27,12 @@ struct Run
 };
 
 /// Runs satviz with `arguments` and no display, found on the PATH as `satviz` (so that its usage line names it
-/// so) in `dir`; its output goes to files of this process, read and removed.
+/// so) in `dir`.
 Run App(const std::string& arguments, const fs::path& dir = fs::path(SATVIZ_APP_EXE).parent_path())
 {
-    const fs::path out = fs::temp_directory_path() / ("satviz-app-cli-" + std::to_string(::getpid()) + ".out");
-    const fs::path err = fs::temp_directory_path() / ("satviz-app-cli-" + std::to_string(::getpid()) + ".err");
-    const std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY PATH=\"" + dir.string() + ":$PATH\" satviz " +
-                                arguments + " > " + out.string() + " 2> " + err.string();
-    const int status = std::system(command.c_str());
-    Run run;
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    {
-        std::ifstream outFile(out);
-        std::ostringstream text;
-        text << outFile.rdbuf();
-        run.out = text.str();
-        std::ifstream errFile(err);
-        for (std::string line; std::getline(errFile, line);)
-        {
-            run.errLines.push_back(line);
-        }
-    }
-    fs::remove(out);
-    fs::remove(err);
-    return run;
+    const satviz::testing::ToolRun run = satviz::testing::RunTool(
+        "env -u DISPLAY -u WAYLAND_DISPLAY PATH=\"" + dir.string() + ":$PATH\" satviz " + arguments);
+    return {run.exitCode, run.out, satviz::testing::SplitLines(run.err)};
 }
 
 } // namespace

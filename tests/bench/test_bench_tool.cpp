@@ -3,14 +3,14 @@
 // before the run starts, --quick says that its figures are not measurements (--world --quick too), --help names the
 // peers, --world --write-scenes writes its scenes and --world --threads says what satviz steps on.
 
+#include "support/run_tool.h"
+
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
@@ -43,23 +43,8 @@ const ScratchDirectory kScratch;
 
 Run Bench(const std::string& arguments)
 {
-    const fs::path out = kScratch.dir / "bench.out";
-    const fs::path err = kScratch.dir / "bench.err";
-    const std::string command =
-        std::string(SATVIZ_BENCH_EXE) + " " + arguments + " > " + out.string() + " 2> " + err.string();
-    const int status = std::system(command.c_str());
-    Run run;
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream outFile(out);
-    std::ostringstream text;
-    text << outFile.rdbuf();
-    run.out = text.str();
-    std::ifstream errFile(err);
-    for (std::string line; std::getline(errFile, line);)
-    {
-        run.errLines.push_back(line);
-    }
-    return run;
+    const satviz::testing::ToolRun run = satviz::testing::RunTool(std::string(SATVIZ_BENCH_EXE) + " " + arguments);
+    return {run.exitCode, run.out, satviz::testing::SplitLines(run.err)};
 }
 
 /// A refused run: exit code 2, one line on stderr that holds every one of `words`, and nothing run (no output).

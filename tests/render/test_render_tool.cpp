@@ -2,16 +2,14 @@
 // satviz-render as a program: a batch survives a bad scene, errors are one line naming the file and the field,
 // output is written atomically, and the same input gives the same bytes.
 
+#include "support/run_tool.h"
 #include "support/xml_check.h"
 
 #include <catch2/catch.hpp>
 
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -25,20 +23,6 @@ struct Run
     std::vector<std::string> outLines;
     std::vector<std::string> errLines;
 };
-
-/// The lines of a file, which is then removed.
-std::vector<std::string> TakeLines(const std::string& path)
-{
-    std::vector<std::string> lines;
-    std::ifstream in(path);
-    for (std::string line; std::getline(in, line);)
-    {
-        lines.push_back(line);
-    }
-    in.close();
-    std::remove(path.c_str());
-    return lines;
-}
 
 // Where this process writes: a folder of its own under the system's temporary folder, never the folder the tests
 // are run from (a run from a source tree would leave its files among the sources), and never shared with another
@@ -62,15 +46,8 @@ fs::path WorkDirectory()
 
 Run Render(const std::string& arguments)
 {
-    const std::string out = (WorkDirectory() / "render.out").string();
-    const std::string err = (WorkDirectory() / "render.err").string();
-    const std::string command = std::string(SATVIZ_RENDER_EXE) + " " + arguments + " > " + out + " 2> " + err;
-    const int status = std::system(command.c_str());
-    Run run;
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.outLines = TakeLines(out);
-    run.errLines = TakeLines(err);
-    return run;
+    const satviz::testing::ToolRun run = satviz::testing::RunTool(std::string(SATVIZ_RENDER_EXE) + " " + arguments);
+    return {run.exitCode, satviz::testing::SplitLines(run.out), satviz::testing::SplitLines(run.err)};
 }
 
 std::string Scene(const std::string& name)
