@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Helpers of the painter's tests: loading a scene, random pairs, painting a step on a recording canvas, projecting a
-// placed shape and reading a number from the drawn texts.
+// Helpers of the painter's tests: loading a scene, stepping a lesson's world, random pairs, painting a step on a
+// recording canvas, projecting a placed shape and reading a number from the drawn texts.
 #pragma once
 
 #include "support/random_shapes.h"
@@ -26,6 +26,27 @@ inline Scene Load(const std::string& file)
     INFO(result.error);
     REQUIRE(result.Ok());
     return result.scene;
+}
+
+/// A scene of tutorials/scenes stepped by the world, with the record of its steps.
+struct SteppedScene
+{
+    Scene scene;      ///< with the world's state after the last step, as satviz-sim stores it
+    SimRecord record; ///< the steps, recorded with the pair the scene's figure shows (FigurePair)
+    FigureSetup setup;  ///< the figure of the last step, once a test has set one up
+};
+
+/// tutorials/scenes/`name`, which must load and step, stepped `steps` times from its start as satviz-sim steps it
+/// (SimulateSceneRecorded).
+inline SteppedScene StepScene(const std::string& name, int steps)
+{
+    SteppedScene s;
+    s.scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + name);
+    int a = -1;
+    int b = -1;
+    REQUIRE(FigurePair(s.scene, a, b));
+    REQUIRE(SimulateSceneRecorded(s.scene, steps, a, b, s.record).empty());
+    return s;
 }
 
 /// Two random convex polygons A and B of 3 to maxVertices vertices, radius 1 scaled by minScale to 1, at random

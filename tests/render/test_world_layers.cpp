@@ -2,6 +2,8 @@
 // The world's layers through a recording canvas: the broadphase's boxes and pairs, the response's steps and arrows,
 // the hits and the plots, each checked against numbers computed here from the bodies (lesson 14's worked example
 // for the response) rather than read back from the record the layers draw.
+#include "render/painter_support.h"
+
 #include <satviz/render/describe.h>
 #include <satviz/render/figure.h>
 #include <satviz/render/recording_canvas.h>
@@ -17,27 +19,10 @@ using namespace satviz;
 namespace
 {
 
-struct Stepped
-{
-    Scene scene;
-    SimRecord record;
-    FigureSetup setup;
-};
+using painter_test::SteppedScene;
+using painter_test::StepScene;
 
-Stepped Step(const std::string& name, int steps)
-{
-    Stepped s;
-    SceneResult loaded = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + name);
-    INFO(loaded.error);
-    REQUIRE(loaded.Ok());
-    s.scene = loaded.scene;
-    int a = -1, b = -1;
-    REQUIRE(FigurePair(s.scene, a, b));
-    REQUIRE(SimulateSceneRecorded(s.scene, steps, a, b, s.record).empty());
-    return s;
-}
-
-RecordingCanvas Paint(Stepped& s, LayerMask layers, int width = 900, int height = 1000)
+RecordingCanvas Paint(SteppedScene& s, LayerMask layers, int width = 900, int height = 1000)
 {
     FigureOptions options;
     options.setLayers = true;
@@ -94,7 +79,7 @@ Box TextBox(const DrawCommand& c)
 TEST_CASE("World layers: the response of lesson 14's head-on hit, step by step, with the lesson's numbers",
           "[painter][world]")
 {
-    Stepped s = Step("l14_head_on.json", 23);
+    SteppedScene s = StepScene("l14_head_on.json", 23);
     const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerLabels | kLayerResponse, 1400, 900);
     const std::string panel = GroupText(canvas, "response panel");
     INFO(panel);
@@ -135,7 +120,7 @@ TEST_CASE("World layers: the caption explains the world's step, not a SAT test o
 {
     // After step 23 of lesson 14's head-on hit the pair moves apart, so a sweep of it finds no hit; the step itself
     // bounced them on a speculative contact.
-    Stepped s = Step("l14_head_on.json", 23);
+    SteppedScene s = StepScene("l14_head_on.json", 23);
     const RecordingCanvas response = Paint(s, kLayerShapes | kLayerCaption | kLayerResponse, 1400, 900);
     const std::string withPanel = GroupText(response, "caption");
     INFO(withPanel);
@@ -150,7 +135,7 @@ TEST_CASE("World layers: the caption explains the world's step, not a SAT test o
 
 TEST_CASE("World layers: the response before the pair meets says there was no contact", "[painter][world]")
 {
-    Stepped s = Step("l14_head_on.json", 5);
+    SteppedScene s = StepScene("l14_head_on.json", 5);
     const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerResponse);
     CHECK(AnyTextContains(canvas, "had no contact"));
     CHECK(canvas.InGroup("response").empty());
@@ -158,7 +143,7 @@ TEST_CASE("World layers: the response before the pair meets says there was no co
     // must not speak of closing a gap then. The direction is read from the world, apart from the sentence.
     for (const int steps : {5, 40})
     {
-        Stepped t = Step("l14_head_on.json", steps);
+        SteppedScene t = StepScene("l14_head_on.json", steps);
         const std::vector<RigidBody>& bodies = t.record.world.bodies;
         const bool parting =
             (bodies[1].velocity.x - bodies[0].velocity.x) * (bodies[1].position.x - bodies[0].position.x) > 0.0;
@@ -174,7 +159,7 @@ TEST_CASE("World layers: the response before the pair meets says there was no co
 TEST_CASE("World layers: the response of a sleeping pair says it sleeps, not that it had no contact",
           "[painter][world]")
 {
-    Stepped s = Step("l15_slope.json", 82);
+    SteppedScene s = StepScene("l15_slope.json", 82);
     // The box fell asleep on the slope: its contact is kept, but the solver did not see it in the step.
     REQUIRE_FALSE(s.record.world.bodies[1].awake);
     REQUIRE(std::any_of(s.record.world.contacts.begin(), s.record.world.contacts.end(),
@@ -190,7 +175,7 @@ TEST_CASE("World layers: the broadphase draws a pair line between the boxes' cen
           "counts, and hatches the sleeping bodies",
           "[painter][world]")
 {
-    Stepped s = Step("l17_skips.json", 60);
+    SteppedScene s = StepScene("l17_skips.json", 60);
     const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerBroadphase, 900, 700);
     const View& view = s.setup.figure.view;
     // The pairs: each a line from one box's centre to the other's; the centre of a box grown equally on every side
@@ -254,7 +239,7 @@ TEST_CASE("World layers: the broadphase draws a pair line between the boxes' cen
 
 TEST_CASE("World layers: a bullet's hit on the time bar and where the bodies were at it", "[painter][world]")
 {
-    Stepped s = Step("l17_bullet.json", 1);
+    SteppedScene s = StepScene("l17_bullet.json", 1);
     REQUIRE(s.record.lastStep.hits.size() == 1);
     const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerLabels | kLayerHits);
     // The bullet starts 0.945 m from the wall's face and covers 100 000 / 60 m in the step: it hits at 0.945 / that.
@@ -275,7 +260,7 @@ TEST_CASE("World layers: a hit chosen on the time bar draws its bodies where the
     // Lesson 17's corner: the ball from (0, 1) at (2, -1) per step (dt = 1) reaches the bottom cushion's top (y = 0)
     // with its radius 0.25 at t = 0.75, at (1.5, 0.25); bouncing elastically it leaves at (2, 1) and reaches the
     // right cushion's face (x = 2) at t = 0.875, at (1.75, 0.375).
-    Stepped s = Step("l17_corner.json", 1);
+    SteppedScene s = StepScene("l17_corner.json", 1);
     REQUIRE(s.record.lastStep.hits.size() == 2);
     const RecordingCanvas all = Paint(s, kLayerShapes | kLayerLabels | kLayerHits);
     Figure figure = s.setup.figure;
@@ -331,7 +316,7 @@ TEST_CASE("World layers: a hit chosen on the time bar draws its bodies where the
 
 TEST_CASE("World layers: the plots follow the energy over the steps, the current step marked", "[painter][world]")
 {
-    Stepped s = Step("l14_head_on.json", 30);
+    SteppedScene s = StepScene("l14_head_on.json", 30);
     const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerPlots);
     // Kinetic energy before and after the hit, by hand: 1/2 (pi/2) 3^2 + 1/2 (pi/4) 1^2 = 7.461 J before,
     // 1/2 (pi/2) 0.6^2 + 1/2 (pi/4) 3.8^2 = 5.953 J after. On the plot, heights above the frame's bottom in that ratio.
@@ -369,7 +354,7 @@ TEST_CASE("World layers: no label of the world's layers overlaps another label o
              {"l14_head_on.json", 23}, {"l17_skips.json", 60}, {"l17_bullet.json", 1}, {"l14_slide.json", 10}})
     {
         INFO(name);
-        Stepped s = Step(name, steps);
+        SteppedScene s = StepScene(name, steps);
         const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerLabels | kLayerBroadphase | kLayerResponse |
                                                     kLayerHits | kLayerPlots | kLayerCaption);
         std::vector<const DrawCommand*> texts;

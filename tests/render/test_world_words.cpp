@@ -3,6 +3,8 @@
 // awake pair, a speculative contact with a gap. Each fact is computed here from the world itself: which bodies were
 // awake as the step began, the overlap or gap of each pair by Collide on the bodies as the step began, each body's
 // centre of mass and velocity, the time as steps times dt; the words must agree with them at their printed digits.
+#include "render/painter_support.h"
+
 #include <satviz/collide.h>
 #include <satviz/render/describe.h>
 #include <satviz/render/response_steps.h>
@@ -21,26 +23,8 @@ using namespace satviz;
 namespace
 {
 
-struct Stepped
-{
-    Scene scene;
-    SimRecord record;
-};
-
-Stepped Step(const std::string& name, int steps)
-{
-    Stepped s;
-    SceneResult loaded = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + name);
-    INFO(loaded.error);
-    REQUIRE(loaded.Ok());
-    s.scene = loaded.scene;
-    s.record = StartRecord(s.scene, -1, -1);
-    for (int i = 0; i < steps; ++i)
-    {
-        StepRecord(s.record);
-    }
-    return s;
-}
+using painter_test::SteppedScene;
+using painter_test::StepScene;
 
 // The numbers of a text, in order, each with the unit of its last printed digit.
 struct Number
@@ -153,7 +137,7 @@ const WorldContactWords* LineOf(const WorldWords& words, int a, int b)
 }
 
 // Checks every line of the words against the world it describes.
-void CheckAgainstWorld(const Stepped& s)
+void CheckAgainstWorld(const SteppedScene& s)
 {
     const SimRecord& r = s.record;
     const WorldWords words = DescribeWorld(s.scene, r);
@@ -259,7 +243,7 @@ void CheckAgainstWorld(const Stepped& s)
 
 TEST_CASE("The world in words: a sleeping pair's contact is kept, and its body says it sleeps", "[world][words]")
 {
-    Stepped s = Step("l15_slope.json", 82);
+    SteppedScene s = StepScene("l15_slope.json", 82);
     REQUIRE_FALSE(s.record.before[1].awake);
     const WorldWords words = DescribeWorld(s.scene, s.record);
     const WorldContactWords* line = LineOf(words, 0, 1);
@@ -271,7 +255,7 @@ TEST_CASE("The world in words: a sleeping pair's contact is kept, and its body s
 
 TEST_CASE("The world in words: an awake pair's contact is this step's, with each point's overlap", "[world][words]")
 {
-    Stepped s = Step("l14_slide.json", 3);
+    SteppedScene s = StepScene("l14_slide.json", 3);
     REQUIRE(s.record.before[1].awake);
     const WorldWords words = DescribeWorld(s.scene, s.record);
     const WorldContactWords* line = LineOf(words, 0, 1);
@@ -286,7 +270,7 @@ TEST_CASE("The world in words: an awake pair's contact is this step's, with each
 TEST_CASE("The world in words: a speculative contact gives its gap", "[world][words]")
 {
     // Lesson 17's crates: in step 38 the ball is a small gap from crate 6, closer than it moves in the step.
-    Stepped s = Step("l17_skips.json", 38);
+    SteppedScene s = StepScene("l17_skips.json", 38);
     const WorldWords words = DescribeWorld(s.scene, s.record);
     bool speculative = false;
     for (const WorldContactWords& c : words.contacts)
@@ -301,7 +285,7 @@ TEST_CASE("The world in words: a speculative contact gives its gap", "[world][wo
         for (const int steps : {1, 12, 24, 40})
         {
             INFO(name << " after " << steps << " steps");
-            CheckAgainstWorld(Step(name, steps));
+            CheckAgainstWorld(StepScene(name, steps));
         }
     }
 }
