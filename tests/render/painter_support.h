@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
-// Helpers of the painter's tests: loading a scene, stepping a lesson's world, random pairs, painting a step on a
-// recording canvas, projecting a placed shape and reading a number from the drawn texts.
+// Helpers of the painter's tests: loading a scene as satviz-render draws it, stepping a lesson's world, random pairs,
+// painting a step on a recording canvas, projecting a placed shape and reading a number from the drawn texts.
 #pragma once
 
 #include "support/random_shapes.h"
 
 #include <satviz/render/figure.h>
 #include <satviz/render/recording_canvas.h>
+#include <satviz/scene_world.h>
 
 #include <catch2/catch.hpp>
 
@@ -26,6 +27,21 @@ inline Scene Load(const std::string& file)
     INFO(result.error);
     REQUIRE(result.Ok());
     return result.scene;
+}
+
+/// A scene file as satviz-render draws it: loaded (Load) and, a scene of a world, stepped to the step its view
+/// shows (view.simSteps).
+inline Scene LoadSimulated(const std::string& file)
+{
+    Scene scene = Load(file);
+    REQUIRE(SimulateScene(scene, scene.view.simSteps).empty());
+    return scene;
+}
+
+/// tutorials/scenes/`stem`.json as satviz-render draws it (LoadSimulated).
+inline Scene LessonScene(const std::string& stem)
+{
+    return LoadSimulated(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + stem + ".json");
 }
 
 /// A scene of tutorials/scenes stepped by the world, with the record of its steps.
@@ -71,6 +87,15 @@ inline RecordingCanvas Paint(const Scene& scene, FigureSetup& setup, int step, L
 {
     setup.figure.step = step;
     setup.figure.layers = layers;
+    RecordingCanvas canvas;
+    PaintFigure(canvas, scene, setup.study, setup.figure);
+    return canvas;
+}
+
+/// Step `step` of the figure `setup` of `scene` with the figure's own layers, on a recording canvas.
+inline RecordingCanvas PaintStep(const Scene& scene, FigureSetup& setup, int step)
+{
+    setup.figure.step = step;
     RecordingCanvas canvas;
     PaintFigure(canvas, scene, setup.study, setup.figure);
     return canvas;

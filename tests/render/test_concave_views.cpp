@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The figures of concave shapes, through a recording canvas: what each panel draws agrees with the shapes measured
 // on their own (areas, reflex corners, counts) and with the sentence above it.
+#include "render/painter_support.h"
 #include "support/random_concave.h"
 
 #include <satviz/collide.h>
@@ -461,9 +462,7 @@ TEST_CASE("The pieces figure tests the pairs of pieces whose boxes overlap, one 
     std::vector<std::string> captions;
     for (int k = 0; k < steps; ++k)
     {
-        setup.figure.step = k;
-        RecordingCanvas canvas;
-        PaintFigure(canvas, scene, setup.study, setup.figure);
+        const RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
         captions.push_back(Caption(canvas));
         INFO(captions.back());
         CHECK(captions.back().rfind("Step " + std::to_string(k + 1) + " of " + std::to_string(steps) + ": ", 0) == 0);

@@ -265,9 +265,7 @@ TEST_CASE("No figure of the course draws a mark under a later line, fill or head
         const bool faces = std::string(list) == "SATVIZ_FACE_STEP_SCENES";
         for (const std::string& stem : lists.at(list))
         {
-            const std::string file = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + stem + ".json";
-            Scene scene = painter_test::Load(file);
-            REQUIRE(SimulateScene(scene, scene.view.simSteps).empty());
+            const Scene scene = painter_test::LessonScene(stem);
             FigureOptions options;
             options.setSteps = faces;
             options.steps = StepView::Faces;
@@ -277,9 +275,7 @@ TEST_CASE("No figure of the course draws a mark under a later line, fill or head
             const int last = allSteps ? FigureStepCount(scene, setup) - 1 : setup.figure.step;
             for (int k = first; k <= last; ++k)
             {
-                setup.figure.step = k;
-                RecordingCanvas canvas;
-                PaintFigure(canvas, scene, setup.study, setup.figure);
+                RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
                 const std::vector<std::string> hidden = HiddenMarks(canvas);
                 INFO((faces ? "faces/" : "") << stem << " step " << k + 1);
                 for (const std::string& problem : hidden)

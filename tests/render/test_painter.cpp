@@ -1877,16 +1877,14 @@ TEST_CASE("A caption that counts contact points has that many drawn, in every fi
     {
         const std::filesystem::path file =
             std::filesystem::path(SATVIZ_SOURCE_DIR) / "tutorials" / "scenes" / (figure + ".json");
-        SceneResult loaded = LoadScene(file.string(), SceneOptions{true});
-        REQUIRE(loaded.Ok());
-        REQUIRE(SimulateScene(loaded.scene, loaded.scene.view.simSteps).empty());
-        FigureSetup setup = SetUpFigure(loaded.scene, {});
+        const Scene scene = painter_test::LoadSimulated(file.string());
+        FigureSetup setup = SetUpFigure(scene, {});
         if (!setup.Ok() || setup.figure.kind != FigureKind::Pair)
         {
             continue;
         }
         RecordingCanvas canvas;
-        PaintFigure(canvas, loaded.scene, setup.study, setup.figure);
+        PaintFigure(canvas, scene, setup.study, setup.figure);
         std::string caption;
         for (const DrawCommand* c : canvas.InGroup("caption"))
         {
@@ -2089,9 +2087,7 @@ TEST_CASE("The number line's title fits the width of the app's smallest canvas i
         {
             continue;
         }
-        SceneResult loaded = LoadScene(entry.path().string(), SceneOptions{true});
-        REQUIRE(loaded.Ok());
-        REQUIRE(SimulateScene(loaded.scene, loaded.scene.view.simSteps).empty());
+        const Scene scene = painter_test::LoadSimulated(entry.path().string());
         for (const StepView view : {StepView::Textbook, StepView::Faces})
         {
             FigureOptions options;
@@ -2099,16 +2095,14 @@ TEST_CASE("The number line's title fits the width of the app's smallest canvas i
             options.height = 600;
             options.setSteps = true;
             options.steps = view;
-            FigureSetup setup = SetUpFigure(loaded.scene, options);
+            FigureSetup setup = SetUpFigure(scene, options);
             if (!setup.Ok() || setup.figure.kind != FigureKind::Pair)
             {
                 continue;
             }
-            for (int k = 0; k < FigureStepCount(loaded.scene, setup); ++k)
+            for (int k = 0; k < FigureStepCount(scene, setup); ++k)
             {
-                setup.figure.step = k;
-                RecordingCanvas canvas;
-                PaintFigure(canvas, loaded.scene, setup.study, setup.figure);
+                RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
                 for (const DrawCommand* c : canvas.InGroup("panel"))
                 {
                     if (c->kind != DrawCommand::Kind::Text)
