@@ -1724,6 +1724,19 @@ bool WriteNearCsv(const std::string& directory, const std::map<int, Timing>& tim
     return static_cast<bool>(out);
 }
 
+// A list of vertex counts given to `option` with one below 3: the reason, naming the option; else "".
+std::string CheckVertexCounts(const std::string& option, const std::vector<int>& counts)
+{
+    for (int n : counts)
+    {
+        if (n < 3)
+        {
+            return option + ": a polygon has at least 3 vertices, got " + std::to_string(n);
+        }
+    }
+    return "";
+}
+
 // The settings' own mistakes, found before anything runs: a one-line reason naming the option, or "" when the
 // settings can be run. A polygon of fewer than 3 vertices is never made (the pool would be drawn for ever), and no
 // pairs or no rounds would leave no pass to take a median of.
@@ -1733,12 +1746,9 @@ std::string CheckSettings(const Settings& s)
     {
         return "--counts: give at least one vertex count";
     }
-    for (int n : s.counts)
+    if (std::string error = CheckVertexCounts("--counts", s.counts); !error.empty())
     {
-        if (n < 3)
-        {
-            return "--counts: a polygon has at least 3 vertices, got " + std::to_string(n);
-        }
+        return error;
     }
     if (s.pairs < 1)
     {
@@ -1748,12 +1758,9 @@ std::string CheckSettings(const Settings& s)
     {
         return "--rounds: at least 1 round, got " + std::to_string(s.rounds);
     }
-    for (int n : s.nearCounts)
+    if (std::string error = CheckVertexCounts("--near-counts", s.nearCounts); !error.empty())
     {
-        if (n < 3)
-        {
-            return "--near-counts: a polygon has at least 3 vertices, got " + std::to_string(n);
-        }
+        return error;
     }
     if (s.nearPairs < 3)
     {

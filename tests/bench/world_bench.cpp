@@ -44,6 +44,7 @@
 
 #include <satviz/collide.h>
 #include <satviz/scene.h>
+#include <satviz/scene_world.h>
 #include <satviz/tasks.h>
 #include <satviz/world.h>
 
@@ -251,6 +252,24 @@ WorldSettings SettingsOf(int config)
     return settings;
 }
 
+// A body of a benchmark scene as a body of a scene file, with the benchmark's density and material: the world
+// satviz steps is built from these (MakeBodyDef), and --write-scenes writes them, so both are one description.
+satviz::Body FileBody(const SceneBody& from)
+{
+    satviz::Body body;
+    body.shape = from.shape;
+    body.isStatic = !from.dynamic;
+    body.density = kDensity;
+    body.material.restitution = kRestitution;
+    body.material.friction = kFriction;
+    body.material.staticFriction = kFriction;
+    body.position = from.position;
+    body.angle = from.angle;
+    body.velocity = from.velocity;
+    body.angularVelocity = from.angularVelocity;
+    return body;
+}
+
 World BuildSatviz(const Scene& scene, const WorldSettings& settings)
 {
     World world;
@@ -258,18 +277,7 @@ World BuildSatviz(const Scene& scene, const WorldSettings& settings)
     world.bodies.reserve(scene.bodies.size());
     for (const SceneBody& body : scene.bodies)
     {
-        BodyDef def;
-        def.shape = body.shape;
-        def.type = body.dynamic ? BodyType::Dynamic : BodyType::Static;
-        def.density = kDensity;
-        def.material.restitution = kRestitution;
-        def.material.friction = kFriction;
-        def.material.staticFriction = kFriction;
-        def.position = body.position;
-        def.angle = body.angle;
-        def.velocity = body.velocity;
-        def.angularVelocity = body.angularVelocity;
-        AddBody(world, def);
+        AddBody(world, MakeBodyDef(FileBody(body)));
     }
     return world;
 }
@@ -1257,18 +1265,8 @@ bool WriteWorldScenes(const WorldBenchSettings& settings, const std::string& dir
             int walls = 0, dynamic = 0;
             for (const SceneBody& from : scene.bodies)
             {
-                satviz::Body body;
+                satviz::Body body = FileBody(from);
                 body.name = from.dynamic ? "body " + std::to_string(dynamic++) : "static " + std::to_string(walls++);
-                body.shape = from.shape;
-                body.isStatic = !from.dynamic;
-                body.density = kDensity;
-                body.material.restitution = kRestitution;
-                body.material.friction = kFriction;
-                body.material.staticFriction = kFriction;
-                body.position = from.position;
-                body.angle = from.angle;
-                body.velocity = from.velocity;
-                body.angularVelocity = from.angularVelocity;
                 file.bodies.push_back(std::move(body));
             }
             const std::string path = directory + "/" + scene.name + "-" + std::to_string(n) + ".json";
