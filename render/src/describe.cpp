@@ -388,9 +388,10 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study, bool cou
     }
     const int contacts = study.manifold.contactCount;
     text += contacts == 1 ? " 1 contact point" : " " + std::to_string(contacts) + " contact points";
-    text += study.trace.hasClip ? ", clipped from the incident edge against the reference face, each halfway between "
-                                  "the two surfaces."
-                                : ", halfway between the two surfaces.";
+    const std::string halfway = contacts == 1 ? "halfway" : "each halfway";
+    text += study.trace.hasClip ? ", clipped from the incident edge against the reference face, " + halfway +
+                                      " between the two surfaces."
+                                : ", " + halfway + " between the two surfaces.";
     return text;
 }
 
@@ -932,20 +933,36 @@ std::string FormatNumber(double value, int significant)
 
 std::string FormatPair(double x, double y, const char* open, const char* close)
 {
-    std::string a = FormatNumber(x);
-    std::string b = FormatNumber(y);
-    auto decimals = [](const std::string& t) {
+    const std::vector<std::string> alike = FormatAlike({x, y});
+    return open + alike[0] + ", " + alike[1] + close;
+}
+
+std::vector<std::string> FormatAlike(const std::vector<double>& values)
+{
+    std::vector<std::string> texts;
+    texts.reserve(values.size());
+    const auto decimals = [](const std::string& t) {
         const size_t dot = t.find('.');
         return t.find('e') != std::string::npos || dot == std::string::npos ? -1 : static_cast<int>(t.size() - dot - 1);
     };
-    const int da = decimals(a);
-    const int db = decimals(b);
-    if (da >= 0 && db >= 0)
+    int most = -1;
+    for (const double value : values)
     {
-        a.append(static_cast<size_t>(std::max(0, db - da)), '0');
-        b.append(static_cast<size_t>(std::max(0, da - db)), '0');
+        texts.push_back(FormatNumber(value));
+        most = std::max(most, decimals(texts.back()));
     }
-    return open + a + ", " + b + close;
+    // FormatNumber drops at most the third decimal's 0: a small number's five decimals (0.00512) are its
+    // significant digits, not a width for the others.
+    most = std::min(most, 3);
+    for (std::string& text : texts)
+    {
+        const int own = decimals(text);
+        if (own >= 0 && own < most)
+        {
+            text.append(static_cast<size_t>(most - own), '0');
+        }
+    }
+    return texts;
 }
 
 namespace

@@ -2571,10 +2571,12 @@ class Painter
             m_canvas.Segment({x(m_axis.sweptMinB), rowB}, {x(m_axis.sweptMaxB), rowB}, WithAlpha(palette::kShapeB, 0.35f),
                             12.0f);
         }
-        IntervalRow(x(m_axis.minA), x(m_axis.maxA), rowA, m_axis.minA, m_axis.maxA, palette::kShapeA, palette::kShapeA,
-                    true, lineLeft - 8.0f);
-        IntervalRow(x(m_axis.minB), x(m_axis.maxB), rowB, m_axis.minB, m_axis.maxB, palette::kShapeB, palette::kShapeBInk,
-                    false, lineLeft - 8.0f);
+        // The four ends are read together, so they are written with as many decimals each.
+        const std::vector<std::string> ends = FormatAlike({m_axis.minA, m_axis.maxA, m_axis.minB, m_axis.maxB});
+        IntervalRow(x(m_axis.minA), x(m_axis.maxA), rowA, ends[0], ends[1], palette::kShapeA, palette::kShapeA, true,
+                    lineLeft - 8.0f);
+        IntervalRow(x(m_axis.minB), x(m_axis.maxB), rowB, ends[2], ends[3], palette::kShapeB, palette::kShapeBInk, false,
+                    lineLeft - 8.0f);
         if (m_axis.bounded)
         {
             // The bound: a vertex of the other shape lies here, so the other shape's near end is no farther out.
@@ -2584,9 +2586,9 @@ class Painter
             const std::string text = "bound " + FormatNumber(m_axis.boundAt);
             const float width = m_canvas.MeasureText(text, TextStyle::Label).x;
             const float lowEnd = x(m_axis.minB) - 4.5f;
-            const float lowStart = lowEnd - m_canvas.MeasureText(FormatNumber(m_axis.minB), TextStyle::Label).x;
+            const float lowStart = lowEnd - m_canvas.MeasureText(ends[2], TextStyle::Label).x;
             const float highStart = x(m_axis.maxB) + 4.5f;
-            const float highEnd = highStart + m_canvas.MeasureText(FormatNumber(m_axis.maxB), TextStyle::Label).x;
+            const float highEnd = highStart + m_canvas.MeasureText(ends[3], TextStyle::Label).x;
             const auto clear = [&](float from) {
                 return (from + width < lowStart || from > lowEnd) && (from + width < highStart || from > highEnd);
             };
@@ -2600,14 +2602,12 @@ class Painter
         }
     }
 
-    void IntervalRow(float x0, float x1, float y, double v0, double v1, Color color, Color ink, bool above,
-                     float rowStart)
+    void IntervalRow(float x0, float x1, float y, const std::string& s0, const std::string& s1, Color color, Color ink,
+                     bool above, float rowStart)
     {
         m_canvas.Segment({x0, y}, {x1, y}, color, 8.0f);
         m_canvas.Segment({x0, y - 7.0f}, {x0, y + 7.0f}, ink, 1.5f);
         m_canvas.Segment({x1, y - 7.0f}, {x1, y + 7.0f}, ink, 1.5f);
-        const std::string s0 = FormatNumber(v0);
-        const std::string s1 = FormatNumber(v1);
         const ScreenPoint size0 = m_canvas.MeasureText(s0, TextStyle::Label);
         const float ty = above ? y - 9.0f - size0.y : y + 9.0f;
         if (s0 == s1)

@@ -136,12 +136,14 @@ PitfallResult Unchecked(const Scene& scene, int a, int b, const TextbookResult& 
     }
     out.depth = smallest;
     const bool inward = Dot(out.normal, right.normal) < 0.0;
+    const std::string& nameA = scene.bodies[static_cast<size_t>(a)].name;
+    const std::string& nameB = scene.bodies[static_cast<size_t>(b)].name;
     out.verdict = "Pitfall (unchecked direction): taking the intervals' common part, " + FormatNumber(smallest) +
-                  ", and pushing B along the normal of " + AxisName(scene, chosenBody, chosenEdge) + " as it points, (" +
-                  FormatNumber(out.normal.x) + ", " + FormatNumber(out.normal.y) + "), " +
-                  (inward ? std::string("drives B into A instead of out of it")
+                  ", and pushing " + nameB + " along the normal of " + AxisName(scene, chosenBody, chosenEdge) +
+                  " as it points, (" + FormatNumber(out.normal.x) + ", " + FormatNumber(out.normal.y) + "), " +
+                  (inward ? "drives " + nameB + " into " + nameA + " instead of out of it"
                           : std::string("happens to push the right way here, by luck")) +
-                  "; the MTV moves B " + FormatNumber(right.depth) + " along (" + FormatNumber(right.normal.x) + ", " +
+                  "; the MTV moves " + nameB + " " + FormatNumber(right.depth) + " along (" + FormatNumber(right.normal.x) + ", " +
                   FormatNumber(right.normal.y) + ").";
     return out;
 }

@@ -2173,3 +2173,71 @@ TEST_CASE("A pair drawn small among many other bodies is framed and named, a pai
     PaintFigure(plain, pair.scene, alone.study, alone.figure);
     CHECK(plain.InGroup("tested pair").empty());
 }
+
+TEST_CASE("The ends on a number line are written with as many decimals each, in every lesson scene and step",
+          "[painter]")
+{
+    // A student reads the four ends of a number line together and subtracts them: l18_hull's read 0.00, 3.051,
+    // 2.08 and 3.467, as if the 2.08 were rounded further than the others. The ends are the panel's texts that are
+    // a bare number; the count of decimals is read off the text itself.
+    const auto decimals = [](const std::string& t) {
+        const size_t dot = t.find('.');
+        return dot == std::string::npos ? 0 : static_cast<int>(t.size() - dot - 1);
+    };
+    const auto bare = [](const std::string& t) {
+        return !t.empty() && t.find_first_not_of("-0123456789.") == std::string::npos && t.find('.') != std::string::npos;
+    };
+    int lines = 0;
+    int mixedBefore = 0; // lines whose ends FormatNumber alone would write with different decimals
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    {
+        if (entry.path().extension() != ".json")
+        {
+            continue;
+        }
+        SceneResult loaded = LoadScene(entry.path().string(), SceneOptions{true});
+        REQUIRE(loaded.Ok());
+        REQUIRE(SimulateScene(loaded.scene, loaded.scene.view.simSteps).empty());
+        for (const StepView view : {StepView::Textbook, StepView::Faces})
+        {
+            FigureSetup setup = SetUpView(loaded.scene, view);
+            if (!setup.Ok() || setup.figure.kind != FigureKind::Pair)
+            {
+                continue;
+            }
+            for (int step = 0; step < FigureStepCount(loaded.scene, setup); ++step)
+            {
+                const RecordingCanvas canvas = Paint(loaded.scene, setup, step, setup.figure.layers);
+                std::vector<std::string> ends;
+                for (const DrawCommand* c : canvas.InGroup("panel"))
+                {
+                    if (c->kind == DrawCommand::Kind::Text && bare(c->text) && decimals(c->text) <= 3)
+                    {
+                        ends.push_back(c->text);
+                    }
+                }
+                if (ends.size() < 2)
+                {
+                    continue;
+                }
+                INFO(entry.path().filename().string() << " step " << step + 1);
+                std::set<int> counts;
+                std::set<int> countsAlone;
+                for (const std::string& end : ends)
+                {
+                    INFO(end);
+                    counts.insert(decimals(end));
+                    countsAlone.insert(decimals(FormatNumber(std::stod(end))));
+                    // The value is the one FormatNumber shows: only zeros were put back.
+                    CHECK(std::stod(FormatNumber(std::stod(end))) == std::stod(end));
+                }
+                CHECK(counts.size() == 1);
+                mixedBefore += countsAlone.size() > 1 ? 1 : 0;
+                ++lines;
+            }
+        }
+    }
+    CHECK(lines > 100);
+    // The case the rule is about occurs: some lines mix the dropped 0 with three decimals.
+    CHECK(mixedBefore > 0);
+}

@@ -5,6 +5,7 @@
 #include <satviz/render/study.h>
 
 #include <string>
+#include <vector>
 
 namespace satviz
 {
@@ -21,6 +22,12 @@ std::string FormatNumber(double value, int significant);
 /// Two numbers as FormatNumber shows them, written side by side with as many decimals each: "(-0.342, 0.940)", not
 /// "(-0.342, 0.94)". Only the trailing 0 FormatNumber drops is put back, so the values read the same.
 std::string FormatPair(double x, double y, const char* open = "(", const char* close = ")");
+
+/// Numbers that are read together (the ends of the intervals on one number line) as FormatNumber shows them, each
+/// written with as many decimals as the one with most: 0.000, 2.080, 3.051, not 0.00, 2.08, 3.051. Only the
+/// trailing zeros FormatNumber drops are put back, so the values read the same; numbers with an exponent are left
+/// as they are.
+std::vector<std::string> FormatAlike(const std::vector<double>& values);
 
 /// hi - lo computed from the two values as FormatNumber shows them, so that a reader subtracting the printed ends
 /// gets the printed difference. Where the ends are too small or too large for that (beyond 1e5, their own rounding
