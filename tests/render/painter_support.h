@@ -47,9 +47,9 @@ inline Scene LessonScene(const std::string& stem)
 /// A scene of tutorials/scenes stepped by the world, with the record of its steps.
 struct SteppedScene
 {
-    Scene scene;      ///< with the world's state after the last step, as satviz-sim stores it
-    SimRecord record; ///< the steps, recorded with the pair the scene's figure shows (FigurePair)
-    FigureSetup setup;  ///< the figure of the last step, once a test has set one up
+    Scene scene;       ///< with the world's state after the last step, as satviz-sim stores it
+    SimRecord record;  ///< the steps, recorded with the pair the scene's figure shows (FigurePair)
+    FigureSetup setup; ///< the figure of the last step, once a test has set one up
 };
 
 /// tutorials/scenes/`name`, which must load and step, stepped `steps` times from its start as satviz-sim steps it
@@ -65,21 +65,32 @@ inline SteppedScene StepScene(const std::string& name, int steps)
     return s;
 }
 
-/// Two random convex polygons A and B of 3 to maxVertices vertices, radius 1 scaled by minScale to 1, at random
-/// places within 1.2 of the origin on each axis and random angles: the random pairs of the views' property tests.
-inline Scene RandomPolygonPair(testing::Rng& rng, int maxVertices, double minScale)
+/// A scene of two bodies named A and B, each made by `make(k)`: k = 0 for A, then k = 1 for B (so that random draws
+/// come in that order).
+template <typename MakeBody>
+Scene PairOf(MakeBody make)
 {
     Scene scene;
     for (int k = 0; k < 2; ++k)
     {
-        Body body;
+        Body body = make(k);
         body.name = k == 0 ? "A" : "B";
-        body.shape = MakeShape(testing::RandomPolygon(rng, rng.Int(3, maxVertices), 1.0, rng.Uniform(minScale, 1.0)));
-        body.position = {rng.Uniform(-1.2, 1.2), rng.Uniform(-1.2, 1.2)};
-        body.angle = rng.Uniform(-3.0, 3.0);
         scene.bodies.push_back(std::move(body));
     }
     return scene;
+}
+
+/// Two random convex polygons A and B of 3 to maxVertices vertices, radius 1 scaled by minScale to 1, at random
+/// places within 1.2 of the origin on each axis and random angles: the random pairs of the views' property tests.
+inline Scene RandomPolygonPair(testing::Rng& rng, int maxVertices, double minScale)
+{
+    return PairOf([&](int) {
+        Body body;
+        body.shape = MakeShape(testing::RandomPolygon(rng, rng.Int(3, maxVertices), 1.0, rng.Uniform(minScale, 1.0)));
+        body.position = {rng.Uniform(-1.2, 1.2), rng.Uniform(-1.2, 1.2)};
+        body.angle = rng.Uniform(-3.0, 3.0);
+        return body;
+    });
 }
 
 /// The figure of one step with the given layers, on a recording canvas.

@@ -450,11 +450,8 @@ TEST_CASE("The face a sentence names is the face its picture marks, over random 
     int namedElsewhere = 0;
     for (int i = 0; i < 600; ++i)
     {
-        Scene scene;
-        for (int k = 0; k < 2; ++k)
-        {
+        Scene scene = PairOf([&](int) {
             Body body;
-            body.name = k == 0 ? "A" : "B";
             if (rng.Chance(0.6))
             {
                 body.shape = MakeShape(MakeBox(rng.Uniform(0.2, 2.0), rng.Uniform(0.2, 2.0)).polygon);
@@ -470,8 +467,8 @@ TEST_CASE("The face a sentence names is the face its picture marks, over random 
             {
                 body.velocity = {rng.Uniform(-4.0, 4.0), rng.Uniform(-4.0, 4.0)};
             }
-            scene.bodies.push_back(std::move(body));
-        }
+            return body;
+        });
         for (const StepView view : kViews)
         {
             FigureSetup setup = SetUpView(scene, view);
@@ -615,11 +612,8 @@ TEST_CASE("Over random poses each axis is named after the face turned towards th
     int gaps = 0;
     for (int i = 0; i < 1500; ++i)
     {
-        Scene scene;
-        for (int k = 0; k < 2; ++k)
-        {
+        Scene scene = PairOf([&](int) {
             Body body;
-            body.name = k == 0 ? "A" : "B";
             if (rng.Chance(0.4))
             {
                 body.shape = MakeShape(MakeBox(rng.Uniform(0.3, 2.0), rng.Uniform(0.3, 2.0)).polygon);
@@ -631,8 +625,8 @@ TEST_CASE("Over random poses each axis is named after the face turned towards th
                 body.angle = rng.Uniform(-3.0, 3.0);
             }
             body.position = {rng.Uniform(-1.6, 1.6), rng.Uniform(-1.6, 1.6)};
-            scene.bodies.push_back(std::move(body));
-        }
+            return body;
+        });
         FigureSetup setup = SetUpView(scene, StepView::Textbook);
         REQUIRE(setup.Ok());
         const PairStudy& study = setup.study;
@@ -1231,11 +1225,8 @@ TEST_CASE("A hit's verdict marks the latest entry and the earliest exit of all t
     testing::Rng rng(20261127);
     for (int i = 0; i < 300; ++i)
     {
-        Scene scene;
-        for (int k = 0; k < 2; ++k)
-        {
+        Scene scene = PairOf([&](int k) {
             Body body;
-            body.name = k == 0 ? "A" : "B";
             body.shape = k == 1 && rng.Chance(0.5)
                              ? MakeShape(Circle{{0.0, 0.0}, rng.Uniform(0.05, 1.0)})
                              : MakeShape(testing::RandomPolygon(rng, rng.Int(3, 8), 1.0, rng.Uniform(0.3, 1.0)));
@@ -1245,8 +1236,8 @@ TEST_CASE("A hit's verdict marks the latest entry and the earliest exit of all t
             body.velocity =
                 k == 0 ? Vec2{0.0, 0.0}
                        : rng.Uniform(1.0, 2.5) * -body.position + Vec2{rng.Uniform(-1.0, 1.0), rng.Uniform(-1.0, 1.0)};
-            scene.bodies.push_back(std::move(body));
-        }
+            return body;
+        });
         scenes.push_back(std::move(scene));
     }
     int checked = 0;
@@ -1435,11 +1426,8 @@ TEST_CASE("Random pairs paint every step with every layer, with finite coordinat
     testing::Rng rng(20261122);
     for (int i = 0; i < 400; ++i)
     {
-        Scene scene;
-        for (int k = 0; k < 2; ++k)
-        {
+        Scene scene = PairOf([&](int) {
             Body body;
-            body.name = k == 0 ? "A" : "B";
             if (rng.Chance(0.25))
             {
                 body.shape = MakeShape(Circle{{0.0, 0.0}, rng.Uniform(0.1, 2.0)});
@@ -1454,8 +1442,8 @@ TEST_CASE("Random pairs paint every step with every layer, with finite coordinat
             {
                 body.velocity = {rng.Uniform(-4.0, 4.0), rng.Uniform(-4.0, 4.0)};
             }
-            scene.bodies.push_back(std::move(body));
-        }
+            return body;
+        });
         FigureSetup setup = SetUpFigure(scene, {});
         REQUIRE(setup.Ok());
         for (int step = 0; step < setup.study.StepCount(); ++step)
@@ -1488,11 +1476,8 @@ TEST_CASE("Sweeps against large polygons draw the faces decided without evaluati
     int skipped = 0;
     for (int i = 0; i < 24; ++i)
     {
-        Scene scene;
-        for (int k = 0; k < 2; ++k)
-        {
+        Scene scene = PairOf([&](int k) {
             Body body;
-            body.name = k == 0 ? "A" : "B";
             const int n = k == 0 ? rng.Int(17, i % 4 == 0 ? 400 : 80) : rng.Int(3, 80);
             body.shape = MakeShape(testing::RandomPolygon(rng, n, 1.0, rng.Uniform(0.4, 1.0)));
             body.angle = rng.Uniform(-3.0, 3.0);
@@ -1501,8 +1486,8 @@ TEST_CASE("Sweeps against large polygons draw the faces decided without evaluati
                 body.position = {rng.Uniform(2.2, 3.0), rng.Uniform(-1.0, 1.0)};
                 body.velocity = {-rng.Uniform(1.0, 4.0), rng.Uniform(-1.0, 1.0)};
             }
-            scene.bodies.push_back(std::move(body));
-        }
+            return body;
+        });
         FigureSetup setup = SetUpView(scene, StepView::Faces);
         REQUIRE(setup.Ok());
         REQUIRE(setup.study.sweep);
@@ -1567,17 +1552,14 @@ TEST_CASE("The Minkowski inset holds the origin exactly when the shapes overlap"
     int outside = 0;
     for (int i = 0; i < 300; ++i)
     {
-        Scene scene;
-        for (int k = 0; k < 2; ++k)
-        {
+        Scene scene = PairOf([&](int) {
             Body body;
-            body.name = k == 0 ? "A" : "B";
             body.shape = rng.Chance(0.2) ? MakeShape(Circle{{0.0, 0.0}, rng.Uniform(0.2, 1.0)})
                                          : MakeShape(testing::RandomPolygon(rng, rng.Int(3, 12), 1.0, 0.7));
             body.position = {rng.Uniform(-1.5, 1.5), rng.Uniform(-1.5, 1.5)};
             body.angle = rng.Uniform(-3.0, 3.0);
-            scene.bodies.push_back(std::move(body));
-        }
+            return body;
+        });
         FigureSetup setup = SetUpFigure(scene, {});
         REQUIRE(setup.Ok());
         const Manifold& m = setup.study.manifold;
@@ -1759,16 +1741,13 @@ TEST_CASE("Over random poses the textbook's words agree with themselves: the sma
     };
     for (int i = 0; i < 800; ++i)
     {
-        Scene scene;
-        for (int k = 0; k < 2; ++k)
-        {
+        Scene scene = PairOf([&](int) {
             Body body;
-            body.name = k == 0 ? "A" : "B";
             body.shape = MakeShape(testing::RandomPolygon(rng, rng.Int(3, 9), 1.0, rng.Uniform(0.3, 1.0)));
             body.angle = rng.Uniform(-3.0, 3.0);
             body.position = {rng.Uniform(-1.8, 1.8), rng.Uniform(-1.8, 1.8)};
-            scene.bodies.push_back(std::move(body));
-        }
+            return body;
+        });
         const FigureSetup setup = SetUpView(scene, StepView::Textbook);
         REQUIRE(setup.Ok());
         const PairStudy& study = setup.study;
@@ -1810,16 +1789,13 @@ TEST_CASE("A textbook step quotes as the overlap the smaller push, measured here
     int checked = 0;
     for (int i = 0; i < 300; ++i)
     {
-        Scene scene;
-        for (int k = 0; k < 2; ++k)
-        {
+        Scene scene = PairOf([&](int) {
             Body body;
-            body.name = k == 0 ? "A" : "B";
             body.shape = MakeShape(MakeBox(rng.Uniform(0.3, 2.0), rng.Uniform(0.3, 2.0)).polygon);
             body.angle = rng.Uniform(-3.0, 3.0);
             body.position = {rng.Uniform(-1.0, 1.0), rng.Uniform(-1.0, 1.0)};
-            scene.bodies.push_back(std::move(body));
-        }
+            return body;
+        });
         const FigureSetup setup = SetUpView(scene, StepView::Textbook);
         REQUIRE(setup.Ok());
         const PairStudy& study = setup.study;
