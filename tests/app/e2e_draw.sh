@@ -65,14 +65,7 @@ sleep 0.3
 xdotool keydown ctrl
 tap q 0.25
 xdotool keyup ctrl
-for _ in $(seq 50); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
-trap - EXIT
-if kill -0 $pid 2> /dev/null; then
-  kill $pid
-  echo "FAILED: the app did not quit on ctrl+q (unsaved changes?)"
-  cat "$work/app.log"
-  exit 1
-fi
+wait_for_quit "unsaved changes?"
 cat "$work/app.log"
 
 python3 - "$work/scene.json" "$zoom" << 'PY' || exit 1

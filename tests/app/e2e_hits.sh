@@ -67,11 +67,5 @@ check(sys.argv[3], 1, t1, "bottom", (x1, y1))
 check(sys.argv[2], 2, t2, "right", (x2, y2))
 PY
 tap ctrl+q
-for _ in $(seq 50); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
-trap - EXIT
-if kill -0 $pid 2> /dev/null; then
-  kill $pid
-  echo "FAILED: the app did not quit on ctrl+q"
-  exit 1
-fi
+wait_for_quit
 echo "PASSED: clicking a hit on the time bar shows its bodies at its instant, in time order"

@@ -2,7 +2,7 @@
 # What the app's end-to-end scripts share; each sources it first (it reads the script's own arguments):
 #  - the skip when Xvfb or xdotool is missing (exit 77, which ctest reports as skipped);
 #  - the script run again inside a virtual display of 1280x800;
-#  - tap, place, click and start_app below.
+#  - tap, place, click, start_app and wait_for_quit below.
 for tool in xvfb-run xdotool; do
   if ! command -v "$tool" > /dev/null; then
     echo "SKIPPED: $tool is not installed (apt-get install xvfb xauth xdotool)"
@@ -48,4 +48,17 @@ start_app() {
   trap 'kill $pid 2> /dev/null || true' EXIT
   xdotool search --sync --onlyvisible --name '^satviz$' > /dev/null
   for _ in $(seq 50); do grep -q "canvas at" "$work/app.log" && break; sleep 0.1; done
+}
+
+# Waits up to 5 s for the app to end after ctrl+q; when it does not, kills it and fails with its output ($1, if
+# given, says what may have held it).
+wait_for_quit() {
+  for _ in $(seq 50); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
+  trap - EXIT
+  if kill -0 $pid 2> /dev/null; then
+    kill $pid
+    echo "FAILED: the app did not quit on ctrl+q${1:+ ($1)}"
+    cat "$work/app.log"
+    exit 1
+  fi
 }

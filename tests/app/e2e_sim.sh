@@ -94,11 +94,5 @@ for name in ("A", "B"):
 print("the response of A and B at step 23 quotes the world's velocities before and after the step")
 PY
 tap ctrl+q
-for _ in $(seq 50); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
-trap - EXIT
-if kill -0 $pid 2> /dev/null; then
-  kill $pid
-  echo "FAILED: the app did not quit on ctrl+q"
-  exit 1
-fi
+wait_for_quit
 echo "PASSED: play, pause, back and forward show satviz-sim's states; the response quotes the world's record"

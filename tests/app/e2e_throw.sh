@@ -96,11 +96,5 @@ print(f"satviz-sim without the throw has the box at {box['position']}, the app a
 PY
 import -window root "$work/screenshot.png" 2> /dev/null || true
 tap ctrl+q 0.12
-for _ in $(seq 50); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
-trap - EXIT
-if kill -0 $pid 2> /dev/null; then
-  kill $pid
-  echo "FAILED: the app did not quit on ctrl+q"
-  exit 1
-fi
+wait_for_quit
 echo "PASSED: a body grabbed while playing is thrown along the pointer's motion; back and forward show its states"
