@@ -51,7 +51,7 @@ struct AppOptions
     std::string exportPath;   ///< where ctrl+e writes the PNG; empty: next to the scene, SCENE-stepN.png
     AppKeys keys;             ///< key codes
     /// A pair with more vertices than this (A's and B's together) is tested on a worker thread: its traced
-    /// queries and the camera fit grow with the square of the count, about 13 ms at 2048 vertices.
+    /// queries and the camera fit grow with the square of the count, and above it they take longer than a frame.
     int backgroundVertices = 2048;
     /// Fills a draw command's ClipRect with the colour in its UserCallbackData by clearing (the window system's
     /// scissored glClear): the figure's ground and panels and the big windows' backgrounds are drawn with it

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // satviz app: the queue of key events between the window system and Dear ImGui 1.86, which reads the keys' state
 // once per frame (io.KeysDown): a key pressed and released between two frames, a short tap or a frame that took
-// long, was never seen down, and about half of 12 ms taps were lost at 60 frames per second. No GLFW here.
+// long, would never be seen down; the queue below keeps every press down for one frame at least. No GLFW here.
 #pragma once
 
 #include <cstddef>

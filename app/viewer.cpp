@@ -83,8 +83,8 @@ bool Viewer::Refresh(const Scene& scene)
         Adopt(std::move(fresh), std::move(fitted));
         return true;
     }
-    // The traced queries and the fit grow with the square of the vertex count (about 30 s for 100 000
-    // vertices): they run on a worker thread while the interface goes on with the figure it has.
+    // The traced queries and the fit grow with the square of the vertex count: for a large pair they run on a
+    // worker thread while the interface goes on with the figure it has.
     if (!m_canvasSized)
     {
         return false; // the canvas's first frame gives its size, then the test starts
