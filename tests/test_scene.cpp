@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Scene files: what loads, and the one-line error for everything that does not.
 
+#include "support/scene_files.h"
+
 #include <satviz/collide.h>
 #include <satviz/concave.h>
 #include <satviz/scene.h>
@@ -101,15 +103,12 @@ TEST_CASE("Every bundled scene loads", "[scene]")
     // The examples of concave shapes, in a folder of their own, load as the tools that draw them read them.
     SceneOptions concave;
     concave.concave = true;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(SATVIZ_SOURCE_DIR "/tutorials/scenes"))
+    for (const std::string& file : testing::TutorialSceneFiles(true))
     {
-        if (entry.path().extension() == ".json")
-        {
-            const SceneResult r = LoadScene(entry.path().string(), concave);
-            INFO(r.error);
-            CHECK(r.Ok());
-            ++count;
-        }
+        const SceneResult r = LoadScene(file, concave);
+        INFO(r.error);
+        CHECK(r.Ok());
+        ++count;
     }
     CHECK(count >= 4);
 }
@@ -321,17 +320,12 @@ TEST_CASE("A saved scene reads back as the same scene, bit for bit", "[scene]")
     int scenes = 0;
     SceneOptions concave;
     concave.concave = true;
-    for (const auto& entry :
-         std::filesystem::recursive_directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    for (const std::string& file : testing::TutorialSceneFiles(true))
     {
-        if (entry.path().extension() != ".json")
-        {
-            continue;
-        }
-        const SceneResult original = LoadScene(entry.path().string(), concave);
+        const SceneResult original = LoadScene(file, concave);
         REQUIRE(original.Ok());
         const SceneResult again = ParseScene(SceneToJson(original.scene), "saved.json", concave);
-        INFO(entry.path() << "\n" << again.error);
+        INFO(file << "\n" << again.error);
         REQUIRE(again.Ok());
         const Scene& a = original.scene;
         const Scene& b = again.scene;
@@ -502,19 +496,14 @@ TEST_CASE("Every bundled scene saves back to the same JSON, key for key and numb
     int scenes = 0;
     SceneOptions concave;
     concave.concave = true;
-    for (const auto& entry :
-         std::filesystem::recursive_directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    for (const std::string& scenePath : testing::TutorialSceneFiles(true))
     {
-        if (entry.path().extension() != ".json")
-        {
-            continue;
-        }
-        const SceneResult original = LoadScene(entry.path().string(), concave);
+        const SceneResult original = LoadScene(scenePath, concave);
         REQUIRE(original.Ok());
-        std::ifstream in(entry.path());
+        std::ifstream in(scenePath);
         const nlohmann::ordered_json file = nlohmann::ordered_json::parse(in);
         const std::string saved = SceneToJson(original.scene);
-        INFO(entry.path() << "\n" << saved);
+        INFO(scenePath << "\n" << saved);
         CHECK(nlohmann::ordered_json::parse(saved).dump() == file.dump());
         // Saving the saved file changes nothing.
         CHECK(SceneToJson(ParseScene(saved, "saved.json", concave).scene) == saved);

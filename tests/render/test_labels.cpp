@@ -3,6 +3,7 @@
 // mark, nothing drawn after a text covers it, and every text lies inside the image. The figures are those that
 // tutorials/figures.cmake lists, drawn as satviz-render draws them; the checks look only at what was drawn.
 #include "render/painter_support.h"
+#include "support/scene_files.h"
 
 #include <satviz/render/figure.h>
 #include <satviz/render/recording_canvas.h>
@@ -2043,18 +2044,9 @@ TEST_CASE("In the face view, every step of every pair of the course keeps its la
     // committed figures do.
     int drawn = 0;
     int failing = 0;
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry :
-         std::filesystem::recursive_directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
-    {
-        if (entry.path().extension() == ".json")
-        {
-            files.push_back(entry.path());
-        }
-    }
-    std::sort(files.begin(), files.end());
+    const std::vector<std::string> files = testing::TutorialSceneFiles(true);
     REQUIRE(files.size() > 100);
-    for (const std::filesystem::path& file : files)
+    for (const std::filesystem::path file : files)
     {
         const Scene scene = painter_test::LoadSimulated(file.string());
         for (const bool own : {true, false})

@@ -3,6 +3,7 @@
 // here from the shapes (not from the trace), and layers that are off draw nothing.
 #include "render/painter_support.h"
 #include "support/random_shapes.h"
+#include "support/scene_files.h"
 
 #include <satviz/render/describe.h>
 #include <satviz/render/figure.h>
@@ -27,22 +28,6 @@ using namespace satviz::painter_test;
 
 namespace
 {
-
-std::vector<std::string> TutorialScenes()
-{
-    std::vector<std::string> files;
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
-    {
-        if (entry.path().extension() == ".json")
-        {
-            files.push_back(entry.path().string());
-        }
-    }
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
-
 
 
 // The interval bar of one shape in the "projection" group: the opaque segment of the shape's colour.
@@ -145,7 +130,7 @@ StepAxis AxisOfStep(const PairStudy& study, int step)
 TEST_CASE("Each axis step draws its axis and both projection intervals where the shapes project", "[painter]")
 {
     int checked = 0;
-    for (const std::string& file : TutorialScenes())
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
         for (StepView view : kViews)
         {
@@ -292,13 +277,9 @@ TEST_CASE("The verdict's short title says what its sentence says, in every lesso
     int checked = 0;
     int touching = 0;
     int worldMisses = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
-        if (entry.path().extension() != ".json")
-        {
-            continue;
-        }
-        SceneResult loaded = LoadScene(entry.path().string(), SceneOptions{true});
+        SceneResult loaded = LoadScene(file, SceneOptions{true});
         REQUIRE(loaded.Ok());
         // Where the figure and the app show it: a world's scene after its view's steps.
         REQUIRE(SimulateScene(loaded.scene, loaded.scene.view.simSteps).empty());
@@ -312,7 +293,7 @@ TEST_CASE("The verdict's short title says what its sentence says, in every lesso
             const PairStudy& study = setup.study;
             const std::string sentence = DescribeStep(loaded.scene, study, study.VerdictStep());
             const std::string title = StepTitle(loaded.scene, study, study.VerdictStep());
-            INFO(entry.path().filename().string() << (view == StepView::Textbook ? " textbook" : " faces"));
+            INFO(std::filesystem::path(file).filename().string() << (view == StepView::Textbook ? " textbook" : " faces"));
             INFO("sentence: " << sentence);
             INFO("title: " << title);
             auto says = [](const std::string& text, const std::string& words) {
@@ -815,7 +796,7 @@ TEST_CASE("Numbers as figures print them: no -0, exponents as written, full valu
 TEST_CASE("Caption lines never split a pair of numbers", "[painter]")
 {
     int lines = 0;
-    for (const std::string& file : TutorialScenes())
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
         for (StepView view : kViews)
         {
@@ -849,7 +830,7 @@ TEST_CASE("Caption lines never split a pair of numbers", "[painter]")
 
 TEST_CASE("The caption of a step states the trace's numbers", "[painter]")
 {
-    for (const std::string& file : TutorialScenes())
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
         for (StepView view : kViews)
         {
@@ -969,7 +950,7 @@ TEST_CASE("A layer that is off draws nothing, and each layer draws only its own 
         {kLayerVoronoi, {"voronoi", "labels"}},
     };
     std::set<std::string> seen;
-    for (const std::string& file : TutorialScenes())
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
         const Scene scene = Load(file);
         FigureSetup setup = SetUpFigure(scene, {});
@@ -1001,7 +982,7 @@ TEST_CASE("A layer that is off draws nothing, and each layer draws only its own 
 TEST_CASE("The separating line of an early exit lies in the gap, across the axis", "[painter]")
 {
     int checked = 0;
-    for (const std::string& file : TutorialScenes())
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
         for (StepView view : kViews)
         {
@@ -1042,7 +1023,7 @@ TEST_CASE("The separating line of an early exit lies in the gap, across the axis
 TEST_CASE("The verdict draws the MTV arrow to B moved out, and a dot on every contact point", "[painter]")
 {
     int arrows = 0;
-    for (const std::string& file : TutorialScenes())
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
         const Scene scene = Load(file);
         FigureSetup setup = SetUpFigure(scene, {});
@@ -1095,7 +1076,7 @@ TEST_CASE("The verdict draws the MTV arrow to B moved out, and a dot on every co
 TEST_CASE("The time bar marks each sweep axis's entry time", "[painter]")
 {
     int checked = 0;
-    for (const std::string& file : TutorialScenes())
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
         for (StepView view : kViews)
         {
@@ -1218,7 +1199,7 @@ TEST_CASE("A hit's verdict marks the latest entry and the earliest exit of all t
     // The tutorial scenes that sweep (a ray and a round bullet through a crate among them), and random pairs, a
     // circle against a polygon half of the time: the time bar's numbers against the window computed here.
     std::vector<Scene> scenes;
-    for (const std::string& file : TutorialScenes())
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
         scenes.push_back(Load(file));
     }
@@ -1278,7 +1259,7 @@ TEST_CASE("A hit's verdict marks the latest entry and the earliest exit of all t
 TEST_CASE("A textbook sweep axis entered before the step says that entry, where the time bar marks it", "[painter]")
 {
     int checked = 0;
-    for (const std::string& file : TutorialScenes())
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
         const Scene scene = Load(file);
         FigureSetup setup = SetUpView(scene, StepView::Textbook);
@@ -1370,17 +1351,7 @@ TEST_CASE("Labels of the example figures do not cover each other, concave pairs 
 {
     // Every scene of a pair, in every folder of tutorials/scenes, in the figure a pair gets by default (the app
     // opens a scene without a view so): a concave pair's is the test piece by piece.
-    std::vector<std::string> files;
-    for (const auto& entry :
-         std::filesystem::recursive_directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
-    {
-        if (entry.path().extension() == ".json")
-        {
-            files.push_back(entry.path().string());
-        }
-    }
-    std::sort(files.begin(), files.end());
-    for (const std::string& file : files)
+    for (const std::string& file : testing::TutorialSceneFiles(true))
     {
         Scene scene = Load(file);
         if (scene.bodies.size() < 2)
@@ -2057,13 +2028,9 @@ TEST_CASE("The number line's title fits the width of the app's smallest canvas i
     // line ran off the figure's edge, "deciding axis 4: projections on the normal of B's edge 3 (nu". Each text of
     // the panel, measured as the canvas measures it, lies inside the figure.
     int checked = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
-        if (entry.path().extension() != ".json")
-        {
-            continue;
-        }
-        const Scene scene = painter_test::LoadSimulated(entry.path().string());
+        const Scene scene = painter_test::LoadSimulated(file);
         for (const StepView view : {StepView::Textbook, StepView::Faces})
         {
             FigureOptions options;
@@ -2085,7 +2052,7 @@ TEST_CASE("The number line's title fits the width of the app's smallest canvas i
                     {
                         continue;
                     }
-                    INFO(entry.path().filename().string() << (view == StepView::Textbook ? " textbook" : " faces")
+                    INFO(std::filesystem::path(file).filename().string() << (view == StepView::Textbook ? " textbook" : " faces")
                                                           << " step " << k + 1 << ": \"" << c->text << "\"");
                     const ScreenPoint size = canvas.MeasureText(c->text, c->style);
                     CHECK(c->points[0].x >= 0.0f);
@@ -2165,13 +2132,9 @@ TEST_CASE("The ends on a number line are written with as many decimals each, in 
     };
     int lines = 0;
     int mixedBefore = 0; // lines whose ends FormatNumber alone would write with different decimals
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
-        if (entry.path().extension() != ".json")
-        {
-            continue;
-        }
-        SceneResult loaded = LoadScene(entry.path().string(), SceneOptions{true});
+        SceneResult loaded = LoadScene(file, SceneOptions{true});
         REQUIRE(loaded.Ok());
         REQUIRE(SimulateScene(loaded.scene, loaded.scene.view.simSteps).empty());
         for (const StepView view : {StepView::Textbook, StepView::Faces})
@@ -2196,7 +2159,7 @@ TEST_CASE("The ends on a number line are written with as many decimals each, in 
                 {
                     continue;
                 }
-                INFO(entry.path().filename().string() << " step " << step + 1);
+                INFO(std::filesystem::path(file).filename().string() << " step " << step + 1);
                 std::set<int> counts;
                 std::set<int> countsAlone;
                 for (const std::string& end : ends)

@@ -3,6 +3,8 @@
 // ("a x b = c", "a + b = c", "1 / (a + b + c) = d") is redone by hand from the numbers as printed and must give the
 // printed result to within one in its last printed digit. The sentences come from every lesson scene with a world,
 // stepped, each pair of bodies in turn; the oracle is the arithmetic on the printed text alone.
+#include "support/scene_files.h"
+
 #include <satviz/render/describe.h>
 #include <satviz/render/response_steps.h>
 #include <satviz/scene.h>
@@ -171,17 +173,13 @@ std::vector<Check> Computations(const std::string& sentence)
 std::vector<std::string> WorldScenes()
 {
     std::vector<std::string> files;
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes"))
+    for (const std::string& file : testing::TutorialSceneFiles())
     {
-        if (entry.path().extension() != ".json")
-        {
-            continue;
-        }
-        std::ifstream in(entry.path());
+        std::ifstream in(file);
         const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         if (text.find("\"world\"") != std::string::npos)
         {
-            files.push_back(entry.path().string());
+            files.push_back(file);
         }
     }
     return files;
