@@ -1807,6 +1807,34 @@ std::string CheckCsvDirectory(const std::string& directory)
 constexpr const char* kQuickNotice =
     "--quick: tiny pools and one round: these figures only show that the benchmark runs; they are not measurements";
 
+// Before a run: the settings' mistake (`settingsError`) or, with --csv, the directory's, as one line naming it on
+// stderr; true when there is none and the run may start.
+bool ReadyToRun(const std::string& settingsError, const std::string& csv)
+{
+    std::string error = settingsError;
+    if (error.empty() && !csv.empty())
+    {
+        error = CheckCsvDirectory(csv);
+    }
+    if (!error.empty())
+    {
+        std::fprintf(stderr, "satviz-bench: %s\n", error.c_str());
+        return false;
+    }
+    return true;
+}
+
+// The heading of a run: the machine and the command, then with --quick `quickNotice`, that its figures are not
+// measurements.
+void PrintHeading(int argc, char** argv, bool quick, const char* quickNotice)
+{
+    PrintMachine(argc, argv);
+    if (quick)
+    {
+        std::printf("%s\n\n", quickNotice);
+    }
+}
+
 // What --help says the benchmark compares satviz with; the last line tells which peers this build has.
 std::string PeersHelp()
 {
@@ -1890,20 +1918,15 @@ int main(int argc, char** argv)
         {
             c.rounds = s.rounds;
         }
-        if (const std::string error = bench::CheckConcaveBenchSettings(c); !error.empty())
+        if (!ReadyToRun(bench::CheckConcaveBenchSettings(c), ""))
         {
-            std::fprintf(stderr, "satviz-bench: %s\n", error.c_str());
             return 2;
         }
         if (quick)
         {
             c = bench::QuickConcaveBenchSettings(c);
         }
-        PrintMachine(argc, argv);
-        if (quick)
-        {
-            std::printf("%s\n\n", kQuickNotice);
-        }
+        PrintHeading(argc, argv, quick, kQuickNotice);
         bench::RunConcaveBench(c);
         return 0;
     }
@@ -1915,18 +1938,9 @@ int main(int argc, char** argv)
         {
             w.rounds = s.rounds;
         }
-        if (const std::string error = bench::CheckWorldBenchSettings(w); !error.empty())
+        if (!ReadyToRun(bench::CheckWorldBenchSettings(w), csv))
         {
-            std::fprintf(stderr, "satviz-bench: %s\n", error.c_str());
             return 2;
-        }
-        if (!csv.empty())
-        {
-            if (const std::string error = CheckCsvDirectory(csv); !error.empty())
-            {
-                std::fprintf(stderr, "satviz-bench: %s\n", error.c_str());
-                return 2;
-            }
         }
         if (quick)
         {
@@ -1950,26 +1964,14 @@ int main(int argc, char** argv)
             }
             return 0;
         }
-        PrintMachine(argc, argv);
-        if (quick)
-        {
-            std::printf("--quick: tiny scenes, few steps and one round: these figures only show that the benchmark "
-                        "runs; they are not measurements\n\n");
-        }
+        PrintHeading(argc, argv, quick,
+                     "--quick: tiny scenes, few steps and one round: these figures only show that the benchmark "
+                     "runs; they are not measurements");
         return bench::RunWorldBench(w) ? 0 : 1;
     }
-    if (const std::string error = CheckSettings(s); !error.empty())
+    if (!ReadyToRun(CheckSettings(s), csv))
     {
-        std::fprintf(stderr, "satviz-bench: %s\n", error.c_str());
         return 2;
-    }
-    if (!csv.empty())
-    {
-        if (const std::string error = CheckCsvDirectory(csv); !error.empty())
-        {
-            std::fprintf(stderr, "satviz-bench: %s\n", error.c_str());
-            return 2;
-        }
     }
     if (quick)
     {
@@ -1981,11 +1983,7 @@ int main(int argc, char** argv)
         s.nearRounds = 1;
     }
 
-    PrintMachine(argc, argv);
-    if (quick)
-    {
-        std::printf("%s\n\n", kQuickNotice);
-    }
+    PrintHeading(argc, argv, quick, kQuickNotice);
     Rng rng(s.seed);
     const std::vector<Query> queries = Queries();
     std::map<int, Timing> nearTimings;
