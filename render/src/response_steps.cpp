@@ -49,19 +49,6 @@ std::string Result(double byHand, double value)
     return std::fabs(byHand - Shown(value)) <= LastDigit(text) * (1.0 + 1e-9) ? text : N(byHand);
 }
 
-const ContactPointSolve* LastPass(const ContactSolveTrace& trace, int point)
-{
-    const ContactPointSolve* last = nullptr;
-    for (const ContactPointSolve& pass : trace.passes)
-    {
-        if (pass.point == point && pass.pass >= 0)
-        {
-            last = &pass;
-        }
-    }
-    return last;
-}
-
 const WorldContact* FindWorldContact(const World& world, int a, int b)
 {
     for (const WorldContact& c : world.contacts)
@@ -113,6 +100,19 @@ std::string FormatResponseVector(Vec2 v)
     const double scale = std::max(std::fabs(v.x), std::fabs(v.y));
     return "(" + FormatNumber(Clean(v.x, scale), kResponseDigits) + ", " +
            FormatNumber(Clean(v.y, scale), kResponseDigits) + ")";
+}
+
+const ContactPointSolve* LastPass(const ContactSolveTrace& trace, int point)
+{
+    const ContactPointSolve* last = nullptr;
+    for (const ContactPointSolve& pass : trace.passes)
+    {
+        if (pass.point == point && pass.pass >= 0)
+        {
+            last = &pass;
+        }
+    }
+    return last;
 }
 
 std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& record)

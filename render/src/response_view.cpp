@@ -35,19 +35,6 @@ const WorldContact* ChosenContact(const SimRecord& sim)
     return nullptr;
 }
 
-const ContactPointSolve* LastPass(const ContactSolveTrace& trace, int point)
-{
-    const ContactPointSolve* last = nullptr;
-    for (const ContactPointSolve& pass : trace.passes)
-    {
-        if (pass.point == point && pass.pass >= 0)
-        {
-            last = &pass;
-        }
-    }
-    return last;
-}
-
 } // namespace
 
 void PaintResponseScene(Canvas& canvas, LabelPlacer& labels, const View& view, const Scene& scene, const SimRecord& sim)

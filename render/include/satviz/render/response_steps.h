@@ -45,6 +45,10 @@ struct ResponsePasses
 /// before and after. When the pair had no contact in the step, one step says so (and when they hit within it).
 std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& record);
 
+/// The last velocity pass of the solver over contact point `point` in `trace` (a time-ordered hit's own solve is not
+/// a pass); nullptr when it has none.
+const ContactPointSolve* LastPass(const ContactSolveTrace& trace, int point);
+
 /// The normal impulse of every velocity pass over contact point `point` of the last step (empty without a contact).
 ResponsePasses ResponsePassesOf(const SimRecord& record, int point);
 
