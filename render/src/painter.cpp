@@ -2760,32 +2760,16 @@ class Painter
         }
     }
 
-    // Greedy word wrap to the band width, between the words of WrapWords only: a bracketed pair such as
-    // "[-0.25, 0.25]" or "(0.96, 0.30)" is one word, so that no number is split from its partner across lines.
+    // The band's lines, wrapped by WrapLines as every text of the figures and the app is: between words only, so
+    // that a bracketed pair such as "(0.96, 0.30)" or a number and its unit ("0.417 s)") is never split across lines.
     std::vector<std::string> Wrap(const std::string& text, TextStyle style) const
     {
-        const std::vector<std::string> words = WrapWords(text);
-        std::vector<std::string> lines;
-        std::string line;
+        if (text.empty())
+        {
+            return {};
+        }
         const float maxWidth = Width() - 2.0f * kPad - 4.0f;
-        for (const std::string& word : words)
-        {
-            const std::string candidate = line.empty() ? word : line + " " + word;
-            if (!line.empty() && m_canvas.MeasureText(candidate, style).x > maxWidth)
-            {
-                lines.push_back(line);
-                line = word;
-            }
-            else
-            {
-                line = candidate;
-            }
-        }
-        if (!line.empty())
-        {
-            lines.push_back(line);
-        }
-        return lines;
+        return WrapLines(text, maxWidth, [&](const std::string& s) { return m_canvas.MeasureText(s, style).x; });
     }
 
     // The caption's lines and where its band ends, worked out before the labels are placed so that none goes under

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <iterator>
 
 namespace satviz
 {
@@ -41,11 +42,45 @@ size_t NumberTupleEnd(const std::string& text, size_t open)
     return std::string::npos;
 }
 
+// Whether `word`, less the punctuation after it ("s)" or "m/s,"), is a unit of measure.
+bool IsUnit(const std::string& word)
+{
+    static const char* const kUnits[] = {"s",   "m",     "m/s",     "m/s^2", "m/s\xC2\xB2", "rad", "rad/s", "kg",
+                                         "N",   "J",     "px",      "ms",    "mm",            "cm",  "degrees",
+                                         "m^2", "kg/m^2"};
+    const size_t end = word.find_last_not_of(")],.;:*");
+    if (end == std::string::npos)
+    {
+        return false;
+    }
+    const std::string bare = word.substr(0, end + 1);
+    return std::any_of(std::begin(kUnits), std::end(kUnits), [&](const char* unit) { return bare == unit; });
+}
+
+// Whether `word` closes a number glued to a unit after it: a number ("0.417", "-3"), or a number and a unit that a
+// second part of the unit may follow ("0.5 N" of "0.5 N s", "0.1 kg" of "0.1 kg m^2").
+bool TakesUnit(const std::string& word)
+{
+    if (!word.empty() && std::isdigit(static_cast<unsigned char>(word.back())))
+    {
+        return true;
+    }
+    const size_t space = word.rfind(' ');
+    if (space == std::string::npos || space == 0 ||
+        !std::isdigit(static_cast<unsigned char>(word[space - 1])))
+    {
+        return false;
+    }
+    const std::string last = word.substr(space + 1);
+    return last == "N" || last == "kg";
+}
+
 // A word wider than the line, in pieces that fit, so that nothing of it is cut at the panel's edge. A web address
 // breaks after a '/' or before a '.', '-', '?', '#', '&', '=' or '_', where a reader still sees one address going
 // on; any other word after a ',', ':', ';', ')' or ']', before a bracket or at a space (an equation kept as one
 // word has them), as in "[-0.2,0.2],", and inside a pair of numbers only when nothing else fits; failing all of
-// those after the last character that fits (never inside a UTF-8 character).
+// those after the last character that fits (never inside a UTF-8 character). A number is not parted from its
+// unit unless nothing else fits.
 std::vector<std::string> BreakWord(const std::string& word, float width,
                                    const std::function<float(const std::string&)>& measure)
 {
@@ -61,6 +96,15 @@ std::vector<std::string> BreakWord(const std::string& word, float width,
             {
                 inTuple[j] = true;
             }
+        }
+    }
+    // A space between a number and its unit ("0.0245 N s" at the end of an equation): kept too, unless nothing
+    // else fits.
+    for (size_t i = 1; i < word.size(); ++i)
+    {
+        if (word[i] == ' ' && TakesUnit(word.substr(0, i)) && IsUnit(word.substr(i + 1, word.find(' ', i + 1) - i - 1)))
+        {
+            inTuple[i] = true;
         }
     }
     std::vector<std::string> pieces;
@@ -151,9 +195,11 @@ std::vector<std::string> WrapWords(const std::string& text)
         }
         const std::string word = text.substr(start, end - start);
         // "t = 0.438" stays on one line: "=" joins the words on both sides of it.
+        // "0.417 s)" and "3 m/s" too: a number and its unit are read as one.
         const bool glued = (inTuple && start <= tupleEnd) || word == "=" ||
                            (!words.empty() && words.back().size() >= 2 &&
-                            words.back().compare(words.back().size() - 2, 2, " =") == 0);
+                            words.back().compare(words.back().size() - 2, 2, " =") == 0) ||
+                           (!words.empty() && IsUnit(word) && TakesUnit(words.back()));
         if (glued && !words.empty() && !word.empty())
         {
             words.back() += " " + word;

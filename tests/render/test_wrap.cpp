@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Wrapped text loses nothing: every line of every lesson, wrapped at many widths, gives back all its characters in
 // order, each line fits the width, and a pair or list of numbers ("(0.96, 0.28)", "[-0.25, 0.5]") narrower than the
-// line stays on one line. Prose in parentheses that starts with a number wraps like any prose.
+// line stays on one line, and so does a number with its unit ("0.417 s)"). Prose in parentheses that starts with a
+// number wraps like any prose.
 
 #include <satviz/render/wrap.h>
 
@@ -54,6 +55,44 @@ std::vector<std::string> NumberBrackets(const std::string& text)
             }
         }
         ++i;
+    }
+    return found;
+}
+
+// The numbers with a unit after them in `text` ("0.417 s", "3 m/s"), found by a scan of their own: a run of digits
+// and points that starts after a space, a bracket or the start, a space, then one of a few units ended by a space,
+// punctuation or the end.
+std::vector<std::string> NumbersWithUnits(const std::string& text)
+{
+    static const char* const kUnits[] = {"m/s", "rad/s", "kg", "rad", "s", "m", "N"};
+    std::vector<std::string> found;
+    for (size_t i = 0; i < text.size(); ++i)
+    {
+        if (!(text[i] >= '0' && text[i] <= '9') || (i > 0 && std::strchr(" ([", text[i - 1]) == nullptr))
+        {
+            continue;
+        }
+        size_t j = i;
+        while (j < text.size() && ((text[j] >= '0' && text[j] <= '9') || text[j] == '.'))
+        {
+            ++j;
+        }
+        if (j >= text.size() || text[j] != ' ' || text[j - 1] == '.') // "1. m": a list's number, no measure
+        {
+            continue;
+        }
+        for (const char* unit : kUnits)
+        {
+            const size_t n = std::strlen(unit);
+            const size_t after = j + 1 + n;
+            if (text.compare(j + 1, n, unit) == 0 &&
+                (after == text.size() || std::strchr(" ),.;:", text[after]) != nullptr))
+            {
+                found.push_back(text.substr(i, after - i));
+                break;
+            }
+        }
+        i = j;
     }
     return found;
 }
@@ -115,6 +154,21 @@ void CheckWrapped(const std::string& text, float width)
         CHECK(std::any_of(lines.begin(), lines.end(),
                           [&](const std::string& line) { return line.find(found) != std::string::npos; }));
     }
+    // So do a number and its unit.
+    for (const std::string& found : NumbersWithUnits(text))
+    {
+        // Measured with the brackets and punctuation that touch it, as "(0.2 m),", which go on its line too.
+        const size_t at = text.find(found);
+        const size_t from = text.rfind(' ', at) == std::string::npos ? 0 : text.rfind(' ', at) + 1;
+        const size_t to = std::min(text.find(' ', at + found.size()), text.size());
+        if (Measure(text.substr(from, to - from)) > width)
+        {
+            continue;
+        }
+        INFO("the number and unit " << found);
+        CHECK(std::any_of(lines.begin(), lines.end(),
+                          [&](const std::string& line) { return line.find(found) != std::string::npos; }));
+    }
 }
 
 } // namespace
@@ -138,6 +192,22 @@ TEST_CASE("Wrapped text keeps every character: prose in brackets wraps, an over-
         CheckWrapped(prose, width);
         CheckWrapped(code, width);
     }
+}
+
+TEST_CASE("A number stays on the line of its unit", "[wrap]")
+{
+    const std::string header = "After 25 steps of the simulation (time 0.417 s)";
+    const std::string speeds = "A at 3 m/s to the right at the start, an impulse of 0.5 N s, spin 1.57 rad/s.";
+    REQUIRE(NumbersWithUnits(header) == std::vector<std::string>{"0.417 s"});
+    REQUIRE(NumbersWithUnits(speeds) == std::vector<std::string>{"3 m/s", "0.5 N", "1.57 rad/s"});
+    for (float width = 35.0f; width <= 400.0f; width += 7.0f)
+    {
+        CheckWrapped(header, width);
+        CheckWrapped(speeds, width);
+    }
+    // Not every word after a number is a unit: "box 1 moves" wraps between "1" and "moves".
+    CHECK(WrapWords("box 1 moves").size() == 3);
+    CHECK(WrapWords("0.5 N s").size() == 1);
 }
 
 TEST_CASE("Every line of every lesson wraps with nothing lost at any width", "[wrap]")

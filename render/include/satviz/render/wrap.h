@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // satviz render: text wrapped between words only, for the figures' captions and the app's panels alike, so that a
-// number is never broken inside its digits nor split from its partner in a bracketed pair.
+// number is never broken inside its digits nor split from its partner in a bracketed pair or from its unit.
 #pragma once
 
 #include <functional>
@@ -11,8 +11,8 @@ namespace satviz
 {
 
 /// The words of `text` that a line may break between: the text split at its spaces, where a bracketed pair or list
-/// of numbers ("[-0.25, 0.25]", "(0.96, 0.30)": numbers, commas, spaces and signs only) and an equation's sides
-/// ("t = 0.438") stay one word. Prose in parentheses splits, even when it opens with a number ("(0.1645 in full;").
+/// of numbers ("[-0.25, 0.25]", "(0.96, 0.30)": numbers, commas, spaces and signs only), an equation's sides
+/// ("t = 0.438") and a number with its unit ("0.417 s)", "3 m/s", "0.5 N s") stay one word. Prose in parentheses splits, even when it opens with a number ("(0.1645 in full;").
 std::vector<std::string> WrapWords(const std::string& text);
 
 /// `text` broken into lines no wider than `width` as `measure` measures them, greedily, between the words of
