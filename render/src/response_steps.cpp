@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <functional>
 
 namespace satviz
 {
@@ -39,14 +41,94 @@ double LastDigit(const std::string& text)
     return std::pow(10.0, exponent - decimals);
 }
 
-// The result of a computation a sentence writes out ("0.50 x 0.0161 = ..."), `byHand` being the computation redone
-// from its printed numbers: the solver's value when that agrees with it to within one in its last digit, else
-// `byHand`, so that a student redoing it gets the printed result. The rounding of the numbers before it can move a
-// product of small numbers by more than its last digit (0.50 x 0.0161 = 0.00805, the solver's 0.00803).
-std::string Result(double byHand, double value)
+// `value` printed as N prints it with `extra` more decimals, the zeros this adds at its end dropped again (2.6 stays
+// "2.60", 1.0472 becomes "1.0472"); a number N prints with an exponent stays as N prints it.
+std::string Finer(double value, int extra)
 {
-    const std::string text = N(value);
-    return std::fabs(byHand - Shown(value)) <= LastDigit(text) * (1.0 + 1e-9) ? text : N(byHand);
+    const std::string base = N(value);
+    const size_t point = base.find('.');
+    if (extra == 0 || point == std::string::npos || base.find('e') != std::string::npos || Shown(value) == 0.0)
+    {
+        return base;
+    }
+    const int decimals = static_cast<int>(base.size() - point - 1);
+    char buffer[64];
+    std::snprintf(buffer, sizeof(buffer), "%.*f", decimals + extra, value);
+    std::string text = buffer;
+    while (static_cast<int>(text.size() - point - 1) > decimals && text.back() == '0')
+    {
+        text.pop_back();
+    }
+    return text;
+}
+
+// A computation a sentence writes out, as printed: its numbers and its result.
+struct Written
+{
+    std::vector<std::string> numbers;
+    std::string result;
+};
+
+// The numbers of a computation ("2.60 x 1.0472 = 2.723"), printed with as few more digits as it takes for `redo`
+// on the numbers as printed, rounded to the digits of the result, to give the printed result, the solver's `value`:
+// a student checking it by hand gets what is printed. Where no number of digits does (a value on a rounding edge),
+// the numbers as N prints them and the result redone from them.
+Written Computation(const std::vector<double>& numbers, double value,
+                    const std::function<double(const std::vector<double>&)>& redo)
+{
+    const std::string result = N(value);
+    Written written;
+    for (int extra = 0; extra <= 6; ++extra)
+    {
+        written.numbers.clear();
+        std::vector<double> shown;
+        for (const double x : numbers)
+        {
+            written.numbers.push_back(Finer(x, extra));
+            shown.push_back(std::strtod(written.numbers.back().c_str(), nullptr));
+        }
+        if (std::fabs(redo(shown) - Shown(value)) <= 0.5 * LastDigit(result) * (1.0 + 1e-9))
+        {
+            written.result = result;
+            return written;
+        }
+    }
+    written.numbers.clear();
+    std::vector<double> shown;
+    for (const double x : numbers)
+    {
+        written.numbers.push_back(N(x));
+        shown.push_back(Shown(x));
+    }
+    written.result = N(redo(shown));
+    return written;
+}
+
+double Product(const std::vector<double>& x)
+{
+    return x[0] * x[1];
+}
+
+double Sum(const std::vector<double>& x)
+{
+    double sum = 0.0;
+    for (const double term : x)
+    {
+        sum += term;
+    }
+    return sum;
+}
+
+double Reciprocal(const std::vector<double>& x)
+{
+    return 1.0 / Sum(x);
+}
+
+// "a x b = c", as Computation prints it.
+std::string Times(double a, double b, double value)
+{
+    const Written w = Computation({a, b}, value, Product);
+    return w.numbers[0] + " x " + w.numbers[1] + " = " + w.result;
 }
 
 const WorldContact* FindWorldContact(const World& world, int a, int b)
@@ -194,11 +276,10 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
         const double rnA = Cross(rA, trace.normal), rnB = Cross(rB, trace.normal);
         turning = rnA * rnA * startA.invInertia + rnB * rnB * startB.invInertia;
     }
-    std::string mass =
-        "m_eff = 1 / (1/m" + a + " + 1/m" + b + " + (rA x n)^2/IA + (rB x n)^2/IB) = 1 / (" + N(bodyA.invMass) + " + " +
-        N(bodyB.invMass) + " + " + N(turning) +
-        ") = " + Result(1.0 / (Shown(bodyA.invMass) + Shown(bodyB.invMass) + Shown(turning)), trace.normalMass[0]) +
-        " kg";
+    const Written inverse = Computation({bodyA.invMass, bodyB.invMass, turning}, trace.normalMass[0], Reciprocal);
+    std::string mass = "m_eff = 1 / (1/m" + a + " + 1/m" + b + " + (rA x n)^2/IA + (rB x n)^2/IB) = 1 / (" +
+                       inverse.numbers[0] + " + " + inverse.numbers[1] + " + " + inverse.numbers[2] +
+                       ") = " + inverse.result + " kg";
     mass += bodyA.invMass == 0.0 || bodyB.invMass == 0.0 ? " (a static body adds 0)." : ".";
     steps.push_back({"Effective mass", mass});
 
@@ -206,9 +287,9 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
     std::string target;
     if (trace.bounceSpeed[0] > 0.0)
     {
-        target = "e = " + N(trace.restitution) + " and the approach " + N(-vn) + " m/s is above the " + N(threshold) +
-                 " m/s threshold: the point is to leave at e x " + N(-vn) + " = " +
-                 Result(Shown(trace.restitution) * Shown(-vn), trace.bounceSpeed[0]) + " m/s.";
+        const Written leave = Computation({trace.restitution, -vn}, trace.bounceSpeed[0], Product);
+        target = "e = " + leave.numbers[0] + " and the approach " + N(-vn) + " m/s is above the " + N(threshold) +
+                 " m/s threshold: the point is to leave at e x " + leave.numbers[1] + " = " + leave.result + " m/s.";
     }
     else
     {
@@ -251,16 +332,14 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
         // The restitution impulse is the factor times jn unless that would return more than the contact alone needs
         // for its bounce, or give the bodies more energy than they had: then it is less, and the sentence says so.
         const double asked = trace.restitutionFactor[0] * jn;
-        const std::string askedText = Result(Shown(trace.restitutionFactor[0]) * Shown(jn), asked);
-        const bool whole = std::fabs(jr - trace.restitutionFactor[0] * jn) <= 1e-9 * std::max(jr, 1e-300);
-        std::string bounce = "Restitution adds " + N(trace.restitutionFactor[0]) + " x " + N(jn) + " = ";
-        bounce += whole ? askedText + " N s"
-                        : askedText + " N s, held to " + N(jr) +
+        const bool whole = std::fabs(jr - asked) <= 1e-9 * std::max(jr, 1e-300);
+        std::string bounce = "Restitution adds " + Times(trace.restitutionFactor[0], jn, asked);
+        bounce += whole ? " N s"
+                        : " N s, held to " + N(jr) +
                               " N s: no more than the contact alone needs for its bounce, nor than would give the "
                               "bodies energy";
-        const std::string jrText = whole ? askedText : N(jr);
-        const double shownJr = std::strtod(jrText.c_str(), nullptr);
-        bounce += ": in all j = " + N(jn) + " + " + jrText + " = " + Result(Shown(jn) + shownJr, jn + jr) + " N s.";
+        const Written all = Computation({jn, jr}, jn + jr, Sum);
+        bounce += ": in all j = " + all.numbers[0] + " + " + all.numbers[1] + " = " + all.result + " N s.";
         steps.push_back({"Bounce", bounce});
     }
 
@@ -283,18 +362,17 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
         const double jnStart = before != nullptr ? before->normalImpulse : trace.warmNormal[pass.point];
         const std::string startJn =
             N(jnStart) == N(jnEnd) ? "" : ", with jn as the last pass began (friction comes first in a pass)";
-        const std::string limit = Result(Shown(material.staticFriction) * Shown(jnStart), pass.staticLimit);
+        const Written limit = Computation({material.staticFriction, jnStart}, pass.staticLimit, Product);
         // Printed alike, the two differ beyond the digits shown: saying so keeps "beyond" from reading as a slip.
-        const std::string close = N(needed) == limit ? " (by less than the digits shown)" : "";
+        const std::string close = N(needed) == limit.result ? " (by less than the digits shown)" : "";
         std::string text = "Stopping the slip (" + N(pass.tangentSpeed) + " m/s) needs |jt| = " + N(needed) +
-                           " N s; the static limit is mu_s jn = " + N(material.staticFriction) + " x " + N(jnStart) +
-                           " = " + limit + " N s" + startJn + ": ";
+                           " N s; the static limit is mu_s jn = " + limit.numbers[0] + " x " + limit.numbers[1] +
+                           " = " + limit.result + " N s" + startJn + ": ";
         text += pass.stuck
                     ? "within it" + close + ", so the point sticks, and friction takes " +
                           N(std::fabs(pass.tangentImpulse)) + " N s."
                     : "beyond it" + close + ", so the point slides, and friction gives the dynamic limit mu jn = " +
-                          N(material.friction) + " x " + N(jnStart) + " = " +
-                          Result(Shown(material.friction) * Shown(jnStart), pass.dynamicLimit) + " N s.";
+                          Times(material.friction, jnStart, pass.dynamicLimit) + " N s.";
         return text;
     };
     if (last != nullptr)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The response's sentences checked as a student checks them: every product and sum a sentence writes out
 // ("a x b = c", "a + b = c", "1 / (a + b + c) = d") is redone by hand from the numbers as printed and must give the
-// printed result to within one in its last printed digit. The sentences come from every lesson scene with a world,
+// printed result once rounded to its printed digits. The sentences come from every lesson scene with a world,
 // stepped, each pair of bodies in turn; the oracle is the arithmetic on the printed text alone.
 #include "support/scene_files.h"
 
@@ -205,8 +205,8 @@ TEST_CASE("The oracle reads the computations a sentence writes out", "[world][re
 
 TEST_CASE("Every computation in the response's sentences checks by hand at the printed precision", "[world][response]")
 {
-    // A student redoes "0.50 x 0.0102 = 0.00511" with the numbers printed: the result must come out as printed, to
-    // within one in its last digit. "jn = 0.01" beside "mu_s jn = 0.00511" could not (0.5 x 0.01 = 0.005).
+    // A student redoes "0.50 x 0.0102 = 0.00511" with the numbers printed: the result must come out as printed,
+    // rounded to its last digit. "jn = 0.01" beside "mu_s jn = 0.00511" could not (0.5 x 0.01 = 0.005).
     const std::vector<std::string> files = WorldScenes();
     REQUIRE(files.size() >= 20);
     int checked = 0;
@@ -264,12 +264,14 @@ TEST_CASE("Every computation in the response's sentences checks by hand at the p
                         for (const Check& c : Computations(s.sentence))
                         {
                             ++checked;
+                            // Rounded to the printed digits, the computation redone by hand gives the printed
+                            // result: "2.60 x 1.047 = 2.723" does not (2.7222 is 2.722).
                             const double off = std::fabs(c.byHand - c.printed.value);
-                            if (off > c.printed.unit * 1.000001)
+                            if (off > c.printed.unit * 0.500001)
                             {
                                 INFO(file << " step " << step << ", " << s.title << ": " << s.sentence);
                                 INFO(c.what << " gives " << c.byHand << " by hand");
-                                CHECK(off <= c.printed.unit * 1.000001);
+                                CHECK(off <= c.printed.unit * 0.500001);
                             }
                         }
                     }
