@@ -215,10 +215,11 @@ void Panels::CanvasWindow()
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     m_app.PlaceCanvas({origin.x, origin.y}, static_cast<int>(size.x), static_cast<int>(size.y));
     const Viewer& viewer = m_app.GetViewer();
-    if (!m_canvasAnnounced)
+    if (!m_canvasAnnounced && size.x >= kMinCanvasWidth && size.y >= kMinCanvasHeight)
     {
         // One line for scripts that drive the window (the end-to-end test): where the canvas is, and its camera
-        // (a scene's own framing is scaled to the canvas), so that they can find a world point on the screen.
+        // (a scene's own framing is scaled to the canvas), so that they can find a world point on the screen. Said
+        // once the window has its least size: a canvas smaller than that is one the app is about to enlarge.
         const View& camera = viewer.Camera();
         std::printf("satviz: canvas at %.0f,%.0f size %dx%d camera %.17g,%.17g zoom %.17g\n", origin.x, origin.y,
                     viewer.CanvasWidth(), viewer.CanvasHeight(), camera.center.x, camera.center.y, camera.zoom);

@@ -350,10 +350,12 @@ namespace
 // Keeps the window no smaller than the panels, the lesson column while it is open and a canvas a figure can be
 // read on need: the window manager is told the limits, and a window already smaller (a lesson opened in a narrow
 // window, or no window manager to hold the limits) is enlarged.
-void KeepMinimumSize(GLFWwindow* window, bool lessonShown)
+// `barHeight` is the height of the menu and status bars: ImGui::GetFrameHeight() within a frame; before the first, the
+// default font's size and the style's padding, which is what it will be.
+void KeepMinimumSize(GLFWwindow* window, bool lessonShown, float barHeight)
 {
     static ImVec2 applied(0.0f, 0.0f);
-    const ImVec2 least = satviz::MinimumWindowSize(lessonShown, ImGui::GetFrameHeight());
+    const ImVec2 least = satviz::MinimumWindowSize(lessonShown, barHeight);
     const int width = static_cast<int>(std::ceil(least.x));
     const int height = static_cast<int>(std::ceil(least.y));
     if (least.x != applied.x || least.y != applied.y)
@@ -505,6 +507,9 @@ int main(int argc, char** argv)
     {
         app.SimPlay(true);
     }
+    // The window at its least size before the first frame, so that the first frame already lays out and frames the
+    // canvas it will keep (a canvas fitted to a 200 x 150 window would frame the scene for nothing).
+    KeepMinimumSize(window, app.LessonShown(), io.FontDefault->FontSize + 2.0f * ImGui::GetStyle().FramePadding.y);
 
     using Clock = std::chrono::steady_clock;
     Clock::time_point measureStart;
@@ -555,7 +560,7 @@ int main(int argc, char** argv)
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         app.Frame();
-        KeepMinimumSize(window, app.LessonShown());
+        KeepMinimumSize(window, app.LessonShown(), ImGui::GetFrameHeight());
         std::string exportTo;
         std::unique_ptr<satviz::FigureDrawing> drawing;
         satviz::FigureSetup exportSetup;
