@@ -138,7 +138,7 @@ SweepResultT<S> Sweep(const ShapeT<S>& a, const TransformT<S>& xfA, Vec2T<S> vA,
 /// Sweep without the contact points: the same status, time of impact, normal and axis, bit for bit, and a hit
 /// with no contacts (contactCount 0). For callers that need when and along which normal, not where: continuous
 /// collision that runs Collide at the time of impact anyway, and MoveAndSlide. Skips the contact points at the
-/// time of impact, about a quarter of a polygon sweep of 8-gons. Shapes overlapping at t = 0 carry the static
+/// time of impact, a clipping of the incident edge at the moved pose. Shapes overlapping at t = 0 carry the static
 /// manifold's depth, normal and axis, the same bits as Sweep's, but not its contact points (Sweep has them), which
 /// saves clipping the incident edge.
 /// With a non-null `trace`, the same trace as Sweep's.

@@ -66,8 +66,8 @@ ReferenceFace<S> ChooseReferenceFace(const PolygonT<S>& a, const TransformT<S>& 
 }
 
 /// Contact points from clipping, in the reference polygon's frame, with what the trace shows of the clipping.
-/// The arrays are valid up to their counts and left uninitialised beyond: zeroing the whole struct cost a block
-/// store (rep stos) per manifold, about a tenth of Collide's time for 8-gons.
+/// The arrays are valid up to their counts and left uninitialised beyond: zeroing the whole struct costs a block
+/// store (rep stos) per manifold, a large share of Collide's time for small polygons.
 template <typename S>
 struct ClipResult
 {

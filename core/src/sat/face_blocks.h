@@ -131,7 +131,8 @@ void RecordLanes(Tracer& tracer, const IncidentPolygon<S>& inc, int side, int sh
 /// whole: a polygon of at most 8 vertices keeps them inline, so the lanes past its last face read its own block and are
 /// masked out. A skipped face (anti-parallel to one already tested) and a NaN separation take no part. The recorder
 /// takes the faces from the lanes, in order, up to the face where the query stopped (the first separating one).
-/// Against ScanFaceBlocks with a branch per block, Collide of 8-gons took 0.97 of the time (satviz-bench).
+/// One branch for both blocks rather than one per block (ScanFaceBlocks): for so few faces the branch costs more
+/// than the lanes it would skip.
 template <int N, int kBlocks, typename S, typename Tracer>
 FaceQuery<S> SmallRefFaceQuery(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side, bool second,
                                Tracer& tracer)
