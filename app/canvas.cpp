@@ -203,7 +203,7 @@ void Panels::CanvasWindow()
     const float lessonWidth = m_app.LessonShown() ? kLessonWidth : 0.0f;
     const ImVec2 position(viewport->Pos.x + lessonWidth, viewport->Pos.y + top);
     const ImVec2 size(std::max(64.0f, viewport->Size.x - kPanelWidth - lessonWidth),
-                      std::max(64.0f, viewport->Size.y - 2.0f * top));
+                      std::max(64.0f, viewport->Size.y - top - StatusHeight()));
     ImGui::SetNextWindowPos(position);
     ImGui::SetNextWindowSize(size);
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0.0f, 0.0f));
@@ -215,7 +215,8 @@ void Panels::CanvasWindow()
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     m_app.PlaceCanvas({origin.x, origin.y}, static_cast<int>(size.x), static_cast<int>(size.y));
     const Viewer& viewer = m_app.GetViewer();
-    if (!m_canvasAnnounced && size.x >= kMinCanvasWidth && size.y >= kMinCanvasHeight)
+    const ImVec2 least = MinimumWindowSize(m_app.LessonShown(), top);
+    if (!m_canvasAnnounced && viewport->Size.x >= least.x && viewport->Size.y >= least.y)
     {
         // One line for scripts that drive the window (the end-to-end test): where the canvas is, and its camera
         // (a scene's own framing is scaled to the canvas), so that they can find a world point on the screen. Said

@@ -525,7 +525,7 @@ void Panels::SidePanel()
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     const float top = ImGui::GetFrameHeight();
     ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x - kPanelWidth, viewport->Pos.y + top));
-    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, viewport->Size.y - 2.0f * top));
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, viewport->Size.y - top - StatusHeight()));
     ImGui::Begin("##panel", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus | ClearedBackground());
@@ -1113,13 +1113,43 @@ void Panels::ResponseSteps()
 
 // [SECTION] Status bar, popups and help
 
+std::string Panels::StatusText() const
+{
+    const Viewer& viewer = m_app.GetViewer();
+    if (viewer.Studying())
+    {
+        return "Testing the pair (" + std::to_string(viewer.PairVertices(m_app.GetDocument().GetScene())) +
+               " vertices) on a worker thread: its traced queries take long at this size; the figure follows when "
+               "done";
+    }
+    return m_app.Status().empty()
+               ? "Drag a body to move it, shift-drag to turn it; arrows step through the test; F1 for help"
+               : m_app.Status();
+}
+
+// The status bar's text wrapped to the window's width, between words: at the smallest window a long message takes
+// two lines rather than being cut at the edge.
+static std::string StatusLines(const std::string& text)
+{
+    return WrapToWidth(text, std::max(1.0f, ImGui::GetMainViewport()->Size.x - 2.0f * kStatusPadding));
+}
+
+float Panels::StatusHeight() const
+{
+    const std::string lines = StatusLines(StatusText());
+    const float count = static_cast<float>(1 + std::count(lines.begin(), lines.end(), '\n'));
+    return std::max(ImGui::GetFrameHeight(), count * ImGui::GetFontSize() + 6.0f);
+}
+
 void Panels::StatusBar()
 {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    const float height = ImGui::GetFrameHeight();
+    const float height = StatusHeight();
     ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x, viewport->Pos.y + viewport->Size.y - height));
     ImGui::SetNextWindowSize(ImVec2(viewport->Size.x, height));
-    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8.0f, 3.0f));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(kStatusPadding, 3.0f));
+    // Dear ImGui keeps a window at least 32 pixels tall: a one-line bar would run off the bottom of the window.
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1.0f, 1.0f));
     ImGui::Begin("##status", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus);
@@ -1128,20 +1158,13 @@ void Panels::StatusBar()
     {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.2f, 0.05f, 1.0f));
     }
-    const Viewer& viewer = m_app.GetViewer();
-    const std::string studying =
-        "Testing the pair (" + std::to_string(viewer.PairVertices(m_app.GetDocument().GetScene())) +
-        " vertices) on a worker thread: its traced queries take long at this size; the figure follows when done";
-    ImGui::TextUnformatted(viewer.Studying()       ? studying.c_str()
-                           : m_app.Status().empty() ? "Drag a body to move it, shift-drag to turn it; arrows step "
-                                                     "through the test; F1 for help"
-                                                   : m_app.Status().c_str());
+    ImGui::TextUnformatted(StatusLines(StatusText()).c_str());
     if (error)
     {
         ImGui::PopStyleColor();
     }
     ImGui::End();
-    ImGui::PopStyleVar();
+    ImGui::PopStyleVar(2);
 }
 
 void Panels::Popups()
@@ -1325,7 +1348,7 @@ void Panels::LessonWindow()
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     const float top = ImGui::GetFrameHeight();
     ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x, viewport->Pos.y + top));
-    ImGui::SetNextWindowSize(ImVec2(kLessonWidth, viewport->Size.y - 2.0f * top));
+    ImGui::SetNextWindowSize(ImVec2(kLessonWidth, viewport->Size.y - top - StatusHeight()));
     const int current = m_app.CurrentLesson();
     const int count = static_cast<int>(m_app.Lessons().size());
     const Lesson& lesson = m_app.Lessons()[static_cast<size_t>(current)];

@@ -25,6 +25,9 @@ class App;
 /// Width of the lesson column on the left of the canvas, in pixels, while a lesson is open.
 constexpr float kLessonWidth = 440.0f;
 
+/// The status bar's padding left and right of its text, in pixels.
+constexpr float kStatusPadding = 8.0f;
+
 /// Width of the side panel on the right of the canvas, in pixels.
 constexpr float kPanelWidth = 380.0f;
 
@@ -95,6 +98,11 @@ class Panels
     void Materials(int selected);
     void Inspector();
     void StatusBar();
+    /// What the status bar says: the worker thread's notice, the last status, or a hint.
+    std::string StatusText() const;
+    /// The status bar's height: one line, or as many as its text needs at the window's width (the windows above
+    /// it end where it begins).
+    float StatusHeight() const;
     void Popups();
     void HelpOverlay();
     void LessonWindow();

@@ -2226,6 +2226,38 @@ TEST_CASE("Text in the panels wraps between words only: a number is never split,
     }
 }
 
+TEST_CASE("The status bar shows the whole of its message at the smallest window: a long one takes more lines",
+          "[app]")
+{
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    const float bar = ImGui::GetFrameHeight();
+    ImGui::GetIO().DisplaySize = MinimumWindowSize(false, bar);
+    const std::string file = "/home/student/satviz/my scenes/a rather long folder name/overlapping_boxes_copy.json";
+    for (const std::string& message :
+         {std::string("Drag a body to move it"), "Saved " + file + " (the view too: camera, pair and step)",
+          "Cannot read " + file + ": line 12, field \"bodies\": expected an array of bodies, got a number"})
+    {
+        h.app->SetStatus(message, true);
+        h.Frames(3);
+        const ImGuiWindow* status = ImGui::FindWindowByName("##status");
+        const ImGuiWindow* canvas = ImGui::FindWindowByName("##canvas");
+        const ImGuiWindow* panel = ImGui::FindWindowByName("##panel");
+        REQUIRE(status != nullptr);
+        REQUIRE(canvas != nullptr);
+        REQUIRE(panel != nullptr);
+        INFO(message << ": the bar is " << status->Size.x << " x " << status->Size.y << ", its text "
+                     << status->ContentSize.x << " x " << status->ContentSize.y);
+        // Its text within its width and its height (3 pixels of padding above and below).
+        CHECK(status->ContentSize.x <= status->Size.x - 2.0f * kStatusPadding + 0.5f);
+        CHECK(status->ContentSize.y + 6.0f <= status->Size.y + 0.5f);
+        CHECK(status->Pos.y + status->Size.y <= ImGui::GetIO().DisplaySize.y + 0.5f);
+        CHECK((status->Size.y > bar + 0.5f) == (ImGui::CalcTextSize(message.c_str()).x > status->Size.x - 16.0f));
+        // The windows above end where it begins.
+        CHECK(canvas->Pos.y + canvas->Size.y <= status->Pos.y + 0.5f);
+        CHECK(panel->Pos.y + panel->Size.y <= status->Pos.y + 0.5f);
+    }
+}
+
 TEST_CASE("The bundled scenes are found from the program's folder: the data folder, else tutorials/ above it", "[app]")
 {
     const fs::path root = fs::temp_directory_path() / ("satviz-app-layout-" + std::to_string(::getpid()));
