@@ -18,6 +18,14 @@ namespace satviz
 namespace
 {
 
+// The shortest gap bar, in pixels, drawn as a bar alone; a shorter one gets ticks and arrows at its ends.
+constexpr float kLeastGapBar = 8.0f;
+
+} // namespace
+
+namespace
+{
+
 constexpr float kMargin = 40.0f; // room around the pair, for the pieces' names
 
 std::string Coordinate(double value)
@@ -481,6 +489,24 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
         const ScreenPoint barTo = ToScreen(view, (hiA + gap) * n + shared * across);
         canvas.Segment(barFrom, barTo, palette::kGap, 4.0f);
         labels.ReserveLine(barFrom, barTo, 4.0f);
+        // A gap of a few pixels is a bar too short to see: marked as a drawing marks a small dimension, its true
+        // ends by ticks across it and two arrows from outside pointing at them, and named by its number.
+        const float barDx = barTo.x - barFrom.x, barDy = barTo.y - barFrom.y;
+        const float barLength = std::sqrt(barDx * barDx + barDy * barDy);
+        if (barLength < kLeastGapBar)
+        {
+            const float ux = static_cast<float>(n.x), uy = -static_cast<float>(n.y); // n on the screen (y down)
+            const float tx = -uy * 7.0f, ty = ux * 7.0f;
+            for (const ScreenPoint& p : {barFrom, barTo})
+            {
+                canvas.Segment({p.x - tx, p.y - ty}, {p.x + tx, p.y + ty}, palette::kGap, 2.0f);
+            }
+            const ScreenPoint outA{barFrom.x - ux * 22.0f, barFrom.y - uy * 22.0f};
+            const ScreenPoint outB{barTo.x + ux * 22.0f, barTo.y + uy * 22.0f};
+            Arrow(canvas, outA, barFrom, palette::kGap, 2.0f, 7.0f);
+            Arrow(canvas, outB, barTo, palette::kGap, 2.0f, 7.0f);
+            labels.ReserveLine(outA, outB, 14.0f);
+        }
         used.push_back(LegendMark::Gap);
         const std::string size = FormatNumber(gap);
         // At an end of the line, beyond it: in the gap itself a label would hide the bar or lie on a piece. Between

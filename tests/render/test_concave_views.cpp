@@ -481,6 +481,49 @@ TEST_CASE("The pieces figure tests the pairs of pieces whose boxes overlap, one 
     CHECK(captions.back().find("along (1.00, 0.00)") != std::string::npos);
 }
 
+TEST_CASE("A gap too thin to see as a bar is marked by ticks and arrows at its true ends, and named", "[concave-views]")
+{
+    // The box 0.002 above the L's foot: a bar of a fraction of a pixel. It stays its true length; two arrow heads
+    // point at its ends from outside and span several pixels, and its number names it.
+    const Scene scene = LoadConcave(R"({"bodies": [{"name": "L", "polygon": [[0, 0], [4, 0], [4, 1], [1, 1], [1, 3],
+        [0, 3]]}, {"name": "box", "box": [1, 1], "position": [2, 1.502]}], "view": {"figure": "pieces"}})");
+    FigureSetup setup = SetUpFigure(scene, {});
+    REQUIRE(setup.Ok());
+    setup.figure.framesItself = false;
+    RecordingCanvas canvas;
+    PaintFigure(canvas, scene, setup.study, setup.figure);
+    const View& view = setup.figure.view;
+    int heads = 0;
+    double low = INFINITY;
+    double high = -INFINITY;
+    for (const DrawCommand* c : canvas.InGroup("gap"))
+    {
+        if (c->kind == DrawCommand::Kind::Segment && c->thickness >= 3.0f)
+        {
+            // The bar: the gap's true length.
+            CHECK(std::fabs(ToWorld(view, c->points[0]).y - ToWorld(view, c->points[1]).y) ==
+                  Approx(0.002).margin(1.0 / view.zoom));
+        }
+        if (c->kind == DrawCommand::Kind::FillConvex)
+        {
+            ++heads;
+            for (const ScreenPoint& p : c->points)
+            {
+                low = std::min(low, static_cast<double>(p.y));
+                high = std::max(high, static_cast<double>(p.y));
+            }
+        }
+    }
+    CHECK(heads == 2);
+    CHECK(high - low >= 8.0);
+    bool named = false;
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        named = named || (c->kind == DrawCommand::Kind::Text && c->text.find("0.002") != std::string::npos);
+    }
+    CHECK(named);
+}
+
 TEST_CASE("The pieces figure's verdict on a pair apart draws the gap, as the convex verdict does", "[concave-views]")
 {
     // Lesson 18's box in the notch of the L: the L's foot ends at y = 1 and the box's bottom is at 1.5; no box of a
