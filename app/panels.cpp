@@ -66,7 +66,8 @@ bool PathPopup(const char* title, const char* prompt, const char* action, char* 
     const bool enter = ImGui::InputText("##path", buffer, size, ImGuiInputTextFlags_EnterReturnsTrue);
     const bool confirmed = ImGui::Button(action) || enter;
     ImGui::SameLine();
-    if (confirmed || ImGui::Button("Cancel"))
+    // Escape cancels, as it closes every other question of the app.
+    if (ImGui::Button("Cancel") || confirmed || PressedNamed(ImGuiKey_Escape))
     {
         ImGui::CloseCurrentPopup();
     }
@@ -1249,7 +1250,7 @@ void Panels::Popups()
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
-        if (button("Unsaved changes", "Cancel"))
+        if (button("Unsaved changes", "Cancel") || PressedNamed(ImGuiKey_Escape))
         {
             ImGui::CloseCurrentPopup();
         }
@@ -1284,7 +1285,7 @@ void Panels::Popups()
             m_app.Open(m_app.PendingOpen());
         }
         ImGui::SameLine();
-        if (button("Unsaved changes before opening", "Cancel"))
+        if (button("Unsaved changes before opening", "Cancel") || PressedNamed(ImGuiKey_Escape))
         {
             ImGui::CloseCurrentPopup();
         }

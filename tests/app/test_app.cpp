@@ -1209,6 +1209,34 @@ TEST_CASE("Save and open on a bundled scene asks where to save, and opens nothin
     CHECK(h.Doc().Dirty());
 }
 
+TEST_CASE("Escape answers each question of the app as Cancel does: the work stays, unsaved", "[app]")
+{
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+    h.Drag(from, ImVec2(from.x + 15.0f, from.y));
+    REQUIRE(h.Doc().Dirty());
+    h.Key('S', true); // a bundled scene: Save asks where
+    h.Frames(2);
+    REQUIRE(Harness::Showing("Save scene as"));
+    h.Key(kEscape);
+    h.Frames(2);
+    CHECK(!Harness::Showing("Save scene as"));
+    CHECK(!h.app->RequestOpen(ScratchCopy("separated_triangle.json").string()));
+    h.Frames(2);
+    REQUIRE(Harness::Showing("Unsaved changes before opening"));
+    h.Key(kEscape);
+    h.Frames(2);
+    CHECK(!Harness::Showing("Unsaved changes before opening"));
+    CHECK(!h.app->RequestQuit());
+    h.Frames(2);
+    REQUIRE(Harness::Showing("Unsaved changes"));
+    h.Key(kEscape);
+    h.Frames(2);
+    CHECK(!Harness::Showing("Unsaved changes"));
+    CHECK(!h.app->QuitConfirmed());
+    CHECK(h.Doc().Dirty());
+}
+
 TEST_CASE("A large pair is tested on a worker thread while frames go on, and the figure follows", "[app]")
 {
     // many_sides is a 64-gon and a triangle: over a limit of 8 vertices, it counts as large.
