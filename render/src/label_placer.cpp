@@ -447,18 +447,18 @@ bool LabelPlacer::NearestOwn(const Label& label, const ScreenRect& rect, ScreenP
     return true;
 }
 
-void LabelPlacer::NamesFace(ScreenPoint a, ScreenPoint b, std::vector<ScreenPoint> rival)
+void LabelPlacer::NamesFace(ScreenPoint a, ScreenPoint b, std::vector<std::vector<ScreenPoint>> rivals)
 {
     if (!m_labels.empty())
     {
         m_labels.back().face = {a, b};
-        m_labels.back().rival = std::move(rival);
+        m_labels.back().rivals = std::move(rivals);
     }
 }
 
 bool LabelPlacer::NearestFace(const Label& label, const ScreenRect& rect)
 {
-    if (label.face.size() != 2 || label.rival.size() < 2)
+    if (label.face.size() != 2)
     {
         return true;
     }
@@ -482,17 +482,20 @@ bool LabelPlacer::NearestFace(const Label& label, const ScreenRect& rect)
     const auto off = [&](ScreenPoint p) {
         return std::fabs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / std::max(length, 1e-3f);
     };
-    for (size_t i = 0; i < label.rival.size(); ++i)
+    for (const std::vector<ScreenPoint>& rival : label.rivals)
     {
-        const ScreenPoint u = label.rival[i];
-        const ScreenPoint v = label.rival[(i + 1) % label.rival.size()];
-        if (off(u) < 2.0f && off(v) < 2.0f)
+        for (size_t i = 0; rival.size() >= 2 && i < rival.size(); ++i)
         {
-            continue;
-        }
-        if (to(u, v) < own + lead)
-        {
-            return false;
+            const ScreenPoint u = rival[i];
+            const ScreenPoint v = rival[(i + 1) % rival.size()];
+            if (off(u) < 2.0f && off(v) < 2.0f)
+            {
+                continue;
+            }
+            if (to(u, v) < own + lead)
+            {
+                return false;
+            }
         }
     }
     return true;

@@ -110,11 +110,11 @@ class LabelPlacer
     /// its leader line shows which it names).
     void Names(MarkKind kind);
     /// Tells the label added last (a face's name: "e2", "reference face") that it names the face ab, of a body
-    /// whose partner in the pair has the outline `rival` (on screen): beside its anchor it only takes a place whose
-    /// middle lies nearer that face than the rival's outline, less a few pixels, where it would read as the rival's
-    /// (a floor's "e2" beside the plank's corner, "reference face" over the small box inside the large one). Farther
-    /// out, its leader line shows which face it names.
-    void NamesFace(ScreenPoint a, ScreenPoint b, std::vector<ScreenPoint> rival);
+    /// whose partner in the pair, and any ghost drawn, have the outlines `rivals` (on screen): beside its anchor it
+    /// only takes a place whose middle lies clearly nearer that face than any rival's outline, where it would read as
+    /// the rival's (a floor's "e2" beside the plank's corner, "reference face" over the small box inside the large
+    /// one, a body's "e2" between its edge and its ghost's). Farther out, its leader line shows which face it names.
+    void NamesFace(ScreenPoint a, ScreenPoint b, std::vector<std::vector<ScreenPoint>> rivals);
     /// Puts the label added last centred on its anchor when that place is free: a name inside the shape it names.
     /// Elsewhere it is placed as any other label.
     void Centre();
@@ -141,8 +141,8 @@ class LabelPlacer
         std::vector<ScreenPoint> home;                 // with Within: its own body, which it may sit deep in
         int names = -1;                                // with Names: the MarkKind it names, else -1
         bool across = false;                           // with AlsoBeside: beside its alternates, not beyond them
-        std::vector<ScreenPoint> face;                 // with NamesFace: the face it names, and the rival's outline
-        std::vector<ScreenPoint> rival;
+        std::vector<ScreenPoint> face;                 // with NamesFace: the face it names, and the rivals' outlines
+        std::vector<std::vector<ScreenPoint>> rivals;
     };
     struct Mark
     {

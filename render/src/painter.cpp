@@ -613,6 +613,14 @@ class Painter
     Color InkOf(int shape) const { return shape == 0 ? palette::kShapeA : palette::kShapeBInk; }
     const Body& BodyOf(int shape) const { return shape == 0 ? m_bodyA : m_bodyB; }
     // A body of the pair's outline on screen, where it stands in the figure.
+    // What a face's name must sit clearly nearer its face than: the other body of the pair, and every ghost drawn.
+    std::vector<std::vector<ScreenPoint>> Rivals(const std::vector<ScreenPoint>& other) const
+    {
+        std::vector<std::vector<ScreenPoint>> rivals = m_ghostOutlines;
+        rivals.push_back(other);
+        return rivals;
+    }
+
     std::vector<ScreenPoint> OutlineOf(int shape) const
     {
         const Body& body = BodyOf(shape);
@@ -1436,6 +1444,7 @@ class Painter
                 DashedOutline(m_canvas, outline, WithAlpha(InkOf(s), alpha), 1.8f, m_bounds);
                 // A contact point's name across the ghost's outline would hide it, as for the MTV's.
                 ReserveOutline(outline, 1.8f);
+                m_ghostOutlines.push_back(outline);
                 m_used.push_back(LegendMark::Dashed);
                 // The label goes above the ghost, towards its trailing side, the one it came from: its leading
                 // side is where it meets the other body and the contact points are marked, which a label there
@@ -2164,7 +2173,7 @@ class Painter
                                    [&](ScreenPoint p) { return std::hypot(p.x - near.x, p.y - near.y) > 64.0f; }),
                     along.end());
         m_labels.AlsoAt(along);
-        m_labels.NamesFace(r1, r2, other);
+        m_labels.NamesFace(r1, r2, Rivals(other));
         const ScreenPoint i1 = At(clip.incidentV1);
         const ScreenPoint i2 = At(clip.incidentV2);
         m_canvas.Segment(i1, i2, InkOf(clip.incidentShape), 5.0f);
@@ -2175,7 +2184,7 @@ class Painter
         m_labels.PlaceOutside(OutlineOf(1 - clip.incidentShape), At(0.5 * (clip.incidentV1 + clip.incidentV2)),
                              "incident edge", TextStyle::Label, InkOf(clip.incidentShape), static_cast<float>(n.x),
                              static_cast<float>(-n.y), 10.0f, LabelRank::Verdict);
-        m_labels.NamesFace(i1, i2, OutlineOf(1 - clip.incidentShape));
+        m_labels.NamesFace(i1, i2, Rivals(OutlineOf(1 - clip.incidentShape)));
     }
 
     // The edges (or vertices) of body `shape` that a sentence names: "floor's edge 2", "box's edges 0 and 2", "B's
@@ -2336,7 +2345,7 @@ class Painter
                                              isNamed ? LabelRank::Named : LabelRank::Edge))
                     {
                         m_labels.KeepOnSide();
-                        m_labels.NamesFace(wholeFrom, wholeTo, other);
+                        m_labels.NamesFace(wholeFrom, wholeTo, Rivals(other));
                         // A face a sentence names may have its name anywhere along it, away from its corners,
                         // when its middle is taken (a thin wall's name beside it).
                         // One flush against the other body along all its length has its name just inside its
@@ -2887,6 +2896,7 @@ class Painter
     std::vector<LegendMark> m_used; // marks drawn that only their drawing knows of
     bool m_hasPitfallArrow = false;
     std::vector<ScreenRect> m_heads; // the arrow heads drawn so far, which no later arrow may cover
+    std::vector<std::vector<ScreenPoint>> m_ghostOutlines; // the ghosts drawn, moving bodies at other times
     struct Bar
     {
         ScreenPoint a, b;

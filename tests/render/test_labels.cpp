@@ -1128,6 +1128,15 @@ std::vector<std::string> FaceNamesAstray(const RecordingCanvas& canvas, const Sc
                              &scene.bodies[static_cast<size_t>(study.bodyB)]};
     const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
     const std::vector<ScreenPoint> outlines[2] = {Outline(*bodies[0], view), Outline(*bodies[1], view)};
+    // The ghosts: a moving body drawn where it is at another time, a pale fill under a dashed outline.
+    std::vector<std::vector<ScreenPoint>> ghosts;
+    for (const DrawCommand* d : canvas.InGroup("ghost"))
+    {
+        if (d->kind == DrawCommand::Kind::FillConvex && d->points.size() >= 3)
+        {
+            ghosts.push_back(d->points);
+        }
+    }
     for (const DrawCommand* c : canvas.InGroup("labels"))
     {
         if (c->kind != DrawCommand::Kind::Text || OnLeader(canvas, *c))
@@ -1174,10 +1183,13 @@ std::vector<std::string> FaceNamesAstray(const RecordingCanvas& canvas, const Sc
         }
         const ScreenPoint size = measure.MeasureText(t, c->style);
         const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
-        if (ReadsAsRivals(middle, a, b, outlines[1 - s]))
+        if (ReadsAsRivals(middle, a, b, outlines[1 - s]) ||
+            std::any_of(ghosts.begin(), ghosts.end(),
+                        [&](const std::vector<ScreenPoint>& ghost) { return ReadsAsRivals(middle, a, b, ghost); }))
         {
             problems.push_back(Describe(*c) + " lies " + std::to_string(static_cast<int>(ToSegment(middle, a, b))) +
-                               " pixels from the face it names, as near " + bodies[1 - s]->name + "'s outline");
+                               " pixels from the face it names, as near " + bodies[1 - s]->name +
+                               "'s outline or a ghost's");
         }
     }
     return problems;
