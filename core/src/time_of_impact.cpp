@@ -72,6 +72,7 @@ TimeOfImpactStage::TimeOfImpactStage(World& world, double dt, const std::vector<
         if (IsAwakeDynamic(body))
         {
             m.moves = true;
+            m.fallsUntil = 1.0;
             m.v = solverBodies[i].v;
             m.w = solverBodies[i].w;
         }
@@ -463,7 +464,8 @@ void TimeOfImpactStage::Run()
                 m_queue.push(events[static_cast<size_t>(k)]);
             }
         }
-        std::vector<Event> group;        while (!m_queue.empty())
+        std::vector<Event> group;
+        while (!m_queue.empty())
         {
             const Event event = m_queue.top();
             m_queue.pop();

@@ -78,6 +78,10 @@ class TimeOfImpactStage
         Vec2 v{};           // velocity
         double w = 0.0;     // turning rate
         bool moves = false; // an awake dynamic body
+        // The velocity holds the gravity of the step up to this fraction of it: all of it for a body awake at the
+        // start (the velocity passes gave it the whole step's), none for a body woken by a hit. A body stopped
+        // short of a contact gives back the gravity of the rest of the step once, not again at a later stop.
+        double fallsUntil = 0.0;
     };
     struct Event
     {

@@ -226,6 +226,8 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
             // contact conservative advancement could not reach in its passes (a fast spinner beside a wall), its
             // clock stops: it keeps its velocity as of now, without the gravity of the rest of the step, for it
             // does not fall for the rest of the step. Either way the energy it is left with is what it had.
+            // Stopped again later in the step (a fast spinner swept against it), it has no more gravity to give
+            // back: taking the rest of the step's off once more would throw it upwards, energy from nowhere.
             if (wedged)
             {
                 body.velocity = {};
@@ -233,8 +235,9 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
             }
             else
             {
-                body.velocity = body.velocity - ((1.0 - m.t) * m_dt) * world.settings.gravity;
+                body.velocity = body.velocity - (std::max(0.0, m.fallsUntil - m.t) * m_dt) * world.settings.gravity;
             }
+            m.fallsUntil = std::min(m.fallsUntil, m.t);
             m.v = {};
             m.w = 0.0;
             m_fast[k] = 0;
