@@ -58,9 +58,22 @@ std::string FindBundledScenes(const std::filesystem::path& programDir, const std
     return "";
 }
 
+namespace
+{
+
+// True when `path` is a file of `folder` (not of a folder in it).
+bool InFolder(const std::string& path, const std::string& folder)
+{
+    std::error_code code;
+    return std::filesystem::weakly_canonical(std::filesystem::path(path).parent_path(), code) ==
+           std::filesystem::weakly_canonical(folder, code);
+}
+
+} // namespace
+
 App::App(const FigureFonts& fonts, AppOptions options)
     : m_fonts(fonts), m_options(std::move(options)), m_viewer(m_options.backgroundVertices), m_panels(*this),
-      m_recent(m_options.recentFile, m_options.updateRecent)
+      m_recent(m_options.recentFile, m_options.updateRecent), m_unsaved(m_options.unsavedDir)
 {
     if (m_options.lessonsDir.empty() && !m_options.scenesDir.empty())
     {
@@ -82,6 +95,46 @@ void App::Frame()
         Refresh();
     }
     m_panels.Draw();
+    KeepUnsavedCopy();
+}
+
+// The scene is copied as each change is committed, not while a drag goes on: a crash in the middle of a drag loses
+// that drag at most.
+void App::KeepUnsavedCopy()
+{
+    if (m_document.Revision() == m_copiedRevision)
+    {
+        return;
+    }
+    m_copiedRevision = m_document.Revision();
+    if (!m_document.Dirty())
+    {
+        m_unsaved.Drop();
+        return;
+    }
+    std::string error;
+    if (!m_unsaved.Keep(SceneForSaving(), m_document.File(), error))
+    {
+        SetStatus("Unsaved changes cannot be kept aside: " + error, true);
+    }
+}
+
+bool App::ReportLeftCopies()
+{
+    if (m_options.unsavedDir.empty())
+    {
+        return false;
+    }
+    const std::vector<std::string> left = LeftUnsavedCopies(m_options.unsavedDir);
+    if (left.empty())
+    {
+        return false;
+    }
+    SetStatus("satviz ended before these changes were saved; they are in " + left.front() +
+                  (left.size() > 1 ? " (and " + std::to_string(left.size() - 1) + " more in that folder)" : "") +
+                  ": File > Open to take them back",
+              false);
+    return true;
 }
 
 double App::SecondsUntilChange() const
@@ -128,6 +181,17 @@ bool App::Open(const std::string& path)
         Refresh();
     }
     m_recent.Remember(path);
+    m_takenBack.clear();
+    if (!m_options.unsavedDir.empty() && InFolder(path, m_options.unsavedDir))
+    {
+        // Changes an app left when it ended without saving: saved to a file of the user's, the copy goes.
+        m_takenBack = path;
+        m_document.AskForAnotherFile();
+        SetStatus("Opened " + path + ", changes kept when satviz ended before saving them: Save asks for a file "
+                                     "to keep them in, then this copy is removed",
+                  false);
+        return true;
+    }
     SetStatus("Opened " + path +
                   (simSteps > 0
                        ? ", after " + std::to_string(simSteps) + " rigid-body step" + (simSteps == 1 ? "" : "s") +
@@ -159,6 +223,12 @@ bool App::Save(const std::string& path)
     }
     m_recent.Remember(path);
     SetStatus("Saved " + path, false);
+    if (!m_takenBack.empty() && !InFolder(path, m_options.unsavedDir))
+    {
+        std::error_code code;
+        std::filesystem::remove(m_takenBack, code);
+        m_takenBack.clear();
+    }
     return true;
 }
 

@@ -10,6 +10,7 @@
 #include "panels.h"
 #include "recent_files.h"
 #include "simulation.h"
+#include "unsaved_copy.h"
 #include "viewer.h"
 
 #include <satviz/render/figure.h>
@@ -49,6 +50,9 @@ struct AppOptions
     std::string recentFile;   ///< where the recent files are remembered; empty: not remembered
     bool updateRecent = true; ///< files opened or saved join the recent list; false: it is shown but left as it is
     std::string exportPath;   ///< where ctrl+e writes the PNG; empty: next to the scene, SCENE-stepN.png
+    /// Where a copy of the scene is kept while it has unsaved changes (UnsavedCopy), and where the copies an app
+    /// left when it ended without asking are found; empty: no copies.
+    std::string unsavedDir;
     AppKeys keys;             ///< key codes
     /// A pair with more vertices than this (A's and B's together) is tested on a worker thread: its traced
     /// queries and the camera fit grow with the square of the count, and above it they take longer than a frame.
@@ -257,6 +261,11 @@ class App
     bool StatusIsError() const { return m_statusIsError; }
     /// The start-up choices.
     const AppOptions& Options() const { return m_options; }
+    /// The file that holds the unsaved changes while there are some (AppOptions::unsavedDir); empty otherwise.
+    const std::string& UnsavedCopyPath() const { return m_unsaved.Path(); }
+    /// Tells in the status bar of the copies of unsaved scenes that an app ended without saving left in
+    /// AppOptions::unsavedDir (a crash, a killed process). False when there are none.
+    bool ReportLeftCopies();
     /// The figure fonts.
     const FigureFonts& Fonts() const { return m_fonts; }
 
@@ -271,6 +280,7 @@ class App
     void TakeFinishedTest();
     void ChangeChoices(const ViewChoices& choices);
     void ClearError();
+    void KeepUnsavedCopy();
     bool BodyExists(int index) const;
 
     FigureFonts m_fonts;
@@ -283,6 +293,9 @@ class App
     int m_simHitStep = -1;
     Panels m_panels;
     RecentFiles m_recent;
+    UnsavedCopy m_unsaved;
+    size_t m_copiedRevision = ~size_t{0}; // the document's revision the unsaved copy was last made for
+    std::string m_takenBack; // a copy an app left, opened: removed once saved to another file
     int m_selected = -1;
     std::string m_status;
     bool m_statusIsError = false;

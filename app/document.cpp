@@ -25,6 +25,7 @@ std::string SceneContent(Scene scene)
 void Document::Measure()
 {
     m_dirty = SceneContent(m_scene) != m_savedContent;
+    ++m_revision;
 }
 
 OpenResult Document::Open(const std::string& path, const std::string& bundledDir)
@@ -72,6 +73,7 @@ OpenResult Document::Open(const std::string& path, const std::string& bundledDir
     m_readOnly = !bundledDir.empty() && !within.empty() && *within.begin() != "..";
     m_savedContent = SceneContent(m_scene);
     m_dirty = false;
+    ++m_revision;
     m_undo.clear();
     m_redo.clear();
     m_editOpen = false;
@@ -90,6 +92,7 @@ bool Document::Save(Scene saved, const std::string& path, std::string& error)
     m_readOnly = false;
     m_savedContent = SceneContent(m_scene);
     m_dirty = false;
+    ++m_revision;
     return true;
 }
 

@@ -42,11 +42,16 @@ class Document
     const std::string& File() const { return m_file; }
     /// True for a bundled scene: saving asks for another file.
     bool ReadOnly() const { return m_readOnly; }
+    /// Makes saving ask for another file, as for a bundled scene (a copy of unsaved changes kept aside).
+    void AskForAnotherFile() { m_readOnly = true; }
     /// True when the scene differs from its file: its bodies, description or world, measured against the scene as
     /// it was opened or last saved (undoing back to it is no change). The view block (pair, query, layers,
     /// camera, step...) is how the scene is looked at, not a change of it. During an edit, true once the edit has
     /// touched a body.
     bool Dirty() const { return m_dirty || (m_editOpen && m_editTouched); }
+    /// A count that changes whenever the scene may have changed outside an open edit (an edit committed, an undo or
+    /// a redo, a file opened or saved): what watches the scene compares it instead of the scene.
+    size_t Revision() const { return m_revision; }
 
     /// Starts an edit of the bodies (a drag, a number being dragged): the scene now and the viewer's `choices` are
     /// kept until CommitEdit, so that the whole edit is undone in one step. Does nothing while an edit is open.
@@ -96,6 +101,7 @@ class Document
     bool m_readOnly = false;
     std::string m_savedContent; // the scene as opened or last saved, without its view block (SceneContent)
     bool m_dirty = false;
+    size_t m_revision = 0;
     bool m_editTouched = false;
     std::vector<State> m_undo;
     std::vector<State> m_redo;

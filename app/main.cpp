@@ -23,12 +23,16 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <execinfo.h>
 #include <filesystem>
 #include <memory>
+#include <signal.h>
 #include <spawn.h>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace
 {
@@ -45,6 +49,80 @@ std::string RecentFile()
     }
     return "";
 }
+
+// Where the copies of unsaved scenes are kept (AppOptions::unsavedDir): the XDG state folder, which holds what an
+// application keeps between runs that is not configuration.
+std::string UnsavedFolder()
+{
+    if (const char* state = std::getenv("XDG_STATE_HOME"); state != nullptr && *state != '\0')
+    {
+        return std::string(state) + "/satviz/unsaved";
+    }
+    if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0')
+    {
+        return std::string(home) + "/.local/state/satviz/unsaved";
+    }
+    return "";
+}
+
+/// What the app does when it crashes (a fault, an abort): says so on stderr with where the unsaved changes are and
+/// the stack of calls, for a report, and ends as the signal would have ended it. The unsaved changes are on disk
+/// already (UnsavedCopy): the handler writes nothing else, and calls only what a signal handler may.
+class CrashReport
+{
+  public:
+    /// Installs the handler for the signals of a crash, on a stack of its own (a stack overflow leaves none).
+    static void Install()
+    {
+        void* frames[2];
+        backtrace(frames, 2); // loads what backtrace needs now: the handler may not allocate
+        stack_t alternate{};
+        alternate.ss_sp = m_stack;
+        alternate.ss_size = sizeof m_stack;
+        sigaltstack(&alternate, nullptr);
+        struct sigaction action{};
+        action.sa_handler = OnCrash;
+        action.sa_flags = SA_ONSTACK | SA_RESETHAND;
+        sigemptyset(&action.sa_mask);
+        for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
+        {
+            sigaction(signal, &action, nullptr);
+        }
+    }
+    /// Notes where the unsaved changes are now (empty: there are none).
+    static void SetUnsavedCopy(const std::string& path)
+    {
+        const size_t n = std::min(path.size(), sizeof m_copy - 1);
+        std::memcpy(m_copy, path.data(), n);
+        m_copy[n] = '\0';
+    }
+
+  private:
+    static void Say(const char* text) { [[maybe_unused]] const ssize_t written = write(2, text, std::strlen(text)); }
+
+    static void OnCrash(int signal)
+    {
+        char number[16];
+        int n = 0;
+        for (int v = signal; v > 0 && n < 15; v /= 10)
+        {
+            number[n++] = static_cast<char>('0' + v % 10);
+        }
+        std::reverse(number, number + n);
+        number[n] = '\0';
+        Say("satviz: crashed (signal ");
+        Say(number);
+        Say(m_copy[0] != '\0' ? "); the unsaved changes are in " : "); there were no unsaved changes");
+        Say(m_copy);
+        Say("\nsatviz: the calls that led to it:\n");
+        void* frames[64];
+        backtrace_symbols_fd(frames, backtrace(frames, 64), 2);
+        raise(signal); // the default action now (SA_RESETHAND): the process ends by the signal, a core if enabled
+    }
+
+    static inline char m_copy[4096] = {};
+    static inline char m_stack[1 << 16] = {}; // no destructor: a crash at exit still finds it
+};
 
 /// An offscreen RGBA8 colour buffer, the format of satviz-render's OSMesa buffer: the window's own buffer has
 /// another format, and blending into it rounds a few pixels differently.
@@ -475,6 +553,7 @@ int main(int argc, char** argv)
     options.scenesDir = scenesDir;
     options.recentFile = RecentFile();
     options.updateRecent = !measuring;
+    options.unsavedDir = measuring ? std::string() : UnsavedFolder();
     options.exportPath = exportPath;
     options.clearRect = ClearRect;
     options.keys.s = GLFW_KEY_S;
@@ -502,6 +581,13 @@ int main(int argc, char** argv)
                      lessonNumber);
         return 2;
     }
+
+    if (app.ReportLeftCopies())
+    {
+        std::printf("satviz: %s\n", app.Status().c_str());
+        std::fflush(stdout);
+    }
+    CrashReport::Install();
 
     if (play)
     {
@@ -560,6 +646,7 @@ int main(int argc, char** argv)
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         app.Frame();
+        CrashReport::SetUnsavedCopy(app.UnsavedCopyPath());
         KeepMinimumSize(window, app.LessonShown(), ImGui::GetFrameHeight());
         std::string exportTo;
         std::unique_ptr<satviz::FigureDrawing> drawing;

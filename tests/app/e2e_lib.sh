@@ -38,14 +38,14 @@ click() {
   sleep 0.3
 }
 
-# Starts "$app" with these arguments in the background, its output in $work/app.log and its settings in $work/config
-# (so the user's Recent list is left alone); sets pid, kills the app if the script ends early, and waits until the
-# window and its canvas are shown.
+# Starts "$app" with these arguments in the background, its output in $work/app.log, its settings in $work/config
+# and its copies of unsaved scenes in $work/state (so the user's are left alone); sets pid, kills the app if the
+# script ends early (printing the app's report if it crashed), and waits until the window and its canvas are shown.
 start_app() {
-  export XDG_CONFIG_HOME="$work/config"
+  export XDG_CONFIG_HOME="$work/config" XDG_STATE_HOME="$work/state"
   "$app" "$@" > "$work/app.log" 2>&1 &
   pid=$!
-  trap 'kill $pid 2> /dev/null || true' EXIT
+  trap 'kill $pid 2> /dev/null || true; sed -n "/^satviz: crashed/,\$p" "$work/app.log" | head -n 80' EXIT
   xdotool search --sync --onlyvisible --name '^satviz$' > /dev/null
   for _ in $(seq 50); do grep -q "canvas at" "$work/app.log" && break; sleep 0.1; done
 }

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <csignal>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -950,6 +951,104 @@ TEST_CASE("Modified means differs from the file: undoing back to it, or changing
         h.Key(kZ, true);
         CHECK(h.Doc().Dirty());
         CHECK(!h.app->RequestQuit());
+    }
+}
+
+// The scene of `file` without its view block, as the document measures a change.
+std::string BodiesOf(const std::string& file)
+{
+    SceneResult loaded = LoadScene(file);
+    REQUIRE(loaded.Ok());
+    loaded.scene.hasView = false;
+    loaded.scene.view = SceneView{};
+    loaded.scene.source = nullptr;
+    return SceneToJson(loaded.scene);
+}
+
+// The copies in `folder`, by name.
+std::vector<std::string> FilesIn(const fs::path& folder)
+{
+    std::vector<std::string> files;
+    std::error_code code;
+    for (const auto& entry : fs::directory_iterator(folder, code))
+    {
+        files.push_back(entry.path().string());
+    }
+    return files;
+}
+
+TEST_CASE("Unsaved changes are kept in a copy on disk until they are saved, undone or discarded, and a copy an app "
+          "left is reported and taken back",
+          "[app]")
+{
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    const fs::path folder = copy.parent_path() / "unsaved";
+    fs::remove_all(folder);
+    AppOptions options;
+    options.unsavedDir = folder.string();
+    std::string kept;
+    {
+        Harness h(copy.string(), options);
+        CHECK(FilesIn(folder).empty());
+        CHECK_FALSE(h.app->ReportLeftCopies()); // this app's own copy is not one left
+        const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+        h.Drag(from, ImVec2(from.x + 30.0f, from.y - 10.0f));
+        REQUIRE(h.Doc().Dirty());
+        h.Frames(1);
+        // The copy holds the scene as Save would write it: loaded back, the bodies the document has, not the file's.
+        REQUIRE(FilesIn(folder).size() == 1);
+        kept = h.app->UnsavedCopyPath();
+        CHECK(kept == FilesIn(folder).front());
+        CHECK(fs::path(kept).filename().string() == "overlapping_boxes.unsaved-" + std::to_string(::getpid()) + ".json");
+        Scene bodies = h.Doc().GetScene();
+        bodies.hasView = false;
+        bodies.view = SceneView{};
+        bodies.source = nullptr;
+        CHECK(BodiesOf(kept) == SceneToJson(bodies));
+        CHECK(BodiesOf(kept) != BodiesOf(copy.string()));
+        CHECK_FALSE(h.app->ReportLeftCopies());
+        // Undone back to the file: no copy. Redone: the copy again. Saved: none.
+        h.Key(kZ, true);
+        REQUIRE_FALSE(h.Doc().Dirty());
+        h.Frames(1);
+        CHECK(FilesIn(folder).empty());
+        CHECK(h.app->UnsavedCopyPath().empty());
+        h.Key(kY, true);
+        h.Frames(1);
+        CHECK(FilesIn(folder).size() == 1);
+        h.Key('S', true);
+        REQUIRE_FALSE(h.Doc().Dirty());
+        h.Frames(1);
+        CHECK(FilesIn(folder).empty());
+        // Edited again and discarded on a quit: the app ends, its copy with it.
+        const ImVec2 grab = h.OnScreen(Centroid(h.BodyNamed("A")));
+        h.Drag(grab, ImVec2(grab.x - 20.0f, grab.y));
+        h.Frames(1);
+        CHECK(FilesIn(folder).size() == 1);
+    }
+    CHECK(FilesIn(folder).empty());
+
+    // An app that ended without asking (its process gone) left a copy: the next app tells where it is; opened, it
+    // saves to another file, and then the copy goes.
+    pid_t gone = 4194303;
+    while (gone > 2 && ::kill(gone, 0) == 0)
+    {
+        --gone;
+    }
+    fs::create_directories(folder);
+    const fs::path left = folder / ("overlapping_boxes.unsaved-" + std::to_string(gone) + ".json");
+    fs::copy_file(copy, left);
+    {
+        Harness h(copy.string(), options);
+        REQUIRE(h.app->ReportLeftCopies());
+        CHECK(h.app->Status().find(left.string()) != std::string::npos);
+        REQUIRE(h.app->Open(left.string()));
+        CHECK(h.Doc().ReadOnly());
+        const fs::path mine = copy.parent_path() / "taken_back.json";
+        REQUIRE(h.app->Save(mine.string()));
+        CHECK_FALSE(fs::exists(left));
+        CHECK(BodiesOf(mine.string()) == BodiesOf(copy.string()));
+        CHECK_FALSE(h.app->ReportLeftCopies());
     }
 }
 
