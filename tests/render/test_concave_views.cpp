@@ -100,6 +100,16 @@ std::string Caption(const RecordingCanvas& canvas)
 const std::string kFlag = R"({"bodies": [{"name": "flag", "polygon": [[4, 2], [2, 4], [-1, 2], [-3, 1], [-4, -2],
     [0, -1], [1, -2], [4, -2]]}], "view": {"figure": "decomposition", "size": [900, 480]}})";
 
+// The figure of `scene` painted on `canvas` through its camera, as the app draws it, so that screen points map back
+// to the world through setup.figure.view.
+void PaintThroughCamera(const Scene& scene, FigureSetup& setup, RecordingCanvas& canvas)
+{
+    setup = SetUpFigure(scene, {});
+    REQUIRE(setup.Ok());
+    setup.figure.framesItself = false;
+    PaintFigure(canvas, scene, setup.study, setup.figure);
+}
+
 } // namespace
 
 TEST_CASE("The decomposition figure fills pieces that cover the outline, and counts them as its words do",
@@ -487,11 +497,9 @@ TEST_CASE("A gap too thin to see as a bar is marked by ticks and arrows at its t
     // point at its ends from outside and span several pixels, and its number names it.
     const Scene scene = LoadConcave(R"({"bodies": [{"name": "L", "polygon": [[0, 0], [4, 0], [4, 1], [1, 1], [1, 3],
         [0, 3]]}, {"name": "box", "box": [1, 1], "position": [2, 1.502]}], "view": {"figure": "pieces"}})");
-    FigureSetup setup = SetUpFigure(scene, {});
-    REQUIRE(setup.Ok());
-    setup.figure.framesItself = false;
+    FigureSetup setup;
     RecordingCanvas canvas;
-    PaintFigure(canvas, scene, setup.study, setup.figure);
+    PaintThroughCamera(scene, setup, canvas);
     const View& view = setup.figure.view;
     int heads = 0;
     double low = INFINITY;
@@ -530,12 +538,9 @@ TEST_CASE("The pieces figure's verdict on a pair apart draws the gap, as the con
     // piece overlaps the box, so the gap is the one between the foot's box and the box: 0.5, along (0, 1).
     const Scene scene = LoadConcave(R"({"bodies": [{"name": "L", "polygon": [[0, 0], [4, 0], [4, 1], [1, 1], [1, 3],
         [0, 3]]}, {"name": "box", "box": [1, 1], "position": [2, 2]}], "view": {"figure": "pieces"}})");
-    FigureSetup setup = SetUpFigure(scene, {});
-    REQUIRE(setup.Ok());
-    // Drawn through the figure's camera, as the app draws it, so that screen points map back to the world.
-    setup.figure.framesItself = false;
+    FigureSetup setup;
     RecordingCanvas canvas;
-    PaintFigure(canvas, scene, setup.study, setup.figure);
+    PaintThroughCamera(scene, setup, canvas);
     const View& view = setup.figure.view;
     // The separating line, dashed in the gap's green: every dash on y = 1.25, the middle of the gap, along the box's
     // width (x from 1.5 to 2.5) where it faces the foot, and clear of the L's arm (x < 1), which it does not part.

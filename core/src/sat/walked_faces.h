@@ -195,8 +195,8 @@ int WedgeOf(const PolygonT<S>& polygon, Vec2T<S> point, int start)
 ///      faces, found from the wedge of ref's fan that holds the witness (WedgeOf, O(log n)); none when it lies
 ///      inside ref, and then the polygons overlap (FaceQuery::witnessInside).
 ///   5. Only the faces left, near the contact, are walked to (ClimbFrom the last support), each recorded as in the
-///      textbook loop (RecordFace): a separation > 0 stops the query. O(n + m) in the worst case; for the random
-///      pairs of satviz-bench, a pass over a 1024-gon walks to 1 to 90 faces instead of 1024.
+///      textbook loop (RecordFace): a separation > 0 stops the query. O(n + m) in the worst case; on pairs
+///      apart or barely touching, a pass walks to a few faces near the contact instead of all n.
 ///   6. Second pass only: a face of ref exactly anti-parallel to a face of inc repeats the test the first pass made
 ///      from that face, and is skipped: inc's support edge is then exactly perpendicular to the direction.
 /// kUnit selects unit normals (Collide) or raw edge normals (Overlap), as in ScanFaces.
