@@ -12,15 +12,31 @@
 #define SATVIZ_WIDE 0
 #endif
 
+#include <cstdlib>
+#include <cstring>
+
 namespace satviz::detail
 {
 
-/// Whether the untraced queries take the wide scans: set once from the processor (AVX2). Tests clear it to run
-/// the baseline instructions on any machine; both give the same bits.
+/// The widest vectors the environment allows: SATVIZ_CPU=baseline (none), SATVIZ_CPU=avx2 (256 bits), unset or
+/// anything else: what the processor has. It runs the paths of an older processor on a newer one, so that every
+/// path a user's machine may take is tested on any machine.
+inline int AllowedVectorBits()
+{
+    const char* cpu = std::getenv("SATVIZ_CPU");
+    if (cpu == nullptr)
+    {
+        return 512;
+    }
+    return std::strcmp(cpu, "baseline") == 0 ? 0 : std::strcmp(cpu, "avx2") == 0 ? 256 : 512;
+}
+
+/// Whether the untraced queries take the wide scans: set once from the processor (AVX2) and AllowedVectorBits.
+/// Tests clear it to run the baseline instructions on any machine; both give the same bits.
 inline bool& WideVectorsEnabled()
 {
 #if SATVIZ_WIDE
-    static bool enabled = (__builtin_cpu_init(), __builtin_cpu_supports("avx2") != 0);
+    static bool enabled = (__builtin_cpu_init(), __builtin_cpu_supports("avx2") != 0) && AllowedVectorBits() >= 256;
 #else
     static bool enabled = false;
 #endif
@@ -28,11 +44,11 @@ inline bool& WideVectorsEnabled()
 }
 
 /// Whether the queries that take them run the face loops of small polygons on 512-bit vectors (AVX-512F) on top of
-/// the wide scans: set once from the processor. Tests clear it to run the 256-bit loops; all give the same bits.
+/// the wide scans: set once from the processor and AllowedVectorBits. Tests clear it to run the 256-bit loops; all give the same bits.
 inline bool& Wide512Enabled()
 {
 #if SATVIZ_WIDE
-    static bool enabled = (__builtin_cpu_init(), __builtin_cpu_supports("avx512f") != 0);
+    static bool enabled = (__builtin_cpu_init(), __builtin_cpu_supports("avx512f") != 0) && AllowedVectorBits() >= 512;
 #else
     static bool enabled = false;
 #endif
