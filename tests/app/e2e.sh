@@ -20,7 +20,7 @@ rm -rf "$work"
 mkdir -p "$work"
 cp "$scene" "$work/scene.json"
 start_app "$work/scene.json" --export-to "$work/export.png"
-read -r cx cy cw ch vx vy zoom < <(sed -n 's/^satviz: canvas at \([0-9]*\),\([0-9]*\) size \([0-9]*\)x\([0-9]*\) camera \([-0-9.e]*\),\([-0-9.e]*\) zoom \([-0-9.e]*\)$/\1 \2 \3 \4 \5 \6 \7/p' "$work/app.log")
+read_canvas
 echo "canvas at $cx,$cy size ${cw}x$ch, camera at $vx,$vy zoom $zoom"
 # The scene frames itself for an 800 x 600 figure (centre (0.5, 0), 120 pixels per unit): the canvas, another size,
 # shows that framing scaled to fit it, and the same world centre.

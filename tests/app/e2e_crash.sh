@@ -11,16 +11,9 @@ rm -rf "$work"
 mkdir -p "$work"
 cp "$scene" "$work/scene.json"
 start_app "$work/scene.json"
-read -r cx cy cw ch vx vy zoom < <(sed -n 's/^satviz: canvas at \([0-9]*\),\([0-9]*\) size \([0-9]*\)x\([0-9]*\) camera \([-0-9.e]*\),\([-0-9.e]*\) zoom \([-0-9.e]*\)$/\1 \2 \3 \4 \5 \6 \7/p' "$work/app.log")
+read_canvas
 # Body B's origin on screen, from the camera; dragged 60 px right and 24 px up.
-read -r bx by < <(python3 - "$work/scene.json" "$cx" "$cy" "$cw" "$ch" "$vx" "$vy" "$zoom" << 'PY'
-import json, sys
-scene = json.load(open(sys.argv[1]))
-cx, cy, cw, ch, vx, vy, zoom = map(float, sys.argv[2:])
-x, y = next(b for b in scene["bodies"] if b["name"] == "B")["position"]
-print(int(cx + cw / 2 + (x - vx) * zoom), int(cy + ch / 2 - (y - vy) * zoom))
-PY
-)
+read -r bx by < <(body_on_screen B "$work/scene.json")
 xdotool mousemove "$bx" "$by"
 sleep 0.3
 xdotool mousedown 1

@@ -13,7 +13,7 @@ rm -rf "$work"
 mkdir -p "$work"
 cp "$scene" "$work/scene.json"
 start_app "$work/scene.json"
-read -r cx cy cw ch vx vy zoom < <(sed -n 's/^satviz: canvas at \([0-9]*\),\([0-9]*\) size \([0-9]*\)x\([0-9]*\) camera \([-0-9.e]*\),\([-0-9.e]*\) zoom \([-0-9.e]*\)$/\1 \2 \3 \4 \5 \6 \7/p' "$work/app.log")
+read_canvas
 echo "canvas at $cx,$cy size ${cw}x$ch, camera at $vx,$vy zoom $zoom"
 
 # A world point on screen, from the camera.

@@ -62,3 +62,20 @@ wait_for_quit() {
     exit 1
   fi
 }
+
+# The canvas and its camera as the app announced them: sets cx cy (its corner in the window), cw ch (its size), vx vy
+# (the world point at its centre) and zoom (pixels per unit).
+read_canvas() {
+  read -r cx cy cw ch vx vy zoom < <(sed -n 's/^satviz: canvas at \([0-9]*\),\([0-9]*\) size \([0-9]*\)x\([0-9]*\) camera \([-0-9.e]*\),\([-0-9.e]*\) zoom \([-0-9.e]*\)$/\1 \2 \3 \4 \5 \6 \7/p' "$work/app.log")
+}
+
+# Where body $1 of the scene file $2 has its origin in the window, by the camera read_canvas read: prints "x y".
+body_on_screen() {
+  python3 - "$2" "$1" "$cx" "$cy" "$cw" "$ch" "$vx" "$vy" "$zoom" << 'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+cx, cy, cw, ch, vx, vy, zoom = map(float, sys.argv[3:])
+x, y = next(b for b in scene["bodies"] if b["name"] == sys.argv[2]).get("position", [0, 0])
+print(int(cx + cw / 2 + (x - vx) * zoom), int(cy + ch / 2 - (y - vy) * zoom))
+PY
+}
