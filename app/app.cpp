@@ -157,7 +157,7 @@ double App::SecondsUntilChange() const
 
 // [SECTION] Files
 
-bool App::Open(const std::string& path)
+bool App::Open(const std::string& path, int step, bool faces)
 {
     const OpenResult opened = m_document.Open(path, m_options.scenesDir);
     if (!opened.ok)
@@ -167,6 +167,18 @@ bool App::Open(const std::string& path)
     }
     m_selected = -1;
     m_viewer.Reset(m_document.GetScene());
+    if (faces)
+    {
+        // A choice of view, not an edit: nothing to undo, nothing to save.
+        ViewChoices choices = m_viewer.Choices();
+        choices.steps = StepView::Faces;
+        m_viewer.SetChoices(choices);
+    }
+    if (step >= 0)
+    {
+        // Before the test is taken in: the viewer keeps the step and shows it once the test is done.
+        m_viewer.ShowStep(step);
+    }
     m_sim = Simulation{};
     Refresh();
     const int simSteps = opened.simSteps;
@@ -202,13 +214,15 @@ bool App::Open(const std::string& path)
     return true;
 }
 
-bool App::RequestOpen(const std::string& path)
+bool App::RequestOpen(const std::string& path, int step, bool faces)
 {
     if (!m_document.Dirty())
     {
-        return Open(path);
+        return Open(path, step, faces);
     }
     m_pendingOpen = path;
+    m_pendingStep = step;
+    m_pendingFaces = faces;
     m_panels.AskBeforeOpening();
     return false;
 }
@@ -905,7 +919,7 @@ bool App::OpenLesson(int index)
     m_panels.ScrollLessonToTop();
     if (!lesson.scenes.empty() && lesson.scenes.front() != m_document.File())
     {
-        RequestOpen(lesson.scenes.front());
+        RequestOpen(lesson.scenes.front(), lesson.firstStep, lesson.firstFaces);
     }
     return true;
 }

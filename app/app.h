@@ -88,10 +88,16 @@ class App
     // Files.
 
     /// Opens a scene file. On failure the current scene stays and the error is shown in the app.
-    bool Open(const std::string& file);
-    /// The user wants to open `file` (ctrl+o, the Bundled scenes or Recent menu): opens it now when nothing is
-    /// unsaved, else asks first (save and open, open without saving, cancel) and returns false.
-    bool RequestOpen(const std::string& file);
+    /// `step` >= 0 shows that step of the textbook test (a lesson's figure "NAME-stepN" is step N - 1), as the
+    /// figure a lesson's text speaks of; -1 the step the scene's view asks for. `faces` shows the face tests' steps
+    /// (a figure of figures/faces/), whose numbers `step` then counts.
+    bool Open(const std::string& file, int step = -1, bool faces = false);
+    /// The user wants to open `file` (ctrl+o, the Bundled scenes or Recent menu, a lesson; `step` as for Open): opens
+    /// it now when nothing is unsaved, else asks first (save and open, open without saving, cancel) and returns false.
+    bool RequestOpen(const std::string& file, int step = -1, bool faces = false);
+    /// The step the file RequestOpen waits to open is to show, and in which view (as for Open).
+    int PendingStep() const { return m_pendingStep; }
+    bool PendingFaces() const { return m_pendingFaces; }
     /// The file RequestOpen waits to open until the unsaved changes are dealt with.
     const std::string& PendingOpen() const { return m_pendingOpen; }
     /// Saves the scene as SceneForSaving() gives it to `file`; true when it was written. The status line says how
@@ -304,6 +310,8 @@ class App
     std::vector<LessonBlock> m_lessonBlocks;
     bool m_lessonShown = false;
     std::string m_pendingOpen;
+    int m_pendingStep = -1;
+    bool m_pendingFaces = false;
     bool m_quitConfirmed = false;
     bool m_exportRequested = false;
     std::string m_exportPath;

@@ -369,6 +369,26 @@ std::string SceneOfFigure(const std::string& figure)
     return stem;
 }
 
+int FigureStep(const std::string& figure)
+{
+    const std::string stem = fs::path(figure).stem().string();
+    size_t digits = stem.size();
+    while (digits > 0 && std::isdigit(static_cast<unsigned char>(stem[digits - 1])))
+    {
+        --digits;
+    }
+    if (digits == stem.size() || digits < 5 || stem.compare(digits - 5, 5, "-step") != 0 || stem.size() - digits > 6)
+    {
+        return -1;
+    }
+    return std::max(0, std::stoi(stem.substr(digits)) - 1);
+}
+
+bool FigureOfFaces(const std::string& figure)
+{
+    return fs::path(figure).parent_path().filename() == "faces";
+}
+
 std::string FigureSceneFile(const std::string& folder, const std::string& figure)
 {
     const std::string name = SceneOfFigure(figure) + ".json";
@@ -449,7 +469,12 @@ std::vector<Lesson> FindLessons(const std::string& folder)
             const std::string scene = FigureSceneFile(folder, block.target);
             if (!scene.empty())
             {
-                first = first.empty() ? scene : first;
+                if (first.empty())
+                {
+                    first = scene;
+                    lesson.firstStep = FigureStep(block.target);
+                    lesson.firstFaces = FigureOfFaces(block.target);
+                }
                 mentioned.emplace_back(text.find(block.target), scene);
             }
         }

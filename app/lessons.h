@@ -18,6 +18,10 @@ struct Lesson
     /// The scene files of its figures and those its text names (tutorials/scenes/NAME.json, scenes/concave/NAME.json),
     /// in order of first mention, no repeats, except that the scene of its first figure comes first.
     std::vector<std::string> scenes;
+    /// The step its first figure shows (FigureStep), which the lesson opens its first scene on; -1 for the scene's own.
+    int firstStep = -1;
+    /// True when its first figure shows the face tests (figures/faces/), which the lesson opens its first scene in.
+    bool firstFaces = false;
 };
 
 /// The scenes a lesson's text names ("scenes/NAME.json", "scenes/concave/NAME.json"), as NAME ("concave/NAME"), in
@@ -26,6 +30,13 @@ std::vector<std::string> NamedScenes(const std::string& markdown);
 
 /// The scene a figure was rendered from: "figures/faces/overlapping_boxes-step6.png" -> "overlapping_boxes".
 std::string SceneOfFigure(const std::string& figure);
+
+/// The step of the textbook test a figure shows, from 0: "overlapping_boxes-step6.png" -> 5; -1 for a figure without
+/// "-stepN", which shows the step its scene's view asks for.
+int FigureStep(const std::string& figure);
+
+/// True for a figure of the face tests' steps (figures/faces/NAME-stepN.png, satviz-render --view faces).
+bool FigureOfFaces(const std::string& figure);
 
 /// The scene file a figure of the lessons in `folder` was rendered from: `folder`/scenes/NAME.json or, failing that,
 /// NAME.json in a folder of scenes/ (scenes/concave/), NAME as SceneOfFigure gives it; empty when there is none.

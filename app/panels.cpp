@@ -1207,7 +1207,7 @@ void Panels::Popups()
         m_app.Save(m_pathBuffer);
         if (m_openAfterSaveAs && !document.Dirty())
         {
-            m_app.Open(m_app.PendingOpen());
+            m_app.Open(m_app.PendingOpen(), m_app.PendingStep(), m_app.PendingFaces());
         }
         m_openAfterSaveAs = false;
     }
@@ -1274,7 +1274,7 @@ void Panels::Popups()
                 m_app.Save(document.File());
                 if (!document.Dirty())
                 {
-                    m_app.Open(m_app.PendingOpen());
+                    m_app.Open(m_app.PendingOpen(), m_app.PendingStep(), m_app.PendingFaces());
                 }
             }
         }
@@ -1282,7 +1282,7 @@ void Panels::Popups()
         if (button("Unsaved changes before opening", "Open without saving"))
         {
             ImGui::CloseCurrentPopup();
-            m_app.Open(m_app.PendingOpen());
+            m_app.Open(m_app.PendingOpen(), m_app.PendingStep(), m_app.PendingFaces());
         }
         ImGui::SameLine();
         if (button("Unsaved changes before opening", "Cancel") || PressedNamed(ImGuiKey_Escape))
@@ -1542,7 +1542,7 @@ void Panels::LessonWindow()
                 ImGui::PushID(&block);
                 if (ImGui::SmallButton(("show " + stem).c_str()))
                 {
-                    m_app.RequestOpen(scene);
+                    m_app.RequestOpen(scene, FigureStep(block.target), FigureOfFaces(block.target));
                 }
                 ImGui::PopID();
             }

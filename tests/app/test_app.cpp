@@ -1900,6 +1900,74 @@ TEST_CASE("Every lesson has a button for each scene it shows or names and opens 
     }
 }
 
+TEST_CASE("Opening a lesson shows the step of the figure its text starts with, and so does a figure's button",
+          "[app][lessons]")
+{
+    // Lesson 1 speaks of Axis 1 beside its first figure (l01_triangle_and_ball-step1.png): the canvas shows that
+    // step, not the verdict. A figure without "-stepN" is drawn at the step its scene's view asks for.
+    const fs::path tutorials = fs::path(SATVIZ_SOURCE_DIR) / "tutorials";
+    Harness h((tutorials / "scenes" / "overlapping_boxes.json").string());
+    const std::vector<Lesson>& lessons = h.app->Lessons();
+    REQUIRE(lessons.size() >= 19);
+    int stepped = 0;
+    for (size_t i = 0; i < lessons.size(); ++i)
+    {
+        INFO(lessons[i].file);
+        std::ifstream in(lessons[i].file);
+        std::stringstream read;
+        read << in.rdbuf();
+        const std::string text = read.str();
+        // The first figure whose scene is on disk, read from the Markdown here.
+        static const std::regex figure(R"(\]\(([^) ]*figures/[^) ]+\.png)\))");
+        std::string target;
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), figure); it != std::sregex_iterator(); ++it)
+        {
+            if (!FigureSceneFile(tutorials.string(), (*it)[1].str()).empty())
+            {
+                target = (*it)[1].str();
+                break;
+            }
+        }
+        if (target.empty())
+        {
+            continue;
+        }
+        INFO(target);
+        REQUIRE(h.app->OpenLesson(static_cast<int>(i)));
+        h.Frames(2);
+        REQUIRE(h.AwaitStudy());
+        h.Frames(2);
+        REQUIRE(h.View().Setup().Ok());
+        const std::string stem = fs::path(target).stem().string();
+        const size_t dash = stem.rfind("-step");
+        int expected = -1;
+        if (dash != std::string::npos)
+        {
+            expected = std::stoi(stem.substr(dash + 5)) - 1;
+            ++stepped;
+        }
+        else
+        {
+            const FigureSetup own = SetUpFigure(h.Doc().GetScene(), {});
+            REQUIRE(own.Ok());
+            expected = own.figure.step;
+        }
+        CHECK((h.View().Choices().steps == StepView::Faces) == (target.find("figures/faces/") != std::string::npos));
+        CHECK(h.View().Step() == expected);
+        CHECK(h.View().Setup().figure.step == expected);
+    }
+    CHECK(stepped >= 5);
+    // The figure's own button: lesson 4's face test 6 is the sixth step of the face view.
+    REQUIRE(h.app->RequestOpen((tutorials / "scenes" / "overlapping_boxes.json").string(),
+                               FigureStep("figures/faces/overlapping_boxes-step6.png"),
+                               FigureOfFaces("figures/faces/overlapping_boxes-step6.png")));
+    REQUIRE(h.AwaitStudy());
+    h.Frames(2);
+    CHECK(h.View().Choices().steps == StepView::Faces);
+    CHECK(h.View().Step() == 5);
+    CHECK_FALSE(h.Doc().Dirty());
+}
+
 TEST_CASE("Help > Lessons lists the lessons, and opening one shows its text and loads its scene", "[app][lessons]")
 {
     Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
