@@ -101,8 +101,8 @@ int Root(std::vector<int>& parent, int i)
 
 } // namespace
 
-void ApplyRestitution(std::vector<SolverContact>& contacts, std::vector<SolverBody>& bodies,
-                      const std::vector<double>& energyBefore, int passes)
+void ApplyRestitution(std::vector<SolverContact>& contacts, const std::vector<int>& order,
+                      std::vector<SolverBody>& bodies, const std::vector<double>& energyBefore, int passes)
 {
     bool any = false;
     for (SolverContact& c : contacts)
@@ -153,8 +153,9 @@ void ApplyRestitution(std::vector<SolverContact>& contacts, std::vector<SolverBo
     // The velocity change of the unscaled restitution impulses, per body.
     std::vector<Vec2> dv(n);
     std::vector<double> dw(n, 0.0);
-    for (const SolverContact& c : contacts)
+    for (const int k : order)
     {
+        const SolverContact& c = contacts[static_cast<size_t>(k)];
         for (int i = 0; i < c.count; ++i)
         {
             const SolverPoint& p = c.points[i];
@@ -199,8 +200,9 @@ void ApplyRestitution(std::vector<SolverContact>& contacts, std::vector<SolverBo
         scale[r] = c0 >= 0.0 || disc < 0.0 ? 0.0 : std::min(1.0, (-g[r] + std::sqrt(disc)) / (2.0 * h[r]));
     }
     bool applied = false;
-    for (SolverContact& c : contacts)
+    for (const int k : order)
     {
+        SolverContact& c = contacts[static_cast<size_t>(k)];
         const int r = Root(parent, moves(c.a) ? c.a : c.b);
         for (int i = 0; i < c.count; ++i)
         {
@@ -222,8 +224,9 @@ void ApplyRestitution(std::vector<SolverContact>& contacts, std::vector<SolverBo
     // and never take back any of the impulses above.
     for (int pass = 0; pass < passes; ++pass)
     {
-        for (SolverContact& c : contacts)
+        for (const int k : order)
         {
+            SolverContact& c = contacts[static_cast<size_t>(k)];
             SolverBody& a = bodies[c.a];
             SolverBody& b = bodies[c.b];
             for (int i = 0; i < c.count; ++i)

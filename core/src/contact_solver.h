@@ -237,8 +237,9 @@ inline double Energy(const SolverBody& b)
 ///  5. If any was, `passes` push-only passes stop the approaches the bounces made at other points (an inelastic
 ///     solve whose impulses only add to the ones before: it cannot take a bounce back, nor add energy).
 /// A lone contact, or contacts of one restitution, get their bounce speeds exactly (s = 1). Each point's added
-/// impulse is left in `restitutionImpulse` and added to its normal impulse.
-void ApplyRestitution(std::vector<SolverContact>& contacts, std::vector<SolverBody>& bodies,
-                      const std::vector<double>& energyBefore, int passes);
+/// impulse is left in `restitutionImpulse` and added to its normal impulse. Where the order of the contacts changes
+/// the sums (the impulses applied, the push-only passes), they are visited in `order`, a list of their indices.
+void ApplyRestitution(std::vector<SolverContact>& contacts, const std::vector<int>& order,
+                      std::vector<SolverBody>& bodies, const std::vector<double>& energyBefore, int passes);
 
 } // namespace satviz::detail

@@ -30,7 +30,8 @@ struct Stepper
     std::vector<SolverBody> solverBodies;
     std::vector<SolverContact> solverContacts;
     std::vector<SolverContact> guards; // the points of swept pairs: for the position passes only
-    std::vector<int> solveOrder;       // solverContacts' indices in the order the passes visit them, top down
+    std::vector<int> solveOrder;       // solverContacts' indices in the order the passes visit them (OrderTopDown)
+    std::vector<int> foundOrder;       // after SortContacts: the solver contacts' indices in the order found
     std::vector<double> energyBefore;  // per body, after gravity and before the contacts
     std::vector<Transform> xfs;        // transforms at the start of the step (one sine and cosine per body)
     std::vector<Vec2> centers;         // centres of mass at the start of the step
@@ -65,6 +66,9 @@ struct Stepper
     void Sleep();
     /// The order of the velocity and position passes (solveOrder): top down along gravity, ties in the order found.
     void OrderTopDown();
+    /// Stores solverContacts in the order of the passes (solveOrder), so that each pass reads them in sequence, and
+    /// keeps in foundOrder where each went, for the work whose results depend on the order found.
+    void SortContacts();
 };
 
 /// Union-find over body indices: the root of i's set, halving the path on the way (for the groups of

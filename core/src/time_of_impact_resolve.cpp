@@ -163,7 +163,12 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
             }
         }
     }
-    ApplyRestitution(contacts, solver, energyBefore, world.settings.velocityIterations);
+    std::vector<int> inOrder(contacts.size());
+    for (size_t k = 0; k < contacts.size(); ++k)
+    {
+        inOrder[k] = static_cast<int>(k);
+    }
+    ApplyRestitution(contacts, inOrder, solver, energyBefore, world.settings.velocityIterations);
     // Whether each hit still approaches after the solve, measured at its own points and lever arms. Round-off of
     // the solve leaves a resolved pair approaching by a few ulps of the speeds: that is not an approach.
     std::vector<uint8_t> approaching(group.size(), 0);

@@ -416,9 +416,9 @@ void Stepper::CorrectPositions()
     const std::vector<Vec2> afterMove = c; // where the move left the centres, before the passes
     for (int pass = 0; pass < settings.positionIterations; ++pass)
     {
-        for (const int k : solveOrder)
+        for (const SolverContact& sc : solverContacts)
         {
-            correct(solverContacts[static_cast<size_t>(k)], settings.correctionFactor);
+            correct(sc, settings.correctionFactor);
         }
         for (const SolverContact& g : guards)
         {
@@ -465,9 +465,9 @@ void Stepper::CorrectPositions()
     };
     if (settings.positionIterations > 0)
     {
-        for (const int k : solveOrder)
+        for (const SolverContact& sc : solverContacts)
         {
-            stopAtStatic(solverContacts[static_cast<size_t>(k)]);
+            stopAtStatic(sc);
         }
         for (const SolverContact& g : guards)
         {
@@ -486,9 +486,8 @@ void Stepper::CorrectPositions()
     };
     if (settings.positionIterations > 0)
     {
-        for (const int k : solveOrder)
+        for (const SolverContact& sc : solverContacts)
         {
-            const SolverContact& sc = solverContacts[static_cast<size_t>(k)];
             if (!fixed(sc))
             {
                 continue;
