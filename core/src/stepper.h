@@ -12,6 +12,31 @@
 namespace satviz::detail
 {
 
+/// The lists a step works in, kept between steps (World::stepMemory). Each stage sizes and fills a list before it
+/// reads it, so nothing of one step reaches the next through them.
+struct StepMemory
+{
+    std::vector<SolverBody> solverBodies;          ///< see Stepper
+    std::vector<SolverContact> solverContacts;     ///< see Stepper
+    std::vector<SolverContact> guards;             ///< see Stepper
+    std::vector<int> solveOrder;                   ///< see Stepper
+    std::vector<int> foundOrder;                   ///< see Stepper
+    std::vector<double> energyBefore;              ///< see Stepper
+    std::vector<Transform> xfs;                    ///< see Stepper
+    std::vector<Vec2> centers;                     ///< see Stepper
+    std::vector<uint8_t> hit;                      ///< see Stepper
+    std::vector<uint8_t> bullets;                  ///< see Stepper
+    std::vector<double> bodyReach;                 ///< see Stepper
+    std::vector<Rot> rotations;                    ///< see Stepper
+    std::vector<SolverContact> spareContacts;      ///< SortContacts: the contacts in their new order
+    std::vector<WorldContact> previousContacts;    ///< FindContacts: the last step's contacts
+    std::vector<std::pair<int, int>> candidates;   ///< FindContacts: the broadphase's pairs
+    std::vector<Aabb> boxes;                       ///< FindContacts: the bodies' boxes
+};
+
+/// The world's working lists, made on its first step.
+StepMemory& MemoryOf(World& world);
+
 /// The state of one step, shared by its stages. Step (world.cpp) runs them in this order:
 ///  1. FindContacts (world_contacts.cpp): bounds, broadphase, narrowphase, warm starting, waking. A pair that a
 ///     bullet would outrun (LeftToSweep) keeps its points only as a guard for the position passes.
@@ -27,21 +52,28 @@ struct Stepper
     World& world;
     double dt;
     const WorldSettings& settings;
-    std::vector<SolverBody> solverBodies;
-    std::vector<SolverContact> solverContacts;
-    std::vector<SolverContact> guards; // the points of swept pairs: for the position passes only
-    std::vector<int> solveOrder;       // solverContacts' indices in the order the passes visit them (OrderTopDown)
-    std::vector<int> foundOrder;       // after SortContacts: the solver contacts' indices in the order found
-    std::vector<double> energyBefore;  // per body, after gravity and before the contacts
-    std::vector<Transform> xfs;        // transforms at the start of the step (one sine and cosine per body)
-    std::vector<Vec2> centers;         // centres of mass at the start of the step
-    std::vector<uint8_t> hit;          // per body: took a time-ordered hit in the step (Move)
-    std::vector<uint8_t> bullets;      // per body: moves beyond its reach or turns fast (FindContacts)
-    std::vector<double> bodyReach;     // per body: how far FindContacts looked beyond its box
-    std::vector<Rot> rotations;        // per body: MakeRot of its angle after Move
+    StepMemory& memory;
+    std::vector<SolverBody>& solverBodies;
+    std::vector<SolverContact>& solverContacts;
+    std::vector<SolverContact>& guards; // the points of swept pairs: for the position passes only
+    std::vector<int>& solveOrder;       // solverContacts' indices in the order the passes visit them (OrderTopDown)
+    std::vector<int>& foundOrder;       // after SortContacts: the solver contacts' indices in the order found
+    std::vector<double>& energyBefore;  // per body, after gravity and before the contacts
+    std::vector<Transform>& xfs;        // transforms at the start of the step (one sine and cosine per body)
+    std::vector<Vec2>& centers;         // centres of mass at the start of the step
+    std::vector<uint8_t>& hit;          // per body: took a time-ordered hit in the step (Move)
+    std::vector<uint8_t>& bullets;      // per body: moves beyond its reach or turns fast (FindContacts)
+    std::vector<double>& bodyReach;     // per body: how far FindContacts looked beyond its box
+    std::vector<Rot>& rotations;        // per body: MakeRot of its angle after Move
 
-    /// The step of `world` by `step` seconds, with the world's settings.
-    Stepper(World& w, double step) : world(w), dt(step), settings(w.settings) {}
+    /// The step of `world` by `step` seconds, with the world's settings, in the world's working lists.
+    Stepper(World& w, double step)
+        : world(w), dt(step), settings(w.settings), memory(MemoryOf(w)), solverBodies(memory.solverBodies),
+          solverContacts(memory.solverContacts), guards(memory.guards), solveOrder(memory.solveOrder),
+          foundOrder(memory.foundOrder), energyBefore(memory.energyBefore), xfs(memory.xfs), centers(memory.centers),
+          hit(memory.hit), bullets(memory.bullets), bodyReach(memory.bodyReach), rotations(memory.rotations)
+    {
+    }
 
     /// Stage 1: bounds, broadphase, narrowphase, warm starting, waking.
     void FindContacts();

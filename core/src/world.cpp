@@ -190,6 +190,21 @@ std::vector<std::pair<int, int>> TouchingPairs(const std::vector<Shape>& shapes,
     return touching;
 }
 
+namespace detail
+{
+
+StepMemory& MemoryOf(World& world)
+{
+    std::unique_ptr<StepMemory, void (*)(StepMemory*)>& memory = world.stepMemory.memory;
+    if (memory == nullptr)
+    {
+        memory = std::unique_ptr<StepMemory, void (*)(StepMemory*)>(new StepMemory, [](StepMemory* m) { delete m; });
+    }
+    return *memory;
+}
+
+} // namespace detail
+
 void Step(World& world, double dt)
 {
     world.counts = StepCounts();

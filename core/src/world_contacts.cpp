@@ -160,9 +160,10 @@ void Stepper::FindContacts()
     // deep, which the sweep and the contacts leave rare.)
     const double correctionReach = settings.positionIterations > 0 ? settings.maxCorrection : 0.0;
     PairFilter filter{&bodies, settings.skipStaticPairs};
-    std::vector<std::pair<int, int>> candidates;
+    std::vector<std::pair<int, int>>& candidates = memory.candidates;
+    candidates.clear();
     StepTrace* stepTrace = world.stepTrace;
-    std::vector<Aabb> boxes;
+    std::vector<Aabb>& boxes = memory.boxes;
     const bool withBoxes = settings.broadphase || stepTrace != nullptr;
     if (withBoxes)
     {
@@ -242,7 +243,9 @@ void Stepper::FindContacts()
     }
     counts.boundsApart = counts.pairs - counts.staticPairs - counts.sleepingPairs - counts.tested;
 
-    std::vector<WorldContact> previous = std::move(world.contacts);
+    // The last step's contacts go to the working lists, and the list they leave there takes this step's.
+    std::vector<WorldContact>& previous = memory.previousContacts;
+    previous.swap(world.contacts);
     // The previous contacts are in pair order: those of body a are previous[firstOf[a]] up to firstOf[a + 1], a
     // few to scan for b.
     std::vector<int> firstOf(static_cast<size_t>(n) + 1, 0);

@@ -101,7 +101,8 @@ void Stepper::SortContacts()
 {
     const size_t m = solverContacts.size();
     foundOrder.resize(m);
-    std::vector<SolverContact> sorted(m);
+    std::vector<SolverContact>& sorted = memory.spareContacts;
+    sorted.resize(m);
     for (size_t p = 0; p < m; ++p)
     {
         const int k = solveOrder[p];

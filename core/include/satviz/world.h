@@ -13,12 +13,36 @@
 #include <satviz/tasks.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace satviz
 {
+
+namespace detail
+{
+struct StepMemory;
+} // namespace detail
+
+/// The working lists of the step (its bodies' velocities, its contacts as the solver sees them, their order, ...),
+/// kept between steps so that a step reuses the memory of the one before instead of allocating its own. Working
+/// memory, not state: every step sets what it reads before reading it, and a copy of a world starts without any.
+struct StepMemoryCache
+{
+    /// The lists; null until the first step.
+    std::unique_ptr<detail::StepMemory, void (*)(detail::StepMemory*)> memory{nullptr, nullptr};
+
+    StepMemoryCache() = default;
+    /// A copy starts empty: two worlds never share their working memory.
+    StepMemoryCache(const StepMemoryCache&) {}
+    /// Keeps its own memory: the lists are not part of what is copied.
+    StepMemoryCache& operator=(const StepMemoryCache&) { return *this; }
+    StepMemoryCache(StepMemoryCache&&) = default;
+    StepMemoryCache& operator=(StepMemoryCache&&) = default;
+    ~StepMemoryCache() = default;
+};
 
 /// A static body never moves (infinite mass); a dynamic body moves under gravity and contacts.
 enum class BodyType
@@ -205,6 +229,8 @@ struct World
     SortAndSweep broadphase;
     /// The same for the swept boxes of the time-ordered hits.
     SortAndSweep sweptBroadphase;
+    /// The step's working lists, kept between steps to save allocating them again.
+    StepMemoryCache stepMemory;
 };
 
 /// Adds a body, computing its mass properties from the shape and the density (a static body gets none); a concave
