@@ -10,7 +10,9 @@ for tool in xvfb-run xdotool; do
   fi
 done
 if [ -z "${SATVIZ_E2E_DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1280x800x24" env SATVIZ_E2E_DISPLAY=1 bash "$0" "$@"
+  # -noreset: Xvfb otherwise starts over when its last client leaves (the app ended by a script that starts it
+  # again), and a client that connects meanwhile finds no display ("Can't open display").
+  exec xvfb-run -a -s "-screen 0 1280x800x24 -noreset" env SATVIZ_E2E_DISPLAY=1 bash "$0" "$@"
 fi
 
 # A key held for 80 ms, as a person presses it (ImGui 1.86 reads the keys once per frame, and the app queues key
