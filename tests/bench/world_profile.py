@@ -19,7 +19,8 @@ STAGES = [
      r"FindPairs|ComputeAabb|SweepAxis|SkipPair|SkipSlowPair|sort<.*pair<int, int>|insert<.*pair<int, int>"),
     ("restitution", r"ApplyRestitution"),
     ("velocity passes (with preparation, warm start, order, energy limit)",
-     r"SolveContactVelocity|SolveVelocities|PrepareContact|WarmStart|OrderTopDown|StoreImpulses|LimitEnergyGain"),
+     r"SolveContactVelocity|SolveVelocities|PrepareContact|WarmStart|OrderTopDown|SortContacts|StoreImpulses|"
+     r"LimitEnergyGain"),
     ("position correction (passes, guards, lift off static bodies)", r"CorrectPositions|GuardAfterMove"),
     ("move (positions, sines and cosines)", r"Stepper::Move|sincos|MakeRot|TurnsBeyondContacts|__sin|__cos"),
     ("sleep and waking islands", r"Sleep|WakeIslands"),
