@@ -161,6 +161,25 @@ double Box2DV3World::TotalMass() const
     return mass;
 }
 
+std::vector<std::pair<std::string, double>> Box2DV3World::LastStepProfile() const
+{
+    // b2Profile is a run of floats, each a stage's ms in the last step, in this order.
+    constexpr int kFields = static_cast<int>(sizeof(b2Profile) / sizeof(float));
+    static const char* const kNames[kFields] = {
+        "step",          "pairs",        "collide",    "solve",         "solverSetup",        "constraints",
+        "prepareConstraints", "integrateVelocities", "warmStart", "solveImpulses", "integratePositions",
+        "relaxImpulses", "applyRestitution", "storeImpulses", "splitIslands", "transforms", "sensorHits",
+        "jointEvents",   "hitEvents",    "refit",      "bullets",       "sleepIslands",       "sensors"};
+    const b2Profile profile = b2World_GetProfile(impl->world);
+    const float* fields = reinterpret_cast<const float*>(&profile);
+    std::vector<std::pair<std::string, double>> stages;
+    for (int i = 0; i < kFields; ++i)
+    {
+        stages.emplace_back(kNames[i], fields[i]);
+    }
+    return stages;
+}
+
 #else
 
 bool HaveBox2DV3()
@@ -206,6 +225,11 @@ double Box2DV3World::PotentialEnergy() const
 double Box2DV3World::TotalMass() const
 {
     return 0.0;
+}
+
+std::vector<std::pair<std::string, double>> Box2DV3World::LastStepProfile() const
+{
+    return {};
 }
 
 #endif

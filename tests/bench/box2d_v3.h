@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace satviz::bench
@@ -65,6 +66,9 @@ class Box2DV3World
     double PotentialEnergy() const;
     /// Total mass of the dynamic bodies.
     double TotalMass() const;
+    /// Box2D v3's own profile of the last step (b2World_GetProfile): each stage's name and milliseconds, the whole
+    /// step first.
+    std::vector<std::pair<std::string, double>> LastStepProfile() const;
 
   private:
     struct Impl;
