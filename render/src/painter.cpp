@@ -2628,10 +2628,19 @@ class Painter
         }
         // End values sit outside their bar ends, two spaces apart at least, so that they never read as one; a long
         // number (a pair far from the origin) slides in along its row rather than reach the image's edge or the
-        // body's name at the row's start.
+        // body's name at the row's start. A short bar near the row's start (a thin wall's interval on a narrow
+        // canvas) pushes the low value onto the high one: the high one then moves on to keep them apart.
         const float size1 = m_canvas.MeasureText(s1, TextStyle::Label).x;
-        m_canvas.Text({std::max(x0 - size0.x - 4.5f, rowStart), ty}, s0, TextStyle::Label, ink);
-        m_canvas.Text({std::min(x1 + 4.5f, Width() - 8.0f - size1), ty}, s1, TextStyle::Label, ink);
+        constexpr float kApart = 10.0f;
+        float t0 = std::max(x0 - size0.x - 4.5f, rowStart);
+        float t1 = std::min(x1 + 4.5f, Width() - 8.0f - size1);
+        if (t0 + size0.x + kApart > t1)
+        {
+            t1 = std::min(t0 + size0.x + kApart, Width() - 8.0f - size1);
+            t0 = std::min(t0, t1 - kApart - size0.x);
+        }
+        m_canvas.Text({t0, ty}, s0, TextStyle::Label, ink);
+        m_canvas.Text({t1, ty}, s1, TextStyle::Label, ink);
     }
 
     // t from 0 to 1: this axis's entry and exit, and the window (latest entry, earliest exit) so far.

@@ -2112,3 +2112,60 @@ TEST_CASE("In the face view, every step of every pair of the course keeps its la
     CHECK(failing == 0);
     CHECK(drawn > 500);
 }
+
+TEST_CASE("On the app's narrower canvas the number line's and time bar's labels keep apart wherever the body is dragged",
+          "[labels]")
+{
+    // Lesson 8's bullet_wall beside the lesson column (460 x 758, and the smallest window's 360 x 600), in both
+    // views, the bullet dragged over a grid of places around where it starts, the camera kept as the scene framed it
+    // (as a drag keeps it): the interval ends of the number line (the thin wall's -0.010 and 0.010 sat on each other
+    // once the bullet's swept interval widened the line) and the entry, exit, tick and window labels of the time bar
+    // never sit on each other nor leave the canvas.
+    const Scene authored = painter_test::LessonScene("bullet_wall");
+    int drawn = 0;
+    for (const auto& [width, height, view] : {std::tuple{460, 758, StepView::Textbook}, std::tuple{360, 600, StepView::Textbook},
+                                        std::tuple{460, 758, StepView::Faces}, std::tuple{360, 600, StepView::Faces}})
+    {
+        FigureOptions options;
+        options.setSteps = true;
+        options.steps = view;
+        FigureSetup framed = SetUpFigure(authored, options);
+        REQUIRE(framed.Ok());
+        REQUIRE(FrameScene(authored.view, framed.study, framed.figure.layers, width, height, framed.figure.view));
+        const View camera = framed.figure.view;
+        for (double dx = -1.2; dx <= 1.21; dx += 0.1)
+        {
+            for (double dy = -0.6; dy <= 0.61; dy += 0.2)
+            {
+                Scene scene = authored;
+                Body& bullet = scene.bodies[static_cast<size_t>(framed.study.bodyB)];
+                bullet.position = bullet.position + Vec2{dx, dy};
+                FigureSetup setup = SetUpFigure(scene, options);
+                REQUIRE(setup.Ok());
+                setup.figure.view = camera;
+                for (int k = 0; k < FigureStepCount(scene, setup); ++k)
+                {
+                    const RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
+                    INFO("bullet moved by (" << dx << ", " << dy << "), step " << k + 1 << " at " << width << " x "
+                                             << height << (view == StepView::Faces ? " (faces)" : ""));
+                    // The problems of the panel's texts (number line and time bar), against every text of the figure.
+                    std::vector<std::string> problems;
+                    for (const std::string& problem : HiddenTexts(canvas, width, height))
+                    {
+                        if (problem.find("in \"timebar\"") != std::string::npos || problem.find("in \"panel\"") != std::string::npos)
+                        {
+                            problems.push_back(problem);
+                        }
+                    }
+                    for (const std::string& problem : problems)
+                    {
+                        UNSCOPED_INFO(problem);
+                    }
+                    CHECK(problems.empty());
+                    ++drawn;
+                }
+            }
+        }
+    }
+    CHECK(drawn > 100);
+}
