@@ -1156,7 +1156,10 @@ class Painter
             }
             const Vec2 c = ShapeCenter(body.shape, body.Xf());
             ScreenPoint from = At(c);
-            ScreenPoint tip = At(c + body.velocity);
+            // A velocity whose step runs far out of the scene (l17_bullet's 1667 m on a canvas of a few metres) is
+            // drawn shorter, its head in sight, and its label gives the speed, as it is not to scale.
+            bool shortened = false;
+            ScreenPoint tip = TipInSight(from, At(c + body.velocity), &shortened);
             // Two arrows on one line (a head-on pair) would hide each other: each moves aside, parallel, A's to
             // the left of its motion and B's to the left of its own, so they pass.
             const Body& other = BodyOf(1 - s);
@@ -1169,7 +1172,10 @@ class Painter
             }
             MarkedArrow(from, tip, InkOf(s), 2.0f, 11.0f);
             // Kept out of the other body, where it would read as that body's velocity.
-            m_labels.PlaceOutside(OutlineOf(1 - s), tip, "v", TextStyle::Heading, InkOf(s),
+            const std::string name = shortened ? "v = " + FormatNumber(Length(body.velocity)) +
+                                                     (m_scene.hasWorld ? " m/s" : " per step")
+                                               : "v";
+            m_labels.PlaceOutside(OutlineOf(1 - s), tip, name, shortened ? TextStyle::Label : TextStyle::Heading, InkOf(s),
                                  static_cast<float>(body.velocity.x), static_cast<float>(-body.velocity.y), 6.0f,
                                  LabelRank::Note);
             m_labels.Names(MarkKind::ArrowHead);
@@ -1192,15 +1198,51 @@ class Painter
         }
     }
 
+    // The tip of an arrow from `from` to `tip`, drawn as far as it fits 16 pixels inside the scene in sight; one that
+    // would leave it is drawn shorter, not to scale: a modest arrow, which points the way without crossing the
+    // figure, and whose label then gives the speed.
+    ScreenPoint TipInSight(ScreenPoint from, ScreenPoint tip, bool* shortened = nullptr) const
+    {
+        const ScreenRect sight = SceneInSight();
+        const ScreenRect inside{sight.minX + 16.0f, std::max(sight.minY, m_layout.sceneTop) + 16.0f, sight.maxX - 16.0f,
+                                std::min(sight.maxY, m_layout.sceneBottom) - 16.0f};
+        float keep = 1.0f;
+        const float dx = tip.x - from.x;
+        const float dy = tip.y - from.y;
+        if (dx > 0.0f && tip.x > inside.maxX)
+        {
+            keep = std::min(keep, (inside.maxX - from.x) / dx);
+        }
+        if (dx < 0.0f && tip.x < inside.minX)
+        {
+            keep = std::min(keep, (inside.minX - from.x) / dx);
+        }
+        if (dy > 0.0f && tip.y > inside.maxY)
+        {
+            keep = std::min(keep, (inside.maxY - from.y) / dy);
+        }
+        if (dy < 0.0f && tip.y < inside.minY)
+        {
+            keep = std::min(keep, (inside.minY - from.y) / dy);
+        }
+        if (shortened != nullptr)
+        {
+            *shortened = keep < 1.0f;
+        }
+        if (keep < 1.0f)
+        {
+            keep = std::min(keep, 140.0f / std::max(std::hypot(dx, dy), 1e-3f));
+        }
+        keep = std::max(keep, 0.0f);
+        return {from.x + keep * dx, from.y + keep * dy};
+    }
+
     // A figure of one instant (a static query) with the swept layer: each moving body's velocity as an arrow from
     // its centre, named with its speed. A second's travel is drawn when it fits in the scene; a longer one is drawn
     // shorter, where its head shows, and the speed in its name says how fast.
     void Velocities()
     {
         m_canvas.BeginGroup("swept");
-        const ScreenRect sight = SceneInSight();
-        const ScreenRect inside{sight.minX + 16.0f, std::max(sight.minY, m_layout.sceneTop) + 16.0f, sight.maxX - 16.0f,
-                                std::min(sight.maxY, m_layout.sceneBottom) - 16.0f};
         for (int s = 0; s < 2; ++s)
         {
             const Body& body = BodyOf(s);
@@ -1210,33 +1252,7 @@ class Painter
                 continue;
             }
             const ScreenPoint from = At(ShapeCenter(body.shape, body.Xf()));
-            ScreenPoint tip = At(ShapeCenter(body.shape, body.Xf()) + body.velocity);
-            float keep = 1.0f;
-            const float dx = tip.x - from.x;
-            const float dy = tip.y - from.y;
-            if (dx > 0.0f && tip.x > inside.maxX)
-            {
-                keep = std::min(keep, (inside.maxX - from.x) / dx);
-            }
-            if (dx < 0.0f && tip.x < inside.minX)
-            {
-                keep = std::min(keep, (inside.minX - from.x) / dx);
-            }
-            if (dy > 0.0f && tip.y > inside.maxY)
-            {
-                keep = std::min(keep, (inside.maxY - from.y) / dy);
-            }
-            if (dy < 0.0f && tip.y < inside.minY)
-            {
-                keep = std::min(keep, (inside.minY - from.y) / dy);
-            }
-            if (keep < 1.0f)
-            {
-                // Not to scale: a modest arrow, which points the way without crossing the figure.
-                keep = std::min(keep, 140.0f / std::max(std::hypot(dx, dy), 1e-3f));
-            }
-            keep = std::max(keep, 0.0f);
-            tip = {from.x + keep * dx, from.y + keep * dy};
+            const ScreenPoint tip = TipInSight(from, At(ShapeCenter(body.shape, body.Xf()) + body.velocity));
             if (std::hypot(tip.x - from.x, tip.y - from.y) < 20.0f)
             {
                 continue; // no room for an arrow

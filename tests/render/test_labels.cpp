@@ -2169,3 +2169,56 @@ TEST_CASE("On the app's narrower canvas the number line's and time bar's labels 
     }
     CHECK(drawn > 100);
 }
+
+TEST_CASE("A velocity arrow whose step runs out of the scene keeps its head in sight and names its speed", "[labels]")
+{
+    // l17_bullet's bullet moves 1667 m in a step, on a canvas a few metres wide: swept, with the swept layer, its
+    // arrow ran off the canvas, head and all, beside the lesson column (460 x 758) as on the wide canvas (900 x 758).
+    Scene scene = painter_test::LessonScene("l17_bullet");
+    scene.view.query = ViewQuery::Sweep;
+    scene.view.layers.push_back("swept");
+    for (const auto& [width, height] : {std::pair{460, 758}, std::pair{900, 758}, std::pair{360, 600}})
+    {
+        INFO(width << " x " << height);
+        FigureSetup setup = SetUpFigure(scene, FigureOptions{});
+        REQUIRE(setup.Ok());
+        REQUIRE((setup.figure.layers & kLayerSwept) != 0);
+        REQUIRE(FrameScene(scene.view, setup.study, setup.figure.layers, width, height, setup.figure.view));
+        const bool titled = !scene.view.caption.empty();
+        const FigureLayout layout = LayoutFigure(setup.study, setup.figure.layers, width, height, titled);
+        for (int k = 0; k < FigureStepCount(scene, setup); ++k)
+        {
+            INFO("step " << k + 1);
+            const RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
+            // The bullet's arrow: a head (a filled triangle) of the swept group, and its label naming the speed.
+            int heads = 0;
+            for (const DrawCommand* c : canvas.InGroup("swept"))
+            {
+                if (c->kind == DrawCommand::Kind::FillConvex && c->points.size() == 3)
+                {
+                    for (const ScreenPoint& p : c->points)
+                    {
+                        CHECK(p.x >= 0.0f);
+                        CHECK(p.x <= static_cast<float>(width));
+                        CHECK(p.y >= layout.sceneTop);
+                        CHECK(p.y <= layout.sceneBottom);
+                    }
+                    ++heads;
+                }
+            }
+            CHECK(heads == 1);
+            bool named = false;
+            for (const DrawCommand& c : canvas.commands)
+            {
+                // The scene's 100 000 m/s, with the world's unit.
+                named = named || (c.kind == DrawCommand::Kind::Text && c.text.rfind("v = 100000", 0) == 0 &&
+                                  c.text.size() > 4 && c.text.compare(c.text.size() - 4, 4, " m/s") == 0);
+            }
+            CHECK(named);
+            for (const std::string& problem : HiddenTexts(canvas, width, height))
+            {
+                CHECK(problem.find("\"v") == std::string::npos);
+            }
+        }
+    }
+}
