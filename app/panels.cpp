@@ -1069,9 +1069,18 @@ void Panels::ResponseSteps()
                 for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i)
                 {
                     const WorldContactWords& c = world.contacts[static_cast<size_t>(i)];
-                    if (ImGui::Selectable(c.text.c_str(), c.a == chosenA && c.b == chosenB))
+                    // A row too long for the list ends between words with "...", never inside a number (it cut
+                    // "overlap 0.000946 and 0.000..." mid-number); the whole row shows as its tooltip.
+                    const std::string row = ShortenToWidth(c.text, ImGui::GetContentRegionAvail().x);
+                    ImGui::PushID(i);
+                    if (ImGui::Selectable(row.c_str(), c.a == chosenA && c.b == chosenB))
                     {
                         m_app.SimChooseContact(c.a, c.b);
+                    }
+                    ImGui::PopID();
+                    if (row != c.text && ImGui::IsItemHovered())
+                    {
+                        ImGui::SetTooltip("%s", c.text.c_str());
                     }
                     Announce("contact " + name(c.a) + " " + name(c.b));
                 }

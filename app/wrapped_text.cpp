@@ -3,6 +3,9 @@
 
 #include <satviz/render/wrap.h>
 
+#include <algorithm>
+#include <vector>
+
 namespace satviz
 {
 
@@ -15,6 +18,18 @@ std::string WrapToWidth(const std::string& text, float width)
         joined += (joined.empty() ? "" : "\n") + line;
     }
     return joined;
+}
+
+std::string ShortenToWidth(const std::string& text, float width)
+{
+    const auto measure = [](const std::string& s) { return ImGui::CalcTextSize(s.c_str()).x; };
+    if (measure(text) <= width)
+    {
+        return text;
+    }
+    const std::string more = " ...";
+    const std::vector<std::string> lines = WrapLines(text, std::max(width - measure(more), 1.0f), measure);
+    return (lines.empty() ? std::string() : lines.front()) + more;
 }
 
 void WrappedText(const std::string& text, ImVec4 color)

@@ -1968,6 +1968,33 @@ TEST_CASE("Opening a lesson shows the step of the figure its text starts with, a
     CHECK_FALSE(h.Doc().Dirty());
 }
 
+TEST_CASE("A list row too long for its list ends between words, never inside a number", "[app]")
+{
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    ImGui::NewFrame();
+    const std::string text = "slope and box: 2 points, overlap 0.000946 and 0.000946 (the step's start)";
+    const float full = ImGui::CalcTextSize(text.c_str()).x;
+    CHECK(ShortenToWidth(text, full + 1.0f) == text);
+    int shortened = 0;
+    // From the width of a few words (the side panel's list is never narrower), to the whole text's.
+    for (float width = 100.0f; width < full; width += 7.0f)
+    {
+        INFO("width " << width);
+        const std::string row = ShortenToWidth(text, width);
+        const std::string more = " ...";
+        REQUIRE(row.size() > more.size());
+        CHECK(row.compare(row.size() - more.size(), more.size(), more) == 0);
+        const std::string kept = row.substr(0, row.size() - more.size());
+        // Whole words of the text: its start, followed there by a space.
+        CHECK(text.compare(0, kept.size(), kept) == 0);
+        CHECK(text[kept.size()] == ' ');
+        CHECK(ImGui::CalcTextSize(row.c_str()).x <= width);
+        ++shortened;
+    }
+    CHECK(shortened > 10);
+    ImGui::EndFrame();
+}
+
 TEST_CASE("Help > Lessons lists the lessons, and opening one shows its text and loads its scene", "[app][lessons]")
 {
     Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
