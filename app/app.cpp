@@ -921,6 +921,12 @@ bool App::OpenLesson(int index)
     {
         RequestOpen(lesson.scenes.front(), lesson.firstStep, lesson.firstFaces);
     }
+    else if (!lesson.scenes.empty() && lesson.firstStep >= 0 && !lesson.firstFaces)
+    {
+        // Its scene is open already (the app starts on overlapping_boxes, lesson 4's): kept as it is, edits and
+        // all, but shown at the step the lesson's text begins with.
+        m_viewer.ShowStep(lesson.firstStep);
+    }
     return true;
 }
 

@@ -1957,6 +1957,20 @@ TEST_CASE("Opening a lesson shows the step of the figure its text starts with, a
         CHECK(h.View().Setup().figure.step == expected);
     }
     CHECK(stepped >= 5);
+    // A lesson whose scene is open already: the app starts on overlapping_boxes, lesson 4's first figure is its
+    // step 1 (overlapping_boxes-step1.png), which the canvas shows rather than the verdict it was on.
+    {
+        Harness fresh((tutorials / "scenes" / "overlapping_boxes.json").string());
+        REQUIRE(fresh.AwaitStudy());
+        fresh.Frames(2);
+        REQUIRE(fresh.View().Step() != 0);
+        const int lesson4 = 3;
+        REQUIRE(fresh.app->OpenLesson(lesson4));
+        fresh.Frames(2);
+        REQUIRE(fresh.app->Lessons()[lesson4].firstStep == 0);
+        CHECK(fresh.View().Step() == 0);
+        CHECK(fresh.View().Setup().figure.step == 0);
+    }
     // The figure's own button: lesson 4's face test 6 is the sixth step of the face view.
     REQUIRE(h.app->RequestOpen((tutorials / "scenes" / "overlapping_boxes.json").string(),
                                FigureStep("figures/faces/overlapping_boxes-step6.png"),
