@@ -376,8 +376,9 @@ std::string TextbookVerdict(const Scene& scene, const PairStudy& study, bool cou
     else
     {
         text += "Verdict: " +
-                (r.axisCount == 1 ? std::string("the only axis overlaps")
-                                  : "all " + std::to_string(r.axisCount) + " axes overlap") +
+                (r.axisCount == 1   ? std::string("the only axis overlaps")
+                 : r.axisCount == 2 ? std::string("both axes overlap")
+                                    : "all " + std::to_string(r.axisCount) + " axes overlap") +
                 ", so the shapes collide. The smallest overlap is " + depth + ", on " + where + ": moving " + nameB +
                 " " + depth + " " + way + " " + that + ", direction " + Pair(r.normal.x, r.normal.y) +
                 ", separates them. That is the minimum translation vector (MTV).";
