@@ -2433,6 +2433,10 @@ class Painter
                 // floor) has its name just inside its own body: the body's name moves away from that face, where it
                 // still fits, to leave it the room.
                 ScreenPoint anchor = middle;
+                // With no room inside clear of such a face (a small body in the app's narrow canvas), the name
+                // goes outside, on the side away from that face, and leaves the inside to the face's name.
+                bool aside = false;
+                ScreenPoint away{0.0f, 0.0f};
                 if (body.shape.type == ShapeType::Polygon)
                 {
                     const std::vector<ScreenPoint> other = OutlineOf(1 - s);
@@ -2448,10 +2452,18 @@ class Painter
                                                   face.y - 4.0f * static_cast<float>(n.y)};
                             flush = flush && Covered(out, other, 0.0f);
                         }
-                        if (!flush)
+                        // A small body's name (at most some 140 pixels across) at its middle leaves no room inside
+                        // for the name of a face that a line or a mark crowds outside: it moves away from that face
+                        // too, or out of the body.
+                        const ScreenPoint start = At(TransformPoint(body.Xf(), poly.Vertices()[i]));
+                        const float depth = (start.x - middle.x) * static_cast<float>(n.x) -
+                                            (start.y - middle.y) * static_cast<float>(n.y);
+                        const bool near = std::max(wide, tall) < 140.0f && depth < 0.5f * text.y + 22.0f;
+                        if (!flush && !near)
                         {
                             continue;
                         }
+                        bool moved = false;
                         for (const float shift : {20.0f, 16.0f, 12.0f, 8.0f})
                         {
                             const ScreenPoint p{anchor.x - shift * static_cast<float>(n.x),
@@ -2468,10 +2480,34 @@ class Painter
                             if (inside)
                             {
                                 anchor = p;
+                                moved = true;
                                 break;
                             }
                         }
+                        if (!moved && !aside)
+                        {
+                            aside = true;
+                            away = {-static_cast<float>(n.x), static_cast<float>(n.y)};
+                        }
                     }
+                }
+                if (aside)
+                {
+                    // The outline's farthest point from the face, along the way out.
+                    ScreenPoint far = middle;
+                    float reach = 0.0f;
+                    for (const ScreenPoint& q : outline)
+                    {
+                        const float along = (q.x - middle.x) * away.x + (q.y - middle.y) * away.y;
+                        if (along > reach)
+                        {
+                            reach = along;
+                        }
+                    }
+                    far = {middle.x + reach * away.x, middle.y + reach * away.y};
+                    m_labels.PlaceOutside(OutlineOf(1 - s), far, body.name, TextStyle::Heading, InkOf(s), away.x,
+                                         away.y, 6.0f, LabelRank::Name);
+                    continue;
                 }
                 m_labels.Place(anchor, body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f, LabelRank::Name);
                 // A large body's name may move within it when its middle is taken (by a pitfall's note, a line
