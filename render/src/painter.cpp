@@ -1150,8 +1150,10 @@ class Painter
             if (m_study.sweepResult.status != SweepStatus::Hit)
             {
                 const Transform end = BodyTransformAt(body, 1.0);
-                DashedOutline(m_canvas, ShapeOutline(m_view, body.shape, end), WithAlpha(ColorOf(s), 0.55f), 1.2f,
-                              m_bounds);
+                const std::vector<ScreenPoint> outline = ShapeOutline(m_view, body.shape, end);
+                DashedOutline(m_canvas, outline, WithAlpha(ColorOf(s), 0.55f), 1.2f, m_bounds);
+                // A face's name beside it would read as this outline's (the floor's e2 by the box's end).
+                m_ghostOutlines.push_back(outline);
                 m_used.push_back(LegendMark::Dashed);
             }
             const Vec2 c = ShapeCenter(body.shape, body.Xf());

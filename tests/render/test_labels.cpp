@@ -1137,6 +1137,26 @@ std::vector<std::string> FaceNamesAstray(const RecordingCanvas& canvas, const Sc
             ghosts.push_back(d->points);
         }
     }
+    // And a moving polygon's dashed outline where the step ends (sliding_past's box), when one is drawn: taken
+    // from the scene, at t = 1.
+    const std::vector<const DrawCommand*> swept = canvas.InGroup("swept");
+    const bool dashedEnd = std::any_of(swept.begin(), swept.end(), [](const DrawCommand* d) {
+        return d->kind == DrawCommand::Kind::Segment && d->thickness > 1.1f && d->thickness < 1.3f;
+    });
+    for (int k = 0; k < 2 && dashedEnd; ++k)
+    {
+        if (bodies[k]->velocity == Vec2{} || bodies[k]->shape.type != ShapeType::Polygon)
+        {
+            continue;
+        }
+        const Transform end = BodyTransformAt(*bodies[k], 1.0);
+        std::vector<ScreenPoint> outline;
+        for (const Vec2& v : bodies[k]->shape.polygon.Vertices())
+        {
+            outline.push_back(ToScreen(view, TransformPoint(end, v)));
+        }
+        ghosts.push_back(std::move(outline));
+    }
     for (const DrawCommand* c : canvas.InGroup("labels"))
     {
         if (c->kind != DrawCommand::Kind::Text || OnLeader(canvas, *c))
