@@ -63,6 +63,8 @@ const char* Meaning(LegendMark mark)
         return "dashed outline: a body at another time, or moved by the MTV";
     case LegendMark::Separating:
         return "green dashed line: a separating line";
+    case LegendMark::FocusPiece:
+        return "darker piece: the piece of the pair at hand (at the verdict, the one that decides)";
     case LegendMark::Seam:
         return "thin dashed line inside a body: a seam between two of its convex pieces";
     case LegendMark::PieceBox:
@@ -208,6 +210,17 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
             {x + 2.0f, y + 2.0f}, {x1 - 2.0f, y + 2.0f}, {x1 - 2.0f, y + kRow - 2.0f}, {x + 2.0f, y + kRow - 2.0f}};
         DashedOutline(canvas, std::vector<ScreenPoint>(box, box + 4), kPieceBoxColor, kPieceBoxWidth,
                       {x - 1.0f, y, x1 + 1.0f, y + kRow});
+        break;
+    }
+    case LegendMark::FocusPiece:
+    {
+        // As the pieces figure fills them: the piece at hand darker, beside a pale one of the same body.
+        const float mid = x + 0.5f * kSwatch;
+        canvas.FillRect({x, y + 3.0f}, {mid, y + kRow - 3.0f}, WithAlpha(palette::kShapeA, 0.45f));
+        canvas.FillRect({mid, y + 3.0f}, {x1, y + kRow - 3.0f}, WithAlpha(palette::kShapeA, 0.08f));
+        const ScreenPoint box[4] = {
+            {x, y + 3.0f}, {x1, y + 3.0f}, {x1, y + kRow - 3.0f}, {x, y + kRow - 3.0f}};
+        canvas.Polyline(box, 4, true, palette::kShapeA, 1.5f);
         break;
     }
     case LegendMark::SeamPush:

@@ -352,6 +352,10 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
         for (int i = 0; i < PartCount(body); ++i)
         {
             const float fill = focusA < 0 ? 0.3f : (i == focus ? 0.45f : 0.08f);
+            if (focusA >= 0 && PartCount(body) > 1)
+            {
+                used.push_back(LegendMark::FocusPiece);
+            }
             const Shape& shape = PartShape(body, i);
             std::vector<ScreenPoint> points = ShapeOutline(view, shape, xf);
             canvas.FillConvex(points.data(), static_cast<int>(points.size()), WithAlpha(color, fill));
