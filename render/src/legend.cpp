@@ -65,6 +65,8 @@ const char* Meaning(LegendMark mark)
         return "green dashed line: a separating line";
     case LegendMark::FocusPiece:
         return "darker piece: the piece of the pair at hand (at the verdict, the one that decides)";
+    case LegendMark::Reflex:
+        return "vermillion ring round a corner: a reflex vertex (its inside angle over 180 degrees)";
     case LegendMark::Seam:
         return "thin dashed line inside a body: a seam between two of its convex pieces";
     case LegendMark::PieceBox:
@@ -223,6 +225,10 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
         canvas.Polyline(box, 4, true, palette::kShapeA, 1.5f);
         break;
     }
+    case LegendMark::Reflex:
+        // As the decomposition figure rings a reflex vertex.
+        canvas.Circle({x + 0.5f * kSwatch, cy}, 5.0f, palette::kResult, 1.5f);
+        break;
     case LegendMark::SeamPush:
         Arrow(canvas, {x, cy}, {x1, cy}, palette::kMuted, 2.0f);
         break;
