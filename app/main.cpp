@@ -37,32 +37,31 @@
 namespace
 {
 
-std::string RecentFile()
+// `path` in the XDG base folder named by the environment variable `variable`, or in `fallback` under the home
+// folder when it is unset; empty when neither is known.
+std::string XdgPath(const char* variable, const char* fallback, const char* path)
 {
-    if (const char* config = std::getenv("XDG_CONFIG_HOME"); config != nullptr && *config != '\0')
+    if (const char* base = std::getenv(variable); base != nullptr && *base != '\0')
     {
-        return std::string(config) + "/satviz/recent.txt";
+        return std::string(base) + "/" + path;
     }
     if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0')
     {
-        return std::string(home) + "/.config/satviz/recent.txt";
+        return std::string(home) + "/" + fallback + "/" + path;
     }
     return "";
+}
+
+std::string RecentFile()
+{
+    return XdgPath("XDG_CONFIG_HOME", ".config", "satviz/recent.txt");
 }
 
 // Where the copies of unsaved scenes are kept (AppOptions::unsavedDir): the XDG state folder, which holds what an
 // application keeps between runs that is not configuration.
 std::string UnsavedFolder()
 {
-    if (const char* state = std::getenv("XDG_STATE_HOME"); state != nullptr && *state != '\0')
-    {
-        return std::string(state) + "/satviz/unsaved";
-    }
-    if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0')
-    {
-        return std::string(home) + "/.local/state/satviz/unsaved";
-    }
-    return "";
+    return XdgPath("XDG_STATE_HOME", ".local/state", "satviz/unsaved");
 }
 
 /// What the app does when it crashes (a fault, an abort): says so on stderr with where the unsaved changes are and

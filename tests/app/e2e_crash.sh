@@ -14,16 +14,7 @@ start_app "$work/scene.json"
 read_canvas
 # Body B's origin on screen, from the camera; dragged 60 px right and 24 px up.
 read -r bx by < <(body_on_screen B "$work/scene.json")
-xdotool mousemove "$bx" "$by"
-sleep 0.3
-xdotool mousedown 1
-sleep 0.2
-for i in $(seq 1 6); do
-  xdotool mousemove $((bx + 10 * i)) $((by - 4 * i))
-  sleep 0.03
-done
-sleep 0.2
-xdotool mouseup 1
+drag "$bx" "$by" 60 -24
 copy="$work/state/satviz/unsaved/scene.unsaved-$pid.json"
 for _ in $(seq 50); do [ -f "$copy" ] && break; sleep 0.1; done
 [ -f "$copy" ] || { echo "FAILED: no copy of the unsaved drag at $copy"; ls -R "$work/state" 2> /dev/null; exit 1; }

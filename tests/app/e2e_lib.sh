@@ -2,7 +2,7 @@
 # What the app's end-to-end scripts share; each sources it first (it reads the script's own arguments):
 #  - the skip when Xvfb or xdotool is missing (exit 77, which ctest reports as skipped);
 #  - the script run again inside a virtual display of 1280x800;
-#  - tap, place, click, start_app and wait_for_quit below.
+#  - tap, place, click, start_app, wait_for_quit, read_canvas, body_on_screen and drag below.
 for tool in xvfb-run xdotool; do
   if ! command -v "$tool" > /dev/null; then
     echo "SKIPPED: $tool is not installed (apt-get install xvfb xauth xdotool)"
@@ -80,4 +80,19 @@ cx, cy, cw, ch, vx, vy, zoom = map(float, sys.argv[3:])
 x, y = next(b for b in scene["bodies"] if b["name"] == sys.argv[2]).get("position", [0, 0])
 print(int(cx + cw / 2 + (x - vx) * zoom), int(cy + ch / 2 - (y - vy) * zoom))
 PY
+}
+
+# A drag with the left button as a hand makes it: press at ($1, $2), move there by ($3, $4) pixels in six steps,
+# release.
+drag() {
+  xdotool mousemove "$1" "$2"
+  sleep 0.3
+  xdotool mousedown 1
+  sleep 0.2
+  for i in $(seq 1 6); do
+    xdotool mousemove $(($1 + $3 * i / 6)) $(($2 + $4 * i / 6))
+    sleep 0.03
+  done
+  sleep 0.2
+  xdotool mouseup 1
 }
