@@ -218,10 +218,11 @@ void MarkVoronoiRegions(Canvas& canvas, LabelPlacer& labels, const View& view, c
         return;
     }
     canvas.BeginGroup("voronoi");
+    // The centre is marked as the shapes layer marks a circle's centre, a small dot in the body's colour: the
+    // vermillion dot means a contact point.
     const ScreenPoint centre = ToScreen(view, r.point);
-    constexpr float kDot = 4.5f;
-    canvas.FillCircle(centre, kDot, palette::kResult);
-    canvas.Circle(centre, kDot, palette::kBackground, 1.5f);
+    constexpr float kDot = 2.5f;
+    canvas.FillCircle(centre, kDot, r.shape == 0 ? palette::kShapeB : palette::kShapeA);
     labels.Reserve({centre.x - kDot - 2.0f, centre.y - kDot - 2.0f, centre.x + kDot + 2.0f, centre.y + kDot + 2.0f});
     const int count = static_cast<int>(r.v.size());
     const Color ink = WithAlpha(RegionInk(r.shape), 0.8f);

@@ -371,3 +371,51 @@ TEST_CASE("A face's normal arrow keeps its head off the axis line's bars, where 
     }
     CHECK(heads >= 2);
 }
+
+TEST_CASE("A vermillion dot in a figure of the course is a contact point, as the key says", "[marks]")
+{
+    // The key gives the vermillion dot one meaning, a contact point: l07_voronoi drew the ball's centre so. A
+    // slice's cut is drawn vermillion, its ends and its crossings of the outline as dots on that line, named by
+    // their coordinates: they are the cut's. In the Minkowski inset the dot is where the origin's path first
+    // touches the difference, the first contact seen there.
+    const auto lists = FigureScenes();
+    int contacts = 0;
+    for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES", "SATVIZ_FACE_STEP_SCENES"})
+    {
+        const bool allSteps = std::string(list) != "SATVIZ_FIGURE_SCENES";
+        const bool faces = std::string(list) == "SATVIZ_FACE_STEP_SCENES";
+        for (const std::string& stem : lists.at(list))
+        {
+            const Scene scene = painter_test::LessonScene(stem);
+            FigureOptions options;
+            options.setSteps = faces;
+            options.steps = StepView::Faces;
+            FigureSetup setup = SetUpFigure(scene, options);
+            REQUIRE(setup.Ok());
+            const int first = allSteps ? 0 : setup.figure.step;
+            const int last = allSteps ? FigureStepCount(scene, setup) - 1 : setup.figure.step;
+            for (int k = first; k <= last; ++k)
+            {
+                RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
+                for (const DrawCommand& c : canvas.commands)
+                {
+                    if (c.kind != DrawCommand::Kind::FillCircle || (c.color | 0xFFu) != palette::kResult ||
+                        (c.color & 0xFFu) < 0xC0u || c.group == "legend")
+                    {
+                        continue;
+                    }
+                    INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": a vermillion dot in \""
+                                                 << c.group << "\" at (" << c.points[0].x << ", " << c.points[0].y
+                                                 << ")");
+                    const bool contact = c.group == "contacts" || c.group == "push" || c.group == "hit" ||
+                                         c.group == "hits" || c.group == "response" ||
+                                         c.group == "minkowski";
+                    const bool cut = setup.figure.kind == FigureKind::Slice && c.group == "before";
+                    CHECK((contact || cut));
+                    contacts += contact ? 1 : 0;
+                }
+            }
+        }
+    }
+    CHECK(contacts > 20);
+}
