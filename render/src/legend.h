@@ -18,7 +18,7 @@ enum class LegendMark
     CandidateAxis, ///< the long grey dashes through the pair: every candidate axis
     AxisFace,   ///< the thick dark edge whose normal is the current axis
     VertexAxis, ///< the dark dot and dashed line: an axis from a vertex (or a centre) to a circle's centre
-    BestAxis,   ///< the light-blue edge of the best axis so far
+    BestAxis,   ///< the light-blue edges of the best axis so far (of axes that tie, the first tested)
     Overlap,    ///< the purple band: the two intervals overlap
     Gap,        ///< the green band: a gap between the intervals
     Behind,     ///< the band of a face test: how far the other shape lies behind (or beyond) the face

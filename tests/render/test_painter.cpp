@@ -2180,3 +2180,93 @@ TEST_CASE("The ends on a number line are written with as many decimals each, in 
     // The case the rule is about occurs: some lines mix the dropped 0 with three decimals.
     CHECK(mixedBefore > 0);
 }
+
+TEST_CASE("The light-blue edges mark one axis, the first of the smallest overlaps so far, and the key says how ties go",
+          "[painter]")
+{
+    // In l07_near_miss the box's two face axes overlap the ball by the same 0.05: at axis 3 the light-blue edges are
+    // e0 and e2, the two faces of axis 1, the first of the two. The key's words for the light-blue edge say both:
+    // that an axis's faces are marked, and which of equal axes is the best.
+    int marked = 0;
+    bool tie = false;
+    for (const std::string stem : {"l07_near_miss", "overlapping_boxes", "box_above_floor", "circle_corner",
+                                   "l03_corner_gap", "l05_box_in_box"})
+    {
+        const Scene scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + stem + ".json");
+        FigureSetup setup = SetUpFigure(scene, {});
+        REQUIRE(setup.Ok());
+        if (setup.study.sweep)
+        {
+            continue;
+        }
+        const Body& a = scene.bodies[static_cast<size_t>(setup.study.bodyA)];
+        const Body& b = scene.bodies[static_cast<size_t>(setup.study.bodyB)];
+        const auto& axes = setup.study.textbook.axes;
+        for (int k = 1; k < static_cast<int>(axes.size()); ++k)
+        {
+            // The oracle: the overlap on each axis tested so far, this one included, from the shapes' own
+            // projections. When this axis is the best, it is drawn as the axis at hand, not light blue.
+            int best = -1;
+            double least = INFINITY;
+            bool tied = false;
+            for (int i = 0; i <= k; ++i)
+            {
+                const auto [loA, hiA] = painter_test::Project(a, axes[static_cast<size_t>(i)].direction);
+                const auto [loB, hiB] = painter_test::Project(b, axes[static_cast<size_t>(i)].direction);
+                const double overlap = std::min(hiA - loB, hiB - loA);
+                if (overlap < 0.0)
+                {
+                    continue;
+                }
+                if (overlap < least - 1e-9)
+                {
+                    least = overlap;
+                    best = i;
+                    tied = false;
+                }
+                else if (overlap <= least + 1e-9)
+                {
+                    tied = true;
+                }
+            }
+            const RecordingCanvas canvas = Paint(scene, setup, k, kDefaultLayers | kLayerLegend);
+            std::vector<const DrawCommand*> edges;
+            for (const DrawCommand* c : canvas.InGroup("best"))
+            {
+                if (c->kind == DrawCommand::Kind::Segment && c->color == palette::kBest && c->thickness >= 3.0f)
+                {
+                    edges.push_back(c);
+                }
+            }
+            INFO(stem << " step " << k + 1 << ": oracle's best axis " << best + 1 << (tied ? " (tied)" : ""));
+            if (best < 0 || best == k)
+            {
+                continue;
+            }
+            REQUIRE(!edges.empty());
+            // Every light-blue edge lies across the best axis: perpendicular to its direction on the screen.
+            const Vec2 d = axes[static_cast<size_t>(best)].direction;
+            for (const DrawCommand* e : edges)
+            {
+                const double ex = e->points[1].x - e->points[0].x;
+                const double ey = -(e->points[1].y - e->points[0].y);
+                CHECK(std::fabs(ex * d.x + ey * d.y) <= 0.02 * std::hypot(ex, ey));
+            }
+            std::string key;
+            for (const DrawCommand* c : canvas.InGroup("legend"))
+            {
+                key += c->kind == DrawCommand::Kind::Text ? c->text + "\n" : "";
+            }
+            INFO(key);
+            CHECK(key.find("light-blue edges: the faces of the best axis") != std::string::npos);
+            if (tied)
+            {
+                CHECK(key.find("of equal ones, the first") != std::string::npos);
+                tie = true;
+            }
+            ++marked;
+        }
+    }
+    CHECK(marked > 5);
+    CHECK(tie);
+}
