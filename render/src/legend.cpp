@@ -4,6 +4,7 @@
 #include <satviz/render/palette.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace satviz
@@ -279,6 +280,132 @@ void PaintLegend(Canvas& canvas, ScreenPoint topLeft, const std::vector<LegendMa
                     palette::kInk);
         y += kRow;
     }
+}
+
+KeyPlace PlaceKey(const ScreenRect& scene, const ScreenRect& content, ScreenPoint size, bool skipTopRight)
+{
+    constexpr float m = 8.0f; // the key's margin, and the content's from the key
+    const ScreenPoint corners[4] = {{scene.minX + m, scene.maxY - m - size.y},
+                                    {scene.maxX - m - size.x, scene.maxY - m - size.y},
+                                    {scene.minX + m, scene.minY + m},
+                                    {scene.maxX - m - size.x, scene.minY + m}};
+    KeyPlace best;
+    best.at = corners[0];
+    best.scale = -1.0;
+    float bestMove = INFINITY;
+    const bool empty = !(content.minX <= content.maxX && content.minY <= content.maxY) || !std::isfinite(content.minX) ||
+                       !std::isfinite(content.maxX) || !std::isfinite(content.minY) || !std::isfinite(content.maxY);
+    const float cw = std::max(content.maxX - content.minX, 1.0f);
+    const float ch = std::max(content.maxY - content.minY, 1.0f);
+    const ScreenPoint middle = empty ? ScreenPoint{0.5f * (scene.minX + scene.maxX), 0.5f * (scene.minY + scene.maxY)}
+                                     : ScreenPoint{0.5f * (content.minX + content.maxX),
+                                                   0.5f * (content.minY + content.maxY)};
+    for (int k = 0; k < 4; ++k)
+    {
+        if (k == 3 && skipTopRight)
+        {
+            continue;
+        }
+        const ScreenPoint c{std::round(corners[k].x), std::round(corners[k].y)};
+        const ScreenRect key{c.x, c.y, c.x + size.x, c.y + size.y};
+        if (empty || !key.Overlaps(content))
+        {
+            KeyPlace free;
+            free.at = c;
+            free.from = middle;
+            free.to = middle;
+            return free;
+        }
+        const bool left = k % 2 == 0;
+        const bool bottom = k < 2;
+        const ScreenRect beside = left ? ScreenRect{key.maxX + m, scene.minY, scene.maxX, scene.maxY}
+                                       : ScreenRect{scene.minX, scene.minY, key.minX - m, scene.maxY};
+        const ScreenRect across = bottom ? ScreenRect{scene.minX, scene.minY, scene.maxX, key.minY - m}
+                                         : ScreenRect{scene.minX, key.maxY + m, scene.maxX, scene.maxY};
+        for (const ScreenRect& room : {beside, across})
+        {
+            const float rw = room.maxX - room.minX;
+            const float rh = room.maxY - room.minY;
+            if (rw <= 0.0f || rh <= 0.0f)
+            {
+                continue;
+            }
+            const float s = std::min({1.0f, rw / cw, rh / ch});
+            const float hw = 0.5f * s * cw;
+            const float hh = 0.5f * s * ch;
+            const ScreenPoint to{std::clamp(middle.x, room.minX + hw, std::max(room.minX + hw, room.maxX - hw)),
+                                 std::clamp(middle.y, room.minY + hh, std::max(room.minY + hh, room.maxY - hh))};
+            const float move = std::fabs(to.x - middle.x) + std::fabs(to.y - middle.y);
+            if (s > best.scale + 1e-3 || (s > best.scale - 1e-3 && move < bestMove))
+            {
+                best.at = c;
+                best.scale = s;
+                best.from = middle;
+                best.to = to;
+                bestMove = move;
+            }
+        }
+    }
+    best.scale = std::max(best.scale, 1e-3);
+    return best;
+}
+
+View MovedAside(const View& view, const KeyPlace& place)
+{
+    View moved = view;
+    moved.zoom = view.zoom * place.scale;
+    const Vec2 fixed = ToWorld(view, place.from);
+    moved.center = {fixed.x - (place.to.x - 0.5 * view.width) / moved.zoom,
+                    fixed.y + (place.to.y - 0.5 * view.height) / moved.zoom};
+    return moved;
+}
+
+ScreenRect KeyObstacles(const RecordingCanvas& canvas, const ScreenRect& scene)
+{
+    ScreenRect bounds{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    RecordingCanvas measure;
+    const auto add = [&](float x0, float y0, float x1, float y1) {
+        x0 = std::max(x0, scene.minX);
+        y0 = std::max(y0, scene.minY);
+        x1 = std::min(x1, scene.maxX);
+        y1 = std::min(y1, scene.maxY);
+        if (x0 <= x1 && y0 <= y1)
+        {
+            bounds = {std::min(bounds.minX, x0), std::min(bounds.minY, y0), std::max(bounds.maxX, x1),
+                      std::max(bounds.maxY, y1)};
+        }
+    };
+    for (const DrawCommand& c : canvas.commands)
+    {
+        if (c.group == "background" || c.group == "legend" || c.group == "caption" || c.group == "axes" ||
+            c.group == "voronoi" || c.group == "minkowski" || c.points.empty())
+        {
+            continue;
+        }
+        if (c.kind == DrawCommand::Kind::Text)
+        {
+            const ScreenPoint size = measure.MeasureText(c.text, c.style);
+            add(c.points[0].x, c.points[0].y, c.points[0].x + size.x, c.points[0].y + size.y);
+        }
+        else if (c.kind == DrawCommand::Kind::Circle || c.kind == DrawCommand::Kind::FillCircle)
+        {
+            add(c.points[0].x - c.radius, c.points[0].y - c.radius, c.points[0].x + c.radius, c.points[0].y + c.radius);
+        }
+        else
+        {
+            // A line may run on out of sight (a separating line, a long path): it counts by its ends in sight, as
+            // wherever the picture moves it will cross the scene. A fill counts whole, cut at the scene's edge.
+            for (const ScreenPoint& p : c.points)
+            {
+                const bool inside = p.x >= scene.minX && p.x <= scene.maxX && p.y >= scene.minY && p.y <= scene.maxY;
+                if (inside || c.kind != DrawCommand::Kind::Segment)
+                {
+                    add(p.x, p.y, p.x, p.y);
+                }
+            }
+        }
+    }
+    return bounds;
 }
 
 } // namespace satviz

@@ -6,6 +6,8 @@
 #include "draw_kit.h"
 
 #include <satviz/render/palette.h>
+#include <satviz/render/recording_canvas.h>
+#include <satviz/render/view.h>
 
 #include <vector>
 
@@ -66,5 +68,27 @@ ScreenPoint LegendSize(Canvas& canvas, const std::vector<LegendMark>& marks);
 /// Draws the key to `marks` with its top-left corner at `topLeft`, in the group "legend": a panel, and one row per
 /// mark, its swatch drawn as the figure draws it, then its meaning.
 void PaintLegend(Canvas& canvas, ScreenPoint topLeft, const std::vector<LegendMark>& marks);
+
+/// Where a figure that frames itself draws its key, and how its picture moves aside for it.
+struct KeyPlace
+{
+    ScreenPoint at{};    ///< the key's top-left corner
+    double scale = 1.0;  ///< the picture's scale about its content, at most 1
+    ScreenPoint from{};  ///< the middle of the content before the move
+    ScreenPoint to{};    ///< where that middle goes
+};
+
+/// The place of a key of `size` in a corner of the scene area `scene` (never its top right one when
+/// `skipTopRight`, the Minkowski inset's): the first corner whose key leaves `content` (what the picture draws
+/// there) uncovered, else the corner and side that keep the content largest beside or above or below the key,
+/// the content scaled down about its middle and moved as little as it can.
+KeyPlace PlaceKey(const ScreenRect& scene, const ScreenRect& content, ScreenPoint size, bool skipTopRight);
+
+/// The camera `view` with its picture scaled and moved as `place` says, so that the content keeps clear of the key.
+View MovedAside(const View& view, const KeyPlace& place);
+
+/// The bounds, inside `scene`, of what a figure recorded on `canvas` draws there but its background, grid,
+/// candidate axes, Voronoi regions, Minkowski inset and key: the content its key must not cover.
+ScreenRect KeyObstacles(const RecordingCanvas& canvas, const ScreenRect& scene);
 
 } // namespace satviz

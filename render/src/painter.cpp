@@ -434,9 +434,11 @@ void SetWholeWindow(const PairStudy& study, ShownAxis& shown)
 class Painter
 {
   public:
-    Painter(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure)
+    /// `keyAt`, when given, is where the key goes (PlaceKey's corner for a figure that frames itself).
+    Painter(Canvas& canvas, const Scene& scene, const PairStudy& study, const Figure& figure,
+            const ScreenPoint* keyAt = nullptr)
         : m_labels(canvas, figure), m_watch(canvas, m_labels), m_canvas(m_watch), m_scene(scene), m_study(study),
-          m_figure(figure), m_view(figure.view),
+          m_figure(figure), m_keyAt(keyAt), m_view(figure.view),
           m_layout(LayoutFigure(study, figure.layers, figure.view.width, figure.view.height, !figure.caption.empty())),
           m_bodyA(scene.bodies[static_cast<size_t>(study.bodyA)]), m_bodyB(scene.bodies[static_cast<size_t>(study.bodyB)])
     {
@@ -569,7 +571,9 @@ class Painter
         if (Has(m_figure, kLayerLegend))
         {
             legend = UsedMarks();
-            legendAt = LegendCorner(LegendSize(m_canvas, legend));
+            const ScreenPoint size = LegendSize(m_canvas, legend);
+            legendAt = m_keyAt != nullptr ? *m_keyAt : LegendCorner(size);
+            m_labels.ReserveBand({legendAt.x, legendAt.y, legendAt.x + size.x, legendAt.y + size.y});
         }
         if (Has(m_figure, kLayerShapes))
         {
@@ -777,9 +781,7 @@ class Painter
                 best = corners[k];
             }
         }
-        best = {std::round(best.x), std::round(best.y)};
-        m_labels.ReserveBand({best.x, best.y, best.x + size.x, best.y + size.y});
-        return best;
+        return {std::round(best.x), std::round(best.y)};
     }
 
     // An arrow whose head and shaft no label may cover.
@@ -2940,6 +2942,7 @@ class Painter
     const Scene& m_scene;
     const PairStudy& m_study;
     const Figure& m_figure;
+    const ScreenPoint* m_keyAt = nullptr; // where the key goes, when the figure placed it
     const View& m_view;
     FigureLayout m_layout;
     const Body& m_bodyA;
@@ -3144,6 +3147,50 @@ void PaintFigure(Canvas& canvas, const Scene& scene, const PairStudy& study, con
     {
         PaintDiscCast(canvas, scene, study.bodyA, study.bodyB, figure);
         return;
+    }
+    if ((figure.layers & kLayerLegend) && (figure.layers & ~(kLayerLegend | kLayerCaption)) && figure.framesItself)
+    {
+        // The key must hide no body and no label: drawn once unseen, the picture shows what it covers and the key's
+        // size; then the picture moves aside for the key (scaled down if need be). Lines drawn to the scene's size
+        // (a separating line) may reach the key again: a second and a third look move the picture on.
+        Figure moved = figure;
+        KeyPlace place;
+        bool placed = false;
+        for (int pass = 0; pass < 3; ++pass)
+        {
+            RecordingCanvas unseen;
+            Painter(unseen, scene, study, moved, placed ? &place.at : nullptr).Paint();
+            const std::vector<const DrawCommand*> key = unseen.InGroup("legend");
+            if (key.empty() || key[0]->kind != DrawCommand::Kind::FillRect)
+            {
+                break;
+            }
+            const ScreenRect drawn{key[0]->points[0].x, key[0]->points[0].y, key[0]->points[1].x,
+                                   key[0]->points[1].y};
+            const FigureLayout layout = LayoutFigure(study, figure.layers, figure.view.width, figure.view.height,
+                                                     !figure.caption.empty());
+            // The caption's band as drawn: a long caption takes more lines than the layout reserves.
+            float top = layout.sceneTop;
+            for (const DrawCommand* c : unseen.InGroup("caption"))
+            {
+                top = std::max(top, c->kind == DrawCommand::Kind::FillRect ? c->points[1].y : top);
+            }
+            const ScreenRect area{0.0f, top, static_cast<float>(figure.view.width), layout.sceneBottom};
+            const ScreenRect obstacles = KeyObstacles(unseen, area);
+            if (placed && !drawn.Overlaps(obstacles))
+            {
+                break;
+            }
+            place = PlaceKey(area, obstacles, {drawn.maxX - drawn.minX, drawn.maxY - drawn.minY},
+                             (figure.layers & kLayerMinkowski) != 0);
+            moved.view = MovedAside(moved.view, place);
+            placed = true;
+        }
+        if (placed)
+        {
+            Painter(canvas, scene, study, moved, &place.at).Paint();
+            return;
+        }
     }
     Painter painter(canvas, scene, study, figure);
     painter.Paint();

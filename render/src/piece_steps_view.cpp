@@ -279,7 +279,12 @@ int PieceStepCount(const Scene& scene, const PairStudy& study)
            2;
 }
 
-void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair, const Figure& figure)
+namespace
+{
+
+// The pieces figure; `place`, when given, moves the picture aside for the key and puts the key there.
+void PaintPieceStepsKeyed(Canvas& surface, const Scene& scene, const PairStudy& pair, const Figure& figure,
+                          const KeyPlace* place)
 {
     // Every line is drawn through the watch, so that the labels keep off it.
     LabelPlacer labels(surface, figure);
@@ -316,9 +321,12 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
         }
     }
     const ScreenRect rect{0.0f, top, width, height};
-    const View view =
-        figure.framesItself ? FramePanel(rect, low, high, figure.view.width, figure.view.height, kMargin).view
-                            : figure.view;
+    View view = figure.framesItself ? FramePanel(rect, low, high, figure.view.width, figure.view.height, kMargin).view
+                                    : figure.view;
+    if (place != nullptr)
+    {
+        view = MovedAside(view, *place);
+    }
 
     // Which pieces this step is about: a tested pair's two, the deciding pair at the verdict, all at the broadphase.
     int focusA = -1;
@@ -547,6 +555,10 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
                 keyAt = c;
             }
         }
+        if (place != nullptr)
+        {
+            keyAt = place->at;
+        }
         labels.ReserveBand({keyAt.x, keyAt.y, keyAt.x + size.x, keyAt.y + size.y});
     }
     labels.Flush(palette::kBackground);
@@ -554,6 +566,39 @@ void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair,
     {
         PaintLegend(surface, keyAt, used);
     }
+}
+
+} // namespace
+
+void PaintPieceSteps(Canvas& surface, const Scene& scene, const PairStudy& pair, const Figure& figure)
+{
+    if ((figure.layers & kLayerLegend) && figure.framesItself)
+    {
+        // The key must hide no piece and no label: drawn once unseen, the picture shows what it covers and the key's
+        // size; then the picture moves aside for the key (scaled down if need be) and is drawn again.
+        RecordingCanvas unseen;
+        PaintPieceStepsKeyed(unseen, scene, pair, figure, nullptr);
+        const std::vector<const DrawCommand*> key = unseen.InGroup("legend");
+        float top = 0.0f;
+        for (const DrawCommand* c : unseen.InGroup("caption"))
+        {
+            if (c->kind == DrawCommand::Kind::FillRect)
+            {
+                top = std::max(top, c->points[1].y);
+            }
+        }
+        if (!key.empty() && key[0]->kind == DrawCommand::Kind::FillRect)
+        {
+            const ScreenPoint size{key[0]->points[1].x - key[0]->points[0].x,
+                                   key[0]->points[1].y - key[0]->points[0].y};
+            const ScreenRect area{0.0f, top, static_cast<float>(figure.view.width),
+                                  static_cast<float>(figure.view.height)};
+            const KeyPlace place = PlaceKey(area, KeyObstacles(unseen, area), size, false);
+            PaintPieceStepsKeyed(surface, scene, pair, figure, &place);
+            return;
+        }
+    }
+    PaintPieceStepsKeyed(surface, scene, pair, figure, nullptr);
 }
 
 } // namespace satviz

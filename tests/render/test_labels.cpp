@@ -19,6 +19,7 @@
 #include <map>
 #include <sstream>
 #include <set>
+#include <tuple>
 
 using namespace satviz;
 
@@ -2240,4 +2241,101 @@ TEST_CASE("A velocity arrow whose step runs out of the scene keeps its head in s
             }
         }
     }
+}
+
+TEST_CASE("With the legend layer, no figure of the course hides a label or a body under its key", "[labels][legend]")
+{
+    // The key is a panel drawn over the picture: in a pieces figure it covered the L's corner and its name L1. Every
+    // figure of the course, drawn with its own layers and the legend, keeps every text, every mark and every body's
+    // fill off the key's panel.
+    const auto lists = FigureLists();
+    int keys = 0;
+    std::vector<std::string> failing;
+    for (const auto& [list, steps, faces] : {std::tuple{"SATVIZ_FIGURE_SCENES", false, false},
+                                             std::tuple{"SATVIZ_STEP_SCENES", true, false},
+                                             std::tuple{"SATVIZ_FACE_STEP_SCENES", true, true}})
+    {
+        for (const std::string& stem : lists.at(list))
+        {
+            const Scene scene = painter_test::LessonScene(stem);
+            FigureOptions options;
+            if (faces)
+            {
+                options.setSteps = true;
+                options.steps = StepView::Faces;
+            }
+            FigureSetup setup = SetUpFigure(scene, options);
+            REQUIRE(setup.Ok());
+            if ((setup.figure.layers & ~kLayerCaption) == kLayerLegend)
+            {
+                continue; // lesson 1's key alone
+            }
+            const LayerMask layers = setup.figure.layers | kLayerLegend;
+            const int first = steps ? 0 : setup.figure.step;
+            const int last = steps ? FigureStepCount(scene, setup) : setup.figure.step + 1;
+            for (int k = first; k < last; ++k)
+            {
+                const RecordingCanvas canvas = painter_test::Paint(scene, setup, k, layers);
+                const std::string name = stem + (steps ? " step " + std::to_string(k + 1) : "") + (faces ? " (faces)" : "");
+                const std::vector<const DrawCommand*> legend = canvas.InGroup("legend");
+                if (legend.empty())
+                {
+                    continue;
+                }
+                REQUIRE(legend[0]->kind == DrawCommand::Kind::FillRect);
+                const Box key{legend[0]->points[0].x, legend[0]->points[0].y, legend[0]->points[1].x,
+                              legend[0]->points[1].y};
+                ++keys;
+                RecordingCanvas measure;
+                std::vector<std::string> problems;
+                for (const DrawCommand& c : canvas.commands)
+                {
+                    if (c.group == "legend")
+                    {
+                        continue;
+                    }
+                    if (c.kind == DrawCommand::Kind::Text)
+                    {
+                        const ScreenPoint size = measure.MeasureText(c.text, c.style);
+                        if (key.Overlaps({c.points[0].x, c.points[0].y, c.points[0].x + size.x, c.points[0].y + size.y}))
+                        {
+                            problems.push_back("the key covers " + Describe(c));
+                        }
+                    }
+                    const bool body = c.group == "shapes" || c.group == "pieces" || c.group == "before" ||
+                                      c.group == "after" || c.group == "target";
+                    if (body && c.kind == DrawCommand::Kind::FillConvex && ConvexCovers(c.points, key))
+                    {
+                        problems.push_back("the key covers a body's fill " + Describe(c));
+                    }
+                    if (body && c.kind == DrawCommand::Kind::FillCircle &&
+                        key.Overlaps({c.points[0].x - 0.7f * c.radius, c.points[0].y - 0.7f * c.radius,
+                                      c.points[0].x + 0.7f * c.radius, c.points[0].y + 0.7f * c.radius}))
+                    {
+                        problems.push_back("the key covers a disc " + Describe(c));
+                    }
+                }
+                // The key's own texts and panel against the labels and marks: the rest of the label checks are the
+                // course test's, on the figures as the lessons show them.
+                for (std::string& p : HiddenTexts(canvas, setup.figure.view.width, setup.figure.view.height))
+                {
+                    if (p.find("\"legend\"") != std::string::npos)
+                    {
+                        problems.push_back(std::move(p));
+                    }
+                }
+                if (!problems.empty())
+                {
+                    failing.push_back(name + ": " + problems.front() + (problems.size() > 1 ? " (and " +
+                                      std::to_string(problems.size() - 1) + " more)" : ""));
+                }
+            }
+        }
+    }
+    for (const std::string& f : failing)
+    {
+        UNSCOPED_INFO(f);
+    }
+    CHECK(failing.empty());
+    CHECK(keys > 100);
 }
