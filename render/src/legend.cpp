@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "legend.h"
 
+#include "concave_views.h"
+
 #include <satviz/render/palette.h>
 
 #include <algorithm>
@@ -66,6 +68,8 @@ const char* Meaning(LegendMark mark)
         return "green dashed line: a separating line";
     case LegendMark::FocusPiece:
         return "darker piece: the piece of the pair at hand (at the verdict, the one that decides)";
+    case LegendMark::PieceFills:
+        return "sky-blue, orange, green, yellow fills: each part of a cut, or each convex piece";
     case LegendMark::Reflex:
         return "vermillion ring round a corner: a reflex vertex (its inside angle over 180 degrees)";
     case LegendMark::Seam:
@@ -226,6 +230,14 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
         canvas.Polyline(box, 4, true, palette::kShapeA, 1.5f);
         break;
     }
+    case LegendMark::PieceFills:
+        // As the decomposition and slice figures fill the pieces and parts: PieceColor in turn.
+        for (int i = 0; i < 4; ++i)
+        {
+            const float x0 = x + 0.25f * kSwatch * static_cast<float>(i);
+            canvas.FillRect({x0, y + 3.0f}, {x0 + 0.25f * kSwatch, y + kRow - 3.0f}, WithAlpha(PieceColor(i), 0.45f));
+        }
+        break;
     case LegendMark::Reflex:
         // As the decomposition figure rings a reflex vertex.
         canvas.Circle({x + 0.5f * kSwatch, cy}, 5.0f, palette::kResult, 1.5f);

@@ -39,6 +39,7 @@ enum class LegendMark
     Dashed,     ///< a dashed outline: a body at another time, or moved out by the MTV
     Separating, ///< the green dashed line: a separating line
     FocusPiece, ///< a convex piece filled darker than the others: the piece of the pair at hand, or that decides
+    PieceFills, ///< fills in turn sky blue, orange, green, yellow: each part of a cut, or each convex piece, in its own
     Reflex,     ///< the vermillion ring round a corner of a concave outline: a reflex vertex
     Seam,       ///< the thin dashed line inside a concave body: a seam between two of its convex pieces
     PieceBox,   ///< the grey dashed rectangle round a piece: its box, which the broadphase compares

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -418,4 +419,91 @@ TEST_CASE("A vermillion dot in a figure of the course is a contact point, as the
         }
     }
     CHECK(contacts > 20);
+}
+
+TEST_CASE("Every fill colour a figure of the course draws is a body's colour or explained by lesson 1's key",
+          "[marks][legend]")
+{
+    // slice_u filled its parts sky blue, orange and green, l18_decompose its fourth piece yellow, and no key said
+    // what a fill in those colours means. The oracle is lesson 1's key as drawn: the colours of its swatches' fills
+    // (a band is paler on the number line than in the key), beside the pair's own colours (blue A, orange B, grey for the other bodies), which lesson 1
+    // explains in words. The Voronoi regions are named in their own figure's title and labels.
+    std::set<Color> keyed;
+    {
+        const Scene scene = painter_test::LessonScene("l01_legend");
+        FigureSetup setup = SetUpFigure(scene, FigureOptions{});
+        REQUIRE(setup.Ok());
+        const RecordingCanvas key = painter_test::PaintStep(scene, setup, setup.figure.step);
+        const std::vector<const DrawCommand*> legend = key.InGroup("legend");
+        REQUIRE(legend.size() > 20);
+        for (size_t i = 1; i < legend.size(); ++i) // the first is the key's panel
+        {
+            const DrawCommand& c = *legend[i];
+            if (c.kind == DrawCommand::Kind::FillRect || c.kind == DrawCommand::Kind::FillConvex ||
+                c.kind == DrawCommand::Kind::FillCircle)
+            {
+                keyed.insert(c.color >> 8);
+            }
+        }
+    }
+    const auto bodyColour = [](Color c) {
+        const Color rgb = c | 0xFFu;
+        return rgb == palette::kShapeA || rgb == palette::kShapeB || rgb == palette::kShapeBInk ||
+               rgb == palette::kOther || rgb == palette::kBackground || rgb == palette::kPanel ||
+               rgb == palette::kInk;
+    };
+    const auto lists = FigureScenes();
+    std::set<std::string> unexplained;
+    int fills = 0;
+    for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES", "SATVIZ_FACE_STEP_SCENES"})
+    {
+        const bool allSteps = std::string(list) != "SATVIZ_FIGURE_SCENES";
+        const bool faces = std::string(list) == "SATVIZ_FACE_STEP_SCENES";
+        for (const std::string& stem : lists.at(list))
+        {
+            const Scene scene = painter_test::LessonScene(stem);
+            FigureOptions options;
+            options.setSteps = faces;
+            options.steps = StepView::Faces;
+            FigureSetup setup = SetUpFigure(scene, options);
+            REQUIRE(setup.Ok());
+            const int first = allSteps ? 0 : setup.figure.step;
+            const int last = allSteps ? FigureStepCount(scene, setup) - 1 : setup.figure.step;
+            for (int k = first; k <= last; ++k)
+            {
+                RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
+                for (const DrawCommand& c : canvas.commands)
+                {
+                    const bool fill = c.kind == DrawCommand::Kind::FillRect || c.kind == DrawCommand::Kind::FillConvex ||
+                                      c.kind == DrawCommand::Kind::FillCircle;
+                    // An arrow's head is filled in its line's colour: the line is the mark.
+                    bool head = c.kind == DrawCommand::Kind::FillConvex && c.points.size() == 3;
+                    for (size_t i = 0; head && i < 3; ++i)
+                    {
+                        const ScreenPoint& p = c.points[i];
+                        const ScreenPoint& q = c.points[(i + 1) % 3];
+                        head = std::hypot(q.x - p.x, q.y - p.y) <= 24.0f;
+                    }
+                    if (!fill || head || c.group == "legend" || c.group == "voronoi" || bodyColour(c.color))
+                    {
+                        continue;
+                    }
+                    ++fills;
+                    if (keyed.count(c.color >> 8) == 0)
+                    {
+                        std::ostringstream what;
+                        what << (faces ? "faces/" : "") << stem << ": a fill " << std::hex << c.color << " in \""
+                             << c.group << "\"";
+                        unexplained.insert(what.str());
+                    }
+                }
+            }
+        }
+    }
+    for (const std::string& u : unexplained)
+    {
+        UNSCOPED_INFO(u);
+    }
+    CHECK(unexplained.empty());
+    CHECK(fills > 100);
 }
