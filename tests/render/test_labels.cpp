@@ -16,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <set>
@@ -2338,4 +2339,45 @@ TEST_CASE("With the legend layer, no figure of the course hides a label or a bod
     }
     CHECK(failing.empty());
     CHECK(keys > 100);
+}
+
+TEST_CASE("many_sides is drawn large enough to read, with the triangle's three faces that lesson 12 works with named",
+          "[labels]")
+{
+    // Lesson 12 works the example on the triangle's edge 2 (the smallest overlap) and its edges 0 and 1 (pruned):
+    // framed to fit every axis line, the triangle was under 100 pixels across and only e2 was named.
+    std::ifstream lesson(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/12-speed.md");
+    REQUIRE(lesson);
+    const std::string text((std::istreambuf_iterator<char>(lesson)), std::istreambuf_iterator<char>());
+    REQUIRE(text.find("figures/many_sides.png") != std::string::npos);
+    REQUIRE(text.find("triangle's edge 2") != std::string::npos);
+    REQUIRE(text.find("edges 0 and 1") != std::string::npos);
+    const Scene scene = painter_test::LessonScene("many_sides");
+    FigureSetup setup = SetUpFigure(scene, FigureOptions{});
+    REQUIRE(setup.Ok());
+    const RecordingCanvas canvas = painter_test::PaintStep(scene, setup, setup.figure.step);
+    std::set<std::string> named;
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind == DrawCommand::Kind::Text)
+        {
+            named.insert(c->text);
+        }
+    }
+    for (const char* face : {"e0", "e1", "e2"})
+    {
+        INFO(face);
+        CHECK(named.count(face) == 1);
+    }
+    // The triangle, the smaller body, at least 150 pixels across on the screen.
+    const Body& triangle = scene.bodies[1];
+    REQUIRE(triangle.name == "triangle");
+    float lo = INFINITY, hi = -INFINITY;
+    for (const Vec2& v : triangle.shape.polygon.Vertices())
+    {
+        const float x = ToScreen(setup.figure.view, TransformPoint(triangle.Xf(), v)).x;
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+    }
+    CHECK(hi - lo >= 150.0f);
 }
