@@ -375,7 +375,6 @@ View MovedAside(const View& view, const KeyPlace& place)
 ScreenRect KeyObstacles(const RecordingCanvas& canvas, const ScreenRect& scene)
 {
     ScreenRect bounds{INFINITY, INFINITY, -INFINITY, -INFINITY};
-    RecordingCanvas measure;
     const auto add = [&](float x0, float y0, float x1, float y1) {
         x0 = std::max(x0, scene.minX);
         y0 = std::max(y0, scene.minY);
@@ -394,12 +393,14 @@ ScreenRect KeyObstacles(const RecordingCanvas& canvas, const ScreenRect& scene)
         {
             continue;
         }
-        if (c.kind == DrawCommand::Kind::Text)
+        if (c.kind == DrawCommand::Kind::Text || c.group == "labels")
         {
-            const ScreenPoint size = measure.MeasureText(c.text, c.style);
-            add(c.points[0].x, c.points[0].y, c.points[0].x + size.x, c.points[0].y + size.y);
+            // Labels (texts, halos, leader lines) find their places again round the key, which the label placer
+            // keeps free; one pinned to the image's edge (the name of a body out of sight) would otherwise hold the
+            // picture back however far it moved.
+            continue;
         }
-        else if (c.kind == DrawCommand::Kind::Circle || c.kind == DrawCommand::Kind::FillCircle)
+        if (c.kind == DrawCommand::Kind::Circle || c.kind == DrawCommand::Kind::FillCircle)
         {
             add(c.points[0].x - c.radius, c.points[0].y - c.radius, c.points[0].x + c.radius, c.points[0].y + c.radius);
         }

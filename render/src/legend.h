@@ -89,7 +89,8 @@ KeyPlace PlaceKey(const ScreenRect& scene, const ScreenRect& content, ScreenPoin
 View MovedAside(const View& view, const KeyPlace& place);
 
 /// The bounds, inside `scene`, of what a figure recorded on `canvas` draws there but its background, grid,
-/// candidate axes, Voronoi regions, Minkowski inset and key: the content its key must not cover.
+/// candidate axes, Voronoi regions, Minkowski inset, key and texts (labels are placed round the key): the content
+/// its key must not cover.
 ScreenRect KeyObstacles(const RecordingCanvas& canvas, const ScreenRect& scene);
 
 } // namespace satviz
