@@ -8,6 +8,7 @@ set(SATVIZ_FIGURE_SCENES
   l01_legend
   box_above_floor
   bullet_wall
+  bullet_wall_close
   circle_and_polygon
   circle_corner
   containment

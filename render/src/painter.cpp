@@ -2622,7 +2622,8 @@ class Painter
         const bool overlap = m_axis.separation <= 0.0;
         const float bandLo = x(std::min(m_axis.leadMax, m_axis.otherMin));
         const float bandHi = std::max(x(std::max(m_axis.leadMax, m_axis.otherMin)), bandLo + 1.0f);
-        m_canvas.FillRect({bandLo, rowA - 12.0f}, {bandHi, rowB + 12.0f},
+        // Between the rows of end values (A's above its bar, B's under its own), which would run into it.
+        m_canvas.FillRect({bandLo, rowA - 9.0f}, {bandHi, rowB + 9.0f},
                          WithAlpha(overlap ? palette::kOverlap : palette::kGap, 0.28f));
         const std::string amount = BandLabel(m_axis);
         const ScreenPoint amountSize = m_canvas.MeasureText(amount, TextStyle::Label);
@@ -2750,12 +2751,34 @@ class Painter
         const float left = std::max(barLeft, labelsFrom + 16.0f);
         auto x = [&](double t) { return static_cast<float>(left + std::clamp(t, -0.02, 1.02) * (right - left)); };
         m_canvas.Segment({x(0.0), y}, {x(1.0), y}, palette::kMuted, 2.0f);
+        // The times the markers below will stand at: a tick's value that one would crowd (0.5 between a latest
+        // entry of 0.482 and an earliest exit of 0.517) is left out, the markers' own labels giving the times.
+        std::vector<double> marked;
+        const SweepStatus shownStatus =
+            m_study.Textbook() ? m_study.textbookSweepResult.status : m_study.sweepResult.status;
+        if (m_verdict && shownStatus == SweepStatus::Hit)
+        {
+            marked = {m_axis.windowEntry, m_axis.windowExit,
+                      m_study.Textbook() ? m_study.textbookSweepResult.toi : m_study.sweepResult.toi};
+        }
+        else
+        {
+            marked = {m_axis.entry, m_axis.exit};
+        }
         for (double t : {0.0, 0.5, 1.0})
         {
             m_canvas.Segment({x(t), y - 5.0f}, {x(t), y + 5.0f}, palette::kMuted, 1.5f);
             const std::string text = t == 0.0 ? "t = 0" : (t == 1.0 ? "1" : "0.5");
             const ScreenPoint size = m_canvas.MeasureText(text, TextStyle::Label);
-            m_canvas.Text({x(t) - 0.5f * size.x, y + 10.0f}, text, TextStyle::Label, palette::kMuted);
+            const float tx = x(t) - 0.5f * size.x;
+            const bool crowded = t == 0.5 && std::any_of(marked.begin(), marked.end(), [&](double m) {
+                                     const float mx = x(m);
+                                     return std::isfinite(m) && mx > tx - 8.0f && mx < tx + size.x + 8.0f;
+                                 });
+            if (!crowded)
+            {
+                m_canvas.Text({tx, y + 10.0f}, text, TextStyle::Label, palette::kMuted);
+            }
         }
         // The common window of all axes so far: a hit needs it to be non-empty and to start within [0, 1].
         const double w0 = std::max(m_axis.windowEntry, 0.0);
@@ -3152,11 +3175,12 @@ void PaintFigure(Canvas& canvas, const Scene& scene, const PairStudy& study, con
     {
         // The key must hide no body and no label: drawn once unseen, the picture shows what it covers and the key's
         // size; then the picture moves aside for the key (scaled down if need be). Lines drawn to the scene's size
-        // (a separating line) may reach the key again: a second and a third look move the picture on.
+        // (a separating line, a wall longer than the scene) may reach the key again: up to four more looks move the
+        // picture on.
         Figure moved = figure;
         KeyPlace place;
         bool placed = false;
-        for (int pass = 0; pass < 3; ++pass)
+        for (int pass = 0; pass < 5; ++pass)
         {
             RecordingCanvas unseen;
             Painter(unseen, scene, study, moved, placed ? &place.at : nullptr).Paint();
