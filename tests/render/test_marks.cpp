@@ -12,6 +12,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -506,4 +509,93 @@ TEST_CASE("Every fill colour a figure of the course draws is a body's colour or 
     }
     CHECK(unexplained.empty());
     CHECK(fills > 100);
+}
+
+TEST_CASE("No end value of a number line runs into its band, and no tick value of a time bar is crowded by a marker",
+          "[marks]")
+{
+    // bullet_wall: the wall's 0.010 sat on the top of the gap band, and the time bar's 0.5 sat squeezed between the
+    // latest entry's triangle (0.482) and the earliest exit's (0.517).
+    const auto lists = FigureScenes();
+    RecordingCanvas measure;
+    int bands = 0;
+    for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES", "SATVIZ_FACE_STEP_SCENES"})
+    {
+        const bool allSteps = std::string(list) != "SATVIZ_FIGURE_SCENES";
+        const bool faces = std::string(list) == "SATVIZ_FACE_STEP_SCENES";
+        for (const std::string& stem : lists.at(list))
+        {
+            const Scene scene = painter_test::LessonScene(stem);
+            FigureOptions options;
+            options.setSteps = faces;
+            options.steps = StepView::Faces;
+            FigureSetup setup = SetUpFigure(scene, options);
+            REQUIRE(setup.Ok());
+            const int first = allSteps ? 0 : setup.figure.step;
+            const int last = allSteps ? FigureStepCount(scene, setup) - 1 : setup.figure.step;
+            for (int k = first; k <= last; ++k)
+            {
+                RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
+                const auto box = [&](const DrawCommand& t) {
+                    const ScreenPoint size = measure.MeasureText(t.text, t.style);
+                    return std::array<float, 4>{t.points[0].x, t.points[0].y, t.points[0].x + size.x,
+                                                t.points[0].y + size.y};
+                };
+                const auto meet = [](const std::array<float, 4>& a, const std::array<float, 4>& b, float grow) {
+                    return a[0] - grow < b[2] && b[0] < a[2] + grow && a[1] - grow < b[3] && b[1] < a[3] + grow;
+                };
+                std::vector<std::array<float, 4>> bandRects, triangles;
+                for (const DrawCommand* c : canvas.InGroup("panel"))
+                {
+                    if (c->kind == DrawCommand::Kind::FillRect && c->color != palette::kPanel)
+                    {
+                        bandRects.push_back({c->points[0].x, c->points[0].y, c->points[1].x, c->points[1].y});
+                    }
+                }
+                for (const DrawCommand* c : canvas.InGroup("timebar"))
+                {
+                    if (c->kind == DrawCommand::Kind::FillConvex && c->points.size() == 3)
+                    {
+                        float x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+                        for (const ScreenPoint& p : c->points)
+                        {
+                            x0 = std::min(x0, p.x);
+                            y0 = std::min(y0, p.y);
+                            x1 = std::max(x1, p.x);
+                            y1 = std::max(y1, p.y);
+                        }
+                        triangles.push_back({x0, y0, x1, y1});
+                    }
+                }
+                bands += static_cast<int>(bandRects.size());
+                for (const DrawCommand* c : canvas.InGroup("panel"))
+                {
+                    // An end value is a number alone; the band's own size ("0.96 behind") is written inside it.
+                    const bool number = c->kind == DrawCommand::Kind::Text && !c->text.empty() &&
+                                        std::all_of(c->text.begin(), c->text.end(), [](char ch) {
+                                            return std::isdigit(static_cast<unsigned char>(ch)) != 0 || ch == '.' ||
+                                                   ch == '-';
+                                        });
+                    for (const auto& band : bandRects)
+                    {
+                        INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": \"" << c->text << "\"");
+                        CHECK(!(number && meet(box(*c), band, 0.0f)));
+                    }
+                }
+                for (const DrawCommand* c : canvas.InGroup("timebar"))
+                {
+                    if (c->kind != DrawCommand::Kind::Text || c->text != "0.5")
+                    {
+                        continue;
+                    }
+                    for (const auto& tri : triangles)
+                    {
+                        INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": the time bar's 0.5");
+                        CHECK(!meet(box(*c), tri, 3.0f));
+                    }
+                }
+            }
+        }
+    }
+    CHECK(bands > 50);
 }
