@@ -75,14 +75,19 @@ void ProjectShape(ShapeRef<S> shape, const TransformT<S>& xf, Vec2T<S> direction
         hi = center + shape.circle->radius;
         return;
     }
-    lo = std::numeric_limits<S>::infinity();
-    hi = -std::numeric_limits<S>::infinity();
+    // Locals, not the out-parameters: through references that may alias the transform, each vertex would store
+    // and reload both ends and the transform.
+    const TransformT<S> frame = xf;
+    S low = std::numeric_limits<S>::infinity();
+    S high = -std::numeric_limits<S>::infinity();
     for (const Vec2T<S>& v : shape.polygon->Vertices())
     {
-        const S d = Dot(direction, TransformPoint(xf, v));
-        lo = std::min(lo, d);
-        hi = std::max(hi, d);
+        const S d = Dot(direction, TransformPoint(frame, v));
+        low = std::min(low, d);
+        high = std::max(high, d);
     }
+    lo = low;
+    hi = high;
 }
 
 /// The tracer that records every step into a TraceT.
