@@ -96,6 +96,14 @@ void App::Frame()
     }
     m_panels.Draw();
     KeepUnsavedCopy();
+    if (m_statusLeft >= 0.0)
+    {
+        m_statusLeft -= ImGui::GetIO().DeltaTime;
+        if (m_statusLeft < 0.0 || m_document.Revision() != m_statusRevision)
+        {
+            SetStatus("", false);
+        }
+    }
 }
 
 // The scene is copied as each change is committed, not while a drag goes on: a crash in the middle of a drag loses
@@ -130,10 +138,9 @@ bool App::ReportLeftCopies()
     {
         return false;
     }
-    SetStatus("satviz ended before these changes were saved; they are in " + left.front() +
-                  (left.size() > 1 ? " (and " + std::to_string(left.size() - 1) + " more in that folder)" : "") +
-                  ": File > Open to take them back",
-              false);
+    SetPassingStatus("satviz ended before these changes were saved; they are in " + left.front() +
+                     (left.size() > 1 ? " (and " + std::to_string(left.size() - 1) + " more in that folder)" : "") +
+                     ": File > Open to take them back");
     return true;
 }
 
@@ -151,6 +158,11 @@ double App::SecondsUntilChange() const
     if (m_sim.Playing())
     {
         change = change < 0.0 ? m_sim.SecondsUntilNextStep() : std::min(change, m_sim.SecondsUntilNextStep());
+    }
+    if (m_statusLeft >= 0.0)
+    {
+        // A frame when the passing message is due to go, so that an idle window does not keep it.
+        change = change < 0.0 ? m_statusLeft : std::min(change, m_statusLeft);
     }
     return change;
 }
@@ -934,6 +946,14 @@ void App::SetStatus(const std::string& message, bool error)
 {
     m_status = message;
     m_statusIsError = error;
+    m_statusLeft = -1.0;
+}
+
+void App::SetPassingStatus(const std::string& message)
+{
+    SetStatus(message, false);
+    m_statusLeft = kPassingStatusSeconds;
+    m_statusRevision = m_document.Revision();
 }
 
 void App::ClearError()

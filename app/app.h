@@ -261,6 +261,11 @@ class App
 
     /// Shows a one-line message in the status bar (an export result, an error).
     void SetStatus(const std::string& message, bool error);
+    /// Shows a message that passes: it goes at the next edit or after kPassingStatusSeconds, whichever comes first
+    /// (news from the start, such as the copies a crash left, which the work that follows makes old).
+    void SetPassingStatus(const std::string& message);
+    /// How long a passing status message stays while nothing is edited.
+    static constexpr double kPassingStatusSeconds = 15.0;
     /// The status line.
     const std::string& Status() const { return m_status; }
     /// True when the status line reports an error.
@@ -305,6 +310,8 @@ class App
     int m_selected = -1;
     std::string m_status;
     bool m_statusIsError = false;
+    double m_statusLeft = -1.0;  // seconds a passing message has left (negative: the message stays)
+    size_t m_statusRevision = 0; // the document's revision when a passing message was set
     std::vector<Lesson> m_lessons;
     int m_lesson = -1;
     std::vector<LessonBlock> m_lessonBlocks;

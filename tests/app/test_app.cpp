@@ -1039,6 +1039,25 @@ TEST_CASE("Unsaved changes are kept in a copy on disk until they are saved, undo
     const fs::path left = folder / ("overlapping_boxes.unsaved-" + std::to_string(gone) + ".json");
     fs::copy_file(copy, left);
     {
+        // The news passes as other news does: after a while with nothing done, or at the next edit.
+        Harness h(copy.string(), options);
+        REQUIRE(h.app->ReportLeftCopies());
+        const std::string news = h.app->Status();
+        ImGuiIO& io = ImGui::GetIO();
+        io.DeltaTime = 1.0f;
+        h.Frames(static_cast<int>(App::kPassingStatusSeconds) - 1);
+        CHECK(h.app->Status() == news);
+        h.Frames(2);
+        CHECK(h.app->Status().empty());
+        io.DeltaTime = 1.0f / 60.0f;
+        REQUIRE(h.app->ReportLeftCopies());
+        h.Frames(2);
+        CHECK(h.app->Status() == news);
+        const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
+        h.Drag(from, ImVec2(from.x + 30.0f, from.y));
+        CHECK(h.app->Status().find("ended before") == std::string::npos);
+    }
+    {
         Harness h(copy.string(), options);
         REQUIRE(h.app->ReportLeftCopies());
         CHECK(h.app->Status().find(left.string()) != std::string::npos);
