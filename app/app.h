@@ -328,4 +328,12 @@ class App
 /// which the canvas draws over it.
 Figure CanvasFigure(const App& app);
 
+/// True when the canvas's figure draws the selected body's velocity arrow and names it "v": the velocity handle on
+/// its tip then shows no letter of its own.
+bool FigureNamesVelocity(const App& app);
+
+/// Where the canvas draws the velocity handle of `body`: the tip of the figure's velocity arrow, from the body's
+/// centre, or beside the body for a velocity too short to grab.
+ScreenPoint VelocityHandleAt(const View& view, const Body& body);
+
 } // namespace satviz

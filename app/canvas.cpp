@@ -97,13 +97,21 @@ ScreenPoint StemFoot(const View& view, const Body& body)
     return {turn.x, std::max(TopAt(view, body, turn.x).y, turn.y + 6.0f)};
 }
 
+// Where the figure's velocity arrow starts: the body's centre (a polygon's centroid, a circle's centre), which is
+// not its origin for a shape built around another point (l13_sweep's triangle).
+Vec2 VelocityBase(const Body& body)
+{
+    return TransformPoint(body.Xf(),
+                          body.shape.type == ShapeType::Polygon ? body.shape.polygon.Centroid() : body.shape.circle.center);
+}
+
 // The velocity handle: the velocity arrow's tip, or, for a velocity too short to grab, just right of the body as
 // drawn, level with its origin as far as the body reaches.
 ScreenPoint VelocityHandle(const View& view, const Body& body)
 {
     if (Length(body.velocity) * view.zoom >= 14.0)
     {
-        return ToScreen(view, body.position + body.velocity);
+        return ToScreen(view, VelocityBase(body) + body.velocity);
     }
     const ScreenPoint origin = ToScreen(view, body.position);
     const PixelBox box = BodyPixels(view, body);
@@ -183,6 +191,27 @@ int BodyAt(const Viewer& viewer, const Scene& scene, Vec2 world)
 }
 
 } // namespace
+
+bool FigureNamesVelocity(const App& app)
+{
+    const Viewer& viewer = app.GetViewer();
+    const std::vector<Body>& bodies = app.ShownScene().bodies;
+    const int selected = app.Selected();
+    if (selected < 0 || selected >= static_cast<int>(bodies.size()) || !viewer.Setup().Ok() ||
+        viewer.CurrentFigure().kind != FigureKind::Pair || (viewer.Choices().layers & kLayerSwept) == 0 ||
+        (selected != viewer.Setup().study.bodyA && selected != viewer.Setup().study.bodyB))
+    {
+        return false;
+    }
+    // The painter draws a moving body's arrow in a sweep, and in a figure of one instant when it is 20 pixels long.
+    const double pixels = Length(bodies[static_cast<size_t>(selected)].velocity) * viewer.Camera().zoom;
+    return viewer.Setup().study.sweep ? pixels > 0.0 : pixels >= 20.0;
+}
+
+ScreenPoint VelocityHandleAt(const View& view, const Body& body)
+{
+    return VelocityHandle(view, body);
+}
 
 Figure CanvasFigure(const App& app)
 {
@@ -435,7 +464,7 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
             m_app.MoveVertex(selected, m_dragVertex, world);
             break;
         case DragKind::Velocity:
-            m_app.SetVelocity(selected, world - body.position);
+            m_app.SetVelocity(selected, world - VelocityBase(body));
             break;
         case DragKind::Throw:
         {
@@ -537,7 +566,11 @@ void Panels::Handles(ImDrawList* list, ImVec2 origin)
     list->AddCircle(turn, 6.0f, ink, 0, 1.5f);
     const ImVec2 velocity = at(VelocityHandle(camera, body));
     list->AddCircleFilled(velocity, 5.0f, IM_COL32(213, 94, 0, 255));
-    list->AddText(ImVec2(velocity.x + 7.0f, velocity.y - 8.0f), ink, "v");
+    // Where the figure names the arrow whose tip this is, its "v" (kept off the handle) is the only one.
+    if (!FigureNamesVelocity(m_app))
+    {
+        list->AddText(ImVec2(velocity.x + 7.0f, velocity.y - 8.0f), ink, "v");
+    }
 }
 
 void Panels::SetTool(CanvasTool tool)

@@ -1568,6 +1568,47 @@ TEST_CASE("No label of the canvas's figure lies under the selected body's turnin
     CHECK(pushes > 0); // the push's label was drawn, beside the handle rather than under it
 }
 
+TEST_CASE("A selected moving body's velocity handle sits on the tip of the figure's arrow, named by one v", "[app]")
+{
+    // l13_sweep's triangle has its origin at a corner, not at its centroid, where the figure's arrow starts.
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/l13_sweep.json");
+    h.app->Select(1);
+    h.Frames(1);
+    const Body& b = h.BodyNamed("B");
+    REQUIRE(b.velocity != Vec2{});
+    const View& camera = h.View().Camera();
+    const ScreenPoint tip = ToScreen(camera, Centroid(b) + b.velocity);
+    const ScreenPoint handle = VelocityHandleAt(camera, b);
+    CHECK(std::hypot(handle.x - tip.x, handle.y - tip.y) < 0.5f);
+    Figure figure = CanvasFigure(*h.app);
+    int near = 0;
+    for (int step = 0; step <= h.View().VerdictStep(); ++step)
+    {
+        figure.step = step;
+        RecordingCanvas canvas;
+        PaintFigure(canvas, h.View().Studied(), h.View().Setup().study, figure);
+        near = 0;
+        for (const DrawCommand& c : canvas.commands)
+        {
+            if (c.kind == DrawCommand::Kind::Text && c.text == "v")
+            {
+                const ScreenPoint size = canvas.MeasureText(c.text, c.style);
+                const float dx = c.points[0].x + size.x / 2.0f - tip.x;
+                const float dy = c.points[0].y + size.y / 2.0f - tip.y;
+                near += std::hypot(dx, dy) < 40.0f ? 1 : 0;
+            }
+        }
+        INFO("step " << step);
+        CHECK(near == 1); // the figure names the arrow beside its tip, where the handle is
+    }
+    // The handle's own letter would be a second v beside it.
+    CHECK(FigureNamesVelocity(*h.app));
+    // A figure of one instant without the swept layer has no arrow: the handle names itself.
+    h.app->SetLayers(h.View().Choices().layers & ~kLayerSwept);
+    h.Frames(1);
+    CHECK_FALSE(FigureNamesVelocity(*h.app));
+}
+
 TEST_CASE("No label of the canvas's figure lies on a vertex handle of the selected body", "[app]")
 {
     // Each polygon of each lesson scene selected in turn: the canvas draws a square of 8 pixels (and its stroke) on
