@@ -31,8 +31,54 @@ namespace satviz
 
 // [SECTION] Helpers
 
+SliderGrabSpan SliderGrab(float frameMin, float frameMax, float ratio, int values, float grabMinSize)
+{
+    // As SliderBehaviorT places it: 2 pixels in from the frame, its centre moving over the frame less the grab.
+    const float padding = 2.0f;
+    const float length = std::max(frameMax - frameMin - 2.0f * padding, 0.0f);
+    float size = values > 0 ? std::max(length / static_cast<float>(values), grabMinSize) : grabMinSize;
+    size = std::min(size, length);
+    const float centre = frameMin + padding + 0.5f * size + std::clamp(ratio, 0.0f, 1.0f) * (length - size);
+    return {centre - 0.5f * size, centre + 0.5f * size};
+}
+
+float SliderTextX(float frameMin, float frameMax, SliderGrabSpan grab, float width)
+{
+    const float gap = 4.0f; // between the text and the grab
+    const float centred = 0.5f * (frameMin + frameMax - width);
+    if (centred + width + gap <= grab.min || centred >= grab.max + gap)
+    {
+        return centred;
+    }
+    const float left = grab.min - frameMin;
+    const float right = frameMax - grab.max;
+    if (right >= left && right >= width + 2.0f * gap)
+    {
+        return grab.max + 0.5f * (right - width);
+    }
+    if (left >= width + 2.0f * gap)
+    {
+        return frameMin + 0.5f * (left - width);
+    }
+    return std::max(frameMin, 0.5f * (grab.min + grab.max - width));
+}
+
 namespace
 {
+
+// Writes `text` in the frame of the slider just drawn (with no text of its own), `frameWidth` wide, beside its grab
+// rather than over it: Dear ImGui centres a slider's text, where the grab passes under part of it.
+void SliderTextBesideGrab(float frameWidth, float ratio, int values, const std::string& text)
+{
+    const ImVec2 low = ImGui::GetItemRectMin();
+    const ImVec2 high(low.x + frameWidth, ImGui::GetItemRectMax().y);
+    const SliderGrabSpan grab = SliderGrab(low.x, high.x, ratio, values, ImGui::GetStyle().GrabMinSize);
+    const float x = SliderTextX(low.x, high.x, grab, ImGui::CalcTextSize(text.c_str()).x);
+    const ImVec4 clip(low.x, low.y, high.x, high.y);
+    ImGui::GetWindowDrawList()->AddText(ImGui::GetFont(), ImGui::GetFontSize(),
+                                        ImVec2(x, 0.5f * (low.y + high.y - ImGui::GetFontSize())),
+                                        ImGui::GetColorU32(ImGuiCol_Text), text.c_str(), nullptr, 0.0f, &clip);
+}
 
 bool Ctrl()
 {
@@ -208,11 +254,14 @@ void Panels::StepRow(const std::string& name)
     }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
+    const float width = ImGui::CalcItemWidth();
     int shown = step;
-    if (ImGui::SliderInt("##step", &shown, 0, last, name.c_str()) && shown != step)
+    if (ImGui::SliderInt("##step", &shown, 0, last, "") && shown != step)
     {
         m_app.ShowStep(shown);
     }
+    SliderTextBesideGrab(width, last > 0 ? static_cast<float>(step) / static_cast<float>(last) : 0.0f, last + 1,
+                         name);
 }
 
 // [SECTION] Keyboard shortcuts
@@ -745,11 +794,15 @@ void Panels::StepControls()
         ImGui::SameLine();
         float t = static_cast<float>(std::max(viewer.Time(), 0.0));
         ImGui::SetNextItemWidth(-1.0f);
+        const float width = ImGui::CalcItemWidth();
         ImGui::BeginDisabled(!showTime);
-        if (ImGui::SliderFloat("##time", &t, 0.0f, 1.0f, "t = %.3f"))
+        if (ImGui::SliderFloat("##time", &t, 0.0f, 1.0f, ""))
         {
             m_app.SetTime(t);
         }
+        char text[32];
+        std::snprintf(text, sizeof(text), "t = %.3f", static_cast<double>(t));
+        SliderTextBesideGrab(width, t, 0, text);
         ImGui::EndDisabled();
     }
 }
@@ -1003,19 +1056,27 @@ void Panels::SimulationControls()
     }
     int step = sim.Shown();
     const int last = std::max(sim.Last(), sim.First() + 1);
-    if (ImGui::SliderInt("step", &step, sim.First(), last, "%d", ImGuiSliderFlags_AlwaysClamp))
+    const float stepWidth = ImGui::CalcItemWidth();
+    if (ImGui::SliderInt("step", &step, sim.First(), last, "", ImGuiSliderFlags_AlwaysClamp))
     {
         m_app.SimShowStep(step);
     }
+    SliderTextBesideGrab(stepWidth,
+                         static_cast<float>(sim.Shown() - sim.First()) / static_cast<float>(last - sim.First()),
+                         last - sim.First() + 1, std::to_string(sim.Shown()));
     if (ImGui::IsItemHovered())
     {
         ImGui::SetTooltip("Scrubs through the steps taken so far (the last %d are kept)", sim.Last() - sim.First() + 1);
     }
     float speed = static_cast<float>(sim.Speed());
-    if (ImGui::SliderFloat("steps/s", &speed, 1.0f, 240.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
+    const float speedWidth = ImGui::CalcItemWidth();
+    if (ImGui::SliderFloat("steps/s", &speed, 1.0f, 240.0f, "", ImGuiSliderFlags_Logarithmic))
     {
         m_app.SimSpeed(speed);
     }
+    char speedText[32];
+    std::snprintf(speedText, sizeof(speedText), "%.0f", static_cast<double>(speed));
+    SliderTextBesideGrab(speedWidth, std::log(std::max(speed, 1.0f)) / std::log(240.0f), 0, speedText);
     // The step's time in the digits of the response's sentences (DescribeWorld); how many steps the app took is its
     // own.
     const WorldWords world = DescribeWorld(m_app.ShownScene(), sim.Record());

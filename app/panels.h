@@ -44,6 +44,23 @@ inline ImVec2 MinimumWindowSize(bool lessonShown, float barHeight)
     return {kPanelWidth + (lessonShown ? kLessonWidth : 0.0f) + kMinCanvasWidth, kMinCanvasHeight + 2.0f * barHeight};
 }
 
+/// The span of a horizontal slider's grab, in pixels along the window.
+struct SliderGrabSpan
+{
+    float min = 0.0f; ///< left edge
+    float max = 0.0f; ///< right edge
+};
+
+/// The grab of a Dear ImGui 1.86 horizontal slider whose frame spans [frameMin, frameMax], at `ratio` (0 to 1) of
+/// its range: an integer slider of `values` values has a grab of 1/values of the frame, a float slider (`values` 0)
+/// the least grab, `grabMinSize`.
+SliderGrabSpan SliderGrab(float frameMin, float frameMax, float ratio, int values, float grabMinSize);
+
+/// Where a slider's text `width` pixels wide starts so that the grab does not lie under part of it: centred in the
+/// frame where the grab leaves it room, else centred in the wider side beside the grab, and on the grab only when
+/// neither side holds it (a grab as wide as the frame).
+float SliderTextX(float frameMin, float frameMax, SliderGrabSpan grab, float width);
+
 /// What a drag on the canvas does, decided when the mouse button goes down.
 enum class DragKind
 {

@@ -1609,6 +1609,58 @@ TEST_CASE("A selected moving body's velocity handle sits on the tip of the figur
     CHECK_FALSE(FigureNamesVelocity(*h.app));
 }
 
+TEST_CASE("A slider's text lies beside its grab, never half on it", "[app]")
+{
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    // The grab as Dear ImGui places it (SliderBehavior) is the grab the text keeps away from.
+    ImGui::NewFrame();
+    ImGui::Begin("probe");
+    const ImRect frame(ImVec2(100.0f, 10.0f), ImVec2(400.0f, 30.0f));
+    const float least = ImGui::GetStyle().GrabMinSize;
+    int checked = 0;
+    for (const int last : {1, 2, 4, 9, 40})
+    {
+        for (int value = 0; value <= last; ++value)
+        {
+            int v = value;
+            const int low = 0;
+            ImRect grab;
+            ImGui::SliderBehavior(frame, ImGui::GetID("##probe"), ImGuiDataType_S32, &v, &low, &last, "", 0, &grab);
+            const SliderGrabSpan span = SliderGrab(frame.Min.x, frame.Max.x, static_cast<float>(value) / last,
+                                                   last + 1, least);
+            CHECK(span.min == Approx(grab.Min.x).margin(0.01));
+            CHECK(span.max == Approx(grab.Max.x).margin(0.01));
+            for (const float width : {12.0f, 60.0f, 90.0f})
+            {
+                const float x = SliderTextX(frame.Min.x, frame.Max.x, span, width);
+                const bool fitsBeside = span.min - frame.Min.x >= width + 8.0f || frame.Max.x - span.max >= width + 8.0f;
+                const bool onGrab = x < span.max && span.min < x + width;
+                INFO("values " << last + 1 << ", value " << value << ", text " << width << " px at " << x);
+                CHECK(x >= frame.Min.x);
+                CHECK(x + width <= frame.Max.x);
+                if (fitsBeside)
+                {
+                    CHECK_FALSE(onGrab);
+                    ++checked;
+                }
+                else
+                {
+                    CHECK((x >= span.min && x + width <= span.max)); // wholly on a grab wider than the sides
+                }
+            }
+        }
+    }
+    ImGui::End();
+    ImGui::EndFrame();
+    CHECK(checked > 100);
+    // "axis 2 of 4" centred as Dear ImGui writes it has the grab under its middle.
+    const SliderGrabSpan middle = SliderGrab(frame.Min.x, frame.Max.x, 0.5f, 5, least);
+    const float centred = 0.5f * (frame.Min.x + frame.Max.x - 80.0f);
+    CHECK((centred < middle.max && middle.min < centred + 80.0f));
+    const float beside = SliderTextX(frame.Min.x, frame.Max.x, middle, 80.0f);
+    CHECK_FALSE((beside < middle.max && middle.min < beside + 80.0f));
+}
+
 TEST_CASE("No label of the canvas's figure lies on a vertex handle of the selected body", "[app]")
 {
     // Each polygon of each lesson scene selected in turn: the canvas draws a square of 8 pixels (and its stroke) on
