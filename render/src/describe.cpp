@@ -912,6 +912,26 @@ std::string FormatNumber(double value)
     return text == "-0.00" ? "0.00" : text;
 }
 
+std::string FormatLabelNumber(double value)
+{
+    const double magnitude = std::fabs(value);
+    if (!(magnitude >= 1e4 && magnitude < 1e9) || value != std::round(value))
+    {
+        return FormatNumber(value);
+    }
+    const std::string digits = std::to_string(static_cast<long long>(magnitude));
+    std::string text = value < 0.0 ? "-" : "";
+    for (size_t i = 0; i < digits.size(); ++i)
+    {
+        if (i > 0 && (digits.size() - i) % 3 == 0)
+        {
+            text += ' ';
+        }
+        text += digits[i];
+    }
+    return text;
+}
+
 std::string FormatNumber(double value, int significant)
 {
     // Only from 0.01 to 0.1 do three decimals give fewer than three significant digits: below, FormatNumber gives

@@ -1176,7 +1176,7 @@ class Painter
             }
             MarkedArrow(from, tip, InkOf(s), 2.0f, 11.0f);
             // Kept out of the other body, where it would read as that body's velocity.
-            const std::string name = shortened ? "v = " + FormatNumber(Length(body.velocity)) +
+            const std::string name = shortened ? "v = " + FormatLabelNumber(Length(body.velocity)) +
                                                      (m_scene.hasWorld ? " m/s" : " per step")
                                                : "v";
             m_labels.PlaceOutside(OutlineOf(1 - s), tip, name, shortened ? TextStyle::Label : TextStyle::Heading, InkOf(s),
@@ -1263,7 +1263,7 @@ class Painter
             }
             MarkedArrow(from, tip, InkOf(s), 2.0f, 11.0f);
             const std::string unit = m_scene.hasWorld ? " m/s" : " per step";
-            m_labels.Place(tip, "v = " + FormatNumber(speed) + unit, TextStyle::Label, InkOf(s),
+            m_labels.Place(tip, "v = " + FormatLabelNumber(speed) + unit, TextStyle::Label, InkOf(s),
                           static_cast<float>(body.velocity.x), static_cast<float>(-body.velocity.y), 6.0f,
                           LabelRank::Note);
             m_labels.Names(MarkKind::ArrowHead);

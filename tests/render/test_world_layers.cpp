@@ -254,6 +254,21 @@ TEST_CASE("World layers: a bullet's hit on the time bar and where the bodies wer
     CHECK(dots == 1);
 }
 
+TEST_CASE("A speed beside its arrow is written as the captions write it: 100 000 m/s, not 100000.00", "[painter]")
+{
+    // The bullet's arrow runs 1667 m out of the figure: drawn shorter, it is named with its speed.
+    SteppedScene s = StepScene("l17_bullet.json", 0);
+    const RecordingCanvas canvas = Paint(s, kLayerShapes | kLayerLabels | kLayerSwept);
+    CHECK(Contains(s.scene.view.caption, "100 000 m/s"));
+    CHECK(AnyTextContains(canvas, "v = 100 000 m/s"));
+    CHECK_FALSE(AnyTextContains(canvas, "100000"));
+    CHECK(FormatLabelNumber(100000.0) == "100 000");
+    CHECK(FormatLabelNumber(-1234567.0) == "-1 234 567");
+    CHECK(FormatLabelNumber(1667.0) == FormatNumber(1667.0));
+    CHECK(FormatLabelNumber(100000.5) == FormatNumber(100000.5));
+    CHECK(FormatLabelNumber(3.0) == FormatNumber(3.0));
+}
+
 TEST_CASE("World layers: a hit chosen on the time bar draws its bodies where they touch, at its instant",
           "[painter][world]")
 {

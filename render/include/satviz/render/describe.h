@@ -19,6 +19,11 @@ std::string FormatNumber(double value);
 /// be checked by hand from the numbers it prints (0.50 x 0.0102 = 0.0051). Otherwise the same as FormatNumber(value).
 std::string FormatNumber(double value, int significant);
 
+/// A number a label shows to be read, not computed from (a speed beside its arrow): FormatNumber, except that a
+/// whole number of five digits or more is written as the lessons and captions write it, in groups of three
+/// without decimals ("100 000", not "100000.00"). Not for text whose numbers are read back (a space splits them).
+std::string FormatLabelNumber(double value);
+
 /// Two numbers as FormatNumber shows them, written side by side with as many decimals each: "(-0.342, 0.940)", not
 /// "(-0.342, 0.94)". Only the trailing 0 FormatNumber drops is put back, so the values read the same.
 std::string FormatPair(double x, double y, const char* open = "(", const char* close = ")");
