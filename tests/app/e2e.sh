@@ -52,7 +52,7 @@ tap ctrl+e
 for _ in $(seq 50); do grep -q "exported" "$work/app.log" && break; sleep 0.1; done
 import -window root "$work/screenshot.png" 2> /dev/null || true
 tap ctrl+q
-wait_for_quit
+wait_for_exit 0
 cat "$work/app.log"
 
 grep -q '"step":4' "$work/scene.json" || { echo "FAILED: the saved scene is not at step 4 (three steps on from the first, counted from 1):"; cat "$work/scene.json"; exit 1; }

@@ -20,10 +20,8 @@ for _ in $(seq 50); do [ -f "$copy" ] && break; sleep 0.1; done
 [ -f "$copy" ] || { echo "FAILED: no copy of the unsaved drag at $copy"; ls -R "$work/state" 2> /dev/null; exit 1; }
 
 kill -SEGV $pid
-status=0
-wait $pid || status=$?
-trap - EXIT
-[ "$status" -eq $((128 + 11)) ] || { echo "FAILED: the app ended with status $status, not by its signal"; exit 1; }
+# Ended by the signal, after its report: 128 + 11.
+wait_for_exit $((128 + 11)) "the crash report?"
 grep -qxF "satviz: crashed (signal 11); the unsaved changes are in $copy" "$work/app.log" ||
   { echo "FAILED: the app did not say where the unsaved changes are:"; cat "$work/app.log"; exit 1; }
 sed -n '/^satviz: the calls that led to it:$/,$p' "$work/app.log" | grep -q "satviz(" ||
@@ -52,6 +50,6 @@ for _ in $(seq 50); do grep -q "^satviz: satviz ended before" "$work/app.log" &&
 grep -qF "satviz: satviz ended before these changes were saved; they are in $copy" "$work/app.log" ||
   { echo "FAILED: the next start did not tell where the unsaved changes are:"; cat "$work/app.log"; exit 1; }
 tap ctrl+q 0.12
-wait_for_quit
+wait_for_exit 0
 [ -f "$copy" ] || { echo "FAILED: the copy is gone though nobody took it back"; exit 1; }
 echo "PASSED: a crash keeps the unsaved drag in a copy, says where, and the next start says it again"

@@ -65,7 +65,7 @@ sleep 0.3
 xdotool keydown ctrl
 tap q 0.25
 xdotool keyup ctrl
-wait_for_quit "unsaved changes?"
+wait_for_exit 0 "unsaved changes?"
 cat "$work/app.log"
 
 python3 - "$work/scene.json" "$zoom" << 'PY' || exit 1

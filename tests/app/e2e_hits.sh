@@ -67,5 +67,5 @@ check(sys.argv[3], 1, t1, "bottom", (x1, y1))
 check(sys.argv[2], 2, t2, "right", (x2, y2))
 PY
 tap ctrl+q
-wait_for_quit
+wait_for_exit 0
 echo "PASSED: clicking a hit on the time bar shows its bodies at its instant, in time order"

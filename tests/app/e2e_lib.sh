@@ -2,7 +2,7 @@
 # What the app's end-to-end scripts share; each sources it first (it reads the script's own arguments):
 #  - the skip when Xvfb or xdotool is missing (exit 77, which ctest reports as skipped);
 #  - the script run again inside a virtual display of 1280x800;
-#  - tap, place, click, start_app, wait_for_quit, read_canvas, body_on_screen and drag below.
+#  - tap, place, click, start_app, wait_for_exit, read_canvas, body_on_screen and drag below.
 for tool in xvfb-run xdotool; do
   if ! command -v "$tool" > /dev/null; then
     echo "SKIPPED: $tool is not installed (apt-get install xvfb xauth xdotool)"
@@ -62,14 +62,24 @@ start_app() {
   for _ in $(seq 50); do grep -q "canvas at" "$work/app.log" && break; sleep 0.1; done
 }
 
-# Waits up to 5 s for the app to end after ctrl+q; when it does not, kills it and fails with its output ($1, if
-# given, says what may have held it).
-wait_for_quit() {
-  for _ in $(seq 50); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
+# Waits up to 10 s for the app to end (after ctrl+q, or a signal the script sent it) and requires its exit status to
+# be $1: 0 for a quit, 128 + N for signal N. An app that faults or aborts on its way out (a destructor, the sanitizer
+# build's leak check) fails here with its output. One that does not end is killed, and the test fails ($2, if given,
+# says what may have held it).
+wait_for_exit() {
+  local expected=$1 status=0
+  for _ in $(seq 100); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
   trap - EXIT
   if kill -0 $pid 2> /dev/null; then
     kill $pid
-    echo "FAILED: the app did not quit on ctrl+q${1:+ ($1)}"
+    wait $pid 2> /dev/null || true
+    echo "FAILED: the app did not end within 10 s${2:+ ($2)}"
+    cat "$work/app.log"
+    exit 1
+  fi
+  wait $pid || status=$?
+  if [ "$status" -ne "$expected" ]; then
+    echo "FAILED: the app ended with status $status$( ((status > 128)) && echo " (signal $((status - 128)))"), not $expected:"
     cat "$work/app.log"
     exit 1
   fi

@@ -94,5 +94,5 @@ for name in ("A", "B"):
 print("the response of A and B at step 23 quotes the world's velocities before and after the step")
 PY
 tap ctrl+q
-wait_for_quit
+wait_for_exit 0
 echo "PASSED: play, pause, back and forward show satviz-sim's states; the response quotes the world's record"

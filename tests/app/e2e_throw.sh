@@ -89,5 +89,5 @@ print(f"satviz-sim without the throw has the box at {box['position']}, the app a
 PY
 import -window root "$work/screenshot.png" 2> /dev/null || true
 tap ctrl+q 0.12
-wait_for_quit
+wait_for_exit 0
 echo "PASSED: a body grabbed while playing is thrown along the pointer's motion; back and forward show its states"
