@@ -2537,15 +2537,35 @@ class Painter
                 }
                 m_labels.AlsoAt(within);
             }
-            else if (wide < text.x + 8.0f && tall >= 2.0f * text.y)
-            {
-                m_labels.PlaceOutside(OutlineOf(1 - s), At({right.x, center.y}), body.name, TextStyle::Heading,
-                                     InkOf(s), 1.0f, 0.0f, 6.0f, LabelRank::Name);
-            }
             else
             {
-                m_labels.PlaceOutside(OutlineOf(1 - s), At({center.x, low.y}), body.name, TextStyle::Heading,
-                                     InkOf(s), 0.0f, 1.0f, 6.0f, LabelRank::Name);
+                // A name beside its shape goes to the right of a thin one and below a flat one, unless a face the
+                // sentences name looks that way: then it goes out on the opposite side, leaving that face's outside
+                // to the face's name (pitfall_tunnel's bullet, some 20 pixels wide, with its e0 below it).
+                ScreenPoint way = wide < text.x + 8.0f && tall >= 2.0f * text.y ? ScreenPoint{1.0f, 0.0f}
+                                                                               : ScreenPoint{0.0f, 1.0f};
+                ScreenPoint from = way.x > 0.0f ? At({right.x, center.y}) : At({center.x, low.y});
+                if (body.shape.type == ShapeType::Polygon)
+                {
+                    for (const int i : NamedIn(sentence, s, "edge", "edges"))
+                    {
+                        const Vec2 n = Rotate(body.Xf().q, body.shape.polygon.Normal(i));
+                        const ScreenPoint out{static_cast<float>(n.x), -static_cast<float>(n.y)};
+                        if (out.x * way.x + out.y * way.y > 0.5f)
+                        {
+                            way = {-out.x, -out.y};
+                            float reach = 0.0f;
+                            for (const ScreenPoint& q : outline)
+                            {
+                                reach = std::max(reach, (q.x - middle.x) * way.x + (q.y - middle.y) * way.y);
+                            }
+                            from = {middle.x + reach * way.x, middle.y + reach * way.y};
+                            break;
+                        }
+                    }
+                }
+                m_labels.PlaceOutside(OutlineOf(1 - s), from, body.name, TextStyle::Heading, InkOf(s), way.x, way.y,
+                                     6.0f, LabelRank::Name);
             }
         }
     }
