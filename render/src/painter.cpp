@@ -1939,6 +1939,8 @@ class Painter
             const std::vector<ScreenPoint> outline = ShapeOutline(m_view, m_bodyB.shape, pushed);
             DashedOutline(m_canvas, outline, palette::kInk, 1.2f, m_bounds);
             ReserveOutline(outline, 1.2f);
+            // A face's name beside it would read as this outline's (the crate's e1 by its pushed right side).
+            m_ghostOutlines.push_back(outline);
             const Manifold left = Collide(m_bodyA.shape, m_bodyA.Xf(), m_bodyB.shape, pushed);
             if (left.overlap && left.depth > 0.0)
             {

@@ -1159,6 +1159,24 @@ std::vector<std::string> FaceNamesAstray(const RecordingCanvas& canvas, const Sc
         }
         ghosts.push_back(std::move(outline));
     }
+    // And B where a pitfall's push leaves it, dashed in ink beside the MTV's outline (pitfall_unnormalised's
+    // crate), when drawn: B moved by the pitfall's depth along its normal.
+    const std::vector<const DrawCommand*> mtv = canvas.InGroup("mtv");
+    const bool pushedOutline = std::any_of(mtv.begin(), mtv.end(), [](const DrawCommand* d) {
+        return d->kind == DrawCommand::Kind::Segment && d->color == palette::kInk && d->thickness > 1.1f &&
+               d->thickness < 1.3f;
+    });
+    if (pushedOutline && study.pitfall.ran && bodies[1]->shape.type == ShapeType::Polygon)
+    {
+        Transform pushed = bodies[1]->Xf();
+        pushed.p = pushed.p + study.pitfall.depth * study.pitfall.normal;
+        std::vector<ScreenPoint> outline;
+        for (const Vec2& v : bodies[1]->shape.polygon.Vertices())
+        {
+            outline.push_back(ToScreen(view, TransformPoint(pushed, v)));
+        }
+        ghosts.push_back(std::move(outline));
+    }
     for (const DrawCommand* c : canvas.InGroup("labels"))
     {
         if (c->kind != DrawCommand::Kind::Text || OnLeader(canvas, *c))
