@@ -2130,7 +2130,42 @@ class Painter
             return {0.5f * (a.x + b.x), 0.5f * (a.y + b.y)};
         }
         const float t = (static_cast<float>(bestStart) + 0.5f * static_cast<float>(bestLength - 1)) / kSamples;
-        return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+        const ScreenPoint middle{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+        // A middle within a few dozen pixels of the other body (the free stretch of a floor ending under a plank's
+        // raised corner) puts the name beside that body's corner, where it reads as naming the corner: the name
+        // goes where the free stretch lies farthest both from the other body and from the edge's own ends.
+        constexpr float kCrowded = 48.0f;
+        const auto fromOther = [&](ScreenPoint p) {
+            float best = 1e9f;
+            for (size_t i = 0; i < other.size(); ++i)
+            {
+                const ScreenPoint q = NearestOnSegment(other[i], other[(i + 1) % other.size()], p);
+                best = std::min(best, std::hypot(q.x - p.x, q.y - p.y));
+            }
+            return best;
+        };
+        if (other.size() < 3 || fromOther(middle) >= kCrowded)
+        {
+            return middle;
+        }
+        ScreenPoint best = middle;
+        float room = 0.0f;
+        for (int i = 0; i <= kSamples; ++i)
+        {
+            const float u = static_cast<float>(i) / kSamples;
+            const ScreenPoint p{a.x + (b.x - a.x) * u, a.y + (b.y - a.y) * u};
+            if (inside(p))
+            {
+                continue;
+            }
+            const float r = std::min({fromOther(p), std::hypot(p.x - a.x, p.y - a.y), std::hypot(p.x - b.x, p.y - b.y)});
+            if (r > room)
+            {
+                room = r;
+                best = p;
+            }
+        }
+        return best;
     }
 
     // The point of the segment ab nearest p.
