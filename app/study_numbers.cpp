@@ -40,7 +40,12 @@ std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& st
     // in contact whose depth shows as 0.00 touch without overlapping, as the verdict says: not "overlap: yes".
     const std::string amount = ShownVerdictAmount(study);
     const bool touch = m.overlap && amount == FormatNumber(0.0);
-    rows.push_back({"overlap", {!m.overlap ? "no" : touch ? "no, they touch (in contact)" : "yes"}});
+    // A depth or a gap of round-off size: they touch, as the verdict's sentence says, by that much in the numbers.
+    const bool roundOff = RoundOffVerdict(study);
+    rows.push_back({"overlap", {roundOff ? (m.overlap ? "yes, by round-off: they touch" : "no, by round-off: they touch")
+                                : !m.overlap ? "no"
+                                : touch      ? "no, they touch (in contact)"
+                                             : "yes"}});
     const Vec2 normal = textbook ? study.textbookResult.normal : m.normal;
     const double depth = textbook ? study.textbookResult.depth : m.depth;
     const double gap = textbook ? study.textbookResult.gap : m.gap;

@@ -144,6 +144,41 @@ std::string ShownVerdictAmount(const PairStudy& study)
     return VerdictAmount(study);
 }
 
+bool RoundOffVerdict(const PairStudy& study)
+{
+    if (study.sweep)
+    {
+        return false;
+    }
+    double amount = study.manifold.overlap ? study.manifold.depth : study.manifold.gap;
+    double scale = 1.0;
+    if (study.Textbook() && study.textbookResult.axis >= 0 &&
+        static_cast<size_t>(study.textbookResult.axis) < study.textbook.axes.size())
+    {
+        const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(study.textbookResult.axis)];
+        amount = study.textbookResult.overlap ? study.textbookResult.depth : study.textbookResult.gap;
+        scale = std::max({scale, std::fabs(t.minA), std::fabs(t.maxA), std::fabs(t.minB), std::fabs(t.maxB)});
+    }
+    return amount != 0.0 && std::fabs(amount) <= 1e-12 * scale;
+}
+
+// After a verdict whose amount is round-off (RoundOffVerdict): the shapes touch, in words, and the amount is the
+// stored numbers'.
+static std::string RoundOffNote(const PairStudy& study)
+{
+    if (!RoundOffVerdict(study))
+    {
+        return "";
+    }
+    const bool overlap = study.Textbook() ? study.textbookResult.overlap : study.manifold.overlap;
+    const std::string amount = ShownVerdictAmount(study);
+    return overlap ? " An overlap of " + amount + " is round-off in size: the shapes touch (touching counts as "
+                                                  "overlapping with depth 0), and the stored numbers overlap by that "
+                                                  "much."
+                   : " A gap of " + amount + " is round-off in size: the shapes touch (touching counts as overlapping "
+                                             "with depth 0), though the stored numbers keep them that far apart.";
+}
+
 namespace
 {
 
@@ -1100,7 +1135,7 @@ std::string DescribeStep(const Scene& scene, const PairStudy& study, int step, b
         if (step == study.VerdictStep())
         {
             return (study.sweep ? TextbookSweepVerdict(scene, study) : TextbookVerdict(scene, study, countContacts)) +
-                   PrecisionNote(scene, study) + PitfallNote(study);
+                   RoundOffNote(study) + PrecisionNote(scene, study) + PitfallNote(study);
         }
         return study.sweep ? TextbookSweepAxisStep(scene, study, step) : TextbookAxisStep(scene, study, step);
     }
@@ -1108,7 +1143,7 @@ std::string DescribeStep(const Scene& scene, const PairStudy& study, int step, b
     {
         return (study.sweep ? FaceSweepVerdict(scene, study, countContacts) + DecidedNote(study)
                              : FaceTestVerdict(scene, study, countContacts)) +
-               PrecisionNote(scene, study) + PitfallNote(study);
+               RoundOffNote(study) + PrecisionNote(scene, study) + PitfallNote(study);
     }
     return study.sweep ? FaceSweepStep(scene, study, step) : FaceTestStep(scene, study, step);
 }
@@ -1137,6 +1172,11 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
                 return "verdict";
             }
             const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(r.axis)];
+            if (RoundOffVerdict(study))
+            {
+                return std::string("verdict: touching, round-off ") + (r.overlap ? "overlap " : "gap ") +
+                       ShownVerdictAmount(study);
+            }
             if (!r.overlap)
             {
                 return "verdict: apart, gap " + ShownGap(t);
@@ -1144,6 +1184,11 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
             // Shapes whose smallest overlap shows as 0.00 touch: the verdict's sentence says so, and so does this.
             const std::string depth = ShownOverlap(t);
             return depth == "0.00" ? "verdict: touching, MTV zero" : "verdict: collide, MTV " + depth;
+        }
+        if (RoundOffVerdict(study))
+        {
+            return std::string("verdict: touching, round-off ") + (study.manifold.overlap ? "overlap " : "gap ") +
+                   ShownVerdictAmount(study);
         }
         if (!study.manifold.overlap)
         {

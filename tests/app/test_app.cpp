@@ -2468,6 +2468,50 @@ TEST_CASE("The Numbers panel prints every number as the step's sentences do, the
     CHECK(scenes > 50);
 }
 
+TEST_CASE("An overlap or a gap of round-off size is worded as touching in the verdict, its row and the Numbers panel",
+          "[app]")
+{
+    // l11_decimal_touch's B, 0.2 wide at x = 0.3, has its left face at 0.3 - 0.1, just below the 0.2 of A's right
+    // face: the stored numbers overlap by that difference; B moved right by it and once more, they part by it.
+    const std::string file = std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/l11_decimal_touch.json";
+    SceneResult loaded = LoadScene(file);
+    REQUIRE(loaded.Ok());
+    const double overlap = 0.2 - (0.3 - 0.1);
+    REQUIRE(overlap > 0.0);
+    REQUIRE(overlap < 1e-16);
+    for (const bool apart : {false, true})
+    {
+        Scene scene = loaded.scene;
+        if (apart)
+        {
+            scene.bodies[1].position.x += 2.0 * overlap + 1e-16;
+        }
+        for (const StepView view : {StepView::Textbook, StepView::Faces})
+        {
+            const PairStudy study = StudyPair(scene, 0, 1, ViewQuery::Collide, false, view);
+            INFO((apart ? "apart" : "overlapping") << ", " << (view == StepView::Faces ? "face tests" : "textbook"));
+            REQUIRE(RoundOffVerdict(study));
+            const std::string verdict = DescribeStep(scene, study, study.VerdictStep());
+            INFO(verdict);
+            CHECK(verdict.find("is round-off in size: the shapes touch") != std::string::npos);
+            const std::string title = StepTitle(scene, study, study.VerdictStep());
+            CHECK(title.rfind("verdict: touching, round-off ", 0) == 0);
+            const std::vector<NumberRow> rows = StaticTestNumbers(scene, study);
+            REQUIRE(!rows.empty());
+            CHECK(rows[0].parts[0] == (apart ? "no, by round-off: they touch" : "yes, by round-off: they touch"));
+        }
+    }
+    // A true overlap and a true gap are not round-off.
+    for (const char* stem : {"overlapping_boxes", "l03_corner_gap", "l14_slide"})
+    {
+        SceneResult other = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + stem + ".json");
+        REQUIRE(other.Ok());
+        const PairStudy study = StudyPair(other.scene, 0, 1, ViewQuery::Collide, false, StepView::Textbook);
+        CHECK_FALSE(RoundOffVerdict(study));
+        CHECK(DescribeStep(other.scene, study, study.VerdictStep()).find("round-off") == std::string::npos);
+    }
+}
+
 TEST_CASE("The Numbers panel says touching shapes touch, as the verdict does, and overlap only when they do",
           "[app]")
 {

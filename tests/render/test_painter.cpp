@@ -276,6 +276,7 @@ TEST_CASE("The verdict's short title says what its sentence says, in every lesso
     // The kind is worked out here from the test's own result, apart from either text.
     int checked = 0;
     int touching = 0;
+    int roundOff = 0;
     int worldMisses = 0;
     for (const std::string& file : testing::TutorialSceneFiles())
     {
@@ -336,7 +337,19 @@ TEST_CASE("The verdict's short title says what its sentence says, in every lesso
             }
             const bool overlap = study.Textbook() ? study.textbookResult.overlap : study.manifold.overlap;
             const double depth = study.Textbook() ? study.textbookResult.depth : study.manifold.depth;
-            if (!overlap)
+            const double gap = study.Textbook() ? study.textbookResult.gap : study.manifold.gap;
+            if ((overlap && depth != 0.0 && depth < 1e-12) || (!overlap && gap < 1e-12))
+            {
+                // Round-off (lesson 11's 2.78e-17): the sentence gives the stored numbers' verdict, and then that
+                // the shapes touch; the title says touching, with the amount the sentence prints.
+                REQUIRE(RoundOffVerdict(study));
+                CHECK(says(sentence, overlap ? "so the shapes collide" : "do not collide"));
+                const std::string head = std::string("verdict: touching, round-off ") + (overlap ? "overlap " : "gap ");
+                CHECK(says(title, head));
+                CHECK(says(sentence, "of " + title.substr(head.size()) + " is round-off in size: the shapes touch"));
+                ++roundOff;
+            }
+            else if (!overlap)
             {
                 CHECK(says(sentence, "do not collide"));
                 CHECK(says(title, "verdict: apart, gap "));
@@ -362,6 +375,7 @@ TEST_CASE("The verdict's short title says what its sentence says, in every lesso
     }
     CHECK(checked > 100);
     CHECK(touching > 0);
+    CHECK(roundOff > 0);
     CHECK(worldMisses > 0); // l14_head_on_after's balls move apart
 }
 

@@ -59,6 +59,12 @@ std::string ShownGap(const TextbookAxis& axis);
 /// print it: the difference of the deciding axis's shown interval ends, so that a panel listing it agrees with them.
 std::string ShownVerdictAmount(const PairStudy& study);
 
+/// True when a static test's verdict amount (the depth of shapes that overlap, the gap of shapes apart) is not 0
+/// but of the size of round-off (within 1e-12 of the coordinates on the deciding axis): shapes that touch on paper
+/// and that the stored numbers leave 1e-17 apart or overlapping. The words call them touching, as the verdict
+/// calls touching shapes (overlapping with depth 0), and give the amount as the numbers have it.
+bool RoundOffVerdict(const PairStudy& study);
+
 /// The shortest decimal that reads back as the same double (0.4825, not 0.48249999999999998): for the panels that
 /// show a number in full.
 std::string ShortestDecimal(double value);
