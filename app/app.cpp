@@ -99,7 +99,8 @@ void App::Frame()
     if (m_statusLeft >= 0.0)
     {
         m_statusLeft -= ImGui::GetIO().DeltaTime;
-        if (m_statusLeft < 0.0 || m_document.Revision() != m_statusRevision)
+        if (m_statusLeft < 0.0 || m_document.Revision() != m_statusRevision || m_viewer.Step() != m_statusStep ||
+            m_sim.Shown() != m_statusSimStep)
         {
             SetStatus("", false);
         }
@@ -954,6 +955,8 @@ void App::SetPassingStatus(const std::string& message)
     SetStatus(message, false);
     m_statusLeft = kPassingStatusSeconds;
     m_statusRevision = m_document.Revision();
+    m_statusStep = m_viewer.Step();
+    m_statusSimStep = m_sim.Shown();
 }
 
 void App::ClearError()

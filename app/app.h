@@ -261,7 +261,7 @@ class App
 
     /// Shows a one-line message in the status bar (an export result, an error).
     void SetStatus(const std::string& message, bool error);
-    /// Shows a message that passes: it goes at the next edit or after kPassingStatusSeconds, whichever comes first
+    /// Shows a message that passes: it goes at the next edit or step or after kPassingStatusSeconds, whichever comes first
     /// (news from the start, such as the copies a crash left, which the work that follows makes old).
     void SetPassingStatus(const std::string& message);
     /// How long a passing status message stays while nothing is edited.
@@ -312,6 +312,8 @@ class App
     bool m_statusIsError = false;
     double m_statusLeft = -1.0;  // seconds a passing message has left (negative: the message stays)
     size_t m_statusRevision = 0; // the document's revision when a passing message was set
+    int m_statusStep = 0;        // the test's step shown then
+    int m_statusSimStep = 0;     // the simulation's step shown then
     std::vector<Lesson> m_lessons;
     int m_lesson = -1;
     std::vector<LessonBlock> m_lessonBlocks;

@@ -1056,6 +1056,12 @@ TEST_CASE("Unsaved changes are kept in a copy on disk until they are saved, undo
         const ImVec2 from = h.OnScreen(Centroid(h.BodyNamed("B")));
         h.Drag(from, ImVec2(from.x + 30.0f, from.y));
         CHECK(h.app->Status().find("ended before") == std::string::npos);
+        // Or at the next step through the test.
+        REQUIRE(h.app->ReportLeftCopies());
+        h.Frames(2);
+        CHECK(h.app->Status() == news);
+        h.Key(kLeft);
+        CHECK(h.app->Status().find("ended before") == std::string::npos);
     }
     {
         Harness h(copy.string(), options);
