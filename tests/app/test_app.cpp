@@ -2518,6 +2518,19 @@ TEST_CASE("An overlap or a gap of round-off size is worded as touching in the ve
     }
 }
 
+TEST_CASE("A scene's description gives its overlap as the verdict beside it prints it", "[app]")
+{
+    // l15_slope's box is placed into its slope: the side panel showed "overlaps the slope by 0.001 m" above a
+    // verdict "MTV 0.000946".
+    SceneResult loaded = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/l15_slope.json");
+    REQUIRE(loaded.Ok());
+    const PairStudy study = StudyPair(loaded.scene, 0, 1, ViewQuery::Collide, false, StepView::Textbook);
+    REQUIRE(study.textbookResult.overlap);
+    const std::string depth = ShownVerdictAmount(study);
+    INFO(loaded.scene.description);
+    CHECK(loaded.scene.description.find("overlaps the slope by " + depth + " m") != std::string::npos);
+}
+
 TEST_CASE("The Numbers panel says touching shapes touch, as the verdict does, and overlap only when they do",
           "[app]")
 {
