@@ -56,6 +56,37 @@ std::map<std::string, std::vector<std::string>> FigureScenes()
     return lists;
 }
 
+// Paints every figure of the course as the figures target draws it (tutorials/figures.cmake: each figure at its own
+// step, every step of the stepped figures, every step of the face-view figures) on a recording canvas, and hands each
+// to `check(stem, faces, setup, step, canvas)`; `faces` is true for the face view. The canvas is the check's to
+// measure text on.
+template <typename Check>
+void ForEachCourseFigure(Check&& check)
+{
+    const auto lists = FigureScenes();
+    for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES", "SATVIZ_FACE_STEP_SCENES"})
+    {
+        const bool allSteps = std::string(list) != "SATVIZ_FIGURE_SCENES";
+        const bool faces = std::string(list) == "SATVIZ_FACE_STEP_SCENES";
+        for (const std::string& stem : lists.at(list))
+        {
+            const Scene scene = painter_test::LessonScene(stem);
+            FigureOptions options;
+            options.setSteps = faces;
+            options.steps = StepView::Faces;
+            FigureSetup setup = SetUpFigure(scene, options);
+            REQUIRE(setup.Ok());
+            const int first = allSteps ? 0 : setup.figure.step;
+            const int last = allSteps ? FigureStepCount(scene, setup) - 1 : setup.figure.step;
+            for (int k = first; k <= last; ++k)
+            {
+                RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
+                check(stem, faces, setup, k, canvas);
+            }
+        }
+    }
+}
+
 float Alpha(Color color)
 {
     return static_cast<float>(color & 0xFFu) / 255.0f;
@@ -260,38 +291,19 @@ TEST_CASE("The hidden-mark check finds a dot or a head under a later line, and n
 
 TEST_CASE("No figure of the course draws a mark under a later line, fill or head that hides it", "[marks]")
 {
-    const auto lists = FigureScenes();
     int figures = 0;
     int failing = 0;
-    for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES", "SATVIZ_FACE_STEP_SCENES"})
-    {
-        const bool allSteps = std::string(list) != "SATVIZ_FIGURE_SCENES";
-        const bool faces = std::string(list) == "SATVIZ_FACE_STEP_SCENES";
-        for (const std::string& stem : lists.at(list))
+    ForEachCourseFigure([&](const std::string& stem, bool faces, const FigureSetup&, int k, RecordingCanvas& canvas) {
+        const std::vector<std::string> hidden = HiddenMarks(canvas);
+        INFO((faces ? "faces/" : "") << stem << " step " << k + 1);
+        for (const std::string& problem : hidden)
         {
-            const Scene scene = painter_test::LessonScene(stem);
-            FigureOptions options;
-            options.setSteps = faces;
-            options.steps = StepView::Faces;
-            FigureSetup setup = SetUpFigure(scene, options);
-            REQUIRE(setup.Ok());
-            const int first = allSteps ? 0 : setup.figure.step;
-            const int last = allSteps ? FigureStepCount(scene, setup) - 1 : setup.figure.step;
-            for (int k = first; k <= last; ++k)
-            {
-                RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
-                const std::vector<std::string> hidden = HiddenMarks(canvas);
-                INFO((faces ? "faces/" : "") << stem << " step " << k + 1);
-                for (const std::string& problem : hidden)
-                {
-                    UNSCOPED_INFO(problem);
-                }
-                CHECK(hidden.empty());
-                failing += hidden.empty() ? 0 : 1;
-                ++figures;
-            }
+            UNSCOPED_INFO(problem);
         }
-    }
+        CHECK(hidden.empty());
+        failing += hidden.empty() ? 0 : 1;
+        ++figures;
+    });
     INFO(failing << " of " << figures << " figures");
     CHECK(figures > 100);
     CHECK(failing == 0);
@@ -314,7 +326,8 @@ TEST_CASE("A figure that draws motion draws each moving body's velocity, in a st
     bool arrow = false;
     for (const DrawCommand* c : canvas.InGroup("swept"))
     {
-        if (c->kind == DrawCommand::Kind::Segment && std::hypot(c->points[0].x - centre.x, c->points[0].y - centre.y) < 1.0f)
+        if (c->kind == DrawCommand::Kind::Segment &&
+            std::hypot(c->points[0].x - centre.x, c->points[0].y - centre.y) < 1.0f)
         {
             arrow = std::fabs(c->points[1].x - centre.x) < 1.0f && c->points[1].y > centre.y + 40.0f;
         }
@@ -382,45 +395,25 @@ TEST_CASE("A vermillion dot in a figure of the course is a contact point, as the
     // slice's cut is drawn vermillion, its ends and its crossings of the outline as dots on that line, named by
     // their coordinates: they are the cut's. In the Minkowski inset the dot is where the origin's path first
     // touches the difference, the first contact seen there.
-    const auto lists = FigureScenes();
     int contacts = 0;
-    for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES", "SATVIZ_FACE_STEP_SCENES"})
-    {
-        const bool allSteps = std::string(list) != "SATVIZ_FIGURE_SCENES";
-        const bool faces = std::string(list) == "SATVIZ_FACE_STEP_SCENES";
-        for (const std::string& stem : lists.at(list))
-        {
-            const Scene scene = painter_test::LessonScene(stem);
-            FigureOptions options;
-            options.setSteps = faces;
-            options.steps = StepView::Faces;
-            FigureSetup setup = SetUpFigure(scene, options);
-            REQUIRE(setup.Ok());
-            const int first = allSteps ? 0 : setup.figure.step;
-            const int last = allSteps ? FigureStepCount(scene, setup) - 1 : setup.figure.step;
-            for (int k = first; k <= last; ++k)
+    ForEachCourseFigure(
+        [&](const std::string& stem, bool faces, const FigureSetup& setup, int k, const RecordingCanvas& canvas) {
+            for (const DrawCommand& c : canvas.commands)
             {
-                RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
-                for (const DrawCommand& c : canvas.commands)
+                if (c.kind != DrawCommand::Kind::FillCircle || (c.color | 0xFFu) != palette::kResult ||
+                    (c.color & 0xFFu) < 0xC0u || c.group == "legend")
                 {
-                    if (c.kind != DrawCommand::Kind::FillCircle || (c.color | 0xFFu) != palette::kResult ||
-                        (c.color & 0xFFu) < 0xC0u || c.group == "legend")
-                    {
-                        continue;
-                    }
-                    INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": a vermillion dot in \""
-                                                 << c.group << "\" at (" << c.points[0].x << ", " << c.points[0].y
-                                                 << ")");
-                    const bool contact = c.group == "contacts" || c.group == "push" || c.group == "hit" ||
-                                         c.group == "hits" || c.group == "response" ||
-                                         c.group == "minkowski";
-                    const bool cut = setup.figure.kind == FigureKind::Slice && c.group == "before";
-                    CHECK((contact || cut));
-                    contacts += contact ? 1 : 0;
+                    continue;
                 }
+                INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": a vermillion dot in \"" << c.group
+                                             << "\" at (" << c.points[0].x << ", " << c.points[0].y << ")");
+                const bool contact = c.group == "contacts" || c.group == "push" || c.group == "hit" ||
+                                     c.group == "hits" || c.group == "response" || c.group == "minkowski";
+                const bool cut = setup.figure.kind == FigureKind::Slice && c.group == "before";
+                CHECK((contact || cut));
+                contacts += contact ? 1 : 0;
             }
-        }
-    }
+        });
     CHECK(contacts > 20);
 }
 
@@ -429,8 +422,9 @@ TEST_CASE("Every fill colour a figure of the course draws is a body's colour or 
 {
     // slice_u filled its parts sky blue, orange and green, l18_decompose its fourth piece yellow, and no key said
     // what a fill in those colours means. The oracle is lesson 1's key as drawn: the colours of its swatches' fills
-    // (a band is paler on the number line than in the key), beside the pair's own colours (blue A, orange B, grey for the other bodies), which lesson 1
-    // explains in words. The Voronoi regions are named in their own figure's title and labels.
+    // (a band is paler on the number line than in the key), beside the pair's own colours (blue A, orange B, grey for
+    // the other bodies), which lesson 1 explains in words. The Voronoi regions are named in their own figure's title
+    // and labels.
     std::set<Color> keyed;
     {
         const Scene scene = painter_test::LessonScene("l01_legend");
@@ -452,57 +446,38 @@ TEST_CASE("Every fill colour a figure of the course draws is a body's colour or 
     const auto bodyColour = [](Color c) {
         const Color rgb = c | 0xFFu;
         return rgb == palette::kShapeA || rgb == palette::kShapeB || rgb == palette::kShapeBInk ||
-               rgb == palette::kOther || rgb == palette::kBackground || rgb == palette::kPanel ||
-               rgb == palette::kInk;
+               rgb == palette::kOther || rgb == palette::kBackground || rgb == palette::kPanel || rgb == palette::kInk;
     };
-    const auto lists = FigureScenes();
     std::set<std::string> unexplained;
     int fills = 0;
-    for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES", "SATVIZ_FACE_STEP_SCENES"})
-    {
-        const bool allSteps = std::string(list) != "SATVIZ_FIGURE_SCENES";
-        const bool faces = std::string(list) == "SATVIZ_FACE_STEP_SCENES";
-        for (const std::string& stem : lists.at(list))
-        {
-            const Scene scene = painter_test::LessonScene(stem);
-            FigureOptions options;
-            options.setSteps = faces;
-            options.steps = StepView::Faces;
-            FigureSetup setup = SetUpFigure(scene, options);
-            REQUIRE(setup.Ok());
-            const int first = allSteps ? 0 : setup.figure.step;
-            const int last = allSteps ? FigureStepCount(scene, setup) - 1 : setup.figure.step;
-            for (int k = first; k <= last; ++k)
+    ForEachCourseFigure(
+        [&](const std::string& stem, bool faces, const FigureSetup&, int, const RecordingCanvas& canvas) {
+            for (const DrawCommand& c : canvas.commands)
             {
-                RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
-                for (const DrawCommand& c : canvas.commands)
+                const bool fill = c.kind == DrawCommand::Kind::FillRect || c.kind == DrawCommand::Kind::FillConvex ||
+                                  c.kind == DrawCommand::Kind::FillCircle;
+                // An arrow's head is filled in its line's colour: the line is the mark.
+                bool head = c.kind == DrawCommand::Kind::FillConvex && c.points.size() == 3;
+                for (size_t i = 0; head && i < 3; ++i)
                 {
-                    const bool fill = c.kind == DrawCommand::Kind::FillRect || c.kind == DrawCommand::Kind::FillConvex ||
-                                      c.kind == DrawCommand::Kind::FillCircle;
-                    // An arrow's head is filled in its line's colour: the line is the mark.
-                    bool head = c.kind == DrawCommand::Kind::FillConvex && c.points.size() == 3;
-                    for (size_t i = 0; head && i < 3; ++i)
-                    {
-                        const ScreenPoint& p = c.points[i];
-                        const ScreenPoint& q = c.points[(i + 1) % 3];
-                        head = std::hypot(q.x - p.x, q.y - p.y) <= 24.0f;
-                    }
-                    if (!fill || head || c.group == "legend" || c.group == "voronoi" || bodyColour(c.color))
-                    {
-                        continue;
-                    }
-                    ++fills;
-                    if (keyed.count(c.color >> 8) == 0)
-                    {
-                        std::ostringstream what;
-                        what << (faces ? "faces/" : "") << stem << ": a fill " << std::hex << c.color << " in \""
-                             << c.group << "\"";
-                        unexplained.insert(what.str());
-                    }
+                    const ScreenPoint& p = c.points[i];
+                    const ScreenPoint& q = c.points[(i + 1) % 3];
+                    head = std::hypot(q.x - p.x, q.y - p.y) <= 24.0f;
+                }
+                if (!fill || head || c.group == "legend" || c.group == "voronoi" || bodyColour(c.color))
+                {
+                    continue;
+                }
+                ++fills;
+                if (keyed.count(c.color >> 8) == 0)
+                {
+                    std::ostringstream what;
+                    what << (faces ? "faces/" : "") << stem << ": a fill " << std::hex << c.color << " in \"" << c.group
+                         << "\"";
+                    unexplained.insert(what.str());
                 }
             }
-        }
-    }
+        });
     for (const std::string& u : unexplained)
     {
         UNSCOPED_INFO(u);
@@ -516,86 +491,66 @@ TEST_CASE("No end value of a number line runs into its band, and no tick value o
 {
     // bullet_wall: the wall's 0.010 sat on the top of the gap band, and the time bar's 0.5 sat squeezed between the
     // latest entry's triangle (0.482) and the earliest exit's (0.517).
-    const auto lists = FigureScenes();
     RecordingCanvas measure;
     int bands = 0;
-    for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES", "SATVIZ_FACE_STEP_SCENES"})
-    {
-        const bool allSteps = std::string(list) != "SATVIZ_FIGURE_SCENES";
-        const bool faces = std::string(list) == "SATVIZ_FACE_STEP_SCENES";
-        for (const std::string& stem : lists.at(list))
+    ForEachCourseFigure([&](const std::string& stem, bool faces, const FigureSetup&, int k,
+                            const RecordingCanvas& canvas) {
+        const auto box = [&](const DrawCommand& t) {
+            const ScreenPoint size = measure.MeasureText(t.text, t.style);
+            return std::array<float, 4>{t.points[0].x, t.points[0].y, t.points[0].x + size.x, t.points[0].y + size.y};
+        };
+        const auto meet = [](const std::array<float, 4>& a, const std::array<float, 4>& b, float grow) {
+            return a[0] - grow < b[2] && b[0] < a[2] + grow && a[1] - grow < b[3] && b[1] < a[3] + grow;
+        };
+        std::vector<std::array<float, 4>> bandRects, triangles;
+        for (const DrawCommand* c : canvas.InGroup("panel"))
         {
-            const Scene scene = painter_test::LessonScene(stem);
-            FigureOptions options;
-            options.setSteps = faces;
-            options.steps = StepView::Faces;
-            FigureSetup setup = SetUpFigure(scene, options);
-            REQUIRE(setup.Ok());
-            const int first = allSteps ? 0 : setup.figure.step;
-            const int last = allSteps ? FigureStepCount(scene, setup) - 1 : setup.figure.step;
-            for (int k = first; k <= last; ++k)
+            if (c->kind == DrawCommand::Kind::FillRect && c->color != palette::kPanel)
             {
-                RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
-                const auto box = [&](const DrawCommand& t) {
-                    const ScreenPoint size = measure.MeasureText(t.text, t.style);
-                    return std::array<float, 4>{t.points[0].x, t.points[0].y, t.points[0].x + size.x,
-                                                t.points[0].y + size.y};
-                };
-                const auto meet = [](const std::array<float, 4>& a, const std::array<float, 4>& b, float grow) {
-                    return a[0] - grow < b[2] && b[0] < a[2] + grow && a[1] - grow < b[3] && b[1] < a[3] + grow;
-                };
-                std::vector<std::array<float, 4>> bandRects, triangles;
-                for (const DrawCommand* c : canvas.InGroup("panel"))
-                {
-                    if (c->kind == DrawCommand::Kind::FillRect && c->color != palette::kPanel)
-                    {
-                        bandRects.push_back({c->points[0].x, c->points[0].y, c->points[1].x, c->points[1].y});
-                    }
-                }
-                for (const DrawCommand* c : canvas.InGroup("timebar"))
-                {
-                    if (c->kind == DrawCommand::Kind::FillConvex && c->points.size() == 3)
-                    {
-                        float x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-                        for (const ScreenPoint& p : c->points)
-                        {
-                            x0 = std::min(x0, p.x);
-                            y0 = std::min(y0, p.y);
-                            x1 = std::max(x1, p.x);
-                            y1 = std::max(y1, p.y);
-                        }
-                        triangles.push_back({x0, y0, x1, y1});
-                    }
-                }
-                bands += static_cast<int>(bandRects.size());
-                for (const DrawCommand* c : canvas.InGroup("panel"))
-                {
-                    // An end value is a number alone; the band's own size ("0.96 behind") is written inside it.
-                    const bool number = c->kind == DrawCommand::Kind::Text && !c->text.empty() &&
-                                        std::all_of(c->text.begin(), c->text.end(), [](char ch) {
-                                            return std::isdigit(static_cast<unsigned char>(ch)) != 0 || ch == '.' ||
-                                                   ch == '-';
-                                        });
-                    for (const auto& band : bandRects)
-                    {
-                        INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": \"" << c->text << "\"");
-                        CHECK(!(number && meet(box(*c), band, 0.0f)));
-                    }
-                }
-                for (const DrawCommand* c : canvas.InGroup("timebar"))
-                {
-                    if (c->kind != DrawCommand::Kind::Text || c->text != "0.5")
-                    {
-                        continue;
-                    }
-                    for (const auto& tri : triangles)
-                    {
-                        INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": the time bar's 0.5");
-                        CHECK(!meet(box(*c), tri, 3.0f));
-                    }
-                }
+                bandRects.push_back({c->points[0].x, c->points[0].y, c->points[1].x, c->points[1].y});
             }
         }
-    }
+        for (const DrawCommand* c : canvas.InGroup("timebar"))
+        {
+            if (c->kind == DrawCommand::Kind::FillConvex && c->points.size() == 3)
+            {
+                float x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+                for (const ScreenPoint& p : c->points)
+                {
+                    x0 = std::min(x0, p.x);
+                    y0 = std::min(y0, p.y);
+                    x1 = std::max(x1, p.x);
+                    y1 = std::max(y1, p.y);
+                }
+                triangles.push_back({x0, y0, x1, y1});
+            }
+        }
+        bands += static_cast<int>(bandRects.size());
+        for (const DrawCommand* c : canvas.InGroup("panel"))
+        {
+            // An end value is a number alone; the band's own size ("0.96 behind") is written inside it.
+            const bool number = c->kind == DrawCommand::Kind::Text && !c->text.empty() &&
+                                std::all_of(c->text.begin(), c->text.end(), [](char ch) {
+                                    return std::isdigit(static_cast<unsigned char>(ch)) != 0 || ch == '.' || ch == '-';
+                                });
+            for (const auto& band : bandRects)
+            {
+                INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": \"" << c->text << "\"");
+                CHECK(!(number && meet(box(*c), band, 0.0f)));
+            }
+        }
+        for (const DrawCommand* c : canvas.InGroup("timebar"))
+        {
+            if (c->kind != DrawCommand::Kind::Text || c->text != "0.5")
+            {
+                continue;
+            }
+            for (const auto& tri : triangles)
+            {
+                INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": the time bar's 0.5");
+                CHECK(!meet(box(*c), tri, 3.0f));
+            }
+        }
+    });
     CHECK(bands > 50);
 }
