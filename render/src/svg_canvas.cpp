@@ -80,46 +80,61 @@ void SvgCanvas::Point(ScreenPoint p)
     Number(p.y);
 }
 
-void SvgCanvas::Stroke(Color color, float thickness)
+void SvgCanvas::Attribute(const char* name, float value)
 {
-    m_body += " stroke=\"";
-    m_body += Hex(color);
-    m_body += '"';
-    if ((color & 0xFF) != 0xFF)
-    {
-        m_body += " stroke-opacity=\"";
-        Number(Opacity(color));
-        m_body += '"';
-    }
-    m_body += " stroke-width=\"";
-    Number(thickness);
+    m_body += ' ';
+    m_body += name;
+    m_body += "=\"";
+    Number(value);
     m_body += '"';
 }
 
-void SvgCanvas::Fill(Color color)
+void SvgCanvas::Points(const ScreenPoint* points, int count)
 {
-    m_body += " fill=\"";
+    m_body += " points=\"";
+    for (int i = 0; i < count; ++i)
+    {
+        if (i > 0)
+        {
+            m_body += ' ';
+        }
+        Point(points[i]);
+    }
+    m_body += '"';
+}
+
+// `name` is "stroke" or "fill": the colour, and its alpha as a separate opacity where it is not opaque (SVG 1.1
+// colours have no alpha).
+void SvgCanvas::Paint(const char* name, Color color)
+{
+    m_body += ' ';
+    m_body += name;
+    m_body += "=\"";
     m_body += Hex(color);
     m_body += '"';
     if ((color & 0xFF) != 0xFF)
     {
-        m_body += " fill-opacity=\"";
+        m_body += ' ';
+        m_body += name;
+        m_body += "-opacity=\"";
         Number(Opacity(color));
         m_body += '"';
     }
+}
+
+void SvgCanvas::Stroke(Color color, float thickness)
+{
+    Paint("stroke", color);
+    Attribute("stroke-width", thickness);
 }
 
 void SvgCanvas::Segment(ScreenPoint a, ScreenPoint b, Color color, float thickness)
 {
-    m_body += "<line x1=\"";
-    Number(a.x);
-    m_body += "\" y1=\"";
-    Number(a.y);
-    m_body += "\" x2=\"";
-    Number(b.x);
-    m_body += "\" y2=\"";
-    Number(b.y);
-    m_body += '"';
+    m_body += "<line";
+    Attribute("x1", a.x);
+    Attribute("y1", a.y);
+    Attribute("x2", b.x);
+    Attribute("y2", b.y);
     Stroke(color, thickness);
     m_body += "/>\n";
 }
@@ -130,16 +145,9 @@ void SvgCanvas::Polyline(const ScreenPoint* points, int count, bool closed, Colo
     {
         return;
     }
-    m_body += closed ? "<polygon points=\"" : "<polyline points=\"";
-    for (int i = 0; i < count; ++i)
-    {
-        if (i > 0)
-        {
-            m_body += ' ';
-        }
-        Point(points[i]);
-    }
-    m_body += "\" fill=\"none\"";
+    m_body += closed ? "<polygon" : "<polyline";
+    Points(points, count);
+    m_body += " fill=\"none\"";
     Stroke(color, thickness);
     m_body += " stroke-linejoin=\"round\"/>\n";
 }
@@ -150,75 +158,55 @@ void SvgCanvas::FillConvex(const ScreenPoint* points, int count, Color color)
     {
         return;
     }
-    m_body += "<polygon points=\"";
-    for (int i = 0; i < count; ++i)
-    {
-        if (i > 0)
-        {
-            m_body += ' ';
-        }
-        Point(points[i]);
-    }
-    m_body += '"';
-    Fill(color);
+    m_body += "<polygon";
+    Points(points, count);
+    Paint("fill", color);
     m_body += "/>\n";
 }
 
 void SvgCanvas::Circle(ScreenPoint center, float radius, Color color, float thickness)
 {
-    m_body += "<circle cx=\"";
-    Number(center.x);
-    m_body += "\" cy=\"";
-    Number(center.y);
-    m_body += "\" r=\"";
-    Number(radius);
-    m_body += "\" fill=\"none\"";
+    m_body += "<circle";
+    Attribute("cx", center.x);
+    Attribute("cy", center.y);
+    Attribute("r", radius);
+    m_body += " fill=\"none\"";
     Stroke(color, thickness);
     m_body += "/>\n";
 }
 
 void SvgCanvas::FillCircle(ScreenPoint center, float radius, Color color)
 {
-    m_body += "<circle cx=\"";
-    Number(center.x);
-    m_body += "\" cy=\"";
-    Number(center.y);
-    m_body += "\" r=\"";
-    Number(radius);
-    m_body += '"';
-    Fill(color);
+    m_body += "<circle";
+    Attribute("cx", center.x);
+    Attribute("cy", center.y);
+    Attribute("r", radius);
+    Paint("fill", color);
     m_body += "/>\n";
 }
 
 void SvgCanvas::FillRect(ScreenPoint min, ScreenPoint max, Color color)
 {
-    m_body += "<rect x=\"";
-    Number(min.x);
-    m_body += "\" y=\"";
-    Number(min.y);
-    m_body += "\" width=\"";
-    Number(max.x - min.x);
-    m_body += "\" height=\"";
-    Number(max.y - min.y);
-    m_body += '"';
-    Fill(color);
+    m_body += "<rect";
+    Attribute("x", min.x);
+    Attribute("y", min.y);
+    Attribute("width", max.x - min.x);
+    Attribute("height", max.y - min.y);
+    Paint("fill", color);
     m_body += "/>\n";
 }
 
 void SvgCanvas::Text(ScreenPoint topLeft, std::string_view text, TextStyle style, Color color)
 {
-    m_body += "<text x=\"";
-    Number(topLeft.x);
-    m_body += "\" y=\"";
-    Number(topLeft.y + SvgBaseline(style));
-    m_body += "\" font-size=\"";
-    Number(SvgFontSize(style));
-    m_body += '"';
+    m_body += "<text";
+    Attribute("x", topLeft.x);
+    Attribute("y", topLeft.y + SvgBaseline(style));
+    Attribute("font-size", SvgFontSize(style));
     if (style == TextStyle::Heading)
     {
         m_body += " font-weight=\"bold\"";
     }
-    Fill(color);
+    Paint("fill", color);
     m_body += '>';
     for (const char c : text)
     {

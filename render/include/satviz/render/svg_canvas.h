@@ -41,8 +41,10 @@ class SvgCanvas : public Canvas
   private:
     void Number(float value);
     void Point(ScreenPoint p);
+    void Attribute(const char* name, float value);
+    void Points(const ScreenPoint* points, int count);
+    void Paint(const char* name, Color color);
     void Stroke(Color color, float thickness);
-    void Fill(Color color);
 
     int m_width;
     int m_height;
