@@ -16,26 +16,94 @@ namespace satviz
 namespace
 {
 
-// A polygon's vertices in the world.
-std::vector<Vec2> World(const Body& body)
+// A polygon's vertices in the world, placed in precision S.
+template <typename S>
+std::vector<Vec2T<S>> World(const Body& body)
 {
-    std::vector<Vec2> out;
+    const TransformT<S> xf = MakeTransform(ConvertVec<S>(body.position), static_cast<S>(body.angle));
+    std::vector<Vec2T<S>> out;
     for (const Vec2& v : body.shape.polygon.Vertices())
     {
-        out.push_back(TransformPoint(body.Xf(), v));
+        out.push_back(TransformPoint(xf, ConvertVec<S>(v)));
     }
     return out;
 }
 
-void Project(const std::vector<Vec2>& points, Vec2 axis, double& lo, double& hi)
+template <typename S>
+void Project(const std::vector<Vec2T<S>>& points, Vec2T<S> axis, S& lo, S& hi)
 {
-    lo = std::numeric_limits<double>::infinity();
+    lo = std::numeric_limits<S>::infinity();
     hi = -lo;
-    for (const Vec2& p : points)
+    for (const Vec2T<S>& p : points)
     {
         lo = std::min(lo, Dot(axis, p));
         hi = std::max(hi, Dot(axis, p));
     }
+}
+
+// What a scan of face normals found: whether every face showed an overlap, and the smallest overlap with the face
+// that gave it and the unit normal that pushes B out along it.
+template <typename S>
+struct FaceScan
+{
+    bool overlap = true;
+    S smallest = std::numeric_limits<S>::infinity();
+    Vec2T<S> normal{};
+    int side = -1; ///< 0: a face of A, 1: of B
+    int edge = -1;
+    S length = 1; ///< the length of the normal the overlap was measured on
+};
+
+// The textbook test's loop, which most mistakes keep: the face normals of A (and of B when `sides` is 2) in turn,
+// both shapes projected on each, a gap ending the scan, else the smaller push of the two ways kept when it is the
+// smallest so far. `unitNormals` false measures on the edge's perpendicular, as long as the edge.
+template <typename S>
+FaceScan<S> ScanFaces(const Scene& scene, int a, int b, int sides, bool unitNormals)
+{
+    const std::vector<Vec2T<S>> pa = World<S>(scene.bodies[static_cast<size_t>(a)]);
+    const std::vector<Vec2T<S>> pb = World<S>(scene.bodies[static_cast<size_t>(b)]);
+    FaceScan<S> scan;
+    for (int side = 0; side < sides && scan.overlap; ++side)
+    {
+        const std::vector<Vec2T<S>>& own = side == 0 ? pa : pb;
+        for (size_t i = 0; i < own.size(); ++i)
+        {
+            const Vec2T<S> perp = RightPerp(own[(i + 1) % own.size()] - own[i]);
+            const Vec2T<S> unit = Normalize(perp);
+            const Vec2T<S> n = unitNormals ? unit : perp;
+            S minA{}, maxA{}, minB{}, maxB{};
+            Project(pa, n, minA, maxA);
+            Project(pb, n, minB, maxB);
+            if (minB > maxA || minA > maxB)
+            {
+                scan.overlap = false;
+                break;
+            }
+            const S along = maxA - minB;
+            const S against = maxB - minA;
+            if (std::min(along, against) < scan.smallest)
+            {
+                scan.smallest = std::min(along, against);
+                scan.side = side;
+                scan.edge = static_cast<int>(i);
+                scan.length = Length(n);
+                scan.normal = (along <= against ? S(1) : S(-1)) * unit;
+            }
+        }
+    }
+    return scan;
+}
+
+// A mistake's answer as its scan found it, in double.
+template <typename S>
+PitfallResult Answer(const FaceScan<S>& scan)
+{
+    PitfallResult out;
+    out.ran = true;
+    out.overlap = scan.overlap;
+    out.depth = scan.overlap ? static_cast<double>(scan.smallest) : 0.0;
+    out.normal = ConvertVec<double>(scan.normal);
+    return out;
 }
 
 std::string AxisName(const Scene& scene, int body, int edge)
@@ -46,49 +114,18 @@ std::string AxisName(const Scene& scene, int body, int edge)
 // The mistake: overlaps on edge normals that are not unit length, compared as if they were.
 PitfallResult Unnormalised(const Scene& scene, int a, int b, const TextbookResult& right)
 {
-    PitfallResult out;
-    out.ran = true;
-    const std::vector<Vec2> pa = World(scene.bodies[static_cast<size_t>(a)]);
-    const std::vector<Vec2> pb = World(scene.bodies[static_cast<size_t>(b)]);
-    double smallest = std::numeric_limits<double>::infinity();
-    int chosenBody = -1;
-    int chosenEdge = -1;
-    double length = 1.0;
-    out.overlap = true;
-    for (int side = 0; side < 2 && out.overlap; ++side)
-    {
-        const std::vector<Vec2>& own = side == 0 ? pa : pb;
-        for (size_t i = 0; i < own.size() && out.overlap; ++i)
-        {
-            const Vec2 n = RightPerp(own[(i + 1) % own.size()] - own[i]); // length: the edge's
-            double minA = 0.0, maxA = 0.0, minB = 0.0, maxB = 0.0;
-            Project(pa, n, minA, maxA);
-            Project(pb, n, minB, maxB);
-            if (minB > maxA || minA > maxB)
-            {
-                out.overlap = false;
-                break;
-            }
-            const double along = maxA - minB;
-            const double against = maxB - minA;
-            const double overlap = std::min(along, against);
-            if (overlap < smallest)
-            {
-                smallest = overlap;
-                chosenBody = side == 0 ? a : b;
-                chosenEdge = static_cast<int>(i);
-                length = Length(n);
-                out.normal = (along <= against ? 1.0 : -1.0) * Normalize(n);
-            }
-        }
-    }
+    const FaceScan<double> scan = ScanFaces<double>(scene, a, b, 2, false);
+    PitfallResult out = Answer(scan);
     if (!out.overlap)
     {
         out.verdict = "Pitfall (unnormalised axes): a gap has the same sign on any axis length, so this mistake "
                       "still finds the separating axis.";
         return out;
     }
-    out.depth = smallest;
+    const double smallest = scan.smallest;
+    const int chosenBody = scan.side == 0 ? a : b;
+    const int chosenEdge = scan.edge;
+    const double length = scan.length;
     out.verdict = "Pitfall (unnormalised axes): comparing overlaps on edge normals as long as their edges picks " +
                   AxisName(scene, chosenBody, chosenEdge) + " (normal " + FormatNumber(length) +
                   " long) and a 'depth' of " + FormatNumber(smallest) + " = " + FormatNumber(smallest / length) +
@@ -110,8 +147,8 @@ PitfallResult Unchecked(const Scene& scene, int a, int b, const TextbookResult& 
         out.verdict = "Pitfall (unchecked direction): the shapes are apart, so there is no push to get wrong.";
         return out;
     }
-    const std::vector<Vec2> pa = World(scene.bodies[static_cast<size_t>(a)]);
-    const std::vector<Vec2> pb = World(scene.bodies[static_cast<size_t>(b)]);
+    const std::vector<Vec2> pa = World<double>(scene.bodies[static_cast<size_t>(a)]);
+    const std::vector<Vec2> pb = World<double>(scene.bodies[static_cast<size_t>(b)]);
     double smallest = std::numeric_limits<double>::infinity();
     int chosenBody = -1;
     int chosenEdge = -1;
@@ -151,32 +188,9 @@ PitfallResult Unchecked(const Scene& scene, int a, int b, const TextbookResult& 
 // The mistake: only A's face normals tested.
 PitfallResult OneShape(const Scene& scene, int a, int b, const TextbookTrace& right)
 {
-    PitfallResult out;
-    out.ran = true;
-    const std::vector<Vec2> pa = World(scene.bodies[static_cast<size_t>(a)]);
-    const std::vector<Vec2> pb = World(scene.bodies[static_cast<size_t>(b)]);
-    out.overlap = true;
-    double smallest = std::numeric_limits<double>::infinity();
-    for (size_t i = 0; i < pa.size(); ++i)
-    {
-        const Vec2 n = Normalize(RightPerp(pa[(i + 1) % pa.size()] - pa[i]));
-        double minA = 0.0, maxA = 0.0, minB = 0.0, maxB = 0.0;
-        Project(pa, n, minA, maxA);
-        Project(pb, n, minB, maxB);
-        if (minB > maxA || minA > maxB)
-        {
-            out.overlap = false;
-            break;
-        }
-        const double along = maxA - minB;
-        const double against = maxB - minA;
-        if (std::min(along, against) < smallest)
-        {
-            smallest = std::min(along, against);
-            out.normal = (along <= against ? 1.0 : -1.0) * n;
-        }
-    }
-    out.depth = out.overlap ? smallest : 0.0;
+    const FaceScan<double> scan = ScanFaces<double>(scene, a, b, 1, true);
+    PitfallResult out = Answer(scan);
+    const double smallest = scan.smallest;
     const std::string nameA = scene.bodies[static_cast<size_t>(a)].name;
     if (out.overlap && !right.result.overlap)
     {
@@ -235,55 +249,7 @@ PitfallResult Sampled(const Scene& scene, int a, int b)
 // The mistake: the world coordinates in float, where far from the origin they keep only a few decimals.
 PitfallResult FloatWorld(const Scene& scene, int a, int b, const TextbookResult& right)
 {
-    PitfallResult out;
-    out.ran = true;
-    auto world = [&](const Body& body) {
-        const RotT<float> q = MakeRot(static_cast<float>(body.angle));
-        const Vec2T<float> p = ConvertVec<float>(body.position);
-        std::vector<Vec2T<float>> points;
-        for (const Vec2& v : body.shape.polygon.Vertices())
-        {
-            points.push_back(Rotate(q, ConvertVec<float>(v)) + p);
-        }
-        return points;
-    };
-    const std::vector<Vec2T<float>> pa = world(scene.bodies[static_cast<size_t>(a)]);
-    const std::vector<Vec2T<float>> pb = world(scene.bodies[static_cast<size_t>(b)]);
-    auto project = [](const std::vector<Vec2T<float>>& points, Vec2T<float> n, float& lo, float& hi) {
-        lo = std::numeric_limits<float>::infinity();
-        hi = -lo;
-        for (const Vec2T<float>& p : points)
-        {
-            lo = std::min(lo, Dot(n, p));
-            hi = std::max(hi, Dot(n, p));
-        }
-    };
-    out.overlap = true;
-    float smallest = std::numeric_limits<float>::infinity();
-    for (int side = 0; side < 2 && out.overlap; ++side)
-    {
-        const std::vector<Vec2T<float>>& own = side == 0 ? pa : pb;
-        for (size_t i = 0; i < own.size(); ++i)
-        {
-            const Vec2T<float> n = Normalize(RightPerp(own[(i + 1) % own.size()] - own[i]));
-            float minA = 0.0f, maxA = 0.0f, minB = 0.0f, maxB = 0.0f;
-            project(pa, n, minA, maxA);
-            project(pb, n, minB, maxB);
-            if (minB > maxA || minA > maxB)
-            {
-                out.overlap = false;
-                break;
-            }
-            const float along = maxA - minB;
-            const float against = maxB - minA;
-            if (std::min(along, against) < smallest)
-            {
-                smallest = std::min(along, against);
-                out.normal = ConvertVec<double>((along <= against ? 1.0f : -1.0f) * n);
-            }
-        }
-    }
-    out.depth = out.overlap ? static_cast<double>(smallest) : 0.0;
+    PitfallResult out = Answer(ScanFaces<float>(scene, a, b, 2, true));
     const Body& body = scene.bodies[static_cast<size_t>(a)];
     const float far = static_cast<float>(std::max(std::abs(body.position.x), std::abs(body.position.y)));
     const std::string step = ShortestDecimal(std::nextafter(far, INFINITY) - far);
