@@ -204,16 +204,51 @@ struct ShownAxis
     }
 };
 
-ShownAxis FromStatic(const PairStudy& study, int index)
+// Every kind of axis record (the face tests', the sweep's, the textbook test's) carries the axis and both shapes'
+// intervals on it under the same names.
+template <typename Axis>
+void CopyIntervals(const Axis& t, ShownAxis& s)
 {
-    const AxisTest& t = study.trace.axes[static_cast<size_t>(index)];
-    ShownAxis s;
-    s.SetSource(t.axis);
     s.direction = t.direction;
     s.minA = t.minA;
     s.maxA = t.maxA;
     s.minB = t.minB;
     s.maxB = t.maxB;
+}
+
+// A textbook axis: the faces it stands for and its intervals.
+template <typename Axis>
+void CopyTextbookAxis(const Axis& t, ShownAxis& s)
+{
+    std::copy(t.faces, t.faces + kMaxFacesPerAxis, s.faces);
+    s.faceCount = t.faceCount;
+    CopyIntervals(t, s);
+    s.textbook = true;
+}
+
+// The window in which every interval overlaps, as the sweep knew it at this axis: from the latest entry to the
+// earliest exit so far, or the axis's own while the first of them is not known.
+template <typename Axis>
+void SetWindow(const std::vector<Axis>& axes, const Axis& t, ShownAxis& s)
+{
+    if (t.latestEntry >= 0 && t.earliestExit >= 0)
+    {
+        s.windowEntry = axes[static_cast<size_t>(t.latestEntry)].entry;
+        s.windowExit = axes[static_cast<size_t>(t.earliestExit)].exit;
+    }
+    else
+    {
+        s.windowEntry = t.entry;
+        s.windowExit = t.exit;
+    }
+}
+
+ShownAxis FromStatic(const PairStudy& study, int index)
+{
+    const AxisTest& t = study.trace.axes[static_cast<size_t>(index)];
+    ShownAxis s;
+    s.SetSource(t.axis);
+    CopyIntervals(t, s);
     s.separation = t.separation;
     s.separating = t.separating;
     s.skipped = t.skipped;
@@ -222,24 +257,11 @@ ShownAxis FromStatic(const PairStudy& study, int index)
     return s;
 }
 
-template <typename Axis>
-void CopyIntervals(const Axis& t, ShownAxis& s)
-{
-    std::copy(t.faces, t.faces + kMaxFacesPerAxis, s.faces);
-    s.faceCount = t.faceCount;
-    s.direction = t.direction;
-    s.minA = t.minA;
-    s.maxA = t.maxA;
-    s.minB = t.minB;
-    s.maxB = t.maxB;
-    s.textbook = true;
-}
-
 ShownAxis FromTextbook(const PairStudy& study, int index)
 {
     const TextbookAxis& t = study.textbook.axes[static_cast<size_t>(index)];
     ShownAxis s;
-    CopyIntervals(t, s);
+    CopyTextbookAxis(t, s);
     s.separation = t.separating ? t.gap : -t.overlap;
     s.separating = t.separating;
     s.index = index;
@@ -254,11 +276,7 @@ ShownAxis FromSweep(const PairStudy& study, int index)
     const SweepAxis& t = study.sweepTrace.axes[static_cast<size_t>(index)];
     ShownAxis s;
     s.SetSource(t.axis);
-    s.direction = t.direction;
-    s.minA = t.minA;
-    s.maxA = t.maxA;
-    s.minB = t.minB;
-    s.maxB = t.maxB;
+    CopyIntervals(t, s);
     s.separation = t.separation;
     s.swept = true;
     s.sweptMinB = t.sweptMinB;
@@ -287,16 +305,7 @@ ShownAxis FromSweep(const PairStudy& study, int index)
             return s;
         }
     }
-    if (t.latestEntry >= 0 && t.earliestExit >= 0)
-    {
-        s.windowEntry = study.sweepTrace.axes[static_cast<size_t>(t.latestEntry)].entry;
-        s.windowExit = study.sweepTrace.axes[static_cast<size_t>(t.earliestExit)].exit;
-    }
-    else
-    {
-        s.windowEntry = t.entry;
-        s.windowExit = t.exit;
-    }
+    SetWindow(study.sweepTrace.axes, t, s);
     return s;
 }
 
@@ -304,7 +313,7 @@ ShownAxis FromTextbookSweep(const PairStudy& study, int index)
 {
     const TextbookSweepAxis& t = study.textbookSweep.axes[static_cast<size_t>(index)];
     ShownAxis s;
-    CopyIntervals(t, s);
+    CopyTextbookAxis(t, s);
     const double along = t.minB - t.maxA;
     const double against = t.minA - t.maxB;
     if (along > 0.0 || against > 0.0)
@@ -325,16 +334,7 @@ ShownAxis FromTextbookSweep(const PairStudy& study, int index)
     s.never = t.never;
     s.separating = t.endsTest;
     s.index = index;
-    if (t.latestEntry >= 0 && t.earliestExit >= 0)
-    {
-        s.windowEntry = study.textbookSweep.axes[static_cast<size_t>(t.latestEntry)].entry;
-        s.windowExit = study.textbookSweep.axes[static_cast<size_t>(t.earliestExit)].exit;
-    }
-    else
-    {
-        s.windowEntry = t.entry;
-        s.windowExit = t.exit;
-    }
+    SetWindow(study.textbookSweep.axes, t, s);
     return s;
 }
 

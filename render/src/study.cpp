@@ -15,6 +15,19 @@ Transform BodyTransformAt(const Body& body, double t)
 namespace
 {
 
+// Every kind of axis record (the face tests', the sweep's, the textbook test's) carries the axis and both shapes'
+// intervals on it under the same names; the widening of those is one.
+template <typename From, typename To>
+void WidenIntervals(const From& a, To& b)
+{
+    using T = decltype(b.minA);
+    b.direction = ConvertVec<T>(a.direction);
+    b.minA = a.minA;
+    b.maxA = a.maxA;
+    b.minB = a.minB;
+    b.maxB = a.maxB;
+}
+
 template <typename T, typename S>
 ContactPointT<T> Widen(const ContactPointT<S>& c)
 {
@@ -47,11 +60,7 @@ TraceT<T> Widen(const TraceT<S>& trace)
     {
         AxisTestT<T> b;
         b.axis = a.axis;
-        b.direction = ConvertVec<T>(a.direction);
-        b.minA = a.minA;
-        b.maxA = a.maxA;
-        b.minB = a.minB;
-        b.maxB = a.maxB;
+        WidenIntervals(a, b);
         b.separation = a.separation;
         b.supportA = a.supportA;
         b.supportB = a.supportB;
@@ -97,11 +106,7 @@ SweepTraceT<T> Widen(const SweepTraceT<S>& trace)
     {
         SweepAxisT<T> b;
         b.axis = a.axis;
-        b.direction = ConvertVec<T>(a.direction);
-        b.minA = a.minA;
-        b.maxA = a.maxA;
-        b.minB = a.minB;
-        b.maxB = a.maxB;
+        WidenIntervals(a, b);
         b.sweptMinB = a.sweptMinB;
         b.sweptMaxB = a.sweptMaxB;
         b.separation = a.separation;
@@ -140,16 +145,13 @@ SweepResultT<T> Widen(const SweepResultT<S>& r)
     return out;
 }
 
-template <typename T, typename S, typename Axis>
-void WidenAxis(const Axis& a, T& b)
+// The faces a textbook axis stands for, and its intervals.
+template <typename From, typename To>
+void WidenTextbookAxis(const From& a, To& b)
 {
     std::copy(a.faces, a.faces + kMaxFacesPerAxis, b.faces);
     b.faceCount = a.faceCount;
-    b.direction = ConvertVec<double>(a.direction);
-    b.minA = a.minA;
-    b.maxA = a.maxA;
-    b.minB = a.minB;
-    b.maxB = a.maxB;
+    WidenIntervals(a, b);
 }
 
 TextbookResult Widen(const TextbookResultT<float>& r)
@@ -171,7 +173,7 @@ TextbookTrace Widen(const TextbookTraceT<float>& trace)
     for (const TextbookAxisT<float>& a : trace.axes)
     {
         TextbookAxis b;
-        WidenAxis<TextbookAxis, float>(a, b);
+        WidenTextbookAxis(a, b);
         b.separating = a.separating;
         b.gap = a.gap;
         b.overlap = a.overlap;
@@ -200,7 +202,7 @@ TextbookSweepTrace Widen(const TextbookSweepTraceT<float>& trace)
     for (const TextbookSweepAxisT<float>& a : trace.axes)
     {
         TextbookSweepAxis b;
-        WidenAxis<TextbookSweepAxis, float>(a, b);
+        WidenTextbookAxis(a, b);
         b.rate = a.rate;
         b.entry = a.entry;
         b.exit = a.exit;
