@@ -73,9 +73,21 @@ bool InsideConvex(const std::vector<ScreenPoint>& outline, ScreenPoint p)
     return true;
 }
 
-// Whether a label's rectangle reads as lying in the outline: its centre inside it, one of the outline's edges
-// through its text (a label astride the outline's edge reads as either body's, and its halo hides that edge), or
-// two of the points a quarter in from its corners.
+// How many of the four points a quarter in from the rectangle's corners lie inside the outline: two of them inside
+// is a label that reads as lying in it, though its centre and its edges miss it.
+int QuarterPointsInside(const std::vector<ScreenPoint>& outline, const ScreenRect& rect)
+{
+    const float qx = 0.25f * (rect.maxX - rect.minX);
+    const float qy = 0.25f * (rect.maxY - rect.minY);
+    int inside = 0;
+    for (const ScreenPoint p : {ScreenPoint{rect.minX + qx, rect.minY + qy}, ScreenPoint{rect.maxX - qx, rect.minY + qy},
+                                ScreenPoint{rect.minX + qx, rect.maxY - qy}, ScreenPoint{rect.maxX - qx, rect.maxY - qy}})
+    {
+        inside += InsideConvex(outline, p) ? 1 : 0;
+    }
+    return inside;
+}
+
 // Whether the segments pq and uv cross.
 bool Cross(ScreenPoint p, ScreenPoint q, ScreenPoint u, ScreenPoint v)
 {
@@ -85,6 +97,9 @@ bool Cross(ScreenPoint p, ScreenPoint q, ScreenPoint u, ScreenPoint v)
     return side(p, q, u) * side(p, q, v) < 0.0f && side(u, v, p) * side(u, v, q) < 0.0f;
 }
 
+// Whether a label's rectangle reads as lying in the outline: its centre inside it, one of the outline's edges
+// through its text (a label astride the outline's edge reads as either body's, and its halo hides that edge), or
+// two of the points a quarter in from its corners.
 // A label whose anchor lies inside the outline only keeps its text off the outline's edges. One whose anchor lies
 // outside also stays on the anchor's side of the outline: a label with the other body between it and its anchor
 // (a ball's name beyond the wall it rests against) reads as that body's.
@@ -118,15 +133,7 @@ bool InOutline(const std::vector<ScreenPoint>& outline, const ScreenRect& rect, 
     {
         return false;
     }
-    const float qx = 0.25f * (rect.maxX - rect.minX);
-    const float qy = 0.25f * (rect.maxY - rect.minY);
-    int inside = 0;
-    for (const ScreenPoint p : {ScreenPoint{rect.minX + qx, rect.minY + qy}, ScreenPoint{rect.maxX - qx, rect.minY + qy},
-                                ScreenPoint{rect.minX + qx, rect.maxY - qy}, ScreenPoint{rect.maxX - qx, rect.maxY - qy}})
-    {
-        inside += InsideConvex(outline, p) ? 1 : 0;
-    }
-    return inside >= 2;
+    return QuarterPointsInside(outline, rect) >= 2;
 }
 
 // Whether a label's rectangle lies clear of the outline: its middle outside it, no two of the points a quarter in
@@ -142,15 +149,7 @@ bool ClearOf(const std::vector<ScreenPoint>& outline, const ScreenRect& rect)
     {
         return false;
     }
-    const float qx = 0.25f * (rect.maxX - rect.minX);
-    const float qy = 0.25f * (rect.maxY - rect.minY);
-    int inside = 0;
-    for (const ScreenPoint p : {ScreenPoint{rect.minX + qx, rect.minY + qy}, ScreenPoint{rect.maxX - qx, rect.minY + qy},
-                                ScreenPoint{rect.minX + qx, rect.maxY - qy}, ScreenPoint{rect.maxX - qx, rect.maxY - qy}})
-    {
-        inside += InsideConvex(outline, p) ? 1 : 0;
-    }
-    return inside < 2;
+    return QuarterPointsInside(outline, rect) < 2;
 }
 
 // Whether a rectangle and a convex outline share interior: no separating axis among the rectangle's two and the
