@@ -100,6 +100,19 @@ float DrawCaptionBand(Canvas& canvas, const std::string& title, const std::strin
     return bottom;
 }
 
+float DrawBackgroundAndCaption(Canvas& canvas, LabelPlacer& labels, const Figure& figure, const std::string& text,
+                               int lines)
+{
+    const float width = static_cast<float>(figure.view.width);
+    const float height = static_cast<float>(figure.view.height);
+    canvas.BeginGroup("background");
+    canvas.FillRect({0.0f, 0.0f}, {width, height}, palette::kBackground);
+    const float top =
+        (figure.layers & kLayerCaption) ? DrawCaptionBand(canvas, figure.caption, text, width, lines) : 0.0f;
+    labels.ReserveBand({0.0f, 0.0f, width, top});
+    return top;
+}
+
 void DrawPieces(Canvas& canvas, const View& view, const std::vector<ConvexPiece>& pieces, const Transform& xf,
                 const ScreenRect& bounds)
 {

@@ -43,6 +43,12 @@ float DrawCaptionBand(Canvas& canvas, const std::string& title, const std::strin
 /// The lines DrawCaptionBand takes for this title and text.
 int CaptionBandLines(Canvas& canvas, const std::string& title, const std::string& text, float width);
 
+/// Opens a figure of panels: the background over the whole image, then, with the caption layer, the caption band of
+/// `text` under the figure's caption (at least `lines` lines high), which labels keep off. Returns the band's bottom
+/// edge, 0 without the caption layer.
+float DrawBackgroundAndCaption(Canvas& canvas, LabelPlacer& labels, const Figure& figure, const std::string& text,
+                               int lines = 0);
+
 /// Draws convex pieces placed by xf: each filled in its own colour, its outline edges solid ink and each seam
 /// between two pieces dashed once (drawn from the piece where it runs from the lower vertex index to the higher).
 void DrawPieces(Canvas& canvas, const View& view, const std::vector<ConvexPiece>& pieces, const Transform& xf,

@@ -161,12 +161,7 @@ void PaintDecomposition(Canvas& surface, const Scene& scene, int bodyIndex, cons
     // the right panel at the same scale half the image to the right.
     const Transform xf = figure.framesItself ? MakeTransform(Vec2{}, body.angle) : body.Xf();
 
-    canvas.BeginGroup("background");
-    canvas.FillRect({0.0f, 0.0f}, {width, height}, palette::kBackground);
-    const float top = (figure.layers & kLayerCaption)
-                          ? DrawCaptionBand(canvas, figure.caption, DescribeDecomposition(outline, fast, fewest), width)
-                          : 0.0f;
-    labels.ReserveBand({0.0f, 0.0f, width, top});
+    const float top = DrawBackgroundAndCaption(canvas, labels, figure, DescribeDecomposition(outline, fast, fewest));
 
     Vec2 low{};
     Vec2 high{};

@@ -162,12 +162,7 @@ void PaintDiscCast(Canvas& surface, const Scene& scene, int targetIndex, int dis
     const Vec2 p2 = p1 + disc.velocity;
     const DiscHit hit = CastFigureDisc(target, disc);
 
-    canvas.BeginGroup("background");
-    canvas.FillRect({0.0f, 0.0f}, {width, height}, palette::kBackground);
-    const float top = (figure.layers & kLayerCaption)
-                          ? DrawCaptionBand(canvas, figure.caption, DescribeDiscCast(target, disc, hit), width)
-                          : 0.0f;
-    labels.ReserveBand({0.0f, 0.0f, width, top});
+    const float top = DrawBackgroundAndCaption(canvas, labels, figure, DescribeDiscCast(target, disc, hit));
 
     // The target, the pushed-out outline and both discs in the frame.
     const std::vector<Vec2> ring = WorldRing(target);

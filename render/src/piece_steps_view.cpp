@@ -297,18 +297,13 @@ void PaintPieceStepsKeyed(Canvas& surface, const Scene& scene, const PairStudy& 
     const float width = static_cast<float>(figure.view.width);
     const float height = static_cast<float>(figure.view.height);
 
-    canvas.BeginGroup("background");
-    canvas.FillRect({0.0f, 0.0f}, {width, height}, palette::kBackground);
     // One band for every step, as high as the longest step's text needs: stepping does not move the picture.
     int lines = 0;
     for (int k = 0; k <= tested + 1; ++k)
     {
         lines = std::max(lines, CaptionBandLines(canvas, figure.caption, DescribePieceStep(a, b, study, k), width));
     }
-    const float top = (figure.layers & kLayerCaption)
-                          ? DrawCaptionBand(canvas, figure.caption, DescribePieceStep(a, b, study, step), width, lines)
-                          : 0.0f;
-    labels.ReserveBand({0.0f, 0.0f, width, top});
+    const float top = DrawBackgroundAndCaption(canvas, labels, figure, DescribePieceStep(a, b, study, step), lines);
 
     Vec2 low{INFINITY, INFINITY};
     Vec2 high{-INFINITY, -INFINITY};

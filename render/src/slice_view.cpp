@@ -275,12 +275,7 @@ void PaintSlice(Canvas& surface, const Scene& scene, int bodyIndex, const Figure
     }
     const Decomposition whole = Decompose(outline, body.decompose);
 
-    canvas.BeginGroup("background");
-    canvas.FillRect({0.0f, 0.0f}, {width, height}, palette::kBackground);
-    const float top = (figure.layers & kLayerCaption)
-                          ? DrawCaptionBand(canvas, figure.caption, DescribeSlice(body, a, b, parts, pieces), width)
-                          : 0.0f;
-    labels.ReserveBand({0.0f, 0.0f, width, top});
+    const float top = DrawBackgroundAndCaption(canvas, labels, figure, DescribeSlice(body, a, b, parts, pieces));
 
     const SliceLayout layout = LayOutSlice(outline, a, b, top, width, height);
     const ScreenRect(&rects)[2] = layout.rects;
