@@ -12,16 +12,6 @@ namespace satviz
 namespace
 {
 
-std::string N(double value)
-{
-    return FormatResponseNumber(value);
-}
-
-std::string V(Vec2 v)
-{
-    return FormatResponseVector(v);
-}
-
 std::string Name(const Scene& scene, int body)
 {
     return body >= 0 && static_cast<size_t>(body) < scene.bodies.size() ? scene.bodies[static_cast<size_t>(body)].name
@@ -35,7 +25,7 @@ std::string Separation(double separation)
     {
         return "touching";
     }
-    return (separation < 0.0 ? "overlap " : "gap ") + N(std::fabs(separation));
+    return (separation < 0.0 ? "overlap " : "gap ") + FormatResponseNumber(std::fabs(separation));
 }
 
 } // namespace
@@ -43,8 +33,8 @@ std::string Separation(double separation)
 WorldWords DescribeWorld(const Scene& scene, const SimRecord& record)
 {
     WorldWords words;
-    words.time =
-        "Step " + std::to_string(record.steps) + ": time " + N(record.world.time) + " s (dt " + N(record.dt) + " s)";
+    words.time = "Step " + std::to_string(record.steps) + ": time " + FormatResponseNumber(record.world.time) +
+                 " s (dt " + FormatResponseNumber(record.dt) + " s)";
     // The contacts were found for the bodies as the step began: a pair with no body awake then was neither tested
     // nor solved, and holds the contact of the last step it was awake.
     const std::vector<RigidBody>& start = record.before.empty() ? record.world.bodies : record.before;
@@ -99,8 +89,10 @@ WorldWords DescribeWorld(const Scene& scene, const SimRecord& record)
             continue;
         }
         const Vec2 at = body.WorldCenter();
-        std::string line = name + (body.awake ? ": awake" : ": asleep") + ", centre of mass at " + V(at);
-        line += body.awake ? ", v " + V(body.velocity) + " m/s, spin " + N(body.angularVelocity) + " rad/s"
+        std::string line =
+            name + (body.awake ? ": awake" : ": asleep") + ", centre of mass at " + FormatResponseVector(at);
+        line += body.awake ? ", v " + FormatResponseVector(body.velocity) + " m/s, spin " +
+                                 FormatResponseNumber(body.angularVelocity) + " rad/s"
                            : ", at rest until something touches it";
         words.bodies.push_back(line);
     }
