@@ -67,7 +67,7 @@ template <typename Query>
 // The instructions an untraced query runs on: 512-bit face loops for double where `wide512` and the processor has
 // them, the wide scans where it has those and `wide`, else the baseline, which a traced call says in its trace.
 // The untraced branches of WithTracer and WithSweepTracer take the same decision inline, on their fast path (an
-// enum chosen here and switched on there cost Overlap of small polygons a nanosecond); a property test holds
+// enum chosen here and switched on there would add that switch to every untraced query); a property test holds
 // the two together (tests/test_wide.cpp).
 template <typename S>
 InstructionPath UntracedPath(bool wide, bool wide512)

@@ -44,8 +44,9 @@ bool SweepFacesN(const PolygonT<S>& ref, const IncidentPolygon<S>& inc, int side
 
 // Polygons with more faces than this have them bisected (SweepBisectedFaces) rather than bounded face by face
 // (SweepBoundedFaces) or scanned. A bisection's reads and branches depend on each other, so each waits for the one
-// before, while a pass over the faces reads ahead: on polygons in the cache the bisection is the faster above about
-// 128 faces, on polygons that come from memory above about 512 (SweepTime of same-sized pairs).
+// before, while a pass over the faces reads ahead: the bisection pays only on polygons of some hundreds of faces,
+// sooner when they are in the cache than when they come from memory; this lies between the two (SweepTime of
+// same-sized pairs, tests/bench/README.md).
 constexpr int kBisectFaces = 256;
 
 template <typename L, typename S, typename Tracer>
