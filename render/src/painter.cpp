@@ -2124,17 +2124,20 @@ class Painter
                 runStart = -1;
             }
         }
-        // All of it outside, or none: the middle.
-        if (bestStart < 0 || bestLength > kSamples)
+        // None of it outside: the middle.
+        if (bestStart < 0)
         {
             return {0.5f * (a.x + b.x), 0.5f * (a.y + b.y)};
         }
-        const float t = (static_cast<float>(bestStart) + 0.5f * static_cast<float>(bestLength - 1)) / kSamples;
+        // All of it outside: the middle, unless it lies by the other body's corner (below).
+        const float t = bestLength > kSamples
+                            ? 0.5f
+                            : (static_cast<float>(bestStart) + 0.5f * static_cast<float>(bestLength - 1)) / kSamples;
         const ScreenPoint middle{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
         // A middle within a few dozen pixels of the other body (the free stretch of a floor ending under a plank's
         // raised corner) puts the name beside that body's corner, where it reads as naming the corner: the name
         // goes where the free stretch lies farthest both from the other body and from the edge's own ends.
-        constexpr float kCrowded = 48.0f;
+        constexpr float kCrowded = 60.0f;
         const auto fromOther = [&](ScreenPoint p) {
             float best = 1e9f;
             for (size_t i = 0; i < other.size(); ++i)

@@ -1235,6 +1235,94 @@ std::vector<std::string> FaceNamesAstray(const RecordingCanvas& canvas, const Sc
     return problems;
 }
 
+// Edge names "eN" beside the other body's corner while their face has room well away from it: there the name reads
+// as naming the corner (the floor's "e2" under the raised corner of a tilted plank, where the floor runs on free
+// for hundreds of pixels). Flagged when the name's middle lies within 60 pixels of a corner of the other body and
+// some point of the face in the image lies farther from the other body, and from the face's own ends, than twice
+// that distance and 20 pixels more. Names on a leader line are joined to their face and are left out.
+std::vector<std::string> EdgeNamesByRivalCorners(const RecordingCanvas& canvas, const Scene& scene,
+                                                 const PairStudy& study, const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    const Body* bodies[2] = {&scene.bodies[static_cast<size_t>(study.bodyA)],
+                             &scene.bodies[static_cast<size_t>(study.bodyB)]};
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    const std::vector<ScreenPoint> outlines[2] = {Outline(*bodies[0], view), Outline(*bodies[1], view)};
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || OnLeader(canvas, *c))
+        {
+            continue;
+        }
+        const std::string& t = c->text;
+        const bool edge = t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+        int s = -1;
+        for (int k = 0; k < 2; ++k)
+        {
+            s = (c->color >> 8) == (inks[k] >> 8) ? k : s;
+        }
+        if (!edge || s < 0 || bodies[s]->shape.type != ShapeType::Polygon ||
+            bodies[1 - s]->shape.type != ShapeType::Polygon)
+        {
+            continue;
+        }
+        const size_t n = static_cast<size_t>(std::stoi(t.substr(1)));
+        if (n >= outlines[s].size())
+        {
+            continue;
+        }
+        const ScreenPoint a = outlines[s][n];
+        const ScreenPoint b = outlines[s][(n + 1) % outlines[s].size()];
+        const std::vector<ScreenPoint>& rival = outlines[1 - s];
+        const ScreenPoint size = measure.MeasureText(t, c->style);
+        const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+        // Only corners on the name's side of the face's line compete with it (a box inside a larger one has its
+        // corners behind the larger one's faces).
+        const auto side = [&](ScreenPoint p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); };
+        float corner = 1e9f;
+        for (const ScreenPoint& v : rival)
+        {
+            if (side(v) * side(middle) > 0.0f)
+            {
+                corner = std::min(corner, std::hypot(v.x - middle.x, v.y - middle.y));
+            }
+        }
+        if (corner >= 60.0f)
+        {
+            continue;
+        }
+        const auto fromRival = [&](ScreenPoint p) {
+            float d = 1e9f;
+            for (size_t i = 0; i < rival.size(); ++i)
+            {
+                d = std::min(d, ToSegment(p, rival[i], rival[(i + 1) % rival.size()]));
+            }
+            return d;
+        };
+        float room = 0.0f;
+        for (int i = 0; i <= 64; ++i)
+        {
+            const float u = static_cast<float>(i) / 64.0f;
+            const ScreenPoint p{a.x + (b.x - a.x) * u, a.y + (b.y - a.y) * u};
+            if (p.x < 0.0f || p.y < 0.0f || p.x > static_cast<float>(view.width) ||
+                p.y > static_cast<float>(view.height))
+            {
+                continue;
+            }
+            room = std::max(room, std::min({fromRival(p), std::hypot(p.x - a.x, p.y - a.y),
+                                            std::hypot(p.x - b.x, p.y - b.y)}));
+        }
+        if (room >= 2.0f * corner + 20.0f)
+        {
+            problems.push_back(Describe(*c) + " lies " + std::to_string(static_cast<int>(corner)) + " pixels from a corner of " +
+                               bodies[1 - s]->name + ", where its face has a point " +
+                               std::to_string(static_cast<int>(room)) + " pixels clear of it");
+        }
+    }
+    return problems;
+}
+
 // Vertex numbers and edge names with an arrow's shaft between them and what they name: the arrow cuts the number
 // off from its corner (A's "2" above the velocity arrow that runs past A's corner), and it reads as the arrow's.
 // Measured from the middle of the label to its corner, or to the nearest point of its edge; a label on a leader
@@ -1733,6 +1821,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
             problems.push_back(std::move(p));
         }
         for (std::string& p : FaceNamesAstray(canvas, scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : EdgeNamesByRivalCorners(canvas, scene, setup.study, setup.figure.view))
         {
             problems.push_back(std::move(p));
         }
