@@ -1859,7 +1859,7 @@ class Painter
     std::vector<ScreenPoint> MtvOutline() const
     {
         Manifold m;
-        if (!m_verdict || !Has(m_figure, kLayerMtv) || !ShownMtv(m))
+        if (!m_verdict || !Has(m_figure, kLayerMtv) || !ShownMtv(m) || RoundOffVerdict(m_study))
         {
             return {};
         }
@@ -1876,6 +1876,21 @@ class Painter
             return;
         }
         m_canvas.BeginGroup("mtv");
+        // The length as the number line prints it: the deciding axis's overlap from its shown ends.
+        const std::string depth = m_hasAxis && m_axis.separation <= 0.0
+                                      ? ShownBand(m_axis.leadMax, m_axis.otherMin, m_axis.separation)
+                                      : FormatNumber(m.depth);
+        // A depth of round-off size moves B by nothing the eye can see, and the sentence says the shapes touch: an
+        // arrow or an outline drawn a visible length would show a push there is not. The MTV is named on B, with
+        // what it means.
+        if (RoundOffVerdict(m_study))
+        {
+            const Vec2 center = ShapeCenter(m_bodyB.shape, m_bodyB.Xf());
+            m_labels.Place(At(center), "MTV " + depth + ": round-off, they touch", TextStyle::Heading,
+                           palette::kResult, static_cast<float>(m.normal.x), static_cast<float>(-m.normal.y), 6.0f,
+                           LabelRank::Verdict);
+            return;
+        }
         const Vec2 shift = m.depth * m.normal;
         const std::vector<ScreenPoint> cleared = MtvOutline();
         DashedOutline(m_canvas, cleared, palette::kShapeBInk, 1.8f, m_bounds);
@@ -1904,10 +1919,6 @@ class Painter
         m_mtvFrom = from;
         m_mtvTo = to;
         m_hasMtvArrow = true;
-        // The length as the number line prints it: the deciding axis's overlap from its shown ends.
-        const std::string depth = m_hasAxis && m_axis.separation <= 0.0
-                                      ? ShownBand(m_axis.leadMax, m_axis.otherMin, m_axis.separation)
-                                      : FormatNumber(m.depth);
         // The arrow is drawn over the labels: none may lie under it.
         m_labels.ReserveLine(from, to, 3.0f);
         m_labels.Reserve({to.x - 12.0f, to.y - 12.0f, to.x + 12.0f, to.y + 12.0f});

@@ -554,3 +554,50 @@ TEST_CASE("No end value of a number line runs into its band, and no tick value o
     });
     CHECK(bands > 50);
 }
+
+TEST_CASE("An MTV of round-off size is named as touching, with no arrow or outline showing a push", "[marks]")
+{
+    // A depth within 1e-12 of the size of the coordinates (l11_decimal_touch's 2.78e-17) is round-off: the sentence
+    // says the shapes touch, so the picture must not draw a push of visible length. Any other MTV keeps its arrow.
+    int roundOff = 0;
+    int arrows = 0;
+    ForEachCourseFigure(
+        [&](const std::string& stem, bool faces, const FigureSetup& setup, int k, const RecordingCanvas& canvas) {
+            const std::vector<const DrawCommand*> mtv = canvas.InGroup("mtv");
+            const auto named = std::find_if(canvas.commands.begin(), canvas.commands.end(), [](const DrawCommand& c) {
+                return c.kind == DrawCommand::Kind::Text && c.text.rfind("MTV ", 0) == 0;
+            });
+            if (named == canvas.commands.end() || setup.study.sweep || !setup.study.manifold.overlap)
+            {
+                return;
+            }
+            double size = 0.0;
+            for (const Body& body : painter_test::LessonScene(stem).bodies)
+            {
+                size = std::max({size, std::fabs(body.position.x), std::fabs(body.position.y)});
+            }
+            const bool tiny = std::fabs(setup.study.manifold.depth) <= 1e-12 * std::max(1.0, size);
+            const bool arrow = std::any_of(mtv.begin(), mtv.end(), [](const DrawCommand* c) {
+                return c->kind == DrawCommand::Kind::Segment && c->color == palette::kResult;
+            });
+            const bool dashed = std::any_of(mtv.begin(), mtv.end(), [](const DrawCommand* c) {
+                return c->kind == DrawCommand::Kind::Segment && c->color != palette::kResult;
+            });
+            INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": " << named->text << ", depth "
+                                         << setup.study.manifold.depth);
+            if (tiny)
+            {
+                CHECK_FALSE(arrow);
+                CHECK_FALSE(dashed);
+                CHECK(named->text.find("touch") != std::string::npos);
+                ++roundOff;
+            }
+            else
+            {
+                CHECK(arrow);
+                ++arrows;
+            }
+        });
+    CHECK(roundOff > 0);
+    CHECK(arrows > 10);
+}
