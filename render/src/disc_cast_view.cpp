@@ -137,7 +137,7 @@ std::string DescribeDiscCast(const Body& target, const Body& disc, const DiscHit
            "'s outline pushed out by the radius (dashed), at t = " + FormatNumber(hit.fraction) +
            " of the way: centre " + Point(hit.center) + ". The contact point is " + Point(hit.point) + piece +
            ", where the outward normal is " + Point(hit.normal) + ": the centre lies one radius out along it, " +
-           Point(hit.point) + " + " + FormatNumber(r) + " " + Point(hit.normal) + " = " + check + ".";
+           Point(hit.point) + " + " + FormatNumber(r) + " \xC3\x97 " + Point(hit.normal) + " = " + check + ".";
 }
 
 DiscHit CastFigureDisc(const Body& target, const Body& disc)

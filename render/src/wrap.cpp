@@ -75,6 +75,38 @@ bool TakesUnit(const std::string& word)
     return last == "N" || last == "kg";
 }
 
+// Whether `word` is an operator that joins the words on both sides of it: "=", "+", "×" or "−" (U+2212).
+bool IsOperator(const std::string& word)
+{
+    return word == "=" || word == "+" || word == "\xC3\x97" || word == "\xE2\x88\x92";
+}
+
+// Whether the last word of `word` (after its last space) is such an operator.
+bool EndsWithOperator(const std::string& word)
+{
+    const size_t space = word.rfind(' ');
+    return space != std::string::npos && IsOperator(word.substr(space + 1));
+}
+
+// Whether `word` is a plain number: digits with a point or a leading sign ("0.30", "-2"), nothing else.
+bool IsNumber(const std::string& word)
+{
+    bool digit = false;
+    for (size_t i = 0; i < word.size(); ++i)
+    {
+        const char c = word[i];
+        if (std::isdigit(static_cast<unsigned char>(c)))
+        {
+            digit = true;
+        }
+        else if (!(c == '.' || (i == 0 && (c == '-' || c == '+'))))
+        {
+            return false;
+        }
+    }
+    return digit;
+}
+
 // A word wider than the line, in pieces that fit, so that nothing of it is cut at the panel's edge. A web address
 // breaks after a '/' or before a '.', '-', '?', '#', '&', '=' or '_', where a reader still sees one address going
 // on; any other word after a ',', ':', ';', ')' or ']', before a bracket or at a space (an equation kept as one
@@ -196,10 +228,13 @@ std::vector<std::string> WrapWords(const std::string& text)
         const std::string word = text.substr(start, end - start);
         // "t = 0.438" stays on one line: "=" joins the words on both sides of it.
         // "0.417 s)" and "3 m/s" too: a number and its unit are read as one.
-        const bool glued = (inTuple && start <= tupleEnd) || word == "=" ||
-                           (!words.empty() && words.back().size() >= 2 &&
-                            words.back().compare(words.back().size() - 2, 2, " =") == 0) ||
-                           (!words.empty() && IsUnit(word) && TakesUnit(words.back()));
+        // "a + 0.30 (0.00, 1.00)" too: "+", "×" and "−" join the words on both sides of them as "=" does, and a
+        // number joins the pair of numbers after it that it scales.
+        const bool glued = (inTuple && start <= tupleEnd) || IsOperator(word) ||
+                           (!words.empty() && EndsWithOperator(words.back())) ||
+                           (!words.empty() && IsUnit(word) && TakesUnit(words.back())) ||
+                           (!words.empty() && IsNumber(words.back()) && start < text.size() && text[start] == '(' &&
+                            NumberTupleEnd(text, start) != std::string::npos);
         if (glued && !words.empty() && !word.empty())
         {
             words.back() += " " + word;

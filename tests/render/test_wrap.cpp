@@ -179,7 +179,9 @@ TEST_CASE("Wrapped text keeps every character: prose in brackets wraps, an over-
     const std::string prose = "(0.1645 in full; the figure prints 0.164, the difference of the deciding axis's "
                               "interval ends as the figures print them) and so on";
     CHECK(WrapWords(prose).size() > 10);
-    CHECK(WrapWords("(0.6 × 0.12 + 0.8 × 0.16 = 0.2, and x = 0.12 lies between)").size() > 5);
+    // The formula in it stays whole; the prose after it wraps.
+    CHECK(WrapWords("(0.6 × 0.12 + 0.8 × 0.16 = 0.2, and x = 0.12 lies between)") ==
+          std::vector<std::string>{"(0.6 × 0.12 + 0.8 × 0.16 = 0.2,", "and", "x = 0.12", "lies", "between)"});
     CHECK(WrapWords("the axis (0.96, 0.28) and [-0.25, 0.5] here") ==
           std::vector<std::string>{"the", "axis", "(0.96, 0.28)", "and", "[-0.25, 0.5]", "here"});
     const std::string code = R"("interval_a":[-0.2,0.2],"interval_b":[0.19999999999999998,0.4],"overlap":2.7e-17)";
@@ -208,6 +210,33 @@ TEST_CASE("A number stays on the line of its unit", "[wrap]")
     // Not every word after a number is a unit: "box 1 moves" wraps between "1" and "moves".
     CHECK(WrapWords("box 1 moves").size() == 3);
     CHECK(WrapWords("0.5 N s").size() == 1);
+}
+
+TEST_CASE("A formula stays on one line: its operators join their sides, and a number the pair it scales", "[wrap]")
+{
+    // disc_cast_cup's header broke "0.30" from "(0.00, 1.00)", the normal it scales, across two lines.
+    const std::string sum = "out along it, (2.488, 1.000) + 0.30 \xC3\x97 (0.00, 1.00) = (2.488, 1.300).";
+    const std::vector<std::string> words = WrapWords(sum);
+    REQUIRE(!words.empty());
+    CHECK(words.back() == "(2.488, 1.000) + 0.30 \xC3\x97 (0.00, 1.00) = (2.488, 1.300).");
+    CHECK(WrapWords("a + b").size() == 1);
+    CHECK(WrapWords("1.632 \xE2\x88\x92 0.514 = 1.118").size() == 1);
+    CHECK(WrapWords("0.30 (0.00, 1.00)").size() == 1);
+    // A number before prose in brackets, or before a word, still parts from it.
+    CHECK(WrapWords("step 2 (the second)").size() == 4);
+    CHECK(WrapWords("0.30 metres").size() == 2);
+    // Wrapped at any width, nothing is lost, and where the formula fits a line it is not broken.
+    const auto measure = [](const std::string& t) { return 7.0f * static_cast<float>(t.size()); };
+    for (float width = 35.0f; width <= 700.0f; width += 7.0f)
+    {
+        CheckWrapped(sum, width);
+        const std::vector<std::string> lines = WrapLines(sum, width, measure);
+        if (measure(words.back()) <= width)
+        {
+            CHECK(std::any_of(lines.begin(), lines.end(),
+                              [&](const std::string& line) { return line.find(words.back()) != std::string::npos; }));
+        }
+    }
 }
 
 TEST_CASE("Every line of every lesson wraps with nothing lost at any width", "[wrap]")

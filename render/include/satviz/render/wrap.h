@@ -12,7 +12,8 @@ namespace satviz
 
 /// The words of `text` that a line may break between: the text split at its spaces, where a bracketed pair or list
 /// of numbers ("[-0.25, 0.25]", "(0.96, 0.30)": numbers, commas, spaces and signs only), an equation's sides
-/// ("t = 0.438") and a number with its unit ("0.417 s)", "3 m/s", "0.5 N s") stay one word. Prose in parentheses splits, even when it opens with a number ("(0.1645 in full;").
+/// ("t = 0.438", "a + 0.30 × (0.00, 1.00)": "=", "+", "×" and "−" join their sides, a number the pair it scales) and a
+/// number with its unit ("0.417 s)", "3 m/s", "0.5 N s") stay one word. Prose in parentheses splits, even when it opens with a number ("(0.1645 in full;").
 std::vector<std::string> WrapWords(const std::string& text);
 
 /// `text` broken into lines no wider than `width` as `measure` measures them, greedily, between the words of
