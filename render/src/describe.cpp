@@ -159,6 +159,16 @@ bool RoundOffVerdict(const PairStudy& study)
         amount = study.textbookResult.overlap ? study.textbookResult.depth : study.textbookResult.gap;
         scale = std::max({scale, std::fabs(t.minA), std::fabs(t.maxA), std::fabs(t.minB), std::fabs(t.maxB)});
     }
+    else if (!study.Textbook() && !study.trace.axes.empty())
+    {
+        // The face view measures against the same size: the projections on the deciding face's normal (the best
+        // face tested, or the one that separated).
+        const AxisTest& last = study.trace.axes.back();
+        const AxisTest& t = last.separating || last.best < 0 || static_cast<size_t>(last.best) >= study.trace.axes.size()
+                                ? last
+                                : study.trace.axes[static_cast<size_t>(last.best)];
+        scale = std::max({scale, std::fabs(t.minA), std::fabs(t.maxA), std::fabs(t.minB), std::fabs(t.maxB)});
+    }
     return amount != 0.0 && std::fabs(amount) <= 1e-12 * scale;
 }
 

@@ -2507,6 +2507,23 @@ TEST_CASE("An overlap or a gap of round-off size is worded as touching in the ve
             CHECK(rows[0].parts[0] == (apart ? "no, by round-off: they touch" : "yes, by round-off: they touch"));
         }
     }
+    // Far from the origin round-off is larger: the same pair a thousand metres out, overlapping by 1e-10 (the
+    // doubles there are about 1e-13 apart), is touching in both views alike, measured against the coordinates.
+    {
+        Scene scene = loaded.scene;
+        const double out = 1000.0;
+        scene.bodies[0].position.x += out;
+        scene.bodies[1].position.x += out - 1e-10;
+        for (const StepView view : {StepView::Textbook, StepView::Faces})
+        {
+            const PairStudy study = StudyPair(scene, 0, 1, ViewQuery::Collide, false, view);
+            INFO((view == StepView::Faces ? "face tests" : "textbook") << ", depth " << study.manifold.depth);
+            REQUIRE(study.manifold.overlap);
+            REQUIRE(study.manifold.depth > 1e-12);
+            CHECK(RoundOffVerdict(study));
+            CHECK(StepTitle(scene, study, study.VerdictStep()).rfind("verdict: touching, round-off ", 0) == 0);
+        }
+    }
     // A true overlap and a true gap are not round-off.
     for (const char* stem : {"overlapping_boxes", "l03_corner_gap", "l14_slide"})
     {
