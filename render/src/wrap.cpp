@@ -107,6 +107,32 @@ bool IsNumber(const std::string& word)
     return digit;
 }
 
+// Whether `word` is a group of three digits that goes on a number written in groups ("000" of "100 000", "000 m/s,"):
+// three digits, then nothing or anything but a digit.
+bool IsDigitGroup(const std::string& word)
+{
+    return word.size() >= 3 && std::isdigit(static_cast<unsigned char>(word[0])) &&
+           std::isdigit(static_cast<unsigned char>(word[1])) && std::isdigit(static_cast<unsigned char>(word[2])) &&
+           (word.size() == 3 || !std::isdigit(static_cast<unsigned char>(word[3])));
+}
+
+// Whether `word` ends in a number's first group: one to three digits, after a sign or a bracket if any ("100",
+// "(-12"), or a group that a group follows ("100 000").
+bool EndsWithShortNumber(const std::string& word)
+{
+    size_t digits = 0;
+    while (digits < word.size() && std::isdigit(static_cast<unsigned char>(word[word.size() - 1 - digits])))
+    {
+        ++digits;
+    }
+    if (digits == 0 || digits > 3)
+    {
+        return false;
+    }
+    const size_t before = word.size() - digits;
+    return before == 0 || std::strchr(" -([", word[before - 1]) != nullptr;
+}
+
 // A word wider than the line, in pieces that fit, so that nothing of it is cut at the panel's edge. A web address
 // breaks after a '/' or before a '.', '-', '?', '#', '&', '=' or '_', where a reader still sees one address going
 // on; any other word after a ',', ':', ';', ')' or ']', before a bracket or at a space (an equation kept as one
@@ -231,6 +257,7 @@ std::vector<std::string> WrapWords(const std::string& text)
         // "a + 0.30 (0.00, 1.00)" too: "+", "×" and "−" join the words on both sides of them as "=" does, and a
         // number joins the pair of numbers after it that it scales.
         const bool glued = (inTuple && start <= tupleEnd) || IsOperator(word) ||
+                           (!words.empty() && IsDigitGroup(word) && EndsWithShortNumber(words.back())) ||
                            (!words.empty() && EndsWithOperator(words.back())) ||
                            (!words.empty() && IsUnit(word) && TakesUnit(words.back())) ||
                            (!words.empty() && IsNumber(words.back()) && start < text.size() && text[start] == '(' &&

@@ -289,3 +289,27 @@ TEST_CASE("The world in words: a speculative contact gives its gap", "[world][wo
         }
     }
 }
+
+TEST_CASE("The world in words writes a large whole speed in groups of three digits, as the figures' labels do",
+          "[world][words]")
+{
+    // l17_bullet's bullet flies at 100 000 m/s; its arrow's label reads "v = 100 000 m/s".
+    SteppedScene s = StepScene("l17_bullet.json", 0);
+    const WorldWords words = DescribeWorld(s.scene, s.record);
+    size_t i = 0;
+    while (i < s.scene.bodies.size() && s.scene.bodies[i].name != "bullet")
+    {
+        ++i;
+    }
+    REQUIRE(i < s.scene.bodies.size());
+    const std::string& line = words.bodies[i];
+    INFO(line);
+    // As the scene begins, before its first step.
+    REQUIRE(s.record.world.bodies[i].velocity.x == 100000.0);
+    REQUIRE(s.record.world.bodies[i].velocity.y == 0.0);
+    CHECK(line.find("v (100 000, 0.00) m/s") != std::string::npos);
+    CHECK(line.find("100000") == std::string::npos);
+    CHECK(FormatResponseNumber(-250000.0) == "-250 000");
+    CHECK(FormatResponseNumber(12345.5) == FormatNumber(12345.5, kResponseDigits));
+    CHECK(FormatResponseVector({2.5, 100000.0}) == "(" + FormatNumber(2.5, kResponseDigits) + ", 100 000)");
+}

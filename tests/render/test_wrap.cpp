@@ -239,6 +239,16 @@ TEST_CASE("A formula stays on one line: its operators join their sides, and a nu
     }
 }
 
+TEST_CASE("A number written in groups of three digits stays whole", "[wrap]")
+{
+    CHECK(WrapWords("B moves at 100 000 m/s to the left") ==
+          std::vector<std::string>{"B", "moves", "at", "100 000 m/s", "to", "the", "left"});
+    CHECK(WrapWords("v (-1 250 000, 0.00) now")[1] == "(-1 250 000, 0.00)");
+    // Three digits after a word that is not a number, or after a number of four digits, start a word of their own.
+    CHECK(WrapWords("box 100 moves").size() == 3);
+    CHECK(WrapWords("step 1000 200 times").size() == 4);
+}
+
 TEST_CASE("Every line of every lesson wraps with nothing lost at any width", "[wrap]")
 {
     const std::vector<std::string> lines = LessonLines();

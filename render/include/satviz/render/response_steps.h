@@ -17,8 +17,9 @@ namespace satviz
 /// of passes alike: FormatNumber(value, kResponseDigits) shows an impulse of 0.0102 as 0.0102, not 0.01.
 constexpr int kResponseDigits = 3;
 
-/// A number as the response and the world panel print it: kResponseDigits significant digits, and a round-off
-/// residue (below 1e-12 of the value itself) shown as 0.
+/// A number as the response and the world panel print it: kResponseDigits significant digits, a whole number of
+/// five digits or more in groups of three as the figures' labels write it ("100 000"), and a round-off residue
+/// (below 1e-12 of the value itself) shown as 0.
 std::string FormatResponseNumber(double value);
 
 /// A vector as the response and the world panel print it: "(x, y)", each part as FormatResponseNumber, with a
