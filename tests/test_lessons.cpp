@@ -5,7 +5,7 @@
 // A checked number is written after an HTML comment that names the scene and a JSON pointer into satviz-query's
 // answer for it (with --trace, textbook view):
 //     the overlap is <!--check overlapping_boxes /pairs/0/depth-->0.18
-// or, with @N after the scene, into the last line satviz-sim prints for it after N steps (with --counts):
+// or, with @N after the scene, into the last line satviz-sim prints for it after N steps (with --counts --energy):
 //     it stops at <!--check l14_slide@60 /bodies/1/position/0-->-1.107
 // The number must equal the value rounded to the decimals it shows; its minus may be a hyphen or the minus sign.
 
@@ -207,7 +207,7 @@ int Decimals(const std::string& number)
     return dot == std::string::npos ? 0 : static_cast<int>(number.size() - dot - 1);
 }
 
-// The last line satviz-sim prints for a scene of tutorials/scenes after `steps` steps, with --counts: the program
+// The last line satviz-sim prints for a scene of tutorials/scenes after `steps` steps, with --counts --energy: the program
 // itself, run once per scene and count.
 nlohmann::json SimulatedState(const std::string& scene, int steps)
 {
@@ -219,7 +219,7 @@ nlohmann::json SimulatedState(const std::string& scene, int steps)
     }
     const testing::ToolRun run =
         testing::RunTool(std::string(SATVIZ_SIM_EXE) + " " + (kTutorials / "scenes" / (scene + ".json")).string() +
-                         " --steps " + std::to_string(steps) + " --every " + std::to_string(steps) + " --counts");
+                         " --steps " + std::to_string(steps) + " --every " + std::to_string(steps) + " --counts --energy");
     const std::vector<std::string> lines = testing::SplitLines(run.out);
     nlohmann::json state;
     if (run.exitCode == 0 && !lines.empty() && !lines.back().empty())

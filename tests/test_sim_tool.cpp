@@ -334,6 +334,52 @@ TEST_CASE("satviz-sim --counts adds what each step did with the pairs", "[sim]")
     CHECK(line["counts"]["awake"].get<int>() + line["counts"]["sleeping"].get<int>() == 2);
 }
 
+TEST_CASE("satviz-sim --energy adds the kinetic energy and momentum, computed from the printed bodies", "[sim]")
+{
+    WriteFile(kSim / "drop.json", kDrop);
+    const SimRun plain = Sim(kSim / "drop.json --steps 30 --every 10");
+    const SimRun energy = Sim(kSim / "drop.json --steps 30 --every 10 --energy");
+    REQUIRE(plain.exitCode == 0);
+    REQUIRE(energy.exitCode == 0);
+    REQUIRE(plain.out.size() == 3);
+    REQUIRE(energy.out.size() == plain.out.size());
+    // The scene's bodies, for their masses and inertias.
+    const SceneResult loaded = ParseScene(kDrop, "drop.json");
+    REQUIRE(loaded.Ok());
+    const World world = MakeWorld(loaded.scene);
+    bool moving = false;
+    for (size_t k = 0; k < plain.out.size(); ++k)
+    {
+        // Without the flag the line is what it was; with it, the same line and two more fields.
+        CHECK(plain.out[k].find("kinetic_energy") == std::string::npos);
+        nlohmann::ordered_json line = nlohmann::ordered_json::parse(energy.out[k]);
+        REQUIRE(line.contains("kinetic_energy"));
+        REQUIRE(line.contains("momentum"));
+        double kinetic = 0.0, px = 0.0, py = 0.0;
+        for (size_t i = 0; i < world.bodies.size(); ++i)
+        {
+            const RigidBody& body = world.bodies[i];
+            if (body.type != BodyType::Dynamic)
+            {
+                continue;
+            }
+            const auto& b = line["bodies"][i];
+            const double vx = b["velocity"][0], vy = b["velocity"][1], w = b["angular_velocity"];
+            kinetic += 0.5 * body.mass * (vx * vx + vy * vy) + 0.5 * body.inertia * w * w;
+            px += body.mass * vx;
+            py += body.mass * vy;
+            moving = moving || vx != 0.0 || vy != 0.0;
+        }
+        CHECK(line["kinetic_energy"].get<double>() == Approx(kinetic).epsilon(1e-12));
+        CHECK(line["momentum"][0].get<double>() == Approx(px).margin(1e-12));
+        CHECK(line["momentum"][1].get<double>() == Approx(py).epsilon(1e-12));
+        line.erase("kinetic_energy");
+        line.erase("momentum");
+        CHECK(line.dump() == nlohmann::ordered_json::parse(plain.out[k]).dump());
+    }
+    CHECK(moving);
+}
+
 TEST_CASE("satviz-sim --save writes the last printed state as a scene that loads, in the file's form", "[sim]")
 {
     WriteFile(kSim / "drop.json", kDrop);

@@ -49,7 +49,7 @@ Json Pair(satviz::Vec2 v)
 
 // One printed step: the time and every body's state, numbers in the shortest form that reads back as the same
 // double (nlohmann-json's); with `withCounts`, what the step did with the pairs.
-Json StateJson(const satviz::World& world, const satviz::Scene& scene, long long step, bool withCounts)
+Json StateJson(const satviz::World& world, const satviz::Scene& scene, long long step, bool withCounts, bool withEnergy)
 {
     Json bodies = Json::array();
     for (size_t i = 0; i < world.bodies.size(); ++i)
@@ -62,6 +62,12 @@ Json StateJson(const satviz::World& world, const satviz::Scene& scene, long long
                           {"angular_velocity", body.angularVelocity + 0.0}});
     }
     Json line = {{"step", step}, {"time", world.time + 0.0}, {"bodies", std::move(bodies)}};
+    if (withEnergy)
+    {
+        // The dynamic bodies' totals, what the lessons check a hit against: energy kept or lost, momentum kept.
+        line["kinetic_energy"] = satviz::KineticEnergy(world) + 0.0;
+        line["momentum"] = Pair(satviz::LinearMomentum(world));
+    }
     if (withCounts)
     {
         const satviz::StepCounts& c = world.counts;
@@ -103,6 +109,10 @@ int main(int argc, char** argv)
                    "any number")
         ->type_name("T");
     app.add_option("--save", savePath, "Write the final state as a scene file (atomically)")->type_name("OUT.json");
+    bool withEnergy = false;
+    app.add_flag("--energy", withEnergy,
+                 "Add each printed step's totals over the dynamic bodies: kinetic_energy (translation and rotation) "
+                 "and momentum");
     app.add_flag("--counts", withCounts,
                  "Add each printed step's counts: pairs, static_pairs, sleeping_pairs, bounds_apart, tested, "
                  "touching, swept, hits, awake, sleeping");
@@ -176,7 +186,7 @@ int main(int argc, char** argv)
         hits += world.counts.hits;
         if (step % every == 0 || step == steps)
         {
-            std::cout << StateJson(world, scene, step, withCounts).dump(-1, ' ', false, kReplace) << '\n';
+            std::cout << StateJson(world, scene, step, withCounts, withEnergy).dump(-1, ' ', false, kReplace) << '\n';
         }
     }
     std::cout.flush();
