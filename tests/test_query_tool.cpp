@@ -125,6 +125,10 @@ TEST_CASE("satviz-query answers every pair, in the documented form", "[query]")
     CHECK(withTrace["trace"]["view"] == "faces");
     CHECK(withTrace["trace"]["axes"].size() >= 4);
     CHECK(withTrace["trace"]["exit"] == "all-axes-overlap");
+    // An overlapping pair runs one face test per face of either polygon, and the count says how many ran.
+    const int faceCount = a.shape.polygon.Count() + b.shape.polygon.Count();
+    CHECK(withTrace["trace"]["faces_tested"] == withTrace["trace"]["axes"].size());
+    CHECK(withTrace["trace"]["faces_tested"] == faceCount);
     CHECK(withTrace["trace"].contains("clip"));
     CHECK(Query("--trace --view edges " + scene).exitCode != 0);
 }

@@ -278,8 +278,11 @@ Json TraceJson(const Trace& trace)
         }
         axes.push_back(entry);
     }
+    // The count the face view steps through ("face test 1 of N"), so a reader need not count the list.
+    const int tested = static_cast<int>(trace.axes.size());
     Json out = {{"view", "faces"},
                 {"axes", axes},
+                {"faces_tested", tested},
                 {"exit", ExitName(trace.exit)},
                 {"untraced_path", trace.untracedPath == InstructionPath::Avx512 ? "avx512"
                                   : trace.untracedPath == InstructionPath::Avx2 ? "avx2"
