@@ -7,6 +7,8 @@
 //     the overlap is <!--check overlapping_boxes /pairs/0/depth-->0.18
 // or, with @N after the scene, into the last line satviz-sim prints for it after N steps (with --counts --energy):
 //     it stops at <!--check l14_slide@60 /bodies/1/position/0-->-1.107
+// or, with :faces after the scene, into satviz-query's answer with the face view's trace (--trace --view faces):
+//     the face tests run <!--check many_sides:faces /pairs/0/trace/faces_tested-->67 times
 // The number must equal the value rounded to the decimals it shows; its minus may be a hyphen or the minus sign.
 
 #include <satviz/query_json.h>
@@ -127,12 +129,13 @@ std::vector<std::string> Scenes(const std::string& text)
     return out;
 }
 
-// A checked number: "<!--check SCENE /pointer-->NUMBER", or "<!--check SCENE@STEPS /pointer-->NUMBER" for
-// satviz-sim's state after STEPS steps.
+// A checked number: "<!--check SCENE /pointer-->NUMBER", "<!--check SCENE@STEPS /pointer-->NUMBER" for
+// satviz-sim's state after STEPS steps, or "<!--check SCENE:faces /pointer-->NUMBER" for satviz-query's face view.
 struct CheckMark
 {
     std::string scene;
     int steps = 0; // 0: satviz-query
+    bool faces = false; // satviz-query's trace in the face view, not the textbook view
     std::string pointer;
     std::string shown;
 };
@@ -178,6 +181,11 @@ std::vector<CheckMark> CheckMarks(const std::string& text)
             }
             mark.steps = std::stoi(digits);
             p += 1 + digits.size();
+        }
+        else if (text.compare(p, 6, ":faces") == 0)
+        {
+            mark.faces = true;
+            p += 6;
         }
         if (p >= text.size() || text[p] != ' ')
         {
@@ -297,6 +305,15 @@ TEST_CASE("A checked number may be written with the minus sign of typeset text",
     CHECK(std::stod(marks[0].shown) == -1.40);
     CHECK(marks[1].shown == "-0.50");
     CHECK(marks[2].shown == "2.5");
+    // The face view is named after the scene; a view that is not one is no mark.
+    const std::vector<CheckMark> views =
+        CheckMarks("<!--check pair:faces /pairs/0/trace/faces_tested-->11 <!--check pair:edges /x-->2");
+    REQUIRE(views.size() == 1);
+    CHECK(views[0].scene == "pair");
+    CHECK(views[0].faces);
+    CHECK(views[0].steps == 0);
+    CHECK(views[0].shown == "11");
+    CHECK(!marks[0].faces);
     // A minus sign alone is no number.
     CHECK(CheckMarks("<!--check pair /x-->\u2212 then")[0].shown.empty());
 }
@@ -333,14 +350,16 @@ TEST_CASE("Every checked number of a worked example matches satviz-query or satv
             }
             else
             {
-                const nlohmann::ordered_json answer = QuerySceneJson(loaded.scene, file.string(), true);
+                const StepView view = mark.faces ? StepView::Faces : StepView::Textbook;
+                const nlohmann::ordered_json answer = QuerySceneJson(loaded.scene, file.string(), true, view);
                 const nlohmann::ordered_json::json_pointer at(pointer);
                 REQUIRE(answer.contains(at));
                 REQUIRE(answer.at(at).is_number());
                 value = answer.at(at).get<double>();
             }
             const double unit = std::pow(10.0, -Decimals(shown));
-            INFO((mark.steps > 0 ? "satviz-sim says " : "satviz-query says ") << value);
+            const char* tool = mark.steps > 0 ? "satviz-sim" : mark.faces ? "satviz-query --view faces" : "satviz-query";
+            INFO(tool << " says " << value);
             CHECK(std::abs(value - std::stod(shown)) <= 0.5 * unit * (1.0 + 1e-9));
             ++checked;
         }
