@@ -692,22 +692,47 @@ void LabelPlacer::Flush(Color halo)
             int ring;
             size_t anchor; // 0: the label's own anchor, k: alternates[k - 1]
         };
+        // Turns are in sixteenths of a full turn: the eight directions are the even ones.
         std::vector<Candidate> candidates;
         for (int ring = 0; ring < 3; ++ring)
         {
             for (int turn : {0, 1, -1, 2, -2, 3, -3, 4})
             {
-                candidates.push_back({turn, ring, 0});
+                candidates.push_back({2 * turn, ring, 0});
             }
             for (size_t k = 1; k <= label->alternates.size(); ++k)
             {
-                candidates.push_back({label->across ? 2 : 0, ring, k});
-                candidates.push_back({label->across ? -2 : 4, ring, k});
+                candidates.push_back({label->across ? 4 : 0, ring, k});
+                candidates.push_back({label->across ? -4 : 8, ring, k});
             }
         }
-        auto cost = [](const Candidate& c) { return 4 * std::abs(c.turn) + 3 * c.ring + 3 * static_cast<int>(c.anchor); };
+        auto cost = [](const Candidate& c) { return 2 * std::abs(c.turn) + 3 * c.ring + 3 * static_cast<int>(c.anchor); };
         std::stable_sort(candidates.begin(), candidates.end(),
                          [&](const Candidate& a, const Candidate& b) { return cost(a) < cost(b); });
+        // A vertex number, which has no leader line to fall back on, tries the eight directions between those and a
+        // fourth ring before it is left out: a corner crowded by an edge's name on one side and a contact's on the
+        // other often has room half way between them.
+        if (label->rank == LabelRank::Vertex)
+        {
+            const size_t base = candidates.size();
+            for (int ring = 0; ring < 4; ++ring)
+            {
+                for (int turn : {1, -1, 3, -3, 5, -5, 7, -7})
+                {
+                    candidates.push_back({turn, ring, 0});
+                }
+                for (int turn : {0, 2, -2, 4, -4, 6, -6, 8})
+                {
+                    if (ring == 3)
+                    {
+                        candidates.push_back({turn, ring, 0});
+                    }
+                }
+            }
+            // Nearest the preferred direction first, as above: outside the corner before inside its body.
+            std::stable_sort(candidates.begin() + static_cast<std::ptrdiff_t>(base), candidates.end(),
+                             [&](const Candidate& a, const Candidate& b) { return cost(a) < cost(b); });
+        }
         ScreenPoint from = label->anchor;
         // A face a sentence names is named even where every place near it reads as the other body's too (its face
         // flush against that body, the canvas narrow): the places are tried again without that rule.
@@ -738,7 +763,7 @@ void LabelPlacer::Flush(Color halo)
                 {
                     const ScreenPoint at = c.anchor == 0 ? label->anchor : label->alternates[c.anchor - 1];
                     const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
-                    const ScreenRect rect = Around(at, size, start + c.turn * 0.25 * kPi, reach);
+                    const ScreenRect rect = Around(at, size, start + c.turn * 0.125 * kPi, reach);
                     if (Inside(rect) && Free(rect, pass <= 0 ? kLabelSpacing : 0.0f, label->rank, pass < 0) &&
                         Away(*label, rect, at) && NearestOwn(*label, rect, at) &&
                         (faceFree || NearestFace(*label, rect)) && !ShaftBetween(*label, rect, at) &&

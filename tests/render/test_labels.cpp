@@ -2491,3 +2491,48 @@ TEST_CASE("many_sides is drawn large enough to read, with the triangle's three f
     }
     CHECK(hi - lo >= 150.0f);
 }
+
+TEST_CASE("A corner crowded by a face's name and a contact's still has its number, half way between them",
+          "[labels]")
+{
+    // Each of these corners lost its number to the labels around it, though there was room beside it: B's corner
+    // 3 by "e3" (overlapping_boxes), A's corner 2 under the ghost's "e2" (l13_sweep), B's corner 0 by "incident
+    // edge" (l05_box_in_box step 3), the triangle's corner 1 that the caption names, by "c2" (containment).
+    struct Corner
+    {
+        const char* stem;
+        int step; // from 1; 0: the figure's own step
+        int body; // 0: A, 1: B of the pair
+        int vertex;
+    };
+    for (const Corner& corner : {Corner{"overlapping_boxes", 0, 1, 3}, Corner{"l13_sweep", 0, 0, 2},
+                                 Corner{"l05_box_in_box", 3, 1, 0}, Corner{"containment", 0, 1, 1}})
+    {
+        const Scene scene = painter_test::LessonScene(corner.stem);
+        FigureSetup setup = SetUpFigure(scene, {});
+        REQUIRE(setup.Ok());
+        const int step = corner.step > 0 ? corner.step - 1 : setup.figure.step;
+        const RecordingCanvas canvas = painter_test::PaintStep(scene, setup, step);
+        const Body& body = scene.bodies[static_cast<size_t>(corner.body == 0 ? setup.study.bodyA : setup.study.bodyB)];
+        REQUIRE(body.shape.type == ShapeType::Polygon);
+        const ScreenPoint at =
+            ToScreen(setup.figure.view, TransformPoint(body.Xf(), body.shape.polygon.Vertices()[corner.vertex]));
+        const Color ink = corner.body == 0 ? palette::kShapeA : palette::kShapeBInk;
+        RecordingCanvas measure;
+        bool numbered = false;
+        for (const DrawCommand* c : canvas.InGroup("labels"))
+        {
+            if (c->kind != DrawCommand::Kind::Text || c->text != std::to_string(corner.vertex) ||
+                (c->color >> 8) != (ink >> 8))
+            {
+                continue;
+            }
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+            numbered = numbered || std::hypot(middle.x - at.x, middle.y - at.y) < 40.0f;
+        }
+        INFO(corner.stem << " step " << step + 1 << ": " << body.name << "'s corner " << corner.vertex << " at (" << at.x
+                         << ", " << at.y << ")");
+        CHECK(numbered);
+    }
+}
