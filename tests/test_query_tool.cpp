@@ -645,6 +645,19 @@ TEST_CASE("satviz-query applies a slice figure's cut: the parts' mass, centre, i
         CHECK(std::abs(c["momentum_after"][1].get<double>() - c["momentum_before"][1].get<double>()) < 1e-9 * scale);
         CHECK(c["angular_momentum_after"].get<double>() ==
               Approx(c["angular_momentum_before"].get<double>()).margin(1e-9 * scale * 10.0));
+        // The parts' kinetic energy, summed from their printed motion, is the body's: a cut neither adds nor takes.
+        double energy = 0.0;
+        for (const nlohmann::json& part : c["parts"])
+        {
+            const double vx = part["velocity"][0].get<double>();
+            const double vy = part["velocity"][1].get<double>();
+            const double w = part["angular_velocity"].get<double>();
+            energy += 0.5 * part["mass"].get<double>() * (vx * vx + vy * vy) +
+                      0.5 * part["inertia"].get<double>() * w * w;
+        }
+        const double after = c["kinetic_energy_after"].get<double>();
+        CHECK(after == Approx(energy).epsilon(1e-12));
+        CHECK(after == Approx(c["kinetic_energy_before"].get<double>()).epsilon(1e-9));
     }
     CHECK(cuts >= 30);
 }

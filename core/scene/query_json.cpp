@@ -150,8 +150,15 @@ void AddMomentum(const RigidBody& body, Vec2& momentum, double& angular)
     angular += body.inertia * body.angularVelocity + body.mass * Cross(c, body.velocity);
 }
 
+// The body's kinetic energy, 1/2 m |v|^2 + 1/2 I w^2.
+double Energy(const RigidBody& body)
+{
+    return 0.5 * body.mass * Dot(body.velocity, body.velocity) +
+           0.5 * body.inertia * body.angularVelocity * body.angularVelocity;
+}
+
 // The slice figure's cut applied to its body in the scene's world (CutBody): each part's mass, centre of mass,
-// inertia and motion, and the momenta before and after.
+// inertia and motion, and the momenta and kinetic energies before and after.
 Json CutJson(const Scene& scene)
 {
     int index = 0;
@@ -170,6 +177,7 @@ Json CutJson(const Scene& scene)
     Vec2 momentumBefore{};
     double angularBefore = 0.0;
     AddMomentum(world.bodies[static_cast<size_t>(index)], momentumBefore, angularBefore);
+    const double energyBefore = Energy(world.bodies[static_cast<size_t>(index)]);
     const Body& source = scene.bodies[static_cast<size_t>(index)];
     CutOptions options;
     options.method = source.decompose;
@@ -183,6 +191,7 @@ Json CutJson(const Scene& scene)
     Json parts = Json::array();
     Vec2 momentumAfter{};
     double angularAfter = 0.0;
+    double energyAfter = 0.0;
     for (size_t k = 0; k < cut.bodies.size(); ++k)
     {
         const RigidBody& part = world.bodies[static_cast<size_t>(cut.bodies[k])];
@@ -202,6 +211,7 @@ Json CutJson(const Scene& scene)
                          {"velocity", Pair(part.velocity)},
                          {"angular_velocity", part.angularVelocity + 0.0}});
         AddMomentum(part, momentumAfter, angularAfter);
+        energyAfter += Energy(part);
     }
     out["parts"] = parts;
     out["slivers"] = cut.slivers;
@@ -209,6 +219,8 @@ Json CutJson(const Scene& scene)
     out["momentum_after"] = Pair(momentumAfter);
     out["angular_momentum_before"] = angularBefore + 0.0;
     out["angular_momentum_after"] = angularAfter + 0.0;
+    out["kinetic_energy_before"] = energyBefore + 0.0;
+    out["kinetic_energy_after"] = energyAfter + 0.0;
     return out;
 }
 
