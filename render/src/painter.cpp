@@ -1175,6 +1175,7 @@ class Painter
                 tip = {tip.x + side.x, tip.y + side.y};
             }
             MarkedArrow(from, tip, InkOf(s), 2.0f, 11.0f);
+            m_velocityShafts.emplace_back(from, tip);
             // Kept out of the other body, where it would read as that body's velocity.
             const std::string name = shortened ? "v = " + FormatLabelNumber(Length(body.velocity)) +
                                                      (m_scene.hasWorld ? " m/s" : " per step")
@@ -1262,6 +1263,7 @@ class Painter
                 continue; // no room for an arrow
             }
             MarkedArrow(from, tip, InkOf(s), 2.0f, 11.0f);
+            m_velocityShafts.emplace_back(from, tip);
             const std::string unit = m_scene.hasWorld ? " m/s" : " per step";
             m_labels.Place(tip, "v = " + FormatLabelNumber(speed) + unit, TextStyle::Label, InkOf(s),
                           static_cast<float>(body.velocity.x), static_cast<float>(-body.velocity.y), 6.0f,
@@ -1579,6 +1581,21 @@ class Painter
                     if (ClipSegment(a, b,
                                     {std::min(t.x, back.x) - 7.0f, std::min(t.y, back.y) - 7.0f,
                                      std::max(t.x, back.x) + 7.0f, std::max(t.y, back.y) + 7.0f}))
+                    {
+                        return false;
+                    }
+                }
+                // Nor under a velocity arrow's shaft, drawn before it: the normal's head would be lost on the shaft
+                // (the box sliding along the floor, its velocity across the floor's normal).
+                for (const auto& [a0, b0] : m_velocityShafts)
+                {
+                    ScreenPoint a = a0;
+                    ScreenPoint b = b0;
+                    // Nor beside its head, where two heads read as one mark.
+                    if (ClipSegment(a, b,
+                                    {std::min(t.x, back.x) - 4.0f, std::min(t.y, back.y) - 4.0f,
+                                     std::max(t.x, back.x) + 4.0f, std::max(t.y, back.y) + 4.0f}) ||
+                        std::hypot(t.x - b0.x, t.y - b0.y) < 24.0f)
                     {
                         return false;
                     }
@@ -3050,6 +3067,7 @@ class Painter
     bool m_hasAxis = false;
     ShownAxis m_axis{};
     bool m_hasMtvArrow = false;
+    std::vector<std::pair<ScreenPoint, ScreenPoint>> m_velocityShafts; // the velocity arrows drawn, tail to head
     ScreenPoint m_mtvFrom{};
     ScreenPoint m_mtvTo{};
     CaptionLines m_caption;

@@ -601,3 +601,53 @@ TEST_CASE("An MTV of round-off size is named as touching, with no arrow or outli
     CHECK(roundOff > 0);
     CHECK(arrows > 10);
 }
+
+TEST_CASE("No arrow head of a face's normal lies on a velocity arrow's shaft or beside its head", "[marks]")
+{
+    // sliding_past drew the floor's normal from the middle of its face, its head on the sliding box's velocity;
+    // bullet_wall and pitfall_tunnel drew the bullet's front normal along its own velocity.
+    int heads = 0;
+    int failing = 0;
+    ForEachCourseFigure(
+        [&](const std::string& stem, bool faces, const FigureSetup&, int k, const RecordingCanvas& canvas) {
+            std::vector<std::pair<ScreenPoint, ScreenPoint>> shafts;
+            std::vector<ScreenPoint> tips;
+            for (const DrawCommand* c : canvas.InGroup("swept"))
+            {
+                if (c->kind == DrawCommand::Kind::Segment && c->thickness >= 1.9f && c->thickness <= 2.1f)
+                {
+                    shafts.emplace_back(c->points[0], c->points[1]);
+                }
+                if (c->kind == DrawCommand::Kind::FillConvex && c->points.size() == 3)
+                {
+                    tips.push_back(c->points[0]);
+                }
+            }
+            for (const DrawCommand& c : canvas.commands)
+            {
+                if (c.kind != DrawCommand::Kind::FillConvex || c.points.size() != 3 ||
+                    (c.group != "normals" && c.group != "projection" && c.group != "axes"))
+                {
+                    continue;
+                }
+                ++heads;
+                const ScreenPoint centre{(c.points[0].x + c.points[1].x + c.points[2].x) / 3.0f,
+                                         (c.points[0].y + c.points[1].y + c.points[2].y) / 3.0f};
+                bool hidden = false;
+                for (const auto& [a, b] : shafts)
+                {
+                    hidden = hidden || SegmentDistance(a, b, centre) < 4.0f;
+                }
+                for (const ScreenPoint& tip : tips)
+                {
+                    hidden = hidden || std::hypot(tip.x - c.points[0].x, tip.y - c.points[0].y) < 12.0f;
+                }
+                INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": a head in \"" << c.group << "\" at ("
+                                             << centre.x << ", " << centre.y << ")");
+                CHECK_FALSE(hidden);
+                failing += hidden ? 1 : 0;
+            }
+        });
+    INFO(failing << " heads on a velocity");
+    CHECK(heads > 100);
+}
