@@ -254,8 +254,8 @@ PitfallResult FloatWorld(const Scene& scene, int a, int b, const TextbookResult&
     const float far = static_cast<float>(std::max(std::abs(body.position.x), std::abs(body.position.y)));
     const std::string step = ShortestDecimal(std::nextafter(far, INFINITY) - far);
     const std::string said = out.overlap ? "a depth of " + FormatNumber(out.depth) : std::string("no collision");
-    out.verdict = "Pitfall (float on world coordinates): at " + FormatNumber(far) +
-                  " from the origin a float coordinate moves in steps of " + step + ", so it finds " + said +
+    out.verdict = "Pitfall (float on world coordinates): a float coordinate as large as A's (" + FormatNumber(far) +
+                  ") moves in steps of " + step + ", so it finds " + said +
                   ", where double in A's frame finds " +
                   (right.overlap ? "a depth of " + FormatNumber(right.depth) : std::string("no collision")) + ".";
     return out;
