@@ -2129,7 +2129,7 @@ class Painter
     // wide slab) is named beside the part that shows, not beside the other body's edge lying over it.
     // Covered means inside the other body, or within `near` pixels of it.
     static ScreenPoint FreeMiddle(ScreenPoint a, ScreenPoint b, const std::vector<ScreenPoint>& other,
-                                  float near = 0.0f)
+                                  float near = 0.0f, bool otherHasCorners = true)
     {
         auto inside = [&](ScreenPoint p) { return Covered(p, other, near); };
         constexpr int kSamples = 40;
@@ -2157,7 +2157,11 @@ class Painter
         {
             return {0.5f * (a.x + b.x), 0.5f * (a.y + b.y)};
         }
-        // All of it outside: the middle, unless it lies by the other body's corner (below).
+        // All of it outside: the middle, unless it lies by the other body's corner (below); a round body has none.
+        if (bestLength > kSamples && !otherHasCorners)
+        {
+            return {0.5f * (a.x + b.x), 0.5f * (a.y + b.y)};
+        }
         const float t = bestLength > kSamples
                             ? 0.5f
                             : (static_cast<float>(bestStart) + 0.5f * static_cast<float>(bestLength - 1)) / kSamples;
@@ -2425,7 +2429,8 @@ class Painter
                         from = wholeFrom;
                         to = wholeTo;
                     }
-                    const ScreenPoint mid = FreeMiddle(from, to, other, 12.0f);
+                    const ScreenPoint mid = FreeMiddle(from, to, other, 12.0f,
+                                                       BodyOf(1 - s).shape.type == ShapeType::Polygon);
                     const Vec2 n = Rotate(xf.q, poly.Normal(i));
                     if (m_labels.PlaceOutside(other, mid, "e" + std::to_string(i), TextStyle::Label,
                                              WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x),
