@@ -215,8 +215,8 @@ int Decimals(const std::string& number)
     return dot == std::string::npos ? 0 : static_cast<int>(number.size() - dot - 1);
 }
 
-// The last line satviz-sim prints for a scene of tutorials/scenes after `steps` steps, with --counts --energy: the program
-// itself, run once per scene and count.
+// The last line satviz-sim prints for a scene of tutorials/scenes after `steps` steps, with --counts --energy: the
+// program itself, run once per scene and count.
 nlohmann::json SimulatedState(const std::string& scene, int steps)
 {
     static std::map<std::pair<std::string, int>, nlohmann::json> done;
@@ -227,7 +227,8 @@ nlohmann::json SimulatedState(const std::string& scene, int steps)
     }
     const testing::ToolRun run =
         testing::RunTool(std::string(SATVIZ_SIM_EXE) + " " + (kTutorials / "scenes" / (scene + ".json")).string() +
-                         " --steps " + std::to_string(steps) + " --every " + std::to_string(steps) + " --counts --energy");
+                         " --steps " + std::to_string(steps) + " --every " + std::to_string(steps) +
+                         " --counts --energy");
     const std::vector<std::string> lines = testing::SplitLines(run.out);
     nlohmann::json state;
     if (run.exitCode == 0 && !lines.empty() && !lines.back().empty())
