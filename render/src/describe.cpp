@@ -928,6 +928,22 @@ std::string FormatNumber(double value)
         // Beside other numbers a bare "0" reads as another format: 0.00, like 0.50.
         return "0.00";
     }
+    if (magnitude >= 1e4 && magnitude < 1e9 && value == std::round(value))
+    {
+        // A whole number of five digits or more in groups of three, as a reader writes it: 100 000, not 100000.00,
+        // the same in a sentence, a panel and a label beside an arrow.
+        const std::string digits = std::to_string(static_cast<long long>(magnitude));
+        std::string grouped = value < 0.0 ? "-" : "";
+        for (size_t i = 0; i < digits.size(); ++i)
+        {
+            if (i > 0 && (digits.size() - i) % 3 == 0)
+            {
+                grouped += ' ';
+            }
+            grouped += digits[i];
+        }
+        return grouped;
+    }
     if (magnitude >= 0.01 && magnitude < 1e9)
     {
         // Three decimals, the third dropped when it is 0: 0.176, -0.125, 0.45, 1.30.
@@ -959,22 +975,7 @@ std::string FormatNumber(double value)
 
 std::string FormatLabelNumber(double value)
 {
-    const double magnitude = std::fabs(value);
-    if (!(magnitude >= 1e4 && magnitude < 1e9) || value != std::round(value))
-    {
-        return FormatNumber(value);
-    }
-    const std::string digits = std::to_string(static_cast<long long>(magnitude));
-    std::string text = value < 0.0 ? "-" : "";
-    for (size_t i = 0; i < digits.size(); ++i)
-    {
-        if (i > 0 && (digits.size() - i) % 3 == 0)
-        {
-            text += ' ';
-        }
-        text += digits[i];
-    }
-    return text;
+    return FormatNumber(value);
 }
 
 std::string FormatNumber(double value, int significant)

@@ -3187,3 +3187,43 @@ TEST_CASE("Undo and redo keep a student reading the verdict on the verdict, and 
         }
     }
 }
+
+TEST_CASE("A large whole number is written alike in the step sentences, the Numbers panel and the labels: 100 000, "
+          "not 100000.00",
+          "[app]")
+{
+    // The bullet of l17_bullet flies at 100 000 m/s; its sentences quote the speed and what it covers.
+    SceneResult loaded = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/l17_bullet.json");
+    REQUIRE(loaded.Ok());
+    const Scene& scene = loaded.scene;
+    REQUIRE(scene.bodies[1].velocity.x == 100000.0);
+    std::string all;
+    for (const ViewQuery query : {ViewQuery::Collide, ViewQuery::Sweep})
+    {
+        for (const StepView view : {StepView::Textbook, StepView::Faces})
+        {
+            const PairStudy study = StudyPair(scene, 0, 1, query, false, view);
+            for (int step = 0; step < study.StepCount(); ++step)
+            {
+                all += DescribeStep(scene, study, step) + "\n" + StepTitle(scene, study, step) + "\n";
+            }
+            for (const NumberRow& row : StaticTestNumbers(scene, study))
+            {
+                for (const std::string& part : row.parts)
+                {
+                    all += part + "\n";
+                }
+            }
+        }
+    }
+    INFO(all);
+    CHECK(all.find("100000") == std::string::npos);
+    CHECK(all.find("100 000") != std::string::npos);
+    // Every printer goes through the one format, which an independent grouping of the digits checks.
+    CHECK(FormatNumber(100000.0) == "100 000");
+    CHECK(FormatNumber(-1234567.0) == "-1 234 567");
+    CHECK(FormatNumber(12345.0) == "12 345");
+    CHECK(FormatNumber(1667.0) == "1667.00");
+    CHECK(FormatNumber(100000.5) == "100000.50");
+    CHECK(FormatLabelNumber(100000.0) == FormatNumber(100000.0));
+}

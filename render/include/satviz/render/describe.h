@@ -11,7 +11,8 @@ namespace satviz
 {
 
 /// A number as figures show it: three decimals (two when the third is 0) for magnitudes from 0.01 to 1e9, three
-/// significant digits otherwise, exponents as written (1.41e6), never -0, and an exact 0 as 0.00.
+/// significant digits otherwise, exponents as written (1.41e6), never -0, and an exact 0 as 0.00; a whole number of
+/// five digits or more in groups of three without decimals, as the lessons write it ("100 000", not "100000.00").
 std::string FormatNumber(double value);
 
 /// FormatNumber with at least `significant` (up to 3) significant digits: from 0.01 to 0.1, where its three
@@ -19,9 +20,8 @@ std::string FormatNumber(double value);
 /// be checked by hand from the numbers it prints (0.50 x 0.0102 = 0.0051). Otherwise the same as FormatNumber(value).
 std::string FormatNumber(double value, int significant);
 
-/// A number a label shows to be read, not computed from (a speed beside its arrow): FormatNumber, except that a
-/// whole number of five digits or more is written as the lessons and captions write it, in groups of three
-/// without decimals ("100 000", not "100000.00"). Not for text whose numbers are read back (a space splits them).
+/// A number a label shows (a speed beside its arrow): FormatNumber, so that a label, a sentence and a panel write a
+/// number alike.
 std::string FormatLabelNumber(double value);
 
 /// Two numbers as FormatNumber shows them, written side by side with as many decimals each: "(-0.342, 0.940)", not
