@@ -172,23 +172,16 @@ static double Clean(double value, double scale)
     return std::fabs(value) <= 1e-12 * std::max(1.0, std::fabs(scale)) ? 0.0 : value;
 }
 
-// A whole number of five digits or more in groups of three, as the figures' speed labels write it ("100 000"); any
-// other number to kResponseDigits.
-static std::string ResponsePart(double value)
-{
-    const std::string grouped = FormatLabelNumber(value);
-    return grouped.find(' ') != std::string::npos ? grouped : FormatNumber(value, kResponseDigits);
-}
-
 std::string FormatResponseNumber(double value)
 {
-    return ResponsePart(Clean(value, value));
+    return FormatNumber(Clean(value, value), kResponseDigits);
 }
 
 std::string FormatResponseVector(Vec2 v)
 {
     const double scale = std::max(std::fabs(v.x), std::fabs(v.y));
-    return "(" + ResponsePart(Clean(v.x, scale)) + ", " + ResponsePart(Clean(v.y, scale)) + ")";
+    return "(" + FormatNumber(Clean(v.x, scale), kResponseDigits) + ", " +
+           FormatNumber(Clean(v.y, scale), kResponseDigits) + ")";
 }
 
 const ContactPointSolve* LastPass(const ContactSolveTrace& trace, int point)
