@@ -46,6 +46,15 @@ bool ClipSegment(ScreenPoint& a, ScreenPoint& b, const ScreenRect& rect)
     return true;
 }
 
+float DistanceToSegment(ScreenPoint p, ScreenPoint a, ScreenPoint b)
+{
+    const float dx = b.x - a.x;
+    const float dy = b.y - a.y;
+    const float squared = dx * dx + dy * dy;
+    const float t = squared > 0.0f ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / squared, 0.0f, 1.0f) : 0.0f;
+    return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+}
+
 void DashedSegment(Canvas& canvas, ScreenPoint a, ScreenPoint b, Color color, float thickness, const ScreenRect& bounds,
                    float dash, float gap)
 {
@@ -134,9 +143,62 @@ std::vector<ScreenPoint> ShapeOutline(const View& view, const Shape& shape, cons
 void DashedOutline(Canvas& canvas, const std::vector<ScreenPoint>& outline, Color color, float thickness,
                    const ScreenRect& bounds)
 {
-    for (size_t i = 0; i < outline.size(); ++i)
+    constexpr float kDash = 6.0f;
+    constexpr float kGap = 4.0f;
+    constexpr float kPeriod = kDash + kGap;
+    const size_t count = outline.size();
+    // The pattern starts afresh at each corner, so that a polygon's corners show, and runs on across the bends of
+    // a curve: a circle's chords are shorter than one dash, and a dash begun on every chord would draw it solid.
+    const auto corner = [&](size_t i) {
+        const ScreenPoint& before = outline[(i + count - 1) % count];
+        const ScreenPoint& at = outline[i];
+        const ScreenPoint& after = outline[(i + 1) % count];
+        const float ax = at.x - before.x;
+        const float ay = at.y - before.y;
+        const float bx = after.x - at.x;
+        const float by = after.y - at.y;
+        const float la = std::sqrt(ax * ax + ay * ay);
+        const float lb = std::sqrt(bx * bx + by * by);
+        // A turn of more than 30 degrees: sharper than any chord of the outlines ShapeOutline makes for a circle.
+        return la > 0.0f && lb > 0.0f && (ax * bx + ay * by) < 0.866f * la * lb;
+    };
+    float phase = 0.0f;
+    for (size_t i = 0; i < count; ++i)
     {
-        DashedSegment(canvas, outline[i], outline[(i + 1) % outline.size()], color, thickness, bounds, 6.0f, 4.0f);
+        if (corner(i))
+        {
+            phase = 0.0f;
+        }
+        const ScreenPoint from = outline[i];
+        const ScreenPoint to = outline[(i + 1) % count];
+        const float dx = to.x - from.x;
+        const float dy = to.y - from.y;
+        const float length = std::sqrt(dx * dx + dy * dy);
+        if (length <= 0.0f)
+        {
+            continue;
+        }
+        const float ux = dx / length;
+        const float uy = dy / length;
+        ScreenPoint a = from;
+        ScreenPoint b = to;
+        if (ClipSegment(a, b, bounds))
+        {
+            const float s0 = (a.x - from.x) * ux + (a.y - from.y) * uy;
+            const float s1 = (b.x - from.x) * ux + (b.y - from.y) * uy;
+            // Dashes of the pattern that began at `from` with this phase, cut to the part in bounds.
+            for (float s = -phase; s < s1; s += kPeriod)
+            {
+                const float start = std::max(s, s0);
+                const float end = std::min(s + kDash, s1);
+                if (end > start)
+                {
+                    canvas.Segment({from.x + ux * start, from.y + uy * start}, {from.x + ux * end, from.y + uy * end},
+                                   color, thickness);
+                }
+            }
+        }
+        phase = std::fmod(phase + length, kPeriod);
     }
 }
 

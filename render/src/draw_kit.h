@@ -24,6 +24,9 @@ struct ScreenRect
 /// Clips the segment ab to the rectangle (Liang-Barsky); false when nothing is left.
 bool ClipSegment(ScreenPoint& a, ScreenPoint& b, const ScreenRect& rect);
 
+/// The distance from p to the segment ab, in pixels.
+float DistanceToSegment(ScreenPoint p, ScreenPoint a, ScreenPoint b);
+
 /// A dashed line, clipped to `bounds` first so that no off-screen dash is generated.
 void DashedSegment(Canvas& canvas, ScreenPoint a, ScreenPoint b, Color color, float thickness, const ScreenRect& bounds,
                    float dash = 7.0f, float gap = 5.0f);
@@ -37,7 +40,7 @@ ScreenRect Arrow(Canvas& canvas, ScreenPoint a, ScreenPoint b, Color color, floa
 /// points that keeps the chord error below a quarter pixel.
 std::vector<ScreenPoint> ShapeOutline(const View& view, const Shape& shape, const Transform& xf);
 
-/// A closed dashed outline.
+/// A closed dashed outline: the dash pattern restarts at each corner and runs on around a curve.
 void DashedOutline(Canvas& canvas, const std::vector<ScreenPoint>& outline, Color color, float thickness,
                    const ScreenRect& bounds);
 

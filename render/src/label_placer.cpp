@@ -579,6 +579,48 @@ bool LabelPlacer::LeaderCrossesBar(ScreenPoint anchor, const ScreenRect& rect) c
     });
 }
 
+bool LabelPlacer::AcrossParting(const Label& label, const ScreenRect& rect, ScreenPoint at) const
+{
+    // A corner's number or a face's name beyond the separating line from what it names sits on the other body's
+    // side, among that body's numbers, where it reads as one of them (the diamond's "3" beside the box's corner).
+    // A face a sentence names may still be named there when no other place is free, as it may beside the other
+    // body (the face rule of Flush).
+    if (label.rank > LabelRank::Named)
+    {
+        return false;
+    }
+    for (const Line& line : m_lines)
+    {
+        if (!line.parting)
+        {
+            continue;
+        }
+        const float dx = line.b.x - line.a.x;
+        const float dy = line.b.y - line.a.y;
+        const float length = std::sqrt(dx * dx + dy * dy);
+        if (length <= 0.0f)
+        {
+            continue;
+        }
+        const auto side = [&](float x, float y) { return (dx * (y - line.a.y) - dy * (x - line.a.x)) / length; };
+        const float own = side(at.x, at.y);
+        // An anchor on the line (a corner it passes through) has no side.
+        if (std::abs(own) < 1.0f)
+        {
+            continue;
+        }
+        for (const ScreenPoint& corner : {ScreenPoint{rect.minX, rect.minY}, ScreenPoint{rect.maxX, rect.minY},
+                                          ScreenPoint{rect.minX, rect.maxY}, ScreenPoint{rect.maxX, rect.maxY}})
+        {
+            if (side(corner.x, corner.y) * own < 0.0f)
+            {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
 bool LabelPlacer::LeaderCrossesLine(ScreenPoint anchor, const ScreenRect& rect) const
 {
     // An edge's name led across the separating line beside its face lands on the far side of it, among the other
@@ -767,7 +809,7 @@ void LabelPlacer::Flush(Color halo)
                     if (Inside(rect) && Free(rect, pass <= 0 ? kLabelSpacing : 0.0f, label->rank, pass < 0) &&
                         Away(*label, rect, at) && NearestOwn(*label, rect, at) &&
                         (faceFree || NearestFace(*label, rect)) && !ShaftBetween(*label, rect, at) &&
-                        OnItsSide(label->onSide, at, label->dx, label->dy, rect))
+                        (faceFree || !AcrossParting(*label, rect, at)) && OnItsSide(label->onSide, at, label->dx, label->dy, rect))
                     {
                         chosen = rect;
                         from = at;

@@ -172,6 +172,7 @@ class LabelPlacer
     bool NearestOwn(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
     static bool NearestFace(const Label& label, const ScreenRect& rect);
     bool ShaftBetween(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
+    bool AcrossParting(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
     Canvas& m_canvas;
     float m_width;
     float m_height;

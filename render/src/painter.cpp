@@ -1481,6 +1481,9 @@ class Painter
                     back = rank(p) < rank(back) ? p : back;
                 }
                 m_labels.Place(back, label, TextStyle::Label, InkOf(s), -ux, -1.0f, 3.0f, LabelRank::Verdict);
+                // Nor where a corner of the pair has its number, placed after it (the crate's corner beside the
+                // ball that reaches it).
+                KeepOffNumberedCorners(20.0f);
             }
         };
         if (r.status == SweepStatus::Hit)
@@ -1535,9 +1538,9 @@ class Painter
             // Its head off another arrow's head (the best face's normal beside the tested face's, on a small box on
             // a floor): elsewhere along the face in sight, when the middle's would sit on one.
             // At the verdict the contacts layer draws the incident edge, on the other body's outline, over it.
-            const std::vector<ScreenPoint> other =
-                m_verdict && Has(m_figure, kLayerContacts) && m_study.trace.hasClip ? OutlineOf(1 - ref.shape)
-                                                                                  : std::vector<ScreenPoint>{};
+            // Nor on the other body's outline or inside it, where it would point at that body's corner rather than
+            // show the face's direction (the diamond's face normal on the box's corner just across the gap).
+            const std::vector<ScreenPoint> other = OutlineOf(1 - ref.shape);
             // Nor on B's outline moved out by the MTV, dashed over it at the verdict.
             const std::vector<ScreenPoint> moved = MtvOutline();
             const auto clear = [&](ScreenPoint m) {
@@ -1545,6 +1548,10 @@ class Painter
                 const ScreenPoint base{t.x - 9.0f * static_cast<float>(n.x), t.y + 9.0f * static_cast<float>(n.y)};
                 const ScreenRect headBox{std::min(t.x, base.x) - 5.0f, std::min(t.y, base.y) - 5.0f,
                                          std::max(t.x, base.x) + 5.0f, std::max(t.y, base.y) + 5.0f};
+                if (Covered(t, other, 0.0f))
+                {
+                    return false;
+                }
                 for (const std::vector<ScreenPoint>* outline : {&other, &moved})
                 {
                     for (size_t k = 0; k < outline->size(); ++k)
@@ -1598,6 +1605,25 @@ class Painter
                         std::hypot(t.x - b0.x, t.y - b0.y) < 24.0f)
                     {
                         return false;
+                    }
+                }
+                // Nor across a ghost, the moving body at another time: the normal would seem to be the ghost's
+                // (the crate's face beside the ball at the time of impact). Its first pixels may touch the ghost,
+                // which meets the face at the contact.
+                for (const std::vector<ScreenPoint>& ghost : m_ghostOutlines)
+                {
+                    for (size_t k = 0; k < ghost.size(); ++k)
+                    {
+                        const ScreenPoint g0 = ghost[k];
+                        const ScreenPoint g1 = ghost[(k + 1) % ghost.size()];
+                        for (float s = 4.0f; s <= length; s += 2.0f)
+                        {
+                            const ScreenPoint at{m.x + s * static_cast<float>(n.x), m.y - s * static_cast<float>(n.y)};
+                            if (DistanceToSegment(at, g0, g1) < 3.0f)
+                            {
+                                return false;
+                            }
+                        }
                     }
                 }
                 // Only the head matters: a shaft across another head leaves both readable.
@@ -2330,6 +2356,44 @@ class Painter
         return numbers;
     }
 
+    // How far a polygon of the pair reaches from its centroid on screen, in pixels.
+    double ExtentOnScreen(int s) const
+    {
+        const Body& body = BodyOf(s);
+        double extent = 0.0;
+        for (size_t i = 0; body.shape.type == ShapeType::Polygon && i < body.shape.polygon.Vertices().size(); ++i)
+        {
+            extent = std::max(extent, Length(body.shape.polygon.Vertices()[i] - body.shape.polygon.Centroid()) * m_view.zoom);
+        }
+        return extent;
+    }
+
+    // Keeps the label added last `reach` pixels (across and down) from every numbered corner of the pair, where the
+    // corner's number, placed after it, would find no room.
+    void KeepOffNumberedCorners(float reach)
+    {
+        for (int s = 0; s < 2; ++s)
+        {
+            const Body& body = BodyOf(s);
+            for (size_t i = 0; NumbersCorners(s) && i < body.shape.polygon.Vertices().size(); ++i)
+            {
+                const ScreenPoint p = At(TransformPoint(body.Xf(), body.shape.polygon.Vertices()[i]));
+                m_labels.KeepOutOf({{p.x - reach, p.y - reach},
+                                    {p.x + reach, p.y - reach},
+                                    {p.x + reach, p.y + reach},
+                                    {p.x - reach, p.y + reach}});
+            }
+        }
+    }
+
+    // Whether a polygon of the pair has its corners numbered: numbers crowd a shape only a few dozen pixels wide,
+    // and a shape of many sides.
+    bool NumbersCorners(int s) const
+    {
+        const Body& body = BodyOf(s);
+        return body.shape.type == ShapeType::Polygon && ExtentOnScreen(s) >= 45.0 && body.shape.polygon.Count() <= 24;
+    }
+
     void Labels()
     {
         m_canvas.BeginGroup("labels");
@@ -2360,13 +2424,8 @@ class Painter
             {
                 const auto& poly = body.shape.polygon;
                 const Vec2 centroid = TransformPoint(xf, poly.Centroid());
-                // Numbers crowd a shape only a few dozen pixels wide: they are left out there.
-                double extent = 0.0;
-                for (const Vec2& v : poly.Vertices())
-                {
-                    extent = std::max(extent, Length(v - poly.Centroid()) * m_view.zoom);
-                }
-                const bool vertexNumbers = extent >= 45.0 && poly.Count() <= 24;
+                const double extent = ExtentOnScreen(s);
+                const bool vertexNumbers = NumbersCorners(s);
                 const bool edgeNumbers = extent >= 70.0 && poly.Count() <= 16;
                 // Which corners lie inside the other body; a body wholly inside it (a box in a box) has its
                 // numbers there, as it has no outside near its corners.

@@ -723,3 +723,234 @@ TEST_CASE("An edge's name inside its own body lies nearer that edge than any oth
         });
     CHECK(inside > 5);
 }
+
+namespace
+{
+// The tested pair of a figure as the painter draws it: each body's outline on screen (empty for a circle), its
+// ink (the colour of its numbers and names) and its name.
+struct PairOnScreen
+{
+    std::vector<ScreenPoint> outlines[2];
+    Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    std::string names[2];
+};
+
+PairOnScreen PairOf(const std::string& stem, const FigureSetup& setup)
+{
+    const Scene scene = painter_test::LessonScene(stem);
+    PairOnScreen pair;
+    const int ids[2] = {setup.study.bodyA, setup.study.bodyB};
+    for (int s = 0; s < 2; ++s)
+    {
+        const Body& body = scene.bodies[static_cast<size_t>(ids[s])];
+        pair.names[s] = body.name;
+        for (size_t i = 0; body.shape.type == ShapeType::Polygon && i < body.shape.polygon.Vertices().size(); ++i)
+        {
+            pair.outlines[s].push_back(
+                ToScreen(setup.figure.view, TransformPoint(body.Xf(), body.shape.polygon.Vertices()[i])));
+        }
+    }
+    return pair;
+}
+
+// Whether p lies inside the convex outline (screen y points down), `depth` pixels in at least.
+bool InsideOutline(const std::vector<ScreenPoint>& outline, ScreenPoint p, float depth)
+{
+    if (outline.size() < 3)
+    {
+        return false;
+    }
+    for (size_t i = 0; i < outline.size(); ++i)
+    {
+        const ScreenPoint a = outline[i];
+        const ScreenPoint b = outline[(i + 1) % outline.size()];
+        const float length = std::hypot(b.x - a.x, b.y - a.y);
+        if (length > 0.0f && ((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / length > -depth)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+} // namespace
+
+TEST_CASE("A ghost's dashed outline is dashed all round, a small circle's too", "[marks]")
+{
+    // The dashes restarted on every chord of a circle's outline, each shorter than one dash, which drew a small
+    // ghost ball (l10_round_bullet's) as a solid line where the key says dashed.
+    int ghosts = 0;
+    int small = 0;
+    ForEachCourseFigure([&](const std::string& stem, bool faces, const FigureSetup&, int k, const RecordingCanvas& canvas) {
+        float perimeter = 0.0f;
+        float drawn = 0.0f;
+        float longest = 0.0f;
+        for (const DrawCommand* c : canvas.InGroup("ghost"))
+        {
+            if (c->kind == DrawCommand::Kind::FillConvex && c->points.size() > 8)
+            {
+                float around = 0.0f;
+                for (size_t i = 0; i < c->points.size(); ++i)
+                {
+                    const ScreenPoint a = c->points[i];
+                    const ScreenPoint b = c->points[(i + 1) % c->points.size()];
+                    around += std::hypot(b.x - a.x, b.y - a.y);
+                }
+                // A point's ghost (a ray's) is a dot, not an outline.
+                if (around < 10.0f)
+                {
+                    continue;
+                }
+                perimeter += around;
+                longest = std::max(longest, around);
+            }
+            if (c->kind == DrawCommand::Kind::Segment && perimeter > 0.0f)
+            {
+                drawn += std::hypot(c->points[1].x - c->points[0].x, c->points[1].y - c->points[0].y);
+            }
+        }
+        if (perimeter == 0.0f)
+        {
+            return;
+        }
+        ++ghosts;
+        small += longest < 150.0f ? 1 : 0;
+        INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": " << drawn << " px of dashes around "
+                                     << perimeter << " px of round ghosts");
+        // Six pixels drawn in every ten; a solid outline draws all of it.
+        CHECK(drawn < 0.7f * perimeter);
+        CHECK(drawn > 0.4f * perimeter);
+    });
+    CHECK(ghosts > 5);
+    CHECK(small > 0);
+}
+
+TEST_CASE("A vertex number or an edge name lies on its own body's side of the separating line", "[marks]")
+{
+    // pitfall_one_shape numbered the diamond's corner 3 below the separating line, beside the box's corner 2,
+    // where it read as the box's.
+    int named = 0;
+    ForEachCourseFigure(
+        [&](const std::string& stem, bool faces, const FigureSetup& setup, int k, const RecordingCanvas& canvas) {
+            if (setup.figure.kind != FigureKind::Pair)
+            {
+                return;
+            }
+            std::vector<ScreenPoint> dashes;
+            for (const DrawCommand* c : canvas.InGroup("exit"))
+            {
+                if (c->kind == DrawCommand::Kind::Segment && (c->color >> 8) == (palette::kGap >> 8))
+                {
+                    dashes.push_back(c->points[0]);
+                    dashes.push_back(c->points[1]);
+                }
+            }
+            if (dashes.size() < 4)
+            {
+                return;
+            }
+            const ScreenPoint a = dashes.front();
+            const ScreenPoint b = dashes.back();
+            const float length = std::hypot(b.x - a.x, b.y - a.y);
+            const auto side = [&](ScreenPoint p) { return ((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / length; };
+            const PairOnScreen pair = PairOf(stem, setup);
+            RecordingCanvas measure;
+            for (const DrawCommand* c : canvas.InGroup("labels"))
+            {
+                const std::string& t = c->text;
+                const bool edge = t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+                const bool vertex = !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
+                if (c->kind != DrawCommand::Kind::Text || (!edge && !vertex))
+                {
+                    continue;
+                }
+                for (int s = 0; s < 2; ++s)
+                {
+                    const std::vector<ScreenPoint>& outline = pair.outlines[s];
+                    const size_t n = static_cast<size_t>(std::stoi(edge ? t.substr(1) : t));
+                    if ((c->color >> 8) != (pair.inks[s] >> 8) || n >= outline.size())
+                    {
+                        continue;
+                    }
+                    // What it names: the corner, or the middle of the edge.
+                    const ScreenPoint at = vertex ? outline[n]
+                                                  : ScreenPoint{0.5f * (outline[n].x + outline[(n + 1) % outline.size()].x),
+                                                                0.5f * (outline[n].y + outline[(n + 1) % outline.size()].y)};
+                    const float own = side(at);
+                    if (std::abs(own) < 1.0f)
+                    {
+                        continue;
+                    }
+                    ++named;
+                    const ScreenPoint size = measure.MeasureText(t, c->style);
+                    const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+                    INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": " << pair.names[s] << "'s " << t
+                                                 << " at (" << middle.x << ", " << middle.y << ")");
+                    CHECK(side(middle) * own > 0.0f);
+                }
+            }
+        });
+    CHECK(named > 50);
+}
+
+TEST_CASE("A tested face's normal points its head into the other body only from a face that meets it", "[marks]")
+{
+    // pitfall_one_shape drew the diamond's face normal from the middle of its face, 13 pixels from the box, its head
+    // on the box's corner, where it seemed to point at that corner; l03_corner_gap did the same with B's.
+    int heads = 0;
+    ForEachCourseFigure(
+        [&](const std::string& stem, bool faces, const FigureSetup& setup, int k, const RecordingCanvas& canvas) {
+            if (setup.figure.kind != FigureKind::Pair)
+            {
+                return;
+            }
+            const PairOnScreen pair = PairOf(stem, setup);
+            const std::vector<const DrawCommand*> drawn = canvas.InGroup("projection");
+            for (size_t i = 1; i < drawn.size(); ++i)
+            {
+                const DrawCommand& head = *drawn[i];
+                const DrawCommand& shaft = *drawn[i - 1];
+                if (head.kind != DrawCommand::Kind::FillConvex || head.points.size() != 3 ||
+                    shaft.kind != DrawCommand::Kind::Segment)
+                {
+                    continue;
+                }
+                // The body whose face the shaft starts from.
+                for (int s = 0; s < 2; ++s)
+                {
+                    const std::vector<ScreenPoint>& own = pair.outlines[s];
+                    const std::vector<ScreenPoint>& other = pair.outlines[1 - s];
+                    for (size_t f = 0; f < own.size() && other.size() >= 3; ++f)
+                    {
+                        const ScreenPoint f0 = own[f];
+                        const ScreenPoint f1 = own[(f + 1) % own.size()];
+                        if (SegmentDistance(f0, f1, shaft.points[0]) > 1.5f)
+                        {
+                            continue;
+                        }
+                        ++heads;
+                        if (!InsideOutline(other, head.points[0], 2.0f))
+                        {
+                            continue;
+                        }
+                        // How near the face comes to the other body: inside it, or touching it.
+                        float nearest = INFINITY;
+                        for (int j = 0; j <= 20; ++j)
+                        {
+                            const float t = static_cast<float>(j) / 20.0f;
+                            const ScreenPoint p{f0.x + t * (f1.x - f0.x), f0.y + t * (f1.y - f0.y)};
+                            for (size_t e = 0; e < other.size(); ++e)
+                            {
+                                nearest = std::min(nearest, InsideOutline(other, p, 0.0f)
+                                                                ? 0.0f
+                                                                : SegmentDistance(other[e], other[(e + 1) % other.size()], p));
+                            }
+                        }
+                        INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": " << pair.names[s]
+                                                     << "'s e" << f << " normal's head in " << pair.names[1 - s]);
+                        CHECK(nearest < 3.0f);
+                    }
+                }
+            }
+        });
+    CHECK(heads > 100);
+}
