@@ -66,6 +66,8 @@ const char* Meaning(LegendMark mark)
         return "dashed outline: a body at another time, or moved by the MTV";
     case LegendMark::Separating:
         return "green dashed line: a separating line";
+    case LegendMark::PitfallPush:
+        return "black dashed arrow and outline: a pitfall's wrong push";
     case LegendMark::FocusPiece:
         return "darker piece: the piece of the pair at hand (at the verdict, the one that decides)";
     case LegendMark::PieceFills:
@@ -204,6 +206,12 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
         break;
     case LegendMark::Separating:
         DashedSegment(canvas, {x, cy}, {x1, cy}, palette::kGap, 2.5f, {x - 1.0f, y, x1 + 1.0f, y + kRow}, 10.0f, 6.0f);
+        break;
+    case LegendMark::PitfallPush:
+        // As the pitfall figures draw it: a dashed shaft with a head, in ink.
+        DashedSegment(canvas, {x, cy}, {x1 - 6.0f, cy}, palette::kInk, 2.0f, {x - 1.0f, y, x1 + 1.0f, y + kRow}, 6.0f,
+                      4.0f);
+        Arrow(canvas, {x1 - 6.1f, cy}, {x1, cy}, palette::kInk, 2.0f, 10.0f);
         break;
     case LegendMark::Seam:
         // As the pieces figure draws a seam: a thin dashed line in the body's colour across its fill.

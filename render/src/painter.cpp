@@ -1480,7 +1480,16 @@ class Painter
                 {
                     back = rank(p) < rank(back) ? p : back;
                 }
-                m_labels.Place(back, label, TextStyle::Label, InkOf(s), -ux, -1.0f, 3.0f, LabelRank::Verdict);
+                // A moving body out of the picture (the bullet far from the wall in a close-up) is named on its
+                // ghost, the only place it is seen: its own name would hang at the image's edge, beside nothing.
+                const std::vector<ScreenPoint> now = ShapeOutline(m_view, body.shape, body.Xf());
+                const ScreenRect sight = SceneInSight();
+                const bool unseen = std::none_of(now.begin(), now.end(), [&](const ScreenPoint& p) {
+                    return p.x >= sight.minX && p.x <= sight.maxX && p.y >= sight.minY && p.y <= sight.maxY;
+                });
+                m_nameOnGhost[s] = m_nameOnGhost[s] || unseen;
+                m_labels.Place(back, unseen ? body.name + " at " + label : label, TextStyle::Label, InkOf(s), -ux, -1.0f,
+                               3.0f, LabelRank::Verdict);
                 // Nor where a corner of the pair has its number, placed after it (the crate's corner beside the
                 // ball that reaches it).
                 KeepOffNumberedCorners(20.0f);
@@ -1825,6 +1834,15 @@ class Painter
         // figure put it between the bars and the slab, and pushed the slab's reference face down below it).
         m_labels.Place({middle.x + ox * 14.0f, middle.y + oy * 14.0f}, text, TextStyle::Label,
                       overlap ? 0x8E3F6CFFu : 0x006E50FFu, ox, oy, 4.0f, LabelRank::Verdict);
+        // With no room there (the bars beside the image's edge), beside the band on the pair's side, rather than
+        // on a leader line back across the bars and the axis.
+        std::vector<ScreenPoint> near;
+        for (const float t : {0.5f, 0.3f, 0.7f, 0.2f, 0.8f})
+        {
+            near.push_back({bandFrom.x + t * (bandTo.x - bandFrom.x) - ox * 12.0f,
+                            bandFrom.y + t * (bandTo.y - bandFrom.y) - oy * 12.0f});
+        }
+        m_labels.AlsoAt(near);
     }
 
     // The separating line of a separating axis: perpendicular to it, through the middle of the gap.
@@ -1986,6 +2004,7 @@ class Painter
                               from.y - 20.0f * static_cast<float>(pitfall.normal.y)};
             }
             m_hasPitfallArrow = true;
+            m_used.push_back(LegendMark::PitfallPush);
             // Where the pitfall's push leaves B, and how deep B still lies in A there (or lies now, pushed the
             // wrong way): the wrong depth the mistake is about, beside the MTV's outline that just clears A.
             Transform pushed = m_bodyB.Xf();
@@ -2521,6 +2540,10 @@ class Painter
         for (int s = 0; s < 2; ++s)
         {
             const Body& body = BodyOf(s);
+            if (m_nameOnGhost[s])
+            {
+                continue;
+            }
             const Vec2 center = ShapeCenter(body.shape, body.Xf());
             // A name wider or taller than its shape on screen would cover it: it goes beside the shape instead,
             // to the right of a thin one, below a flat one.
@@ -3131,6 +3154,7 @@ class Painter
     bool m_hasAxis = false;
     ShownAxis m_axis{};
     bool m_hasMtvArrow = false;
+    bool m_nameOnGhost[2] = {false, false}; // a body out of the picture, named on its ghost
     std::vector<std::pair<ScreenPoint, ScreenPoint>> m_velocityShafts; // the velocity arrows drawn, tail to head
     ScreenPoint m_mtvFrom{};
     ScreenPoint m_mtvTo{};

@@ -954,3 +954,66 @@ TEST_CASE("A tested face's normal points its head into the other body only from 
         });
     CHECK(heads > 100);
 }
+
+TEST_CASE("A body's name is written only where some of the body is in the picture", "[marks]")
+{
+    // bullet_wall_close, a close-up at the wall, wrote "bullet" at the image's left edge for a bullet far out of the
+    // picture, beside nothing; the bullet is seen there only as its ghost, which now carries its name.
+    int names = 0;
+    ForEachCourseFigure(
+        [&](const std::string& stem, bool faces, const FigureSetup& setup, int k, const RecordingCanvas& canvas) {
+            if (setup.figure.kind != FigureKind::Pair)
+            {
+                return;
+            }
+            const Scene scene = painter_test::LessonScene(stem);
+            const int ids[2] = {setup.study.bodyA, setup.study.bodyB};
+            for (const DrawCommand* c : canvas.InGroup("labels"))
+            {
+                for (int s = 0; s < 2; ++s)
+                {
+                    const Body& body = scene.bodies[static_cast<size_t>(ids[s])];
+                    if (c->kind != DrawCommand::Kind::Text || c->text != body.name)
+                    {
+                        continue;
+                    }
+                    ++names;
+                    // Points of the body (along its edges, or a circle's centre and rim), on screen:
+                    // one of them in the picture.
+                    std::vector<Vec2> points;
+                    if (body.shape.type == ShapeType::Polygon)
+                    {
+                        const auto& v = body.shape.polygon.Vertices();
+                        for (size_t i = 0; i < v.size(); ++i)
+                        {
+                            for (int j = 0; j < 64; ++j)
+                            {
+                                const double t = j / 64.0;
+                                points.push_back(TransformPoint(body.Xf(), (1.0 - t) * v[i] + t * v[(i + 1) % v.size()]));
+                            }
+                        }
+                    }
+                    else
+                    {
+                        const Vec2 centre = TransformPoint(body.Xf(), body.shape.circle.center);
+                        points.push_back(centre);
+                        for (int i = 0; i < 8; ++i)
+                        {
+                            const double a = 0.25 * 3.14159265358979 * i;
+                            points.push_back(centre + body.shape.circle.radius * Vec2{std::cos(a), std::sin(a)});
+                        }
+                    }
+                    bool seen = false;
+                    for (const Vec2& p : points)
+                    {
+                        const ScreenPoint at = ToScreen(setup.figure.view, p);
+                        seen = seen || (at.x >= 0.0f && at.x <= static_cast<float>(setup.figure.view.width) &&
+                                        at.y >= 0.0f && at.y <= static_cast<float>(setup.figure.view.height));
+                    }
+                    INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": \"" << body.name << "\"");
+                    CHECK(seen);
+                }
+            }
+        });
+    CHECK(names > 100);
+}
