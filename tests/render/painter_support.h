@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Helpers of the painter's tests: loading a scene as satviz-render draws it, stepping a lesson's world, random pairs,
-// painting a step on a recording canvas, projecting a placed shape and reading a number from the drawn texts.
+// painting a step on a recording canvas, projecting a placed shape, reading a number from the drawn texts, the lists of
+// the course's figures and what a drawn label names.
 #pragma once
 
 #include "support/random_shapes.h"
@@ -14,8 +15,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace satviz::painter_test
 {
@@ -143,6 +148,48 @@ inline double NumberAfter(const RecordingCanvas& canvas, const std::string& grou
         }
     }
     return std::nan("");
+}
+
+/// The lists of tutorials/figures.cmake, by name (SATVIZ_FIGURE_SCENES, SATVIZ_STEP_SCENES, ...): the scene stems of
+/// each set(NAME ...) block.
+inline std::map<std::string, std::vector<std::string>> CourseFigureLists()
+{
+    std::ifstream in(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/figures.cmake");
+    REQUIRE(in);
+    std::map<std::string, std::vector<std::string>> lists;
+    std::string current;
+    for (std::string line; std::getline(in, line);)
+    {
+        if (line.rfind("set(SATVIZ_", 0) == 0)
+        {
+            current = line.substr(4, line.find_first_of(" )", 4) - 4);
+            lists[current];
+            continue;
+        }
+        std::istringstream words(line);
+        for (std::string word; !current.empty() && words >> word;)
+        {
+            if (word == ")")
+            {
+                current.clear();
+                break;
+            }
+            lists[current].push_back(word);
+        }
+    }
+    return lists;
+}
+
+/// Whether a label is an edge's name, "e" and a number ("e3").
+inline bool IsEdgeName(const std::string& text)
+{
+    return text.size() >= 2 && text[0] == 'e' && text.find_first_not_of("0123456789", 1) == std::string::npos;
+}
+
+/// Whether a label is a vertex number ("3").
+inline bool IsVertexNumber(const std::string& text)
+{
+    return !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
 }
 
 } // namespace satviz::painter_test

@@ -33,41 +33,6 @@ struct Box
     bool Overlaps(const Box& o) const { return minX < o.maxX && o.minX < maxX && minY < o.maxY && o.minY < maxY; }
 };
 
-// The lists of tutorials/figures.cmake: set(NAME scene scene ...) blocks, by name.
-std::map<std::string, std::vector<std::string>> FigureLists()
-{
-    std::ifstream in(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/figures.cmake");
-    REQUIRE(in);
-    std::map<std::string, std::vector<std::string>> lists;
-    std::string line;
-    std::string current;
-    while (std::getline(in, line))
-    {
-        if (line.rfind("set(SATVIZ_", 0) == 0)
-        {
-            current = line.substr(4);
-            current = current.substr(0, current.find_first_of(" )"));
-            lists[current];
-            continue;
-        }
-        if (!current.empty())
-        {
-            std::istringstream words(line);
-            std::string word;
-            while (words >> word)
-            {
-                if (word == ")")
-                {
-                    current.clear();
-                    break;
-                }
-                lists[current].push_back(word);
-            }
-        }
-    }
-    return lists;
-}
-
 bool Opaque(Color color)
 {
     return (color & 0xFFu) >= 0xC0u;
@@ -459,8 +424,7 @@ std::vector<std::string> VertexNumbersInOtherBody(const RecordingCanvas& canvas,
     const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
     for (const DrawCommand* c : canvas.InGroup("labels"))
     {
-        if (c->kind != DrawCommand::Kind::Text || c->text.empty() ||
-            c->text.find_first_not_of("0123456789") != std::string::npos)
+        if (c->kind != DrawCommand::Kind::Text || !painter_test::IsVertexNumber(c->text))
         {
             continue;
         }
@@ -656,8 +620,8 @@ std::vector<std::string> LabelsOnDashedOutlines(const RecordingCanvas& canvas)
             continue;
         }
         const std::string& t = c.text;
-        const bool digits = !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
-        const bool edge = t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+        const bool digits = painter_test::IsVertexNumber(t);
+        const bool edge = painter_test::IsEdgeName(t);
         if (digits || edge)
         {
             continue;
@@ -730,8 +694,8 @@ std::vector<std::string> LabelsOnLines(const RecordingCanvas& canvas)
             continue;
         }
         const std::string& t = c.text;
-        const bool digits = !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
-        const bool edge = t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+        const bool digits = painter_test::IsVertexNumber(t);
+        const bool edge = painter_test::IsEdgeName(t);
         const ScreenPoint size = measure.MeasureText(c.text, c.style);
         const Box ink{c.points[0].x + 1.0f, c.points[0].y + 2.0f, c.points[0].x + size.x - 1.0f,
                       c.points[0].y + size.y - 2.0f};
@@ -891,8 +855,7 @@ std::vector<std::string> EdgeNamesBehind(const RecordingCanvas& canvas, const Sc
     }
     for (const DrawCommand* c : canvas.InGroup("labels"))
     {
-        if (c->kind != DrawCommand::Kind::Text || c->text.size() < 2 || c->text[0] != 'e' ||
-            c->text.find_first_not_of("0123456789", 1) != std::string::npos)
+        if (c->kind != DrawCommand::Kind::Text || !painter_test::IsEdgeName(c->text))
         {
             continue;
         }
@@ -1023,8 +986,8 @@ std::vector<std::string> NamedFacesUnnamed(const RecordingCanvas& canvas, const 
         std::vector<int> shown;
         for (const DrawCommand* c : canvas.InGroup("labels"))
         {
-            if (c->kind == DrawCommand::Kind::Text && (c->color >> 8) == (inks[s] >> 8) && c->text.size() >= 2 &&
-                c->text[0] == 'e' && c->text.find_first_not_of("0123456789", 1) == std::string::npos)
+            if (c->kind == DrawCommand::Kind::Text && (c->color >> 8) == (inks[s] >> 8) &&
+                painter_test::IsEdgeName(c->text))
             {
                 shown.push_back(std::stoi(c->text.substr(1)));
             }
@@ -1184,7 +1147,7 @@ std::vector<std::string> FaceNamesAstray(const RecordingCanvas& canvas, const Sc
             continue;
         }
         const std::string& t = c->text;
-        const bool edge = t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+        const bool edge = painter_test::IsEdgeName(t);
         const bool clip = t == "reference face" || t == "incident edge";
         int s = -1;
         for (int k = 0; k < 2; ++k)
@@ -1256,7 +1219,7 @@ std::vector<std::string> EdgeNamesByRivalCorners(const RecordingCanvas& canvas, 
             continue;
         }
         const std::string& t = c->text;
-        const bool edge = t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+        const bool edge = painter_test::IsEdgeName(t);
         int s = -1;
         for (int k = 0; k < 2; ++k)
         {
@@ -1353,8 +1316,8 @@ std::vector<std::string> ArrowsBetween(const RecordingCanvas& canvas, const Scen
             continue;
         }
         const std::string& t = c->text;
-        const bool digits = !t.empty() && t.size() <= 3 && t.find_first_not_of("0123456789") == std::string::npos;
-        const bool edge = t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+        const bool digits = t.size() <= 3 && painter_test::IsVertexNumber(t);
+        const bool edge = painter_test::IsEdgeName(t);
         if (!digits && !edge)
         {
             continue;
@@ -1474,9 +1437,9 @@ std::vector<std::string> NamesAstray(const RecordingCanvas& canvas, const Scene&
             const bool own = end.x >= box.minX - 0.5f && end.x <= box.maxX + 0.5f && end.y >= box.minY - 0.5f &&
                              end.y <= box.maxY + 0.5f;
             const std::string& t = c->text;
-            const bool digits = !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
+            const bool digits = painter_test::IsVertexNumber(t);
             const bool edge =
-                t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
+                painter_test::IsEdgeName(t);
             if (!own || !(digits || edge))
             {
                 continue;
@@ -1620,7 +1583,7 @@ std::vector<std::string> LabelsNearerAnotherMark(const RecordingCanvas& canvas, 
             }
             continue;
         }
-        if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos)
+        if (!painter_test::IsVertexNumber(t))
         {
             continue;
         }
@@ -1981,7 +1944,7 @@ TEST_CASE("The label check finds a label on a label, on an arrow head, under a l
 TEST_CASE("No label of any figure of the course covers another, an arrow head or a mark, or leaves the image",
           "[labels]")
 {
-    const auto lists = FigureLists();
+    const auto lists = painter_test::CourseFigureLists();
     REQUIRE(lists.count("SATVIZ_FIGURE_SCENES") == 1);
     REQUIRE(lists.count("SATVIZ_STEP_SCENES") == 1);
     REQUIRE(lists.count("SATVIZ_FACE_STEP_SCENES") == 1);
@@ -2038,7 +2001,7 @@ TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentence
     // shrinks with it: l17_skips' right wall drew too small to have its edges named, while the verdict spoke of
     // "right wall's edge 3". The app's smallest window, about 1180 x 640 with a lesson open, leaves 360 x 600
     // (kMinCanvasWidth x kMinCanvasHeight), where they must still be named.
-    const auto lists = FigureLists();
+    const auto lists = painter_test::CourseFigureLists();
     int drawn = 0;
     for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES"})
     {
@@ -2088,7 +2051,7 @@ TEST_CASE("On the app's narrower canvas beside a lesson, the face view names eve
     // room yet at 360 x 600: the reference face of l04_wrong_way's verdict (B's e3, flush against A, among
     // "reference face", c1 and c2).
     const std::set<std::string> crowded = {"l04_wrong_way 9 360"};
-    const auto lists = FigureLists();
+    const auto lists = painter_test::CourseFigureLists();
     int drawn = 0;
     int failing = 0;
     for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES"})
@@ -2138,7 +2101,7 @@ TEST_CASE("In the face view of every pair of the course, every face the sentence
     // The face view can be chosen for any pair in the app, so every figure of a pair is drawn in it, every step: a
     // face a step asks about ("does box lie wholly beyond floor's edge 1?") is named where any of it is in sight,
     // outside its body or, with no room there, just inside it.
-    const auto lists = FigureLists();
+    const auto lists = painter_test::CourseFigureLists();
     int drawn = 0;
     int failing = 0;
     for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES"})
@@ -2359,7 +2322,7 @@ TEST_CASE("With the legend layer, no figure of the course hides a label or a bod
     // The key is a panel drawn over the picture: in a pieces figure it covered the L's corner and its name L1. Every
     // figure of the course, drawn with its own layers and the legend, keeps every text, every mark and every body's
     // fill off the key's panel.
-    const auto lists = FigureLists();
+    const auto lists = painter_test::CourseFigureLists();
     int keys = 0;
     std::vector<std::string> failing;
     for (const auto& [list, steps, faces] : {std::tuple{"SATVIZ_FIGURE_SCENES", false, false},

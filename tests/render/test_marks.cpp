@@ -28,34 +28,6 @@ using namespace satviz;
 namespace
 {
 
-// The lists of tutorials/figures.cmake: set(NAME scene scene ...) blocks, by name.
-std::map<std::string, std::vector<std::string>> FigureScenes()
-{
-    std::ifstream in(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/figures.cmake");
-    REQUIRE(in);
-    std::map<std::string, std::vector<std::string>> lists;
-    std::string current;
-    for (std::string line; std::getline(in, line);)
-    {
-        if (line.rfind("set(SATVIZ_", 0) == 0)
-        {
-            current = line.substr(4, line.find_first_of(" )", 4) - 4);
-            continue;
-        }
-        std::istringstream words(line);
-        for (std::string word; !current.empty() && words >> word;)
-        {
-            if (word == ")")
-            {
-                current.clear();
-                break;
-            }
-            lists[current].push_back(word);
-        }
-    }
-    return lists;
-}
-
 // Paints every figure of the course as the figures target draws it (tutorials/figures.cmake: each figure at its own
 // step, every step of the stepped figures, every step of the face-view figures) on a recording canvas, and hands each
 // to `check(stem, faces, setup, step, canvas)`; `faces` is true for the face view. The canvas is the check's to
@@ -63,7 +35,7 @@ std::map<std::string, std::vector<std::string>> FigureScenes()
 template <typename Check>
 void ForEachCourseFigure(Check&& check)
 {
-    const auto lists = FigureScenes();
+    const auto lists = painter_test::CourseFigureLists();
     for (const char* list : {"SATVIZ_FIGURE_SCENES", "SATVIZ_STEP_SCENES", "SATVIZ_FACE_STEP_SCENES"})
     {
         const bool allSteps = std::string(list) != "SATVIZ_FIGURE_SCENES";
@@ -670,8 +642,7 @@ TEST_CASE("An edge's name inside its own body lies nearer that edge than any oth
             for (const DrawCommand* c : canvas.InGroup("labels"))
             {
                 const std::string& t = c->text;
-                if (c->kind != DrawCommand::Kind::Text || t.size() < 2 || t[0] != 'e' ||
-                    t.find_first_not_of("0123456789", 1) != std::string::npos)
+                if (c->kind != DrawCommand::Kind::Text || !painter_test::IsEdgeName(t))
                 {
                     continue;
                 }
@@ -857,8 +828,8 @@ TEST_CASE("A vertex number or an edge name lies on its own body's side of the se
             for (const DrawCommand* c : canvas.InGroup("labels"))
             {
                 const std::string& t = c->text;
-                const bool edge = t.size() >= 2 && t[0] == 'e' && t.find_first_not_of("0123456789", 1) == std::string::npos;
-                const bool vertex = !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
+                const bool edge = painter_test::IsEdgeName(t);
+                const bool vertex = painter_test::IsVertexNumber(t);
                 if (c->kind != DrawCommand::Kind::Text || (!edge && !vertex))
                 {
                     continue;
