@@ -311,9 +311,9 @@ void PaintDiscCast(Canvas& surface, const Scene& scene, int targetIndex, int dis
         canvas.FillCircle(c, radius, WithAlpha(palette::kShapeB, 0.35f));
         canvas.Circle(c, radius, palette::kShapeBInk, 2.0f);
         // The normal from the contact point through the centre and beyond: the centre lies one radius along it,
-        // its dot drawn over the arrow.
+        // its dot drawn over the arrow. Black, as a face's normal is: vermillion arrows are MTVs.
         const ScreenPoint tip = ToScreen(view, hit.point + (r + 22.0 / view.zoom) * hit.normal);
-        labels.Reserve(Arrow(canvas, p, tip, palette::kResult, 2.0f));
+        labels.Reserve(Arrow(canvas, p, tip, palette::kInk, 2.0f));
         canvas.FillCircle(c, 3.0f, palette::kInk);
         canvas.FillCircle(p, 4.5f, palette::kResult);
         labels.Reserve({p.x - 5.0f, p.y - 5.0f, p.x + 5.0f, p.y + 5.0f});

@@ -28,6 +28,8 @@ const char* Meaning(LegendMark mark)
         return "long grey dashes through the pair: the candidate axes";
     case LegendMark::AxisFace:
         return "thick dark edge: the face whose normal is the axis";
+    case LegendMark::Normal:
+        return "short arrow on a face: its outward normal (black on the axis's face)";
     case LegendMark::VertexAxis:
         return "dark dot and dashed line: the axis from a vertex (or a centre) to a circle's centre";
     case LegendMark::BestAxis:
@@ -50,6 +52,8 @@ const char* Meaning(LegendMark mark)
         return "orange band on the time bar: no common time, the axes' windows miss";
     case LegendMark::Other:
         return "grey body: not in the tested pair (a wall, a mark)";
+    case LegendMark::Centre:
+        return "small dot in a circle: its centre";
     case LegendMark::Asleep:
         return "hatched body: asleep, neither moved nor tested until woken";
     case LegendMark::Reference:
@@ -68,6 +72,8 @@ const char* Meaning(LegendMark mark)
         return "green dashed line: a separating line";
     case LegendMark::PitfallPush:
         return "black dashed arrow and outline: a pitfall's wrong push";
+    case LegendMark::Cut:
+        return "vermillion line with dots: a cut, and where it crosses the outline";
     case LegendMark::FocusPiece:
         return "darker piece: the piece of the pair at hand (at the verdict, the one that decides)";
     case LegendMark::PieceFills:
@@ -96,6 +102,11 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
         break;
     case LegendMark::AxisFace:
         canvas.Segment({x, cy}, {x1, cy}, palette::kInk, 4.0f);
+        break;
+    case LegendMark::Normal:
+        // As the painter draws them: a short arrow in a body's colour, and a black one on the axis's face.
+        Arrow(canvas, {x + 6.0f, y + kRow - 2.0f}, {x + 6.0f, y + 2.0f}, palette::kShapeA, 1.5f, 7.0f);
+        Arrow(canvas, {x + 20.0f, y + kRow - 2.0f}, {x + 20.0f, y + 2.0f}, palette::kInk, 2.0f, 8.0f);
         break;
     case LegendMark::VertexAxis:
         // As the painter draws a vertex axis: a dashed line from the vertex's dot to the centre.
@@ -152,6 +163,10 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
             canvas.Polyline(box, 4, true, palette::kOther, 2.0f);
         }
         break;
+    case LegendMark::Centre:
+        canvas.Circle({x + 0.5f * kSwatch, cy}, 7.0f, palette::kShapeBInk, 1.5f);
+        canvas.FillCircle({x + 0.5f * kSwatch, cy}, 2.5f, palette::kShapeBInk);
+        break;
     case LegendMark::Asleep:
     {
         // A grey body hatched as the broadphase layer hatches a sleeping one: diagonal lines 7 pixels apart.
@@ -206,6 +221,13 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
         break;
     case LegendMark::Separating:
         DashedSegment(canvas, {x, cy}, {x1, cy}, palette::kGap, 2.5f, {x - 1.0f, y, x1 + 1.0f, y + kRow}, 10.0f, 6.0f);
+        break;
+    case LegendMark::Cut:
+        // As the slice figures draw it: the line, its ends' small dots, a larger dot where it crosses an outline.
+        canvas.Segment({x + 2.0f, cy}, {x1 - 2.0f, cy}, palette::kResult, 2.0f);
+        canvas.FillCircle({x + 2.0f, cy}, 3.0f, palette::kResult);
+        canvas.FillCircle({x1 - 2.0f, cy}, 3.0f, palette::kResult);
+        canvas.FillCircle({x + 0.5f * kSwatch, cy}, 4.5f, palette::kResult);
         break;
     case LegendMark::PitfallPush:
         // As the pitfall figures draw it: a dashed shaft with a head, in ink.

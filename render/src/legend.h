@@ -19,6 +19,7 @@ enum class LegendMark
 {
     CandidateAxis, ///< the long grey dashes through the pair: every candidate axis
     AxisFace,   ///< the thick dark edge whose normal is the current axis
+    Normal,     ///< a short arrow on a face: its outward normal, in its body's colour, black on the axis's face
     VertexAxis, ///< the dark dot and dashed line: an axis from a vertex (or a centre) to a circle's centre
     BestAxis,   ///< the light-blue edges of the best axis so far (of axes that tie, the first tested)
     Overlap,    ///< the purple band: the two intervals overlap
@@ -30,6 +31,7 @@ enum class LegendMark
     Window,     ///< the pink band on the time bar: the times at which every axis so far overlaps
     NoWindow,   ///< the orange band under the time bar: the axes' windows do not meet, no common time
     Other,      ///< a grey body: not in the tested pair (a wall, a mark)
+    Centre,     ///< a small dot in a circle: its centre
     Asleep,     ///< a hatched body: asleep in a world (neither moved nor tested)
     Reference,  ///< the thick edge in a body's colour: the reference face
     Incident,   ///< the doubled edge: the incident edge
@@ -39,6 +41,7 @@ enum class LegendMark
     Dashed,     ///< a dashed outline: a body at another time, or moved out by the MTV
     Separating, ///< the green dashed line: a separating line
     PitfallPush, ///< the black dashed arrow and outline: a pitfall's wrong push, beside the right one
+    Cut,        ///< the vermillion line with dots: a cut, and where it crosses the outline
     FocusPiece, ///< a convex piece filled darker than the others: the piece of the pair at hand, or that decides
     PieceFills, ///< fills in turn sky blue, orange, green, yellow: each part of a cut, or each convex piece, in its own
     Reflex,     ///< the vermillion ring round a corner of a concave outline: a reflex vertex

@@ -645,6 +645,7 @@ class Painter
                 break;
             }
         }
+        m_gridSpacing = spacing;
         const Vec2 low = ToWorld(m_view, {0.0f, Height()});
         const Vec2 high = ToWorld(m_view, {Width(), 0.0f});
         const Color grid = WithAlpha(palette::kFaint, 0.45f);
@@ -857,7 +858,21 @@ class Painter
         // Long grey dashes, which the solid faint lines of the grid (as often square to the world as the axes) do
         // not look like.
         auto line = [&](Vec2 d) {
-            DashedSegment(m_canvas, At(m_discCenter - reach * d), At(m_discCenter + reach * d), kCandidateAxisColor,
+            // A candidate axis drawn on a line of the grid would be lost on it, its dashes read as the grid's solid
+            // line (two aligned boxes): it runs beside it instead, still across the pair.
+            Vec2 through = m_discCenter;
+            const Vec2 across = LeftPerp(d);
+            const bool alongGrid = std::fabs(d.x) < 1e-12 || std::fabs(d.y) < 1e-12;
+            if (alongGrid && m_gridSpacing > 0.0)
+            {
+                const double at = Dot(through, across);
+                const double off = at - m_gridSpacing * std::round(at / m_gridSpacing);
+                if (std::fabs(off) * m_view.zoom < 4.0)
+                {
+                    through = through + ((off >= 0.0 ? 10.0 : -10.0) / m_view.zoom - off) * across;
+                }
+            }
+            DashedSegment(m_canvas, At(through - reach * d), At(through + reach * d), kCandidateAxisColor,
                           kCandidateAxisWidth, m_bounds, kCandidateAxisDash, kCandidateAxisGap);
         };
         for (int s = 0; s < 2; ++s)
@@ -1053,12 +1068,14 @@ class Painter
         if (shape.type == ShapeType::Circle)
         {
             m_canvas.FillCircle(At(TransformPoint(xf, shape.circle.center)), 2.5f, color);
+            m_used.push_back(LegendMark::Centre);
         }
     }
 
     void Normals()
     {
         m_canvas.BeginGroup("normals");
+        m_used.push_back(LegendMark::Normal);
         for (int s = 0; s < 2; ++s)
         {
             const Body& body = BodyOf(s);
@@ -2091,6 +2108,7 @@ class Painter
             m_canvas.Circle(screen[i], 5.5f, palette::kBackground, 1.5f);
             m_labels.Reserve(Disc(screen[i], 6.5f));
             m_labels.AddMark(MarkKind::Contact, screen[i]);
+            m_contactDots.push_back(screen[i]);
         }
         // Two contacts closer on screen than a label is wide share one label, placed between them.
         if (count == 2 && std::hypot(screen[0].x - screen[1].x, screen[0].y - screen[1].y) < 16.0f)
@@ -2464,6 +2482,16 @@ class Painter
                         continue;
                     }
                     const Vec2 v = TransformPoint(xf, poly.Vertices()[i]);
+                    // Where a contact point's dot or an arrow's head stands on the corner, it takes the corner's
+                    // place (lesson 1): a number beside it would read as the dot's or the arrow's.
+                    const ScreenPoint corner = At(v);
+                    const auto on = [&](ScreenPoint p) { return std::hypot(p.x - corner.x, p.y - corner.y) < 7.0f; };
+                    if (!isNamed && (std::any_of(m_contactDots.begin(), m_contactDots.end(), on) ||
+                                     std::any_of(m_velocityShafts.begin(), m_velocityShafts.end(),
+                                                 [&](const auto& shaft) { return on(shaft.second); })))
+                    {
+                        continue;
+                    }
                     const Vec2 out = v - centroid;
                     if (!m_labels.PlaceOutside(other, At(v), std::to_string(i), TextStyle::Label, InkOf(s),
                                                static_cast<float>(out.x), static_cast<float>(-out.y), 4.0f,
@@ -3156,6 +3184,8 @@ class Painter
     bool m_hasMtvArrow = false;
     bool m_nameOnGhost[2] = {false, false}; // a body out of the picture, named on its ghost
     std::vector<std::pair<ScreenPoint, ScreenPoint>> m_velocityShafts; // the velocity arrows drawn, tail to head
+    std::vector<ScreenPoint> m_contactDots;                            // the contact points drawn
+    double m_gridSpacing = 0.0;                                        // the grid's, in world units (0: no grid)
     ScreenPoint m_mtvFrom{};
     ScreenPoint m_mtvTo{};
     CaptionLines m_caption;

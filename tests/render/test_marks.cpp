@@ -988,3 +988,56 @@ TEST_CASE("A body's name is written only where some of the body is in the pictur
         });
     CHECK(names > 100);
 }
+
+TEST_CASE("A corner with a contact point's dot on it has no number beside it, as lesson 1 says", "[marks]")
+{
+    // l08_throw's c2 lies on the block's corner 2: its "2" sat between the two dots, nearer c2's dot than "c2" was;
+    // l15_slope kept the box's "1" beside c2 on corner 1 while leaving corner 0, under c1, unnumbered.
+    int dots = 0;
+    ForEachCourseFigure(
+        [&](const std::string& stem, bool faces, const FigureSetup& setup, int k, const RecordingCanvas& canvas) {
+            if (setup.figure.kind != FigureKind::Pair)
+            {
+                return;
+            }
+            std::vector<ScreenPoint> contacts;
+            for (const DrawCommand* c : canvas.InGroup("contacts"))
+            {
+                if (c->kind == DrawCommand::Kind::FillCircle && (c->color >> 8) == (palette::kResult >> 8))
+                {
+                    contacts.push_back(c->points[0]);
+                }
+            }
+            if (contacts.empty())
+            {
+                return;
+            }
+            const PairOnScreen pair = PairOf(stem, setup);
+            for (const DrawCommand* c : canvas.InGroup("labels"))
+            {
+                if (c->kind != DrawCommand::Kind::Text || !painter_test::IsVertexNumber(c->text))
+                {
+                    continue;
+                }
+                for (int s = 0; s < 2; ++s)
+                {
+                    const size_t n = static_cast<size_t>(std::stoi(c->text));
+                    if ((c->color >> 8) != (pair.inks[s] >> 8) || n >= pair.outlines[s].size())
+                    {
+                        continue;
+                    }
+                    const ScreenPoint corner = pair.outlines[s][n];
+                    for (const ScreenPoint& dot : contacts)
+                    {
+                        const bool on = std::hypot(dot.x - corner.x, dot.y - corner.y) < 5.0f;
+                        dots += on ? 1 : 0;
+                        INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": " << pair.names[s] << "'s "
+                                                     << c->text << " beside a contact's dot on its corner");
+                        CHECK_FALSE(on);
+                    }
+                }
+            }
+        });
+    INFO(dots << " numbers beside a dot on their corner");
+    CHECK(dots == 0);
+}
