@@ -594,7 +594,7 @@ void Panels::SidePanel()
     if (m_app.GetViewer().TestsPair())
     {
         StepControls();
-        if (m_app.GetViewer().CurrentFigure().kind != FigureKind::Pieces)
+        if (m_app.GetViewer().ShowsSatNumbers())
         {
             Inspector();
         }
@@ -667,6 +667,14 @@ void Panels::StepControls()
                                                  : "pair of pieces " + std::to_string(step) + " of " +
                                                        std::to_string(last - 1));
         StepRow(name);
+        return;
+    }
+    if (viewer.CurrentFigure().kind == FigureKind::DiscCast)
+    {
+        // The cast's answer is the canvas's (ShowsSatNumbers).
+        WrappedText("The disc is cast along its path against the target, as the canvas shows: its caption gives the "
+                    "time and the point of first contact. SAT's axes and numbers are not shown: for a concave target "
+                    "they would be those of its hull, which is not the body.");
         return;
     }
     int query = static_cast<int>(choices.query);

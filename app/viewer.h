@@ -53,6 +53,13 @@ class Viewer
     /// True when the last finished test is of a pair: a figure of one body (a decomposition or a slice of a scene
     /// that holds that body alone) has a figure but no pair, no steps and nothing to inspect.
     bool TestsPair() const { return m_setup.Ok() && m_setup.study.bodyA >= 0 && m_setup.study.bodyB >= 0; }
+    /// True when the panels show SAT's steps and numbers for the pair: not for a figure that answers by another
+    /// method, piece by piece or by casting a disc, where they would be those of a concave body's hull and
+    /// contradict the canvas (a disc stopped on the hull's lid, not in the cup).
+    bool ShowsSatNumbers() const
+    {
+        return TestsPair() && m_setup.figure.kind != FigureKind::Pieces && m_setup.figure.kind != FigureKind::DiscCast;
+    }
     /// The scene that Setup() describes: the current one, or the one before the edits whose test still runs.
     const Scene& Studied() const { return m_studied; }
     /// The figure to paint now: the last test's, with the camera, the step and the stepped world.

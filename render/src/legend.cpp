@@ -35,7 +35,7 @@ const char* Meaning(LegendMark mark)
     case LegendMark::BestAxis:
         return "light-blue edges: the faces of the best axis so far (of equal ones, the first)";
     case LegendMark::Overlap:
-        return "purple band: the intervals overlap";
+        return "pink band: the intervals overlap";
     case LegendMark::Gap:
         return "green band: a gap between the intervals";
     case LegendMark::Behind:
@@ -55,7 +55,7 @@ const char* Meaning(LegendMark mark)
     case LegendMark::Centre:
         return "small dot in a circle: its centre";
     case LegendMark::Asleep:
-        return "hatched body: asleep, neither moved nor tested until woken";
+        return "hatched body (broadphase view): asleep, neither moved nor tested until woken";
     case LegendMark::Reference:
         return "thick edge in a body's colour: the reference face";
     case LegendMark::Incident:

@@ -22,7 +22,7 @@ enum class LegendMark
     Normal,     ///< a short arrow on a face: its outward normal, in its body's colour, black on the axis's face
     VertexAxis, ///< the dark dot and dashed line: an axis from a vertex (or a centre) to a circle's centre
     BestAxis,   ///< the light-blue edges of the best axis so far (of axes that tie, the first tested)
-    Overlap,    ///< the purple band: the two intervals overlap
+    Overlap,    ///< the pink band: the two intervals overlap
     Gap,        ///< the green band: a gap between the intervals
     Behind,     ///< the band of a face test: how far the other shape lies behind (or beyond) the face
     Swept,      ///< the pale bar: the interval B sweeps from t = 0 to 1 (a step; a second in a world's scene)

@@ -3039,8 +3039,9 @@ class Painter
             m_canvas.Segment({px, y - 9.0f}, {px, y + 8.0f}, palette::kResult, 3.0f);
         }
         // A hit's verdict is the common window, as its sentence says: the latest entry and the earliest exit of all
-        // axes (the deciding axis's own exit may come later).
-        if (m_verdict && status == SweepStatus::Hit)
+        // axes (the deciding axis's own exit may come later). So is a miss's where they never meet: the band between
+        // them is the miss, and the deciding axis's own entry would mark a time the verdict does not speak of.
+        if (m_verdict && (status == SweepStatus::Hit || CommonWindow() == WindowShown::Never))
         {
             marker(m_axis.windowEntry, "latest entry", true);
             marker(m_axis.windowExit, "earliest exit", false);

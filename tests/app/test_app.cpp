@@ -3227,3 +3227,26 @@ TEST_CASE("A large whole number is written alike in the step sentences, the Numb
     CHECK(FormatNumber(100000.5) == "100000.50");
     CHECK(FormatLabelNumber(100000.0) == FormatNumber(100000.0));
 }
+
+TEST_CASE("The panels show SAT's steps and numbers only where the canvas answers with SAT", "[app]")
+{
+    // disc_cast_cup's panels gave t = 0.34 at (2.008, 3.000), the cast against the cup's hull, under a canvas whose
+    // caption says t = 0.74 at (2.488, 1.000) on the cup's floor.
+    struct Case
+    {
+        const char* scene;
+        bool sat;
+    };
+    for (const Case& c : {Case{"concave/disc_cast_cup.json", false}, Case{"concave/disc_cast_corner.json", false},
+                          Case{"concave/l18_notch.json", false}, Case{"overlapping_boxes.json", true},
+                          Case{"fly_by.json", true}})
+    {
+        INFO(c.scene);
+        Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + c.scene);
+        REQUIRE(h.View().TestsPair());
+        CHECK(h.View().ShowsSatNumbers() == c.sat);
+        // The figure is what the scene's view asks for: the cast and the pieces are answered on the canvas.
+        const FigureKind kind = h.View().CurrentFigure().kind;
+        CHECK((kind == FigureKind::Pair) == c.sat);
+    }
+}

@@ -1997,6 +1997,51 @@ TEST_CASE("A pieces figure draws the pieces' boxes apart from the seams: grey, o
     CHECK(outside);
 }
 
+TEST_CASE("A miss whose axes never overlap at once marks the latest entry and the earliest exit on its time bar",
+          "[painter]")
+{
+    // fly_by's verdict marked its deciding axis's own entry, 0.20, beside a band from 0.733 to 0.833 and a note of
+    // "exit 0.733 < entry 0.833": a time the verdict does not speak of, where the two it speaks of had no mark.
+    for (const std::string stem : {"fly_by", "l10_ray_miss"})
+    {
+        INFO(stem);
+        const Scene scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/" + stem + ".json");
+        FigureSetup setup = SetUpFigure(scene, {});
+        REQUIRE(setup.Ok());
+        REQUIRE(setup.study.sweep);
+        // The oracle: over every axis of the trace, the latest entry and the earliest exit.
+        double latest = -INFINITY;
+        double earliest = INFINITY;
+        if (setup.study.Textbook())
+        {
+            for (const auto& axis : setup.study.textbookSweep.axes)
+            {
+                latest = std::max(latest, static_cast<double>(axis.entry));
+                earliest = std::min(earliest, static_cast<double>(axis.exit));
+            }
+        }
+        else
+        {
+            for (const auto& axis : setup.study.sweepTrace.axes)
+            {
+                latest = std::max(latest, static_cast<double>(axis.entry));
+                earliest = std::min(earliest, static_cast<double>(axis.exit));
+            }
+        }
+        REQUIRE(earliest < latest); // the case at hand: no common time
+        const RecordingCanvas canvas = Paint(scene, setup, setup.study.VerdictStep(), kDefaultLayers);
+        std::string bar;
+        for (const DrawCommand* c : canvas.InGroup("timebar"))
+        {
+            bar += c->kind == DrawCommand::Kind::Text ? c->text + "\n" : "";
+        }
+        INFO(bar);
+        CHECK(bar.find("latest entry " + FormatNumber(latest) + "\n") != std::string::npos);
+        CHECK(bar.find("earliest exit " + FormatNumber(earliest) + "\n") != std::string::npos);
+        CHECK(bar.find("\nentry ") == std::string::npos);
+    }
+}
+
 TEST_CASE("A swept figure's key explains the time bar's window band, or its no-common-time band", "[painter]")
 {
     // fly_by's axes never overlap at one time: its time bar says "no common time" on an orange band; the ball of
