@@ -228,8 +228,11 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
             const RigidBody& body = start[static_cast<size_t>(i)];
             return body.type == BodyType::Static || !body.awake;
         };
+        std::string heading = "No contact";
         if (resting(lo) && resting(hi))
         {
+            // Their contact is held (and drawn): the heading says why it is not solved, not that there is none.
+            heading = "Resting, not solved";
             sentence = "In " + when + " " + a + " and " + b + " were asleep (or static): the world neither tests " +
                        "nor solves their contact, and they rest where they are until something touches them.";
         }
@@ -239,7 +242,7 @@ std::vector<ResponseStep> DescribeResponse(const Scene& scene, const SimRecord& 
                        std::to_string(trace.hits) + (trace.hits == 1 ? " hit" : " hits") + ", the first at " +
                        N(trace.hitTime) + " of the step (see the hits layer).";
         }
-        steps.push_back({"No contact", sentence});
+        steps.push_back({heading, sentence});
         return steps;
     }
     const RigidBody& bodyA = record.world.bodies[static_cast<size_t>(lo)];
