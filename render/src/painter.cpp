@@ -2886,14 +2886,25 @@ class Painter
             m_canvas.Text({0.5f * (x0 + x1) - 0.5f * size0.x, ty}, s0, TextStyle::Label, ink);
             return;
         }
-        // End values sit outside their bar ends, two spaces apart at least, so that they never read as one; a long
-        // number (a pair far from the origin) slides in along its row rather than reach the image's edge or the
-        // body's name at the row's start. A short bar near the row's start (a thin wall's interval on a narrow
-        // canvas) pushes the low value onto the high one: the high one then moves on to keep them apart.
+        // End values sit over their ticks, as on a ruler, so that read from left to right they come in the order of
+        // the ends, however close the other interval's ends are (outside the bar ends, A's low value and B's high
+        // one across a narrow gap swapped places); two spaces apart at least, so that they never read as one: a
+        // short bar's values move apart, each outward. A long number (a pair far from the origin) slides in along
+        // its row rather than reach the image's edge or the body's name at the row's start. A short bar near the
+        // row's start (a thin wall's interval on a narrow canvas) pushes the low value onto the high one: the high
+        // one then moves on to keep them apart.
         const float size1 = m_canvas.MeasureText(s1, TextStyle::Label).x;
         constexpr float kApart = 10.0f;
-        float t0 = std::max(x0 - size0.x - 4.5f, rowStart);
-        float t1 = std::min(x1 + 4.5f, Width() - 8.0f - size1);
+        float c0 = x0 - 0.5f * size0.x;
+        float c1 = x1 - 0.5f * size1;
+        const float short_ = c0 + size0.x + kApart - c1;
+        if (short_ > 0.0f)
+        {
+            c0 -= 0.5f * short_;
+            c1 += 0.5f * short_;
+        }
+        float t0 = std::max(c0, rowStart);
+        float t1 = std::min(c1, Width() - 8.0f - size1);
         if (t0 + size0.x + kApart > t1)
         {
             t1 = std::min(t0 + size0.x + kApart, Width() - 8.0f - size1);

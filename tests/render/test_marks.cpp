@@ -16,6 +16,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <set>
@@ -1040,4 +1041,57 @@ TEST_CASE("A corner with a contact point's dot on it has no number beside it, as
         });
     INFO(dots << " numbers beside a dot on their corner");
     CHECK(dots == 0);
+}
+
+TEST_CASE("The number line's end values read from left to right in the order of the ends", "[marks]")
+{
+    // l03_corner_gap's verdict wrote A's -1.10 left of its tick and B's -1.30 right of its own, across a gap of 20
+    // pixels: read from left to right, -1.10 came before -1.30.
+    int pairs = 0;
+    ForEachCourseFigure([&](const std::string& stem, bool faces, const FigureSetup&, int k, const RecordingCanvas& canvas) {
+        struct End
+        {
+            double value;
+            float x;
+        };
+        std::vector<End> ends;
+        RecordingCanvas measure;
+        for (const DrawCommand* c : canvas.InGroup("panel"))
+        {
+            if (c->kind != DrawCommand::Kind::Text || c->text.empty())
+            {
+                continue;
+            }
+            std::string digits;
+            for (const char ch : c->text)
+            {
+                if (ch != ' ')
+                {
+                    digits += ch;
+                }
+            }
+            char* stop = nullptr;
+            const double value = std::strtod(digits.c_str(), &stop);
+            if (stop == digits.c_str() || *stop != '\0')
+            {
+                continue; // not a number alone: a title, a name, "gap 0.20", "bound 0.5"
+            }
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            ends.push_back({value, c->points[0].x + 0.5f * size.x});
+        }
+        for (const End& a : ends)
+        {
+            for (const End& b : ends)
+            {
+                if (a.value < b.value)
+                {
+                    ++pairs;
+                    INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": " << a.value << " at x " << a.x
+                                                 << ", " << b.value << " at x " << b.x);
+                    CHECK(a.x < b.x);
+                }
+            }
+        }
+    });
+    CHECK(pairs > 300);
 }
