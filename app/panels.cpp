@@ -660,13 +660,14 @@ void Panels::StepControls()
         ImGui::Separator();
         const int step = viewer.Step();
         const int last = viewer.VerdictStep();
-        // Counted as the caption counts them ("Step 2 of 3: ..."), then named.
-        const std::string name = "step " + std::to_string(step + 1) + " of " + std::to_string(last + 1) + ": " +
-                                 (step == 0      ? std::string("the pieces' boxes")
-                                  : step == last ? std::string("verdict")
-                                                 : "pair of pieces " + std::to_string(step) + " of " +
-                                                       std::to_string(last - 1));
-        StepRow(name);
+        // Counted as the caption counts them ("Step 2 of 3: ..."), then named, on a line of its own: beside the
+        // slider's grab a narrow column cut it ("step 2 of 2: verdi"); the slider keeps the short name.
+        const std::string what = step == 0      ? std::string("the pieces' boxes")
+                                 : step == last ? std::string("verdict")
+                                                : "pair of pieces " + std::to_string(step) + " of " +
+                                                      std::to_string(last - 1);
+        WrappedText("Step " + std::to_string(step + 1) + " of " + std::to_string(last + 1) + ": " + what);
+        StepRow(step == 0 ? std::string("boxes") : step == last ? std::string("verdict") : "pair " + std::to_string(step));
         return;
     }
     if (viewer.CurrentFigure().kind == FigureKind::DiscCast)

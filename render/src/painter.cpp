@@ -3018,9 +3018,12 @@ class Painter
         auto marker = [&](double t, const std::string& name, bool up) {
             if (std::isinf(t) || std::isnan(t))
             {
+                // A face test asks about one side of one face: an exit it never reaches is that face's alone, not
+                // the pair's (bullet_wall's face test 4, where the shapes part at 0.517 by another face).
                 const std::string text = std::isnan(t) ? name + ": never overlap"
                                          : t < 0.0     ? name + ": overlapping from the start"
-                                                       : name + ": they never part";
+                                         : m_study.Textbook() ? name + ": they never part"
+                                                              : name + ": never, on this face";
                 const ScreenPoint size = m_canvas.MeasureText(text, TextStyle::Label);
                 m_canvas.Text({right - size.x, up ? y - 10.0f - size.y : y + 25.0f}, text, TextStyle::Label,
                              palette::kInk);
