@@ -632,7 +632,8 @@ class Painter
     }
 
     // Faint world grid at a round spacing of at least 40 pixels, with the world axes a little stronger.
-    void Grid()
+    // The grid's spacing in world units: the first round step (1, 2 or 5 times a power of ten) of 40 pixels or more.
+    double GridSpacing() const
     {
         const double target = 40.0 / m_view.zoom;
         const double decade = std::pow(10.0, std::floor(std::log10(target)));
@@ -645,7 +646,12 @@ class Painter
                 break;
             }
         }
-        m_gridSpacing = spacing;
+        return spacing;
+    }
+
+    void Grid()
+    {
+        const double spacing = GridSpacing();
         const Vec2 low = ToWorld(m_view, {0.0f, Height()});
         const Vec2 high = ToWorld(m_view, {Width(), 0.0f});
         const Color grid = WithAlpha(palette::kFaint, 0.45f);
@@ -863,10 +869,11 @@ class Painter
             Vec2 through = m_discCenter;
             const Vec2 across = LeftPerp(d);
             const bool alongGrid = std::fabs(d.x) < 1e-12 || std::fabs(d.y) < 1e-12;
-            if (alongGrid && m_gridSpacing > 0.0)
+            if (alongGrid)
             {
+                const double spacing = GridSpacing();
                 const double at = Dot(through, across);
-                const double off = at - m_gridSpacing * std::round(at / m_gridSpacing);
+                const double off = at - spacing * std::round(at / spacing);
                 if (std::fabs(off) * m_view.zoom < 4.0)
                 {
                     through = through + ((off >= 0.0 ? 10.0 : -10.0) / m_view.zoom - off) * across;
@@ -2897,11 +2904,11 @@ class Painter
         constexpr float kApart = 10.0f;
         float c0 = x0 - 0.5f * size0.x;
         float c1 = x1 - 0.5f * size1;
-        const float short_ = c0 + size0.x + kApart - c1;
-        if (short_ > 0.0f)
+        const float crowding = c0 + size0.x + kApart - c1;
+        if (crowding > 0.0f)
         {
-            c0 -= 0.5f * short_;
-            c1 += 0.5f * short_;
+            c0 -= 0.5f * crowding;
+            c1 += 0.5f * crowding;
         }
         float t0 = std::max(c0, rowStart);
         float t1 = std::min(c1, Width() - 8.0f - size1);
@@ -3200,7 +3207,6 @@ class Painter
     bool m_nameOnGhost[2] = {false, false}; // a body out of the picture, named on its ghost
     std::vector<std::pair<ScreenPoint, ScreenPoint>> m_velocityShafts; // the velocity arrows drawn, tail to head
     std::vector<ScreenPoint> m_contactDots;                            // the contact points drawn
-    double m_gridSpacing = 0.0;                                        // the grid's, in world units (0: no grid)
     ScreenPoint m_mtvFrom{};
     ScreenPoint m_mtvTo{};
     CaptionLines m_caption;

@@ -625,77 +625,6 @@ TEST_CASE("No arrow head of a face's normal lies on a velocity arrow's shaft or 
     CHECK(heads > 100);
 }
 
-TEST_CASE("An edge's name inside its own body lies nearer that edge than any other edge of the body", "[marks]")
-{
-    // With no room outside a face (the separating line and the normal beside it), its name sits just inside its
-    // body: lesson 1's triangle had "e1" nearer its bottom edge, e0, than the slanted edge it names.
-    int inside = 0;
-    ForEachCourseFigure(
-        [&](const std::string& stem, bool faces, const FigureSetup& setup, int k, const RecordingCanvas& canvas) {
-            if (setup.figure.kind != FigureKind::Pair)
-            {
-                return;
-            }
-            const Scene scene = painter_test::LessonScene(stem);
-            const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
-            const int ids[2] = {setup.study.bodyA, setup.study.bodyB};
-            RecordingCanvas measure;
-            for (const DrawCommand* c : canvas.InGroup("labels"))
-            {
-                const std::string& t = c->text;
-                if (c->kind != DrawCommand::Kind::Text || !painter_test::IsEdgeName(t))
-                {
-                    continue;
-                }
-                for (int s = 0; s < 2; ++s)
-                {
-                    const Body& body = scene.bodies[static_cast<size_t>(ids[s])];
-                    if ((c->color >> 8) != (inks[s] >> 8) || body.shape.type != ShapeType::Polygon)
-                    {
-                        continue;
-                    }
-                    std::vector<ScreenPoint> outline;
-                    for (const Vec2& v : body.shape.polygon.Vertices())
-                    {
-                        outline.push_back(ToScreen(setup.figure.view, TransformPoint(body.Xf(), v)));
-                    }
-                    const size_t n = static_cast<size_t>(std::stoi(t.substr(1)));
-                    if (n >= outline.size())
-                    {
-                        continue;
-                    }
-                    const ScreenPoint size = measure.MeasureText(t, c->style);
-                    const ScreenPoint m{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
-                    // Inside: on the inner side of every edge (screen y points down, which turns the sign).
-                    bool in = true;
-                    for (size_t i = 0; i < outline.size(); ++i)
-                    {
-                        const ScreenPoint a = outline[i];
-                        const ScreenPoint b = outline[(i + 1) % outline.size()];
-                        in = in && (b.x - a.x) * (m.y - a.y) - (b.y - a.y) * (m.x - a.x) < 0.0f;
-                    }
-                    if (!in)
-                    {
-                        continue;
-                    }
-                    ++inside;
-                    const float own = SegmentDistance(outline[n], outline[(n + 1) % outline.size()], m);
-                    for (size_t i = 0; i < outline.size(); ++i)
-                    {
-                        if (i == n)
-                        {
-                            continue;
-                        }
-                        INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": " << body.name << "'s " << t
-                                                     << " at (" << m.x << ", " << m.y << ") against e" << i);
-                        CHECK(own < SegmentDistance(outline[i], outline[(i + 1) % outline.size()], m));
-                    }
-                }
-            }
-        });
-    CHECK(inside > 5);
-}
-
 namespace
 {
 // The tested pair of a figure as the painter draws it: each body's outline on screen (empty for a circle), its
@@ -745,6 +674,70 @@ bool InsideOutline(const std::vector<ScreenPoint>& outline, ScreenPoint p, float
     return true;
 }
 } // namespace
+
+TEST_CASE("An edge's name inside its own body lies nearer that edge than any other edge of the body", "[marks]")
+{
+    // With no room outside a face (the separating line and the normal beside it), its name sits just inside its
+    // body: lesson 1's triangle had "e1" nearer its bottom edge, e0, than the slanted edge it names.
+    int inside = 0;
+    ForEachCourseFigure(
+        [&](const std::string& stem, bool faces, const FigureSetup& setup, int k, const RecordingCanvas& canvas) {
+            if (setup.figure.kind != FigureKind::Pair)
+            {
+                return;
+            }
+            const PairOnScreen pair = PairOf(stem, setup);
+            RecordingCanvas measure;
+            for (const DrawCommand* c : canvas.InGroup("labels"))
+            {
+                const std::string& t = c->text;
+                if (c->kind != DrawCommand::Kind::Text || !painter_test::IsEdgeName(t))
+                {
+                    continue;
+                }
+                for (int s = 0; s < 2; ++s)
+                {
+                    const std::vector<ScreenPoint>& outline = pair.outlines[s];
+                    if ((c->color >> 8) != (pair.inks[s] >> 8) || outline.empty())
+                    {
+                        continue;
+                    }
+                    const size_t n = static_cast<size_t>(std::stoi(t.substr(1)));
+                    if (n >= outline.size())
+                    {
+                        continue;
+                    }
+                    const ScreenPoint size = measure.MeasureText(t, c->style);
+                    const ScreenPoint m{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+                    // Inside: on the inner side of every edge (screen y points down, which turns the sign).
+                    bool in = true;
+                    for (size_t i = 0; i < outline.size(); ++i)
+                    {
+                        const ScreenPoint a = outline[i];
+                        const ScreenPoint b = outline[(i + 1) % outline.size()];
+                        in = in && (b.x - a.x) * (m.y - a.y) - (b.y - a.y) * (m.x - a.x) < 0.0f;
+                    }
+                    if (!in)
+                    {
+                        continue;
+                    }
+                    ++inside;
+                    const float own = SegmentDistance(outline[n], outline[(n + 1) % outline.size()], m);
+                    for (size_t i = 0; i < outline.size(); ++i)
+                    {
+                        if (i == n)
+                        {
+                            continue;
+                        }
+                        INFO((faces ? "faces/" : "") << stem << " step " << k + 1 << ": " << pair.names[s] << "'s "
+                                                     << t << " at (" << m.x << ", " << m.y << ") against e" << i);
+                        CHECK(own < SegmentDistance(outline[i], outline[(i + 1) % outline.size()], m));
+                    }
+                }
+            }
+        });
+    CHECK(inside > 5);
+}
 
 TEST_CASE("A ghost's dashed outline is dashed all round, a small circle's too", "[marks]")
 {
