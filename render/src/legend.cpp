@@ -4,6 +4,7 @@
 #include "concave_views.h"
 
 #include <satviz/render/palette.h>
+#include <satviz/render/wrap.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,7 @@ constexpr float kPadding = 8.0f; // inside the panel
 constexpr float kRow = 18.0f;    // row height
 constexpr float kSwatch = 28.0f; // swatch width
 constexpr float kGapAfterSwatch = 8.0f;
+constexpr float kLine = 15.0f; // the step to a wrapped meaning's next line
 
 const char* Meaning(LegendMark mark)
 {
@@ -290,37 +292,80 @@ std::vector<LegendMark> AllLegendMarks()
     return marks;
 }
 
-ScreenPoint LegendSize(Canvas& canvas, const std::vector<LegendMark>& marks)
+namespace
 {
-    float width = 0.0f;
+
+// The lines of each mark's meaning: one line each when the key fits `maxWidth`, else each meaning wrapped between
+// its words so that the key does (a narrow canvas beside the lesson column).
+std::vector<std::vector<std::string>> LegendLines(Canvas& canvas, const std::vector<LegendMark>& marks,
+                                                  float maxWidth)
+{
+    const float room = maxWidth - (2.0f * kPadding + kSwatch + kGapAfterSwatch);
+    const auto measure = [&](const std::string& text) { return canvas.MeasureText(text, TextStyle::Label).x; };
+    std::vector<std::vector<std::string>> lines;
     for (LegendMark mark : marks)
     {
-        width = std::max(width, canvas.MeasureText(Meaning(mark), TextStyle::Label).x);
+        const std::string meaning = Meaning(mark);
+        if (!std::isfinite(room) || measure(meaning) <= room)
+        {
+            lines.push_back({meaning});
+        }
+        else
+        {
+            lines.push_back(WrapLines(meaning, std::max(room, 1.0f), measure));
+        }
     }
-    return {2.0f * kPadding + kSwatch + kGapAfterSwatch + width,
-            2.0f * kPadding + kRow * static_cast<float>(marks.size())};
+    return lines;
 }
 
-void PaintLegend(Canvas& canvas, ScreenPoint topLeft, const std::vector<LegendMark>& marks)
+// The height of a mark's row of `lines` lines: its swatch's row, and a line more for each wrapped line.
+float RowHeight(size_t lines)
+{
+    return kRow + kLine * static_cast<float>(lines > 0 ? lines - 1 : 0);
+}
+
+} // namespace
+
+ScreenPoint LegendSize(Canvas& canvas, const std::vector<LegendMark>& marks, float maxWidth)
+{
+    float width = 0.0f;
+    float height = 0.0f;
+    for (const std::vector<std::string>& row : LegendLines(canvas, marks, maxWidth))
+    {
+        for (const std::string& line : row)
+        {
+            width = std::max(width, canvas.MeasureText(line, TextStyle::Label).x);
+        }
+        height += RowHeight(row.size());
+    }
+    return {2.0f * kPadding + kSwatch + kGapAfterSwatch + width, 2.0f * kPadding + height};
+}
+
+void PaintLegend(Canvas& canvas, ScreenPoint topLeft, const std::vector<LegendMark>& marks, float maxWidth)
 {
     if (marks.empty())
     {
         return;
     }
     canvas.BeginGroup("legend");
-    const ScreenPoint size = LegendSize(canvas, marks);
+    const ScreenPoint size = LegendSize(canvas, marks, maxWidth);
     const ScreenPoint bottomRight{topLeft.x + size.x, topLeft.y + size.y};
     canvas.FillRect(topLeft, bottomRight, WithAlpha(palette::kPanel, 0.95f));
     const ScreenPoint frame[4] = {topLeft, {bottomRight.x, topLeft.y}, bottomRight, {topLeft.x, bottomRight.y}};
     canvas.Polyline(frame, 4, true, palette::kFaint, 1.0f);
+    const std::vector<std::vector<std::string>> lines = LegendLines(canvas, marks, maxWidth);
     float y = topLeft.y + kPadding;
-    for (LegendMark mark : marks)
+    for (size_t k = 0; k < marks.size(); ++k)
     {
-        Swatch(canvas, mark, topLeft.x + kPadding, y);
-        const float textY = y + 0.5f * (kRow - TextSize(TextStyle::Label));
-        canvas.Text({topLeft.x + kPadding + kSwatch + kGapAfterSwatch, textY}, Meaning(mark), TextStyle::Label,
-                    palette::kInk);
-        y += kRow;
+        Swatch(canvas, marks[k], topLeft.x + kPadding, y);
+        float textY = y + 0.5f * (kRow - TextSize(TextStyle::Label));
+        for (const std::string& line : lines[k])
+        {
+            canvas.Text({topLeft.x + kPadding + kSwatch + kGapAfterSwatch, textY}, line, TextStyle::Label,
+                        palette::kInk);
+            textY += kLine;
+        }
+        y += RowHeight(lines[k].size());
     }
 }
 

@@ -9,6 +9,7 @@
 #include <satviz/render/recording_canvas.h>
 #include <satviz/render/view.h>
 
+#include <cmath>
 #include <vector>
 
 namespace satviz
@@ -67,12 +68,14 @@ constexpr float kCandidateAxisGap = 6.0f;
 /// Every mark, in the key's order.
 std::vector<LegendMark> AllLegendMarks();
 
-/// The size of the key to `marks`.
-ScreenPoint LegendSize(Canvas& canvas, const std::vector<LegendMark>& marks);
+/// The size of the key to `marks`, at most `maxWidth` pixels wide where its meanings can wrap between their words
+/// to fit (a narrow canvas); one line per mark when it fits.
+ScreenPoint LegendSize(Canvas& canvas, const std::vector<LegendMark>& marks, float maxWidth = INFINITY);
 
 /// Draws the key to `marks` with its top-left corner at `topLeft`, in the group "legend": a panel, and one row per
-/// mark, its swatch drawn as the figure draws it, then its meaning.
-void PaintLegend(Canvas& canvas, ScreenPoint topLeft, const std::vector<LegendMark>& marks);
+/// mark, its swatch drawn as the figure draws it, then its meaning, wrapped as LegendSize wraps it to `maxWidth`.
+void PaintLegend(Canvas& canvas, ScreenPoint topLeft, const std::vector<LegendMark>& marks,
+                 float maxWidth = INFINITY);
 
 /// Where a figure that frames itself draws its key, and how its picture moves aside for it.
 struct KeyPlace

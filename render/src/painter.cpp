@@ -467,11 +467,34 @@ class Painter
         {
             // The legend alone: the key to every mark, in the middle of the scene area.
             const std::vector<LegendMark> marks = AllLegendMarks();
-            const ScreenPoint size = LegendSize(m_canvas, marks);
-            PaintLegend(m_canvas,
-                        {std::round(0.5f * (Width() - size.x)),
-                         std::round(0.5f * (m_layout.sceneTop + m_layout.sceneBottom - size.y))},
-                        marks);
+            const ScreenPoint size = LegendSize(m_canvas, marks, KeyRoom());
+            const float middle = 0.5f * (m_layout.sceneTop + m_layout.sceneBottom);
+            float top = std::round(middle - 0.5f * size.y);
+            const float least = m_layout.sceneBottom - 8.0f - size.y;
+            const float most = m_layout.sceneTop + 8.0f;
+            if (least < most)
+            {
+                // Taller than the canvas (a short window beside the lesson column): it starts at its top and
+                // scrolls with the camera, as the pair it has in place of a picture would move, so that dragging
+                // the canvas up brings its last rows into sight.
+                const float scroll = At(m_discCenter).y - 0.5f * static_cast<float>(m_view.height);
+                top = std::round(std::clamp(most + scroll, least, most));
+            }
+            PaintLegend(m_canvas, {std::round(0.5f * (Width() - size.x)), top}, marks, KeyRoom());
+            if (least < most)
+            {
+                m_canvas.BeginGroup("legend hint");
+                const bool below = top > least + 0.5f;
+                const std::string hint = below ? "drag the canvas up for the rest of the key"
+                                               : "drag the canvas down for the start of the key";
+                const ScreenPoint hintSize = m_canvas.MeasureText(hint, TextStyle::Label);
+                const float y = below ? m_layout.sceneBottom - hintSize.y - 6.0f : m_layout.sceneTop + 4.0f;
+                const float x = std::round(0.5f * (Width() - hintSize.x));
+                m_canvas.FillRect({0.0f, y - 4.0f}, {Width(), y + hintSize.y + 4.0f}, palette::kBackground);
+                m_canvas.Segment({0.0f, below ? y - 4.0f : y + hintSize.y + 4.0f},
+                                 {Width(), below ? y - 4.0f : y + hintSize.y + 4.0f}, palette::kFaint, 1.0f);
+                m_canvas.Text({x, y}, hint, TextStyle::Label, palette::kInk);
+            }
             if (Has(m_figure, kLayerCaption))
             {
                 m_caption = LayOutCaption();
@@ -571,7 +594,7 @@ class Painter
         if (Has(m_figure, kLayerLegend))
         {
             legend = UsedMarks();
-            const ScreenPoint size = LegendSize(m_canvas, legend);
+            const ScreenPoint size = LegendSize(m_canvas, legend, KeyRoom());
             legendAt = m_keyAt != nullptr ? *m_keyAt : LegendCorner(size);
             m_labels.ReserveBand({legendAt.x, legendAt.y, legendAt.x + size.x, legendAt.y + size.y});
         }
@@ -597,7 +620,7 @@ class Painter
         {
             Minkowski();
         }
-        PaintLegend(m_canvas, legendAt, legend);
+        PaintLegend(m_canvas, legendAt, legend, KeyRoom());
         if (m_layout.panelTop < m_layout.worldTop)
         {
             Panel();
@@ -733,6 +756,12 @@ class Painter
 
     // The corner of the scene area where the legend hides least of the pair (never the Minkowski inset's), kept
     // free of labels.
+    // The widest the key may be: the figure's width within its margins, its lines wrapped to fit a narrow canvas.
+    float KeyRoom() const
+    {
+        return std::max(Width() - 16.0f, 120.0f);
+    }
+
     ScreenPoint LegendCorner(ScreenPoint size)
     {
         ScreenRect pair{INFINITY, INFINITY, -INFINITY, -INFINITY};

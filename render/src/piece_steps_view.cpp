@@ -530,7 +530,7 @@ void PaintPieceStepsKeyed(Canvas& surface, const Scene& scene, const PairStudy& 
     if ((figure.layers & kLayerLegend) && !used.empty())
     {
         // The key in the corner of the picture that hides least of the pieces, kept free of labels.
-        const ScreenPoint size = LegendSize(canvas, used);
+        const ScreenPoint size = LegendSize(canvas, used, std::max(width - 16.0f, 120.0f));
         const ScreenPoint lo = ToScreen(view, low);
         const ScreenPoint hi = ToScreen(view, high);
         const ScreenRect pieces{std::min(lo.x, hi.x), std::min(lo.y, hi.y), std::max(lo.x, hi.x), std::max(lo.y, hi.y)};
@@ -559,7 +559,7 @@ void PaintPieceStepsKeyed(Canvas& surface, const Scene& scene, const PairStudy& 
     labels.Flush(palette::kBackground);
     if ((figure.layers & kLayerLegend) && !used.empty())
     {
-        PaintLegend(surface, keyAt, used);
+        PaintLegend(surface, keyAt, used, std::max(width - 16.0f, 120.0f));
     }
 }
 

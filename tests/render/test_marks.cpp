@@ -1088,3 +1088,112 @@ TEST_CASE("The number line's end values read from left to right in the order of 
     });
     CHECK(pairs > 300);
 }
+
+namespace
+{
+
+// The words of the texts a recording draws in the group "legend", in order.
+std::string KeyWords(const RecordingCanvas& canvas)
+{
+    std::string words;
+    for (const DrawCommand* c : canvas.InGroup("legend"))
+    {
+        if (c->kind == DrawCommand::Kind::Text)
+        {
+            words += (words.empty() ? "" : " ") + c->text;
+        }
+    }
+    return words;
+}
+
+// What of the key a recording draws beyond the canvas's sides (or, when `rows`, above or below it).
+std::vector<std::string> KeyOutside(const RecordingCanvas& canvas, float width, float height, bool rows)
+{
+    std::vector<std::string> out;
+    RecordingCanvas measure;
+    for (const DrawCommand* c : canvas.InGroup("legend"))
+    {
+        for (const ScreenPoint& p : c->points)
+        {
+            float right = p.x;
+            float bottom = p.y;
+            if (c->kind == DrawCommand::Kind::Text)
+            {
+                const ScreenPoint size = measure.MeasureText(c->text, c->style);
+                right += size.x;
+                bottom += size.y;
+            }
+            if (p.x < 0.0f || right > width || (rows && (p.y < 0.0f || bottom > height)))
+            {
+                out.push_back(c->kind == DrawCommand::Kind::Text ? c->text : "a swatch");
+            }
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("Lesson 1's key, and a figure's, stay inside a canvas narrowed by the lesson column", "[marks][legend]")
+{
+    // Beside the lesson column the canvas is 480 x 808 in a 1300 x 850 window and 360 x 608 in the least window (900 x
+    // 650 raised to 1180 x 650): the key, one line per mark, ran past both sides. Its meanings wrap between words to
+    // fit; the words are those of the key at 800 pixels, in the same order.
+    const Scene scene = painter_test::LessonScene("l01_legend");
+    FigureSetup wide = SetUpFigure(scene, FigureOptions{});
+    REQUIRE(wide.Ok());
+    const std::string words = KeyWords(painter_test::PaintStep(scene, wide, wide.figure.step));
+    REQUIRE(words.find("candidate axes") != std::string::npos);
+    const auto joined = [](std::string text) {
+        std::string flat;
+        std::istringstream in(text);
+        for (std::string word; in >> word;)
+        {
+            flat += (flat.empty() ? "" : " ") + word;
+        }
+        return flat;
+    };
+    for (const auto& [width, height] : {std::pair{480, 808}, std::pair{360, 608}})
+    {
+        CAPTURE(width, height);
+        FigureOptions options;
+        options.width = width;
+        options.height = height;
+        FigureSetup setup = SetUpFigure(scene, options);
+        REQUIRE(setup.Ok());
+        const RecordingCanvas key = painter_test::PaintStep(scene, setup, setup.figure.step);
+        CHECK(joined(KeyWords(key)) == joined(words));
+        CHECK(KeyOutside(key, static_cast<float>(width), static_cast<float>(height), height > 700).empty());
+        if (height < 700)
+        {
+            // Too tall for the canvas: it starts with its first row in sight, and the camera dragged up shows its
+            // last one.
+            const std::vector<const DrawCommand*> legend = key.InGroup("legend");
+            REQUIRE(!legend.empty());
+            CHECK(legend[0]->points[0].y >= 0.0f);
+            Figure dragged = setup.figure;
+            dragged.view.center.y -= 2000.0 / dragged.view.zoom;
+            RecordingCanvas moved;
+            PaintFigure(moved, scene, setup.study, dragged);
+            const std::vector<const DrawCommand*> after = moved.InGroup("legend");
+            REQUIRE(!after.empty());
+            CHECK(after[0]->points[1].y <= static_cast<float>(height));
+            CHECK(after[0]->points[1].y >= static_cast<float>(height) - 60.0f);
+        }
+    }
+    // A figure's own key (the legend layer in the app's Layers panel) wraps as well.
+    for (const char* stem : {"bullet_wall", "l13_overlap", "concave/l18_seam", "l17_skips"})
+    {
+        CAPTURE(stem);
+        const Scene figureScene = painter_test::LessonScene(stem);
+        FigureOptions options;
+        options.width = 360;
+        options.height = 608;
+        FigureSetup setup = SetUpFigure(figureScene, options);
+        REQUIRE(setup.Ok());
+        const RecordingCanvas canvas =
+            painter_test::Paint(figureScene, setup, setup.study.VerdictStep(), setup.figure.layers | kLayerLegend);
+        CHECK(!canvas.InGroup("legend").empty());
+        CHECK(KeyOutside(canvas, 360.0f, 608.0f, false).empty());
+    }
+}
