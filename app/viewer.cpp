@@ -33,6 +33,7 @@ void Viewer::Reset(const Scene& scene)
     m_setup.error = "testing the pair";
     m_job.reset();
     m_retest = false;
+    m_captionMeasured = false;
 }
 
 int Viewer::PairVertices(const Scene& scene) const
@@ -141,6 +142,28 @@ void Viewer::Adopt(FigureSetup fresh, Scene studied)
         (m_framed && !FrameScene(m_frame, m_setup.study, m_choices.layers, m_canvasWidth, m_canvasHeight, m_camera)))
     {
         m_camera = m_setup.figure.view;
+    }
+    if ((m_cameraFit || m_framed) && m_setup.figure.kind != FigureKind::Slice &&
+        m_setup.figure.kind != FigureKind::Decomposition)
+    {
+        // The framing leaves the caption the band the figure's layout reserves; on a narrow canvas a long caption
+        // wraps to more lines and its band grows over the picture's top (disc_cast_cup's seven lines over its start
+        // disc). Where the band of its longest step would cover the picture, the picture goes under it; measured
+        // once per scene and canvas size, so that stepping does not move it.
+        Figure measured = m_setup.figure;
+        measured.view = m_camera;
+        measured.view.width = m_canvasWidth;
+        measured.view.height = m_canvasHeight;
+        measured.sim = m_sim;
+        measured.hit = m_sim != nullptr ? m_hit : -1;
+        measured.framesItself = false;
+        if (!m_captionMeasured)
+        {
+            m_captionReach = MeasureCaption(m_studied, m_setup.study, measured, FigureStepCount(m_studied, m_setup));
+            m_captionMeasured = true;
+        }
+        m_camera = BelowCaption(measured.view, m_setup.study, m_choices.layers, !m_studied.view.caption.empty(),
+                                m_captionReach);
     }
     if ((m_cameraFit || m_framed) &&
         (m_setup.figure.kind == FigureKind::Slice || m_setup.figure.kind == FigureKind::Decomposition) &&
@@ -293,6 +316,7 @@ bool Viewer::PlaceCanvas(ScreenPoint origin, int width, int height)
     m_canvasWidth = width;
     m_canvasHeight = height;
     m_canvasSized = true;
+    m_captionMeasured = false;
     return true;
 }
 

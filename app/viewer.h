@@ -171,6 +171,8 @@ class Viewer
     int m_canvasWidth = 800;
     int m_canvasHeight = 600;
     bool m_canvasSized = false;
+    CaptionReach m_captionReach;    // how far the caption band and the picture reach on this canvas
+    bool m_captionMeasured = false; // m_captionReach is of this scene and canvas size
 };
 
 } // namespace satviz

@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "concave_views.h"
+#include "legend.h"
 #include "world_views.h"
 
 #include <satviz/render/figure.h>
+#include <satviz/render/recording_canvas.h>
+
+#include <algorithm>
 
 namespace satviz
 {
@@ -99,6 +103,67 @@ bool FrameScene(const SceneView& frame, const PairStudy& study, LayerMask layers
 Vec2 SceneViewCenter(const View& camera, LayerMask layers)
 {
     return {camera.center.x, camera.center.y + 0.5 * WorldPanelsHeight(layers) / camera.zoom};
+}
+
+CaptionReach MeasureCaption(const Scene& scene, const PairStudy& study, const Figure& figure, int steps)
+{
+    CaptionReach reach;
+    if ((figure.layers & kLayerCaption) == 0)
+    {
+        return reach;
+    }
+    const ScreenRect whole{0.0f, 0.0f, static_cast<float>(figure.view.width), static_cast<float>(figure.view.height)};
+    const auto measure = [&](int step) {
+        Figure painted = figure;
+        painted.step = step;
+        RecordingCanvas canvas;
+        PaintFigure(canvas, scene, study, painted);
+        for (const DrawCommand* c : canvas.InGroup("caption"))
+        {
+            for (const ScreenPoint& p : c->points)
+            {
+                const float below = c->kind == DrawCommand::Kind::Text ? canvas.MeasureText(c->text, c->style).y : 0.0f;
+                reach.bandBottom = std::max(reach.bandBottom, p.y + below);
+            }
+        }
+        // What a key must not cover is what the band must not either: the picture, without its texts (the labels
+        // keep off the band by themselves), grid, candidate axes and insets.
+        const ScreenRect picture = KeyObstacles(canvas, whole);
+        if (picture.minY <= picture.maxY)
+        {
+            reach.pictureTop = std::min(reach.pictureTop, picture.minY);
+        }
+    };
+    if (steps > 40)
+    {
+        measure(figure.step);
+    }
+    for (int step = 0; step <= 40 && step < steps; ++step)
+    {
+        measure(step);
+    }
+    return reach;
+}
+
+View BelowCaption(const View& view, const PairStudy& study, LayerMask layers, bool titled, const CaptionReach& reach)
+{
+    const FigureLayout layout = LayoutFigure(study, layers, view.width, view.height, titled);
+    const float margin = 6.0f; // between the band's rule and the picture
+    const float top = reach.bandBottom + margin;
+    // A picture that runs on past the canvas's top (a wall taller than the canvas) is framed so on purpose.
+    if (top <= layout.sceneTop + 0.5f || reach.pictureTop >= top || reach.pictureTop < 0.5f ||
+        layout.sceneBottom - top < 1.0f)
+    {
+        return view;
+    }
+    const double scale =
+        static_cast<double>(layout.sceneBottom - top) / static_cast<double>(layout.sceneBottom - layout.sceneTop);
+    View moved = view;
+    moved.zoom = view.zoom * scale;
+    // The world point in the middle of the old scene area goes to the middle of the new one.
+    const Vec2 middle = ToWorld(view, {0.5f * static_cast<float>(view.width), 0.5f * (layout.sceneTop + layout.sceneBottom)});
+    moved.center = {middle.x, middle.y + (0.5 * (top + layout.sceneBottom) - 0.5 * view.height) / moved.zoom};
+    return moved;
 }
 
 FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)

@@ -3,6 +3,8 @@
 // app's export and satviz-render both go through here, so the same scene gives the same picture.
 #pragma once
 
+#include <cmath>
+
 #include <satviz/render/painter.h>
 
 #include <string>
@@ -68,6 +70,25 @@ bool FrameScene(const SceneView& frame, const PairStudy& study, LayerMask layers
 /// The centre a view block gives for `camera` to be the camera of a figure of its size with these layers: the
 /// inverse of FrameScene at the frame's own size. The app saves a scene's view so, and it opens as it was shown.
 Vec2 SceneViewCenter(const View& camera, LayerMask layers);
+
+/// What a caption band and a picture take of a figure's height, over its steps.
+struct CaptionReach
+{
+    float bandBottom = 0.0f;      ///< the lowest the caption band reaches (0: no caption)
+    float pictureTop = INFINITY;  ///< the highest the picture reaches in the image (bodies, marks; not texts, grid
+                                  ///< or axes), 0 when it runs on past the top
+};
+
+/// How far down the caption band of `figure` reaches over its first `steps` steps (the band grows past
+/// LayoutFigure's sceneTop when a long caption wraps on a narrow canvas), and how far up its picture does, measured
+/// by painting each step on a recording canvas; above 40 steps only the figure's own step is painted.
+CaptionReach MeasureCaption(const Scene& scene, const PairStudy& study, const Figure& figure, int steps);
+
+/// `view`, which frames its picture in the scene area LayoutFigure gives (from sceneTop down), scaled and moved so
+/// that the same picture lies in the area below the band instead, its middle in that area's middle, when the band
+/// of `reach` would cover the picture; else `view` itself, as when the picture runs on past the canvas's top (a wall
+/// taller than the canvas, framed so on purpose).
+View BelowCaption(const View& view, const PairStudy& study, LayerMask layers, bool titled, const CaptionReach& reach);
 
 /// Sets up the figure of a scene: picks the pair (view.pair, or the first two bodies), runs the queries, frames
 /// the camera (fitting the pair, or framing the scene's own view for the figure's size: FrameScene), resolves the
