@@ -1089,9 +1089,7 @@ void Panels::SimulationControls()
     // The step's time in the digits of the response's sentences (DescribeWorld); how many steps the app took is its
     // own.
     const WorldWords world = DescribeWorld(m_app.ShownScene(), sim.Record());
-    ImGui::TextUnformatted((world.time + "; " + std::to_string(sim.Last()) + (sim.Last() == 1 ? " step" : " steps") +
-                            " taken")
-                               .c_str());
+    WrappedText(world.time + "; " + std::to_string(sim.Last()) + (sim.Last() == 1 ? " step" : " steps") + " taken");
     if (sim.First() > 0)
     {
         ImGui::TextDisabled("steps before %d are no longer held", sim.First());
@@ -1129,31 +1127,34 @@ void Panels::ResponseSteps()
     const int chosenB = std::max(record.contact.bodyA, record.contact.bodyB);
     if (!world.contacts.empty())
     {
-        const float rows = static_cast<float>(std::min<size_t>(world.contacts.size(), 5));
-        if (ImGui::BeginChild("##contacts", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 8.0f), true))
+        // A row too long for the list wraps between words, never inside a number (cut with "...", it hid the
+        // second overlap of "slope and box: 2 points, overlap 0.000946 and ..."). The list is as high as its first
+        // five rows, wrapped to the width inside its frame and beside its scroll bar.
+        const ImGuiStyle& style = ImGui::GetStyle();
+        const float width =
+            std::max(ImGui::GetContentRegionAvail().x - 2.0f * style.WindowPadding.x - style.ScrollbarSize, 1.0f);
+        std::vector<std::string> rows;
+        float height = 2.0f * style.WindowPadding.y;
+        for (const WorldContactWords& c : world.contacts)
         {
-            ImGuiListClipper clipper;
-            clipper.Begin(static_cast<int>(world.contacts.size()));
-            while (clipper.Step())
+            rows.push_back(WrapToWidth(c.text, width));
+            if (rows.size() <= 5)
             {
-                for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i)
+                height += ImGui::CalcTextSize(rows.back().c_str()).y + style.ItemSpacing.y;
+            }
+        }
+        if (ImGui::BeginChild("##contacts", ImVec2(0.0f, height), true))
+        {
+            for (size_t i = 0; i < world.contacts.size(); ++i)
+            {
+                const WorldContactWords& c = world.contacts[i];
+                ImGui::PushID(static_cast<int>(i));
+                if (ImGui::Selectable(rows[i].c_str(), c.a == chosenA && c.b == chosenB))
                 {
-                    const WorldContactWords& c = world.contacts[static_cast<size_t>(i)];
-                    // A row too long for the list ends between words with "...", never inside a number (it cut
-                    // "overlap 0.000946 and 0.000..." mid-number); the whole row shows as its tooltip.
-                    const std::string row = ShortenToWidth(c.text, ImGui::GetContentRegionAvail().x);
-                    ImGui::PushID(i);
-                    if (ImGui::Selectable(row.c_str(), c.a == chosenA && c.b == chosenB))
-                    {
-                        m_app.SimChooseContact(c.a, c.b);
-                    }
-                    ImGui::PopID();
-                    if (row != c.text && ImGui::IsItemHovered())
-                    {
-                        ImGui::SetTooltip("%s", c.text.c_str());
-                    }
-                    Announce("contact " + name(c.a) + " " + name(c.b));
+                    m_app.SimChooseContact(c.a, c.b);
                 }
+                ImGui::PopID();
+                Announce("contact " + name(c.a) + " " + name(c.b));
             }
         }
         ImGui::EndChild();
@@ -1171,11 +1172,12 @@ void Panels::ResponseSteps()
         return;
     }
     const std::vector<ResponseStep> steps = DescribeResponse(scene, record);
-    ImGui::Text("Response of %s and %s in step %d:", name(chosenA).c_str(), name(chosenB).c_str(), sim.Shown());
+    WrappedText("Response of " + name(chosenA) + " and " + name(chosenB) + " in step " + std::to_string(sim.Shown()) +
+                ":");
     std::string printed;
     for (const ResponseStep& step : steps)
     {
-        ImGui::TextColored(ImVec4(0.2f, 0.35f, 0.6f, 1.0f), "%s", step.title.c_str());
+        WrappedText(step.title, ImVec4(0.2f, 0.35f, 0.6f, 1.0f));
         ImGui::Indent();
         WrappedText(step.sentence);
         ImGui::Unindent();

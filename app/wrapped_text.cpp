@@ -20,18 +20,6 @@ std::string WrapToWidth(const std::string& text, float width)
     return joined;
 }
 
-std::string ShortenToWidth(const std::string& text, float width)
-{
-    const auto measure = [](const std::string& s) { return ImGui::CalcTextSize(s.c_str()).x; };
-    if (measure(text) <= width)
-    {
-        return text;
-    }
-    const std::string more = " ...";
-    const std::vector<std::string> lines = WrapLines(text, std::max(width - measure(more), 1.0f), measure);
-    return (lines.empty() ? std::string() : lines.front()) + more;
-}
-
 void WrappedText(const std::string& text, ImVec4 color)
 {
     const std::string wrapped = WrapToWidth(text, ImGui::GetContentRegionAvail().x);

@@ -14,11 +14,6 @@ namespace satviz
 /// lines joined by '\n'.
 std::string WrapToWidth(const std::string& text, float width);
 
-/// `text` as it fits on one line `width` pixels wide in the current font: whole when it fits, else its first words
-/// (never part of a word or number) followed by " ...". For a row of a list, which cannot wrap; the whole text goes
-/// in the row's tooltip.
-std::string ShortenToWidth(const std::string& text, float width);
-
 /// Shows `text` wrapped to the room left on the current line (from the cursor to the window's content edge), in
 /// the colour `color` (alpha 0: the text colour of the style).
 void WrappedText(const std::string& text, ImVec4 color = ImVec4(0.0f, 0.0f, 0.0f, 0.0f));
