@@ -590,6 +590,12 @@ void Panels::SidePanel()
         WrappedTextDisabled(document.GetScene().description);
     }
     ImGui::Separator();
+    // First, collapsed, where it is always in sight: below the step list and the numbers a short window scrolled it
+    // out of sight, and a scene that turns a layer off (l13_overlap's axes) left no way to find it.
+    if (ImGui::CollapsingHeader("Layers"))
+    {
+        LayerToggles();
+    }
     SimulationControls();
     if (m_app.GetViewer().TestsPair())
     {
@@ -603,10 +609,6 @@ void Panels::SidePanel()
     {
         WrappedText("This figure, \"" + std::string(FigureKindName(m_app.GetViewer().CurrentFigure().kind)) +
                     "\", draws one body by itself: no pair is tested, so there are no steps to follow.");
-    }
-    if (ImGui::CollapsingHeader("Layers"))
-    {
-        LayerToggles();
     }
     ImGui::End();
 }
@@ -729,6 +731,19 @@ void Panels::StepControls()
     }
     StepRow(sliderText);
     WrappedText(DescribeStep(studied, study, viewer.Step()));
+    if (viewer.Step() != viewer.VerdictStep() && (choices.layers & kLayerProjection) == 0)
+    {
+        // A scene may leave the axis off to show something else (l13_overlap, the Minkowski view): the sentence
+        // above speaks of an axis the picture does not draw.
+        WrappedTextDisabled(std::string("The picture does not draw this axis: this scene has the projection layer "
+                                        "off") +
+                            ((choices.layers & kLayerMinkowski) ? " to show the Minkowski view (the inset)" : "") +
+                            ". Turn it on here, or under Layers at the top of this panel.");
+        if (ImGui::SmallButton("show the axes"))
+        {
+            m_app.SetLayers(choices.layers | kLayerProjection | kLayerAxes | kLayerNormals);
+        }
+    }
 
     ImGui::Separator();
     ImGui::TextUnformatted(study.Textbook() ? "Axes tested (click one)" : "Face tests run (click one)");

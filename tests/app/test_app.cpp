@@ -3431,3 +3431,32 @@ TEST_CASE("Every row of the axes list of a lesson scene fits the list's width", 
     }
     CHECK(cut.empty());
 }
+
+TEST_CASE("A scene with the axis layers off says so beside an axis step, and the Layers panel is in sight", "[app]")
+{
+    // l13_overlap shows the Minkowski view: stepping its axes changed only the words, since its layers leave the
+    // projection off, and the Layers panel that turns it on lay below the step list and the numbers, out of sight
+    // in a short window.
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/l13_overlap.json");
+    ImGui::GetIO().DisplaySize = ImVec2(1180.0f, 650.0f);
+    h.Frames(2);
+    h.app->ShowStep(0);
+    h.Frames(2);
+    REQUIRE((h.View().Choices().layers & kLayerProjection) == 0);
+    const auto projected = [&]() {
+        RecordingCanvas canvas;
+        PaintFigure(canvas, h.View().Studied(), h.View().Setup().study, CanvasFigure(*h.app));
+        return !canvas.InGroup("projection").empty();
+    };
+    CHECK(!projected());
+    // The panel's button turns the axis on, and the picture draws it.
+    REQUIRE(h.ClickButton("##panel", "show the axes"));
+    h.Frames(2);
+    CHECK((h.View().Choices().layers & kLayerProjection) != 0);
+    CHECK(h.View().Step() == 0);
+    CHECK(projected());
+    // With the axis drawn, no note and no button.
+    CHECK(!h.ClickButton("##panel", "show the axes"));
+    // The Layers header is in the panel's sight (a click reaches it) with the step list and the numbers open.
+    CHECK(h.ClickButton("##panel", "Layers"));
+}
