@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "label_placer.h"
+#include "draw_kit.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,6 +87,32 @@ int QuarterPointsInside(const std::vector<ScreenPoint>& outline, const ScreenRec
         inside += InsideConvex(outline, p) ? 1 : 0;
     }
     return inside;
+}
+
+// Whether the segment pq runs along the segment uv: more than 16 pixels of pq lie within 4 pixels of uv, beside it.
+// A line that crosses uv at a shallow angle (under about 30 degrees) runs along it for a while too; a steeper one
+// crosses it.
+bool RunsAlong(ScreenPoint p, ScreenPoint q, ScreenPoint u, ScreenPoint v)
+{
+    const float ux = v.x - u.x;
+    const float uy = v.y - u.y;
+    const float length = std::hypot(ux, uy);
+    const float own = std::hypot(q.x - p.x, q.y - p.y);
+    if (length < 10.0f || own < 10.0f)
+    {
+        return false;
+    }
+    const int samples = static_cast<int>(own);
+    int near = 0;
+    for (int k = 0; k <= samples; ++k)
+    {
+        const float t = static_cast<float>(k) / static_cast<float>(samples);
+        const float x = p.x + (q.x - p.x) * t - u.x;
+        const float y = p.y + (q.y - p.y) * t - u.y;
+        const float along = (x * ux + y * uy) / length;
+        near += along >= 0.0f && along <= length && std::abs(x * uy - y * ux) / length < 4.0f ? 1 : 0;
+    }
+    return near > 16;
 }
 
 // Whether the segments pq and uv cross.
@@ -257,6 +284,12 @@ void LabelPlacer::ReserveShape(const std::vector<ScreenPoint>& outline)
 void LabelPlacer::ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, LabelRank from)
 {
     m_lines.push_back({a, b, thickness, from});
+}
+
+void LabelPlacer::ReserveEdge(ScreenPoint a, ScreenPoint b)
+{
+    m_lines.push_back({a, b, 1.0f});
+    m_lines.back().edge = true;
 }
 
 void LabelPlacer::ReserveShaft(ScreenPoint a, ScreenPoint b, float thickness)
@@ -541,6 +574,10 @@ bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
             return false;
         }
     }
+    if (LeaderRunsAlong(anchor, rect))
+    {
+        return false;
+    }
     // Under a label's halo the line would vanish and seem to lead to that label; under a band, from nowhere. The
     // marks at the anchor (a contact point, two close ones that share a label, an arrow head) are where it starts.
     const ScreenRect start{anchor.x - 8.0f, anchor.y - 8.0f, anchor.x + 8.0f, anchor.y + 8.0f};
@@ -560,6 +597,27 @@ bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
         }
     }
     return true;
+}
+
+bool LabelPlacer::LeaderRunsAlong(ScreenPoint anchor, const ScreenRect& rect) const
+{
+    // A leader line that runs along a body's edge merges with it and seems to name that edge, or the corner where it
+    // leaves it. One that starts on an edge (the face it names) leaves it steeply enough to be told from it.
+    const LeaderLine line = Leader(anchor, rect);
+    if (!line.drawn)
+    {
+        return false;
+    }
+    if (std::any_of(m_lines.begin(), m_lines.end(),
+                    [&](const Line& other) { return other.edge && RunsAlong(line.from, line.to, other.a, other.b); }))
+    {
+        return true;
+    }
+    // Nor past a contact's dot other than the ones at its anchor: it seems to lead from that dot.
+    return std::any_of(m_marks.begin(), m_marks.end(), [&](const Mark& mark) {
+        return mark.kind == MarkKind::Contact && std::hypot(mark.at.x - anchor.x, mark.at.y - anchor.y) > 8.0f &&
+               DistanceToSegment(mark.at, line.from, line.to) < 6.0f;
+    });
 }
 
 bool LabelPlacer::LeaderCrossesBar(ScreenPoint anchor, const ScreenRect& rect) const
@@ -841,6 +899,7 @@ void LabelPlacer::Flush(Color halo)
                         OnItsSide(label->onSide, label->anchor, label->dx, label->dy, rect, true) &&
                         (!strict || LeaderClear(label->anchor, rect)) &&
                         (!clearOfBars || !LeaderCrossesBar(label->anchor, rect)) &&
+                        (!clearOfBars || !LeaderRunsAlong(label->anchor, rect)) &&
                         !(label->onSide && LeaderCrossesLine(label->anchor, rect)))
                     {
                         chosen = rect;

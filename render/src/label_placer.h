@@ -59,6 +59,8 @@ class LabelPlacer
     /// would hide (a projection bar, a marked face). With `from` above LabelRank::Vertex only labels of that rank
     /// and above keep off it: a vertex number or an edge name may still sit on it rather than be left out.
     void ReserveLine(ScreenPoint a, ScreenPoint b, float thickness, LabelRank from = LabelRank::Vertex);
+    /// Reserves an edge of a body's outline as ReserveLine does; a leader line may not run along it either.
+    void ReserveEdge(ScreenPoint a, ScreenPoint b);
     /// Marks an arrow's shaft: as any line no label covers it, and no vertex number or edge name has it between
     /// itself and what it names, where the arrow cuts the number off from its corner and it reads as the arrow's.
     void ReserveShaft(ScreenPoint a, ScreenPoint b, float thickness);
@@ -157,6 +159,7 @@ class LabelPlacer
         bool faint = false;                 // labels above LabelRank::Named keep off it only where the room allows
         bool parting = false;               // the separating line
         bool leader = false;                // a leader line drawn for a label placed before
+        bool edge = false;                  // an edge of a body's outline
     };
     struct LeaderLine
     {
@@ -166,6 +169,7 @@ class LabelPlacer
     static LeaderLine Leader(ScreenPoint anchor, const ScreenRect& rect);
     bool LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const;
     bool LeaderCrossesLine(ScreenPoint anchor, const ScreenRect& rect) const;
+    bool LeaderRunsAlong(ScreenPoint anchor, const ScreenRect& rect) const;
     bool LeaderCrossesBar(ScreenPoint anchor, const ScreenRect& rect) const;
     bool Free(const ScreenRect& rect, float spacing, LabelRank rank, bool everyLine = false) const;
     bool Inside(const ScreenRect& rect) const;

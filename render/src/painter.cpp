@@ -36,6 +36,7 @@ constexpr int kFitAxes = 128;              // at most about this many axis lines
 constexpr float kFitMargin = 22.0f;        // pixels between the axis line and the scene area's edge
 constexpr float kFitSide = 36.0f;          // at the left and right edges: room for a corner's number and edge name
 constexpr float kOutline = 2.0f;           // shape outline thickness
+constexpr float kClearOfDot = 12.0f;       // a face's name led from this far off a contact's dot
 constexpr float kBar = 6.0f;               // interval bar thickness
 constexpr float kLinePad = 26.0f;          // the axis line runs this far beyond the intervals
 
@@ -607,7 +608,7 @@ class Painter
                 const std::vector<ScreenPoint> outline = OutlineOf(s);
                 for (size_t i = 0; i < outline.size(); ++i)
                 {
-                    m_labels.ReserveLine(outline[i], outline[(i + 1) % outline.size()], 1.0f);
+                    m_labels.ReserveEdge(outline[i], outline[(i + 1) % outline.size()]);
                 }
             }
         }
@@ -1922,6 +1923,9 @@ class Painter
             m_labels.ReservePartingLine(a, b, 2.5f);
             m_labels.Place(a.y < b.y ? a : b, "separating line", TextStyle::Label, 0x006E50FFu, 0.0f, -1.0f, 6.0f,
                           LabelRank::Verdict);
+            // With no room at that end (the gap's band and its size there), beside the line farther along, rather
+            // than on a leader line that starts among the gap's marks.
+            m_labels.AlsoAt(AlongFace(a.y < b.y ? a : b, a.y < b.y ? b : a, a.y < b.y ? a : b, {}, 0.0f, 24.0f, 24.0f));
         }
     }
 
@@ -1996,13 +2000,21 @@ class Painter
                                       : FormatNumber(m.depth);
         // A depth of round-off size moves B by nothing the eye can see, and the sentence says the shapes touch: an
         // arrow or an outline drawn a visible length would show a push there is not. The MTV is named on B, with
-        // what it means.
+        // what it means, above B (or below it), beside B as a whole: a leader line to B's centre would end among
+        // the marks of its faces and read as naming one of them.
         if (RoundOffVerdict(m_study))
         {
-            const Vec2 center = ShapeCenter(m_bodyB.shape, m_bodyB.Xf());
-            m_labels.Place(At(center), "MTV " + depth + ": round-off, they touch", TextStyle::Heading,
-                           palette::kResult, static_cast<float>(m.normal.x), static_cast<float>(-m.normal.y), 6.0f,
-                           LabelRank::Verdict);
+            const std::vector<ScreenPoint> outline = OutlineOf(1);
+            const auto byHeight = [](ScreenPoint p, ScreenPoint q) { return p.y < q.y; };
+            const ScreenPoint top = *std::min_element(outline.begin(), outline.end(), byHeight);
+            const ScreenPoint bottom = *std::max_element(outline.begin(), outline.end(), byHeight);
+            const float middle = 0.5f * (std::min_element(outline.begin(), outline.end(),
+                                                          [](ScreenPoint p, ScreenPoint q) { return p.x < q.x; })->x +
+                                         std::max_element(outline.begin(), outline.end(),
+                                                          [](ScreenPoint p, ScreenPoint q) { return p.x < q.x; })->x);
+            m_labels.Place({middle, top.y}, "MTV " + depth + ": round-off, they touch", TextStyle::Heading,
+                           palette::kResult, 0.0f, -1.0f, 8.0f, LabelRank::Verdict);
+            m_labels.AlsoAt({{middle, bottom.y}});
             return;
         }
         const Vec2 shift = m.depth * m.normal;
@@ -2352,7 +2364,25 @@ class Painter
                 middle = middle + (1.0 / m_study.manifold.contactCount) * m_study.manifold.contacts[i].point;
             }
             const ScreenPoint foot = NearestOnSegment(shown1, shown2, At(middle));
-            const std::vector<ScreenPoint> free = AlongFace(shown1, shown2, foot, other, 0.0f, 4.0f);
+            std::vector<ScreenPoint> free = AlongFace(shown1, shown2, foot, other, 0.0f, 4.0f);
+            // Not from a contact's dot, where the other body leaves the face: a leader line from there reads as
+            // naming the contact.
+            std::vector<ScreenPoint> offDots;
+            std::copy_if(free.begin(), free.end(), std::back_inserter(offDots), [&](ScreenPoint p) {
+                for (int i = 0; i < m_study.manifold.contactCount; ++i)
+                {
+                    const ScreenPoint dot = At(m_study.manifold.contacts[i].point);
+                    if (std::hypot(p.x - dot.x, p.y - dot.y) < kClearOfDot)
+                    {
+                        return false;
+                    }
+                }
+                return true;
+            });
+            if (!offDots.empty())
+            {
+                free = offDots;
+            }
             near = !Covered(foot, other, 0.0f) || free.empty() ? foot : free.front();
         }
         m_labels.PlaceOutside(other, near, "reference face", TextStyle::Label, InkOf(referenceShape),

@@ -600,6 +600,59 @@ std::vector<std::string> LabelsOnOutlines(const RecordingCanvas& canvas, const S
     return problems;
 }
 
+// Leader lines that run along an edge of a body of the pair: merged with the outline, the line seems to be part
+// of it and the label to name that edge, or the corner where the line leaves it (on the app's canvas beside a
+// lesson, l13_overlap's "reference face" was led down A's right edge to A's corner 1). Measured as the stretch of
+// the leader lying within 3 pixels of the edge.
+std::vector<std::string> LeadersAlongOutlines(const RecordingCanvas& canvas, const Scene& scene,
+                                              const PairStudy& study, const View& view)
+{
+    std::vector<std::string> problems;
+    for (int body : {study.bodyA, study.bodyB})
+    {
+        const Body& b = scene.bodies[static_cast<size_t>(body)];
+        const std::vector<ScreenPoint> outline = Outline(b, view);
+        for (const DrawCommand* c : canvas.InGroup("labels"))
+        {
+            if (c->kind != DrawCommand::Kind::Segment)
+            {
+                continue;
+            }
+            const ScreenPoint p = c->points[0];
+            const ScreenPoint q = c->points[1];
+            const float length = std::hypot(q.x - p.x, q.y - p.y);
+            for (size_t i = 0; i < outline.size() && length > 0.0f; ++i)
+            {
+                const ScreenPoint u = outline[i];
+                const ScreenPoint v = outline[(i + 1) % outline.size()];
+                const float edge = std::hypot(v.x - u.x, v.y - u.y);
+                if (edge <= 0.0f)
+                {
+                    continue;
+                }
+                // Sample the leader every half pixel; count the samples near the edge, between its ends.
+                int near = 0;
+                const int samples = static_cast<int>(length * 2.0f);
+                for (int k = 0; k <= samples; ++k)
+                {
+                    const float t = samples > 0 ? static_cast<float>(k) / static_cast<float>(samples) : 0.0f;
+                    const ScreenPoint r{p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t};
+                    const float along = ((r.x - u.x) * (v.x - u.x) + (r.y - u.y) * (v.y - u.y)) / edge;
+                    const float across = std::abs((r.x - u.x) * (v.y - u.y) - (r.y - u.y) * (v.x - u.x)) / edge;
+                    near += along >= 0.0f && along <= edge && across <= 3.0f ? 1 : 0;
+                }
+                if (near * 0.5f > 20.0f)
+                {
+                    problems.push_back("the leader line at (" + std::to_string(static_cast<int>(p.x)) + ", " +
+                                       std::to_string(static_cast<int>(p.y)) + ") runs along an edge of " + b.name);
+                    break;
+                }
+            }
+        }
+    }
+    return problems;
+}
+
 // Labels other than vertex numbers and edge names drawn over a dashed outline of where the MTV or a pitfall's push
 // leaves a body, or of a moving body at another time (the short segments of the "mtv" and "ghost" groups): the
 // label's halo breaks the outline, and the words read as crossed out.
@@ -1756,6 +1809,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         {
             problems.push_back(std::move(p));
         }
+        for (std::string& p : LeadersAlongOutlines(canvas, scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
         for (std::string& p : namedFaces ? EdgeNamesBehind(canvas, scene, setup.study, setup.figure.view)
                                          : std::vector<std::string>{})
         {
@@ -1995,7 +2052,9 @@ TEST_CASE("No label of any figure of the course covers another, an arrow head or
     CHECK(failing == 0);
 }
 
-TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentences name is still named", "[labels]")
+TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentences name is still named and no leader "
+          "runs along an edge",
+          "[labels]")
 {
     // Beside the lesson column a 1280 x 800 window leaves the canvas 460 x 758 pixels, and the scene's framing
     // shrinks with it: l17_skips' right wall drew too small to have its edges named, while the verdict spoke of
@@ -2024,8 +2083,12 @@ TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentence
                 {
                     const RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
                     INFO(stem << " step " << k + 1 << " at " << width << " x " << height);
-                    const std::vector<std::string> problems =
+                    std::vector<std::string> problems =
                         NamedFacesUnnamed(canvas, scene, setup.study, setup.figure.layers, setup.figure.view);
+                    for (std::string& p : LeadersAlongOutlines(canvas, scene, setup.study, setup.figure.view))
+                    {
+                        problems.push_back(std::move(p));
+                    }
                     for (const std::string& problem : problems)
                     {
                         UNSCOPED_INFO(problem);
@@ -2079,8 +2142,12 @@ TEST_CASE("On the app's narrower canvas beside a lesson, the face view names eve
                     {
                         continue;
                     }
-                    const std::vector<std::string> problems =
+                    std::vector<std::string> problems =
                         NamedFacesUnnamed(canvas, scene, setup.study, setup.figure.layers, setup.figure.view);
+                    for (std::string& p : LeadersAlongOutlines(canvas, scene, setup.study, setup.figure.view))
+                    {
+                        problems.push_back(std::move(p));
+                    }
                     for (const std::string& problem : problems)
                     {
                         UNSCOPED_INFO(problem);
