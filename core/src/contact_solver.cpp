@@ -86,6 +86,102 @@ void WarmStart(SolverContact& c, SolverBody& a, SolverBody& b)
     }
 }
 
+void SolveNormalBlock(SolverContact& c, SolverBody& a, SolverBody& b, const double target[2], double applied[2])
+{
+    const Vec2 n = c.normal;
+    SolverPoint& p1 = c.points[0];
+    SolverPoint& p2 = c.points[1];
+    const double vn1 = Dot(RelativeVelocity(a, b, p1.rA, p1.rB), n);
+    const double vn2 = Dot(RelativeVelocity(a, b, p2.rA, p2.rB), n);
+    const double a1 = p1.normalImpulse;
+    const double a2 = p2.normalImpulse;
+    // The speeds after impulses x are K x + b; each case sets some of them to zero.
+    const double b1 = (vn1 - target[0]) - (c.k11 * a1 + c.k12 * a2);
+    const double b2 = (vn2 - target[1]) - (c.k12 * a1 + c.k22 * a2);
+    double x1 = -(c.m11 * b1 + c.m12 * b2);
+    double x2 = -(c.m12 * b1 + c.m22 * b2);
+    if (!(x1 >= 0.0 && x2 >= 0.0))
+    {
+        x1 = -p1.normalMass * b1;
+        x2 = 0.0;
+        if (!(x1 >= 0.0 && c.k12 * x1 + b2 >= 0.0))
+        {
+            x1 = 0.0;
+            x2 = -p2.normalMass * b2;
+            if (!(x2 >= 0.0 && c.k12 * x2 + b1 >= 0.0))
+            {
+                x1 = 0.0;
+                x2 = 0.0;
+                if (!(b1 >= 0.0 && b2 >= 0.0))
+                {
+                    // No case holds (round-off on a degenerate pair): keep the impulses as they are.
+                    x1 = a1;
+                    x2 = a2;
+                }
+            }
+        }
+    }
+    applied[0] = x1 - a1;
+    applied[1] = x2 - a2;
+    ApplyImpulse(a, b, p1.rA, p1.rB, applied[0] * n);
+    ApplyImpulse(a, b, p2.rA, p2.rB, applied[1] * n);
+    p1.normalImpulse = x1;
+    p2.normalImpulse = x2;
+}
+
+bool SoftBounceTargets(SolverContact& c, const SoftMove& moveA, const SoftMove& moveB, double pull, double h, double dt)
+{
+    bool any = false;
+    const double e = c.material.restitution;
+    for (int i = 0; i < c.count; ++i)
+    {
+        SolverPoint& p = c.points[i];
+        p.restitutionImpulse = 0.0;
+        if (!(p.bounce > 0.0) || p.maxNormalImpulse == 0.0)
+        {
+            p.bounce = 0.0;
+            continue;
+        }
+        const double v = p.approach;
+        const double d = p.separation < 0.0 ? std::min(-p.separation, -v * dt) : -p.separation;
+        const double down = v - 0.5 * pull * h;
+        const double u2 = std::max(0.0, down * down - 2.0 * pull * d);
+        const Vec2 turnA = Rotate(moveA.rotation, p.rA) - p.rA;
+        const Vec2 turnB = Rotate(moveB.rotation, p.rB) - p.rB;
+        const double s = p.separation + Dot((moveB.position - moveA.position) + turnB - turnA, c.normal);
+        p.bounce = 0.5 * pull * h + std::sqrt(std::max(0.0, e * e * u2 - 2.0 * pull * s));
+        any = true;
+    }
+    return any;
+}
+
+void ApplySoftRestitution(SolverContact& c, SolverBody& a, SolverBody& b)
+{
+    if (c.block && c.points[0].bounce > 0.0 && c.points[1].bounce > 0.0)
+    {
+        const double target[2] = {c.points[0].bounce, c.points[1].bounce};
+        double applied[2] = {0.0, 0.0};
+        SolveNormalBlock(c, a, b, target, applied);
+        c.points[0].restitutionImpulse += applied[0];
+        c.points[1].restitutionImpulse += applied[1];
+        return;
+    }
+    for (int i = 0; i < c.count; ++i)
+    {
+        SolverPoint& p = c.points[i];
+        if (!(p.bounce > 0.0))
+        {
+            continue;
+        }
+        const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), c.normal);
+        const double next = std::max(0.0, p.normalImpulse - p.normalMass * (vn - p.bounce));
+        const double applied = next - p.normalImpulse;
+        p.normalImpulse = next;
+        p.restitutionImpulse += applied;
+        ApplyImpulse(a, b, p.rA, p.rB, applied * c.normal);
+    }
+}
+
 namespace
 {
 

@@ -32,6 +32,9 @@ struct StepMemory
     std::vector<WorldContact> previousContacts;    ///< FindContacts: the last step's contacts
     std::vector<std::pair<int, int>> candidates;   ///< FindContacts: the broadphase's pairs
     std::vector<Aabb> boxes;                       ///< FindContacts: the bodies' boxes
+    std::vector<SoftMove> softMoves;               ///< SolveSoft: each body's move within the sub-steps
+    std::vector<SolverBody> softVelocities;        ///< SolveSoft: the velocities the sub-steps leave
+    std::vector<int> bouncing;                     ///< SolveSoft: the contacts with a bouncing point
 };
 
 /// The world's working lists, made on its first step.
@@ -41,11 +44,12 @@ StepMemory& MemoryOf(World& world);
 ///  1. FindContacts (world_contacts.cpp): bounds, broadphase, narrowphase, warm starting, waking. A pair that a
 ///     bullet would outrun (LeftToSweep) keeps its points only as a guard for the position passes.
 ///  2. SolveVelocities (world_velocities.cpp): gravity, the contacts ordered top down (OrderTopDown), the velocity
-///     passes, and LimitEnergyGain for a group of bodies the passes left with more energy than it had.
+///     passes, and LimitEnergyGain for a group of bodies the passes left with more energy than it had. With
+///     WorldSettings::softStep, SolveSoft (world_soft_step.cpp) instead: the sub-steps of the soft step.
 ///  3. StoreImpulses (world_velocities.cpp): the impulses go back to the world's contacts for the next warm start.
 ///  4. Move (world_positions.cpp): positions, with the hits of fast bodies in time order (TimeOfImpactStage).
 ///  5. CorrectPositions (world_positions.cpp): guards for where the bodies went (GuardAfterMove), then the position
-///     passes remove the overlap left.
+///     passes remove the overlap left. Not with the soft step, whose sub-steps have removed it.
 ///  6. Sleep (world_sleep.cpp): islands of touching dynamic bodies that have rested long enough sleep.
 struct Stepper
 {
@@ -79,8 +83,18 @@ struct Stepper
     void FindContacts();
     /// Whether the pair (i, j), still apart, is left to the sweep instead of given a speculative contact.
     bool LeftToSweep(int i, int j) const;
-    /// Stage 2: gravity and the velocity passes.
+    /// Stage 2: gravity and the velocity passes (or, with WorldSettings::softStep, SolveSoft).
     void SolveVelocities();
+    /// Stage 2's start, shared by both solvers: the solver bodies (velocities before gravity), each contact
+    /// prepared once (lever arms from the centres of mass, effective masses, bounce targets), the guards, and the
+    /// traced contact's setup.
+    void PrepareContacts();
+    /// Stage 2 with WorldSettings::softStep: the sub-steps of the soft step and the restitution after them. Leaves
+    /// solverBodies with the velocities that take each body where the sub-steps moved it (its move over dt), for
+    /// Move, and the velocities the sub-steps end with in the memory's softVelocities, which Move gives the bodies.
+    void SolveSoft();
+    /// The traced contact's restitution and its bodies' velocities after the solve.
+    void RecordAfter();
     /// More passes, then smaller impulses, for a group of bodies the velocity passes left with more kinetic energy
     /// than it had; `unsolved` holds the velocities before the passes.
     template <typename SolvePass>

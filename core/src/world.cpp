@@ -221,7 +221,10 @@ void Step(World& world, double dt)
     stepper.SolveVelocities();
     stepper.StoreImpulses();
     stepper.Move();
-    stepper.CorrectPositions();
+    if (!world.settings.softStep)
+    {
+        stepper.CorrectPositions();
+    }
     stepper.Sleep();
     world.time += dt;
 }

@@ -57,6 +57,30 @@ void Stepper::Move()
         hit[static_cast<size_t>(i)] = stage.TookHit(i) ? 1 : 0;
         rotations[static_cast<size_t>(i)] = stage.Rotation(i);
     }
+    if (settings.softStep)
+    {
+        // The soft step moved each body with the velocity of its path over the sub-steps; it keeps the velocity
+        // the last sub-step left, plus what its hits changed (so that momentum is kept: a hit's impulses are equal
+        // and opposite, and so are the sub-steps').
+        for (int i = 0; i < n; ++i)
+        {
+            if (!IsAwakeDynamic(bodies[i]))
+            {
+                continue;
+            }
+            const SolverBody& last = memory.softVelocities[static_cast<size_t>(i)];
+            if (hit[static_cast<size_t>(i)])
+            {
+                bodies[i].velocity = bodies[i].velocity + (last.v - solverBodies[i].v);
+                bodies[i].angularVelocity += last.w - solverBodies[i].w;
+            }
+            else
+            {
+                bodies[i].velocity = last.v;
+                bodies[i].angularVelocity = last.w;
+            }
+        }
+    }
 }
 
 // Guards for where the bodies went. FindContacts gave guards to the static bodies within reach of the position

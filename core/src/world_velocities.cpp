@@ -114,6 +114,83 @@ void Stepper::SortContacts()
 
 void Stepper::SolveVelocities()
 {
+    PrepareContacts();
+    if (settings.softStep)
+    {
+        SolveSoft();
+        return;
+    }
+    ContactSolveTrace* trace = world.trace;
+    std::vector<RigidBody>& bodies = world.bodies;
+    const int n = static_cast<int>(bodies.size());
+    for (int i = 0; i < n; ++i)
+    {
+        if (IsAwakeDynamic(bodies[i]))
+        {
+            solverBodies[i].v = solverBodies[i].v + dt * settings.gravity;
+        }
+    }
+    energyBefore.resize(n);
+    for (int i = 0; i < n; ++i)
+    {
+        energyBefore[i] = detail::Energy(solverBodies[i]);
+    }
+    const std::vector<SolverBody> unsolved = solverBodies;
+    for (SolverContact& c : solverContacts)
+    {
+        detail::WarmStart(c, solverBodies[c.a], solverBodies[c.b]);
+    }
+    OrderTopDown();
+    SortContacts();
+    detail::NullSolveRecorder quiet;
+    detail::TraceSolveRecorder loud{trace};
+    const auto solveOne = [&](SolverContact& c, int pass) {
+        if (c.traced)
+        {
+            detail::SolveContactVelocity(c, solverBodies[c.a], solverBodies[c.b], pass, loud);
+        }
+        else
+        {
+            detail::SolveContactVelocity(c, solverBodies[c.a], solverBodies[c.b], pass, quiet);
+        }
+    };
+    const auto solvePass = [&](const std::vector<int>& order, int pass) {
+        for (const int k : order)
+        {
+            solveOne(solverContacts[static_cast<size_t>(k)], pass);
+        }
+    };
+    for (int pass = 0; pass < settings.velocityIterations; ++pass)
+    {
+        for (SolverContact& c : solverContacts)
+        {
+            solveOne(c, pass);
+        }
+    }
+    LimitEnergyGain(unsolved, solvePass);
+    detail::ApplyRestitution(solverContacts, foundOrder, solverBodies, energyBefore, settings.velocityIterations);
+    RecordAfter();
+}
+
+void Stepper::RecordAfter()
+{
+    ContactSolveTrace* trace = world.trace;
+    for (const SolverContact& c : solverContacts)
+    {
+        if (c.traced)
+        {
+            trace->restitutionImpulse[0] = c.points[0].restitutionImpulse;
+            trace->restitutionImpulse[1] = c.points[1].restitutionImpulse;
+            trace->velocityAfter[0] = solverBodies[c.a].v;
+            trace->velocityAfter[1] = solverBodies[c.b].v;
+            trace->spinAfter[0] = solverBodies[c.a].w;
+            trace->spinAfter[1] = solverBodies[c.b].w;
+        }
+    }
+}
+
+void Stepper::PrepareContacts()
+{
     std::vector<RigidBody>& bodies = world.bodies;
     const int n = static_cast<int>(bodies.size());
     solverBodies.assign(n, SolverBody{});
@@ -186,6 +263,7 @@ void Stepper::SolveVelocities()
             {
                 detail::SolverPoint& p = c.points[i];
                 p.gapSpeed = std::max(0.0, p.separation) / dt;
+                p.approach = approach[i];
                 p.normalImpulse = wc.points[i].normalImpulse;
                 p.tangentImpulse = wc.points[i].tangentImpulse;
             }
@@ -238,65 +316,6 @@ void Stepper::SolveVelocities()
                 trace->warmNormal[i] = c.points[i].normalImpulse;
                 trace->warmTangent[i] = c.points[i].tangentImpulse;
             }
-        }
-    }
-
-    for (int i = 0; i < n; ++i)
-    {
-        if (IsAwakeDynamic(bodies[i]))
-        {
-            solverBodies[i].v = solverBodies[i].v + dt * settings.gravity;
-        }
-    }
-    energyBefore.resize(n);
-    for (int i = 0; i < n; ++i)
-    {
-        energyBefore[i] = detail::Energy(solverBodies[i]);
-    }
-    const std::vector<SolverBody> unsolved = solverBodies;
-    for (SolverContact& c : solverContacts)
-    {
-        detail::WarmStart(c, solverBodies[c.a], solverBodies[c.b]);
-    }
-    OrderTopDown();
-    SortContacts();
-    detail::NullSolveRecorder quiet;
-    detail::TraceSolveRecorder loud{trace};
-    const auto solveOne = [&](SolverContact& c, int pass) {
-        if (c.traced)
-        {
-            detail::SolveContactVelocity(c, solverBodies[c.a], solverBodies[c.b], pass, loud);
-        }
-        else
-        {
-            detail::SolveContactVelocity(c, solverBodies[c.a], solverBodies[c.b], pass, quiet);
-        }
-    };
-    const auto solvePass = [&](const std::vector<int>& order, int pass) {
-        for (const int k : order)
-        {
-            solveOne(solverContacts[static_cast<size_t>(k)], pass);
-        }
-    };
-    for (int pass = 0; pass < settings.velocityIterations; ++pass)
-    {
-        for (SolverContact& c : solverContacts)
-        {
-            solveOne(c, pass);
-        }
-    }
-    LimitEnergyGain(unsolved, solvePass);
-    detail::ApplyRestitution(solverContacts, foundOrder, solverBodies, energyBefore, settings.velocityIterations);
-    for (const SolverContact& c : solverContacts)
-    {
-        if (c.traced)
-        {
-            trace->restitutionImpulse[0] = c.points[0].restitutionImpulse;
-            trace->restitutionImpulse[1] = c.points[1].restitutionImpulse;
-            trace->velocityAfter[0] = solverBodies[c.a].v;
-            trace->velocityAfter[1] = solverBodies[c.b].v;
-            trace->spinAfter[0] = solverBodies[c.a].w;
-            trace->spinAfter[1] = solverBodies[c.b].w;
         }
     }
 }

@@ -116,6 +116,10 @@ int main(int argc, char** argv)
     app.add_flag("--counts", withCounts,
                  "Add each printed step's counts: pairs, static_pairs, sleeping_pairs, bounds_apart, tested, "
                  "touching, swept, hits, awake, sleeping");
+    bool softStep = false;
+    app.add_flag("--soft-step", softStep,
+                 "Step with the soft step (sub-steps of soft contacts, WorldSettings::softStep) in place of the "
+                 "velocity and position passes");
     CLI11_PARSE(app, argc, argv);
 
     long long steps = 0;
@@ -176,6 +180,7 @@ int main(int argc, char** argv)
 
     std::ios::sync_with_stdio(false);
     satviz::World world = satviz::MakeWorld(scene);
+    world.settings.softStep = softStep;
     satviz::ThreadPool pool(static_cast<int>(threads));
     world.tasks = satviz::PoolTasks(pool);
     long long hits = 0;

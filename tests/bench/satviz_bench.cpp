@@ -1899,6 +1899,9 @@ int main(int argc, char** argv)
     app.add_option("--threads", w.threads,
                    "--world: threads satviz's world steps on, the caller's included (default 1; above 1 its figures "
                    "are by the wall clock)");
+    app.add_flag("--soft-step", w.softStep,
+                 "--world: satviz steps with the soft step (sub-steps of soft contacts, WorldSettings::softStep) in "
+                 "place of its velocity and position passes");
     std::string scenesDirectory;
     app.add_option("--write-scenes", scenesDirectory,
                    "--world: write the scenes as scene files DIR/SCENE-N.json for satviz-sim (created if missing) "

@@ -241,9 +241,10 @@ Scene MakeScene(bool rain, int n, int steps, uint64_t seed)
     return scene;
 }
 
-WorldSettings SettingsOf(int config)
+WorldSettings SettingsOf(int config, bool softStep)
 {
     WorldSettings settings;
+    settings.softStep = softStep;
     settings.gravity = {0.0, -kGravity};
     settings.broadphase = config != kNoBroadphase;
     settings.skipStaticPairs = config != kStaticPairsTested;
@@ -389,14 +390,14 @@ double MeanMs(const std::vector<double>& ms, int from)
 }
 
 // threads: what satviz's world steps on; above 1, its ms are the wall clock's (see WorldBenchSettings::threads).
-TimedRun TimeRun(const Scene& scene, int config, int steps, int threads)
+TimedRun TimeRun(const Scene& scene, int config, int steps, int threads, bool softStep)
 {
     TimedRun run;
     run.ms.resize(static_cast<size_t>(steps));
     run.wallMs.resize(static_cast<size_t>(steps));
     if (IsSatviz(config))
     {
-        World world = BuildSatviz(scene, SettingsOf(config));
+        World world = BuildSatviz(scene, SettingsOf(config, softStep));
         ThreadPool pool(threads);
         world.tasks = PoolTasks(pool);
         for (int i = 0; i < steps; ++i)
@@ -606,9 +607,9 @@ Quality Summarise(const std::vector<StepQuality>& q, const std::vector<double>& 
     return out;
 }
 
-Quality MeasureSatviz(const Scene& scene, int steps)
+Quality MeasureSatviz(const Scene& scene, int steps, bool softStep)
 {
-    World world = BuildSatviz(scene, SettingsOf(kSatviz));
+    World world = BuildSatviz(scene, SettingsOf(kSatviz, softStep));
     std::vector<Shape> shapes;
     std::vector<bool> dynamic;
     double totalMass = 0.0;
@@ -823,7 +824,7 @@ SceneResult RunScene(const WorldBenchSettings& s, bool rain, int n)
     result.scene = scene.name;
     result.bodies = n;
     std::fprintf(stderr, "satviz-bench --world: %s, %d bodies: quality run\n", scene.name.c_str(), n);
-    result.quality[0] = MeasureSatviz(scene, s.steps);
+    result.quality[0] = MeasureSatviz(scene, s.steps, s.softStep);
 #ifdef SATVIZ_HAVE_BOX2D
     result.quality[1] = MeasureBox2D(scene, s.steps);
 #endif
@@ -862,7 +863,7 @@ SceneResult RunScene(const WorldBenchSettings& s, bool rain, int n)
             {
                 continue;
             }
-            const TimedRun run = TimeRun(scene, c, s.steps, s.threads);
+            const TimedRun run = TimeRun(scene, c, s.steps, s.threads, s.softStep);
             whole[c] = MeanMs(run.ms, 0);
             tailMs[c] = MeanMs(run.ms, tail);
             wall[c] = MeanMs(run.wallMs, 0);
@@ -931,6 +932,13 @@ void PrintTables(const WorldBenchSettings& s, const std::vector<SceneResult>& re
     if (s.threads > 1)
     {
         std::printf("satviz steps on %d threads (--threads): its ms per step are the wall clock's\n", s.threads);
+    }
+    if (s.softStep)
+    {
+        std::printf("satviz steps with the soft step (--soft-step: %d sub-steps, contacts of %g Hz, damping ratio %g, "
+                    "push at most %g), not its passes\n",
+                    WorldSettings{}.subSteps, WorldSettings{}.contactHertz, WorldSettings{}.contactDampingRatio,
+                    WorldSettings{}.maxPushSpeed);
     }
     std::printf(
         "(n dynamic bodies, a third each boxes, circles and convex 3- to 8-gons of size 0.5 to 1; density 1,\n"

@@ -21,6 +21,8 @@ struct WorldBenchSettings
     /// Threads satviz's world steps on (its default task pool, satviz/tasks.h), the caller's included. Above 1,
     /// satviz's figures are by the wall clock, the processor time of one thread no longer being its cost.
     int threads = 1;
+    /// satviz steps with the soft step (WorldSettings::softStep) in every configuration, timed and measured.
+    bool softStep = false;
     bool quick = false;       ///< set by QuickWorldBenchSettings: the figures are no measurement
     std::string csvDirectory; ///< where world.csv is written; empty: nowhere
 };

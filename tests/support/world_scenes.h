@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -17,6 +18,27 @@ namespace satviz::testing
 
 constexpr double kGravity = 9.81;
 constexpr double kDt = 1.0 / 60.0;
+
+/// Whether the world tests step with the soft step (WorldSettings::softStep): set by the environment variable
+/// SATVIZ_TEST_SOFT_STEP=1, so that the same physics checks run against either solver (ctest runs the checks the
+/// soft step holds a second time so). The builders below switch it on in the world they build or add to.
+inline bool SoftStepUnderTest()
+{
+    static const bool on = [] {
+        const char* value = std::getenv("SATVIZ_TEST_SOFT_STEP");
+        return value != nullptr && std::strcmp(value, "1") == 0;
+    }();
+    return on;
+}
+
+/// Switches the soft step on in `world` when the tests run with it (SoftStepUnderTest).
+inline void UseStepUnderTest(World& world)
+{
+    if (SoftStepUnderTest())
+    {
+        world.settings.softStep = true;
+    }
+}
 
 /// A material from its three coefficients.
 inline Material MakeMaterial(double restitution, double friction, double staticFriction)
@@ -39,6 +61,7 @@ inline int AddStatic(World& world, const Shape& shape, Vec2 position, double ang
     def.angle = angle;
     def.material = material;
     REQUIRE(ValidateBodyDef(def).empty());
+    UseStepUnderTest(world);
     return AddBody(world, def);
 }
 
@@ -56,6 +79,7 @@ inline int AddDynamic(World& world, const Shape& shape, Vec2 position, double an
     def.material = material;
     def.density = density;
     REQUIRE(ValidateBodyDef(def).empty());
+    UseStepUnderTest(world);
     return AddBody(world, def);
 }
 
@@ -64,6 +88,7 @@ inline World WorldWithGravity(double g)
 {
     World world;
     world.settings.gravity = {0.0, -g};
+    UseStepUnderTest(world);
     return world;
 }
 

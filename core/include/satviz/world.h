@@ -153,6 +153,33 @@ struct WorldSettings
     bool skipStaticPairs = true; ///< no pair of two static bodies is considered; off: they are tested too
     bool sweepOnlyFast = true;   ///< only fast bodies are swept; off: every moving dynamic body is
     bool sleeping = true;        ///< resting islands sleep; off: every dynamic body is stepped always
+
+    /// The soft step (Catto, "Solver2D", 2024, its soft step; the solver of Box2D v3) in place of the velocity
+    /// passes, the restitution's push-only passes and the position passes. Off (the default), a step runs stages 2
+    /// and 4 of Step as described there. On, stage 2 prepares each contact once (effective masses, bounce targets,
+    /// anchors from the bodies' centres of mass) and then, for each of subSteps sub-steps of dt / subSteps:
+    ///  1. gravity for the sub-step;
+    ///  2. warm start: the accumulated impulses applied again;
+    ///  3. solve: at each point the separation now, from the found one and the bodies' moves so far within the step
+    ///     (no narrowphase); a point still apart may approach by its gap within the sub-step, an overlapping one is
+    ///     pushed out by a soft constraint, a damped spring of contactHertz and contactDampingRatio, at most at
+    ///     maxPushSpeed; friction as in the velocity passes (static limit, then Coulomb's cone);
+    ///  4. the bodies' positions and turns integrated over the sub-step (kept as moves since the start of the step);
+    ///  5. relax: the same pass without the push, so that the push leaves no velocity behind.
+    /// After the sub-steps one pass of restitution brings each point that approached faster than the threshold, and
+    /// pushed, to its bounce speed. The bodies then move as the sub-steps moved them (the hits of fast bodies in time
+    /// order as before) and keep the velocity of the last sub-step. No position passes: the soft push has taken out
+    /// the overlap within the sub-steps. Cheaper per step; it leaves the teaching figures and the block solve of
+    /// two-point contacts aside, so the lessons describe the step with it off.
+    bool softStep = false;
+    int subSteps = 4;                  ///< soft step: sub-steps per step, at least 1
+    /// Soft step: stiffness of the push out of an overlap, as the frequency of a spring, per time unit; at most a
+    /// quarter of the sub-step rate, and twice this against static and sleeping bodies, which cannot give way.
+    double contactHertz = 30.0;
+    double contactDampingRatio = 10.0; ///< soft step: the spring's damping ratio (above 1: no bounce from the push)
+    /// Soft step: most speed, in units per time unit, at which the push separates an overlapping point: a deep
+    /// overlap is taken out over several steps, not by flinging the bodies apart.
+    double maxPushSpeed = 3.0;
 };
 
 /// What one step did with the pairs of bodies, stage by stage: how many were considered and how many each
