@@ -323,7 +323,7 @@ TEST_CASE("A box falling at up to its speculative reach per step lands on the gr
 }
 
 TEST_CASE("A box falling within its reach of the ground has a speculative contact that closes the gap in the step",
-          "[world][speculative]")
+          "[world][speculative][soft-step-fails]")
 {
     // At the start of a step the box's bottom is `gap` above the ground and falls (|v| + g dt) dt in the step, its
     // reach: within the reach the pair must have a contact with that gap (a speculative one), and the box must

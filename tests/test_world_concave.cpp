@@ -188,7 +188,7 @@ TEST_CASE("An L and a U fall on the floor and come to rest on it", "[world][conc
 }
 
 TEST_CASE("A box slides over a floor of pieces as over one convex floor, without catching on the seams",
-          "[world][concave]")
+          "[world][concave][soft-step-fails]")
 {
     // The same box, pushed along the same floor top (y = 0): one run on a floor of ten unit tiles whose sides are
     // seams, one on a single convex floor. Coulomb's law says the speed falls by mu g dt each step, smoothly.

@@ -298,7 +298,8 @@ TEST_CASE("The step counts add up with each saving on and off", "[world][counts]
     CHECK(runs[3].world.counts.tested == runs[2].world.counts.tested + staticPairs);
 }
 
-TEST_CASE("A box gliding without friction on a resting box keeps their island awake and its speed", "[world][sleep]")
+TEST_CASE("A box gliding without friction on a resting box keeps their island awake and its speed",
+          "[world][sleep][soft-step-fails]")
 {
     // The lower box rests on the ground long enough to sleep, but the upper one, touching it, glides at 0.5: an island
     // sleeps only when every body in it has rested for timeToSleep. Without friction nothing slows the glide.

@@ -320,7 +320,7 @@ void SolveSoftContact(SolverContact& c, SolverBody& a, SolverBody& b, const Soft
         }
         const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), n);
         const double wanted = p.normalImpulse - p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
-        const double next = wanted > 0.0 ? wanted : 0.0;
+        const double next = std::max(wanted, 0.0);
         const double applied = next - p.normalImpulse;
         p.normalImpulse = next;
         p.maxNormalImpulse = std::max(p.maxNormalImpulse, next);
@@ -337,12 +337,12 @@ void SolveSoftContact(SolverContact& c, SolverBody& a, SolverBody& b, const Soft
         const double vt = Dot(RelativeVelocity(a, b, p.rA, p.rB), t);
         const double wanted = p.tangentImpulse - p.tangentMass * vt;
         const double staticLimit = c.material.staticFriction * p.normalImpulse;
-        const double dynamicLimit = c.material.friction * p.normalImpulse;
+        const double slidingLimit = c.material.friction * p.normalImpulse;
         double next = wanted;
         p.stuck = std::fabs(wanted) <= staticLimit;
         if (!p.stuck)
         {
-            next = wanted > dynamicLimit ? dynamicLimit : (wanted < -dynamicLimit ? -dynamicLimit : wanted);
+            next = std::max(-slidingLimit, std::min(slidingLimit, wanted));
         }
         const double applied = next - p.tangentImpulse;
         p.tangentImpulse = next;
@@ -350,7 +350,7 @@ void SolveSoftContact(SolverContact& c, SolverBody& a, SolverBody& b, const Soft
         record[i].tangentSpeed = vt;
         record[i].tangentImpulseWanted = wanted;
         record[i].staticLimit = staticLimit;
-        record[i].dynamicLimit = dynamicLimit;
+        record[i].dynamicLimit = slidingLimit;
         record[i].tangentImpulse = next;
         record[i].stuck = p.stuck;
     }
