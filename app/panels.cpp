@@ -730,7 +730,8 @@ void Panels::StepControls()
         sliderText[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(sliderText[0])));
     }
     StepRow(sliderText);
-    WrappedText(DescribeStep(studied, study, viewer.Step()));
+    // The verdict counts the contact points only where the picture draws them, as the figures do.
+    WrappedText(DescribeStep(studied, study, viewer.Step(), (choices.layers & kLayerContacts) != 0));
     if (viewer.Step() != viewer.VerdictStep() && (choices.layers & kLayerProjection) == 0)
     {
         // A scene may leave the axis off to show something else (l13_overlap, the Minkowski view): the sentence

@@ -1197,3 +1197,47 @@ TEST_CASE("Lesson 1's key, and a figure's, stay inside a canvas narrowed by the 
         CHECK(KeyOutside(canvas, 360.0f, 608.0f, false).empty());
     }
 }
+
+TEST_CASE("Lesson 13's verdicts draw a dot on each contact point the app's words and numbers name", "[marks]")
+{
+    // ex13_boxes said "2 contact points, clipped from the incident edge against the reference face" and its numbers
+    // listed c1 and c2, l13_sweep and ex13_sweep listed "contact c1 at impact": none drew a dot. Each point of the
+    // query (Collide's contacts, or the sweep's at the time of impact), on the figure at the verdict.
+    for (const char* stem : {"ex13_boxes", "l13_sweep", "ex13_sweep", "l13_overlap"})
+    {
+        CAPTURE(stem);
+        const Scene scene = painter_test::LessonScene(stem);
+        FigureSetup setup = SetUpFigure(scene, FigureOptions{});
+        REQUIRE(setup.Ok());
+        const PairStudy& study = setup.study;
+        std::vector<Vec2> points;
+        if (study.sweep)
+        {
+            for (int i = 0; i < study.sweepResult.contactCount; ++i)
+            {
+                points.push_back(study.sweepResult.contacts[i].point);
+            }
+        }
+        else
+        {
+            for (int i = 0; i < study.manifold.contactCount; ++i)
+            {
+                points.push_back(study.manifold.contacts[i].point);
+            }
+        }
+        REQUIRE(!points.empty());
+        const RecordingCanvas canvas = painter_test::PaintStep(scene, setup, study.VerdictStep());
+        for (const Vec2& p : points)
+        {
+            const ScreenPoint at = ToScreen(setup.figure.view, p);
+            bool dot = false;
+            for (const DrawCommand* c : canvas.InGroup("contacts"))
+            {
+                dot = dot || (c->kind == DrawCommand::Kind::FillCircle && c->color == palette::kResult &&
+                              std::hypot(c->points[0].x - at.x, c->points[0].y - at.y) < 2.0f);
+            }
+            CAPTURE(p.x, p.y);
+            CHECK(dot);
+        }
+    }
+}
