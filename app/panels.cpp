@@ -869,7 +869,7 @@ void Panels::Inspector()
     // under a heading of its own, since its gap or overlap is not the sweep's answer.
     if (study.sweep)
     {
-        ImGui::TextUnformatted("Swept test (t from 0 to 1):");
+        WrappedText(SweepHeading(m_app.ShownScene()));
         ImGui::Indent();
         const bool textbookSweep = study.Textbook();
         const SweepStatus status = textbookSweep ? study.textbookSweepResult.status : study.sweepResult.status;
@@ -886,7 +886,7 @@ void Panels::Inspector()
         }
         else
         {
-            WrappedText("no hit during the step: no time of impact");
+            WrappedText(SweepMissLine(m_app.ShownScene()));
         }
         ImGui::Unindent();
         ImGui::TextUnformatted("Static test at t = 0 (the start):");

@@ -84,4 +84,15 @@ std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& st
     return rows;
 }
 
+std::string SweepHeading(const Scene& scene)
+{
+    return SweptSpan(scene) == "the step" ? "Swept test over the step (t from 0 to 1):"
+                                           : "Swept test over one second (t from 0 to 1 s), not one step of the world:";
+}
+
+std::string SweepMissLine(const Scene& scene)
+{
+    return "no hit during " + SweptSpan(scene) + ": no time of impact";
+}
+
 } // namespace satviz

@@ -36,4 +36,12 @@ std::vector<std::string> PanelPair(Vec2 p, const PairStudy& study, bool allDigit
 /// its digits.
 std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study, bool allDigits = false);
 
+/// The heading of a sweep's numbers, naming what t from 0 to 1 covers as the verdict does (SweptSpan): the step, or
+/// in a world's scene one second, whose velocities are per second, not one step of the world.
+std::string SweepHeading(const Scene& scene);
+
+/// The line of a sweep's numbers when nothing is hit: "no hit during the step" or "during the swept second", as the
+/// verdict says it.
+std::string SweepMissLine(const Scene& scene);
+
 } // namespace satviz

@@ -205,10 +205,15 @@ bool SweepsSteps(const Scene& scene)
     return !scene.hasWorld || scene.world.dt == 1.0;
 }
 
+} // namespace
+
 std::string SweptSpan(const Scene& scene)
 {
     return SweepsSteps(scene) ? "the step" : "the swept second";
 }
+
+namespace
+{
 
 // How far an interval moves over the swept span, in the same words.
 std::string PerSpan(const Scene& scene)

@@ -3460,3 +3460,30 @@ TEST_CASE("A scene with the axis layers off says so beside an axis step, and the
     // The Layers header is in the panel's sight (a click reaches it) with the step list and the numbers open.
     CHECK(h.ClickButton("##panel", "Layers"));
 }
+
+TEST_CASE("A sweep's numbers name what t from 0 to 1 covers as its verdict does: a step, or a world's second", "[app]")
+{
+    // l17_bullet after a step: the verdict said "no hit during the swept second" while the numbers said "Swept test
+    // (t from 0 to 1)" and "no hit during the step". A world's velocities are per second, and the pair figure sweeps
+    // them over a second, 60 of its steps.
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/l17_bullet.json");
+    h.app->SimForward();
+    h.app->SetQuery(ViewQuery::Sweep);
+    h.Frames(3);
+    REQUIRE(h.AwaitStudy());
+    const PairStudy& study = h.View().Setup().study;
+    REQUIRE(study.sweep);
+    const Scene& scene = h.View().Studied();
+    REQUIRE(scene.hasWorld);
+    const std::string verdict = DescribeStep(scene, study, study.VerdictStep());
+    INFO(verdict);
+    REQUIRE(verdict.find("no hit during the swept second") != std::string::npos);
+    CHECK(SweepMissLine(scene).find("no hit during the swept second") == 0);
+    CHECK(SweepHeading(scene).find("one second") != std::string::npos);
+    CHECK(SweepHeading(scene).find("t from 0 to 1") != std::string::npos);
+    // A scene without a world sweeps one step, and says so in both places.
+    const SceneResult wall = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/bullet_wall.json");
+    REQUIRE(wall.Ok());
+    CHECK(SweepMissLine(wall.scene).find("no hit during the step") == 0);
+    CHECK(SweepHeading(wall.scene).find("over the step") != std::string::npos);
+}

@@ -88,6 +88,11 @@ std::string DescribeAxis(const Scene& scene, const PairStudy& study, const AxisR
 /// sweep, "Verdict" for the verdict; empty for a step that does not exist.
 std::string StepName(const Scene& scene, const PairStudy& study, int step);
 
+/// What a sweep's t from 0 to 1 covers in `scene`, as the verdicts name it: "the step" (a scene without a world,
+/// where a velocity is the displacement over a step, or a world that counts time in steps, dt = 1), else "the swept
+/// second" (a world's velocities are per second, and its figures sweep them over one second, many steps of dt).
+std::string SweptSpan(const Scene& scene);
+
 /// The caption of a step, one or two plain sentences with the step's numbers, e.g. "Axis 3 of 8: normal of B's
 /// edge 1. Intervals [0.10, 1.32] and [1.20, 2.05] overlap by 0.12." With countContacts false the verdict leaves out
 /// its count of contact points, for a picture that does not draw them.
