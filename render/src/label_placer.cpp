@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace satviz
 {
@@ -423,9 +424,9 @@ void LabelPlacer::KeepOnSide()
     }
 }
 
-void LabelPlacer::AddMark(MarkKind kind, ScreenPoint at)
+void LabelPlacer::AddMark(MarkKind kind, ScreenPoint at, ScreenPoint toward)
 {
-    m_marks.push_back({kind, at});
+    m_marks.push_back({kind, at, toward});
 }
 
 void LabelPlacer::Names(MarkKind kind)
@@ -488,7 +489,7 @@ void LabelPlacer::NamesFace(ScreenPoint a, ScreenPoint b, std::vector<std::vecto
     }
 }
 
-bool LabelPlacer::NearestFace(const Label& label, const ScreenRect& rect)
+bool LabelPlacer::NearestFace(const Label& label, const ScreenRect& rect) const
 {
     if (label.face.size() != 2)
     {
@@ -528,6 +529,30 @@ bool LabelPlacer::NearestFace(const Label& label, const ScreenRect& rect)
             {
                 return false;
             }
+        }
+    }
+    // Nor about as near the head of another arrow as its own face: just past the head it reads as that arrow's name
+    // (B's "e0" at the tip of A's e1 normal, which points into B along B's bottom face). Its own face's normal
+    // points square to the face, from a point of it.
+    for (const Mark& m : m_marks)
+    {
+        if (m.kind != MarkKind::ArrowHead || length <= 0.0f)
+        {
+            continue;
+        }
+        const float along = ((m.at.x - a.x) * (b.x - a.x) + (m.at.y - a.y) * (b.y - a.y)) / length;
+        const float slant = std::fabs(m.toward.x * (b.x - a.x) + m.toward.y * (b.y - a.y)) / length;
+        if (along >= 0.0f && along <= length && slant < 0.3f)
+        {
+            continue;
+        }
+        // Near it, or ahead of it on its line, where an arrow's name is written.
+        const float ahead = (middle.x - m.at.x) * m.toward.x + (middle.y - m.at.y) * m.toward.y;
+        const float aside = std::fabs((middle.x - m.at.x) * m.toward.y - (middle.y - m.at.y) * m.toward.x);
+        if (std::hypot(m.at.x - middle.x, m.at.y - middle.y) < own + lead + 8.0f ||
+            (ahead > 0.0f && ahead < 48.0f && aside < 14.0f))
+        {
+            return false;
         }
     }
     return true;
@@ -1064,8 +1089,30 @@ void LineWatch::FillConvex(const ScreenPoint* points, int count, Color color)
         const float h = std::max({points[0].y, points[1].y, points[2].y}) - std::min({points[0].y, points[1].y, points[2].y});
         if (w <= 24.0f && h <= 24.0f)
         {
-            m_labels.AddMark(MarkKind::ArrowHead, {(points[0].x + points[1].x + points[2].x) / 3.0f,
-                                                   (points[0].y + points[1].y + points[2].y) / 3.0f});
+            // Its tip is the corner opposite the shortest side: the head points from that side's middle to it.
+            size_t tip = 0;
+            float shortest = std::numeric_limits<float>::max();
+            for (size_t k = 0; k < 3; ++k)
+            {
+                const ScreenPoint u = points[(k + 1) % 3];
+                const ScreenPoint v = points[(k + 2) % 3];
+                const float side = std::hypot(v.x - u.x, v.y - u.y);
+                if (side < shortest)
+                {
+                    shortest = side;
+                    tip = k;
+                }
+            }
+            const ScreenPoint base{0.5f * (points[(tip + 1) % 3].x + points[(tip + 2) % 3].x),
+                                   0.5f * (points[(tip + 1) % 3].y + points[(tip + 2) % 3].y)};
+            const float reach = std::hypot(points[tip].x - base.x, points[tip].y - base.y);
+            const ScreenPoint toward = reach > 0.0f ? ScreenPoint{(points[tip].x - base.x) / reach,
+                                                                  (points[tip].y - base.y) / reach}
+                                                    : ScreenPoint{};
+            m_labels.AddMark(MarkKind::ArrowHead,
+                             {(points[0].x + points[1].x + points[2].x) / 3.0f,
+                              (points[0].y + points[1].y + points[2].y) / 3.0f},
+                             toward);
         }
     }
     m_canvas.FillConvex(points, count, color);

@@ -105,8 +105,9 @@ class LabelPlacer
     /// Keeps the label added last on the side its preferred direction points to, beyond the line through its anchor
     /// square to that direction: an edge's name outside its edge, where it names that edge and not the one opposite.
     void KeepOnSide();
-    /// Marks a point a label may name: a corner, a contact point, an arrow head.
-    void AddMark(MarkKind kind, ScreenPoint at);
+    /// Marks a point a label may name: a corner, a contact point, an arrow head (with the unit direction it points
+    /// in, `toward`).
+    void AddMark(MarkKind kind, ScreenPoint at, ScreenPoint toward = {});
     /// Tells the label added last that it names the mark of `kind` at its anchor: beside its anchor (or beside what
     /// leads to it, with AlsoBeside) it only takes a place nearer there than any other mark of the kind (farther out,
     /// its leader line shows which it names).
@@ -150,6 +151,7 @@ class LabelPlacer
     {
         MarkKind kind;
         ScreenPoint at;
+        ScreenPoint toward; // an arrow head's direction, unit length
     };
     struct Line
     {
@@ -174,7 +176,7 @@ class LabelPlacer
     bool Free(const ScreenRect& rect, float spacing, LabelRank rank, bool everyLine = false) const;
     bool Inside(const ScreenRect& rect) const;
     bool NearestOwn(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
-    static bool NearestFace(const Label& label, const ScreenRect& rect);
+    bool NearestFace(const Label& label, const ScreenRect& rect) const;
     bool ShaftBetween(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
     bool AcrossParting(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
     Canvas& m_canvas;
