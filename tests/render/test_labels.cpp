@@ -1729,6 +1729,87 @@ std::vector<std::string> ArrowLabelsAstray(const RecordingCanvas& canvas)
     return problems;
 }
 
+// Edge names just ahead of another arrow's head, on its line: there an arrow's name is written, and the name reads
+// as the arrow's (B's "e0" past the tip of A's e1 normal, which points into B along B's bottom face). An arrow
+// square to the named edge, from a point of it, is that face's own normal.
+std::vector<std::string> EdgeNamesAheadOfArrows(const RecordingCanvas& canvas, const Scene& scene,
+                                                const PairStudy& study, const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    const Body* bodies[2] = {&scene.bodies[static_cast<size_t>(study.bodyA)],
+                             &scene.bodies[static_cast<size_t>(study.bodyB)]};
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    const std::vector<ScreenPoint> outlines[2] = {Outline(*bodies[0], view), Outline(*bodies[1], view)};
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || OnLeader(canvas, *c) || !painter_test::IsEdgeName(c->text))
+        {
+            continue;
+        }
+        int s = -1;
+        for (int k = 0; k < 2; ++k)
+        {
+            s = (c->color >> 8) == (inks[k] >> 8) ? k : s;
+        }
+        if (s < 0 || bodies[s]->shape.type != ShapeType::Polygon)
+        {
+            continue;
+        }
+        const size_t n = static_cast<size_t>(std::stoi(c->text.substr(1)));
+        if (n >= outlines[s].size())
+        {
+            continue;
+        }
+        const ScreenPoint a = outlines[s][n];
+        const ScreenPoint b = outlines[s][(n + 1) % outlines[s].size()];
+        const float length = std::hypot(b.x - a.x, b.y - a.y);
+        const ScreenPoint size = measure.MeasureText(c->text, c->style);
+        const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+        for (const DrawCommand& h : canvas.commands)
+        {
+            if (!IsArrowHead(h) || h.group == "labels" || h.group == "legend" || h.group == "panel" ||
+                h.group == "timebar" || h.group == "caption" || length <= 0.0f)
+            {
+                continue;
+            }
+            // The tip is the corner opposite the shortest side.
+            size_t tip = 0;
+            float shortest = INFINITY;
+            for (size_t k = 0; k < 3; ++k)
+            {
+                const ScreenPoint u = h.points[(k + 1) % 3];
+                const ScreenPoint v = h.points[(k + 2) % 3];
+                if (std::hypot(v.x - u.x, v.y - u.y) < shortest)
+                {
+                    shortest = std::hypot(v.x - u.x, v.y - u.y);
+                    tip = k;
+                }
+            }
+            const ScreenPoint base{0.5f * (h.points[(tip + 1) % 3].x + h.points[(tip + 2) % 3].x),
+                                   0.5f * (h.points[(tip + 1) % 3].y + h.points[(tip + 2) % 3].y)};
+            const ScreenPoint t = h.points[tip];
+            const float reach = std::hypot(t.x - base.x, t.y - base.y);
+            if (reach <= 0.0f)
+            {
+                continue;
+            }
+            const ScreenPoint d{(t.x - base.x) / reach, (t.y - base.y) / reach};
+            const float along = ((t.x - a.x) * (b.x - a.x) + (t.y - a.y) * (b.y - a.y)) / length;
+            const float slant = std::fabs(d.x * (b.x - a.x) + d.y * (b.y - a.y)) / length;
+            const bool own = along >= 0.0f && along <= length && slant < 0.3f;
+            const float ahead = (middle.x - t.x) * d.x + (middle.y - t.y) * d.y;
+            const float aside = std::fabs((middle.x - t.x) * d.y - (middle.y - t.y) * d.x);
+            if (!own && ahead > 0.0f && ahead < 30.0f && aside < 8.0f)
+            {
+                problems.push_back(Describe(*c) + " lies just ahead of the arrow head " + Describe(h));
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
 // Leader lines across a projection bar or a marked face (a thick opaque line): the label seems to name the bar.
 // Only away from the anchor: the first 24 pixels lead a contact point on a face out across that face, or a band's
 // size out past the bars beside it.
@@ -1810,6 +1891,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
             problems.push_back(std::move(p));
         }
         for (std::string& p : LeadersAlongOutlines(canvas, scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : EdgeNamesAheadOfArrows(canvas, scene, setup.study, setup.figure.view))
         {
             problems.push_back(std::move(p));
         }
@@ -2052,8 +2137,8 @@ TEST_CASE("No label of any figure of the course covers another, an arrow head or
     CHECK(failing == 0);
 }
 
-TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentences name is still named and no leader "
-          "runs along an edge",
+TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentences name is still named, no leader "
+          "runs along an edge and no edge name sits ahead of another arrow",
           "[labels]")
 {
     // Beside the lesson column a 1280 x 800 window leaves the canvas 460 x 758 pixels, and the scene's framing
@@ -2086,6 +2171,10 @@ TEST_CASE("On the app's narrower canvas beside a lesson, every face the sentence
                     std::vector<std::string> problems =
                         NamedFacesUnnamed(canvas, scene, setup.study, setup.figure.layers, setup.figure.view);
                     for (std::string& p : LeadersAlongOutlines(canvas, scene, setup.study, setup.figure.view))
+                    {
+                        problems.push_back(std::move(p));
+                    }
+                    for (std::string& p : EdgeNamesAheadOfArrows(canvas, scene, setup.study, setup.figure.view))
                     {
                         problems.push_back(std::move(p));
                     }
@@ -2145,6 +2234,10 @@ TEST_CASE("On the app's narrower canvas beside a lesson, the face view names eve
                     std::vector<std::string> problems =
                         NamedFacesUnnamed(canvas, scene, setup.study, setup.figure.layers, setup.figure.view);
                     for (std::string& p : LeadersAlongOutlines(canvas, scene, setup.study, setup.figure.view))
+                    {
+                        problems.push_back(std::move(p));
+                    }
+                    for (std::string& p : EdgeNamesAheadOfArrows(canvas, scene, setup.study, setup.figure.view))
                     {
                         problems.push_back(std::move(p));
                     }
