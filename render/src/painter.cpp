@@ -1239,10 +1239,20 @@ class Painter
                                  LabelRank::Note);
             m_labels.Names(MarkKind::ArrowHead);
             // Beside its own shaft, where the head is crowded (beside a face's normal, whose "v" it would seem).
+            // Not beside its own ghost on the way, where the name reads as the ghost's.
+            std::vector<ScreenPoint> ghost;
+            if (m_study.sweepResult.status == SweepStatus::Hit && Has(m_figure, kLayerGhost))
+            {
+                ghost = ShapeOutline(m_view, body.shape, BodyTransformAt(body, m_study.sweepResult.toi));
+            }
             std::vector<ScreenPoint> shaft;
             for (const float f : {0.2f, 0.4f, 0.6f})
             {
-                shaft.push_back({tip.x + (from.x - tip.x) * f, tip.y + (from.y - tip.y) * f});
+                const ScreenPoint p{tip.x + (from.x - tip.x) * f, tip.y + (from.y - tip.y) * f};
+                if (!Covered(p, ghost, 24.0f))
+                {
+                    shaft.push_back(p);
+                }
             }
             m_labels.AlsoBeside(std::move(shaft));
             // And out of the other body where its ghost shows it (at the hit, at the figure's time).
