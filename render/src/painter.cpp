@@ -853,6 +853,32 @@ class Painter
         return {0.0f, top, Width(), std::min(Height(), m_layout.panelTop)};
     }
 
+    // True when no point of `body`'s outline, where it is now, lies in the scene in sight.
+    bool OutOfSight(const Body& body) const
+    {
+        const std::vector<ScreenPoint> now = ShapeOutline(m_view, body.shape, body.Xf());
+        const ScreenRect sight = SceneInSight();
+        return std::none_of(now.begin(), now.end(), [&](const ScreenPoint& p) {
+            return p.x >= sight.minX && p.x <= sight.maxX && p.y >= sight.minY && p.y <= sight.maxY;
+        });
+    }
+
+    // A body out of the picture (l14_head_on's B after the hit) has no velocity arrow in sight: its speed is written
+    // where the picture's edge is nearest it, named after it. A bare "v = 3.80 m/s" at the edge, beside the other
+    // body's arrow, read as that body's speed.
+    void SpeedAtEdge(int s)
+    {
+        const Body& body = BodyOf(s);
+        const ScreenPoint from = At(ShapeCenter(body.shape, body.Xf()));
+        const ScreenRect sight = SceneInSight();
+        const ScreenPoint edge{std::clamp(from.x, sight.minX + 16.0f, sight.maxX - 16.0f),
+                               std::clamp(from.y, sight.minY + 16.0f, sight.maxY - 16.0f)};
+        m_labels.Place(edge,
+                       body.name + ": v = " + FormatLabelNumber(Length(body.velocity)) +
+                           (m_scene.hasWorld ? " m/s" : " per step"),
+                       TextStyle::Label, InkOf(s), edge.x - from.x, edge.y - from.y, 6.0f, LabelRank::Note);
+    }
+
     // A dashed outline (where the MTV or a pitfall's push leaves a body) reads as broken, and a label on it hides
     // it: a body's name, a note or a verdict's label keeps off it. A vertex number or an edge name may sit on
     // it rather than be left out, as the outline lies close beside the body's own.
@@ -1214,6 +1240,11 @@ class Painter
             }
             const Vec2 c = ShapeCenter(body.shape, body.Xf());
             ScreenPoint from = At(c);
+            if (OutOfSight(body))
+            {
+                SpeedAtEdge(s);
+                continue;
+            }
             // A velocity whose step runs far out of the scene (l17_bullet's 1667 m on a canvas of a few metres) is
             // drawn shorter, its head in sight, and its label gives the speed, as it is not to scale.
             bool shortened = false;
@@ -1318,6 +1349,11 @@ class Painter
             const double speed = Length(body.velocity);
             if (speed <= 0.0)
             {
+                continue;
+            }
+            if (OutOfSight(body))
+            {
+                SpeedAtEdge(s);
                 continue;
             }
             const ScreenPoint from = At(ShapeCenter(body.shape, body.Xf()));
@@ -1546,11 +1582,7 @@ class Painter
                 }
                 // A moving body out of the picture (the bullet far from the wall in a close-up) is named on its
                 // ghost, the only place it is seen: its own name would hang at the image's edge, beside nothing.
-                const std::vector<ScreenPoint> now = ShapeOutline(m_view, body.shape, body.Xf());
-                const ScreenRect sight = SceneInSight();
-                const bool unseen = std::none_of(now.begin(), now.end(), [&](const ScreenPoint& p) {
-                    return p.x >= sight.minX && p.x <= sight.maxX && p.y >= sight.minY && p.y <= sight.maxY;
-                });
+                const bool unseen = OutOfSight(body);
                 m_nameOnGhost[s] = m_nameOnGhost[s] || unseen;
                 m_labels.Place(back, unseen ? body.name + " at " + label : label, TextStyle::Label, InkOf(s), -ux, -1.0f,
                                3.0f, LabelRank::Verdict);

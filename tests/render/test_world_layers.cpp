@@ -401,3 +401,35 @@ TEST_CASE("World layers: no label of the world's layers overlaps another label o
         }
     }
 }
+
+TEST_CASE("World layers: a moving body out of the picture is named beside its speed", "[painter][world]")
+{
+    // After lesson 14's head-on hit B leaves at 3.8 m/s and A follows at 0.6; on the canvas beside the lesson column
+    // (480 x 808) B is soon out of sight, and a bare "v = 3.80 m/s" at the picture's edge, beside A's own arrow, read
+    // as A's speed.
+    SteppedScene s = StepScene("l14_head_on.json", 186);
+    FigureOptions options;
+    options.width = 480;
+    options.height = 808;
+    options.sim = &s.record;
+    s.setup = SetUpFigure(s.scene, options);
+    REQUIRE(s.setup.Ok());
+    RecordingCanvas canvas;
+    PaintFigure(canvas, s.scene, s.setup.study, s.setup.figure);
+    const Body& b = s.scene.bodies[static_cast<size_t>(s.setup.study.bodyB)];
+    REQUIRE(b.name == "B");
+    REQUIRE(b.velocity.x > 3.0);
+    const ScreenPoint center = ToScreen(s.setup.figure.view, TransformPoint(b.Xf(), b.shape.circle.center));
+    REQUIRE(center.x - ToPixels(s.setup.figure.view, b.shape.circle.radius) > 480.0f); // out of the picture
+    const std::string speed = "v = " + FormatNumber(3.8) + " m/s";
+    bool named = false;
+    for (const DrawCommand& c : canvas.commands)
+    {
+        if (c.kind == DrawCommand::Kind::Text)
+        {
+            CHECK(c.text != speed);
+            named = named || c.text == "B: " + speed;
+        }
+    }
+    CHECK(named);
+}
