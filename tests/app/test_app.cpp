@@ -3487,3 +3487,40 @@ TEST_CASE("A sweep's numbers name what t from 0 to 1 covers as its verdict does:
     CHECK(SweepMissLine(wall.scene).find("no hit during the step") == 0);
     CHECK(SweepHeading(wall.scene).find("over the step") != std::string::npos);
 }
+
+TEST_CASE("pitfall_direction's description names the faces its axis list and its pitfall name", "[app][lessons]")
+{
+    // The description said the slab's face with the smallest shared part is its bottom while the axis list named
+    // that axis "slab edge 2" (the top, which the block touches): a student read two faces for one. Both faces are
+    // named in it, each as the list and the pitfall's sentence name it, computed here.
+    const SceneResult loaded = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/pitfall_direction.json");
+    REQUIRE(loaded.Ok());
+    FigureSetup setup = SetUpFigure(loaded.scene, FigureOptions{});
+    REQUIRE(setup.Ok());
+    const PairStudy& study = setup.study;
+    const std::string& description = loaded.scene.description;
+    INFO(description);
+    // The axis of the smallest shared part (the smallest overlap here, as no interval holds the other), as the
+    // list names it.
+    int smallest = -1;
+    for (int k = 0; k < study.AxisCount(); ++k)
+    {
+        const std::string title = StepTitle(loaded.scene, study, k);
+        INFO(title);
+        if (smallest < 0 || title.find("overlap 0.20") != std::string::npos)
+        {
+            smallest = k;
+        }
+    }
+    const std::string title = StepTitle(loaded.scene, study, smallest);
+    const size_t edge = title.find("slab edge ");
+    REQUIRE(edge != std::string::npos);
+    const std::string listed = title.substr(edge + 5, 6); // "edge 2"
+    CHECK(description.find("(" + listed + ")") != std::string::npos);
+    // The face the pitfall pushes along, as its sentence names it.
+    const size_t pushed = study.pitfall.verdict.find("slab's edge ");
+    REQUIRE(pushed != std::string::npos);
+    const std::string face = study.pitfall.verdict.substr(pushed + 7, 6); // "edge 0"
+    CHECK(face != listed);
+    CHECK(description.find("(" + face + ")") != std::string::npos);
+}
