@@ -49,9 +49,14 @@ std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& st
     const Vec2 normal = textbook ? study.textbookResult.normal : m.normal;
     const double depth = textbook ? study.textbookResult.depth : m.depth;
     const double gap = textbook ? study.textbookResult.gap : m.gap;
-    rows.push_back(m.overlap
-                       ? NumberRow{"MTV length (depth)", {allDigits ? PanelNumber(depth, study, true) : amount}}
-                       : NumberRow{"gap on the separating axis", {allDigits ? PanelNumber(gap, study, true) : amount}});
+    // Beside a sweep's verdict the static test's gap is the one at t = 0, on its own axis, which need not be the
+    // sweep's deciding one (fly_by: 0.50 along (0.00, 1.00) at the start, where the number line shows the sweep's
+    // axis 2 and its gap 0.60): the row names both.
+    const std::vector<std::string> along = PanelPair(normal, study, false);
+    const std::string gapLabel = study.sweep ? "gap at t = 0 on the axis (" + along[0] + ", " + along[1] + ")"
+                                             : std::string("gap on the separating axis");
+    rows.push_back(m.overlap ? NumberRow{"MTV length (depth)", {allDigits ? PanelNumber(depth, study, true) : amount}}
+                             : NumberRow{gapLabel, {allDigits ? PanelNumber(gap, study, true) : amount}});
     // The axis the verdict decides on, as the figure's verdict step draws it: the axis that separates, else the
     // one of the smallest push (textbook) or the best face (face tests). A sweep's steps are those of the sweep.
     if (!study.sweep)

@@ -3524,3 +3524,44 @@ TEST_CASE("pitfall_direction's description names the faces its axis list and its
     CHECK(face != listed);
     CHECK(description.find("(" + face + ")") != std::string::npos);
 }
+
+TEST_CASE("Beside a sweep's verdict the static gap names the axis it is measured on, at t = 0", "[app]")
+{
+    // fly_by's numbers said "gap on the separating axis: 0.50", the static test's at t = 0, beside a number line
+    // showing the sweep's deciding axis 2 and its gap 0.60. The row now names its axis; the gap is checked by
+    // projecting the two bodies, where they start, on that axis.
+    const SceneResult loaded = LoadScene(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/fly_by.json");
+    REQUIRE(loaded.Ok());
+    const FigureSetup setup = SetUpFigure(loaded.scene, FigureOptions{});
+    REQUIRE(setup.Ok());
+    const PairStudy& study = setup.study;
+    REQUIRE(study.sweep);
+    const NumberRow* gap = nullptr;
+    const std::vector<NumberRow> rows = StaticTestNumbers(loaded.scene, study);
+    for (const NumberRow& row : rows)
+    {
+        gap = row.label.find("gap") != std::string::npos ? &row : gap;
+    }
+    REQUIRE(gap != nullptr);
+    INFO(gap->label << ": " << gap->parts[0]);
+    CHECK(gap->label.find("separating axis") == std::string::npos);
+    CHECK(gap->label.find("t = 0") != std::string::npos);
+    const size_t open = gap->label.find('(');
+    REQUIRE(open != std::string::npos);
+    double dx = 0.0, dy = 0.0;
+    REQUIRE(std::sscanf(gap->label.c_str() + open, "(%lf, %lf)", &dx, &dy) == 2);
+    const auto project = [&](const Body& body, double& lo, double& hi) {
+        lo = INFINITY;
+        hi = -INFINITY;
+        for (const Vec2& v : body.shape.polygon.Vertices())
+        {
+            const Vec2 p = TransformPoint(body.Xf(), v);
+            lo = std::min(lo, p.x * dx + p.y * dy);
+            hi = std::max(hi, p.x * dx + p.y * dy);
+        }
+    };
+    double loA = 0.0, hiA = 0.0, loB = 0.0, hiB = 0.0;
+    project(loaded.scene.bodies[static_cast<size_t>(study.bodyA)], loA, hiA);
+    project(loaded.scene.bodies[static_cast<size_t>(study.bodyB)], loB, hiB);
+    CHECK(gap->parts[0] == FormatNumber(std::max(loB - hiA, loA - hiB)));
+}
