@@ -347,7 +347,7 @@ bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
     {
         return false;
     }
-    m_labels.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}, false, {}, {}, {}, -1, false, {}, {}});
+    m_labels.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}, false, {}, {}, {}, -1, false, {}, {}, {}});
     return true;
 }
 
@@ -405,6 +405,14 @@ void LabelPlacer::KeepOutOf(std::vector<ScreenPoint> outline)
     if (!m_labels.empty())
     {
         m_labels.back().keepOut.push_back(std::move(outline));
+    }
+}
+
+void LabelPlacer::PreferOutOf(std::vector<ScreenPoint> outline)
+{
+    if (!m_labels.empty())
+    {
+        m_labels.back().preferOut.push_back(std::move(outline));
     }
 }
 
@@ -784,9 +792,15 @@ void LabelPlacer::Flush(Color halo)
     m_reserved = m_taken.size(); // the marks, panels and lines reserved; the labels' footprints follow
     m_takenColors.clear();
     // Whether a place keeps the label out of the other body (and, with OutsideBoth, out of its own too).
-    const auto Away = [](const Label& label, const ScreenRect& rect, ScreenPoint at) {
+    bool preferring = false; // a first search that keeps the label out of the outlines it prefers to keep out of
+    const auto Away = [&preferring](const Label& label, const ScreenRect& rect, ScreenPoint at) {
         if (!std::all_of(label.keepOut.begin(), label.keepOut.end(),
                          [&](const std::vector<ScreenPoint>& outline) { return ClearOf(outline, rect); }))
+        {
+            return false;
+        }
+        if (preferring && !std::all_of(label.preferOut.begin(), label.preferOut.end(),
+                                       [&](const std::vector<ScreenPoint>& outline) { return ClearOf(outline, rect); }))
         {
             return false;
         }
@@ -861,131 +875,137 @@ void LabelPlacer::Flush(Color halo)
         ScreenPoint from = label->anchor;
         // A face a sentence names is named even where every place near it reads as the other body's too (its face
         // flush against that body, the canvas narrow): the places are tried again without that rule.
-        for (int faceRule = 1; faceRule >= 0 && !found; --faceRule)
+        // A label that prefers to keep out of some outlines (a band's size out of the bodies) first looks for a
+        // place out of them, near its anchor or on a short leader line, and only then anywhere.
+        for (int prefer = label->preferOut.empty() ? 0 : 1; prefer >= 0 && !found; --prefer)
         {
-            const bool faceFree = faceRule == 0;
-            if (faceFree && label->rank != LabelRank::Named)
+            preferring = prefer == 1;
+            for (int faceRule = 1; faceRule >= 0 && !found; --faceRule)
             {
-                break;
-            }
-            if (label->centred)
-            {
-                const float left = std::round(label->anchor.x - 0.5f * size.x);
-                const float top = std::round(label->anchor.y - 0.5f * size.y);
-                const ScreenRect centred{left, top, left + size.x, top + size.y};
-                if (Inside(centred) && Free(centred, 0.0f, label->rank))
-                {
-                    chosen = centred;
-                    found = true;
-                }
-            }
-            // A vertex number or an edge name may sit on a line the others keep off (a separating line, a dashed
-            // outline) rather than be left out, but it reads better beside it: the first pass (-1) keeps it off every
-            // line.
-            for (int pass = -1; pass < 2 && !found; ++pass)
-            {
-                for (const Candidate& c : candidates)
-                {
-                    const ScreenPoint at = c.anchor == 0 ? label->anchor : label->alternates[c.anchor - 1];
-                    const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
-                    const ScreenRect rect = Around(at, size, start + c.turn * 0.125 * kPi, reach);
-                    if (Inside(rect) && Free(rect, pass <= 0 ? kLabelSpacing : 0.0f, label->rank, pass < 0) &&
-                        Away(*label, rect, at) && NearestOwn(*label, rect, at) &&
-                        (faceFree || NearestFace(*label, rect)) && !ShaftBetween(*label, rect, at) &&
-                        (faceFree || !AcrossParting(*label, rect, at)) && OnItsSide(label->onSide, at, label->dx, label->dy, rect))
-                    {
-                        chosen = rect;
-                        from = at;
-                        found = true;
-                        break;
-                    }
-                }
-            }
-            // Farther out, on a leader line back to the anchor: sixteen directions, at growing distances. Not a vertex
-            // number or an edge name that no sentence names: a number at the end of a line, among the shapes' outlines,
-            // reads as any corner's (the floor's "3" led into the box standing on it); it is left out instead.
-            // A label that is always drawn tries those places once more when none is free, its leader line then
-            // allowed across other marks (across a thick bar only on a last try), before it is drawn over something at
-            // its preferred place.
-            for (int ring = 0; ring < 27 && !found && label->rank > LabelRank::Edge; ++ring)
-            {
-                if (ring >= 9 && MayLeaveOut(label->rank))
+                const bool faceFree = faceRule == 0;
+                if (faceFree && label->rank != LabelRank::Named)
                 {
                     break;
                 }
-                const bool strict = ring < 9;
-                const bool clearOfBars = ring < 18; // and its leader line off the bars while it can
-                const float reach = std::max(label->distance, 0.0f) + 28.0f + 16.0f * static_cast<float>(ring % 9);
-                for (int i = 0; i < 16 && !found; ++i)
+                if (label->centred)
                 {
-                    const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
-                    const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
-                    if (Inside(rect) && Free(rect, 0.0f, label->rank) && Away(*label, rect, label->anchor) &&
-                        OnItsSide(label->onSide, label->anchor, label->dx, label->dy, rect, true) &&
-                        (!strict || LeaderClear(label->anchor, rect)) &&
-                        (!clearOfBars || !LeaderCrossesBar(label->anchor, rect)) &&
-                        (!clearOfBars || !LeaderRunsAlong(label->anchor, rect)) &&
-                        !(label->onSide && LeaderCrossesLine(label->anchor, rect)))
+                    const float left = std::round(label->anchor.x - 0.5f * size.x);
+                    const float top = std::round(label->anchor.y - 0.5f * size.y);
+                    const ScreenRect centred{left, top, left + size.x, top + size.y};
+                    if (Inside(centred) && Free(centred, 0.0f, label->rank))
                     {
-                        chosen = rect;
+                        chosen = centred;
                         found = true;
-                        leader = true;
                     }
                 }
-            }
-            // A face a sentence names with no room on its outside (flush against the other body, or facing the image's
-            // border) is named just inside its own body, beside it, where it still reads as that face's; with its
-            // body's outline known, a little deeper in too (beside the body's name, the arrow or the ghost over it),
-            // wholly inside that outline, where it cannot be read as a neighbouring face's.
-            const auto Home = [&](const ScreenRect& rect) {
-                return label->home.size() >= 3 && InsideConvex(label->home, {rect.minX, rect.minY}) &&
-                       InsideConvex(label->home, {rect.maxX, rect.minY}) &&
-                       InsideConvex(label->home, {rect.minX, rect.maxY}) &&
-                       InsideConvex(label->home, {rect.maxX, rect.maxY});
-            };
-            for (int ring = 0; ring < 7 && !found && label->rank == LabelRank::Named && label->onSide; ++ring)
-            {
-                if (ring >= 3 && label->home.size() < 3)
+                // A vertex number or an edge name may sit on a line the others keep off (a separating line, a dashed
+                // outline) rather than be left out, but it reads better beside it: the first pass (-1) keeps it off every
+                // line.
+                for (int pass = -1; pass < 2 && !found; ++pass)
                 {
-                    break;
-                }
-                for (size_t k = 0; k <= label->alternates.size() && !found; ++k)
-                {
-                    const ScreenPoint at = k == 0 ? label->anchor : label->alternates[k - 1];
-                    for (int turn : {4, 3, -3})
+                    for (const Candidate& c : candidates)
                     {
-                        const ScreenRect rect = Around(at, size, start + turn * 0.25 * kPi,
-                                                       label->distance + static_cast<float>(ring) * 9.0f);
-                        if (!found && Inside(rect) && Free(rect, 0.0f, label->rank) && Away(*label, rect, at) &&
-                            (faceFree || NearestFace(*label, rect)) && (ring < 3 || Home(rect)))
+                        const ScreenPoint at = c.anchor == 0 ? label->anchor : label->alternates[c.anchor - 1];
+                        const float reach = label->distance + static_cast<float>(c.ring) * 9.0f;
+                        const ScreenRect rect = Around(at, size, start + c.turn * 0.125 * kPi, reach);
+                        if (Inside(rect) && Free(rect, pass <= 0 ? kLabelSpacing : 0.0f, label->rank, pass < 0) &&
+                            Away(*label, rect, at) && NearestOwn(*label, rect, at) &&
+                            (faceFree || NearestFace(*label, rect)) && !ShaftBetween(*label, rect, at) &&
+                            (faceFree || !AcrossParting(*label, rect, at)) && OnItsSide(label->onSide, at, label->dx, label->dy, rect))
                         {
                             chosen = rect;
                             from = at;
                             found = true;
+                            break;
                         }
                     }
                 }
-            }
-            // With no room inside either (a small body, its arrow and ghost over it), the face is named beyond the
-            // other body it rests on, on a leader line across that body: the line shows which face the name belongs to,
-            // and the name itself still keeps out of that body, off every label and clear of the separating line.
-            for (int ring = 0; ring < 9 && !found && label->rank == LabelRank::Named && label->onSide; ++ring)
-            {
-                const float reach = std::max(label->distance, 0.0f) + 28.0f + 16.0f * static_cast<float>(ring);
-                for (int i = 0; i < 16 && !found; ++i)
+                // Farther out, on a leader line back to the anchor: sixteen directions, at growing distances. Not a vertex
+                // number or an edge name that no sentence names: a number at the end of a line, among the shapes' outlines,
+                // reads as any corner's (the floor's "3" led into the box standing on it); it is left out instead.
+                // A label that is always drawn tries those places once more when none is free, its leader line then
+                // allowed across other marks (across a thick bar only on a last try), before it is drawn over something at
+                // its preferred place.
+                for (int ring = 0; ring < (preferring ? 9 : 27) && !found && label->rank > LabelRank::Edge; ++ring)
                 {
-                    const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
-                    const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
-                    if (Inside(rect) && Free(rect, 0.0f, label->rank) && ClearOf(label->avoid, rect) &&
-                        std::all_of(label->keepOut.begin(), label->keepOut.end(),
-                                    [&](const std::vector<ScreenPoint>& outline) { return ClearOf(outline, rect); }) &&
-                        OnItsSide(true, label->anchor, label->dx, label->dy, rect, true) &&
-                        LeaderClear(label->anchor, rect) && !LeaderCrossesLine(label->anchor, rect) &&
-                        !LeaderCrossesBar(label->anchor, rect))
+                    if (ring >= 9 && MayLeaveOut(label->rank))
                     {
-                        chosen = rect;
-                        found = true;
-                        leader = true;
+                        break;
+                    }
+                    const bool strict = ring < 9;
+                    const bool clearOfBars = ring < 18; // and its leader line off the bars while it can
+                    const float reach = std::max(label->distance, 0.0f) + 28.0f + 16.0f * static_cast<float>(ring % 9);
+                    for (int i = 0; i < 16 && !found; ++i)
+                    {
+                        const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
+                        const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
+                        if (Inside(rect) && Free(rect, 0.0f, label->rank) && Away(*label, rect, label->anchor) &&
+                            OnItsSide(label->onSide, label->anchor, label->dx, label->dy, rect, true) &&
+                            (!strict || LeaderClear(label->anchor, rect)) &&
+                            (!clearOfBars || !LeaderCrossesBar(label->anchor, rect)) &&
+                            (!clearOfBars || !LeaderRunsAlong(label->anchor, rect)) &&
+                            !(label->onSide && LeaderCrossesLine(label->anchor, rect)))
+                        {
+                            chosen = rect;
+                            found = true;
+                            leader = true;
+                        }
+                    }
+                }
+                // A face a sentence names with no room on its outside (flush against the other body, or facing the image's
+                // border) is named just inside its own body, beside it, where it still reads as that face's; with its
+                // body's outline known, a little deeper in too (beside the body's name, the arrow or the ghost over it),
+                // wholly inside that outline, where it cannot be read as a neighbouring face's.
+                const auto Home = [&](const ScreenRect& rect) {
+                    return label->home.size() >= 3 && InsideConvex(label->home, {rect.minX, rect.minY}) &&
+                           InsideConvex(label->home, {rect.maxX, rect.minY}) &&
+                           InsideConvex(label->home, {rect.minX, rect.maxY}) &&
+                           InsideConvex(label->home, {rect.maxX, rect.maxY});
+                };
+                for (int ring = 0; ring < 7 && !found && label->rank == LabelRank::Named && label->onSide; ++ring)
+                {
+                    if (ring >= 3 && label->home.size() < 3)
+                    {
+                        break;
+                    }
+                    for (size_t k = 0; k <= label->alternates.size() && !found; ++k)
+                    {
+                        const ScreenPoint at = k == 0 ? label->anchor : label->alternates[k - 1];
+                        for (int turn : {4, 3, -3})
+                        {
+                            const ScreenRect rect = Around(at, size, start + turn * 0.25 * kPi,
+                                                           label->distance + static_cast<float>(ring) * 9.0f);
+                            if (!found && Inside(rect) && Free(rect, 0.0f, label->rank) && Away(*label, rect, at) &&
+                                (faceFree || NearestFace(*label, rect)) && (ring < 3 || Home(rect)))
+                            {
+                                chosen = rect;
+                                from = at;
+                                found = true;
+                            }
+                        }
+                    }
+                }
+                // With no room inside either (a small body, its arrow and ghost over it), the face is named beyond the
+                // other body it rests on, on a leader line across that body: the line shows which face the name belongs to,
+                // and the name itself still keeps out of that body, off every label and clear of the separating line.
+                for (int ring = 0; ring < 9 && !found && label->rank == LabelRank::Named && label->onSide; ++ring)
+                {
+                    const float reach = std::max(label->distance, 0.0f) + 28.0f + 16.0f * static_cast<float>(ring);
+                    for (int i = 0; i < 16 && !found; ++i)
+                    {
+                        const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
+                        const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
+                        if (Inside(rect) && Free(rect, 0.0f, label->rank) && ClearOf(label->avoid, rect) &&
+                            std::all_of(label->keepOut.begin(), label->keepOut.end(),
+                                        [&](const std::vector<ScreenPoint>& outline) { return ClearOf(outline, rect); }) &&
+                            OnItsSide(true, label->anchor, label->dx, label->dy, rect, true) &&
+                            LeaderClear(label->anchor, rect) && !LeaderCrossesLine(label->anchor, rect) &&
+                            !LeaderCrossesBar(label->anchor, rect))
+                        {
+                            chosen = rect;
+                            found = true;
+                            leader = true;
+                        }
                     }
                 }
             }

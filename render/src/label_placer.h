@@ -91,6 +91,9 @@ class LabelPlacer
     /// Keeps the label added last out of `outline` too (a convex outline on screen): a body's velocity out of the
     /// other body drawn where it will be (its dashed ghost), where it would read as that ghost's.
     void KeepOutOf(std::vector<ScreenPoint> outline);
+    /// Keeps the label added last out of `outline` (a convex outline) where a place near its anchor or on a short
+    /// leader line allows; where none does, it is placed as if without it.
+    void PreferOutOf(std::vector<ScreenPoint> outline);
     /// Lets the label added last sit beside any of `anchors` (points along the face or edge it names, nearest
     /// first) when no place near its own anchor is free: it slides along what it names, on its preferred side
     /// or the other, before it moves farther out on a leader line.
@@ -146,6 +149,7 @@ class LabelPlacer
         bool across = false;                           // with AlsoBeside: beside its alternates, not beyond them
         std::vector<ScreenPoint> face;                 // with NamesFace: the face it names, and the rivals' outlines
         std::vector<std::vector<ScreenPoint>> rivals;
+        std::vector<std::vector<ScreenPoint>> preferOut; // with PreferOutOf: outlines it keeps out of where it can
     };
     struct Mark
     {

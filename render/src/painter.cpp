@@ -1939,6 +1939,12 @@ class Painter
                             bandFrom.y + t * (bandTo.y - bandFrom.y) - oy * 12.0f});
         }
         m_labels.AlsoAt(near);
+        // Out of the bodies where it can be: inside one it reads as that body's and hides its outline and the
+        // projection's guides (overlapping_boxes' "overlap 0.525" inside A on the app's narrowest canvas).
+        for (int s = 0; s < 2; ++s)
+        {
+            m_labels.PreferOutOf(OutlineOf(s));
+        }
     }
 
     // The separating line of a separating axis: perpendicular to it, through the middle of the gap.

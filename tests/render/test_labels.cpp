@@ -1729,6 +1729,36 @@ std::vector<std::string> ArrowLabelsAstray(const RecordingCanvas& canvas)
     return problems;
 }
 
+// A band's size ("overlap 0.525", "gap 0.45", "0.13 behind") written inside a body of the pair: it reads as that
+// body's and hides its outline and the projection's guides (overlapping_boxes' axis 1 on the app's narrowest canvas).
+std::vector<std::string> BandSizesInBodies(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
+                                           const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    for (int body : {study.bodyA, study.bodyB})
+    {
+        const Body& b = scene.bodies[static_cast<size_t>(body)];
+        for (const DrawCommand* c : canvas.InGroup("labels"))
+        {
+            const std::string& t = c->text;
+            const bool band = t.rfind("overlap ", 0) == 0 || t.rfind("gap ", 0) == 0 ||
+                              (t.size() > 7 && t.compare(t.size() - 7, 7, " behind") == 0) ||
+                              (t.size() > 7 && t.compare(t.size() - 7, 7, " beyond") == 0);
+            if (c->kind != DrawCommand::Kind::Text || !band)
+            {
+                continue;
+            }
+            const ScreenPoint size = measure.MeasureText(t, c->style);
+            if (InsideBody(b, ToWorld(view, {c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y})))
+            {
+                problems.push_back(Describe(*c) + " lies inside " + b.name);
+            }
+        }
+    }
+    return problems;
+}
+
 // Edge names just ahead of another arrow's head, on its line: there an arrow's name is written, and the name reads
 // as the arrow's (B's "e0" past the tip of A's e1 normal, which points into B along B's bottom face). An arrow
 // square to the named edge, from a point of it, is that face's own normal.
@@ -2662,4 +2692,34 @@ TEST_CASE("A corner crowded by a face's name and a contact's still has its numbe
                          << ", " << at.y << ")");
         CHECK(numbered);
     }
+}
+
+TEST_CASE("On the app's narrowest canvas a band's size is written out of the bodies where there is room", "[labels]")
+{
+    // overlapping_boxes beside the lesson column: the bars of axis 1 stand at the picture's left edge, with no room
+    // beyond them, and "overlap 0.525" went inside A beside them, over its outline's guides. Below the bars, out of
+    // both boxes, there is room.
+    const Scene scene = painter_test::LessonScene("overlapping_boxes");
+    int drawn = 0;
+    for (const auto& [width, height] : {std::pair{460, 758}, std::pair{360, 600}})
+    {
+        FigureOptions options;
+        options.width = width;
+        options.height = height;
+        FigureSetup setup = SetUpFigure(scene, options);
+        REQUIRE(setup.Ok());
+        for (int k = 0; k < FigureStepCount(scene, setup); ++k)
+        {
+            const RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
+            INFO("step " << k + 1 << " at " << width << " x " << height);
+            const std::vector<std::string> problems = BandSizesInBodies(canvas, scene, setup.study, setup.figure.view);
+            for (const std::string& problem : problems)
+            {
+                UNSCOPED_INFO(problem);
+            }
+            CHECK(problems.empty());
+            ++drawn;
+        }
+    }
+    CHECK(drawn >= 8);
 }
