@@ -1276,16 +1276,19 @@ class Painter
             {
                 ghost = ShapeOutline(m_view, body.shape, BodyTransformAt(body, m_study.sweepResult.toi));
             }
+            // A short shaft that runs wholly by it keeps its places: the ghost is then where the arrow is.
             std::vector<ScreenPoint> shaft;
+            std::vector<ScreenPoint> clear;
             for (const float f : {0.2f, 0.4f, 0.6f})
             {
                 const ScreenPoint p{tip.x + (from.x - tip.x) * f, tip.y + (from.y - tip.y) * f};
+                shaft.push_back(p);
                 if (!Covered(p, ghost, 24.0f))
                 {
-                    shaft.push_back(p);
+                    clear.push_back(p);
                 }
             }
-            m_labels.AlsoBeside(std::move(shaft));
+            m_labels.AlsoBeside(clear.empty() ? std::move(shaft) : std::move(clear));
             // And out of the other body where its ghost shows it (at the hit, at the figure's time).
             for (const double t : {m_study.sweepResult.status == SweepStatus::Hit ? m_study.sweepResult.toi : -1.0,
                                    m_figure.time})
