@@ -17,9 +17,11 @@ STAGES = [
      r"TakeContacts|LargestSeparation|RefFaceQuery|HideFaces|SecondPassSkips|CombineMaterials"),
     ("broadphase (sort and sweep, pair sort, boxes)",
      r"FindPairs|ComputeAabb|SweepAxis|SkipPair|SkipSlowPair|sort<.*pair<int, int>|insert<.*pair<int, int>"),
+    ("soft step (its sub-steps and restitution, with --soft-step)",
+     r"SolveSoft|SoftRestitution|SoftBounceTargets|SolveNormalBlock"),
     ("restitution", r"ApplyRestitution"),
     ("velocity passes (with preparation, warm start, order, energy limit)",
-     r"SolveContactVelocity|SolveVelocities|PrepareContact|WarmStart|OrderTopDown|SortContacts|StoreImpulses|"
+     r"SolveContactVelocity|SolveVelocities|PrepareContact|PrepareContacts|WarmStart|OrderTopDown|SortContacts|StoreImpulses|"
      r"LimitEnergyGain"),
     ("position correction (passes, guards, lift off static bodies)", r"CorrectPositions|GuardAfterMove"),
     ("move (positions, sines and cosines)", r"Stepper::Move|sincos|MakeRot|TurnsBeyondContacts|__sin|__cos"),
