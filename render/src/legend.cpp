@@ -35,7 +35,7 @@ const char* Meaning(LegendMark mark)
     case LegendMark::VertexAxis:
         return "dark dot and dashed line: the axis from a vertex (or a centre) to a circle's centre";
     case LegendMark::BestAxis:
-        return "light-blue edges: the faces of the best axis so far (of equal ones, the first)";
+        return "light-blue edges and their arrows: the faces of the best axis so far (of equal ones, the first)";
     case LegendMark::Overlap:
         return "pink band: the intervals overlap";
     case LegendMark::Gap:

@@ -2317,7 +2317,7 @@ TEST_CASE("The light-blue edges mark one axis, the first of the smallest overlap
                 key += c->kind == DrawCommand::Kind::Text ? c->text + "\n" : "";
             }
             INFO(key);
-            CHECK(key.find("light-blue edges: the faces of the best axis") != std::string::npos);
+            CHECK(key.find("light-blue edges and their arrows: the faces of the best axis") != std::string::npos);
             if (tied)
             {
                 CHECK(key.find("of equal ones, the first") != std::string::npos);
