@@ -599,10 +599,12 @@ bool LabelPlacer::LeaderClear(ScreenPoint anchor, const ScreenRect& rect) const
     {
         return true;
     }
-    // Two leader lines that cross read as leading each to the other's label.
+    // Two leader lines that cross read as leading each to the other's label; two that start at one point make a
+    // corner there that reads as one line from one label to the other.
     for (const Line& other : m_lines)
     {
-        if (other.leader && Cross(line.from, line.to, other.a, other.b))
+        if (other.leader && (Cross(line.from, line.to, other.a, other.b) ||
+                             std::hypot(other.a.x - line.from.x, other.a.y - line.from.y) < 8.0f))
         {
             return false;
         }
@@ -926,9 +928,45 @@ void LabelPlacer::Flush(Color halo)
                 // A label that is always drawn tries those places once more when none is free, its leader line then
                 // allowed across other marks (across a thick bar only on a last try), before it is drawn over something at
                 // its preferred place.
-                for (int ring = 0; ring < (preferring ? 9 : 27) && !found && label->rank > LabelRank::Edge; ++ring)
+                // A face's name tries the other anchors along its face on short leader lines before a long one from
+                // its own: a leader from the point another leader starts from reads as joining the two labels.
+                struct Trial
                 {
-                    if (ring >= 9 && MayLeaveOut(label->rank))
+                    ScreenPoint at;
+                    int ring;
+                };
+                std::vector<Trial> trials;
+                for (int ring = 0; ring < 9; ++ring)
+                {
+                    trials.push_back({label->anchor, ring});
+                }
+                if (label->face.size() == 2)
+                {
+                    std::vector<ScreenPoint> along = label->alternates;
+                    const ScreenPoint a = label->face[0];
+                    const ScreenPoint b = label->face[1];
+                    for (const float t : {0.3f, 0.7f})
+                    {
+                        along.push_back({a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t});
+                    }
+                    for (const ScreenPoint& at : along)
+                    {
+                        // An edge's own name only close by: farther, among the faces, it reads as another's.
+                        for (int ring = 0; ring < (label->rank > LabelRank::Named ? 9 : 2); ++ring)
+                        {
+                            trials.push_back({at, ring});
+                        }
+                    }
+                }
+                for (int ring = 9; ring < (preferring ? 9 : 27); ++ring)
+                {
+                    trials.push_back({label->anchor, ring});
+                }
+                for (const Trial& trial : trials)
+                {
+                    const int ring = trial.ring;
+                    const ScreenPoint at = trial.at;
+                    if (found || label->rank <= LabelRank::Edge || (ring >= 9 && MayLeaveOut(label->rank)))
                     {
                         break;
                     }
@@ -938,15 +976,15 @@ void LabelPlacer::Flush(Color halo)
                     for (int i = 0; i < 16 && !found; ++i)
                     {
                         const int k = (i + 1) / 2 * (i % 2 == 1 ? 1 : -1);
-                        const ScreenRect rect = Around(label->anchor, size, start + k * 0.125 * kPi, reach);
-                        if (Inside(rect) && Free(rect, 0.0f, label->rank) && Away(*label, rect, label->anchor) &&
-                            OnItsSide(label->onSide, label->anchor, label->dx, label->dy, rect, true) &&
-                            (!strict || LeaderClear(label->anchor, rect)) &&
-                            (!clearOfBars || !LeaderCrossesBar(label->anchor, rect)) &&
-                            (!clearOfBars || !LeaderRunsAlong(label->anchor, rect)) &&
-                            !(label->onSide && LeaderCrossesLine(label->anchor, rect)))
+                        const ScreenRect rect = Around(at, size, start + k * 0.125 * kPi, reach);
+                        if (Inside(rect) && Free(rect, 0.0f, label->rank) && Away(*label, rect, at) &&
+                            OnItsSide(label->onSide, at, label->dx, label->dy, rect, true) &&
+                            (!strict || LeaderClear(at, rect)) && (!clearOfBars || !LeaderCrossesBar(at, rect)) &&
+                            (!clearOfBars || !LeaderRunsAlong(at, rect)) &&
+                            !(label->onSide && LeaderCrossesLine(at, rect)))
                         {
                             chosen = rect;
+                            from = at;
                             found = true;
                             leader = true;
                         }
