@@ -432,9 +432,9 @@ void LabelPlacer::KeepOnSide()
     }
 }
 
-void LabelPlacer::AddMark(MarkKind kind, ScreenPoint at, ScreenPoint toward)
+void LabelPlacer::AddMark(MarkKind kind, ScreenPoint at, ScreenPoint toward, bool ofBody)
 {
-    m_marks.push_back({kind, at, toward});
+    m_marks.push_back({kind, at, toward, ofBody});
 }
 
 void LabelPlacer::Names(MarkKind kind)
@@ -476,11 +476,16 @@ bool LabelPlacer::NearestOwn(const Label& label, const ScreenRect& rect, ScreenP
     const float lead = kind != MarkKind::ArrowHead ? 3.0f : (alongShaft ? 10.0f : -6.0f);
     for (const Mark& m : m_marks)
     {
-        if (m.kind != kind || std::hypot(m.at.x - label.anchor.x, m.at.y - label.anchor.y) <= own)
+        // A contact's name nearer a corner than its dot reads as the corner's (containment's "c2" beside the
+        // triangle's corner 1, its dot just inside it).
+        // A corner of a body under the dot is where the contact is.
+        const bool corner = kind == MarkKind::Contact && m.kind == MarkKind::Corner && m.ofBody;
+        if ((m.kind != kind && !corner) ||
+            std::hypot(m.at.x - label.anchor.x, m.at.y - label.anchor.y) <= (corner ? 5.0f : own))
         {
             continue;
         }
-        if (std::hypot(middle.x - m.at.x, middle.y - m.at.y) <= mine + lead)
+        if (std::hypot(middle.x - m.at.x, middle.y - m.at.y) <= mine + (corner ? -4.0f : lead))
         {
             return false;
         }

@@ -108,9 +108,9 @@ class LabelPlacer
     /// Keeps the label added last on the side its preferred direction points to, beyond the line through its anchor
     /// square to that direction: an edge's name outside its edge, where it names that edge and not the one opposite.
     void KeepOnSide();
-    /// Marks a point a label may name: a corner, a contact point, an arrow head (with the unit direction it points
-    /// in, `toward`).
-    void AddMark(MarkKind kind, ScreenPoint at, ScreenPoint toward = {});
+    /// Marks a point a label may name: a corner (`ofBody`: of a body as it stands, not of a dashed outline), a
+    /// contact point, an arrow head (with the unit direction it points in, `toward`).
+    void AddMark(MarkKind kind, ScreenPoint at, ScreenPoint toward = {}, bool ofBody = false);
     /// Tells the label added last that it names the mark of `kind` at its anchor: beside its anchor (or beside what
     /// leads to it, with AlsoBeside) it only takes a place nearer there than any other mark of the kind (farther out,
     /// its leader line shows which it names).
@@ -156,6 +156,7 @@ class LabelPlacer
         MarkKind kind;
         ScreenPoint at;
         ScreenPoint toward; // an arrow head's direction, unit length
+        bool ofBody;        // a corner of a body as it stands
     };
     struct Line
     {

@@ -2563,7 +2563,7 @@ class Painter
             const Body& body = BodyOf(s);
             for (size_t i = 0; body.shape.type == ShapeType::Polygon && i < body.shape.polygon.Vertices().size(); ++i)
             {
-                m_labels.AddMark(MarkKind::Corner, At(TransformPoint(body.Xf(), body.shape.polygon.Vertices()[i])));
+                m_labels.AddMark(MarkKind::Corner, At(TransformPoint(body.Xf(), body.shape.polygon.Vertices()[i])), {}, true);
             }
         }
         for (int s = 0; s < 2; ++s)

@@ -1577,9 +1577,9 @@ std::vector<ScreenPoint> DashedCorners(const RecordingCanvas& canvas)
 }
 
 // Labels that sit nearer another mark of their kind than their own, where which mark they name is a guess: a
-// contact point's name "cN" nearer another contact point than the Nth, a vertex number nearer another corner of the
-// pair (or of a dashed outline of where a body is moved to) than its own. Measured from the middle of the label; a
-// label on a leader line is joined to what it names.
+// contact point's name "cN" nearer another contact point than the Nth (or clearly nearer a corner of the pair than
+// its own), a vertex number nearer another corner of the pair (or of a dashed outline of where a body is moved to)
+// than its own. Measured from the middle of the label; a label on a leader line is joined to what it names.
 std::vector<std::string> LabelsNearerAnotherMark(const RecordingCanvas& canvas, const Scene& scene,
                                                  const PairStudy& study, const View& view)
 {
@@ -1632,6 +1632,22 @@ std::vector<std::string> LabelsNearerAnotherMark(const RecordingCanvas& canvas, 
                     problems.push_back(Describe(*c) + " lies nearer contact point " + std::to_string(j + 1) +
                                        " than its own");
                     break;
+                }
+            }
+            // Nor clearly nearer a corner of the pair, where it reads as that corner's name (containment's "c2"
+            // beside the triangle's corner 1): a corner under the dot is where the contact is.
+            for (int s = 0; s < 2 && own < dots.size(); ++s)
+            {
+                for (const ScreenPoint& corner : corners[s])
+                {
+                    if (distance(corner, dots[own]) > 5.0f &&
+                        distance(middle, corner) + 4.0f < distance(middle, dots[own]))
+                    {
+                        problems.push_back(Describe(*c) + " lies nearer a corner of " + bodies[s]->name +
+                                           " than its contact point");
+                        s = 2;
+                        break;
+                    }
                 }
             }
             continue;
