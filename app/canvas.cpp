@@ -476,10 +476,10 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
             {
                 m_throwTrail.pop_front();
             }
+            // Over the window, or between the last two frames when the frames come slower than that (a loaded
+            // machine): a pause before letting go is a frame or more at one place, which throws nothing.
             const double span = now - m_throwTrail.front().first;
-            const Vec2 velocity = span > 1e-3 && span <= 2.0 * kThrowWindow
-                                      ? (1.0 / span) * (world - m_throwTrail.front().second)
-                                      : Vec2{};
+            const Vec2 velocity = span > 1e-3 ? (1.0 / span) * (world - m_throwTrail.front().second) : Vec2{};
             m_app.SimHand(selected, world - m_grabOffset, velocity);
             if (!down)
             {
