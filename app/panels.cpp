@@ -152,7 +152,9 @@ void NumberLine(const std::string& label, const std::vector<std::string>& parts)
         ImGui::TextUnformatted(line.c_str());
         return;
     }
-    ImGui::TextUnformatted((label + ":").c_str());
+    // A label too long for the panel ("deciding axis 3, the axis from box's vertex 2 to ball's centre") wraps
+    // between words, as the panel's sentences do.
+    WrappedText(label + ":");
     ImGui::Indent();
     if (parts.size() == 1 || ImGui::CalcTextSize(value.c_str()).x <= ImGui::GetContentRegionAvail().x)
     {

@@ -3565,3 +3565,27 @@ TEST_CASE("Beside a sweep's verdict the static gap names the axis it is measured
     project(loaded.scene.bodies[static_cast<size_t>(study.bodyB)], loB, hiB);
     CHECK(gap->parts[0] == FormatNumber(std::max(loB - hiA, loA - hiB)));
 }
+
+TEST_CASE("A Numbers row whose label is wider than the side panel wraps between words", "[app]")
+{
+    // circle_corner's verdict names its deciding axis "deciding axis 3, the axis from box's vertex 2 to ball's
+    // centre", wider than the side panel: the line ran past the panel's edge, cut at "ball's cen". Nothing the
+    // panel lays out runs past its inner edge, and the label's last word is shown.
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/circle_corner.json");
+    h.Frames(3);
+    ImGuiWindow* panel = nullptr;
+    for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
+    {
+        if (w->Active && std::string(w->Name) == "##panel")
+        {
+            panel = w;
+        }
+    }
+    REQUIRE(panel != nullptr);
+    const std::string label = "deciding axis 3, the axis from box's vertex 2 to ball's centre:";
+    ImGui::NewFrame();
+    const float wide = ImGui::CalcTextSize(label.c_str()).x;
+    ImGui::EndFrame();
+    CHECK(wide > panel->ContentRegionRect.GetWidth()); // the case at hand
+    CHECK(panel->ContentSize.x <= panel->ContentRegionRect.GetWidth() + 0.5f);
+}
