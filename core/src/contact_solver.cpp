@@ -98,29 +98,9 @@ void SolveNormalBlock(SolverContact& c, SolverBody& a, SolverBody& b, const doub
     // The speeds after impulses x are K x + b; each case sets some of them to zero.
     const double b1 = (vn1 - target[0]) - (c.k11 * a1 + c.k12 * a2);
     const double b2 = (vn2 - target[1]) - (c.k12 * a1 + c.k22 * a2);
-    double x1 = -(c.m11 * b1 + c.m12 * b2);
-    double x2 = -(c.m12 * b1 + c.m22 * b2);
-    if (!(x1 >= 0.0 && x2 >= 0.0))
-    {
-        x1 = -p1.normalMass * b1;
-        x2 = 0.0;
-        if (!(x1 >= 0.0 && c.k12 * x1 + b2 >= 0.0))
-        {
-            x1 = 0.0;
-            x2 = -p2.normalMass * b2;
-            if (!(x2 >= 0.0 && c.k12 * x2 + b1 >= 0.0))
-            {
-                x1 = 0.0;
-                x2 = 0.0;
-                if (!(b1 >= 0.0 && b2 >= 0.0))
-                {
-                    // No case holds (round-off on a degenerate pair): keep the impulses as they are.
-                    x1 = a1;
-                    x2 = a2;
-                }
-            }
-        }
-    }
+    double x1 = 0.0;
+    double x2 = 0.0;
+    BlockImpulses(c, b1, b2, a1, a2, x1, x2);
     applied[0] = x1 - a1;
     applied[1] = x2 - a2;
     ApplyImpulse(a, b, p1.rA, p1.rB, applied[0] * n);

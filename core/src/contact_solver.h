@@ -106,6 +106,37 @@ void PrepareContact(SolverContact& c, const SolverBody& a, const SolverBody& b, 
 /// Applies the accumulated impulses of the last step (warm starting).
 void WarmStart(SolverContact& c, SolverBody& a, SolverBody& b);
 
+/// The two normal impulses x of a two-point contact (c.block) that solve its 2x2 block LCP: with the speeds after
+/// them K x + b (b: the points' speeds less their targets, less K times the impulses a they have now), x >= 0,
+/// K x + b >= 0 and x (K x + b) = 0. The four cases are tried in turn, as Catto's block solver does: both points
+/// pushing, only the first, only the second, neither. When no case holds (round-off on a degenerate pair) the
+/// impulses stay a.
+inline void BlockImpulses(const SolverContact& c, double b1, double b2, double a1, double a2, double& x1, double& x2)
+{
+    x1 = -(c.m11 * b1 + c.m12 * b2);
+    x2 = -(c.m12 * b1 + c.m22 * b2);
+    if (!(x1 >= 0.0 && x2 >= 0.0))
+    {
+        x1 = -c.points[0].normalMass * b1;
+        x2 = 0.0;
+        if (!(x1 >= 0.0 && c.k12 * x1 + b2 >= 0.0))
+        {
+            x1 = 0.0;
+            x2 = -c.points[1].normalMass * b2;
+            if (!(x2 >= 0.0 && c.k12 * x2 + b1 >= 0.0))
+            {
+                x1 = 0.0;
+                x2 = 0.0;
+                if (!(b1 >= 0.0 && b2 >= 0.0))
+                {
+                    x1 = a1;
+                    x2 = a2;
+                }
+            }
+        }
+    }
+}
+
 /// Outline of one velocity pass over a contact (Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005;
 /// "Fast and Simple Physics using Sequential Impulses", GDC 2006; Box2D's contact solver):
 ///  1. Friction first, per point: the impulse that stops the slip, with the tangent's effective mass, added to the
@@ -176,29 +207,9 @@ void SolveContactVelocity(SolverContact& c, SolverBody& a, SolverBody& b, int pa
         // b = vn - K a: the speeds the impulses x must bring to the targets, vn' = K x + b, to be brought to zero.
         const double b1 = (vn1 + p1.gapSpeed) - (c.k11 * a1 + c.k12 * a2);
         const double b2 = (vn2 + p2.gapSpeed) - (c.k12 * a1 + c.k22 * a2);
-        double x1 = -(c.m11 * b1 + c.m12 * b2);
-        double x2 = -(c.m12 * b1 + c.m22 * b2);
-        if (!(x1 >= 0.0 && x2 >= 0.0))
-        {
-            x1 = -p1.normalMass * b1;
-            x2 = 0.0;
-            if (!(x1 >= 0.0 && c.k12 * x1 + b2 >= 0.0))
-            {
-                x1 = 0.0;
-                x2 = -p2.normalMass * b2;
-                if (!(x2 >= 0.0 && c.k12 * x2 + b1 >= 0.0))
-                {
-                    x1 = 0.0;
-                    x2 = 0.0;
-                    if (!(b1 >= 0.0 && b2 >= 0.0))
-                    {
-                        // No case holds (round-off on a degenerate pair): keep the impulses of the last pass.
-                        x1 = a1;
-                        x2 = a2;
-                    }
-                }
-            }
-        }
+        double x1 = 0.0;
+        double x2 = 0.0;
+        BlockImpulses(c, b1, b2, a1, a2, x1, x2);
         ApplyImpulse(a, b, p1.rA, p1.rB, (x1 - a1) * n);
         ApplyImpulse(a, b, p2.rA, p2.rB, (x2 - a2) * n);
         p1.normalImpulse = x1;
