@@ -792,8 +792,46 @@ void App::Refresh()
 
 // [SECTION] The simulation
 
+bool App::CanStep() const
+{
+    return m_document.GetScene().hasWorld || m_sim.Last() > 0;
+}
+
+void App::AddWorld()
+{
+    if (m_document.GetScene().hasWorld)
+    {
+        return;
+    }
+    SceneWorld world;
+    world.dt = 1.0 / 60.0;
+    const bool single = !m_document.EditOpen();
+    BeginEdit();
+    m_document.SetWorld(world);
+    if (single)
+    {
+        EndEdit();
+    }
+    Refresh();
+    SetStatus("Added a world: steps of 1/60 s, no gravity; Play steps it (ctrl+z takes the world back)", false);
+}
+
+bool App::RefuseStep()
+{
+    if (CanStep())
+    {
+        return false;
+    }
+    SetStatus("This scene has no world block, so it is not stepped: Add a world under Simulation gives it one", true);
+    return true;
+}
+
 void App::SimPlay(bool playing)
 {
+    if (playing && RefuseStep())
+    {
+        return;
+    }
     m_sim.SetPlaying(playing);
     if (playing && !m_sim.Error().empty())
     {
@@ -804,6 +842,10 @@ void App::SimPlay(bool playing)
 void App::SimForward()
 {
     m_sim.SetPlaying(false);
+    if (RefuseStep())
+    {
+        return;
+    }
     m_sim.StepForward();
     Refresh();
 }

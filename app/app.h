@@ -216,9 +216,19 @@ class App
     /// The scene as the canvas shows it: the document's scene with its bodies where the simulation has them at the
     /// step shown.
     const Scene& ShownScene() const;
-    /// Plays or pauses the simulation.
+    /// True when the scene is to be stepped: it has a world block (how long a step is, and the gravity), or its
+    /// view opened it at a later step. A scene without one is a figure of the test: stepped by the format's
+    /// defaults, a whole time unit a step, bodies that start inside each other are thrown apart in one step and
+    /// can fall asleep still overlapping, so it is not played until a world is added (AddWorld).
+    bool CanStep() const;
+    /// Gives the scene a world block of steps of 1/60 of its time unit, without gravity (the lessons' dt; the
+    /// format's default gravity): one edit, undone by ctrl+z. Does nothing when it has one.
+    void AddWorld();
+    /// Plays or pauses the simulation; a scene that cannot be stepped (CanStep) stays paused, the status line
+    /// saying why.
     void SimPlay(bool playing);
-    /// Shows the simulation's next step, taking it when it is the latest; pauses.
+    /// Shows the simulation's next step, taking it when it is the latest; pauses. A scene that cannot be stepped
+    /// stays at step 0, the status line saying why.
     void SimForward();
     /// Shows the simulation's step before; pauses.
     void SimBack();
@@ -285,6 +295,8 @@ class App
     // AppOptions::backgroundVertices is tested on a worker thread: the figure keeps showing the last finished test
     // until Frame() takes the new one in.
     void Refresh();
+    // For a step asked of a scene that cannot be stepped (CanStep): the status line says why; true then.
+    bool RefuseStep();
     // An edit at a later step than 0 starts from the state shown: it becomes the document's bodies, once per edit.
     Body& EditBody(int index);
     void TakeShownState();

@@ -119,6 +119,13 @@ void Document::RemoveBody(size_t index)
     m_scene.bodies.erase(m_scene.bodies.begin() + static_cast<std::ptrdiff_t>(index));
 }
 
+void Document::SetWorld(const SceneWorld& world)
+{
+    m_editTouched = true;
+    m_scene.hasWorld = true;
+    m_scene.world = world;
+}
+
 bool Document::CommitEdit()
 {
     if (!m_editOpen)

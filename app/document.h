@@ -68,6 +68,8 @@ class Document
     void AddBody(Body body);
     /// Removes body `index`, while an edit is open.
     void RemoveBody(size_t index);
+    /// Gives the scene the world block `world`, while an edit is open.
+    void SetWorld(const SceneWorld& world);
     /// Ends the edit: the state it began from goes on the undo stack, unless the scene did not change (a click is
     /// not an edit). True when it did.
     bool CommitEdit();

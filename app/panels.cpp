@@ -1052,6 +1052,24 @@ void Panels::SimulationControls()
         WrappedTextDisabled("This scene cannot be stepped as a world: " + sim.Error());
         return;
     }
+    if (!m_app.CanStep())
+    {
+        // Stepped by the format's defaults, a whole time unit a step, a figure's overlapping bodies are thrown
+        // apart in one step and can fall asleep still inside each other: not a state to show a student.
+        WrappedText("This scene has no world: it pictures the test, and its bodies do not move. A world block says "
+                    "how long a step is and what the gravity is; add one to step the scene.");
+        if (ImGui::Button("Add a world"))
+        {
+            m_app.AddWorld();
+        }
+        Announce("simulation Add a world");
+        if (ImGui::IsItemHovered())
+        {
+            ImGui::SetTooltip("Steps of 1/60 s without gravity, as in lessons 14 to 17 (an edit: ctrl+z takes it "
+                              "back)");
+        }
+        return;
+    }
     if (ImGui::Button("Reset"))
     {
         m_app.SimReset();
@@ -1436,6 +1454,8 @@ void Panels::HelpOverlay()
         HelpBullet("without a world block a step lasts dt = 1, so a velocity is the displacement over one step; "
                    "lessons 14 to 17 are in metres and seconds (m/s, steps of dt = 1/60 s), so t runs over one "
                    "second, 60 steps");
+        HelpBullet("the simulation steps a scene that has a world block; Add a world, under Simulation, gives one "
+                   "to a scene that has none (steps of 1/60 s, no gravity)");
     }
     ImGui::End();
 }
