@@ -192,7 +192,7 @@ class App
     void ShowStep(int step) { m_viewer.ShowStep(step); }
     /// Starts or stops stepping through the trace automatically.
     void TogglePlay() { m_viewer.TogglePlay(); }
-    /// Sweeps: draws the moving bodies at time `time` in [0, 1]; -1: not drawn.
+    /// Sweeps: draws the moving bodies again (a ghost) at time `time` in [0, 1]; -1: not drawn.
     void SetTime(double time) { m_viewer.SetTime(time); }
     /// Frames the pair again, and keeps it framed through edits until the user pans or zooms.
     void FitCamera();

@@ -813,10 +813,22 @@ void Panels::StepControls()
 
     if (study.sweep)
     {
+        // The bodies stay where the sweep starts, t = 0 (the caption, the number lines and the static test speak
+        // of them there); the ghost is the moving bodies again, dashed, at time t.
         bool showTime = viewer.Time() >= 0.0;
-        if (ImGui::Checkbox("bodies at time", &showTime))
+        if (ImGui::Checkbox("ghost at time", &showTime))
         {
-            m_app.SetTime(showTime ? 0.5 : -1.0);
+            if (!showTime)
+            {
+                m_ghostTime = viewer.Time();
+            }
+            // Ticked again, the ghost comes back where it was.
+            m_app.SetTime(showTime ? m_ghostTime : -1.0);
+        }
+        if (ImGui::IsItemHovered())
+        {
+            ImGui::SetTooltip("Draws the moving bodies again, dashed, where they are at time t of the sweep; the "
+                              "bodies themselves stay at t = 0, where the test starts");
         }
         ImGui::SameLine();
         float t = static_cast<float>(std::max(viewer.Time(), 0.0));

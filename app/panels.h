@@ -164,6 +164,7 @@ class Panels
     std::map<std::string, ImVec2> m_announceAt;
     std::map<std::string, bool> m_announced;
     // The simulation's step and pair last printed for scripts (PrintShownState, ResponseSteps).
+    double m_ghostTime = 0.5; // the time of the sweep's ghost when "ghost at time" is ticked again
     int m_printedStep = -1;
     std::string m_printedResponse;
     std::string m_announcedHits; // the step and hit whose time bar was last printed

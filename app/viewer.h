@@ -93,7 +93,7 @@ class Viewer
     double SecondsUntilNextStep() const { return std::max(0.0, kPlayInterval - m_playClock); }
     /// Sweeps: the time at which the moving bodies are drawn, in [0, 1]; -1: not drawn.
     double Time() const { return m_time; }
-    /// Draws the moving bodies at time `time` in [0, 1]; -1: not drawn.
+    /// Draws the moving bodies again (a ghost) at time `time` in [0, 1]; -1: not drawn.
     void SetTime(double time);
 
     /// The canvas camera.

@@ -3117,6 +3117,21 @@ TEST_CASE("A scene without a world block is not stepped until a world is added, 
     CHECK_FALSE(h.app->CanStep());
 }
 
+TEST_CASE("The sweep's ghost at time is named as what it draws, and ticked again it comes back where it was", "[app]")
+{
+    // bullet_wall's view draws the ghost at t = 1 beside the bodies at t = 0: the control says "ghost", and
+    // unticking and ticking it again does not move the ghost to another time (it jumped to 0.5, onto the ghost
+    // at the time of impact, 0.482).
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/bullet_wall.json");
+    REQUIRE(h.View().Time() == 1.0);
+    REQUIRE(h.ClickButton("##panel", "ghost at time"));
+    CHECK(h.View().Time() < 0.0);
+    REQUIRE(h.ClickButton("##panel", "ghost at time"));
+    CHECK(h.View().Time() == 1.0);
+    // The bodies stay where the sweep starts: the figure draws the bullet at its position as written.
+    CHECK(h.View().Studied().bodies[1].position == h.Doc().GetScene().bodies[1].position);
+}
+
 TEST_CASE("The plots keep the totals of the latest kMaxSamples steps", "[app][sim]")
 {
     const SceneResult loaded = LoadScene((fs::path(SATVIZ_SOURCE_DIR) / "tutorials/scenes/l14_head_on.json").string());
