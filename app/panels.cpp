@@ -893,7 +893,9 @@ void Panels::Inspector()
             number("time of impact t", textbookSweep ? study.textbookSweepResult.toi : r.toi);
             point("normal at impact (A to B)", textbookSweep ? study.textbookSweepResult.normal : r.normal);
             // The contacts the figure labels c1, c2 in a sweep (satviz-query's "toi_contacts", in that order).
-            for (int i = 0; i < r.contactCount; ++i)
+            // Listed where the contacts layer draws them, as the static test's are (StaticTestNumbers).
+            const int contacts = (viewer.Choices().layers & kLayerContacts) != 0 ? r.contactCount : 0;
+            for (int i = 0; i < contacts; ++i)
             {
                 point("contact c" + std::to_string(i + 1) + " at impact", r.contacts[i].point);
             }
@@ -910,7 +912,7 @@ void Panels::Inspector()
     {
         WrappedText("Moving, but overlapping at t = 0: no time of impact; the static test at t = 0:");
     }
-    for (const NumberRow& row : StaticTestNumbers(m_app.ShownScene(), study, m_allDigits))
+    for (const NumberRow& row : StaticTestNumbers(m_app.ShownScene(), study, m_allDigits, viewer.Choices().layers))
     {
         NumberLine(row.label, row.parts);
     }

@@ -28,7 +28,8 @@ std::vector<std::string> PanelPair(Vec2 p, const PairStudy& study, bool allDigit
     return {pair.substr(0, comma), pair.substr(comma + 2)};
 }
 
-std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study, bool allDigits)
+std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study, bool allDigits,
+                                         LayerMask layers)
 {
     std::vector<NumberRow> rows;
     // As the sentences and the figures print them: a number here reads as the same number there.
@@ -80,7 +81,8 @@ std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& st
         }
     }
     point(m.overlap ? "MTV direction (A to B)" : "normal (A to B)", normal);
-    for (int i = 0; i < m.contactCount; ++i)
+    const int contacts = (layers & kLayerContacts) != 0 ? m.contactCount : 0;
+    for (int i = 0; i < contacts; ++i)
     {
         // In the order the figure labels them c1, c2, and satviz-query lists "contacts".
         point(study.sweep ? "contact " + std::to_string(i + 1) : "contact c" + std::to_string(i + 1),

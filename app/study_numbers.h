@@ -3,6 +3,7 @@
 // figures, the step sentences and the lessons.
 #pragma once
 
+#include <satviz/layers.h>
 #include <satviz/render/study.h>
 
 #include <string>
@@ -33,8 +34,10 @@ std::vector<std::string> PanelPair(Vec2 p, const PairStudy& study, bool allDigit
 /// normal of the face that names it, the direction satviz-query's trace gives), the normal from A to B (satviz-query's
 /// "normal"; against the axis when that is a face of B), and the contact points c1, c2 (only numbered in a sweep, whose
 /// c1 and c2 are the contacts at the time of impact). With `allDigits`, every number as PanelNumber gives it with all
-/// its digits.
-std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study, bool allDigits = false);
+/// its digits. The contact points are listed only when `layers` has the contacts layer, which draws them: the panel
+/// lists no point the picture leaves out.
+std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study, bool allDigits = false,
+                                         LayerMask layers = kAllLayers);
 
 /// The heading of a sweep's numbers, naming what t from 0 to 1 covers as the verdict does (SweptSpan): the step, or
 /// in a world's scene one second, whose velocities are per second, not one step of the world.

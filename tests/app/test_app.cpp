@@ -3629,6 +3629,47 @@ TEST_CASE("Beside a sweep's verdict the static gap names the axis it is measured
     CHECK(gap->parts[0] == FormatNumber(std::max(loB - hiA, loA - hiB)));
 }
 
+TEST_CASE("The Numbers panel lists the contact points the figure draws, and only those", "[app]")
+{
+    // l02_box_and_triangle's view has no contacts layer: its verdict draws no contact dot, and the panel listed
+    // "contact c1: (0.55, 0.45)" and "contact c2: (1.00, 0.45)" all the same.
+    for (const char* name : {"l02_box_and_triangle.json", "l07_voronoi.json", "overlapping_boxes.json",
+                             "containment.json", "l05_box_in_box.json"})
+    {
+        const fs::path file = fs::path(SATVIZ_SOURCE_DIR) / "tutorials" / "scenes" / name;
+        if (!fs::exists(file))
+        {
+            continue;
+        }
+        Harness h(file.string());
+        h.app->ShowStep(h.View().VerdictStep());
+        h.Frames(1);
+        const PairStudy& study = h.View().Setup().study;
+        REQUIRE_FALSE(study.sweep);
+        Figure figure = CanvasFigure(*h.app);
+        figure.step = h.View().VerdictStep();
+        RecordingCanvas canvas;
+        PaintFigure(canvas, h.View().Studied(), study, figure);
+        int dots = 0;
+        for (const DrawCommand* c : canvas.InGroup("contacts"))
+        {
+            dots += c->kind == DrawCommand::Kind::FillCircle ? 1 : 0;
+        }
+        int listed = 0;
+        for (const NumberRow& row : StaticTestNumbers(h.View().Studied(), study, false, h.View().Choices().layers))
+        {
+            listed += row.label.rfind("contact", 0) == 0 ? 1 : 0;
+        }
+        INFO(name);
+        CHECK(listed == dots);
+        if (std::string(name) == "l02_box_and_triangle.json")
+        {
+            CHECK(study.manifold.contactCount == 2); // the case at hand: two points found, none drawn
+            CHECK(dots == 0);
+        }
+    }
+}
+
 TEST_CASE("A Numbers row whose label is wider than the side panel wraps between words", "[app]")
 {
     // circle_corner's verdict names its deciding axis "deciding axis 3, the axis from box's vertex 2 to ball's
