@@ -1270,7 +1270,10 @@ float Panels::StatusHeight() const
 {
     const std::string lines = StatusLines(StatusText());
     const float count = static_cast<float>(1 + std::count(lines.begin(), lines.end(), '\n'));
-    return std::max(ImGui::GetFrameHeight(), count * ImGui::GetFontSize() + 6.0f);
+    // The lines as StatusBar lays them out: the item spacing between them, the padding above and below.
+    return std::max(ImGui::GetFrameHeight(), count * ImGui::GetTextLineHeight() +
+                                                 (count - 1.0f) * ImGui::GetStyle().ItemSpacing.y +
+                                                 2.0f * kStatusPaddingY);
 }
 
 void Panels::StatusBar()
@@ -1279,7 +1282,7 @@ void Panels::StatusBar()
     const float height = StatusHeight();
     ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x, viewport->Pos.y + viewport->Size.y - height));
     ImGui::SetNextWindowSize(ImVec2(viewport->Size.x, height));
-    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(kStatusPadding, 3.0f));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(kStatusPadding, kStatusPaddingY));
     // Dear ImGui keeps a window at least 32 pixels tall: a one-line bar would run off the bottom of the window.
     ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1.0f, 1.0f));
     ImGui::Begin("##status", nullptr,
@@ -1290,7 +1293,15 @@ void Panels::StatusBar()
     {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.2f, 0.05f, 1.0f));
     }
-    ImGui::TextUnformatted(StatusLines(StatusText()).c_str());
+    // One item a line, spaced as the panels' lines are: a wrapped message's second line does not sit on the
+    // window's bottom edge.
+    const std::string lines = StatusLines(StatusText());
+    for (size_t start = 0; start <= lines.size();)
+    {
+        const size_t end = std::min(lines.find('\n', start), lines.size());
+        ImGui::TextUnformatted(lines.data() + start, lines.data() + end);
+        start = end + 1;
+    }
     if (error)
     {
         ImGui::PopStyleColor();

@@ -27,6 +27,8 @@ constexpr float kLessonWidth = 440.0f;
 
 /// The status bar's padding left and right of its text, in pixels.
 constexpr float kStatusPadding = 8.0f;
+/// Padding above and below the status bar's lines, in pixels.
+constexpr float kStatusPaddingY = 3.0f;
 
 /// Width of the side panel on the right of the canvas, in pixels.
 constexpr float kPanelWidth = 380.0f;

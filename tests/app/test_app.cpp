@@ -3670,6 +3670,27 @@ TEST_CASE("The Numbers panel lists the contact points the figure draws, and only
     }
 }
 
+TEST_CASE("A status message of two lines has them spaced as the panels' lines, inside the bar", "[app]")
+{
+    // Opened at its view's sim_steps, l14_head_on_after's message takes two lines; the second sat on the window's
+    // bottom edge, its descenders touching it.
+    Harness h(ScratchCopy("l14_head_on_after.json").string());
+    ImGui::GetIO().DisplaySize = ImVec2(1000.0f, 700.0f);
+    h.Frames(3);
+    ImGuiWindow* bar = ImGui::FindWindowByName("##status");
+    REQUIRE(bar != nullptr);
+    ImGui::NewFrame();
+    const float line = ImGui::GetTextLineHeight();
+    const float spacing = ImGui::GetStyle().ItemSpacing.y;
+    ImGui::EndFrame();
+    const float width = ImGui::CalcTextSize(h.app->Status().c_str()).x;
+    REQUIRE(width > bar->Size.x); // the case at hand: two lines
+    CHECK(bar->ContentSize.y >= 2.0f * line + spacing);
+    // The bar holds its lines and its padding: nothing runs past its bottom edge.
+    CHECK(bar->ContentSize.y + 2.0f * bar->WindowPadding.y <= bar->Size.y + 0.5f);
+    CHECK(bar->Pos.y + bar->Size.y <= ImGui::GetMainViewport()->Size.y + 0.5f);
+}
+
 TEST_CASE("A Numbers row whose label is wider than the side panel wraps between words", "[app]")
 {
     // circle_corner's verdict names its deciding axis "deciding axis 3, the axis from box's vertex 2 to ball's
