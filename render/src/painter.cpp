@@ -1455,7 +1455,23 @@ class Painter
             include(origin + motion);
         }
         const double span = std::max({high.x - low.x, high.y - low.y, 1e-12});
-        const double scale = (side - 44.0f) / span;
+        double scale = (side - 44.0f) / span;
+        // The closing note's top: one line 18 px above the inset's bottom, two lines (a sweep's note too wide for
+        // one) a line higher. A tall difference is drawn smaller, so that its bottom stays 4 px above the note.
+        const SweepStatus sweepStatus =
+            m_study.Textbook() ? m_study.textbookSweepResult.status : m_study.sweepResult.status;
+        const double sweepToi = m_study.Textbook() ? m_study.textbookSweepResult.toi : m_study.sweepResult.toi;
+        const std::string sweepNote = "the ray enters at t = " + FormatNumber(sweepToi);
+        const bool twoLines = sweep && sweepStatus == SweepStatus::Hit &&
+                              m_canvas.MeasureText(sweepNote, TextStyle::Label).x > side - 12.0f;
+        const float noteTop =
+            box.maxY - 18.0f - (twoLines ? m_canvas.MeasureText(sweepNote, TextStyle::Label).y + 2.0f : 0.0f);
+        const double halfHeight = 0.5 * (high.y - low.y);
+        const double below = noteTop - 4.0f - (0.5f * (box.minY + box.maxY) + 8.0f);
+        if (halfHeight > 0.0 && below > 0.0 && halfHeight * scale > below)
+        {
+            scale = below / halfHeight;
+        }
         const Vec2 middle = 0.5 * (low + high);
         auto at = [&](Vec2 p) {
             return ScreenPoint{static_cast<float>(0.5 * (box.minX + box.maxX) + (p.x - middle.x) * scale),
@@ -1513,14 +1529,11 @@ class Painter
         {
             // The origin moves by the relative motion relative to the difference: where it enters is the hit.
             DashedSegment(m_canvas, o, at(origin + motion), palette::kShapeBInk, 1.5f, box, 5.0f, 4.0f);
-            const SweepStatus status =
-                m_study.Textbook() ? m_study.textbookSweepResult.status : m_study.sweepResult.status;
-            const double toi = m_study.Textbook() ? m_study.textbookSweepResult.toi : m_study.sweepResult.toi;
-            if (status == SweepStatus::Hit)
+            if (sweepStatus == SweepStatus::Hit)
             {
-                const ScreenPoint hit = at(origin + toi * motion);
+                const ScreenPoint hit = at(origin + sweepToi * motion);
                 m_canvas.FillCircle(hit, 4.0f, palette::kResult);
-                note("the ray enters at t = " + FormatNumber(toi), palette::kResult);
+                note(sweepNote, palette::kResult);
             }
             originDot();
             return;

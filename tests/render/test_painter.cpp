@@ -1535,6 +1535,7 @@ TEST_CASE("The Minkowski inset holds the origin exactly when the shapes overlap"
     testing::Rng rng(77);
     int inside = 0;
     int outside = 0;
+    int notes = 0;
     for (int i = 0; i < 300; ++i)
     {
         Scene scene = PairOf([&](int) {
@@ -1582,7 +1583,23 @@ TEST_CASE("The Minkowski inset holds the origin exactly when the shapes overlap"
         INFO("pair " << i << ", overlap " << m.overlap);
         CHECK(in == m.overlap);
         (in ? inside : outside) += 1;
+        // The closing note ("O inside: overlap", ex13_boxes's over its tall difference) lies below the difference.
+        float lowest = -1e30f;
+        for (const ScreenPoint& p : hull->points)
+        {
+            lowest = std::max(lowest, p.y);
+        }
+        for (const DrawCommand* c : canvas.InGroup("minkowski"))
+        {
+            if (c->kind == DrawCommand::Kind::Text && c->text.rfind("O ", 0) == 0)
+            {
+                INFO("\"" << c->text << "\" at y " << c->points[0].y << ", the difference down to " << lowest);
+                CHECK(c->points[0].y >= lowest);
+                ++notes;
+            }
+        }
     }
+    CHECK(notes > 200);
     CHECK(inside > 30);
     CHECK(outside > 30);
 }
