@@ -111,7 +111,9 @@ void WarmStart(SolverContact& c, SolverBody& a, SolverBody& b);
 /// K x + b >= 0 and x (K x + b) = 0. The four cases are tried in turn, as Catto's block solver does: both points
 /// pushing, only the first, only the second, neither. When no case holds (round-off on a degenerate pair) the
 /// impulses stay a.
-inline void BlockImpulses(const SolverContact& c, double b1, double b2, double a1, double a2, double& x1, double& x2)
+/// `Contact` is SolverContact or the soft step's SoftContact (the same fields).
+template <typename Contact>
+inline void BlockImpulses(const Contact& c, double b1, double b2, double a1, double a2, double& x1, double& x2)
 {
     x1 = -(c.m11 * b1 + c.m12 * b2);
     x2 = -(c.m12 * b1 + c.m22 * b2);
@@ -250,143 +252,6 @@ inline Softness MakeSoftness(double hertz, double zeta, double h)
     const double a3 = 1.0 / (1.0 + a2);
     return {omega / a1, a2 * a3, a3};
 }
-
-/// A body's move since the start of the step within the soft step's sub-steps: its centre of mass moved by
-/// `position`, and it turned by `rotation`.
-struct SoftMove
-{
-    Vec2 position{};    ///< displacement of the centre of mass
-    Rot rotation{};     ///< turn, as a rotation (for the anchors)
-    double angle = 0.0; ///< turn, in radians (for the body's angle)
-};
-
-/// The two normal impulses of a two-point contact (c.block) solved together, as in the velocity passes: the
-/// accumulated impulses x >= 0 that bring the points' normal speeds to `target` (or beyond it with x = 0), a 2x2
-/// linear complementarity problem solved by trying its four cases in turn. Returns the applied increments.
-void SolveNormalBlock(SolverContact& c, SolverBody& a, SolverBody& b, const double target[2], double applied[2]);
-
-/// Outline of one soft-step pass over a contact (Catto, "Solver2D", 2024, the soft step; Box2D v3's contact
-/// solver), with `useBias` the solve of a sub-step and without it the relax that follows its move:
-///  1. Normal, per point: the separation now is the one found at the start of the step plus the anchors' moves
-///     along the normal (each anchor moved with its body's centre and turned with its body), so the contact
-///     follows the bodies through the sub-steps without the narrowphase. A gap may close within the sub-step (the
-///     approach speed it allows is the gap over h); an overlap is pushed out by the soft constraint (solve only:
-///     the relax has no push, so that the push's velocity does not stay in the bodies); the accumulated impulse is
-///     clamped to be a push.
-///  2. Friction, per point, as in the velocity passes: within staticFriction times the normal impulse it is taken
-///     whole (the point sticks), beyond it is clamped to friction times the normal impulse.
-/// The normal is fixed over the step and the lever arms are those of the start of the step: a sub-step turns a
-/// body by little. In the solve the two normal impulses of a two-point contact are solved one after the other (the
-/// soft constraint's leak is per point); in the relax, which is rigid, together (SolveNormalBlock), so that a
-/// symmetric landing stays symmetric. `pass` numbers the record.
-template <typename Recorder>
-void SolveSoftContact(SolverContact& c, SolverBody& a, SolverBody& b, const SoftMove& moveA, const SoftMove& moveB,
-                      const Softness& softness, double invH, double maxPushSpeed, bool useBias, int pass,
-                      Recorder& recorder)
-{
-    const Vec2 n = c.normal;
-    const Vec2 t = RightPerp(n);
-    const Vec2 moved = moveB.position - moveA.position;
-    ContactPointSolve record[2]{};
-    if (!useBias && c.block)
-    {
-        double target[2] = {0.0, 0.0};
-        for (int i = 0; i < 2; ++i)
-        {
-            SolverPoint& p = c.points[i];
-            const Vec2 turnA = Rotate(moveA.rotation, p.rA) - p.rA;
-            const Vec2 turnB = Rotate(moveB.rotation, p.rB) - p.rB;
-            const double s = p.separation + Dot(moved + turnB - turnA, n);
-            target[i] = s > 0.0 ? -s * invH : 0.0;
-            record[i].pass = pass;
-            record[i].point = i;
-            record[i].normalSpeed = Dot(RelativeVelocity(a, b, p.rA, p.rB), n);
-        }
-        double applied[2] = {0.0, 0.0};
-        SolveNormalBlock(c, a, b, target, applied);
-        for (int i = 0; i < 2; ++i)
-        {
-            SolverPoint& p = c.points[i];
-            p.maxNormalImpulse = std::max(p.maxNormalImpulse, p.normalImpulse);
-            record[i].normalImpulseWanted = p.normalImpulse;
-            record[i].normalImpulse = p.normalImpulse;
-        }
-    }
-    for (int i = 0; i < c.count && !(!useBias && c.block); ++i)
-    {
-        SolverPoint& p = c.points[i];
-        const Vec2 turnA = Rotate(moveA.rotation, p.rA) - p.rA;
-        const Vec2 turnB = Rotate(moveB.rotation, p.rB) - p.rB;
-        const double s = p.separation + Dot(moved + turnB - turnA, n);
-        double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
-        if (s > 0.0)
-        {
-            bias = s * invH;
-        }
-        else if (useBias)
-        {
-            bias = std::max(softness.biasRate * s, -maxPushSpeed);
-            massScale = softness.massScale;
-            impulseScale = softness.impulseScale;
-        }
-        const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), n);
-        const double wanted = p.normalImpulse - p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
-        const double next = std::max(wanted, 0.0);
-        const double applied = next - p.normalImpulse;
-        p.normalImpulse = next;
-        p.maxNormalImpulse = std::max(p.maxNormalImpulse, next);
-        ApplyImpulse(a, b, p.rA, p.rB, applied * n);
-        record[i].pass = pass;
-        record[i].point = i;
-        record[i].normalSpeed = vn;
-        record[i].normalImpulseWanted = wanted;
-        record[i].normalImpulse = next;
-    }
-    for (int i = 0; i < c.count; ++i)
-    {
-        SolverPoint& p = c.points[i];
-        const double vt = Dot(RelativeVelocity(a, b, p.rA, p.rB), t);
-        const double wanted = p.tangentImpulse - p.tangentMass * vt;
-        const double staticLimit = c.material.staticFriction * p.normalImpulse;
-        const double slidingLimit = c.material.friction * p.normalImpulse;
-        double next = wanted;
-        p.stuck = std::fabs(wanted) <= staticLimit;
-        if (!p.stuck)
-        {
-            next = std::max(-slidingLimit, std::min(slidingLimit, wanted));
-        }
-        const double applied = next - p.tangentImpulse;
-        p.tangentImpulse = next;
-        ApplyImpulse(a, b, p.rA, p.rB, applied * t);
-        record[i].tangentSpeed = vt;
-        record[i].tangentImpulseWanted = wanted;
-        record[i].staticLimit = staticLimit;
-        record[i].dynamicLimit = slidingLimit;
-        record[i].tangentImpulse = next;
-        record[i].stuck = p.stuck;
-    }
-    for (int i = 0; i < c.count; ++i)
-    {
-        recorder.Pass(record[i]);
-    }
-}
-
-/// The soft step's bounce targets, after its sub-steps: a point bounces when it approached faster than the
-/// threshold at the start of the step (PrepareContact gave it a bounce) and pushed within the sub-steps. Its bounce
-/// speed is set anew from the energy, so that it does not depend on where in the step the impact fell: sub-steps of
-/// h under a pull g (gravity along the normal) keep v^2 / 2 + g y - g h v / 2 in free flight, so the speed at the
-/// surface of the fall that began the step at separation s0 with normal speed v is u, u^2 = (v - g h / 2)^2 - 2 g d
-/// (d the overlap this step's approach can have made, -s0 for a gap); the point, now at separation s (moved with
-/// its bodies through the sub-steps), must leave at the speed w that brings it back to the surface at restitution
-/// times u: (w - g h / 2)^2 = e^2 u^2 - 2 g s. Without gravity, w = e |v|. Points that do not bounce get 0, and
-/// every point's restitutionImpulse is cleared. Returns whether any point bounces.
-bool SoftBounceTargets(SolverContact& c, const SoftMove& moveA, const SoftMove& moveB, double pull, double h,
-                       double dt);
-
-/// One pass of restitution after the soft step's sub-steps (after Box2D v3's): each point with a bounce target gets
-/// the impulse that brings its normal speed to it, added to its accumulated impulse, which stays a push (both
-/// points of a two-point block together). Added to `restitutionImpulse`, so that only the rest is warm started.
-void ApplySoftRestitution(SolverContact& c, SolverBody& a, SolverBody& b);
 
 /// Kinetic energy of a solver body (0 for static and sleeping ones).
 inline double Energy(const SolverBody& b)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "contact_solver.h"
+#include "soft_solver.h"
 
 #include <satviz/world.h>
 
@@ -32,7 +33,9 @@ struct StepMemory
     std::vector<WorldContact> previousContacts;    ///< FindContacts: the last step's contacts
     std::vector<std::pair<int, int>> candidates;   ///< FindContacts: the broadphase's pairs
     std::vector<Aabb> boxes;                       ///< FindContacts: the bodies' boxes
-    std::vector<SoftMove> softMoves;               ///< SolveSoft: each body's move within the sub-steps
+    std::vector<SoftBody> softBodies;              ///< SolveSoft: each body's velocities and move in the sub-steps
+    std::vector<SoftContact> softContacts;         ///< SolveSoft: the contacts in the passes' order
+    std::vector<int> softAwake;                    ///< SolveSoft: the awake dynamic bodies
     std::vector<SolverBody> softVelocities;        ///< SolveSoft: the velocities the sub-steps leave
     std::vector<int> bouncing;                     ///< SolveSoft: the contacts with a bouncing point
 };

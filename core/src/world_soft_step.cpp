@@ -28,7 +28,104 @@ Rot TurnBy(Rot q, double angle)
 // Passes of the restitution over the bouncing contacts: enough for a few contacts that land together to agree.
 constexpr int kRestitutionPasses = 4;
 
+bool Fixed(const SolverBody& s)
+{
+    return s.invMass == 0.0 && s.invInertia == 0.0;
+}
+
 } // namespace
+
+SoftContact MakeSoftContact(const SolverContact& c, int found, const SolverBody& sa, const SolverBody& sb)
+{
+    SoftContact s;
+    s.a = c.a;
+    s.b = c.b;
+    s.found = found;
+    s.count = static_cast<uint8_t>(c.count);
+    s.block = c.block;
+    s.stiff = Fixed(sa) || Fixed(sb);
+    s.traced = c.traced;
+    s.normal = c.normal;
+    s.friction = c.material.friction;
+    s.staticFriction = c.material.staticFriction;
+    s.invMassA = sa.invMass;
+    s.invInertiaA = sa.invInertia;
+    s.invMassB = sb.invMass;
+    s.invInertiaB = sb.invInertia;
+    s.k11 = c.k11;
+    s.k12 = c.k12;
+    s.k22 = c.k22;
+    s.m11 = c.m11;
+    s.m12 = c.m12;
+    s.m22 = c.m22;
+    for (int i = 0; i < c.count; ++i)
+    {
+        const SolverPoint& p = c.points[i];
+        SoftPoint& q = s.points[i];
+        q.rA = p.rA;
+        q.rB = p.rB;
+        q.separation = p.separation;
+        q.normalMass = p.normalMass;
+        q.tangentMass = p.tangentMass;
+        q.normalImpulse = p.normalImpulse;
+        q.tangentImpulse = p.tangentImpulse;
+        s.bounces = s.bounces || p.bounce > 0.0;
+    }
+    return s;
+}
+
+bool SoftBounceTargets(SolverContact& solved, const SoftContact& c, const SoftBody& a, const SoftBody& b,
+                       double pull, double h, double dt)
+{
+    bool any = false;
+    const double e = solved.material.restitution;
+    for (int i = 0; i < solved.count; ++i)
+    {
+        SolverPoint& p = solved.points[i];
+        p.restitutionImpulse = 0.0;
+        if (!(p.bounce > 0.0) || c.points[i].maxNormalImpulse == 0.0)
+        {
+            p.bounce = 0.0;
+            continue;
+        }
+        const double v = p.approach;
+        const double d = p.separation < 0.0 ? std::min(-p.separation, -v * dt) : -p.separation;
+        const double down = v - 0.5 * pull * h;
+        const double u2 = std::max(0.0, down * down - 2.0 * pull * d);
+        const double s = SeparationNow(c, c.points[i], a, b);
+        p.bounce = 0.5 * pull * h + std::sqrt(std::max(0.0, e * e * u2 - 2.0 * pull * s));
+        any = true;
+    }
+    return any;
+}
+
+void ApplySoftRestitution(SolverContact& solved, SoftContact& c, SoftBody& a, SoftBody& b)
+{
+    if (c.block && solved.points[0].bounce > 0.0 && solved.points[1].bounce > 0.0)
+    {
+        const double target[2] = {solved.points[0].bounce, solved.points[1].bounce};
+        double applied[2] = {0.0, 0.0};
+        SolveNormalBlock(c, a, b, target, applied);
+        solved.points[0].restitutionImpulse += applied[0];
+        solved.points[1].restitutionImpulse += applied[1];
+        return;
+    }
+    for (int i = 0; i < c.count; ++i)
+    {
+        SoftPoint& p = c.points[i];
+        const double bounce = solved.points[i].bounce;
+        if (!(bounce > 0.0))
+        {
+            continue;
+        }
+        const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), c.normal);
+        const double next = std::max(0.0, p.normalImpulse - p.normalMass * (vn - bounce));
+        const double applied = next - p.normalImpulse;
+        p.normalImpulse = next;
+        solved.points[i].restitutionImpulse += applied;
+        ApplyImpulse(c, a, b, p.rA, p.rB, applied * c.normal);
+    }
+}
 
 // Catto's soft step ("Solver2D", 2024; Box2D v3). The contacts were prepared once (PrepareContacts); each sub-step
 // then integrates gravity, warm starts, solves with the soft push, moves the bodies and relaxes. Compared with the
@@ -42,67 +139,80 @@ void Stepper::SolveSoft()
     const int subSteps = std::max(1, settings.subSteps);
     const double h = dt / subSteps;
     const double invH = 1.0 / h;
-    // As in the velocity passes: top down, so that a pile's weight reaches its lower rows within one pass, and
-    // stored in that order so that each pass reads the contacts in sequence.
+    // As in the velocity passes: top down, so that a pile's weight reaches its lower rows within one pass. Each
+    // contact is copied once into the small record the passes read, stored in that order so that each pass reads
+    // them in sequence; the solver contacts stay in the order found.
     OrderTopDown();
-    SortContacts();
+    const int m = static_cast<int>(solverContacts.size());
+    foundOrder.resize(static_cast<size_t>(m));
+    std::vector<SoftContact>& contacts = memory.softContacts;
+    contacts.resize(static_cast<size_t>(m));
+    for (int k = 0; k < m; ++k)
+    {
+        foundOrder[static_cast<size_t>(k)] = k;
+        const int found = solveOrder[static_cast<size_t>(k)];
+        const SolverContact& c = solverContacts[static_cast<size_t>(found)];
+        contacts[static_cast<size_t>(k)] = MakeSoftContact(c, found, solverBodies[c.a], solverBodies[c.b]);
+    }
+    std::vector<SoftBody>& states = memory.softBodies;
+    states.assign(static_cast<size_t>(n), SoftBody{});
+    std::vector<int>& awake = memory.softAwake;
+    awake.clear();
+    for (int i = 0; i < n; ++i)
+    {
+        states[static_cast<size_t>(i)].v = solverBodies[i].v;
+        states[static_cast<size_t>(i)].w = solverBodies[i].w;
+        if (IsAwakeDynamic(bodies[i]))
+        {
+            // A body whose turn moves no point of its outline (a circle about its centre) keeps its anchors
+            // unturned (the normal between two circles joins their centres, whatever they turn): stored as -1 - i.
+            awake.push_back(bodies[i].turnRadius > 0.0 ? i : -1 - i);
+        }
+    }
     // A spring faster than a quarter of the sub-step rate is not resolved by the sub-step: it would only add
     // stiffness that the implicit step turns into damping. Against a body that cannot give way (static, asleep) the
     // spring is twice as stiff: a body in a pile pressed into the ground by the weight above must not sink.
     const double hertz = std::min(settings.contactHertz, 0.25 * invH);
     const Softness soft = hertz > 0.0 ? MakeSoftness(hertz, settings.contactDampingRatio, h) : Softness{};
     const Softness stiff = hertz > 0.0 ? MakeSoftness(2.0 * hertz, settings.contactDampingRatio, h) : Softness{};
-    std::vector<SoftMove>& moves = memory.softMoves;
-    moves.assign(static_cast<size_t>(n), SoftMove{});
-    const auto fixed = [](const SolverBody& s) { return s.invMass == 0.0 && s.invInertia == 0.0; };
     NullSolveRecorder quiet;
     TraceSolveRecorder loud{world.trace};
     const auto pass = [&](bool useBias, int number) {
-        for (SolverContact& c : solverContacts)
+        for (SoftContact& c : contacts)
         {
-            SolverBody& a = solverBodies[c.a];
-            SolverBody& b = solverBodies[c.b];
-            const Softness& softness = fixed(a) || fixed(b) ? stiff : soft;
-            const SoftMove& moveA = moves[static_cast<size_t>(c.a)];
-            const SoftMove& moveB = moves[static_cast<size_t>(c.b)];
+            SoftBody& a = states[static_cast<size_t>(c.a)];
+            SoftBody& b = states[static_cast<size_t>(c.b)];
+            const Softness& softness = c.stiff ? stiff : soft;
             if (c.traced)
             {
-                SolveSoftContact(c, a, b, moveA, moveB, softness, invH, settings.maxPushSpeed, useBias, number, loud);
+                SolveSoftContact(c, a, b, softness, invH, settings.maxPushSpeed, useBias, number, loud);
             }
             else
             {
-                SolveSoftContact(c, a, b, moveA, moveB, softness, invH, settings.maxPushSpeed, useBias, number, quiet);
+                SolveSoftContact(c, a, b, softness, invH, settings.maxPushSpeed, useBias, number, quiet);
             }
         }
     };
     for (int sub = 0; sub < subSteps; ++sub)
     {
-        for (int i = 0; i < n; ++i)
+        for (const int code : awake)
         {
-            if (IsAwakeDynamic(bodies[i]))
-            {
-                solverBodies[i].v = solverBodies[i].v + h * settings.gravity;
-            }
+            SoftBody& s = states[static_cast<size_t>(code >= 0 ? code : -1 - code)];
+            s.v = s.v + h * settings.gravity;
         }
-        for (SolverContact& c : solverContacts)
+        for (SoftContact& c : contacts)
         {
-            WarmStart(c, solverBodies[c.a], solverBodies[c.b]);
+            WarmStart(c, states[static_cast<size_t>(c.a)], states[static_cast<size_t>(c.b)]);
         }
         pass(true, 2 * sub);
-        for (int i = 0; i < n; ++i)
+        for (const int code : awake)
         {
-            if (IsAwakeDynamic(bodies[i]))
+            SoftBody& s = states[static_cast<size_t>(code >= 0 ? code : -1 - code)];
+            s.position = s.position + h * s.v;
+            s.angle += h * s.w;
+            if (code >= 0)
             {
-                SoftMove& m = moves[static_cast<size_t>(i)];
-                const SolverBody& s = solverBodies[i];
-                m.position = m.position + h * s.v;
-                m.angle += h * s.w;
-                // A circle turning about its centre moves no point of its outline: its anchors stay (the normal
-                // between two circles joins their centres, whatever they turn).
-                if (bodies[i].turnRadius > 0.0)
-                {
-                    m.rotation = TurnBy(m.rotation, h * s.w);
-                }
+                s.rotation = TurnBy(s.rotation, h * s.w);
             }
         }
         pass(false, 2 * sub + 1);
@@ -112,14 +222,19 @@ void Stepper::SolveSoft()
     // the bounce as they would solved together, not in favour of the first one visited.
     std::vector<int>& bouncing = memory.bouncing;
     bouncing.clear();
-    for (int k = 0; k < static_cast<int>(solverContacts.size()); ++k)
+    for (int k = 0; k < m; ++k)
     {
-        SolverContact& c = solverContacts[static_cast<size_t>(k)];
+        const SoftContact& c = contacts[static_cast<size_t>(k)];
+        if (!c.bounces)
+        {
+            continue;
+        }
         // How fast gravity closes the pair along the normal: it pulls only the awake dynamic bodies.
         const Vec2 gravityA = IsAwakeDynamic(bodies[c.a]) ? settings.gravity : Vec2{};
         const Vec2 gravityB = IsAwakeDynamic(bodies[c.b]) ? settings.gravity : Vec2{};
         const double pull = std::max(0.0, -Dot(gravityB - gravityA, c.normal));
-        if (SoftBounceTargets(c, moves[static_cast<size_t>(c.a)], moves[static_cast<size_t>(c.b)], pull, h, dt))
+        if (SoftBounceTargets(solverContacts[static_cast<size_t>(c.found)], c, states[static_cast<size_t>(c.a)],
+                              states[static_cast<size_t>(c.b)], pull, h, dt))
         {
             bouncing.push_back(k);
         }
@@ -128,32 +243,42 @@ void Stepper::SolveSoft()
     {
         for (const int k : bouncing)
         {
-            SolverContact& c = solverContacts[static_cast<size_t>(k)];
-            ApplySoftRestitution(c, solverBodies[c.a], solverBodies[c.b]);
+            SoftContact& c = contacts[static_cast<size_t>(k)];
+            ApplySoftRestitution(solverContacts[static_cast<size_t>(c.found)], c, states[static_cast<size_t>(c.a)],
+                                 states[static_cast<size_t>(c.b)]);
         }
     }
-    if (world.trace != nullptr)
+    // The impulses go back to the solver contacts (StoreImpulses keeps them for the next step's warm start).
+    for (const SoftContact& c : contacts)
     {
-        for (const SolverContact& c : solverContacts)
+        SolverContact& solved = solverContacts[static_cast<size_t>(c.found)];
+        for (int i = 0; i < c.count; ++i)
         {
-            if (c.traced)
-            {
-                world.trace->blockSolved = false;
-            }
+            solved.points[i].normalImpulse = c.points[i].normalImpulse;
+            solved.points[i].tangentImpulse = c.points[i].tangentImpulse;
+            solved.points[i].maxNormalImpulse = c.points[i].maxNormalImpulse;
+            solved.points[i].stuck = c.stuck[i];
         }
+        if (c.traced)
+        {
+            world.trace->blockSolved = false;
+        }
+    }
+    for (int i = 0; i < n; ++i)
+    {
+        solverBodies[i].v = states[static_cast<size_t>(i)].v;
+        solverBodies[i].w = states[static_cast<size_t>(i)].w;
     }
     RecordAfter();
     // Move takes each body along a straight path over dt: the velocity of its move within the sub-steps. The
     // velocity the sub-steps end with is the body's for the next step (Move gives it back).
     memory.softVelocities = solverBodies;
-    for (int i = 0; i < n; ++i)
+    for (const int code : awake)
     {
-        if (IsAwakeDynamic(bodies[i]))
-        {
-            const SoftMove& m = moves[static_cast<size_t>(i)];
-            solverBodies[i].v = (1.0 / dt) * m.position;
-            solverBodies[i].w = m.angle / dt;
-        }
+        const int i = code >= 0 ? code : -1 - code;
+        const SoftBody& s = states[static_cast<size_t>(i)];
+        solverBodies[i].v = (1.0 / dt) * s.position;
+        solverBodies[i].w = s.angle / dt;
     }
 }
 

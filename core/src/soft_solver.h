@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: MIT
+// satviz: the soft step's records of bodies and contacts and its pass over one contact (internal).
+#pragma once
+
+#include "contact_solver.h"
+
+#include <cstdint>
+
+namespace satviz::detail
+{
+
+/// What the soft step's sub-steps change of one body, in one record of one cache line: a contact's visit reads its
+/// two bodies' records and nothing else of them.
+struct alignas(64) SoftBody
+{
+    Vec2 v{};           ///< linear velocity of the centre of mass
+    double w = 0.0;     ///< angular velocity
+    double angle = 0.0; ///< turn since the start of the step, in radians (for the body's angle)
+    Vec2 position{};    ///< displacement of the centre of mass since the start of the step
+    Rot rotation{};     ///< turn since the start of the step, as a rotation (for the anchors)
+};
+
+/// One point of a SoftContact.
+struct SoftPoint
+{
+    Vec2 rA{};                      ///< from A's centre of mass to the point, at the start of the step
+    Vec2 rB{};                      ///< from B's centre of mass to the point, at the start of the step
+    double separation = 0.0;        ///< overlap (< 0) or gap (> 0) found at the start of the step
+    double normalMass = 0.0;        ///< effective mass along the normal
+    double tangentMass = 0.0;       ///< effective mass along the tangent
+    double normalImpulse = 0.0;     ///< accumulated normal impulse
+    double tangentImpulse = 0.0;    ///< accumulated friction impulse
+    double maxNormalImpulse = 0.0;  ///< the largest accumulated normal impulse over the sub-steps
+};
+
+/// A contact as the soft step's passes read it: what they need of a SolverContact and of its bodies' masses, made
+/// once a step (MakeSoftContact) and stored in the passes' order. `found` is the SolverContact it came from, which
+/// gets its impulses back after the step.
+struct SoftContact
+{
+    int a = -1;              ///< first body
+    int b = -1;              ///< second body
+    int found = -1;          ///< index of the SolverContact in the step's list
+    uint8_t count = 0;       ///< points, 1 or 2
+    bool block = false;      ///< the two normal impulses are solved together (in the relax)
+    bool stiff = false;      ///< one of the bodies cannot give way (static or asleep): the stiffer spring
+    bool traced = false;     ///< the world records this contact's passes
+    bool bounces = false;    ///< a point has a bounce target (PrepareContact)
+    bool stuck[2] = {false, false}; ///< static friction held in the last pass, per point
+    Vec2 normal{};           ///< unit normal from a to b
+    double friction = 0.0;   ///< sliding friction
+    double staticFriction = 0.0; ///< static friction
+    double invMassA = 0.0, invInertiaA = 0.0; ///< A's inverse mass and inertia (0 for static and sleeping bodies)
+    double invMassB = 0.0, invInertiaB = 0.0; ///< B's
+    double k11 = 0.0, k12 = 0.0, k22 = 0.0; ///< the 2x2 normal mass matrix K (symmetric)
+    double m11 = 0.0, m12 = 0.0, m22 = 0.0; ///< its inverse
+    SoftPoint points[2]{};   ///< the points
+};
+
+/// The soft record of solver contact `c`, number `found` in the step's list, whose bodies have the solver states
+/// sa and sb.
+SoftContact MakeSoftContact(const SolverContact& c, int found, const SolverBody& sa, const SolverBody& sb);
+
+/// Relative velocity of B's point against A's point at offsets rA, rB.
+inline Vec2 RelativeVelocity(const SoftBody& a, const SoftBody& b, Vec2 rA, Vec2 rB)
+{
+    return (b.v + b.w * LeftPerp(rB)) - (a.v + a.w * LeftPerp(rA));
+}
+
+/// Adds impulse p at offsets rA, rB: -p on A, +p on B.
+inline void ApplyImpulse(const SoftContact& c, SoftBody& a, SoftBody& b, Vec2 rA, Vec2 rB, Vec2 p)
+{
+    a.v = a.v - c.invMassA * p;
+    a.w -= c.invInertiaA * Cross(rA, p);
+    b.v = b.v + c.invMassB * p;
+    b.w += c.invInertiaB * Cross(rB, p);
+}
+
+/// Applies the accumulated impulses (warm starting, once per sub-step).
+inline void WarmStart(const SoftContact& c, SoftBody& a, SoftBody& b)
+{
+    const Vec2 t = RightPerp(c.normal);
+    for (int i = 0; i < c.count; ++i)
+    {
+        const SoftPoint& p = c.points[i];
+        ApplyImpulse(c, a, b, p.rA, p.rB, p.normalImpulse * c.normal + p.tangentImpulse * t);
+    }
+}
+
+/// Separation of point p now: the one found at the start of the step plus its anchors' moves along the normal,
+/// each anchor moved with its body's centre and turned with its body.
+inline double SeparationNow(const SoftContact& c, const SoftPoint& p, const SoftBody& a, const SoftBody& b)
+{
+    const Vec2 turnA = Rotate(a.rotation, p.rA) - p.rA;
+    const Vec2 turnB = Rotate(b.rotation, p.rB) - p.rB;
+    return p.separation + Dot((b.position - a.position) + turnB - turnA, c.normal);
+}
+
+/// The two normal impulses of a two-point contact (c.block) solved together, as in the velocity passes: the
+/// accumulated impulses x >= 0 that bring the points' normal speeds to `target` (or beyond it with x = 0), a 2x2
+/// linear complementarity problem solved by trying its four cases in turn. Returns the applied increments.
+inline void SolveNormalBlock(SoftContact& c, SoftBody& a, SoftBody& b, const double target[2], double applied[2])
+{
+    const Vec2 n = c.normal;
+    SoftPoint& p1 = c.points[0];
+    SoftPoint& p2 = c.points[1];
+    const double vn1 = Dot(RelativeVelocity(a, b, p1.rA, p1.rB), n);
+    const double vn2 = Dot(RelativeVelocity(a, b, p2.rA, p2.rB), n);
+    const double a1 = p1.normalImpulse;
+    const double a2 = p2.normalImpulse;
+    // The speeds after impulses x are K x + b; each case sets some of them to zero.
+    const double b1 = (vn1 - target[0]) - (c.k11 * a1 + c.k12 * a2);
+    const double b2 = (vn2 - target[1]) - (c.k12 * a1 + c.k22 * a2);
+    double x1 = 0.0;
+    double x2 = 0.0;
+    BlockImpulses(c, b1, b2, a1, a2, x1, x2);
+    applied[0] = x1 - a1;
+    applied[1] = x2 - a2;
+    ApplyImpulse(c, a, b, p1.rA, p1.rB, applied[0] * n);
+    ApplyImpulse(c, a, b, p2.rA, p2.rB, applied[1] * n);
+    p1.normalImpulse = x1;
+    p2.normalImpulse = x2;
+}
+
+/// Outline of one soft-step pass over a contact (Catto, "Solver2D", 2024, the soft step; Box2D v3's contact
+/// solver), with `useBias` the solve of a sub-step and without it the relax that follows its move:
+///  1. Normal, per point: the separation now (SeparationNow) follows the bodies through the sub-steps without the
+///     narrowphase. A gap may close within the sub-step (the approach speed it allows is the gap over h); an
+///     overlap is pushed out by the soft constraint (solve only: the relax has no push, so that the push's velocity
+///     does not stay in the bodies); the accumulated impulse is clamped to be a push.
+///  2. Friction, per point, as in the velocity passes: within staticFriction times the normal impulse it is taken
+///     whole (the point sticks), beyond it is clamped to friction times the normal impulse.
+/// The normal is fixed over the step and the lever arms are those of the start of the step: a sub-step turns a
+/// body by little. In the solve the two normal impulses of a two-point contact are solved one after the other (the
+/// soft constraint's leak is per point); in the relax, which is rigid, together (SolveNormalBlock), so that a
+/// symmetric landing stays symmetric. `pass` numbers the record.
+template <typename Recorder>
+void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& softness, double invH,
+                      double maxPushSpeed, bool useBias, int pass, Recorder& recorder)
+{
+    const Vec2 n = c.normal;
+    const Vec2 t = RightPerp(n);
+    ContactPointSolve record[2]{};
+    const bool together = !useBias && c.block;
+    if (together)
+    {
+        double target[2] = {0.0, 0.0};
+        for (int i = 0; i < 2; ++i)
+        {
+            const SoftPoint& p = c.points[i];
+            const double s = SeparationNow(c, p, a, b);
+            target[i] = s > 0.0 ? -s * invH : 0.0;
+            record[i].pass = pass;
+            record[i].point = i;
+            record[i].normalSpeed = Dot(RelativeVelocity(a, b, p.rA, p.rB), n);
+        }
+        double applied[2] = {0.0, 0.0};
+        SolveNormalBlock(c, a, b, target, applied);
+        for (int i = 0; i < 2; ++i)
+        {
+            SoftPoint& p = c.points[i];
+            p.maxNormalImpulse = std::max(p.maxNormalImpulse, p.normalImpulse);
+            record[i].normalImpulseWanted = p.normalImpulse;
+            record[i].normalImpulse = p.normalImpulse;
+        }
+    }
+    for (int i = 0; i < c.count && !together; ++i)
+    {
+        SoftPoint& p = c.points[i];
+        const double s = SeparationNow(c, p, a, b);
+        double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+        if (s > 0.0)
+        {
+            bias = s * invH;
+        }
+        else if (useBias)
+        {
+            bias = std::max(softness.biasRate * s, -maxPushSpeed);
+            massScale = softness.massScale;
+            impulseScale = softness.impulseScale;
+        }
+        const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), n);
+        const double wanted = p.normalImpulse - p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
+        const double next = std::max(wanted, 0.0);
+        const double applied = next - p.normalImpulse;
+        p.normalImpulse = next;
+        p.maxNormalImpulse = std::max(p.maxNormalImpulse, next);
+        ApplyImpulse(c, a, b, p.rA, p.rB, applied * n);
+        record[i].pass = pass;
+        record[i].point = i;
+        record[i].normalSpeed = vn;
+        record[i].normalImpulseWanted = wanted;
+        record[i].normalImpulse = next;
+    }
+    for (int i = 0; i < c.count; ++i)
+    {
+        SoftPoint& p = c.points[i];
+        const double vt = Dot(RelativeVelocity(a, b, p.rA, p.rB), t);
+        const double wanted = p.tangentImpulse - p.tangentMass * vt;
+        const double staticLimit = c.staticFriction * p.normalImpulse;
+        const double slidingLimit = c.friction * p.normalImpulse;
+        double next = wanted;
+        c.stuck[i] = std::fabs(wanted) <= staticLimit;
+        if (!c.stuck[i])
+        {
+            next = std::max(-slidingLimit, std::min(slidingLimit, wanted));
+        }
+        const double applied = next - p.tangentImpulse;
+        p.tangentImpulse = next;
+        ApplyImpulse(c, a, b, p.rA, p.rB, applied * t);
+        record[i].tangentSpeed = vt;
+        record[i].tangentImpulseWanted = wanted;
+        record[i].staticLimit = staticLimit;
+        record[i].dynamicLimit = slidingLimit;
+        record[i].tangentImpulse = next;
+        record[i].stuck = c.stuck[i];
+    }
+    for (int i = 0; i < c.count; ++i)
+    {
+        recorder.Pass(record[i]);
+    }
+}
+
+/// The soft step's bounce targets, after its sub-steps: a point bounces when it approached faster than the
+/// threshold at the start of the step (PrepareContact gave `solved` a bounce) and pushed within the sub-steps (in
+/// the soft record c). Its bounce speed is set anew from the energy, so that it does not depend on where in the
+/// step the impact fell: sub-steps of h under a pull g (gravity along the normal) keep v^2 / 2 + g y - g h v / 2
+/// in free flight, so the speed at the surface of the fall that began the step at separation s0 with normal speed
+/// v is u, u^2 = (v - g h / 2)^2 - 2 g d (d the overlap this step's approach can have made, -s0 for a gap); the
+/// point, now at separation s (moved with its bodies through the sub-steps), must leave at the speed w that brings
+/// it back to the surface at restitution times u: (w - g h / 2)^2 = e^2 u^2 - 2 g s. Without gravity, w = e |v|.
+/// Points that do not bounce get 0 in `solved`, and every point's restitutionImpulse is cleared. Returns whether any
+/// point bounces.
+bool SoftBounceTargets(SolverContact& solved, const SoftContact& c, const SoftBody& a, const SoftBody& b,
+                       double pull, double h, double dt);
+
+/// One pass of restitution after the soft step's sub-steps (after Box2D v3's): each point with a bounce target (in
+/// `solved`) gets the impulse that brings its normal speed to it, added to its accumulated impulse, which stays a
+/// push (both points of a two-point block together). Added to `solved`'s restitutionImpulse, so that only the rest
+/// is warm started.
+void ApplySoftRestitution(SolverContact& solved, SoftContact& c, SoftBody& a, SoftBody& b);
+
+} // namespace satviz::detail
