@@ -20,80 +20,97 @@ struct alignas(64) SoftBody
     Rot rotation{};     ///< turn since the start of the step, as a rotation (for the anchors)
 };
 
-/// One point of a SoftContact.
+/// One point of a SoftContact. The normal and the tangent are fixed over the step, and so are the lever arms (from
+/// the centres of mass to the point, at the start of the step): the passes need only the lever arms' cross
+/// products with them, which give a spin's share of a point's speed along the normal and the tangent, an impulse's
+/// share of the spin, and, with a body's turn, the anchor's move along the normal.
 struct SoftPoint
 {
-    Vec2 rA{};                      ///< from A's centre of mass to the point, at the start of the step
-    Vec2 rB{};                      ///< from B's centre of mass to the point, at the start of the step
-    double separation = 0.0;        ///< overlap (< 0) or gap (> 0) found at the start of the step
-    double normalMass = 0.0;        ///< effective mass along the normal
-    double tangentMass = 0.0;       ///< effective mass along the tangent
-    double normalImpulse = 0.0;     ///< accumulated normal impulse
-    double tangentImpulse = 0.0;    ///< accumulated friction impulse
-    double maxNormalImpulse = 0.0;  ///< the largest accumulated normal impulse over the sub-steps
+    double rnA = 0.0;              ///< Cross(rA, normal), rA from A's centre of mass to the point
+    double rnB = 0.0;              ///< Cross(rB, normal)
+    double rtA = 0.0;              ///< Cross(rA, tangent) = -Dot(rA, normal), tangent = RightPerp(normal)
+    double rtB = 0.0;              ///< Cross(rB, tangent)
+    double separation = 0.0;       ///< overlap (< 0) or gap (> 0) found at the start of the step
+    double normalMass = 0.0;       ///< effective mass along the normal
+    double tangentMass = 0.0;      ///< effective mass along the tangent
+    double normalImpulse = 0.0;    ///< accumulated normal impulse
+    double tangentImpulse = 0.0;   ///< accumulated friction impulse
+    double maxNormalImpulse = 0.0; ///< the largest accumulated normal impulse over the sub-steps
 };
 
 /// A contact as the soft step's passes read it: what they need of a SolverContact and of its bodies' masses, made
-/// once a step (MakeSoftContact) and stored in the passes' order. `found` is the SolverContact it came from, which
-/// gets its impulses back after the step.
+/// once a step (MakeSoftContact) and stored in the passes' order (the solver contact it came from, which gets its
+/// impulses back after the step, is the Stepper's solveOrder at the same place).
 struct SoftContact
 {
-    int a = -1;              ///< first body
-    int b = -1;              ///< second body
-    int found = -1;          ///< index of the SolverContact in the step's list
-    uint8_t count = 0;       ///< points, 1 or 2
-    bool block = false;      ///< the two normal impulses are solved together (in the relax)
-    bool stiff = false;      ///< one of the bodies cannot give way (static or asleep): the stiffer spring
-    bool traced = false;     ///< the world records this contact's passes
-    bool bounces = false;    ///< a point has a bounce target (PrepareContact)
+    int a = -1;                     ///< first body
+    int b = -1;                     ///< second body
+    uint8_t count = 0;              ///< points, 1 or 2
+    bool block = false;             ///< the two normal impulses are solved together (in the relax)
+    bool stiff = false;             ///< one of the bodies cannot give way (static or asleep): the stiffer spring
+    bool traced = false;            ///< the world records this contact's passes
+    bool bounces = false;           ///< a point has a bounce target (PrepareContact)
     bool stuck[2] = {false, false}; ///< static friction held in the last pass, per point
-    Vec2 normal{};           ///< unit normal from a to b
-    double friction = 0.0;   ///< sliding friction
-    double staticFriction = 0.0; ///< static friction
+    Vec2 normal{};                  ///< unit normal from a to b
+    double friction = 0.0;          ///< sliding friction
+    double staticFriction = 0.0;    ///< static friction
     double invMassA = 0.0, invInertiaA = 0.0; ///< A's inverse mass and inertia (0 for static and sleeping bodies)
     double invMassB = 0.0, invInertiaB = 0.0; ///< B's
-    double k11 = 0.0, k12 = 0.0, k22 = 0.0; ///< the 2x2 normal mass matrix K (symmetric)
-    double m11 = 0.0, m12 = 0.0, m22 = 0.0; ///< its inverse
-    SoftPoint points[2]{};   ///< the points
+    double k11 = 0.0, k12 = 0.0, k22 = 0.0;   ///< the 2x2 normal mass matrix K (symmetric)
+    double m11 = 0.0, m12 = 0.0, m22 = 0.0;   ///< its inverse
+    SoftPoint points[2]{};                    ///< the points
 };
 
-/// The soft record of solver contact `c`, number `found` in the step's list, whose bodies have the solver states
-/// sa and sb.
-SoftContact MakeSoftContact(const SolverContact& c, int found, const SolverBody& sa, const SolverBody& sb);
+/// The soft record of solver contact `c`, whose bodies have the solver states sa and sb.
+SoftContact MakeSoftContact(const SolverContact& c, const SolverBody& sa, const SolverBody& sb);
 
-/// Relative velocity of B's point against A's point at offsets rA, rB.
-inline Vec2 RelativeVelocity(const SoftBody& a, const SoftBody& b, Vec2 rA, Vec2 rB)
+/// The speed of B's point against A's point along `direction` (the normal or the tangent), with rA and rB the lever
+/// arms' cross products with it.
+inline double SpeedAlong(const SoftBody& a, const SoftBody& b, Vec2 direction, double rA, double rB)
 {
-    return (b.v + b.w * LeftPerp(rB)) - (a.v + a.w * LeftPerp(rA));
+    return Dot(b.v - a.v, direction) + b.w * rB - a.w * rA;
 }
 
-/// Adds impulse p at offsets rA, rB: -p on A, +p on B.
-inline void ApplyImpulse(const SoftContact& c, SoftBody& a, SoftBody& b, Vec2 rA, Vec2 rB, Vec2 p)
+/// Adds impulse `impulse` along `direction` (lever arms' cross products rA, rB with it): -impulse on A, +impulse on
+/// B.
+inline void ApplyImpulse(const SoftContact& c, SoftBody& a, SoftBody& b, Vec2 direction, double rA, double rB,
+                         double impulse)
 {
-    a.v = a.v - c.invMassA * p;
-    a.w -= c.invInertiaA * Cross(rA, p);
-    b.v = b.v + c.invMassB * p;
-    b.w += c.invInertiaB * Cross(rB, p);
+    a.v = a.v - (c.invMassA * impulse) * direction;
+    a.w -= c.invInertiaA * impulse * rA;
+    b.v = b.v + (c.invMassB * impulse) * direction;
+    b.w += c.invInertiaB * impulse * rB;
 }
 
 /// Applies the accumulated impulses (warm starting, once per sub-step).
 inline void WarmStart(const SoftContact& c, SoftBody& a, SoftBody& b)
 {
-    const Vec2 t = RightPerp(c.normal);
+    const Vec2 n = c.normal;
+    const Vec2 t = RightPerp(n);
     for (int i = 0; i < c.count; ++i)
     {
         const SoftPoint& p = c.points[i];
-        ApplyImpulse(c, a, b, p.rA, p.rB, p.normalImpulse * c.normal + p.tangentImpulse * t);
+        const Vec2 impulse = p.normalImpulse * n + p.tangentImpulse * t;
+        a.v = a.v - c.invMassA * impulse;
+        a.w -= c.invInertiaA * (p.normalImpulse * p.rnA + p.tangentImpulse * p.rtA);
+        b.v = b.v + c.invMassB * impulse;
+        b.w += c.invInertiaB * (p.normalImpulse * p.rnB + p.tangentImpulse * p.rtB);
     }
+}
+
+/// How far a body's turn q moves an anchor along the normal, from its lever arm's cross products rn, rt with the
+/// normal and the tangent: Dot(Rotate(q, r) - r, n) = q.s Cross(r, n) + (q.c - 1) Dot(r, n).
+inline double TurnAlongNormal(Rot q, double rn, double rt)
+{
+    return q.s * rn - (q.c - 1.0) * rt;
 }
 
 /// Separation of point p now: the one found at the start of the step plus its anchors' moves along the normal,
 /// each anchor moved with its body's centre and turned with its body.
 inline double SeparationNow(const SoftContact& c, const SoftPoint& p, const SoftBody& a, const SoftBody& b)
 {
-    const Vec2 turnA = Rotate(a.rotation, p.rA) - p.rA;
-    const Vec2 turnB = Rotate(b.rotation, p.rB) - p.rB;
-    return p.separation + Dot((b.position - a.position) + turnB - turnA, c.normal);
+    return p.separation + Dot(b.position - a.position, c.normal) + TurnAlongNormal(b.rotation, p.rnB, p.rtB) -
+           TurnAlongNormal(a.rotation, p.rnA, p.rtA);
 }
 
 /// The two normal impulses of a two-point contact (c.block) solved together, as in the velocity passes: the
@@ -104,8 +121,8 @@ inline void SolveNormalBlock(SoftContact& c, SoftBody& a, SoftBody& b, const dou
     const Vec2 n = c.normal;
     SoftPoint& p1 = c.points[0];
     SoftPoint& p2 = c.points[1];
-    const double vn1 = Dot(RelativeVelocity(a, b, p1.rA, p1.rB), n);
-    const double vn2 = Dot(RelativeVelocity(a, b, p2.rA, p2.rB), n);
+    const double vn1 = SpeedAlong(a, b, n, p1.rnA, p1.rnB);
+    const double vn2 = SpeedAlong(a, b, n, p2.rnA, p2.rnB);
     const double a1 = p1.normalImpulse;
     const double a2 = p2.normalImpulse;
     // The speeds after impulses x are K x + b; each case sets some of them to zero.
@@ -116,14 +133,14 @@ inline void SolveNormalBlock(SoftContact& c, SoftBody& a, SoftBody& b, const dou
     BlockImpulses(c, b1, b2, a1, a2, x1, x2);
     applied[0] = x1 - a1;
     applied[1] = x2 - a2;
-    ApplyImpulse(c, a, b, p1.rA, p1.rB, applied[0] * n);
-    ApplyImpulse(c, a, b, p2.rA, p2.rB, applied[1] * n);
+    ApplyImpulse(c, a, b, n, p1.rnA, p1.rnB, applied[0]);
+    ApplyImpulse(c, a, b, n, p2.rnA, p2.rnB, applied[1]);
     p1.normalImpulse = x1;
     p2.normalImpulse = x2;
 }
 
 /// Outline of one soft-step pass over a contact (Catto, "Solver2D", 2024, the soft step; Box2D v3's contact
-/// solver), with `useBias` the solve of a sub-step and without it the relax that follows its move:
+/// solver), with `UseBias` the solve of a sub-step and without it the relax that follows its move:
 ///  1. Normal, per point: the separation now (SeparationNow) follows the bodies through the sub-steps without the
 ///     narrowphase. A gap may close within the sub-step (the approach speed it allows is the gap over h); an
 ///     overlap is pushed out by the soft constraint (solve only: the relax has no push, so that the push's velocity
@@ -134,14 +151,14 @@ inline void SolveNormalBlock(SoftContact& c, SoftBody& a, SoftBody& b, const dou
 /// body by little. In the solve the two normal impulses of a two-point contact are solved one after the other (the
 /// soft constraint's leak is per point); in the relax, which is rigid, together (SolveNormalBlock), so that a
 /// symmetric landing stays symmetric. `pass` numbers the record.
-template <typename Recorder>
+template <bool UseBias, typename Recorder>
 void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& softness, double invH,
-                      double maxPushSpeed, bool useBias, int pass, Recorder& recorder)
+                      double maxPushSpeed, int pass, Recorder& recorder)
 {
     const Vec2 n = c.normal;
     const Vec2 t = RightPerp(n);
     ContactPointSolve record[2]{};
-    const bool together = !useBias && c.block;
+    const bool together = !UseBias && c.block;
     if (together)
     {
         double target[2] = {0.0, 0.0};
@@ -152,7 +169,7 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
             target[i] = s > 0.0 ? -s * invH : 0.0;
             record[i].pass = pass;
             record[i].point = i;
-            record[i].normalSpeed = Dot(RelativeVelocity(a, b, p.rA, p.rB), n);
+            record[i].normalSpeed = SpeedAlong(a, b, n, p.rnA, p.rnB);
         }
         double applied[2] = {0.0, 0.0};
         SolveNormalBlock(c, a, b, target, applied);
@@ -173,19 +190,19 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
         {
             bias = s * invH;
         }
-        else if (useBias)
+        else if (UseBias)
         {
             bias = std::max(softness.biasRate * s, -maxPushSpeed);
             massScale = softness.massScale;
             impulseScale = softness.impulseScale;
         }
-        const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), n);
+        const double vn = SpeedAlong(a, b, n, p.rnA, p.rnB);
         const double wanted = p.normalImpulse - p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
         const double next = std::max(wanted, 0.0);
         const double applied = next - p.normalImpulse;
         p.normalImpulse = next;
         p.maxNormalImpulse = std::max(p.maxNormalImpulse, next);
-        ApplyImpulse(c, a, b, p.rA, p.rB, applied * n);
+        ApplyImpulse(c, a, b, n, p.rnA, p.rnB, applied);
         record[i].pass = pass;
         record[i].point = i;
         record[i].normalSpeed = vn;
@@ -195,7 +212,7 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
     for (int i = 0; i < c.count; ++i)
     {
         SoftPoint& p = c.points[i];
-        const double vt = Dot(RelativeVelocity(a, b, p.rA, p.rB), t);
+        const double vt = SpeedAlong(a, b, t, p.rtA, p.rtB);
         const double wanted = p.tangentImpulse - p.tangentMass * vt;
         const double staticLimit = c.staticFriction * p.normalImpulse;
         const double slidingLimit = c.friction * p.normalImpulse;
@@ -207,7 +224,7 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
         }
         const double applied = next - p.tangentImpulse;
         p.tangentImpulse = next;
-        ApplyImpulse(c, a, b, p.rA, p.rB, applied * t);
+        ApplyImpulse(c, a, b, t, p.rtA, p.rtB, applied);
         record[i].tangentSpeed = vt;
         record[i].tangentImpulseWanted = wanted;
         record[i].staticLimit = staticLimit;
@@ -231,8 +248,8 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
 /// it back to the surface at restitution times u: (w - g h / 2)^2 = e^2 u^2 - 2 g s. Without gravity, w = e |v|.
 /// Points that do not bounce get 0 in `solved`, and every point's restitutionImpulse is cleared. Returns whether any
 /// point bounces.
-bool SoftBounceTargets(SolverContact& solved, const SoftContact& c, const SoftBody& a, const SoftBody& b,
-                       double pull, double h, double dt);
+bool SoftBounceTargets(SolverContact& solved, const SoftContact& c, const SoftBody& a, const SoftBody& b, double pull,
+                       double h, double dt);
 
 /// One pass of restitution after the soft step's sub-steps (after Box2D v3's): each point with a bounce target (in
 /// `solved`) gets the impulse that brings its normal speed to it, added to its accumulated impulse, which stays a

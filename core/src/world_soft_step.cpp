@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace satviz::detail
 {
@@ -35,12 +36,11 @@ bool Fixed(const SolverBody& s)
 
 } // namespace
 
-SoftContact MakeSoftContact(const SolverContact& c, int found, const SolverBody& sa, const SolverBody& sb)
+SoftContact MakeSoftContact(const SolverContact& c, const SolverBody& sa, const SolverBody& sb)
 {
     SoftContact s;
     s.a = c.a;
     s.b = c.b;
-    s.found = found;
     s.count = static_cast<uint8_t>(c.count);
     s.block = c.block;
     s.stiff = Fixed(sa) || Fixed(sb);
@@ -62,8 +62,10 @@ SoftContact MakeSoftContact(const SolverContact& c, int found, const SolverBody&
     {
         const SolverPoint& p = c.points[i];
         SoftPoint& q = s.points[i];
-        q.rA = p.rA;
-        q.rB = p.rB;
+        q.rnA = Cross(p.rA, c.normal);
+        q.rnB = Cross(p.rB, c.normal);
+        q.rtA = Cross(p.rA, RightPerp(c.normal));
+        q.rtB = Cross(p.rB, RightPerp(c.normal));
         q.separation = p.separation;
         q.normalMass = p.normalMass;
         q.tangentMass = p.tangentMass;
@@ -74,8 +76,8 @@ SoftContact MakeSoftContact(const SolverContact& c, int found, const SolverBody&
     return s;
 }
 
-bool SoftBounceTargets(SolverContact& solved, const SoftContact& c, const SoftBody& a, const SoftBody& b,
-                       double pull, double h, double dt)
+bool SoftBounceTargets(SolverContact& solved, const SoftContact& c, const SoftBody& a, const SoftBody& b, double pull,
+                       double h, double dt)
 {
     bool any = false;
     const double e = solved.material.restitution;
@@ -118,12 +120,12 @@ void ApplySoftRestitution(SolverContact& solved, SoftContact& c, SoftBody& a, So
         {
             continue;
         }
-        const double vn = Dot(RelativeVelocity(a, b, p.rA, p.rB), c.normal);
+        const double vn = SpeedAlong(a, b, c.normal, p.rnA, p.rnB);
         const double next = std::max(0.0, p.normalImpulse - p.normalMass * (vn - bounce));
         const double applied = next - p.normalImpulse;
         p.normalImpulse = next;
         solved.points[i].restitutionImpulse += applied;
-        ApplyImpulse(c, a, b, p.rA, p.rB, applied * c.normal);
+        ApplyImpulse(c, a, b, c.normal, p.rnA, p.rnB, applied);
     }
 }
 
@@ -152,8 +154,11 @@ void Stepper::SolveSoft()
         foundOrder[static_cast<size_t>(k)] = k;
         const int found = solveOrder[static_cast<size_t>(k)];
         const SolverContact& c = solverContacts[static_cast<size_t>(found)];
-        contacts[static_cast<size_t>(k)] = MakeSoftContact(c, found, solverBodies[c.a], solverBodies[c.b]);
+        contacts[static_cast<size_t>(k)] = MakeSoftContact(c, solverBodies[c.a], solverBodies[c.b]);
     }
+    const auto solvedAt = [&](int k) -> SolverContact& {
+        return solverContacts[static_cast<size_t>(solveOrder[static_cast<size_t>(k)])];
+    };
     std::vector<SoftBody>& states = memory.softBodies;
     states.assign(static_cast<size_t>(n), SoftBody{});
     std::vector<int>& awake = memory.softAwake;
@@ -177,7 +182,8 @@ void Stepper::SolveSoft()
     const Softness stiff = hertz > 0.0 ? MakeSoftness(2.0 * hertz, settings.contactDampingRatio, h) : Softness{};
     NullSolveRecorder quiet;
     TraceSolveRecorder loud{world.trace};
-    const auto pass = [&](bool useBias, int number) {
+    const auto pass = [&](auto useBias, int number) {
+        constexpr bool kUseBias = decltype(useBias)::value;
         for (SoftContact& c : contacts)
         {
             SoftBody& a = states[static_cast<size_t>(c.a)];
@@ -185,11 +191,11 @@ void Stepper::SolveSoft()
             const Softness& softness = c.stiff ? stiff : soft;
             if (c.traced)
             {
-                SolveSoftContact(c, a, b, softness, invH, settings.maxPushSpeed, useBias, number, loud);
+                SolveSoftContact<kUseBias>(c, a, b, softness, invH, settings.maxPushSpeed, number, loud);
             }
             else
             {
-                SolveSoftContact(c, a, b, softness, invH, settings.maxPushSpeed, useBias, number, quiet);
+                SolveSoftContact<kUseBias>(c, a, b, softness, invH, settings.maxPushSpeed, number, quiet);
             }
         }
     };
@@ -204,7 +210,7 @@ void Stepper::SolveSoft()
         {
             WarmStart(c, states[static_cast<size_t>(c.a)], states[static_cast<size_t>(c.b)]);
         }
-        pass(true, 2 * sub);
+        pass(std::true_type{}, 2 * sub);
         for (const int code : awake)
         {
             SoftBody& s = states[static_cast<size_t>(code >= 0 ? code : -1 - code)];
@@ -215,7 +221,7 @@ void Stepper::SolveSoft()
                 s.rotation = TurnBy(s.rotation, h * s.w);
             }
         }
-        pass(false, 2 * sub + 1);
+        pass(std::false_type{}, 2 * sub + 1);
     }
     // Restitution after the sub-steps: the bounce speed is the target of the velocity the step ends with. A few
     // passes over the bouncing contacts alone, so that contacts that land together (a plank on two supports) share
@@ -233,8 +239,8 @@ void Stepper::SolveSoft()
         const Vec2 gravityA = IsAwakeDynamic(bodies[c.a]) ? settings.gravity : Vec2{};
         const Vec2 gravityB = IsAwakeDynamic(bodies[c.b]) ? settings.gravity : Vec2{};
         const double pull = std::max(0.0, -Dot(gravityB - gravityA, c.normal));
-        if (SoftBounceTargets(solverContacts[static_cast<size_t>(c.found)], c, states[static_cast<size_t>(c.a)],
-                              states[static_cast<size_t>(c.b)], pull, h, dt))
+        if (SoftBounceTargets(solvedAt(k), c, states[static_cast<size_t>(c.a)], states[static_cast<size_t>(c.b)], pull,
+                              h, dt))
         {
             bouncing.push_back(k);
         }
@@ -244,14 +250,14 @@ void Stepper::SolveSoft()
         for (const int k : bouncing)
         {
             SoftContact& c = contacts[static_cast<size_t>(k)];
-            ApplySoftRestitution(solverContacts[static_cast<size_t>(c.found)], c, states[static_cast<size_t>(c.a)],
-                                 states[static_cast<size_t>(c.b)]);
+            ApplySoftRestitution(solvedAt(k), c, states[static_cast<size_t>(c.a)], states[static_cast<size_t>(c.b)]);
         }
     }
     // The impulses go back to the solver contacts (StoreImpulses keeps them for the next step's warm start).
-    for (const SoftContact& c : contacts)
+    for (int k = 0; k < m; ++k)
     {
-        SolverContact& solved = solverContacts[static_cast<size_t>(c.found)];
+        const SoftContact& c = contacts[static_cast<size_t>(k)];
+        SolverContact& solved = solvedAt(k);
         for (int i = 0; i < c.count; ++i)
         {
             solved.points[i].normalImpulse = c.points[i].normalImpulse;
