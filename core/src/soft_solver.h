@@ -64,22 +64,46 @@ struct SoftContact
 /// The soft record of solver contact `c`, whose bodies have the solver states sa and sb.
 SoftContact MakeSoftContact(const SolverContact& c, const SolverBody& sa, const SolverBody& sb);
 
+/// The velocities of a contact's two bodies while a visit works on them: read from their SoftBody records once and
+/// written back once, so that the visit's chain of impulses runs in registers.
+struct SoftPair
+{
+    Vec2 vA{};       ///< A's linear velocity
+    double wA = 0.0; ///< A's angular velocity
+    Vec2 vB{};       ///< B's linear velocity
+    double wB = 0.0; ///< B's angular velocity
+};
+
+/// The velocities of bodies a and b.
+inline SoftPair LoadPair(const SoftBody& a, const SoftBody& b)
+{
+    return {a.v, a.w, b.v, b.w};
+}
+
+/// Writes the velocities of `v` back to bodies a and b.
+inline void StorePair(const SoftPair& v, SoftBody& a, SoftBody& b)
+{
+    a.v = v.vA;
+    a.w = v.wA;
+    b.v = v.vB;
+    b.w = v.wB;
+}
+
 /// The speed of B's point against A's point along `direction` (the normal or the tangent), with rA and rB the lever
 /// arms' cross products with it.
-inline double SpeedAlong(const SoftBody& a, const SoftBody& b, Vec2 direction, double rA, double rB)
+inline double SpeedAlong(const SoftPair& v, Vec2 direction, double rA, double rB)
 {
-    return Dot(b.v - a.v, direction) + b.w * rB - a.w * rA;
+    return Dot(v.vB - v.vA, direction) + v.wB * rB - v.wA * rA;
 }
 
 /// Adds impulse `impulse` along `direction` (lever arms' cross products rA, rB with it): -impulse on A, +impulse on
 /// B.
-inline void ApplyImpulse(const SoftContact& c, SoftBody& a, SoftBody& b, Vec2 direction, double rA, double rB,
-                         double impulse)
+inline void ApplyImpulse(const SoftContact& c, SoftPair& v, Vec2 direction, double rA, double rB, double impulse)
 {
-    a.v = a.v - (c.invMassA * impulse) * direction;
-    a.w -= c.invInertiaA * impulse * rA;
-    b.v = b.v + (c.invMassB * impulse) * direction;
-    b.w += c.invInertiaB * impulse * rB;
+    v.vA = v.vA - (c.invMassA * impulse) * direction;
+    v.wA -= c.invInertiaA * impulse * rA;
+    v.vB = v.vB + (c.invMassB * impulse) * direction;
+    v.wB += c.invInertiaB * impulse * rB;
 }
 
 /// Applies the accumulated impulses (warm starting, once per sub-step).
@@ -87,15 +111,17 @@ inline void WarmStart(const SoftContact& c, SoftBody& a, SoftBody& b)
 {
     const Vec2 n = c.normal;
     const Vec2 t = RightPerp(n);
+    SoftPair v = LoadPair(a, b);
     for (int i = 0; i < c.count; ++i)
     {
         const SoftPoint& p = c.points[i];
         const Vec2 impulse = p.normalImpulse * n + p.tangentImpulse * t;
-        a.v = a.v - c.invMassA * impulse;
-        a.w -= c.invInertiaA * (p.normalImpulse * p.rnA + p.tangentImpulse * p.rtA);
-        b.v = b.v + c.invMassB * impulse;
-        b.w += c.invInertiaB * (p.normalImpulse * p.rnB + p.tangentImpulse * p.rtB);
+        v.vA = v.vA - c.invMassA * impulse;
+        v.wA -= c.invInertiaA * (p.normalImpulse * p.rnA + p.tangentImpulse * p.rtA);
+        v.vB = v.vB + c.invMassB * impulse;
+        v.wB += c.invInertiaB * (p.normalImpulse * p.rnB + p.tangentImpulse * p.rtB);
     }
+    StorePair(v, a, b);
 }
 
 /// How far a body's turn q moves an anchor along the normal, from its lever arm's cross products rn, rt with the
@@ -107,22 +133,22 @@ inline double TurnAlongNormal(Rot q, double rn, double rt)
 
 /// Separation of point p now: the one found at the start of the step plus its anchors' moves along the normal,
 /// each anchor moved with its body's centre and turned with its body.
-inline double SeparationNow(const SoftContact& c, const SoftPoint& p, const SoftBody& a, const SoftBody& b)
+/// `moved`: how far B's centre moved from A's along the normal, Dot(b.position - a.position, c.normal).
+inline double SeparationNow(const SoftPoint& p, double moved, Rot turnA, Rot turnB)
 {
-    return p.separation + Dot(b.position - a.position, c.normal) + TurnAlongNormal(b.rotation, p.rnB, p.rtB) -
-           TurnAlongNormal(a.rotation, p.rnA, p.rtA);
+    return p.separation + moved + TurnAlongNormal(turnB, p.rnB, p.rtB) - TurnAlongNormal(turnA, p.rnA, p.rtA);
 }
 
 /// The two normal impulses of a two-point contact (c.block) solved together, as in the velocity passes: the
 /// accumulated impulses x >= 0 that bring the points' normal speeds to `target` (or beyond it with x = 0), a 2x2
 /// linear complementarity problem solved by trying its four cases in turn. Returns the applied increments.
-inline void SolveNormalBlock(SoftContact& c, SoftBody& a, SoftBody& b, const double target[2], double applied[2])
+inline void SolveNormalBlock(SoftContact& c, SoftPair& v, const double target[2], double applied[2])
 {
     const Vec2 n = c.normal;
     SoftPoint& p1 = c.points[0];
     SoftPoint& p2 = c.points[1];
-    const double vn1 = SpeedAlong(a, b, n, p1.rnA, p1.rnB);
-    const double vn2 = SpeedAlong(a, b, n, p2.rnA, p2.rnB);
+    const double vn1 = SpeedAlong(v, n, p1.rnA, p1.rnB);
+    const double vn2 = SpeedAlong(v, n, p2.rnA, p2.rnB);
     const double a1 = p1.normalImpulse;
     const double a2 = p2.normalImpulse;
     // The speeds after impulses x are K x + b; each case sets some of them to zero.
@@ -133,8 +159,8 @@ inline void SolveNormalBlock(SoftContact& c, SoftBody& a, SoftBody& b, const dou
     BlockImpulses(c, b1, b2, a1, a2, x1, x2);
     applied[0] = x1 - a1;
     applied[1] = x2 - a2;
-    ApplyImpulse(c, a, b, n, p1.rnA, p1.rnB, applied[0]);
-    ApplyImpulse(c, a, b, n, p2.rnA, p2.rnB, applied[1]);
+    ApplyImpulse(c, v, n, p1.rnA, p1.rnB, applied[0]);
+    ApplyImpulse(c, v, n, p2.rnA, p2.rnB, applied[1]);
     p1.normalImpulse = x1;
     p2.normalImpulse = x2;
 }
@@ -157,6 +183,10 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
 {
     const Vec2 n = c.normal;
     const Vec2 t = RightPerp(n);
+    SoftPair v = LoadPair(a, b);
+    const double moved = Dot(b.position - a.position, n);
+    const Rot turnA = a.rotation;
+    const Rot turnB = b.rotation;
     ContactPointSolve record[2]{};
     const bool together = !UseBias && c.block;
     if (together)
@@ -165,14 +195,14 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
         for (int i = 0; i < 2; ++i)
         {
             const SoftPoint& p = c.points[i];
-            const double s = SeparationNow(c, p, a, b);
+            const double s = SeparationNow(p, moved, turnA, turnB);
             target[i] = s > 0.0 ? -s * invH : 0.0;
             record[i].pass = pass;
             record[i].point = i;
-            record[i].normalSpeed = SpeedAlong(a, b, n, p.rnA, p.rnB);
+            record[i].normalSpeed = SpeedAlong(v, n, p.rnA, p.rnB);
         }
         double applied[2] = {0.0, 0.0};
-        SolveNormalBlock(c, a, b, target, applied);
+        SolveNormalBlock(c, v, target, applied);
         for (int i = 0; i < 2; ++i)
         {
             SoftPoint& p = c.points[i];
@@ -184,7 +214,7 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
     for (int i = 0; i < c.count && !together; ++i)
     {
         SoftPoint& p = c.points[i];
-        const double s = SeparationNow(c, p, a, b);
+        const double s = SeparationNow(p, moved, turnA, turnB);
         double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
         if (s > 0.0)
         {
@@ -196,13 +226,13 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
             massScale = softness.massScale;
             impulseScale = softness.impulseScale;
         }
-        const double vn = SpeedAlong(a, b, n, p.rnA, p.rnB);
+        const double vn = SpeedAlong(v, n, p.rnA, p.rnB);
         const double wanted = p.normalImpulse - p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
         const double next = std::max(wanted, 0.0);
         const double applied = next - p.normalImpulse;
         p.normalImpulse = next;
         p.maxNormalImpulse = std::max(p.maxNormalImpulse, next);
-        ApplyImpulse(c, a, b, n, p.rnA, p.rnB, applied);
+        ApplyImpulse(c, v, n, p.rnA, p.rnB, applied);
         record[i].pass = pass;
         record[i].point = i;
         record[i].normalSpeed = vn;
@@ -212,7 +242,7 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
     for (int i = 0; i < c.count; ++i)
     {
         SoftPoint& p = c.points[i];
-        const double vt = SpeedAlong(a, b, t, p.rtA, p.rtB);
+        const double vt = SpeedAlong(v, t, p.rtA, p.rtB);
         const double wanted = p.tangentImpulse - p.tangentMass * vt;
         const double staticLimit = c.staticFriction * p.normalImpulse;
         const double slidingLimit = c.friction * p.normalImpulse;
@@ -224,7 +254,7 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
         }
         const double applied = next - p.tangentImpulse;
         p.tangentImpulse = next;
-        ApplyImpulse(c, a, b, t, p.rtA, p.rtB, applied);
+        ApplyImpulse(c, v, t, p.rtA, p.rtB, applied);
         record[i].tangentSpeed = vt;
         record[i].tangentImpulseWanted = wanted;
         record[i].staticLimit = staticLimit;
@@ -232,6 +262,7 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
         record[i].tangentImpulse = next;
         record[i].stuck = c.stuck[i];
     }
+    StorePair(v, a, b);
     for (int i = 0; i < c.count; ++i)
     {
         recorder.Pass(record[i]);

@@ -94,7 +94,7 @@ bool SoftBounceTargets(SolverContact& solved, const SoftContact& c, const SoftBo
         const double d = p.separation < 0.0 ? std::min(-p.separation, -v * dt) : -p.separation;
         const double down = v - 0.5 * pull * h;
         const double u2 = std::max(0.0, down * down - 2.0 * pull * d);
-        const double s = SeparationNow(c, c.points[i], a, b);
+        const double s = SeparationNow(c.points[i], Dot(b.position - a.position, c.normal), a.rotation, b.rotation);
         p.bounce = 0.5 * pull * h + std::sqrt(std::max(0.0, e * e * u2 - 2.0 * pull * s));
         any = true;
     }
@@ -107,7 +107,9 @@ void ApplySoftRestitution(SolverContact& solved, SoftContact& c, SoftBody& a, So
     {
         const double target[2] = {solved.points[0].bounce, solved.points[1].bounce};
         double applied[2] = {0.0, 0.0};
-        SolveNormalBlock(c, a, b, target, applied);
+        SoftPair v = LoadPair(a, b);
+        SolveNormalBlock(c, v, target, applied);
+        StorePair(v, a, b);
         solved.points[0].restitutionImpulse += applied[0];
         solved.points[1].restitutionImpulse += applied[1];
         return;
@@ -120,12 +122,14 @@ void ApplySoftRestitution(SolverContact& solved, SoftContact& c, SoftBody& a, So
         {
             continue;
         }
-        const double vn = SpeedAlong(a, b, c.normal, p.rnA, p.rnB);
+        SoftPair v = LoadPair(a, b);
+        const double vn = SpeedAlong(v, c.normal, p.rnA, p.rnB);
         const double next = std::max(0.0, p.normalImpulse - p.normalMass * (vn - bounce));
         const double applied = next - p.normalImpulse;
         p.normalImpulse = next;
         solved.points[i].restitutionImpulse += applied;
-        ApplyImpulse(c, a, b, c.normal, p.rnA, p.rnB, applied);
+        ApplyImpulse(c, v, c.normal, p.rnA, p.rnB, applied);
+        StorePair(v, a, b);
     }
 }
 
