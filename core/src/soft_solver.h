@@ -61,8 +61,9 @@ struct SoftContact
     SoftPoint points[2]{};                    ///< the points
 };
 
-/// The soft record of solver contact `c`, whose bodies have the solver states sa and sb.
-SoftContact MakeSoftContact(const SolverContact& c, const SolverBody& sa, const SolverBody& sb);
+/// Fills `s` with the soft record of solver contact `c`, whose bodies have the solver states sa and sb (the points
+/// beyond c.count are left as they were: nothing reads them).
+void MakeSoftContact(SoftContact& s, const SolverContact& c, const SolverBody& sa, const SolverBody& sb);
 
 /// The velocities of a contact's two bodies while a visit works on them: read from their SoftBody records once and
 /// written back once, so that the visit's chain of impulses runs in registers.

@@ -36,9 +36,8 @@ bool Fixed(const SolverBody& s)
 
 } // namespace
 
-SoftContact MakeSoftContact(const SolverContact& c, const SolverBody& sa, const SolverBody& sb)
+void MakeSoftContact(SoftContact& s, const SolverContact& c, const SolverBody& sa, const SolverBody& sb)
 {
-    SoftContact s;
     s.a = c.a;
     s.b = c.b;
     s.count = static_cast<uint8_t>(c.count);
@@ -58,6 +57,7 @@ SoftContact MakeSoftContact(const SolverContact& c, const SolverBody& sa, const 
     s.m11 = c.m11;
     s.m12 = c.m12;
     s.m22 = c.m22;
+    s.bounces = false;
     for (int i = 0; i < c.count; ++i)
     {
         const SolverPoint& p = c.points[i];
@@ -71,9 +71,9 @@ SoftContact MakeSoftContact(const SolverContact& c, const SolverBody& sa, const 
         q.tangentMass = p.tangentMass;
         q.normalImpulse = p.normalImpulse;
         q.tangentImpulse = p.tangentImpulse;
+        q.maxNormalImpulse = 0.0;
         s.bounces = s.bounces || p.bounce > 0.0;
     }
-    return s;
 }
 
 bool SoftBounceTargets(SolverContact& solved, const SoftContact& c, const SoftBody& a, const SoftBody& b, double pull,
@@ -158,7 +158,7 @@ void Stepper::SolveSoft()
         foundOrder[static_cast<size_t>(k)] = k;
         const int found = solveOrder[static_cast<size_t>(k)];
         const SolverContact& c = solverContacts[static_cast<size_t>(found)];
-        contacts[static_cast<size_t>(k)] = MakeSoftContact(c, solverBodies[c.a], solverBodies[c.b]);
+        MakeSoftContact(contacts[static_cast<size_t>(k)], c, solverBodies[c.a], solverBodies[c.b]);
     }
     const auto solvedAt = [&](int k) -> SolverContact& {
         return solverContacts[static_cast<size_t>(solveOrder[static_cast<size_t>(k)])];
