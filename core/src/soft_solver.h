@@ -57,7 +57,6 @@ struct SoftContact
     double invMassA = 0.0, invInertiaA = 0.0; ///< A's inverse mass and inertia (0 for static and sleeping bodies)
     double invMassB = 0.0, invInertiaB = 0.0; ///< B's
     double k11 = 0.0, k12 = 0.0, k22 = 0.0;   ///< the 2x2 normal mass matrix K (symmetric)
-    double m11 = 0.0, m12 = 0.0, m22 = 0.0;   ///< its inverse
     SoftPoint points[2]{};                    ///< the points
 };
 
@@ -140,6 +139,17 @@ inline double SeparationNow(const SoftPoint& p, double moved, Rot turnA, Rot tur
     return p.separation + moved + TurnAlongNormal(turnB, p.rnB, p.rtB) - TurnAlongNormal(turnA, p.rnA, p.rtA);
 }
 
+/// What BlockImpulses reads of a two-point contact: K's inverse, K's off-diagonal and the points' effective masses.
+struct BlockMasses
+{
+    double m11, m12, m22; ///< K's inverse
+    double k12;           ///< K's off-diagonal
+    struct
+    {
+        double normalMass; ///< 1 / K's diagonal
+    } points[2];           ///< per point
+};
+
 /// The two normal impulses of a two-point contact (c.block) solved together, as in the velocity passes: the
 /// accumulated impulses x >= 0 that bring the points' normal speeds to `target` (or beyond it with x = 0), a 2x2
 /// linear complementarity problem solved by trying its four cases in turn. Returns the applied increments.
@@ -155,9 +165,13 @@ inline void SolveNormalBlock(SoftContact& c, SoftPair& v, const double target[2]
     // The speeds after impulses x are K x + b; each case sets some of them to zero.
     const double b1 = (vn1 - target[0]) - (c.k11 * a1 + c.k12 * a2);
     const double b2 = (vn2 - target[1]) - (c.k12 * a1 + c.k22 * a2);
+    // K's inverse is taken here, as PrepareContact takes it, rather than kept in the record: the passes read every
+    // record some twelve times a step, this only the relax's two-point contacts.
+    const double inv = 1.0 / (c.k11 * c.k22 - c.k12 * c.k12);
+    const BlockMasses masses{inv * c.k22, -inv * c.k12, inv * c.k11, c.k12, {{p1.normalMass}, {p2.normalMass}}};
     double x1 = 0.0;
     double x2 = 0.0;
-    BlockImpulses(c, b1, b2, a1, a2, x1, x2);
+    BlockImpulses(masses, b1, b2, a1, a2, x1, x2);
     applied[0] = x1 - a1;
     applied[1] = x2 - a2;
     ApplyImpulse(c, v, n, p1.rnA, p1.rnB, applied[0]);

@@ -54,9 +54,6 @@ void MakeSoftContact(SoftContact& s, const SolverContact& c, const SolverBody& s
     s.k11 = c.k11;
     s.k12 = c.k12;
     s.k22 = c.k22;
-    s.m11 = c.m11;
-    s.m12 = c.m12;
-    s.m22 = c.m22;
     s.bounces = false;
     for (int i = 0; i < c.count; ++i)
     {
