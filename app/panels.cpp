@@ -578,8 +578,11 @@ void Panels::SidePanel()
     const float top = ImGui::GetFrameHeight();
     ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x - kPanelWidth, viewport->Pos.y + top));
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, viewport->Size.y - top - StatusHeight()));
+    // Without a title or a resize grip, but with its scroll bar: the Numbers that run past the bottom look cut
+    // without one, and nothing else says that the panel scrolls.
     ImGui::Begin("##panel", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus | ClearedBackground());
     ClearBackground();
     const Document& document = m_app.GetDocument();

@@ -3691,6 +3691,20 @@ TEST_CASE("A status message of two lines has them spaced as the panels' lines, i
     CHECK(bar->Pos.y + bar->Size.y <= ImGui::GetMainViewport()->Size.y + 0.5f);
 }
 
+TEST_CASE("The side panel shows a scroll bar when its sections run past its bottom", "[app]")
+{
+    // overlapping_boxes's Numbers run past the bottom of an 800-pixel window ("contact c2" half shown), and the
+    // panel, which scrolls with the wheel, showed no bar to say so.
+    Harness h(ScratchCopy("overlapping_boxes.json").string());
+    h.Frames(3);
+    ImGuiWindow* panel = ImGui::FindWindowByName("##panel");
+    REQUIRE(panel != nullptr);
+    REQUIRE(panel->ContentSize.y > panel->InnerRect.GetHeight()); // the case at hand: it runs past the bottom
+    CHECK(panel->ScrollbarY);
+    // Its lines wrap inside the bar: nothing laid out under it.
+    CHECK(panel->ContentSize.x <= panel->ContentRegionRect.GetWidth() + 0.5f);
+}
+
 TEST_CASE("A Numbers row whose label is wider than the side panel wraps between words", "[app]")
 {
     // circle_corner's verdict names its deciding axis "deciding axis 3, the axis from box's vertex 2 to ball's
