@@ -1545,7 +1545,16 @@ void Panels::LessonWindow()
             }
             if (ImGui::SmallButton(name.c_str()))
             {
-                m_app.RequestOpen(scene);
+                // The lesson's first scene opens where opening the lesson shows it, at the figure its text begins
+                // with; the others as their views ask.
+                if (scene == lesson.scenes.front())
+                {
+                    m_app.RequestOpen(scene, lesson.firstStep, lesson.firstFaces);
+                }
+                else
+                {
+                    m_app.RequestOpen(scene);
+                }
             }
         }
     }

@@ -3705,6 +3705,30 @@ TEST_CASE("The side panel shows a scroll bar when its sections run past its bott
     CHECK(panel->ContentSize.x <= panel->ContentRegionRect.GetWidth() + 0.5f);
 }
 
+TEST_CASE("A lesson's first scene opens at the same step from its button as when the lesson opens", "[app]")
+{
+    // --lesson 4 opened overlapping_boxes at axis 1, the figure lesson 4 begins with, and its button in the
+    // Scenes row at the verdict.
+    Harness h(ScratchCopy("l04_wrong_way.json").string());
+    const int lesson4 = 3;
+    REQUIRE(h.app->OpenLesson(lesson4));
+    REQUIRE(h.AwaitStudy());
+    h.Frames(2);
+    const Lesson& lesson = h.app->Lessons()[lesson4];
+    REQUIRE(fs::path(lesson.scenes.front()).stem() == "overlapping_boxes");
+    REQUIRE(lesson.firstStep == 0);
+    REQUIRE(h.View().Step() == lesson.firstStep);
+    h.app->ShowStep(h.View().VerdictStep());
+    REQUIRE(h.ClickButton("Lesson###lesson", "l04_wrong_way"));
+    REQUIRE(h.AwaitStudy());
+    REQUIRE(fs::path(h.Doc().File()).stem() == "l04_wrong_way");
+    REQUIRE(h.ClickButton("Lesson###lesson", "overlapping_boxes"));
+    REQUIRE(h.AwaitStudy());
+    h.Frames(2);
+    CHECK(fs::path(h.Doc().File()).stem() == "overlapping_boxes");
+    CHECK(h.View().Step() == lesson.firstStep);
+}
+
 TEST_CASE("A Numbers row whose label is wider than the side panel wraps between words", "[app]")
 {
     // circle_corner's verdict names its deciding axis "deciding axis 3, the axis from box's vertex 2 to ball's
