@@ -579,11 +579,15 @@ void Panels::SidePanel()
     ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x - kPanelWidth, viewport->Pos.y + top));
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, viewport->Size.y - top - StatusHeight()));
     // Without a title or a resize grip, but with its scroll bar: the Numbers that run past the bottom look cut
-    // without one, and nothing else says that the panel scrolls.
+    // without one, and nothing else says that the panel scrolls. Always there, narrow, so that the sections keep
+    // their width (the axes list's rows, which cannot wrap, are fitted to it).
+    ImGui::PushStyleVar(ImGuiStyleVar_ScrollbarSize, kPanelScrollbar);
     ImGui::Begin("##panel", nullptr,
                  ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoBringToFrontOnFocus | ClearedBackground());
+                     ImGuiWindowFlags_AlwaysVerticalScrollbar | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                     ClearedBackground());
+    ImGui::PopStyleVar();
     ClearBackground();
     const Document& document = m_app.GetDocument();
     const std::string title = (document.File().empty() ? std::string("untitled")
@@ -602,7 +606,17 @@ void Panels::SidePanel()
         LayerToggles();
     }
     SimulationControls();
-    if (m_app.GetViewer().TestsPair())
+    // l01_legend draws the legend alone: its two bodies are not drawn, and a test of them would be about nothing
+    // the student sees.
+    const LayerMask layers = m_app.GetViewer().Choices().layers;
+    const bool legendAlone = (layers & kLayerLegend) != 0 && (layers & kLayerShapes) == 0;
+    if (legendAlone && m_app.GetViewer().Setup().Ok())
+    {
+        WrappedText("This figure draws the legend alone, the key to the figures' colours and marks: its bodies are "
+                    "not drawn, so no pair is tested here. Turn on the shapes layer (Layers, above) to see them and "
+                    "their test.");
+    }
+    else if (m_app.GetViewer().TestsPair())
     {
         StepControls();
         if (m_app.GetViewer().ShowsSatNumbers())
@@ -1073,8 +1087,8 @@ void Panels::SimulationControls()
     {
         // Stepped by the format's defaults, a whole time unit a step, a figure's overlapping bodies are thrown
         // apart in one step and can fall asleep still inside each other: not a state to show a student.
-        WrappedText("This scene has no world: it pictures the test, and its bodies do not move. A world block says "
-                    "how long a step is and what the gravity is; add one to step the scene.");
+        WrappedText("This scene has no world block, so its bodies stay where they are: a world says how long a step "
+                    "is and what the gravity is. Add one to step the scene.");
         if (ImGui::Button("Add a world"))
         {
             m_app.AddWorld();

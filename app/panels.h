@@ -30,8 +30,11 @@ constexpr float kStatusPadding = 8.0f;
 /// Padding above and below the status bar's lines, in pixels.
 constexpr float kStatusPaddingY = 3.0f;
 
-/// Width of the side panel on the right of the canvas, in pixels.
-constexpr float kPanelWidth = 380.0f;
+/// Width of the side panel's scroll bar, in pixels: kept beside its sections whether they overflow or not, so
+/// that their width does not change when they do.
+constexpr float kPanelScrollbar = 8.0f;
+/// Width of the side panel on the right of the canvas, in pixels: 364 of sections, their padding and the scroll bar.
+constexpr float kPanelWidth = 380.0f + kPanelScrollbar;
 
 /// The smallest canvas the app leaves beside its panels, in pixels: on one this size every face a figure's sentences
 /// name still has its name (the label test of the lessons' figures draws them so).

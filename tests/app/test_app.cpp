@@ -3459,7 +3459,9 @@ TEST_CASE("Every row of the axes list of a lesson scene fits the list's width", 
             h.Frames(2);
             h.AwaitStudy();
             const Viewer& viewer = h.View();
-            if (!viewer.Setup().Ok() || viewer.Setup().figure.kind != FigureKind::Pair)
+            // The legend alone (l01_legend) has no list: its bodies are not drawn.
+            if (!viewer.Setup().Ok() || viewer.Setup().figure.kind != FigureKind::Pair ||
+                (viewer.Choices().layers & kLayerShapes) == 0)
             {
                 continue;
             }
@@ -3693,9 +3695,10 @@ TEST_CASE("A status message of two lines has them spaced as the panels' lines, i
 
 TEST_CASE("The side panel shows a scroll bar when its sections run past its bottom", "[app]")
 {
-    // overlapping_boxes's Numbers run past the bottom of an 800-pixel window ("contact c2" half shown), and the
+    // overlapping_boxes's Numbers run past the bottom of a 700-pixel window ("contact c2" half shown), and the
     // panel, which scrolls with the wheel, showed no bar to say so.
     Harness h(ScratchCopy("overlapping_boxes.json").string());
+    ImGui::GetIO().DisplaySize = ImVec2(1280.0f, 700.0f);
     h.Frames(3);
     ImGuiWindow* panel = ImGui::FindWindowByName("##panel");
     REQUIRE(panel != nullptr);
@@ -3727,6 +3730,18 @@ TEST_CASE("A lesson's first scene opens at the same step from its button as when
     h.Frames(2);
     CHECK(fs::path(h.Doc().File()).stem() == "overlapping_boxes");
     CHECK(h.View().Step() == lesson.firstStep);
+}
+
+TEST_CASE("The legend alone has no steps of a pair test, until the shapes layer shows its bodies", "[app]")
+{
+    // l01_legend draws the legend alone; the panel stepped a test of its two undrawn bodies ("Verdict: axis 2
+    // separates the shapes: B lies 2.00 beyond A's edge 1").
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/l01_legend.json");
+    h.Frames(2);
+    CHECK_FALSE(h.ClickButton("##panel", "Verdict"));
+    h.app->SetLayers(h.View().Choices().layers | kLayerShapes);
+    h.Frames(2);
+    CHECK(h.ClickButton("##panel", "Verdict"));
 }
 
 TEST_CASE("A Numbers row whose label is wider than the side panel wraps between words", "[app]")
