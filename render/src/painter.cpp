@@ -613,7 +613,7 @@ class Painter
             }
         }
         m_labels.Flush(WithAlpha(palette::kBackground, 0.72f));
-        if (m_hasMtvArrow)
+        if (m_hasMtvArrow || m_hasPitfallArrow)
         {
             MtvArrow();
         }
@@ -2055,6 +2055,9 @@ class Painter
         Manifold m;
         if (!ShownMtv(m))
         {
+            // Apart, where a pitfall says they collide (pitfall_one_shape): its wrong push, dashed, from B's centre.
+            m_canvas.BeginGroup("mtv");
+            PitfallPush(At(ShapeCenter(m_bodyB.shape, m_bodyB.Xf())), nullptr);
             return;
         }
         m_canvas.BeginGroup("mtv");
@@ -2122,9 +2125,18 @@ class Painter
         }
         m_labels.AlsoBeside(std::move(shaft));
         // A pitfall's push beside the right one, dashed, so that the two can be compared.
+        PitfallPush(from, &m);
+    }
+
+    // A pitfall's wrong push from screen point `from` (B's centre, or beside the MTV's arrow when the right answer
+    // `right` is a collision; null when it is apart), dashed, with B's outline where it leaves B and the depth B is
+    // left at; MtvArrow draws the arrow over the labels.
+    void PitfallPush(ScreenPoint from, const Manifold* right)
+    {
         const PitfallResult& pitfall = m_study.pitfall;
         if (pitfall.ran && pitfall.overlap && !m_study.sweep && pitfall.depth > 0.0)
         {
+            const Vec2 c = ShapeCenter(m_bodyB.shape, m_bodyB.Xf());
             m_pitfallFrom = from;
             m_pitfallTo = At(c + pitfall.depth * pitfall.normal);
             if (std::hypot(m_pitfallTo.x - from.x, m_pitfallTo.y - from.y) < 20.0f)
@@ -2134,6 +2146,18 @@ class Painter
             }
             m_hasPitfallArrow = true;
             m_used.push_back(LegendMark::PitfallPush);
+            // Apart, the push itself is the mistake (a collision reported, and a push for it): where it leaves B
+            // would only crowd B's own marks.
+            if (right == nullptr)
+            {
+                m_labels.ReserveLine(from, m_pitfallTo, 2.0f);
+                m_labels.Reserve(
+                    {m_pitfallTo.x - 10.0f, m_pitfallTo.y - 10.0f, m_pitfallTo.x + 10.0f, m_pitfallTo.y + 10.0f});
+                m_labels.Place(m_pitfallTo, "pitfall " + FormatNumber(pitfall.depth), TextStyle::Label,
+                               palette::kInk, static_cast<float>(pitfall.normal.x),
+                               static_cast<float>(-pitfall.normal.y), 6.0f, LabelRank::Verdict);
+                return;
+            }
             // Where the pitfall's push leaves B, and how deep B still lies in A there (or lies now, pushed the
             // wrong way): the wrong depth the mistake is about, beside the MTV's outline that just clears A.
             Transform pushed = m_bodyB.Xf();
@@ -2156,11 +2180,11 @@ class Painter
                 {
                     inside = ShapeCenter(m_bodyB.shape, pushed);
                 }
-                m_labels.Place(
-                    At(inside),
-                    "after the pitfall's push: " + std::string(Dot(pitfall.normal, m.normal) >= 0.0 ? "still " : "") +
-                        FormatNumber(left.depth) + " deep",
-                    TextStyle::Label, palette::kInk, 1.0f, 1.0f, 14.0f, LabelRank::Verdict);
+                const bool still = right != nullptr && Dot(pitfall.normal, right->normal) >= 0.0;
+                m_labels.Place(At(inside),
+                               "after the pitfall's push: " + std::string(still ? "still " : "") +
+                                   FormatNumber(left.depth) + " deep",
+                               TextStyle::Label, palette::kInk, 1.0f, 1.0f, 14.0f, LabelRank::Verdict);
             }
             m_labels.ReserveLine(from, m_pitfallTo, 2.0f);
             m_labels.Reserve({m_pitfallTo.x - 10.0f, m_pitfallTo.y - 10.0f, m_pitfallTo.x + 10.0f, m_pitfallTo.y + 10.0f});
@@ -2173,7 +2197,10 @@ class Painter
     void MtvArrow()
     {
         m_canvas.BeginGroup("mtv");
-        Arrow(m_canvas, m_mtvFrom, m_mtvTo, palette::kResult, 3.0f, 12.0f);
+        if (m_hasMtvArrow)
+        {
+            Arrow(m_canvas, m_mtvFrom, m_mtvTo, palette::kResult, 3.0f, 12.0f);
+        }
         if (m_hasPitfallArrow)
         {
             const ScreenPoint from = m_pitfallFrom;

@@ -60,6 +60,17 @@ TEST_CASE("Each pitfall scene shows its mistake going wrong beside the right ans
         REQUIRE(setup.study.pitfall.ran);
         CHECK(setup.study.pitfall.overlap);
         CHECK_FALSE(setup.study.textbookResult.overlap);
+        // The right answer is apart; the figure draws the mistake's push all the same (it was only in the
+        // sentence): the box's axes alone, x and y, give the smaller of the two overlaps along them.
+        FigureSetup drawn = SetUpFigure(scene, {});
+        const RecordingCanvas canvas = Paint(scene, drawn, drawn.study.VerdictStep(), kAllLayers);
+        const auto [bx0, bx1] = Project(scene.bodies[0], {1.0, 0.0});
+        const auto [by0, by1] = Project(scene.bodies[0], {0.0, 1.0});
+        const auto [dx0, dx1] = Project(scene.bodies[1], {1.0, 0.0});
+        const auto [dy0, dy1] = Project(scene.bodies[1], {0.0, 1.0});
+        const double push = std::min(std::min(bx1, dx1) - std::max(bx0, dx0), std::min(by1, dy1) - std::max(by0, dy0));
+        CHECK(std::abs(NumberAfter(canvas, "labels", "pitfall ") - push) < 0.0051);
+        CHECK_FALSE(canvas.InGroup("mtv").empty());
     }
     {
         const Scene scene = Load(dir + "pitfall_tunnel.json");
