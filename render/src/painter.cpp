@@ -2904,6 +2904,20 @@ class Painter
                         }
                     }
                 }
+                // A body that runs off the picture is named beside the part in sight (a tall wall whose middle lies
+                // below the image), not on a leader line to a middle no one sees.
+                if (way.x != 0.0f && (from.y < m_bounds.minY || from.y > m_bounds.maxY))
+                {
+                    const float top = std::max(At(high).y, m_bounds.minY);
+                    const float bottom = std::min(At(low).y, m_bounds.maxY);
+                    from.y = 0.5f * (top + bottom);
+                }
+                else if (way.y != 0.0f && (from.x < m_bounds.minX || from.x > m_bounds.maxX))
+                {
+                    const float leftmost = std::max(At(left).x, m_bounds.minX);
+                    const float rightmost = std::min(At(right).x, m_bounds.maxX);
+                    from.x = 0.5f * (leftmost + rightmost);
+                }
                 m_labels.PlaceOutside(OutlineOf(1 - s), from, body.name, TextStyle::Heading, InkOf(s), way.x, way.y,
                                      6.0f, LabelRank::Name);
             }

@@ -1895,6 +1895,29 @@ std::vector<std::string> LeadersAcrossBars(const RecordingCanvas& canvas)
     return problems;
 }
 
+// A leader line that leaves the image leads to nothing the reader sees: it starts at a mark in sight.
+std::vector<std::string> LeadersOutOfImage(const RecordingCanvas& canvas, int width, int height)
+{
+    std::vector<std::string> problems;
+    for (const DrawCommand* leader : canvas.InGroup("labels"))
+    {
+        if (leader->kind != DrawCommand::Kind::Segment)
+        {
+            continue;
+        }
+        for (const ScreenPoint& p : leader->points)
+        {
+            if (p.x < 0.0f || p.y < 0.0f || p.x > static_cast<float>(width) || p.y > static_cast<float>(height))
+            {
+                problems.push_back("a leader line ends out of the image, at (" + std::to_string(static_cast<int>(p.x)) +
+                                   ", " + std::to_string(static_cast<int>(p.y)) + ")");
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -1908,6 +1931,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
 {
     std::vector<std::string> problems = HiddenTexts(canvas, setup.figure.view.width, setup.figure.view.height);
     for (std::string& p : LabelsOnLines(canvas))
+    {
+        problems.push_back(std::move(p));
+    }
+    for (std::string& p : LeadersOutOfImage(canvas, setup.figure.view.width, setup.figure.view.height))
     {
         problems.push_back(std::move(p));
     }
