@@ -2474,7 +2474,16 @@ class Painter
             {
                 free = offDots;
             }
-            near = !Covered(foot, other, 0.0f) || free.empty() ? foot : free.front();
+            // Nor from the very end of the face, at its corner: a leader line there names the corner. When the rest
+            // of the face lies in the other body (a face sunk in a large body), it crosses the other body's outline
+            // to the face instead.
+            const auto atEnd = [&](ScreenPoint p) {
+                return std::min(std::hypot(p.x - shown1.x, p.y - shown1.y), std::hypot(p.x - shown2.x, p.y - shown2.y)) <
+                       kClearOfDot;
+            };
+            const bool atEnds = std::all_of(free.begin(), free.end(), atEnd);
+            free.erase(std::remove_if(free.begin(), free.end(), atEnd), free.end());
+            near = !Covered(foot, other, 0.0f) || free.empty() || atEnds ? foot : free.front();
         }
         m_labels.PlaceOutside(other, near, "reference face", TextStyle::Label, InkOf(referenceShape),
                              static_cast<float>(-n.x), static_cast<float>(n.y), 10.0f, LabelRank::Verdict);

@@ -1131,6 +1131,56 @@ std::vector<std::string> ReferenceFaceFar(const RecordingCanvas& canvas)
     return problems;
 }
 
+// A reference face's name on a leader line that starts at a corner of the pair (the very end of the face) rather
+// than on the face: the line names the corner, an unnumbered one where a vertex number is left out.
+std::vector<std::string> ReferenceFaceAtCorner(const RecordingCanvas& canvas, const Scene& scene,
+                                               const PairStudy& study, const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    std::vector<ScreenPoint> corners;
+    for (int body : {study.bodyA, study.bodyB})
+    {
+        const Body& b = scene.bodies[static_cast<size_t>(body)];
+        if (b.shape.type == ShapeType::Polygon)
+        {
+            for (const ScreenPoint& p : Outline(b, view))
+            {
+                corners.push_back(p);
+            }
+        }
+    }
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || c->text != "reference face")
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(c->text, c->style);
+        for (const DrawCommand* line : canvas.InGroup("labels"))
+        {
+            const ScreenPoint end = line->kind == DrawCommand::Kind::Segment ? line->points[1] : ScreenPoint{-1e9f, -1e9f};
+            if (end.x < c->points[0].x - 0.5f || end.x > c->points[0].x + size.x + 0.5f ||
+                end.y < c->points[0].y - 0.5f || end.y > c->points[0].y + size.y + 0.5f)
+            {
+                continue;
+            }
+            const ScreenPoint start = line->points[0];
+            for (const ScreenPoint& corner : corners)
+            {
+                if (std::hypot(corner.x - start.x, corner.y - start.y) < 8.0f)
+                {
+                    problems.push_back(Describe(*c) + " is led from a corner, at (" +
+                                       std::to_string(static_cast<int>(corner.x)) + ", " +
+                                       std::to_string(static_cast<int>(corner.y)) + "), not from its face");
+                    break;
+                }
+            }
+        }
+    }
+    return problems;
+}
+
 bool OnLeader(const RecordingCanvas& canvas, const DrawCommand& text);
 
 // Names of a face ("e2", "reference face", "incident edge") that do not sit clearly nearer the face they name than
@@ -1995,6 +2045,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
             problems.push_back(std::move(p));
         }
         for (std::string& p : ReferenceFaceFar(canvas))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : ReferenceFaceAtCorner(canvas, scene, setup.study, setup.figure.view))
         {
             problems.push_back(std::move(p));
         }
