@@ -93,7 +93,7 @@ int QuarterPointsInside(const std::vector<ScreenPoint>& outline, const ScreenRec
 // Whether the segment pq runs along the segment uv: more than 16 pixels of pq lie within 4 pixels of uv, beside it.
 // A line that crosses uv at a shallow angle (under about 30 degrees) runs along it for a while too; a steeper one
 // crosses it.
-bool RunsAlong(ScreenPoint p, ScreenPoint q, ScreenPoint u, ScreenPoint v)
+bool RunsAlong(ScreenPoint p, ScreenPoint q, ScreenPoint u, ScreenPoint v, float within = 4.0f)
 {
     const float ux = v.x - u.x;
     const float uy = v.y - u.y;
@@ -111,7 +111,7 @@ bool RunsAlong(ScreenPoint p, ScreenPoint q, ScreenPoint u, ScreenPoint v)
         const float x = p.x + (q.x - p.x) * t - u.x;
         const float y = p.y + (q.y - p.y) * t - u.y;
         const float along = (x * ux + y * uy) / length;
-        near += along >= 0.0f && along <= length && std::abs(x * uy - y * ux) / length < 4.0f ? 1 : 0;
+        near += along >= 0.0f && along <= length && std::abs(x * uy - y * ux) / length < within ? 1 : 0;
     }
     return near > 16;
 }
@@ -413,6 +413,14 @@ void LabelPlacer::PreferOutOf(std::vector<ScreenPoint> outline)
     if (!m_labels.empty())
     {
         m_labels.back().preferOut.push_back(std::move(outline));
+    }
+}
+
+void LabelPlacer::InFaceSpan()
+{
+    if (!m_labels.empty())
+    {
+        m_labels.back().inSpan = true;
     }
 }
 
@@ -800,7 +808,36 @@ void LabelPlacer::Flush(Color halo)
     m_takenColors.clear();
     // Whether a place keeps the label out of the other body (and, with OutsideBoth, out of its own too).
     bool preferring = false; // a first search that keeps the label out of the outlines it prefers to keep out of
-    const auto Away = [&preferring](const Label& label, const ScreenRect& rect, ScreenPoint at) {
+    const auto Away = [&preferring, this](const Label& label, const ScreenRect& rect, ScreenPoint at) {
+        if (label.inSpan && label.face.size() == 2)
+        {
+            const ScreenPoint a = label.face[0];
+            const ScreenPoint b = label.face[1];
+            const float length2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
+            const float t = length2 > 0.0f ? (((rect.minX + rect.maxX) * 0.5f - a.x) * (b.x - a.x) +
+                                              ((rect.minY + rect.maxY) * 0.5f - a.y) * (b.y - a.y)) /
+                                                 length2
+                                           : 0.5f;
+            // Past an end only on a leader line that leaves the face at 30 degrees or more (one nearly along it
+            // runs into the body beside it and ends short of the face); and on no leader line that runs near
+            // another edge, where it reads as naming that edge.
+            const LeaderLine line = Leader(at, rect);
+            const float lx = line.to.x - line.from.x;
+            const float ly = line.to.y - line.from.y;
+            const float cross = std::abs(lx * (b.y - a.y) - ly * (b.x - a.x));
+            if ((t < 0.0f || t > 1.0f) && (!line.drawn || cross < 0.5f * std::hypot(lx, ly) * std::sqrt(length2)))
+            {
+                return false;
+            }
+            if (line.drawn && std::any_of(m_lines.begin(), m_lines.end(), [&](const Line& edge) {
+                    const bool own = std::hypot(edge.a.x - a.x, edge.a.y - a.y) + std::hypot(edge.b.x - b.x, edge.b.y - b.y) < 3.0f ||
+                                     std::hypot(edge.a.x - b.x, edge.a.y - b.y) + std::hypot(edge.b.x - a.x, edge.b.y - a.y) < 3.0f;
+                    return edge.edge && !own && RunsAlong(line.from, line.to, edge.a, edge.b, 8.0f);
+                }))
+            {
+                return false;
+            }
+        }
         if (!std::all_of(label.keepOut.begin(), label.keepOut.end(),
                          [&](const std::vector<ScreenPoint>& outline) { return ClearOf(outline, rect); }))
         {

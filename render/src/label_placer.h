@@ -121,6 +121,10 @@ class LabelPlacer
     /// the rival's (a floor's "e2" beside the plank's corner, "reference face" over the small box inside the large
     /// one, a body's "e2" between its edge and its ghost's). Farther out, its leader line shows which face it names.
     void NamesFace(ScreenPoint a, ScreenPoint b, std::vector<std::vector<ScreenPoint>> rivals);
+    /// Keeps the label added last (a face's name, after NamesFace) beside its face: its middle, taken along the
+    /// face, between the face's two ends, or past an end only on a leader line that leaves the face steeply and
+    /// keeps well clear of every edge; not beyond a corner beside the next face, where it reads as that face's.
+    void InFaceSpan();
     /// Puts the label added last centred on its anchor when that place is free: a name inside the shape it names.
     /// Elsewhere it is placed as any other label.
     void Centre();
@@ -150,6 +154,7 @@ class LabelPlacer
         std::vector<ScreenPoint> face;                 // with NamesFace: the face it names, and the rivals' outlines
         std::vector<std::vector<ScreenPoint>> rivals;
         std::vector<std::vector<ScreenPoint>> preferOut; // with PreferOutOf: outlines it keeps out of where it can
+        bool inSpan = false;                             // with InFaceSpan: its middle along `face` within it
     };
     struct Mark
     {

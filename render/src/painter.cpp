@@ -2483,6 +2483,47 @@ class Painter
             };
             const bool atEnds = std::all_of(free.begin(), free.end(), atEnd);
             free.erase(std::remove_if(free.begin(), free.end(), atEnd), free.end());
+            // From a stretch of the face clear of the other body and the dots that is as long as the name where
+            // there is one: beside a short stretch by the face's end the name lands beyond the corner, beside the
+            // next face (l15_slope's "reference face" beside the slope's end).
+            const float width = m_canvas.MeasureText("reference face", TextStyle::Label).x;
+            const float faceLength = std::hypot(shown2.x - shown1.x, shown2.y - shown1.y);
+            const auto stretch = [&](ScreenPoint p) {
+                const auto clear = [&](float t) {
+                    const ScreenPoint q{shown1.x + (shown2.x - shown1.x) * t, shown1.y + (shown2.y - shown1.y) * t};
+                    if (Covered(q, other, 0.0f))
+                    {
+                        return false;
+                    }
+                    for (int i = 0; i < m_study.manifold.contactCount; ++i)
+                    {
+                        const ScreenPoint dot = At(m_study.manifold.contacts[i].point);
+                        if (std::hypot(q.x - dot.x, q.y - dot.y) < kClearOfDot)
+                        {
+                            return false;
+                        }
+                    }
+                    return true;
+                };
+                const float at = std::hypot(p.x - shown1.x, p.y - shown1.y) / faceLength;
+                const float step = 4.0f / faceLength;
+                float low = at;
+                float high = at;
+                while (low - step >= 0.0f && clear(low - step))
+                {
+                    low -= step;
+                }
+                while (high + step <= 1.0f && clear(high + step))
+                {
+                    high += step;
+                }
+                return (high - low) * faceLength;
+            };
+            if (faceLength > 0.0f && std::any_of(free.begin(), free.end(), [&](ScreenPoint p) { return stretch(p) >= width; }))
+            {
+                free.erase(std::remove_if(free.begin(), free.end(), [&](ScreenPoint p) { return stretch(p) < width; }),
+                           free.end());
+            }
             near = !Covered(foot, other, 0.0f) || free.empty() || atEnds ? foot : free.front();
         }
         m_labels.PlaceOutside(other, near, "reference face", TextStyle::Label, InkOf(referenceShape),
@@ -2495,6 +2536,7 @@ class Painter
                     along.end());
         m_labels.AlsoAt(along);
         m_labels.NamesFace(r1, r2, Rivals(other));
+        m_labels.InFaceSpan();
         const ScreenPoint i1 = At(clip.incidentV1);
         const ScreenPoint i2 = At(clip.incidentV2);
         m_canvas.Segment(i1, i2, InkOf(clip.incidentShape), 5.0f);

