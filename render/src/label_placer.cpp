@@ -408,6 +408,11 @@ void LabelPlacer::KeepOutOf(std::vector<ScreenPoint> outline)
     }
 }
 
+void LabelPlacer::ReserveGridLine(ScreenPoint a, ScreenPoint b)
+{
+    m_grid.push_back({a, b});
+}
+
 void LabelPlacer::PreferOutOf(std::vector<ScreenPoint> outline)
 {
     if (!m_labels.empty())
@@ -661,11 +666,26 @@ bool LabelPlacer::LeaderRunsAlong(ScreenPoint anchor, const ScreenRect& rect) co
     {
         return true;
     }
+    // Nor along a line of the grid, which hides it.
+    if (LeaderAlongGrid(anchor, rect))
+    {
+        return true;
+    }
     // Nor past a contact's dot other than the ones at its anchor: it seems to lead from that dot.
     return std::any_of(m_marks.begin(), m_marks.end(), [&](const Mark& mark) {
         return mark.kind == MarkKind::Contact && std::hypot(mark.at.x - anchor.x, mark.at.y - anchor.y) > 8.0f &&
                DistanceToSegment(mark.at, line.from, line.to) < 6.0f;
     });
+}
+
+bool LabelPlacer::LeaderAlongGrid(ScreenPoint anchor, const ScreenRect& rect) const
+{
+    // A short one, its label beside its mark, reads as the mark's without it.
+    const LeaderLine line = Leader(anchor, rect);
+    return line.drawn && std::hypot(line.to.x - line.from.x, line.to.y - line.from.y) > 30.0f &&
+           std::any_of(m_grid.begin(), m_grid.end(), [&](const std::pair<ScreenPoint, ScreenPoint>& grid) {
+               return RunsAlong(line.from, line.to, grid.first, grid.second, 2.5f);
+           });
 }
 
 bool LabelPlacer::LeaderCrossesBar(ScreenPoint anchor, const ScreenRect& rect) const
@@ -1150,6 +1170,10 @@ bool LineWatch::Watched(Color color) const
 
 void LineWatch::Note(const ScreenPoint* points, int count, bool closed, Color color, float thickness)
 {
+    if (m_group == "background" && count == 2 && !closed)
+    {
+        m_labels.ReserveGridLine(points[0], points[1]);
+    }
     if (!Watched(color))
     {
         return;

@@ -71,6 +71,9 @@ class LabelPlacer
     /// Marks the separating line, which parts the two bodies: as any line no label covers it, and no edge's name is
     /// led across it, where it would land on the other body's side.
     void ReservePartingLine(ScreenPoint a, ScreenPoint b, float thickness);
+    /// Marks a line of the faint grid under the figure: no leader line runs along it, where the grid line would
+    /// hide it. Labels may still cover it.
+    void ReserveGridLine(ScreenPoint a, ScreenPoint b);
     /// Marks a body outside the tested pair (a convex outline on screen): no label may lie on it or in it, where it
     /// would read as that body's.
     void ReserveShape(const std::vector<ScreenPoint>& outline);
@@ -183,6 +186,7 @@ class LabelPlacer
     bool LeaderCrossesLine(ScreenPoint anchor, const ScreenRect& rect) const;
     bool LeaderRunsAlong(ScreenPoint anchor, const ScreenRect& rect) const;
     bool LeaderCrossesBar(ScreenPoint anchor, const ScreenRect& rect) const;
+    bool LeaderAlongGrid(ScreenPoint anchor, const ScreenRect& rect) const;
     bool Free(const ScreenRect& rect, float spacing, LabelRank rank, bool everyLine = false) const;
     bool Inside(const ScreenRect& rect) const;
     bool NearestOwn(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
@@ -196,6 +200,7 @@ class LabelPlacer
     size_t m_reserved = 0; // while placing: m_taken holds the reserved regions before this index, labels after it
     std::vector<ScreenRect> m_bands;
     std::vector<Line> m_lines;
+    std::vector<std::pair<ScreenPoint, ScreenPoint>> m_grid; // the grid's lines, which only leader lines keep off
     std::vector<std::vector<ScreenPoint>> m_shapes;
     std::vector<std::pair<ScreenPoint, ScreenPoint>> m_shafts;
     std::vector<Label> m_labels;

@@ -429,13 +429,47 @@ void PaintPieceStepsKeyed(Canvas& surface, const Scene& scene, const PairStudy& 
     {
         canvas.BeginGroup("push");
         const Vec2 from = PartMiddle(b, focusB);
-        const ScreenPoint s = ToScreen(view, from);
+        const ScreenPoint start = ToScreen(view, from);
         const ScreenPoint e = ToScreen(view, from + push->depth * push->normal);
-        const float length = std::hypot(e.x - s.x, e.y - s.y);
+        const float length = std::hypot(e.x - start.x, e.y - start.y);
         // A push too short to see is drawn 24 pixels long: its direction is what the step is about.
-        const ScreenPoint tip = length >= 24.0f ? e
-                                                : ScreenPoint{s.x + 24.0f * static_cast<float>(push->normal.x),
-                                                              s.y - 24.0f * static_cast<float>(push->normal.y)};
+        ScreenPoint tip = length >= 24.0f ? e
+                                          : ScreenPoint{start.x + 24.0f * static_cast<float>(push->normal.x),
+                                                        start.y - 24.0f * static_cast<float>(push->normal.y)};
+        // A push from a middle that lies on a piece's edge (a box centred over the corner of an L) would be drawn
+        // on that edge, the two one stroke: it moves aside, parallel, by a little more than its head's width.
+        ScreenPoint s = start;
+        const float dx = tip.x - s.x;
+        const float dy = tip.y - s.y;
+        const float shaft = std::max(std::hypot(dx, dy), 1e-3f);
+        bool alongEdge = false;
+        for (const Body* body : {&a, &b})
+        {
+            for (int i = 0; i < PartCount(*body) && !alongEdge; ++i)
+            {
+                const Shape& shape = PartShape(*body, i);
+                for (int k = 0; shape.type == ShapeType::Polygon && k < shape.polygon.Count() && !alongEdge; ++k)
+                {
+                    const ScreenPoint u = ToScreen(view, TransformPoint(body->Xf(), shape.polygon.Vertices()[k]));
+                    const ScreenPoint v = ToScreen(
+                        view, TransformPoint(body->Xf(), shape.polygon.Vertices()[(k + 1) % shape.polygon.Count()]));
+                    // Both ends of the shaft within 2 pixels of the edge's line, and the edge along the shaft.
+                    const float ex = v.x - u.x;
+                    const float ey = v.y - u.y;
+                    const float edge = std::hypot(ex, ey);
+                    const auto off = [&](ScreenPoint p) { return std::abs((p.x - u.x) * ey - (p.y - u.y) * ex) / edge; };
+                    const auto along = [&](ScreenPoint p) { return ((p.x - u.x) * ex + (p.y - u.y) * ey) / edge; };
+                    alongEdge = edge > 1.0f && off(s) < 2.0f && off(tip) < 2.0f &&
+                                std::max(along(s), along(tip)) > 0.0f && std::min(along(s), along(tip)) < edge;
+                }
+            }
+        }
+        if (alongEdge)
+        {
+            const ScreenPoint side{-dy / shaft * 8.0f, dx / shaft * 8.0f};
+            s = {s.x + side.x, s.y + side.y};
+            tip = {tip.x + side.x, tip.y + side.y};
+        }
         labels.Reserve(Arrow(canvas, s, tip, seam ? palette::kMuted : palette::kResult, 2.0f));
         used.push_back(seam ? LegendMark::SeamPush : LegendMark::Mtv);
         labels.ReserveLine(s, tip, 2.0f);

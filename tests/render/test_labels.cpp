@@ -2026,6 +2026,90 @@ std::vector<std::string> LeadersOutOfImage(const RecordingCanvas& canvas, int wi
     return problems;
 }
 
+// A long leader line (a label placed away from its mark) drawn along a line of the grid (within 2 pixels of it for
+// more than 16): the grid line hides it, and the label seems to hang on nothing (l16_plank_corner's "plank" on the
+// y axis). A label beside its mark reads as its mark's without its short line.
+std::vector<std::string> LeadersAlongGrid(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    for (const DrawCommand* leader : canvas.InGroup("labels"))
+    {
+        if (leader->kind != DrawCommand::Kind::Segment)
+        {
+            continue;
+        }
+        const ScreenPoint p = leader->points[0];
+        const ScreenPoint q = leader->points[1];
+        const float length = std::hypot(q.x - p.x, q.y - p.y);
+        for (const DrawCommand* grid : canvas.InGroup("background"))
+        {
+            if (grid->kind != DrawCommand::Kind::Segment || length <= 32.0f)
+            {
+                continue;
+            }
+            int near = 0;
+            for (int k = 0; k <= static_cast<int>(length); ++k)
+            {
+                const float t = static_cast<float>(k) / length;
+                near += ToSegment({p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t}, grid->points[0], grid->points[1]) < 2.0f
+                            ? 1
+                            : 0;
+            }
+            // Along it, not across it at a slant.
+            const float gx = grid->points[1].x - grid->points[0].x;
+            const float gy = grid->points[1].y - grid->points[0].y;
+            const float sine = std::abs((q.x - p.x) * gy - (q.y - p.y) * gx) / (length * std::max(std::hypot(gx, gy), 1e-3f));
+            if (near > 16 && sine < 0.1f)
+            {
+                problems.push_back("the leader line at (" + std::to_string(static_cast<int>(p.x)) + ", " +
+                                   std::to_string(static_cast<int>(p.y)) + ") runs along a grid line");
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
+// A piece pair's push drawn on a piece's edge (both ends of its shaft within 2 pixels of the edge's line, beside
+// the edge): the arrow and the edge become one stroke (l18_across's box centred over the corner of the L).
+std::vector<std::string> PushesOnEdges(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    for (const DrawCommand* push : canvas.InGroup("push"))
+    {
+        if (push->kind != DrawCommand::Kind::Segment)
+        {
+            continue;
+        }
+        for (const DrawCommand* edge : canvas.InGroup("pieces"))
+        {
+            if (edge->kind != DrawCommand::Kind::Segment)
+            {
+                continue;
+            }
+            const ScreenPoint u = edge->points[0];
+            const ScreenPoint v = edge->points[1];
+            const float length = std::hypot(v.x - u.x, v.y - u.y);
+            if (length < 1.0f)
+            {
+                continue;
+            }
+            const auto off = [&](ScreenPoint p) { return std::abs((p.x - u.x) * (v.y - u.y) - (p.y - u.y) * (v.x - u.x)) / length; };
+            const auto along = [&](ScreenPoint p) { return ((p.x - u.x) * (v.x - u.x) + (p.y - u.y) * (v.y - u.y)) / length; };
+            const ScreenPoint a = push->points[0];
+            const ScreenPoint b = push->points[1];
+            if (off(a) < 2.0f && off(b) < 2.0f && std::max(along(a), along(b)) > 0.0f &&
+                std::min(along(a), along(b)) < length)
+            {
+                problems.push_back("the push from (" + std::to_string(static_cast<int>(a.x)) + ", " +
+                                   std::to_string(static_cast<int>(a.y)) + ") is drawn on " + Describe(*edge));
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -2043,6 +2127,14 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         problems.push_back(std::move(p));
     }
     for (std::string& p : LeadersOutOfImage(canvas, setup.figure.view.width, setup.figure.view.height))
+    {
+        problems.push_back(std::move(p));
+    }
+    for (std::string& p : LeadersAlongGrid(canvas))
+    {
+        problems.push_back(std::move(p));
+    }
+    for (std::string& p : PushesOnEdges(canvas))
     {
         problems.push_back(std::move(p));
     }
