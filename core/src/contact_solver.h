@@ -62,6 +62,7 @@ struct SolverContact
 /// Records nothing: the fast path.
 struct NullSolveRecorder
 {
+    static constexpr bool kRecords = false; ///< records nothing
     /// Ignores a pass.
     void Pass(const ContactPointSolve&) {}
 };
@@ -69,7 +70,8 @@ struct NullSolveRecorder
 /// Appends every pass to a ContactSolveTrace.
 struct TraceSolveRecorder
 {
-    ContactSolveTrace* trace = nullptr; ///< where to record
+    static constexpr bool kRecords = true; ///< records every pass
+    ContactSolveTrace* trace = nullptr;    ///< where to record
     /// Records a pass.
     void Pass(const ContactPointSolve& pass) { trace->passes.push_back(pass); }
 };
