@@ -22,7 +22,7 @@ STAGES = [
     ("restitution", r"ApplyRestitution"),
     ("velocity passes (with preparation, warm start, order, energy limit)",
      r"SolveContactVelocity|SolveVelocities|PrepareContact|PrepareContacts|WarmStart|OrderTopDown|SortContacts|StoreImpulses|"
-     r"LimitEnergyGain"),
+     r"LimitEnergyGain|MakeSoftContact"),
     ("position correction (passes, guards, lift off static bodies)", r"CorrectPositions|GuardAfterMove"),
     ("move (positions, sines and cosines)", r"Stepper::Move|sincos|MakeRot|TurnsBeyondContacts|__sin|__cos"),
     ("sleep and waking islands", r"Sleep|WakeIslands"),
