@@ -33,11 +33,6 @@ std::string Pair(double x, double y)
     return FormatPair(x, y);
 }
 
-std::string Interval(double low, double high)
-{
-    return FormatPair(low, high, "[", "]");
-}
-
 // Number of face tests the fast test could run: every face of a polygon, one axis per circle pair.
 int CandidateCount(const Scene& scene, const PairStudy& study)
 {
@@ -339,9 +334,11 @@ std::string TextbookAxisStep(const Scene& scene, const PairStudy& study, int ste
     {
         sentenceA[0] = static_cast<char>(sentenceA[0] - 'a' + 'A');
     }
+    // The four ends as the number line writes them, read together with as many decimals each (FormatAlike).
+    const std::vector<std::string> ends = FormatAlike({t.minA, t.maxA, t.minB, t.maxB});
     std::string text = StepName(scene, study, step) + ": " + DescribeFaces(scene, study, t.faces, t.faceCount) +
-                       ". " + sentenceA + " projects to " + Interval(t.minA, t.maxA) + ", " + nameB + " to " +
-                       Interval(t.minB, t.maxB) + ". ";
+                       ". " + sentenceA + " projects to [" + ends[0] + ", " + ends[1] + "], " + nameB + " to [" +
+                       ends[2] + ", " + ends[3] + "]. ";
     if (t.separating)
     {
         return text + "Gap " + ShownGap(t) +
@@ -498,9 +495,10 @@ std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, in
     const TextbookSweepAxis& t = study.textbookSweep.axes[static_cast<size_t>(step)];
     const std::string& nameA = NameOf(scene, study, 0);
     const std::string& nameB = NameOf(scene, study, 1);
+    const std::vector<std::string> ends = FormatAlike({t.minA, t.maxA, t.minB, t.maxB});
     std::string text = StepName(scene, study, step) + ": " + DescribeFaces(scene, study, t.faces, t.faceCount) +
-                       ". At t = 0 " + nameA + " projects to " + Interval(t.minA, t.maxA) + ", " + nameB + " to " +
-                       Interval(t.minB, t.maxB) + "; ";
+                       ". At t = 0 " + nameA + " projects to [" + ends[0] + ", " + ends[1] + "], " + nameB + " to [" +
+                       ends[2] + ", " + ends[3] + "]; ";
     if (t.never)
     {
         const bool touching = std::max(t.minB - t.maxA, t.minA - t.maxB) == 0.0;

@@ -269,6 +269,64 @@ TEST_CASE("A box resting on a floor touches it: the verdict says so, not that a 
     }
 }
 
+TEST_CASE("An axis's sentence writes the projection ends as its number line does, in every lesson scene", "[painter]")
+{
+    // overlapping_boxes's axis 1 said "A projects to [-0.50, 0.50]" above a number line reading -0.500 and 0.500
+    // (beside B's -0.025 and 1.225): one quantity in two forms in one figure.
+    int checked = 0;
+    for (const std::string& file : testing::TutorialSceneFiles())
+    {
+        SceneResult loaded = LoadScene(file, SceneOptions{true});
+        REQUIRE(loaded.Ok());
+        REQUIRE(SimulateScene(loaded.scene, loaded.scene.view.simSteps).empty());
+        FigureSetup setup = SetUpView(loaded.scene, StepView::Textbook);
+        // The figures that draw a number line under the pair.
+        if (!setup.Ok() || setup.figure.kind != FigureKind::Pair || setup.study.sweep ||
+            (setup.figure.layers & kLayerProjection) == 0)
+        {
+            continue;
+        }
+        const PairStudy& study = setup.study;
+        for (int step = 0; step < static_cast<int>(study.textbook.axes.size()); ++step)
+        {
+            const std::string sentence = DescribeStep(loaded.scene, study, step);
+            const size_t open = sentence.find(" projects to [");
+            if (open == std::string::npos)
+            {
+                continue;
+            }
+            // "[a, b], NAME to [c, d]": the four ends as the sentence writes them.
+            std::vector<std::string> ends;
+            size_t at = open;
+            for (int k = 0; k < 2; ++k)
+            {
+                const size_t from = sentence.find('[', at) + 1;
+                const size_t comma = sentence.find(", ", from);
+                const size_t close = sentence.find(']', comma);
+                ends.push_back(sentence.substr(from, comma - from));
+                ends.push_back(sentence.substr(comma + 2, close - comma - 2));
+                at = close;
+            }
+            const RecordingCanvas canvas = PaintStep(loaded.scene, setup, step);
+            std::set<std::string> drawn;
+            for (const DrawCommand* c : canvas.InGroup("panel"))
+            {
+                if (c->kind == DrawCommand::Kind::Text)
+                {
+                    drawn.insert(c->text);
+                }
+            }
+            INFO(std::filesystem::path(file).filename().string() << " step " << step + 1 << ": " << sentence);
+            for (const std::string& end : ends)
+            {
+                CHECK(drawn.count(end) == 1);
+            }
+            ++checked;
+        }
+    }
+    CHECK(checked > 50);
+}
+
 TEST_CASE("The verdict's short title says what its sentence says, in every lesson scene and both views", "[painter]")
 {
     // The app's step list, and a figure's caption when the sentence does not fit beside a lesson, show the short
