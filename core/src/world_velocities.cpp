@@ -224,7 +224,13 @@ void Stepper::PrepareContacts()
     const int contactCount = static_cast<int>(world.contacts.size());
     const int pieces = PieceCount(world.tasks, contactCount, kContactsPerPiece);
     solverContacts.clear();
-    solverContacts.reserve(world.contacts.size());
+    // Grown by at least half again when it must grow: a list grown to the exact count each time a world's contacts
+    // grow by a few would be allocated afresh, and its pages touched anew, step after step.
+    if (solverContacts.capacity() < world.contacts.size())
+    {
+        solverContacts.reserve(
+            std::max(world.contacts.size(), solverContacts.capacity() + solverContacts.capacity() / 2));
+    }
     guards.clear();
     std::vector<std::vector<SolverContact>> laterContacts(static_cast<size_t>(pieces - 1));
     std::vector<std::vector<SolverContact>> laterGuards(static_cast<size_t>(pieces - 1));
