@@ -1026,6 +1026,14 @@ std::vector<std::string> FormatAlike(const std::vector<double>& values)
     most = std::min(most, 3);
     for (std::string& text : texts)
     {
+        // A grouped whole number (no point, no exponent) among numbers with decimals: its digits ungrouped, with
+        // as many decimals of zeros.
+        if (most > 0 && text.find(' ') != std::string::npos && text.find('.') == std::string::npos &&
+            text.find('e') == std::string::npos)
+        {
+            text.erase(std::remove(text.begin(), text.end(), ' '), text.end());
+            text += '.';
+        }
         const int own = decimals(text);
         if (own >= 0 && own < most)
         {

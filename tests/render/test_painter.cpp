@@ -327,6 +327,36 @@ TEST_CASE("An axis's sentence writes the projection ends as its number line does
     CHECK(checked > 50);
 }
 
+TEST_CASE("The ends on one number line are written in one form, grouped digits or decimals", "[painter]")
+{
+    // ex11_far's line read A "999 999" and "1 000 001" beside B "1000000.90" and "1000001.90".
+    const std::vector<std::string> far = FormatAlike({999999.0, 1000001.0, 1000000.9, 1000001.9});
+    CHECK(far == std::vector<std::string>{"999999.00", "1000001.00", "1000000.90", "1000001.90"});
+    // Whole numbers alone keep their groups; the values read back the same.
+    CHECK(FormatAlike({100000.0, -1234567.0}) == std::vector<std::string>{"100 000", "-1 234 567"});
+    const std::vector<double> values{999999.0, 1000001.0, 1000000.9, 1000001.9};
+    for (size_t i = 0; i < far.size(); ++i)
+    {
+        CHECK(std::abs(std::strtod(far[i].c_str(), nullptr) - values[i]) < 0.005);
+    }
+    const Scene scene = Load(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/ex11_far.json");
+    FigureSetup setup = SetUpFigure(scene, {});
+    REQUIRE(setup.Ok());
+    const RecordingCanvas canvas = PaintStep(scene, setup, setup.study.VerdictStep());
+    int ends = 0;
+    for (const DrawCommand* c : canvas.InGroup("panel"))
+    {
+        if (c->kind == DrawCommand::Kind::Text && !c->text.empty() && (std::isdigit(c->text[0]) || c->text[0] == '-'))
+        {
+            INFO(c->text);
+            CHECK(c->text.find(' ') == std::string::npos);
+            CHECK(c->text.find('.') != std::string::npos);
+            ++ends;
+        }
+    }
+    CHECK(ends == 4);
+}
+
 TEST_CASE("The verdict's short title says what its sentence says, in every lesson scene and both views", "[painter]")
 {
     // The app's step list, and a figure's caption when the sentence does not fit beside a lesson, show the short
@@ -930,9 +960,10 @@ TEST_CASE("The caption of a step states the trace's numbers", "[painter]")
                 {
                     // The textbook step names both intervals and, from them, the gap or both pushes.
                     const TextbookAxis& t = setup.study.textbook.axes[static_cast<size_t>(step)];
-                    for (double value : {t.minA, t.maxA, t.minB, t.maxB})
+                    // As the number line writes them, read together (FormatAlike).
+                    for (const std::string& end : FormatAlike({t.minA, t.maxA, t.minB, t.maxB}))
                     {
-                        CHECK(expected.find(FormatNumber(value)) != std::string::npos);
+                        CHECK(expected.find(end) != std::string::npos);
                     }
                     CHECK((expected.find("separates the shapes") != std::string::npos) == t.separating);
                     CHECK((expected.find("the overlap is the smaller") != std::string::npos) == !t.separating);
@@ -2301,8 +2332,11 @@ TEST_CASE("The ends on a number line are written with as many decimals each, in 
                     INFO(end);
                     counts.insert(decimals(end));
                     countsAlone.insert(decimals(FormatNumber(std::stod(end))));
-                    // The value is the one FormatNumber shows: only zeros were put back.
-                    CHECK(std::stod(FormatNumber(std::stod(end))) == std::stod(end));
+                    // The value is the one FormatNumber shows: only zeros were put back (and a whole number's
+                    // groups joined among ends with decimals).
+                    std::string shown = FormatNumber(std::stod(end));
+                    shown.erase(std::remove(shown.begin(), shown.end(), ' '), shown.end());
+                    CHECK(std::stod(shown) == std::stod(end));
                 }
                 CHECK(counts.size() == 1);
                 mixedBefore += countsAlone.size() > 1 ? 1 : 0;

@@ -31,7 +31,8 @@ std::string FormatPair(double x, double y, const char* open = "(", const char* c
 /// Numbers that are read together (the ends of the intervals on one number line) as FormatNumber shows them, each
 /// written with as many decimals as the one with most: 0.000, 2.080, 3.051, not 0.00, 2.08, 3.051. Only the
 /// trailing zeros FormatNumber drops are put back, so the values read the same; numbers with an exponent are left
-/// as they are.
+/// as they are. A whole number FormatNumber groups (999 999) is written as the others when they have decimals
+/// (999999.00 beside 1000000.90), not in a form of its own.
 std::vector<std::string> FormatAlike(const std::vector<double>& values);
 
 /// hi - lo computed from the two values as FormatNumber shows them, so that a reader subtracting the printed ends
