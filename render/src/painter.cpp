@@ -2904,6 +2904,49 @@ class Painter
                                          away.y, 6.0f, LabelRank::Name);
                     continue;
                 }
+                // The MTV's arrow starts at the middle of the body it moves: the name goes just behind the arrow's
+                // tail or beside its shaft, where it still fits, rather than hang on a leader line that ends on
+                // that tail and reads as naming the arrow.
+                if (m_hasMtvArrow && std::hypot(m_mtvFrom.x - anchor.x, m_mtvFrom.y - anchor.y) < 8.0f)
+                {
+                    const float length = std::hypot(m_mtvFrom.x - m_mtvTo.x, m_mtvFrom.y - m_mtvTo.y);
+                    const ScreenPoint back{length > 0.0f ? (m_mtvFrom.x - m_mtvTo.x) / length : 0.0f,
+                                           length > 0.0f ? (m_mtvFrom.y - m_mtvTo.y) / length : 1.0f};
+                    const ScreenPoint shaftMiddle{0.5f * (m_mtvFrom.x + m_mtvTo.x), 0.5f * (m_mtvFrom.y + m_mtvTo.y)};
+                    const float hx = 0.5f * text.x + 4.0f;
+                    const float hy = 0.5f * text.y + 2.0f;
+                    bool moved = false;
+                    for (const auto& [origin, way] :
+                         {std::pair{m_mtvFrom, back}, std::pair{shaftMiddle, ScreenPoint{-back.y, back.x}},
+                          std::pair{shaftMiddle, ScreenPoint{back.y, -back.x}}})
+                    {
+                        const float shift = std::abs(way.x) * hx + std::abs(way.y) * hy + 4.0f;
+                        const ScreenPoint p{origin.x + shift * way.x, origin.y + shift * way.y};
+                        bool inside = true;
+                        for (const ScreenPoint corner :
+                             {ScreenPoint{p.x - hx, p.y - hy}, ScreenPoint{p.x + hx, p.y - hy},
+                              ScreenPoint{p.x - hx, p.y + hy}, ScreenPoint{p.x + hx, p.y + hy}})
+                        {
+                            inside = inside && Covered(corner, outline, 0.0f);
+                        }
+                        if (inside)
+                        {
+                            anchor = p;
+                            moved = true;
+                            break;
+                        }
+                    }
+                    // A body too small to hold it there has a leader line to it start behind the tail, inside.
+                    for (float d = 10.0f; !moved && d < 0.5f * std::max(wide, tall); d += 2.0f)
+                    {
+                        const ScreenPoint q{m_mtvFrom.x + d * back.x, m_mtvFrom.y + d * back.y};
+                        if (!Covered(q, outline, -3.0f))
+                        {
+                            break;
+                        }
+                        anchor = q;
+                    }
+                }
                 m_labels.Place(anchor, body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f, LabelRank::Name);
                 // A large body's name may move within it when its middle is taken (by a pitfall's note, a line
                 // across it), rather than hang on a leader line.

@@ -2110,6 +2110,32 @@ std::vector<std::string> PushesOnEdges(const RecordingCanvas& canvas)
     return problems;
 }
 
+// A leader line that starts at the tail of the MTV's arrow (the middle of the body it moves, where a body's name
+// is led from when the arrow takes its place): it reads as naming the arrow (l02_box_and_triangle's "triangle").
+std::vector<std::string> LeadersFromArrowTails(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    for (const DrawCommand* shaft : canvas.InGroup("mtv"))
+    {
+        if (shaft->kind != DrawCommand::Kind::Segment || shaft->thickness < 3.0f)
+        {
+            continue;
+        }
+        const ScreenPoint tail = shaft->points[0];
+        for (const DrawCommand* leader : canvas.InGroup("labels"))
+        {
+            if (leader->kind == DrawCommand::Kind::Segment &&
+                std::hypot(leader->points[0].x - tail.x, leader->points[0].y - tail.y) < 6.0f)
+            {
+                problems.push_back("a leader line starts at the tail of the MTV's arrow, at (" +
+                                   std::to_string(static_cast<int>(tail.x)) + ", " +
+                                   std::to_string(static_cast<int>(tail.y)) + ")");
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -2135,6 +2161,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         problems.push_back(std::move(p));
     }
     for (std::string& p : PushesOnEdges(canvas))
+    {
+        problems.push_back(std::move(p));
+    }
+    for (std::string& p : LeadersFromArrowTails(canvas))
     {
         problems.push_back(std::move(p));
     }
