@@ -492,13 +492,16 @@ bool LabelPlacer::NearestOwn(const Label& label, const ScreenRect& rect, ScreenP
         // A contact's name nearer a corner than its dot reads as the corner's (containment's "c2" beside the
         // triangle's corner 1, its dot just inside it).
         // A corner of a body under the dot is where the contact is.
+        // Nor a corner's number not clearly nearer its corner than a contact's dot, where it reads as the dot's
+        // name (ex05_inside's "3" half way down the side from its corner to c1).
         const bool corner = kind == MarkKind::Contact && m.kind == MarkKind::Corner && m.ofBody;
-        if ((m.kind != kind && !corner) ||
-            std::hypot(m.at.x - label.anchor.x, m.at.y - label.anchor.y) <= (corner ? 5.0f : own))
+        const bool dot = kind == MarkKind::Corner && m.kind == MarkKind::Contact;
+        if ((m.kind != kind && !corner && !dot) ||
+            std::hypot(m.at.x - label.anchor.x, m.at.y - label.anchor.y) <= (corner || dot ? 5.0f : own))
         {
             continue;
         }
-        if (std::hypot(middle.x - m.at.x, middle.y - m.at.y) <= mine + (corner ? -4.0f : lead))
+        if (std::hypot(middle.x - m.at.x, middle.y - m.at.y) <= mine + (corner ? -4.0f : dot ? 4.0f : lead))
         {
             return false;
         }

@@ -1794,6 +1794,18 @@ std::vector<std::string> LabelsNearerAnotherMark(const RecordingCanvas& canvas, 
                     break;
                 }
             }
+            // Nor as near a contact's dot as its corner, where it reads as the dot's name (ex05_inside's "3" half
+            // way from its corner to c1): a dot at the corner is where the corner is.
+            for (const ScreenPoint& dot : dots)
+            {
+                if (distance(dot, corners[s][own]) > 5.0f && distance(middle, dot) <= mine)
+                {
+                    problems.push_back(Describe(*c) + ", a vertex number of " + bodies[s]->name +
+                                       ", lies nearer the contact point at (" + std::to_string(static_cast<int>(dot.x)) +
+                                       ", " + std::to_string(static_cast<int>(dot.y)) + ") than its corner");
+                    break;
+                }
+            }
         }
     }
     return problems;
@@ -3003,4 +3015,51 @@ TEST_CASE("On the app's narrowest canvas a band's size is written out of the bod
         }
     }
     CHECK(drawn >= 8);
+}
+
+TEST_CASE("In every pair scene of the course, at the app's canvases too, no corner's number reads as a contact's",
+          "[labels]")
+{
+    // The exercises' and examples' scenes as well as the figures': a vertex number no nearer its corner than a
+    // contact point's dot reads as that dot's name (ex05_inside's "3" half way from its corner to c1).
+    int drawn = 0;
+    std::vector<std::string> failing;
+    for (const std::string& file : testing::TutorialSceneFiles(true))
+    {
+        const Scene scene = painter_test::LoadSimulated(file);
+        if (scene.bodies.size() < 2)
+        {
+            continue;
+        }
+        for (const auto& [width, height] : {std::pair{0, 0}, std::pair{460, 758}, std::pair{360, 600}})
+        {
+            FigureOptions options;
+            options.width = width;
+            options.height = height;
+            FigureSetup setup = SetUpFigure(scene, options);
+            if (!setup.Ok() || setup.figure.kind != FigureKind::Pair)
+            {
+                continue;
+            }
+            const int steps = FigureStepCount(scene, setup);
+            const RecordingCanvas canvas = painter_test::PaintStep(scene, setup, steps - 1);
+            ++drawn;
+            for (const std::string& p : LabelsNearerAnotherMark(canvas, scene, setup.study, setup.figure.view))
+            {
+                if (p.find("than its corner") != std::string::npos)
+                {
+                    failing.push_back(file.substr(file.rfind('/') + 1) + " at " + std::to_string(width) + " x " +
+                                      std::to_string(height) + ": " + p);
+                }
+            }
+        }
+    }
+    CHECK(drawn > 100);
+    std::string all;
+    for (const std::string& f : failing)
+    {
+        all += f + "\n";
+    }
+    INFO(all);
+    CHECK(failing.empty());
 }
