@@ -424,6 +424,8 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
             const Vec2 arm = world - body.position;
             m_grabAngle = std::atan2(arm.y, arm.x) - body.angle;
             m_throwTrail.clear();
+            m_throwVelocity = {};
+            m_throwFrames = 0;
             if (m_drag != DragKind::Throw)
             {
                 m_app.BeginEdit();
@@ -471,21 +473,30 @@ void Panels::CanvasInput(ImVec2 origin, bool hovered)
             // The body follows the pointer at the pointer's recent speed, so that what it pushes is pushed at
             // that speed, and leaves at it on release.
             const double now = ImGui::GetTime();
+            // A frame that comes slower than the window with the pointer where the last one saw it tells nothing
+            // of a pause: on a loaded machine the pointer's last moves and the release fall in one slow frame
+            // after the moving ones. The speed measured before it stands.
+            const bool slowAndStill = !m_throwTrail.empty() && now - m_throwTrail.back().first >= kThrowWindow &&
+                                      m_throwTrail.back().second.x == world.x && m_throwTrail.back().second.y == world.y;
             m_throwTrail.emplace_back(now, world);
+            ++m_throwFrames;
             while (m_throwTrail.size() > 2 && now - m_throwTrail[1].first >= kThrowWindow)
             {
                 m_throwTrail.pop_front();
             }
             // Over the window, or between the last two frames when the frames come slower than that (a loaded
-            // machine): a pause before letting go is a frame or more at one place, which throws nothing.
+            // machine): a pause before letting go is frames at one place over the window, which throws nothing.
             const double span = now - m_throwTrail.front().first;
-            const Vec2 velocity = span > 1e-3 ? (1.0 / span) * (world - m_throwTrail.front().second) : Vec2{};
-            m_app.SimHand(selected, world - m_grabOffset, velocity);
+            if (!slowAndStill)
+            {
+                m_throwVelocity = span > 1e-3 ? (1.0 / span) * (world - m_throwTrail.front().second) : Vec2{};
+            }
+            m_app.SimHand(selected, world - m_grabOffset, m_throwVelocity);
             if (!down)
             {
                 const Body& thrown = m_app.ShownScene().bodies[static_cast<size_t>(selected)];
-                std::printf("satviz: thrown %s at step %d velocity %.17g %.17g\n", thrown.name.c_str(),
-                            m_app.GetSimulation().Shown(), thrown.velocity.x, thrown.velocity.y);
+                std::printf("satviz: thrown %s at step %d velocity %.17g %.17g over %d frames\n", thrown.name.c_str(),
+                            m_app.GetSimulation().Shown(), thrown.velocity.x, thrown.velocity.y, m_throwFrames);
                 std::fflush(stdout);
             }
             break;

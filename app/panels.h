@@ -151,6 +151,8 @@ class Panels
     double m_grabAngle = 0.0;
     // A throw: the pointer's world positions over the last kThrowWindow seconds, with their times.
     std::deque<std::pair<double, Vec2>> m_throwTrail;
+    Vec2 m_throwVelocity{}; // the thrown body's velocity as last measured from the trail
+    int m_throwFrames = 0;  // frames drawn while the body was held
     bool m_canvasAnnounced = false;
     bool m_showHelp = false;
     int m_newSides = 5;
