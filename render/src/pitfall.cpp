@@ -254,7 +254,13 @@ PitfallResult FloatWorld(const Scene& scene, int a, int b, const TextbookResult&
     const float far = static_cast<float>(std::max(std::abs(body.position.x), std::abs(body.position.y)));
     const std::string step = ShortestDecimal(std::nextafter(far, INFINITY) - far);
     const std::string said = out.overlap ? "a depth of " + FormatNumber(out.depth) : std::string("no collision");
-    out.verdict = "Pitfall (float on world coordinates): a float coordinate as large as A's (" + FormatNumber(far) +
+    // In one form with the pair's largest coordinate, which the verdict's precision note gives just before
+    // (1000000.00 beside 1000001.47, not 1 000 000).
+    const Body& other = scene.bodies[static_cast<size_t>(b)];
+    const double largest = std::max({std::abs(body.position.x), std::abs(body.position.y), std::abs(other.position.x),
+                                     std::abs(other.position.y)});
+    const std::string farText = FormatAlike({static_cast<double>(far), largest})[0];
+    out.verdict = "Pitfall (float on world coordinates): a float coordinate as large as A's (" + farText +
                   ") moves in steps of " + step + ", so it finds " + said +
                   ", where double in A's frame finds " +
                   (right.overlap ? "a depth of " + FormatNumber(right.depth) : std::string("no collision")) + ".";

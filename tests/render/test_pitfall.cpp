@@ -97,6 +97,12 @@ TEST_CASE("The float pitfall far from the origin loses an overlap that double in
     // Float coordinates at 1e6 step by 0.0625: the 0.03 overlap cannot survive them.
     CHECK(std::abs(p.depth - 0.03) > 0.02);
     CHECK(p.verdict.find("steps of 0.0625") != std::string::npos);
+    // A's coordinate, 1e6, in the form of B's 1000001.47 that the precision note gives just before it in the
+    // verdict (it read "1 000 000" there).
+    const std::string verdict = DescribeStep(scene, setup.study, setup.study.VerdictStep());
+    CHECK(verdict.find("(1000001.47)") != std::string::npos);
+    CHECK(verdict.find("as large as A's (1000000.00)") != std::string::npos);
+    CHECK(verdict.find("1 000 000") == std::string::npos);
 }
 
 TEST_CASE("Pitfalls on random pairs: scaling keeps every verdict, fewer axes never miss a collision",
