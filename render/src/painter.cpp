@@ -1944,8 +1944,9 @@ class Painter
         const std::string text = BandLabel(m_axis);
         // On the far side of the bars from the pair, where the shapes' own labels crowd less (lesson 4's pitfall
         // figure put it between the bars and the slab, and pushed the slab's reference face down below it).
-        m_labels.Place({middle.x + ox * 14.0f, middle.y + oy * 14.0f}, text, TextStyle::Label,
-                      overlap ? 0x8E3F6CFFu : 0x006E50FFu, ox, oy, 4.0f, LabelRank::Verdict);
+        // From the band itself, so that a leader line, where one is needed, ends on the band.
+        m_labels.Place(middle, text, TextStyle::Label, overlap ? 0x8E3F6CFFu : 0x006E50FFu, ox, oy, 18.0f,
+                      LabelRank::Verdict);
         // With no room there (the bars beside the image's edge), beside the band on the pair's side, rather than
         // on a leader line back across the bars and the axis.
         std::vector<ScreenPoint> near;

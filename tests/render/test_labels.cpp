@@ -2148,6 +2148,52 @@ std::vector<std::string> LeadersFromArrowTails(const RecordingCanvas& canvas)
     return problems;
 }
 
+// A band's size ("overlap 0.20", "gap 0.45") on a leader line that starts away from its band, the thick bar between
+// the two intervals on the axis: the line leads from nothing (pitfall_unnormalised's, from beyond the bars by the
+// image's edge).
+std::vector<std::string> BandLeadersAstray(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    std::vector<const DrawCommand*> bands;
+    for (const DrawCommand* d : canvas.InGroup("projection"))
+    {
+        if (d->kind == DrawCommand::Kind::Segment && d->thickness >= 3.0f &&
+            ((d->color >> 8) == (palette::kOverlap >> 8) || (d->color >> 8) == (palette::kGap >> 8)))
+        {
+            bands.push_back(d);
+        }
+    }
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || bands.empty() ||
+            (c->text.rfind("overlap ", 0) != 0 && c->text.rfind("gap ", 0) != 0))
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(c->text, c->style);
+        for (const DrawCommand* line : canvas.InGroup("labels"))
+        {
+            const ScreenPoint end = line->kind == DrawCommand::Kind::Segment ? line->points[1] : ScreenPoint{-1e9f, -1e9f};
+            if (end.x < c->points[0].x - 0.5f || end.x > c->points[0].x + size.x + 0.5f ||
+                end.y < c->points[0].y - 0.5f || end.y > c->points[0].y + size.y + 0.5f)
+            {
+                continue;
+            }
+            const ScreenPoint start = line->points[0];
+            const bool onBand = std::any_of(bands.begin(), bands.end(), [&](const DrawCommand* band) {
+                return ToSegment(start, band->points[0], band->points[1]) < 0.5f * band->thickness + 2.0f;
+            });
+            if (!onBand)
+            {
+                problems.push_back(Describe(*c) + " is led from (" + std::to_string(static_cast<int>(start.x)) + ", " +
+                                   std::to_string(static_cast<int>(start.y)) + "), away from its band");
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -2177,6 +2223,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         problems.push_back(std::move(p));
     }
     for (std::string& p : LeadersFromArrowTails(canvas))
+    {
+        problems.push_back(std::move(p));
+    }
+    for (std::string& p : BandLeadersAstray(canvas))
     {
         problems.push_back(std::move(p));
     }
