@@ -2545,9 +2545,32 @@ class Painter
         m_canvas.Segment(i1, i2, palette::kBackground, 1.5f);
         m_used.push_back(LegendMark::Reference);
         m_used.push_back(LegendMark::Incident);
-        m_labels.PlaceOutside(OutlineOf(1 - clip.incidentShape), At(0.5 * (clip.incidentV1 + clip.incidentV2)),
-                             "incident edge", TextStyle::Label, InkOf(clip.incidentShape), static_cast<float>(n.x),
-                             static_cast<float>(-n.y), 10.0f, LabelRank::Verdict);
+        // Named from the point of the edge nearest its middle that is clear of the contacts' dots: a leader line
+        // from a dot reads as naming the contact (overlapping_boxes' incident edge, whose middle is c1).
+        ScreenPoint incidentAt = At(0.5 * (clip.incidentV1 + clip.incidentV2));
+        {
+            const float length = std::hypot(i2.x - i1.x, i2.y - i1.y);
+            float best = INFINITY;
+            for (float d = 0.0f; length > 0.0f && d <= length; d += 2.0f)
+            {
+                const ScreenPoint p{i1.x + (i2.x - i1.x) * d / length, i1.y + (i2.y - i1.y) * d / length};
+                bool clear = std::min(d, length - d) >= 6.0f;
+                for (int k = 0; k < m_study.manifold.contactCount && clear; ++k)
+                {
+                    const ScreenPoint dot = At(m_study.manifold.contacts[k].point);
+                    clear = std::hypot(p.x - dot.x, p.y - dot.y) >= kClearOfDot;
+                }
+                const float off = std::abs(d - 0.5f * length);
+                if (clear && off < best)
+                {
+                    best = off;
+                    incidentAt = p;
+                }
+            }
+        }
+        m_labels.PlaceOutside(OutlineOf(1 - clip.incidentShape), incidentAt, "incident edge", TextStyle::Label,
+                             InkOf(clip.incidentShape), static_cast<float>(n.x), static_cast<float>(-n.y), 10.0f,
+                             LabelRank::Verdict);
         m_labels.NamesFace(i1, i2, Rivals(OutlineOf(1 - clip.incidentShape)));
     }
 

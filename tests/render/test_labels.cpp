@@ -2194,6 +2194,50 @@ std::vector<std::string> BandLeadersAstray(const RecordingCanvas& canvas)
     return problems;
 }
 
+// A face's name ("reference face", "incident edge") on a leader line that starts at a contact's dot: the line reads
+// as naming the contact, or the edge as a point (overlapping_boxes' "incident edge" and "c1" led to one dot).
+std::vector<std::string> FaceLeadersFromDots(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    std::vector<ScreenPoint> dots;
+    for (const DrawCommand* c : canvas.InGroup("contacts"))
+    {
+        if (c->kind == DrawCommand::Kind::FillCircle && c->color == palette::kResult)
+        {
+            dots.push_back(c->points[0]);
+        }
+    }
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || (c->text != "reference face" && c->text != "incident edge"))
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(c->text, c->style);
+        for (const DrawCommand* line : canvas.InGroup("labels"))
+        {
+            const ScreenPoint end = line->kind == DrawCommand::Kind::Segment ? line->points[1] : ScreenPoint{-1e9f, -1e9f};
+            if (end.x < c->points[0].x - 0.5f || end.x > c->points[0].x + size.x + 0.5f ||
+                end.y < c->points[0].y - 0.5f || end.y > c->points[0].y + size.y + 0.5f)
+            {
+                continue;
+            }
+            for (const ScreenPoint& dot : dots)
+            {
+                if (std::hypot(line->points[0].x - dot.x, line->points[0].y - dot.y) < 7.0f)
+                {
+                    problems.push_back(Describe(*c) + " is led from the contact point at (" +
+                                       std::to_string(static_cast<int>(dot.x)) + ", " +
+                                       std::to_string(static_cast<int>(dot.y)) + ")");
+                    break;
+                }
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -2227,6 +2271,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         problems.push_back(std::move(p));
     }
     for (std::string& p : BandLeadersAstray(canvas))
+    {
+        problems.push_back(std::move(p));
+    }
+    for (std::string& p : FaceLeadersFromDots(canvas))
     {
         problems.push_back(std::move(p));
     }
