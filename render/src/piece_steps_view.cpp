@@ -386,8 +386,13 @@ void PaintPieceStepsKeyed(Canvas& surface, const Scene& scene, const PairStudy& 
             {
                 canvas.Polyline(points.data(), static_cast<int>(points.size()), true, palette::kShapeBInk, 2.0f);
             }
-            labels.Place(ToScreen(view, PartMiddle(body, i)), PieceName(body, i), TextStyle::Heading,
+            const ScreenPoint middle = ToScreen(view, PartMiddle(body, i));
+            labels.Place(middle, PieceName(body, i), TextStyle::Heading,
                          side == 0 ? palette::kShapeA : palette::kShapeBInk, 0.0f, 0.0f, 0.0f, LabelRank::Name);
+            // Beside the middle when the push drawn from there takes it, rather than on a leader line from the
+            // push's tail, where it reads as naming the arrow.
+            labels.AlsoAt({{middle.x, middle.y + 20.0f}, {middle.x, middle.y - 20.0f}, {middle.x - 30.0f, middle.y},
+                           {middle.x + 30.0f, middle.y}});
         }
     }
     // The boxes: every piece's at the broadphase, the pair's own at a pair's step.

@@ -2122,14 +2122,20 @@ std::vector<std::string> PushesOnEdges(const RecordingCanvas& canvas)
     return problems;
 }
 
-// A leader line that starts at the tail of the MTV's arrow (the middle of the body it moves, where a body's name
-// is led from when the arrow takes its place): it reads as naming the arrow (l02_box_and_triangle's "triangle").
+// A leader line that starts at the tail of the MTV's arrow or a piece pair's push (the middle of the body it moves,
+// where a body's name is led from when the arrow takes its place): it reads as naming the arrow
+// (l02_box_and_triangle's "triangle", l18_seam's "box").
 std::vector<std::string> LeadersFromArrowTails(const RecordingCanvas& canvas)
 {
     std::vector<std::string> problems;
-    for (const DrawCommand* shaft : canvas.InGroup("mtv"))
+    std::vector<const DrawCommand*> shafts = canvas.InGroup("mtv");
+    for (const DrawCommand* push : canvas.InGroup("push"))
     {
-        if (shaft->kind != DrawCommand::Kind::Segment || shaft->thickness < 3.0f)
+        shafts.push_back(push);
+    }
+    for (const DrawCommand* shaft : shafts)
+    {
+        if (shaft->kind != DrawCommand::Kind::Segment || shaft->thickness < (shaft->group == "push" ? 2.0f : 3.0f))
         {
             continue;
         }
