@@ -2931,7 +2931,7 @@ class Painter
                 // The MTV's arrow starts at the middle of the body it moves: the name goes just behind the arrow's
                 // tail or beside its shaft, where it still fits, rather than hang on a leader line that ends on
                 // that tail and reads as naming the arrow.
-                if (m_hasMtvArrow && std::hypot(m_mtvFrom.x - anchor.x, m_mtvFrom.y - anchor.y) < 8.0f)
+                if (m_hasMtvArrow && std::hypot(m_mtvFrom.x - anchor.x, m_mtvFrom.y - anchor.y) < 16.0f)
                 {
                     const float length = std::hypot(m_mtvFrom.x - m_mtvTo.x, m_mtvFrom.y - m_mtvTo.y);
                     const ScreenPoint back{length > 0.0f ? (m_mtvFrom.x - m_mtvTo.x) / length : 0.0f,

@@ -2143,7 +2143,7 @@ std::vector<std::string> LeadersFromArrowTails(const RecordingCanvas& canvas)
         for (const DrawCommand* leader : canvas.InGroup("labels"))
         {
             if (leader->kind == DrawCommand::Kind::Segment &&
-                std::hypot(leader->points[0].x - tail.x, leader->points[0].y - tail.y) < 6.0f)
+                std::hypot(leader->points[0].x - tail.x, leader->points[0].y - tail.y) < 10.0f)
             {
                 problems.push_back("a leader line starts at the tail of the MTV's arrow, at (" +
                                    std::to_string(static_cast<int>(tail.x)) + ", " +
