@@ -2265,6 +2265,20 @@ class Painter
         }
     }
 
+    // Whether the box of half sizes hx, hy centred on p lies wholly in `outline` (a body's name fits there).
+    static bool BoxCovered(ScreenPoint p, float hx, float hy, const std::vector<ScreenPoint>& outline)
+    {
+        for (const ScreenPoint corner : {ScreenPoint{p.x - hx, p.y - hy}, ScreenPoint{p.x + hx, p.y - hy},
+                                         ScreenPoint{p.x - hx, p.y + hy}, ScreenPoint{p.x + hx, p.y + hy}})
+        {
+            if (!Covered(corner, outline, 0.0f))
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+
     // Whether p lies inside `other` (a convex outline on screen, either way round), or within `near` pixels of it.
     static bool Covered(ScreenPoint p, const std::vector<ScreenPoint>& other, float near)
     {
@@ -2822,13 +2836,7 @@ class Painter
             {
                 const float hx = 0.5f * text.x + 4.0f;
                 const float hy = 0.5f * text.y + 2.0f;
-                for (const ScreenPoint corner : {ScreenPoint{middle.x - hx, middle.y - hy},
-                                                 ScreenPoint{middle.x + hx, middle.y - hy},
-                                                 ScreenPoint{middle.x - hx, middle.y + hy},
-                                                 ScreenPoint{middle.x + hx, middle.y + hy}})
-                {
-                    fits = fits && Covered(corner, outline, 0.0f);
-                }
+                fits = BoxCovered(middle, hx, hy, outline);
             }
             if (!fits && wide >= text.x + 8.0f && tall >= text.y + 4.0f)
             {
@@ -2889,13 +2897,7 @@ class Painter
                                                 anchor.y + shift * static_cast<float>(n.y)};
                             const float hx = 0.5f * text.x + 4.0f;
                             const float hy = 0.5f * text.y + 2.0f;
-                            bool inside = true;
-                            for (const ScreenPoint corner :
-                                 {ScreenPoint{p.x - hx, p.y - hy}, ScreenPoint{p.x + hx, p.y - hy},
-                                  ScreenPoint{p.x - hx, p.y + hy}, ScreenPoint{p.x + hx, p.y + hy}})
-                            {
-                                inside = inside && Covered(corner, outline, 0.0f);
-                            }
+                            const bool inside = BoxCovered(p, hx, hy, outline);
                             if (inside)
                             {
                                 anchor = p;
@@ -2946,13 +2948,7 @@ class Painter
                     {
                         const float shift = std::abs(way.x) * hx + std::abs(way.y) * hy + 4.0f;
                         const ScreenPoint p{origin.x + shift * way.x, origin.y + shift * way.y};
-                        bool inside = true;
-                        for (const ScreenPoint corner :
-                             {ScreenPoint{p.x - hx, p.y - hy}, ScreenPoint{p.x + hx, p.y - hy},
-                              ScreenPoint{p.x - hx, p.y + hy}, ScreenPoint{p.x + hx, p.y + hy}})
-                        {
-                            inside = inside && Covered(corner, outline, 0.0f);
-                        }
+                        const bool inside = BoxCovered(p, hx, hy, outline);
                         if (inside)
                         {
                             anchor = p;
@@ -2982,12 +2978,7 @@ class Painter
                                              std::pair{-0.25f, -0.25f}, std::pair{0.25f, -0.25f}})
                 {
                     const ScreenPoint p{middle.x + fx * wide, middle.y + fy * tall};
-                    bool inside = true;
-                    for (const ScreenPoint corner : {ScreenPoint{p.x - hx, p.y - hy}, ScreenPoint{p.x + hx, p.y - hy},
-                                                     ScreenPoint{p.x - hx, p.y + hy}, ScreenPoint{p.x + hx, p.y + hy}})
-                    {
-                        inside = inside && Covered(corner, outline, 0.0f);
-                    }
+                    const bool inside = BoxCovered(p, hx, hy, outline);
                     if (inside)
                     {
                         within.push_back(p);

@@ -1131,13 +1131,29 @@ std::vector<std::string> ReferenceFaceFar(const RecordingCanvas& canvas)
     return problems;
 }
 
+// The leader line that ends at the text's box, or null when the label sits beside its mark without one.
+const DrawCommand* LeaderTo(const RecordingCanvas& canvas, const DrawCommand& text)
+{
+    RecordingCanvas measure;
+    const ScreenPoint size = measure.MeasureText(text.text, text.style);
+    for (const DrawCommand* line : canvas.InGroup("labels"))
+    {
+        const ScreenPoint end = line->kind == DrawCommand::Kind::Segment ? line->points[1] : ScreenPoint{-1e9f, -1e9f};
+        if (end.x >= text.points[0].x - 0.5f && end.x <= text.points[0].x + size.x + 0.5f &&
+            end.y >= text.points[0].y - 0.5f && end.y <= text.points[0].y + size.y + 0.5f)
+        {
+            return line;
+        }
+    }
+    return nullptr;
+}
+
 // A reference face's name on a leader line that starts at a corner of the pair (the very end of the face) rather
 // than on the face: the line names the corner, an unnumbered one where a vertex number is left out.
 std::vector<std::string> ReferenceFaceAtCorner(const RecordingCanvas& canvas, const Scene& scene,
                                                const PairStudy& study, const View& view)
 {
     std::vector<std::string> problems;
-    RecordingCanvas measure;
     std::vector<ScreenPoint> corners;
     for (int body : {study.bodyA, study.bodyB})
     {
@@ -1156,15 +1172,8 @@ std::vector<std::string> ReferenceFaceAtCorner(const RecordingCanvas& canvas, co
         {
             continue;
         }
-        const ScreenPoint size = measure.MeasureText(c->text, c->style);
-        for (const DrawCommand* line : canvas.InGroup("labels"))
+        if (const DrawCommand* line = LeaderTo(canvas, *c))
         {
-            const ScreenPoint end = line->kind == DrawCommand::Kind::Segment ? line->points[1] : ScreenPoint{-1e9f, -1e9f};
-            if (end.x < c->points[0].x - 0.5f || end.x > c->points[0].x + size.x + 0.5f ||
-                end.y < c->points[0].y - 0.5f || end.y > c->points[0].y + size.y + 0.5f)
-            {
-                continue;
-            }
             const ScreenPoint start = line->points[0];
             for (const ScreenPoint& corner : corners)
             {
@@ -1220,16 +1229,11 @@ std::vector<std::string> ReferenceFaceBeyondEnd(const RecordingCanvas& canvas)
         }
         // Past an end only on a leader line that leaves the face at 30 degrees or more.
         bool steep = false;
-        for (const DrawCommand* line : canvas.InGroup("labels"))
+        if (const DrawCommand* line = LeaderTo(canvas, *c))
         {
-            const ScreenPoint end = line->kind == DrawCommand::Kind::Segment ? line->points[1] : ScreenPoint{-1e9f, -1e9f};
-            if (end.x >= c->points[0].x - 0.5f && end.x <= c->points[0].x + size.x + 0.5f &&
-                end.y >= c->points[0].y - 0.5f && end.y <= c->points[0].y + size.y + 0.5f)
-            {
-                const float lx = end.x - line->points[0].x;
-                const float ly = end.y - line->points[0].y;
-                steep = std::abs(lx * (b.y - a.y) - ly * (b.x - a.x)) >= 0.5f * std::hypot(lx, ly) * std::sqrt(length2);
-            }
+            const float lx = line->points[1].x - line->points[0].x;
+            const float ly = line->points[1].y - line->points[0].y;
+            steep = std::abs(lx * (b.y - a.y) - ly * (b.x - a.x)) >= 0.5f * std::hypot(lx, ly) * std::sqrt(length2);
         }
         if ((high < 0.0f || low > 1.0f) && !steep)
         {
@@ -1631,18 +1635,7 @@ std::vector<std::string> NamesAstray(const RecordingCanvas& canvas, const Scene&
 // Whether a leader line ends at the text's box: the line shows what the label names.
 bool OnLeader(const RecordingCanvas& canvas, const DrawCommand& text)
 {
-    RecordingCanvas measure;
-    const ScreenPoint size = measure.MeasureText(text.text, text.style);
-    for (const DrawCommand* line : canvas.InGroup("labels"))
-    {
-        const ScreenPoint end = line->kind == DrawCommand::Kind::Segment ? line->points[1] : ScreenPoint{-1e9f, -1e9f};
-        if (end.x >= text.points[0].x - 0.5f && end.x <= text.points[0].x + size.x + 0.5f &&
-            end.y >= text.points[0].y - 0.5f && end.y <= text.points[0].y + size.y + 0.5f)
-        {
-            return true;
-        }
-    }
-    return false;
+    return LeaderTo(canvas, text) != nullptr;
 }
 
 // The corners of the dashed outlines (where the MTV or a pitfall's push leaves a body, a moving body at another
@@ -2160,7 +2153,6 @@ std::vector<std::string> LeadersFromArrowTails(const RecordingCanvas& canvas)
 std::vector<std::string> BandLeadersAstray(const RecordingCanvas& canvas)
 {
     std::vector<std::string> problems;
-    RecordingCanvas measure;
     std::vector<const DrawCommand*> bands;
     for (const DrawCommand* d : canvas.InGroup("projection"))
     {
@@ -2177,15 +2169,8 @@ std::vector<std::string> BandLeadersAstray(const RecordingCanvas& canvas)
         {
             continue;
         }
-        const ScreenPoint size = measure.MeasureText(c->text, c->style);
-        for (const DrawCommand* line : canvas.InGroup("labels"))
+        if (const DrawCommand* line = LeaderTo(canvas, *c))
         {
-            const ScreenPoint end = line->kind == DrawCommand::Kind::Segment ? line->points[1] : ScreenPoint{-1e9f, -1e9f};
-            if (end.x < c->points[0].x - 0.5f || end.x > c->points[0].x + size.x + 0.5f ||
-                end.y < c->points[0].y - 0.5f || end.y > c->points[0].y + size.y + 0.5f)
-            {
-                continue;
-            }
             const ScreenPoint start = line->points[0];
             const bool onBand = std::any_of(bands.begin(), bands.end(), [&](const DrawCommand* band) {
                 return ToSegment(start, band->points[0], band->points[1]) < 0.5f * band->thickness + 2.0f;
@@ -2205,7 +2190,6 @@ std::vector<std::string> BandLeadersAstray(const RecordingCanvas& canvas)
 std::vector<std::string> FaceLeadersFromDots(const RecordingCanvas& canvas)
 {
     std::vector<std::string> problems;
-    RecordingCanvas measure;
     std::vector<ScreenPoint> dots;
     for (const DrawCommand* c : canvas.InGroup("contacts"))
     {
@@ -2220,15 +2204,8 @@ std::vector<std::string> FaceLeadersFromDots(const RecordingCanvas& canvas)
         {
             continue;
         }
-        const ScreenPoint size = measure.MeasureText(c->text, c->style);
-        for (const DrawCommand* line : canvas.InGroup("labels"))
+        if (const DrawCommand* line = LeaderTo(canvas, *c))
         {
-            const ScreenPoint end = line->kind == DrawCommand::Kind::Segment ? line->points[1] : ScreenPoint{-1e9f, -1e9f};
-            if (end.x < c->points[0].x - 0.5f || end.x > c->points[0].x + size.x + 0.5f ||
-                end.y < c->points[0].y - 0.5f || end.y > c->points[0].y + size.y + 0.5f)
-            {
-                continue;
-            }
             for (const ScreenPoint& dot : dots)
             {
                 if (std::hypot(line->points[0].x - dot.x, line->points[0].y - dot.y) < 7.0f)
