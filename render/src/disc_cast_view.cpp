@@ -8,8 +8,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace satviz
 {
@@ -30,6 +33,85 @@ std::string Point(Vec2 p)
 Vec2 Printed(Vec2 p)
 {
     return {std::stod(FormatNumber(p.x)), std::stod(FormatNumber(p.y))};
+}
+
+// x rounded to the given decimals, and written with them: the normal of a check that three decimals would round
+// away from the centre it gives.
+double Rounded(double x, int decimals)
+{
+    const double scale = std::pow(10.0, decimals);
+    return std::round(x * scale) / scale;
+}
+
+std::string Fixed(double x, int decimals)
+{
+    char buffer[48];
+    std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, x);
+    return buffer;
+}
+
+// A piece of a concave body named so that a reader finds it in the figure, which draws the seams but numbers no
+// piece: by where its middle lies in the body's box ("cup's bottom piece"), when no other piece lies there too;
+// else by its corners.
+std::string PieceWhere(const Body& body, int piece)
+{
+    const Transform xf = body.Xf();
+    const auto middleOf = [&](const ConcavePart& part) {
+        Vec2 sum{};
+        for (const Vec2& v : part.shape.polygon.Vertices())
+        {
+            sum = sum + TransformPoint(xf, v);
+        }
+        return (1.0 / part.shape.polygon.Count()) * sum;
+    };
+    Vec2 low{1e300, 1e300};
+    Vec2 high{-1e300, -1e300};
+    for (const ConcavePart& part : body.concave.parts)
+    {
+        for (const Vec2& local : part.shape.polygon.Vertices())
+        {
+            const Vec2 v = TransformPoint(xf, local);
+            low = {std::min(low.x, v.x), std::min(low.y, v.y)};
+            high = {std::max(high.x, v.x), std::max(high.y, v.y)};
+        }
+    }
+    // The box in thirds each way: "bottom-left", "top", "right", "middle".
+    const auto region = [&](Vec2 m) {
+        const auto third = [](double x, double lo, double hi) {
+            const double f = hi > lo ? (x - lo) / (hi - lo) : 0.5;
+            return f < 1.0 / 3.0 ? 0 : f > 2.0 / 3.0 ? 2 : 1;
+        };
+        const char* rows[] = {"bottom", "", "top"};
+        const char* columns[] = {"left", "", "right"};
+        const std::string row = rows[third(m.y, low.y, high.y)];
+        const std::string column = columns[third(m.x, low.x, high.x)];
+        if (row.empty() && column.empty())
+        {
+            return std::string("middle");
+        }
+        return row.empty() || column.empty() ? row + column : row + "-" + column;
+    };
+    const std::vector<ConcavePart>& parts = body.concave.parts;
+    const std::string where = region(middleOf(parts[static_cast<size_t>(piece)]));
+    bool alone = true;
+    for (size_t i = 0; i < parts.size(); ++i)
+    {
+        alone = alone && (static_cast<int>(i) == piece || region(middleOf(parts[i])) != where);
+    }
+    if (alone)
+    {
+        return body.name + "'s " + where + " piece";
+    }
+    const Polygon& polygon = parts[static_cast<size_t>(piece)].shape.polygon;
+    std::string corners;
+    for (int i = 0; i < polygon.Count(); ++i)
+    {
+        corners += (i == 0                     ? ""
+                    : i + 1 == polygon.Count() ? " and "
+                                               : ", ") +
+                   Point(TransformPoint(xf, polygon.Vertices()[i]));
+    }
+    return "the piece of " + body.name + " with corners " + corners;
 }
 
 // The target's outline in the world, counter-clockwise: a concave body's as written, a polygon's vertices; empty for
@@ -116,28 +198,29 @@ std::string DescribeDiscCast(const Body& target, const Body& disc, const DiscHit
                "'s outline pushed out by the radius (dashed), so the disc passes " + target.name +
                " without touching it.";
     }
-    // Said as an ordinal, counted from 1 as the figures name pieces, so that it is not read as the index from 0
-    // that satviz-query prints.
-    const auto ordinal = [](int n) {
-        const int tens = n % 100;
-        const char* suffix = tens >= 11 && tens <= 13 ? "th"
-                             : n % 10 == 1             ? "st"
-                             : n % 10 == 2             ? "nd"
-                             : n % 10 == 3             ? "rd"
-                                                       : "th";
-        return std::to_string(n) + suffix;
-    };
-    const std::string piece = hit.piece >= 0 ? " (the " + ordinal(hit.piece + 1) + " piece of " + target.name + ")" : "";
-    // The check a reader makes, from the numbers as printed: where it differs from the centre printed, only by
-    // rounding, the sentence says so.
-    const Vec2 sum = Printed(hit.point) + std::stod(FormatNumber(r)) * Printed(hit.normal);
-    const std::string check =
-        Point(sum) == Point(hit.center) ? Point(hit.center) : Point(sum) + ", the centre but for rounding";
+    const std::string piece = hit.piece >= 0 ? ", on " + PieceWhere(target, hit.piece) : "";
+    // The check a reader makes, from the numbers as printed. Where the normal's three decimals round the sum away
+    // from the centre printed, the check writes the normal with as many more decimals as it takes to agree.
+    const Vec2 point = Printed(hit.point);
+    const double printedR = std::stod(FormatNumber(r));
+    std::string normalInCheck = Point(hit.normal);
+    std::string check = Point(point + printedR * Printed(hit.normal));
+    for (int decimals = 4; check != Point(hit.center) && decimals <= 6; ++decimals)
+    {
+        const Vec2 finer{Rounded(hit.normal.x, decimals), Rounded(hit.normal.y, decimals)};
+        normalInCheck = "(" + Fixed(finer.x, decimals) + ", " + Fixed(finer.y, decimals) + ")";
+        check = Point(point + printedR * finer);
+    }
+    if (check != Point(hit.center))
+    {
+        normalInCheck = Point(hit.normal);
+        check = Point(point + printedR * Printed(hit.normal)) + ", the centre but for rounding";
+    }
     return text + "It first touches " + target.name + " when its centre meets " + target.name +
            "'s outline pushed out by the radius (dashed), at t = " + FormatNumber(hit.fraction) +
            " of the way: centre " + Point(hit.center) + ". The contact point is " + Point(hit.point) + piece +
            ", where the outward normal is " + Point(hit.normal) + ": the centre lies one radius out along it, " +
-           Point(hit.point) + " + " + FormatNumber(r) + " \xC3\x97 " + Point(hit.normal) + " = " + check + ".";
+           Point(hit.point) + " + " + FormatNumber(r) + " \xC3\x97 " + normalInCheck + " = " + check + ".";
 }
 
 DiscHit CastFigureDisc(const Body& target, const Body& disc)

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -397,6 +398,9 @@ TEST_CASE("The disc-cast figure stops the disc where its rim first meets the sha
         CHECK(caption.find("at t = " + FormatNumber(t) + " of the way: centre (" + FormatNumber(1.6 + 1.2 * t) +
                            ", 1.300)") != std::string::npos);
         CHECK(caption.find("where the outward normal is (0.00, 1.00)") != std::string::npos);
+        // The figure numbers no piece: the header names the one the disc lands on by where it lies in the cup, the
+        // floor below the notch, whose middle is in the bottom third of the cup's box.
+        CHECK(caption.find("The contact point is (2.488, 1.000), on cup's bottom piece,") != std::string::npos);
         // On the figure: the disc drawn at the hit touches the contact point with its rim.
         std::vector<ScreenPoint> discs;
         float radius = 0.0f;
@@ -427,6 +431,15 @@ TEST_CASE("The disc-cast figure stops the disc where its rim first meets the sha
         INFO(caption);
         CHECK(caption.find("at t = " + FormatNumber((x + 3.0) / 6.0) + " of the way") != std::string::npos);
         CHECK(caption.find("The contact point is (-0.50, 1.50)") != std::string::npos);
+        // The check adds the printed contact point and radius times the normal, and gives the centre as printed:
+        // with the normal's three decimals, 0.40 x -0.661 would give -0.764 beside the centre's -0.765.
+        // Four decimals of the normal, ((x + 0.5) / 0.4, 0.3 / 0.4), are enough for the sum to agree.
+        char normal[64];
+        std::snprintf(normal, sizeof(normal), "(%.4f, %.4f)", (x + 0.5) / 0.4, 0.3 / 0.4);
+        CHECK(caption.find("centre (" + FormatNumber(x) + ", 1.800)") != std::string::npos);
+        CHECK(caption.find("(-0.50, 1.50) + 0.40 \xC3\x97 " + std::string(normal) + " = (" + FormatNumber(x) +
+                           ", 1.800).") != std::string::npos);
+        CHECK(caption.find("but for rounding") == std::string::npos);
     }
     SECTION("A disc that passes a radius clear of the wall misses it")
     {
