@@ -380,6 +380,15 @@ void Stepper::CorrectPositions()
             push(a, b, m.normal, point - c[a], point - c[b], m.contacts[k].separation, factor);
         }
     };
+    // Per contact: its bodies moved far against each other in the step, at the velocities that moved them.
+    std::vector<uint8_t> farApart(solverContacts.size());
+    for (size_t k = 0; k < solverContacts.size(); ++k)
+    {
+        const SolverContact& sc = solverContacts[k];
+        const SolverBody& sa = solverBodies[sc.a];
+        const SolverBody& sb = solverBodies[sc.b];
+        farApart[k] = OutrunsPair(settings, bodies[sc.a], sa.v, sa.w, bodies[sc.b], sb.v, sb.w, dt) ? 1 : 0;
+    }
     // One contact's points moved apart by `factor` of their overlap beyond the slop.
     const auto correct = [&](const SolverContact& sc, double factor) {
         const int a = sc.a, b = sc.b;
@@ -397,7 +406,12 @@ void Stepper::CorrectPositions()
         // contact, held the pair), they measure an overlap that is not there (a spinning box's face, turned half a
         // radian about its centre, still reaching a post its outline has left), and each push turns that face
         // further in. Such a pair is measured afresh at the present poses, as a guard is.
-        if (spinning[static_cast<size_t>(a)] || spinning[static_cast<size_t>(b)])
+        // So is a pair whose bodies moved far against each other in the step (OutrunsPair, the sweep's own rule):
+        // the anchors hold only while each point stays on the face it was found on. A body sliding fast past a
+        // thin post's end carries its face's plane beyond the post's corner, and measured against that plane the
+        // corner, now clear of the body, seems deep inside it.
+        if (spinning[static_cast<size_t>(a)] || spinning[static_cast<size_t>(b)] ||
+            farApart[static_cast<size_t>(&sc - solverContacts.data())])
         {
             guard(sc, factor, false);
             return;
