@@ -575,8 +575,15 @@ void Panels::Handles(ImDrawList* list, ImVec2 origin)
     list->AddLine(at(StemFoot(camera, body)), turn, IM_COL32(43, 43, 43, 120), 1.0f);
     list->AddCircleFilled(turn, 6.0f, white);
     list->AddCircle(turn, 6.0f, ink, 0, 1.5f);
+    // The velocity handle is a white diamond, as the other handles are white and inked: a vermillion dot, the
+    // figures' mark of a contact point, read as one more contact beside the pair's own.
     const ImVec2 velocity = at(VelocityHandle(camera, body));
-    list->AddCircleFilled(velocity, 5.0f, IM_COL32(213, 94, 0, 255));
+    const ImVec2 top(velocity.x, velocity.y - 6.0f);
+    const ImVec2 right(velocity.x + 6.0f, velocity.y);
+    const ImVec2 bottom(velocity.x, velocity.y + 6.0f);
+    const ImVec2 left(velocity.x - 6.0f, velocity.y);
+    list->AddQuadFilled(top, right, bottom, left, white);
+    list->AddQuad(top, right, bottom, left, ink, 1.5f);
     // Where the figure names the arrow whose tip this is, its "v" (kept off the handle) is the only one.
     if (!FigureNamesVelocity(m_app))
     {

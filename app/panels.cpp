@@ -1475,7 +1475,7 @@ void Panels::HelpOverlay()
                    "it, Esc to stop");
         HelpBullet("x, then drag a line across polygons: cut them (in the simulation, the bodies as they move "
                    "there); Esc to stop");
-        HelpBullet("drag the arrow tip (or the small v handle): set the velocity (the arrow: one time unit)");
+        HelpBullet("drag the arrow tip (the white diamond, or beside a still body the diamond marked v): set the velocity (the arrow: one time unit)");
         HelpBullet("the hits layer: click a hit on its time bar to see its bodies at that instant (again: all hits)");
         HelpBullet("while the simulation plays, drag a body: it follows the pointer, and leaves at the pointer's "
                    "speed when you let go (a throw)");
@@ -1557,7 +1557,9 @@ void Panels::LessonWindow()
             {
                 ImGui::NewLine();
             }
-            if (ImGui::SmallButton(name.c_str()))
+            const bool clicked = ImGui::SmallButton(name.c_str());
+            Announce("lesson scene " + name);
+            if (clicked)
             {
                 // The lesson's first scene opens where opening the lesson shows it, at the figure its text begins
                 // with; the others as their views ask.

@@ -1616,6 +1616,35 @@ TEST_CASE("A selected moving body's velocity handle sits on the tip of the figur
     CHECK_FALSE(FigureNamesVelocity(*h.app));
 }
 
+TEST_CASE("The velocity handle is not drawn as a contact point: no vermillion dot where it lies", "[app]")
+{
+    // overlapping_boxes draws its two contact points as vermillion dots; B's velocity handle lies right of B, away
+    // from them. Drawn in the contacts' colour it read as a third contact point.
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    h.app->Select(1);
+    h.Frames(2);
+    const ScreenPoint at = VelocityHandleAt(h.View().Camera(), h.BodyNamed("B"));
+    const ImVec2 origin = h.CanvasOrigin();
+    const ImU32 vermillion = IM_COL32(0xD5, 0x5E, 0x00, 0xFF);
+    int handleInk = 0;
+    int vermillionNear = 0;
+    const ImDrawData* data = ImGui::GetDrawData();
+    REQUIRE(data != nullptr);
+    for (int l = 0; l < data->CmdListsCount; ++l)
+    {
+        for (const ImDrawVert& v : data->CmdLists[l]->VtxBuffer)
+        {
+            if (std::hypot(v.pos.x - (at.x + origin.x), v.pos.y - (at.y + origin.y)) <= 7.0f)
+            {
+                ++handleInk;
+                vermillionNear += v.col == vermillion ? 1 : 0;
+            }
+        }
+    }
+    CHECK(handleInk > 0); // the handle is drawn there
+    CHECK(vermillionNear == 0);
+}
+
 TEST_CASE("A slider's text lies beside its grab, never half on it", "[app]")
 {
     Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
