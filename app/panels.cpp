@@ -1452,6 +1452,44 @@ void Panels::Popups()
     }
 }
 
+// The help's sections after its opening paragraph: the mouse, the keys (every key of AppKeys), the conventions.
+const std::vector<HelpSection>& HelpSections()
+{
+    static const std::vector<HelpSection> sections = {
+        {"Mouse",
+         {"drag a body: move it;  shift-drag, or the round handle above it: turn it",
+          "drag a vertex handle of the selected polygon: reshape it (it may become concave: it is cut into convex "
+          "pieces; its outline must not cross itself)",
+          "d, then click: draw a polygon vertex by vertex; click the first vertex or press Enter to close it, Esc to "
+          "stop",
+          "x, then drag a line across polygons: cut them (in the simulation, the bodies as they move there); Esc to "
+          "stop",
+          "drag the arrow tip (the white diamond, or beside a still body the diamond marked v): set the velocity (the "
+          "arrow: one time unit)",
+          "the hits layer: click a hit on its time bar to see its bodies at that instant (again: all hits)",
+          "while the simulation plays, drag a body: it follows the pointer, and leaves at the pointer's speed when "
+          "you let go (a throw)",
+          "drag empty space, or with the right button: pan;  wheel: zoom about the pointer"}},
+        {"Keys",
+         {"left / right: previous / next step (past faces decided without evaluation);  space: play or pause",
+          "p: play or pause the simulation;  , (comma) / . (period): its step before / next step",
+          "ctrl+z / ctrl+y: undo / redo;  del: delete the selected body;  f: fit the pair",
+          "ctrl+o: open;  ctrl+s: save;  ctrl+e: export a PNG;  ctrl+q: quit;  F1: this help"}},
+        // As the scene format has it (core/scene/README.md, "velocity" and "world"): units per time unit, a step
+        // lasting dt.
+        {"Conventions",
+         {"world y points up; angles are radians, counter-clockwise",
+          "polygon vertices go counter-clockwise, the interior on their left",
+          "the normal points from A to B: moving B by depth x normal separates the pair",
+          "a velocity is in units per time unit: its arrow and the swept test (t from 0 to 1) cover one time unit",
+          "without a world block a step lasts dt = 1, so a velocity is the displacement over one step; lessons 14 "
+          "to 17 are in metres and seconds (m/s, steps of dt = 1/60 s), so t runs over one second, 60 steps",
+          "the simulation steps a scene that has a world block; Add a world, under Simulation, gives one to a scene "
+          "that has none (steps of 1/60 s, no gravity)"}},
+    };
+    return sections;
+}
+
 void Panels::HelpOverlay()
 {
     const ImVec2 center = ImGui::GetMainViewport()->GetCenter();
@@ -1466,38 +1504,18 @@ void Panels::HelpOverlay()
                     "enough to try the normals of their edges. The test projects both shapes on each axis "
                     "in turn and stops at the first gap. When every axis overlaps, the axis needing the "
                     "smallest push gives the minimum translation vector (MTV).");
-        ImGui::Separator();
-        ImGui::TextUnformatted("Mouse");
-        HelpBullet("drag a body: move it;  shift-drag, or the round handle above it: turn it");
-        HelpBullet("drag a vertex handle of the selected polygon: reshape it (it may become concave: it is cut into "
-                   "convex pieces; its outline must not cross itself)");
-        HelpBullet("d, then click: draw a polygon vertex by vertex; click the first vertex or press Enter to close "
-                   "it, Esc to stop");
-        HelpBullet("x, then drag a line across polygons: cut them (in the simulation, the bodies as they move "
-                   "there); Esc to stop");
-        HelpBullet("drag the arrow tip (the white diamond, or beside a still body the diamond marked v): set the velocity (the arrow: one time unit)");
-        HelpBullet("the hits layer: click a hit on its time bar to see its bodies at that instant (again: all hits)");
-        HelpBullet("while the simulation plays, drag a body: it follows the pointer, and leaves at the pointer's "
-                   "speed when you let go (a throw)");
-        HelpBullet("drag empty space, or with the right button: pan;  wheel: zoom about the pointer");
-        ImGui::TextUnformatted("Keys");
-        HelpBullet("left / right: previous / next step (past faces decided without evaluation);  space: play or "
-                   "pause");
-        HelpBullet("ctrl+z / ctrl+y: undo / redo;  del: delete the selected body;  f: fit the pair");
-        HelpBullet("ctrl+o: open;  ctrl+s: save;  ctrl+e: export a PNG;  ctrl+q: quit;  F1: this help");
-        ImGui::TextUnformatted("Conventions");
-        HelpBullet("world y points up; angles are radians, counter-clockwise");
-        HelpBullet("polygon vertices go counter-clockwise, the interior on their left");
-        HelpBullet("the normal points from A to B: moving B by depth x normal separates the pair");
-        // As the scene format has it (core/scene/README.md, "velocity" and "world"): units per time unit, a step
-        // lasting dt.
-        HelpBullet("a velocity is in units per time unit: its arrow and the swept test (t from 0 to 1) cover one "
-                   "time unit");
-        HelpBullet("without a world block a step lasts dt = 1, so a velocity is the displacement over one step; "
-                   "lessons 14 to 17 are in metres and seconds (m/s, steps of dt = 1/60 s), so t runs over one "
-                   "second, 60 steps");
-        HelpBullet("the simulation steps a scene that has a world block; Add a world, under Simulation, gives one "
-                   "to a scene that has none (steps of 1/60 s, no gravity)");
+        for (const HelpSection& section : HelpSections())
+        {
+            if (section.title == std::string("Mouse"))
+            {
+                ImGui::Separator();
+            }
+            ImGui::TextUnformatted(section.title);
+            for (const char* line : section.lines)
+            {
+                HelpBullet(line);
+            }
+        }
     }
     ImGui::End();
 }

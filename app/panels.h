@@ -22,6 +22,16 @@ namespace satviz
 
 class App;
 
+/// A section of the help (F1): its title and its lines, each drawn as a bullet.
+struct HelpSection
+{
+    const char* title;
+    std::vector<const char*> lines;
+};
+
+/// The help's sections after its opening paragraph, as F1 shows them: the mouse, every key, the conventions.
+const std::vector<HelpSection>& HelpSections();
+
 /// Width of the lesson column on the left of the canvas, in pixels, while a lesson is open.
 constexpr float kLessonWidth = 440.0f;
 

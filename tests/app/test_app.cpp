@@ -2252,6 +2252,28 @@ TEST_CASE("Opening a lesson with unsaved changes shows it and asks before its sc
     CHECK(Harness::Showing("Help (F1 or Esc closes)"));
 }
 
+TEST_CASE("F1 names every key the app answers to, the simulation's among them", "[app]")
+{
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/l14_head_on.json");
+    h.Key(h.app->Options().keys.f1);
+    REQUIRE(Harness::Showing("Help (F1 or Esc closes)"));
+    std::string shown;
+    for (const HelpSection& section : HelpSections())
+    {
+        for (const char* line : section.lines)
+        {
+            shown += std::string(line) + "\n";
+        }
+    }
+    // One name for each key of AppKeys (and the step keys and undo), written as the help writes keys.
+    for (const char* key : {"ctrl+s", "ctrl+o", "ctrl+e", "ctrl+q", "f: ", "F1", "p: ", ", (comma)", ". (period)",
+                            "d, then", "x, then", "left / right", "space", "ctrl+z", "del"})
+    {
+        INFO(key);
+        CHECK(shown.find(key) != std::string::npos);
+    }
+}
+
 TEST_CASE("A scene that frames itself keeps its framing, scaled to the canvas left beside a lesson", "[app][lessons]")
 {
     // The lessons' scenes frame their figures for 800 x 600 pixels; beside the lesson column and the side panel the
