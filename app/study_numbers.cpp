@@ -81,12 +81,13 @@ std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& st
         }
     }
     point(m.overlap ? "MTV direction (A to B)" : "normal (A to B)", normal);
-    const int contacts = (layers & kLayerContacts) != 0 ? m.contactCount : 0;
+    // The contact points the figure draws: a sweep's figure draws those at the time of impact (the panel lists
+    // them above, as c1, c2) and none at t = 0, so the static test beside it lists none either.
+    const int contacts = (layers & kLayerContacts) != 0 && !study.sweep ? m.contactCount : 0;
     for (int i = 0; i < contacts; ++i)
     {
         // In the order the figure labels them c1, c2, and satviz-query lists "contacts".
-        point(study.sweep ? "contact " + std::to_string(i + 1) : "contact c" + std::to_string(i + 1),
-              m.contacts[i].point);
+        point("contact c" + std::to_string(i + 1), m.contacts[i].point);
     }
     return rows;
 }

@@ -32,10 +32,10 @@ std::vector<std::string> PanelPair(Vec2 p, const PairStudy& study, bool allDigit
 /// ShownVerdictAmount), so that a number in the panel and the same number in the step's sentence read alike: overlap or
 /// not, the depth or the gap, the deciding axis as the figure draws it and the lessons' tables list it (the outward
 /// normal of the face that names it, the direction satviz-query's trace gives), the normal from A to B (satviz-query's
-/// "normal"; against the axis when that is a face of B), and the contact points c1, c2 (only numbered in a sweep, whose
-/// c1 and c2 are the contacts at the time of impact). With `allDigits`, every number as PanelNumber gives it with all
-/// its digits. The contact points are listed only when `layers` has the contacts layer, which draws them: the panel
-/// lists no point the picture leaves out.
+/// "normal"; against the axis when that is a face of B), and the contact points c1, c2. With `allDigits`, every number
+/// as PanelNumber gives it with all its digits. The contact points are listed only when `layers` has the contacts
+/// layer, which draws them, and not beside a sweep, whose figure draws its contacts at the time of impact (c1, c2)
+/// and none at t = 0: the panel lists no point the picture leaves out.
 std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study, bool allDigits = false,
                                          LayerMask layers = kAllLayers);
 

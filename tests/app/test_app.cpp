@@ -3723,6 +3723,41 @@ TEST_CASE("The Numbers panel lists the contact points the figure draws, and only
     }
 }
 
+TEST_CASE("Beside a sweep the Numbers panel lists only the contacts the figure draws, those at impact", "[app]")
+{
+    // A sweep's figure draws the contact points at the time of impact (c1, c2), none at t = 0. sliding_past has no
+    // hit and draws none, and its panel listed "contact 1: (-1.50, 0.25)" and "contact 2" under the static test;
+    // ex09_touching listed them beside c1 and c2 in the other order, (-1.25, 0.25) as contact 1 where c1 is
+    // (-0.75, 0.25).
+    for (const char* name : {"sliding_past.json", "ex09_touching.json", "bullet_wall.json", "l08_throw.json"})
+    {
+        Harness h((fs::path(SATVIZ_SOURCE_DIR) / "tutorials" / "scenes" / name).string());
+        h.app->ShowStep(h.View().VerdictStep());
+        h.Frames(1);
+        const PairStudy& study = h.View().Setup().study;
+        REQUIRE(study.sweep);
+        Figure figure = CanvasFigure(*h.app);
+        figure.step = h.View().VerdictStep();
+        RecordingCanvas canvas;
+        PaintFigure(canvas, h.View().Studied(), study, figure);
+        int dots = 0;
+        for (const DrawCommand* c : canvas.InGroup("contacts"))
+        {
+            dots += c->kind == DrawCommand::Kind::FillCircle ? 1 : 0;
+        }
+        // The panel's rows "contact cK at impact" (one per contact of a hit), then the static test's rows.
+        const bool hit = (study.Textbook() ? study.textbookSweepResult.status : study.sweepResult.status) ==
+                         SweepStatus::Hit;
+        int listed = hit && (h.View().Choices().layers & kLayerContacts) != 0 ? study.sweepResult.contactCount : 0;
+        for (const NumberRow& row : StaticTestNumbers(h.View().Studied(), study, false, h.View().Choices().layers))
+        {
+            listed += row.label.rfind("contact", 0) == 0 ? 1 : 0;
+        }
+        INFO(name);
+        CHECK(listed == dots);
+    }
+}
+
 TEST_CASE("A status message of two lines has them spaced as the panels' lines, inside the bar", "[app]")
 {
     // Opened at its view's sim_steps, l14_head_on_after's message takes two lines; the second sat on the window's
