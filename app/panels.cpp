@@ -929,11 +929,16 @@ void Panels::Inspector()
     {
         WrappedText("Moving, but overlapping at t = 0: no time of impact; the static test at t = 0:");
     }
+    else
+    {
+        WrappedText(StaticHeading());
+        ImGui::Indent();
+    }
     for (const NumberRow& row : StaticTestNumbers(m_app.ShownScene(), study, m_allDigits, viewer.Choices().layers))
     {
         NumberLine(row.label, row.parts);
     }
-    if (study.sweep)
+    if (study.sweep || !study.startsOverlapping)
     {
         ImGui::Unindent();
     }

@@ -92,6 +92,11 @@ std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& st
     return rows;
 }
 
+std::string StaticHeading()
+{
+    return "The test's answer, as its verdict gives it (at every step):";
+}
+
 std::string SweepHeading(const Scene& scene)
 {
     return SweptSpan(scene) == "the step" ? "Swept test over the step (t from 0 to 1):"

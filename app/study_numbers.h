@@ -39,6 +39,10 @@ std::vector<std::string> PanelPair(Vec2 p, const PairStudy& study, bool allDigit
 std::vector<NumberRow> StaticTestNumbers(const Scene& scene, const PairStudy& study, bool allDigits = false,
                                          LayerMask layers = kAllLayers);
 
+/// The heading of the static test's numbers when they stand alone (no sweep): they are the verdict's, the test's
+/// answer, at whichever step the list shows, so that "overlap: yes" or a gap is not read as the axis stepped to.
+std::string StaticHeading();
+
 /// The heading of a sweep's numbers, naming what t from 0 to 1 covers as the verdict does (SweptSpan): the step, or
 /// in a world's scene one second, whose velocities are per second, not one step of the world.
 std::string SweepHeading(const Scene& scene);

@@ -3758,6 +3758,30 @@ TEST_CASE("Beside a sweep the Numbers panel lists only the contacts the figure d
     }
 }
 
+TEST_CASE("The static test's numbers are the verdict's at every step, and their heading says so", "[app]")
+{
+    // At axis 1 of overlapping_boxes the list and the sentence give that axis's overlap, 0.525; the Numbers panel
+    // gives the test's answer, an MTV of 0.184 along B's edge 3, under no heading, and read as axis 1's.
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    h.app->ShowStep(0);
+    h.Frames(1);
+    const PairStudy& study = h.View().Setup().study;
+    REQUIRE_FALSE(study.sweep);
+    REQUIRE(h.View().Step() != h.View().VerdictStep());
+    std::string depth;
+    for (const NumberRow& row : StaticTestNumbers(h.View().Studied(), study, false, h.View().Choices().layers))
+    {
+        if (row.label == "MTV length (depth)")
+        {
+            depth = row.parts.front();
+        }
+    }
+    CHECK(depth == FormatNumber(study.manifold.depth)); // the verdict's depth, at axis 1
+    CHECK(depth != FormatNumber(study.textbook.axes.front().overlap));
+    CHECK(StaticHeading().find("verdict") != std::string::npos);
+    CHECK(StaticHeading().find("every step") != std::string::npos);
+}
+
 TEST_CASE("A status message of two lines has them spaced as the panels' lines, inside the bar", "[app]")
 {
     // Opened at its view's sim_steps, l14_head_on_after's message takes two lines; the second sat on the window's
