@@ -4,6 +4,7 @@
 #include <satviz/broadphase.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace satviz
 {
@@ -69,6 +70,62 @@ double Upper(const Aabb& box, int axis)
     return axis == 0 ? box.max.x : box.max.y;
 }
 
+// Boxes from which the sweep splits the other axis into bands: fewer cost more to split than they save.
+constexpr int kBandedFrom = 256;
+// A band's height in mean box heights (on the other axis): lower, and more boxes span two bands and are swept
+// twice; higher, and each box meets more boxes of other rows.
+constexpr double kBandHeight = 2.0;
+
+// Equal bands across the other axis, from the lowest lower bound up; the last takes all above it.
+struct Bands
+{
+    double low = 0.0;     // the lowest lower bound
+    double perBand = 0.0; // bands per unit of length
+    int count = 1;        // bands
+
+    // The band of position v. Monotone in v, so a box [l, u] spans the bands Of(l) to Of(u) and any v within it
+    // falls in one of those.
+    int Of(double v) const
+    {
+        const double t = (v - low) * perBand;
+        return t < 1.0 ? 0 : (t < count ? static_cast<int>(t) : count - 1);
+    }
+};
+
+Bands MakeBands(const std::vector<SortAndSweep::Entry>& sorted)
+{
+    Bands bands;
+    const int n = static_cast<int>(sorted.size());
+    if (n < kBandedFrom)
+    {
+        return bands;
+    }
+    double low = sorted[0].otherLower;
+    double high = sorted[0].otherUpper;
+    double heights = 0.0;
+    for (const SortAndSweep::Entry& e : sorted)
+    {
+        low = std::min(low, e.otherLower);
+        high = std::max(high, e.otherUpper);
+        heights += e.otherUpper - e.otherLower;
+    }
+    const double height = kBandHeight * heights / n;
+    // Boxes with bounds that are not finite (or all flat) are swept in one band, as they come.
+    if (!(std::isfinite(high - low) && std::isfinite(height) && height > 0.0))
+    {
+        return bands;
+    }
+    const double count = std::min((high - low) / height, n / 8.0);
+    if (!(count >= 2.0))
+    {
+        return bands;
+    }
+    bands.low = low;
+    bands.count = static_cast<int>(count);
+    bands.perBand = bands.count / (high - low);
+    return bands;
+}
+
 } // namespace
 
 // Outline (Baraff, 1992; Ericson, 7.5):
@@ -76,9 +133,11 @@ double Upper(const Aabb& box, int axis)
 //  2. Order the boxes by their lower bound on it: an insertion sort of the last order when the count is unchanged
 //     (boxes that moved a little swap with few neighbours), else a full sort. Ties go by index, so the order, and
 //     with it the work, depends only on the boxes.
-//  3. Sweep: a box meets the boxes after it in the order whose lower bound is within its upper bound; each such
-//     pair is checked on the other axis.
-//  4. Sort the pairs, so the caller sees them in the same order whatever the axis.
+//  3. Split the other axis into bands of about two box heights (many boxes only); each box goes to the bands it
+//     spans, in the order of step 2.
+//  4. Sweep each band: a box meets the boxes after it in the band whose lower bound is within its upper bound; each
+//     such pair is checked on the other axis, and kept only in the band where the two boxes' overlap begins.
+//  5. Sort the pairs, so the caller sees them in the same order whatever the axis and the bands.
 void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<std::pair<int, int>>& pairs,
                bool (*skip)(const void* context, int i, int j), const void* context)
 {
@@ -134,30 +193,78 @@ void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<
         const Aabb& box = boxes[order[k]];
         sorted[k] = {Lower(box, axis), Upper(box, axis), Lower(box, other), Upper(box, other), order[k]};
     }
+    // Bands across the other axis: each box is swept only with the boxes of the bands it spans, so a box in a
+    // tall pile swept across meets the few rows near it, not its whole column.
+    const Bands bands = MakeBands(sorted);
+    const SortAndSweep::Entry* swept = sorted.data();
+    std::vector<int>& bandStart = sweep.bandStart;
+    bandStart.assign(static_cast<size_t>(bands.count) + 1, 0);
+    if (bands.count > 1)
+    {
+        for (const SortAndSweep::Entry& e : sorted)
+        {
+            for (int b = bands.Of(e.otherLower), last = bands.Of(e.otherUpper); b <= last; ++b)
+            {
+                ++bandStart[static_cast<size_t>(b) + 1];
+            }
+        }
+        for (int b = 0; b < bands.count; ++b)
+        {
+            bandStart[static_cast<size_t>(b) + 1] += bandStart[static_cast<size_t>(b)];
+        }
+        std::vector<SortAndSweep::Entry>& banded = sweep.banded;
+        banded.resize(static_cast<size_t>(bandStart[static_cast<size_t>(bands.count)]));
+        std::vector<int>& fill = sweep.met;
+        fill.assign(bandStart.begin(), bandStart.end() - 1);
+        for (const SortAndSweep::Entry& e : sorted)
+        {
+            for (int b = bands.Of(e.otherLower), last = bands.Of(e.otherUpper); b <= last; ++b)
+            {
+                banded[static_cast<size_t>(fill[static_cast<size_t>(b)]++)] = e;
+            }
+        }
+        swept = banded.data();
+    }
+    else
+    {
+        bandStart[1] = n;
+    }
     // Without a branch on the other axis, whose outcome is as good as random down a column of boxes: each neighbour's
-    // index is written, and kept by advancing past it only when the boxes meet.
+    // place is written, and kept by advancing past it only when the boxes meet.
     std::vector<int>& met = sweep.met;
     met.resize(static_cast<size_t>(n));
+    int* const metAt = met.data();
     int64_t comparisons = 0;
-    for (int k = 0; k < n; ++k)
+    for (int band = 0; band < bands.count; ++band)
     {
-        const SortAndSweep::Entry a = sorted[k];
-        int count = 0;
-        int m = k + 1;
-        for (; m < n && !(sorted[m].lower > a.upper); ++m)
+        const int end = bandStart[static_cast<size_t>(band) + 1];
+        for (int k = bandStart[static_cast<size_t>(band)]; k < end; ++k)
         {
-            const SortAndSweep::Entry& b = sorted[m];
-            met[count] = b.index;
-            count += (a.otherLower <= b.otherUpper) & (b.otherLower <= a.otherUpper);
-        }
-        comparisons += m - (k + 1);
-        for (int q = 0; q < count; ++q)
-        {
-            const int lo = a.index < met[q] ? a.index : met[q];
-            const int hi = a.index < met[q] ? met[q] : a.index;
-            if (skip == nullptr || !skip(context, lo, hi))
+            const SortAndSweep::Entry a = swept[k];
+            int count = 0;
+            int m = k + 1;
+            for (; m < end && !(swept[m].lower > a.upper); ++m)
             {
-                pairs.emplace_back(lo, hi);
+                const SortAndSweep::Entry& b = swept[m];
+                metAt[count] = m;
+                count += (a.otherLower <= b.otherUpper) & (b.otherLower <= a.otherUpper);
+            }
+            comparisons += m - (k + 1);
+            for (int q = 0; q < count; ++q)
+            {
+                const SortAndSweep::Entry& b = swept[metAt[q]];
+                // A pair of boxes that both span several bands meets in each band they share: it is kept in the
+                // band where their overlap on the other axis begins, which both span.
+                if (bands.count > 1 && bands.Of(std::max(a.otherLower, b.otherLower)) != band)
+                {
+                    continue;
+                }
+                const int lo = a.index < b.index ? a.index : b.index;
+                const int hi = a.index < b.index ? b.index : a.index;
+                if (skip == nullptr || !skip(context, lo, hi))
+                {
+                    pairs.emplace_back(lo, hi);
+                }
             }
         }
     }

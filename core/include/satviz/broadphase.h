@@ -60,6 +60,10 @@ struct SortAndSweep
     std::vector<Entry> sorted;
     /// The neighbours one box meets (working memory of the last call).
     std::vector<int> met;
+    /// The entries of each band across the other axis, band after band, each in `order` (working memory).
+    std::vector<Entry> banded;
+    /// Where each band's entries begin in `banded`, and where the last ends (working memory).
+    std::vector<int> bandStart;
 };
 
 /// The pairs (i, j), i < j, of boxes that overlap, sorted by i then j, written to `pairs` (cleared first).
@@ -67,6 +71,8 @@ struct SortAndSweep
 /// a world); it may be null. Deterministic: the result depends only on the boxes.
 /// Cost: O(n log n) for n boxes on the first call or after the axis changes, close to O(n) for the sort when the
 /// boxes moved a little since the last call; then O(n + c) for c comparisons on the sweep axis (`comparisons`).
+/// With many boxes the other axis is cut into bands of about two box heights, each swept alone, so that c counts
+/// a box's neighbours in the rows near it rather than in its whole column.
 void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<std::pair<int, int>>& pairs,
                bool (*skip)(const void* context, int i, int j) = nullptr, const void* context = nullptr);
 
