@@ -196,6 +196,24 @@ void TimeOfImpactStage::Connect(int i, int j)
     }
 }
 
+// Connects body k with every body whose reach meets k's, in ascending order of the bodies, as a pass over all of
+// them would; the search reads a grid of the reaches rather than every body. Body k's reach has just grown: the
+// grid reads it whole from now on.
+void TimeOfImpactStage::ConnectReach(int k)
+{
+    if (!m_reachFiled)
+    {
+        m_reachGrid.Make(m_reach);
+        m_reachFiled = true;
+    }
+    m_reachGrid.Meeting(m_reach, m_reach[static_cast<size_t>(k)], k, m_met);
+    for (const int o : m_met)
+    {
+        Connect(k, o);
+    }
+    m_reachGrid.Unfile(k);
+}
+
 // The approach speed below which a pair within the slop is left to the next step's contact: slower, it cannot
 // overlap by more than the slop before the step ends. A pair pressed together by turning would otherwise take a
 // string of tiny hits.

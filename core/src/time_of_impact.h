@@ -2,6 +2,7 @@
 // satviz: the world's positions stage: bodies move, and fast bodies take their hits in time order (internal).
 #pragma once
 
+#include "box_grid.h"
 #include "contact_solver.h"
 
 #include <satviz/world.h>
@@ -123,6 +124,7 @@ class TimeOfImpactStage
     bool Advance(int i, int j, double t0, Event& event) const;
     void Resolve(const std::vector<Event>& group);
     void Connect(int i, int j);
+    void ConnectReach(int k);
 
     World& m_world;
     double m_dt;
@@ -135,6 +137,10 @@ class TimeOfImpactStage
     std::vector<uint32_t> m_stamp;
     std::vector<int> m_hits;
     std::vector<std::vector<int>> m_near;
+    // The reaches, filed at the first body that must find every reach its own meets (ConnectReach).
+    BoxGrid m_reachGrid;
+    bool m_reachFiled = false;
+    std::vector<int> m_met;
     std::priority_queue<Event, std::vector<Event>, Later> m_queue;
 };
 

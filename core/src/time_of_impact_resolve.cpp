@@ -261,13 +261,7 @@ void TimeOfImpactStage::Resolve(const std::vector<Event>& group)
             // bodies were never listed: find every body it can reach now.
             m_reach[k] = AabbUnion(drawn, reach);
             m_connected[k] = 1;
-            for (int o = 0; o < static_cast<int>(world.bodies.size()); ++o)
-            {
-                if (o != k && AabbOverlap(m_reach[k], m_reach[o]))
-                {
-                    Connect(k, o);
-                }
-            }
+            ConnectReach(k);
         }
     }
     // The pairs of the bodies that were hit are swept again from now: the solver's contacts held them only at the
