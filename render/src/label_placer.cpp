@@ -506,6 +506,23 @@ bool LabelPlacer::NearestOwn(const Label& label, const ScreenRect& rect, ScreenP
             return false;
         }
     }
+    // An arrow's name is nearer its own arrow than any other arrow's shaft: beyond its head, by the tail of a face's
+    // normal that points on the same way, it reads as that normal's (pitfall_direction's "pitfall 0.20" over the
+    // block's own bottom normal).
+    if (kind == MarkKind::ArrowHead)
+    {
+        for (const std::pair<ScreenPoint, ScreenPoint>& shaft : m_shafts)
+        {
+            if (std::hypot(shaft.second.x - label.anchor.x, shaft.second.y - label.anchor.y) <= own)
+            {
+                continue; // its own
+            }
+            if (DistanceToSegment(middle, shaft.first, shaft.second) < mine)
+            {
+                return false;
+            }
+        }
+    }
     return true;
 }
 

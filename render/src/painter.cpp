@@ -2157,6 +2157,7 @@ class Painter
                 m_labels.Place(m_pitfallTo, "pitfall " + FormatNumber(pitfall.depth), TextStyle::Label,
                                palette::kInk, static_cast<float>(pitfall.normal.x),
                                static_cast<float>(-pitfall.normal.y), 6.0f, LabelRank::Verdict);
+                NamesPitfallArrow();
                 return;
             }
             // Where the pitfall's push leaves B, and how deep B still lies in A there (or lies now, pushed the
@@ -2192,7 +2193,21 @@ class Painter
             m_labels.Place(m_pitfallTo, "pitfall " + FormatNumber(pitfall.depth), TextStyle::Label, palette::kInk,
                           static_cast<float>(pitfall.normal.x), static_cast<float>(-pitfall.normal.y), 6.0f,
                           LabelRank::Verdict);
+            NamesPitfallArrow();
         }
+    }
+
+    // The pitfall's name names its arrow: beside its head or its shaft, nearer them than any other arrow.
+    void NamesPitfallArrow()
+    {
+        m_labels.Names(MarkKind::ArrowHead);
+        std::vector<ScreenPoint> shaft;
+        for (const float f : {0.3f, 0.6f})
+        {
+            shaft.push_back({m_pitfallTo.x + (m_pitfallFrom.x - m_pitfallTo.x) * f,
+                             m_pitfallTo.y + (m_pitfallFrom.y - m_pitfallTo.y) * f});
+        }
+        m_labels.AlsoBeside(std::move(shaft));
     }
 
     void MtvArrow()

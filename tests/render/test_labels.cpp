@@ -2147,6 +2147,77 @@ std::vector<std::string> LeadersFromArrowTails(const RecordingCanvas& canvas)
     return problems;
 }
 
+// The MTV's or a pitfall's name beside its arrow (no leader line, or a short one) that lies nearer another arrow's shaft, a face's
+// normal, than its own arrow: it reads as naming that normal (pitfall_direction's "pitfall 0.20" between its short
+// dashed arrow and the block's own bottom normal, which points the same way).
+std::vector<std::string> ArrowNamesNearerOtherArrows(const RecordingCanvas& canvas)
+{
+    // Every arrow: the shaft drawn just before its head.
+    struct DrawnArrow
+    {
+        const DrawCommand* shaft;
+        const DrawCommand* head;
+    };
+    std::vector<DrawnArrow> arrows;
+    for (size_t k = 1; k < canvas.commands.size(); ++k)
+    {
+        const DrawCommand& c = canvas.commands[k];
+        const DrawCommand& before = canvas.commands[k - 1];
+        if (IsArrowHead(c) && before.kind == DrawCommand::Kind::Segment && before.color == c.color &&
+            before.group == c.group)
+        {
+            arrows.push_back({&before, &c});
+        }
+    }
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        const bool mtv = c->text.rfind("MTV ", 0) == 0;
+        const bool pitfall = c->text.rfind("pitfall ", 0) == 0;
+        if (c->kind != DrawCommand::Kind::Text || (!mtv && !pitfall))
+        {
+            continue;
+        }
+        // A long leader line shows what it names; a short one is drawn for a label a few pixels off its arrow.
+        if (const DrawCommand* line = LeaderTo(canvas, *c))
+        {
+            if (std::hypot(line->points[1].x - line->points[0].x, line->points[1].y - line->points[0].y) > 20.0f)
+            {
+                continue;
+            }
+        }
+        const ScreenPoint size = measure.MeasureText(c->text, c->style);
+        const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+        // Its own arrow: the MTV's solid one, or the pitfall's dashes, in the ink of each.
+        const Color ink = mtv ? palette::kResult : palette::kInk;
+        float own = INFINITY;
+        for (const DrawCommand* d : canvas.InGroup("mtv"))
+        {
+            if (d->color == ink && (d->kind == DrawCommand::Kind::Segment || d->kind == DrawCommand::Kind::FillConvex))
+            {
+                for (size_t k = 0; k < d->points.size(); ++k)
+                {
+                    own = std::min(own, ToSegment(middle, d->points[k], d->points[(k + 1) % d->points.size()]));
+                }
+            }
+        }
+        for (const DrawnArrow& arrow : arrows)
+        {
+            // A round-off MTV draws no arrow: its name is a note above its body.
+            if (own < INFINITY && arrow.head->group != "mtv" &&
+                ToSegment(middle, arrow.shaft->points[0], arrow.shaft->points[1]) < own)
+            {
+                problems.push_back(Describe(*c) + " lies nearer the arrow from (" +
+                                   std::to_string(static_cast<int>(arrow.shaft->points[0].x)) + ", " +
+                                   std::to_string(static_cast<int>(arrow.shaft->points[0].y)) + ") than its own");
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
 // A band's size ("overlap 0.20", "gap 0.45") on a leader line that starts away from its band, the thick bar between
 // the two intervals on the axis: the line leads from nothing (pitfall_unnormalised's, from beyond the bars by the
 // image's edge).
@@ -2254,6 +2325,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         problems.push_back(std::move(p));
     }
     for (std::string& p : BandLeadersAstray(canvas))
+    {
+        problems.push_back(std::move(p));
+    }
+    for (std::string& p : ArrowNamesNearerOtherArrows(canvas))
     {
         problems.push_back(std::move(p));
     }
