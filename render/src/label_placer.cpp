@@ -299,6 +299,14 @@ void LabelPlacer::ReserveShaft(ScreenPoint a, ScreenPoint b, float thickness)
     m_shafts.push_back({a, b});
 }
 
+bool LabelPlacer::OnShaft(ScreenPoint p, float within) const
+{
+    return std::any_of(m_shafts.begin(), m_shafts.end(), [&](const std::pair<ScreenPoint, ScreenPoint>& shaft) {
+        return DistanceToSegment(p, shaft.first, shaft.second) < within &&
+               std::hypot(p.x - shaft.first.x, p.y - shaft.first.y) >= within;
+    });
+}
+
 bool LabelPlacer::ShaftBetween(const Label& label, const ScreenRect& rect, ScreenPoint at) const
 {
     if (label.rank > LabelRank::Named)

@@ -64,6 +64,9 @@ class LabelPlacer
     /// Marks an arrow's shaft: as any line no label covers it, and no vertex number or edge name has it between
     /// itself and what it names, where the arrow cuts the number off from its corner and it reads as the arrow's.
     void ReserveShaft(ScreenPoint a, ScreenPoint b, float thickness);
+    /// Whether `p` lies within `within` pixels of an arrow's shaft marked so far (ReserveShaft), away from its tail (a
+    /// body's middle, where its velocity starts).
+    bool OnShaft(ScreenPoint p, float within) const;
     /// Marks a faint line (a dashed projection line, a ghost's outline, drawn translucent): a vertex number or an
     /// edge name keeps off it, where it would read as the number of the line's end; a larger label only where the
     /// room allows, as the line shows through its halo's gaps and is not read as part of it.

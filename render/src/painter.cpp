@@ -2982,6 +2982,21 @@ class Painter
                         anchor = q;
                     }
                 }
+                // A leader line to the name would start on an arrow's shaft there (a face's normal across a small
+                // triangle's middle) and read as naming the arrow: it starts from a point of the body clear of them.
+                if (m_labels.OnShaft(anchor, 8.0f))
+                {
+                    for (const auto& [fx, fy] : {std::pair{0.0f, -0.2f}, std::pair{0.0f, 0.2f}, std::pair{-0.2f, 0.0f},
+                                                 std::pair{0.2f, 0.0f}})
+                    {
+                        const ScreenPoint p{anchor.x + fx * wide, anchor.y + fy * tall};
+                        if (Covered(p, outline, -3.0f) && !m_labels.OnShaft(p, 8.0f))
+                        {
+                            anchor = p;
+                            break;
+                        }
+                    }
+                }
                 m_labels.Place(anchor, body.name, TextStyle::Heading, InkOf(s), 0.0f, 1.0f, -7.0f, LabelRank::Name);
                 // A large body's name may move within it when its middle is taken (by a pitfall's note, a line
                 // across it), rather than hang on a leader line.
@@ -3041,6 +3056,29 @@ class Painter
                     const float leftmost = std::max(At(left).x, m_bounds.minX);
                     const float rightmost = std::min(At(right).x, m_bounds.maxX);
                     from.x = 0.5f * (leftmost + rightmost);
+                }
+                // Nor where an arrow leaves the body: a leader line ending there reads as naming the arrow
+                // (pitfall_tunnel's bullet, its velocity leaving it at the middle of the side the name goes to).
+                // The anchor slides along that side, a quarter of the body's size up or down, clear of the shafts.
+                const auto onShaft = [&](ScreenPoint p) {
+                    const bool mtv = m_hasMtvArrow && DistanceToSegment(p, m_mtvFrom, m_mtvTo) < 6.0f;
+                    return mtv || std::any_of(m_velocityShafts.begin(), m_velocityShafts.end(),
+                                              [&](const std::pair<ScreenPoint, ScreenPoint>& shaft) {
+                                                  return DistanceToSegment(p, shaft.first, shaft.second) < 6.0f;
+                                              });
+                };
+                if (onShaft(from))
+                {
+                    for (const float f : {-0.25f, 0.25f})
+                    {
+                        const ScreenPoint p = way.x != 0.0f ? ScreenPoint{from.x, from.y + f * tall}
+                                                            : ScreenPoint{from.x + f * wide, from.y};
+                        if (!onShaft(p))
+                        {
+                            from = p;
+                            break;
+                        }
+                    }
                 }
                 m_labels.PlaceOutside(OutlineOf(1 - s), from, body.name, TextStyle::Heading, InkOf(s), way.x, way.y,
                                      6.0f, LabelRank::Name);

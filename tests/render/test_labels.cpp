@@ -2218,6 +2218,49 @@ std::vector<std::string> ArrowNamesNearerOtherArrows(const RecordingCanvas& canv
     return problems;
 }
 
+// A body's name on a leader line that starts on an arrow's shaft away from its tail, where the arrow leaves the
+// body: it reads as naming the arrow (pitfall_tunnel's "bullet", led from where its velocity leaves its right side).
+std::vector<std::string> NameLeadersFromShafts(const RecordingCanvas& canvas)
+{
+    std::vector<const DrawCommand*> shafts;
+    for (size_t k = 1; k < canvas.commands.size(); ++k)
+    {
+        const DrawCommand& c = canvas.commands[k];
+        const DrawCommand& before = canvas.commands[k - 1];
+        if (IsArrowHead(c) && before.kind == DrawCommand::Kind::Segment && before.color == c.color &&
+            before.group == c.group && before.group != "labels")
+        {
+            shafts.push_back(&before);
+        }
+    }
+    std::vector<std::string> problems;
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        // Body names are the headings that name no arrow.
+        if (c->kind != DrawCommand::Kind::Text || c->style != TextStyle::Heading || c->text.rfind("MTV", 0) == 0 ||
+            c->text == "v" || c->text.rfind("v ", 0) == 0)
+        {
+            continue;
+        }
+        if (const DrawCommand* line = LeaderTo(canvas, *c))
+        {
+            const ScreenPoint start = line->points[0];
+            for (const DrawCommand* shaft : shafts)
+            {
+                // From the arrow's tail, the middle of a body its velocity starts from, it names the body.
+                if (ToSegment(start, shaft->points[0], shaft->points[1]) < 0.5f * shaft->thickness + 5.0f &&
+                    std::hypot(start.x - shaft->points[0].x, start.y - shaft->points[0].y) > 8.0f)
+                {
+                    problems.push_back(Describe(*c) + " is led from (" + std::to_string(static_cast<int>(start.x)) +
+                                       ", " + std::to_string(static_cast<int>(start.y)) + "), on an arrow's shaft");
+                    break;
+                }
+            }
+        }
+    }
+    return problems;
+}
+
 // A band's size ("overlap 0.20", "gap 0.45") on a leader line that starts away from its band, the thick bar between
 // the two intervals on the axis: the line leads from nothing (pitfall_unnormalised's, from beyond the bars by the
 // image's edge).
@@ -2329,6 +2372,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         problems.push_back(std::move(p));
     }
     for (std::string& p : ArrowNamesNearerOtherArrows(canvas))
+    {
+        problems.push_back(std::move(p));
+    }
+    for (std::string& p : NameLeadersFromShafts(canvas))
     {
         problems.push_back(std::move(p));
     }
