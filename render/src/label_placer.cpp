@@ -302,8 +302,24 @@ void LabelPlacer::ReserveShaft(ScreenPoint a, ScreenPoint b, float thickness)
 bool LabelPlacer::OnShaft(ScreenPoint p, float within) const
 {
     return std::any_of(m_shafts.begin(), m_shafts.end(), [&](const std::pair<ScreenPoint, ScreenPoint>& shaft) {
-        return DistanceToSegment(p, shaft.first, shaft.second) < within &&
+        // Beside the shaft, not beyond either end of it: ahead of the head the arrow points at the place.
+        const float dx = shaft.second.x - shaft.first.x;
+        const float dy = shaft.second.y - shaft.first.y;
+        const float length2 = dx * dx + dy * dy;
+        const float t = length2 > 0.0f ? ((p.x - shaft.first.x) * dx + (p.y - shaft.first.y) * dy) / length2 : -1.0f;
+        return t > 0.0f && t < 1.0f && DistanceToSegment(p, shaft.first, shaft.second) < within &&
                std::hypot(p.x - shaft.first.x, p.y - shaft.first.y) >= within;
+    });
+}
+
+bool LabelPlacer::NearArrowTail(ScreenPoint p, float within, ScreenPoint own) const
+{
+    return std::any_of(m_shafts.begin(), m_shafts.end(), [&](const std::pair<ScreenPoint, ScreenPoint>& shaft) {
+        const float dx = shaft.second.x - shaft.first.x;
+        const float dy = shaft.second.y - shaft.first.y;
+        const float length = std::hypot(dx, dy);
+        const bool along = length > 0.0f && (dx * own.x + dy * own.y) > 0.9f * length;
+        return !along && std::hypot(p.x - shaft.first.x, p.y - shaft.first.y) < within;
     });
 }
 

@@ -64,9 +64,13 @@ class LabelPlacer
     /// Marks an arrow's shaft: as any line no label covers it, and no vertex number or edge name has it between
     /// itself and what it names, where the arrow cuts the number off from its corner and it reads as the arrow's.
     void ReserveShaft(ScreenPoint a, ScreenPoint b, float thickness);
-    /// Whether `p` lies within `within` pixels of an arrow's shaft marked so far (ReserveShaft), away from its tail (a
-    /// body's middle, where its velocity starts).
+    /// Whether `p` lies within `within` pixels beside an arrow's shaft marked so far (ReserveShaft), between its ends
+    /// and away from its tail (a body's middle, where its velocity starts).
     bool OnShaft(ScreenPoint p, float within) const;
+    /// Whether `p` lies within `within` pixels of the tail of an arrow marked so far (ReserveShaft) that does not
+    /// point along `own` (a unit direction on screen): a face's normal starts on its face, and another face's normal
+    /// there (the other body's, on a shared face) reads as what a leader line from there names.
+    bool NearArrowTail(ScreenPoint p, float within, ScreenPoint own) const;
     /// Marks a faint line (a dashed projection line, a ghost's outline, drawn translucent): a vertex number or an
     /// edge name keeps off it, where it would read as the number of the line's end; a larger label only where the
     /// room allows, as the line shows through its halo's gaps and is not read as part of it.

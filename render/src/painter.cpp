@@ -2477,6 +2477,21 @@ class Painter
         // this contact), sliding along the face from there (AlsoAt) when the contact's own marks leave no room.
         const std::vector<ScreenPoint> other = OutlineOf(1 - referenceShape);
         ScreenPoint near = FreeMiddle(shown1, shown2, other);
+        // Not from a contact's dot, where the other body leaves the face, nor from a face's normal (its tail, or
+        // its shaft where it crosses the face): a leader line from there reads as naming the contact or the
+        // arrow (l11_decimal_touch's, led to where the other body's normal leaves the shared face).
+        const auto offMarks = [&](ScreenPoint p) {
+            for (int i = 0; i < m_study.manifold.contactCount; ++i)
+            {
+                const ScreenPoint dot = At(m_study.manifold.contacts[i].point);
+                if (std::hypot(p.x - dot.x, p.y - dot.y) < kClearOfDot)
+                {
+                    return false;
+                }
+            }
+            return !m_labels.NearArrowTail(p, kClearOfDot, {static_cast<float>(n.x), -static_cast<float>(n.y)}) &&
+                   !m_labels.OnShaft(p, kClearOfDot);
+        };
         if (m_study.manifold.contactCount > 0)
         {
             Vec2 middle{};
@@ -2486,20 +2501,8 @@ class Painter
             }
             const ScreenPoint foot = NearestOnSegment(shown1, shown2, At(middle));
             std::vector<ScreenPoint> free = AlongFace(shown1, shown2, foot, other, 0.0f, 4.0f);
-            // Not from a contact's dot, where the other body leaves the face: a leader line from there reads as
-            // naming the contact.
             std::vector<ScreenPoint> offDots;
-            std::copy_if(free.begin(), free.end(), std::back_inserter(offDots), [&](ScreenPoint p) {
-                for (int i = 0; i < m_study.manifold.contactCount; ++i)
-                {
-                    const ScreenPoint dot = At(m_study.manifold.contacts[i].point);
-                    if (std::hypot(p.x - dot.x, p.y - dot.y) < kClearOfDot)
-                    {
-                        return false;
-                    }
-                }
-                return true;
-            });
+            std::copy_if(free.begin(), free.end(), std::back_inserter(offDots), offMarks);
             if (!offDots.empty())
             {
                 free = offDots;
@@ -2554,7 +2557,7 @@ class Painter
                 free.erase(std::remove_if(free.begin(), free.end(), [&](ScreenPoint p) { return stretch(p) < width; }),
                            free.end());
             }
-            near = !Covered(foot, other, 0.0f) || free.empty() || atEnds ? foot : free.front();
+            near = (!Covered(foot, other, 0.0f) && offMarks(foot)) || free.empty() || atEnds ? foot : free.front();
         }
         m_labels.PlaceOutside(other, near, "reference face", TextStyle::Label, InkOf(referenceShape),
                              static_cast<float>(-n.x), static_cast<float>(n.y), 10.0f, LabelRank::Verdict);
@@ -2562,7 +2565,9 @@ class Painter
         // a leader line from the contact's foot shows it.
         std::vector<ScreenPoint> along = AlongFace(shown1, shown2, near, other, 0.0f, 16.0f, 40.0f);
         along.erase(std::remove_if(along.begin(), along.end(),
-                                   [&](ScreenPoint p) { return std::hypot(p.x - near.x, p.y - near.y) > 64.0f; }),
+                                   [&](ScreenPoint p) {
+                                       return std::hypot(p.x - near.x, p.y - near.y) > 64.0f || !offMarks(p);
+                                   }),
                     along.end());
         m_labels.AlsoAt(along);
         m_labels.NamesFace(r1, r2, Rivals(other));
@@ -2574,8 +2579,9 @@ class Painter
         m_canvas.Segment(i1, i2, palette::kBackground, 1.5f);
         m_used.push_back(LegendMark::Reference);
         m_used.push_back(LegendMark::Incident);
-        // Named from the point of the edge nearest its middle that is clear of the contacts' dots: a leader line
-        // from a dot reads as naming the contact (overlapping_boxes' incident edge, whose middle is c1).
+        // Named from the point of the edge nearest its middle that is clear of the contacts' dots and of other
+        // faces' normals: a leader line from a dot reads as naming the contact (overlapping_boxes' incident edge,
+        // whose middle is c1), and from an arrow as naming the arrow.
         ScreenPoint incidentAt = At(0.5 * (clip.incidentV1 + clip.incidentV2));
         {
             const float length = std::hypot(i2.x - i1.x, i2.y - i1.y);
@@ -2589,6 +2595,9 @@ class Painter
                     const ScreenPoint dot = At(m_study.manifold.contacts[k].point);
                     clear = std::hypot(p.x - dot.x, p.y - dot.y) >= kClearOfDot;
                 }
+                clear = clear &&
+                        !m_labels.NearArrowTail(p, kClearOfDot, {-static_cast<float>(n.x), static_cast<float>(n.y)}) &&
+                        !m_labels.OnShaft(p, kClearOfDot);
                 const float off = std::abs(d - 0.5f * length);
                 if (clear && off < best)
                 {

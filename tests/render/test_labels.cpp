@@ -2299,9 +2299,10 @@ std::vector<std::string> BandLeadersAstray(const RecordingCanvas& canvas)
     return problems;
 }
 
-// A face's name ("reference face", "incident edge") on a leader line that starts at a contact's dot: the line reads
-// as naming the contact, or the edge as a point (overlapping_boxes' "incident edge" and "c1" led to one dot).
-std::vector<std::string> FaceLeadersFromDots(const RecordingCanvas& canvas)
+// A face's name ("reference face", "incident edge") on a leader line that starts at a contact's dot or another
+// face's normal's tail: the line reads as naming the contact or the arrow, or the edge as a point (overlapping_boxes' "incident
+// edge" and "c1" led to one dot).
+std::vector<std::string> FaceLeadersFromMarks(const RecordingCanvas& canvas, Vec2 normal)
 {
     std::vector<std::string> problems;
     std::vector<ScreenPoint> dots;
@@ -2310,6 +2311,22 @@ std::vector<std::string> FaceLeadersFromDots(const RecordingCanvas& canvas)
         if (c->kind == DrawCommand::Kind::FillCircle && c->color == palette::kResult)
         {
             dots.push_back(c->points[0]);
+        }
+    }
+    // And the tails of the faces' normals, which start on their faces: a leader from there reads as naming the
+    // arrow (l11_decimal_touch's "reference face", led to where the other body's normal leaves the shared face).
+    // A face's own normal is left out: it points along the pair's normal (from A to B) when the face is A's (the
+    // name in A's ink), against it when B's.
+    std::vector<std::pair<ScreenPoint, ScreenPoint>> tails; // tail, and the arrow's end
+    for (size_t k = 1; k < canvas.commands.size(); ++k)
+    {
+        const DrawCommand& c = canvas.commands[k];
+        const DrawCommand& before = canvas.commands[k - 1];
+        // The faces' normals, and the deciding face's drawn with its axis.
+        if ((c.group == "normals" || c.group == "projection") && IsArrowHead(c) &&
+            before.kind == DrawCommand::Kind::Segment && before.group == c.group)
+        {
+            tails.emplace_back(before.points[0], before.points[1]);
         }
     }
     for (const DrawCommand* c : canvas.InGroup("labels"))
@@ -2327,6 +2344,20 @@ std::vector<std::string> FaceLeadersFromDots(const RecordingCanvas& canvas)
                     problems.push_back(Describe(*c) + " is led from the contact point at (" +
                                        std::to_string(static_cast<int>(dot.x)) + ", " +
                                        std::to_string(static_cast<int>(dot.y)) + ")");
+                    break;
+                }
+            }
+            const float sign = c->color == palette::kShapeA ? 1.0f : -1.0f;
+            const ScreenPoint out{sign * static_cast<float>(normal.x), -sign * static_cast<float>(normal.y)};
+            for (const auto& [tail, end] : tails)
+            {
+                const float length = std::hypot(end.x - tail.x, end.y - tail.y);
+                const bool own = (end.x - tail.x) * out.x + (end.y - tail.y) * out.y > 0.9f * length;
+                if (!own && std::hypot(line->points[0].x - tail.x, line->points[0].y - tail.y) < 7.0f)
+                {
+                    problems.push_back(Describe(*c) + " is led from the tail of the normal at (" +
+                                       std::to_string(static_cast<int>(tail.x)) + ", " +
+                                       std::to_string(static_cast<int>(tail.y)) + ")");
                     break;
                 }
             }
@@ -2379,7 +2410,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
     {
         problems.push_back(std::move(p));
     }
-    for (std::string& p : FaceLeadersFromDots(canvas))
+    for (std::string& p : FaceLeadersFromMarks(canvas, setup.study.manifold.normal))
     {
         problems.push_back(std::move(p));
     }
