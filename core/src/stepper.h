@@ -38,6 +38,7 @@ struct StepMemory
     std::vector<int> softAwake;                    ///< SolveSoft: the awake dynamic bodies
     std::vector<SolverBody> softVelocities;        ///< SolveSoft: the velocities the sub-steps leave
     std::vector<int> bouncing;                     ///< SolveSoft: the contacts with a bouncing point
+    std::vector<std::vector<int>> near;            ///< Move's time of impact: the bodies each body is swept with
 };
 
 /// The world's working lists, made on its first step.

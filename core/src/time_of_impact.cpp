@@ -58,8 +58,9 @@ bool OutrunsPair(const WorldSettings& settings, const RigidBody& a, Vec2 va, dou
 }
 
 TimeOfImpactStage::TimeOfImpactStage(World& world, double dt, const std::vector<Transform>& xfs,
-                                     const std::vector<Vec2>& centers, const std::vector<SolverBody>& solverBodies)
-    : m_world(world), m_dt(dt), m_xfs(xfs)
+                                     const std::vector<Vec2>& centers, const std::vector<SolverBody>& solverBodies,
+                                     std::vector<std::vector<int>>& near)
+    : m_world(world), m_dt(dt), m_xfs(xfs), m_near(near)
 {
     const int n = static_cast<int>(world.bodies.size());
     m_motion.resize(n);
@@ -447,7 +448,12 @@ void TimeOfImpactStage::Run()
         }
         std::vector<std::pair<int, int>> pairs;
         FindPairs(world.sweptBroadphase, m_reach, pairs, SkipSlowPair, &m_fast);
-        m_near.assign(n, {});
+        // Emptied, not freed: a list keeps the memory of the steps before.
+        m_near.resize(static_cast<size_t>(n));
+        for (std::vector<int>& list : m_near)
+        {
+            list.clear();
+        }
         for (const auto& [i, j] : pairs)
         {
             m_near[i].push_back(j);

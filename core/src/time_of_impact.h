@@ -58,9 +58,10 @@ class TimeOfImpactStage
 {
   public:
     /// The stage for `world`'s bodies, with the solved velocities of `solverBodies`, the
-    /// transforms and the centres of mass at the start of the step.
+    /// transforms and the centres of mass at the start of the step. `near` holds each body's list of the bodies it
+    /// is swept with; kept by the caller from step to step, the lists keep their memory.
     TimeOfImpactStage(World& world, double dt, const std::vector<Transform>& xfs, const std::vector<Vec2>& centers,
-                      const std::vector<SolverBody>& solverBodies);
+                      const std::vector<SolverBody>& solverBodies, std::vector<std::vector<int>>& near);
     /// Moves the bodies to the end of the step.
     void Run();
     /// Whether body i took a time-ordered hit in the step (after Run): its pose is the sweep's, not the one the
@@ -136,7 +137,7 @@ class TimeOfImpactStage
     std::vector<uint8_t> m_connected; // m_near lists every body the reach meets
     std::vector<uint32_t> m_stamp;
     std::vector<int> m_hits;
-    std::vector<std::vector<int>> m_near;
+    std::vector<std::vector<int>>& m_near;
     // The reaches, filed at the first body that must find every reach its own meets (ConnectReach).
     BoxGrid m_reachGrid;
     bool m_reachFiled = false;

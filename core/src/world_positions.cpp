@@ -48,7 +48,7 @@ void Stepper::Move()
             bodies[i].angularVelocity = solverBodies[i].w;
         }
     }
-    detail::TimeOfImpactStage stage(world, dt, xfs, centers, solverBodies);
+    detail::TimeOfImpactStage stage(world, dt, xfs, centers, solverBodies, memory.near);
     stage.Run();
     hit.assign(static_cast<size_t>(n), 0);
     rotations.resize(static_cast<size_t>(n));
