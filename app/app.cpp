@@ -240,8 +240,12 @@ bool App::RequestOpen(const std::string& path, int step, bool faces)
     return false;
 }
 
-bool App::Save(const std::string& path)
+bool App::Save(const std::string& given)
 {
+    // The path in full, so that the status and the title say in which folder a relative one went.
+    std::error_code code;
+    const std::filesystem::path full = std::filesystem::absolute(given, code).lexically_normal();
+    const std::string path = code ? given : full.string();
     std::string error;
     if (!m_document.Save(SceneForSaving(), path, error))
     {

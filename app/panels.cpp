@@ -1332,6 +1332,16 @@ void Panels::StatusBar()
     ImGui::PopStyleVar(2);
 }
 
+std::string SaveAsSuggestion(const Document& document)
+{
+    const std::string name = document.File().empty()
+                                 ? "scene.json"
+                                 : std::filesystem::path(document.File()).stem().string() + "-edited.json";
+    std::error_code code;
+    const std::filesystem::path full = std::filesystem::absolute(name, code);
+    return code ? name : full.string();
+}
+
 void Panels::Popups()
 {
     const Document& document = m_app.GetDocument();
@@ -1344,10 +1354,7 @@ void Panels::Popups()
     if (m_askSaveAs)
     {
         m_askSaveAs = false;
-        const std::string suggestion = document.File().empty()
-                                           ? "scene.json"
-                                           : (std::filesystem::path(document.File()).stem().string() + "-edited.json");
-        std::snprintf(m_pathBuffer, sizeof(m_pathBuffer), "%s", suggestion.c_str());
+        std::snprintf(m_pathBuffer, sizeof(m_pathBuffer), "%s", SaveAsSuggestion(document).c_str());
         ImGui::OpenPopup("Save scene as");
     }
     if (m_askQuit)

@@ -22,6 +22,12 @@ namespace satviz
 
 class App;
 
+class Document;
+
+/// What Save as suggests: the scene's name with "-edited" (or "scene.json"), in the working folder, in full so that
+/// the student sees where it goes.
+std::string SaveAsSuggestion(const Document& document);
+
 /// A section of the help (F1): its title and its lines, each drawn as a bullet.
 struct HelpSection
 {

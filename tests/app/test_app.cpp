@@ -1102,6 +1102,22 @@ TEST_CASE("While the quit question is open, the shortcuts wait: ctrl+o, F1 and t
     CHECK(Harness::Showing("Open scene"));
 }
 
+TEST_CASE("A scene saved to a relative path says in which folder it went, and so does the save-as suggestion", "[app]")
+{
+    // Save as a bundled scene suggests "NAME-edited.json", written to the working folder: "Saved
+    // overlapping_boxes-edited.json" did not say where that is (an app started from a menu has one of its own).
+    const fs::path copy = ScratchCopy("overlapping_boxes.json");
+    Harness h(copy.string());
+    const fs::path target = copy.parent_path() / "saved-relative.json";
+    const fs::path relative = fs::relative(target, fs::current_path());
+    REQUIRE(relative.is_relative());
+    REQUIRE(h.app->Save(relative.string()));
+    CHECK(fs::exists(target));
+    CHECK(h.app->Status() == "Saved " + fs::absolute(relative).lexically_normal().string());
+    CHECK(fs::path(SaveAsSuggestion(h.Doc())).is_absolute());
+    CHECK(fs::path(SaveAsSuggestion(h.Doc())).filename() == "saved-relative-edited.json");
+}
+
 TEST_CASE("Saving writes the view, the export figure is what satviz-render draws from the saved file", "[app]")
 {
     const fs::path copy = ScratchCopy("overlapping_boxes.json");
