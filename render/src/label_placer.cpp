@@ -323,7 +323,7 @@ bool LabelPlacer::NearArrowTail(ScreenPoint p, float within, ScreenPoint own) co
     });
 }
 
-bool LabelPlacer::ShaftBetween(const Label& label, const ScreenRect& rect, ScreenPoint at) const
+bool LabelPlacer::CutOffFromAnchor(const Label& label, const ScreenRect& rect, ScreenPoint at) const
 {
     if (label.rank > LabelRank::Named)
     {
@@ -343,9 +343,27 @@ bool LabelPlacer::ShaftBetween(const Label& label, const ScreenRect& rect, Scree
             length2 > 0.0f ? std::clamp(((middle.x - a.x) * dx + (middle.y - a.y) * dy) / length2, 0.0f, 1.0f) : 0.0f;
         to = {a.x + dx * t, a.y + dy * t};
     }
-    return std::any_of(m_shafts.begin(), m_shafts.end(), [&](const std::pair<ScreenPoint, ScreenPoint>& shaft) {
-        return Cross(middle, to, shaft.first, shaft.second);
-    });
+    if (std::any_of(m_shafts.begin(), m_shafts.end(), [&](const std::pair<ScreenPoint, ScreenPoint>& shaft) {
+            return Cross(middle, to, shaft.first, shaft.second);
+        }))
+    {
+        return true;
+    }
+    // Nor another label between them, placed before it: the number reads as that label's part, or as naming
+    // something beyond it (pitfall_one_shape's "2" above "pitfall 0.257", which sat on the diamond's top corner).
+    for (size_t k = m_reserved; k < m_taken.size(); ++k)
+    {
+        const ScreenRect& r = m_taken[k];
+        const ScreenPoint corners[4] = {{r.minX, r.minY}, {r.maxX, r.minY}, {r.maxX, r.maxY}, {r.minX, r.maxY}};
+        for (int i = 0; i < 4; ++i)
+        {
+            if (Cross(middle, to, corners[i], corners[(i + 1) % 4]))
+            {
+                return true;
+            }
+        }
+    }
+    return false;
 }
 
 void LabelPlacer::ReserveFaintLine(ScreenPoint a, ScreenPoint b, float thickness)
@@ -1018,7 +1036,7 @@ void LabelPlacer::Flush(Color halo)
                         const ScreenRect rect = Around(at, size, start + c.turn * 0.125 * kPi, reach);
                         if (Inside(rect) && Free(rect, pass <= 0 ? kLabelSpacing : 0.0f, label->rank, pass < 0) &&
                             Away(*label, rect, at) && NearestOwn(*label, rect, at) &&
-                            (faceFree || NearestFace(*label, rect)) && !ShaftBetween(*label, rect, at) &&
+                            (faceFree || NearestFace(*label, rect)) && !CutOffFromAnchor(*label, rect, at) &&
                             (faceFree || !AcrossParting(*label, rect, at)) && OnItsSide(label->onSide, at, label->dx, label->dy, rect))
                         {
                             chosen = rect;

@@ -198,7 +198,7 @@ class LabelPlacer
     bool Inside(const ScreenRect& rect) const;
     bool NearestOwn(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
     bool NearestFace(const Label& label, const ScreenRect& rect) const;
-    bool ShaftBetween(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
+    bool CutOffFromAnchor(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
     bool AcrossParting(const Label& label, const ScreenRect& rect, ScreenPoint at) const;
     Canvas& m_canvas;
     float m_width;

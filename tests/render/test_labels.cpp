@@ -1799,6 +1799,23 @@ std::vector<std::string> LabelsNearerAnotherMark(const RecordingCanvas& canvas, 
                     break;
                 }
             }
+            // Nor with another label between it and its corner, cut off from it (pitfall_one_shape's "2" above
+            // "pitfall 0.257", which sat on the diamond's top corner).
+            for (const DrawCommand* other : canvas.InGroup("labels"))
+            {
+                if (other == c || other->kind != DrawCommand::Kind::Text)
+                {
+                    continue;
+                }
+                const ScreenPoint o = measure.MeasureText(other->text, other->style);
+                const Box box{other->points[0].x, other->points[0].y, other->points[0].x + o.x, other->points[0].y + o.y};
+                if (SegmentCovers(middle, corners[s][own], 0.0f, box))
+                {
+                    problems.push_back(Describe(*c) + ", a vertex number of " + bodies[s]->name + ", has " +
+                                       Describe(*other) + " between it and its corner");
+                    break;
+                }
+            }
         }
     }
     return problems;
