@@ -2182,8 +2182,39 @@ class Painter
                 {
                     inside = ShapeCenter(m_bodyB.shape, pushed);
                 }
+                // Not from an arrow (a face's normal leaving the pushed outline's contact, or crossing it): a leader
+                // line from there reads as naming the arrow (pitfall_direction's note led to the tail of the block's
+                // bottom normal). The anchor slides along the pushed outline's contacts, or towards its middle.
+                ScreenPoint anchor = At(inside);
+                const auto onArrow = [&](ScreenPoint p) {
+                    return m_labels.NearArrowTail(p, kClearOfDot, {}) || m_labels.OnShaft(p, kClearOfDot);
+                };
+                if (onArrow(anchor))
+                {
+                    std::vector<Vec2> tries;
+                    if (left.contactCount == 2)
+                    {
+                        for (const double f : {0.25, 0.75, 0.1, 0.9})
+                        {
+                            tries.push_back(left.contacts[0].point + f * (left.contacts[1].point - left.contacts[0].point));
+                        }
+                    }
+                    const Vec2 middle = ShapeCenter(m_bodyB.shape, pushed);
+                    for (const double f : {0.25, 0.5})
+                    {
+                        tries.push_back(inside + f * (middle - inside));
+                    }
+                    for (const Vec2& t : tries)
+                    {
+                        if (!onArrow(At(t)))
+                        {
+                            anchor = At(t);
+                            break;
+                        }
+                    }
+                }
                 const bool still = right != nullptr && Dot(pitfall.normal, right->normal) >= 0.0;
-                m_labels.Place(At(inside),
+                m_labels.Place(anchor,
                                "after the pitfall's push: " + std::string(still ? "still " : "") +
                                    FormatNumber(left.depth) + " deep",
                                TextStyle::Label, palette::kInk, 1.0f, 1.0f, 14.0f, LabelRank::Verdict);

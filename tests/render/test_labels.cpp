@@ -2253,9 +2253,11 @@ std::vector<std::string> NameLeadersFromShafts(const RecordingCanvas& canvas)
     std::vector<std::string> problems;
     for (const DrawCommand* c : canvas.InGroup("labels"))
     {
-        // Body names are the headings that name no arrow.
-        if (c->kind != DrawCommand::Kind::Text || c->style != TextStyle::Heading || c->text.rfind("MTV", 0) == 0 ||
-            c->text == "v" || c->text.rfind("v ", 0) == 0)
+        // Body names are the headings that name no arrow; the pitfall's note names where its push leaves B, and
+        // no arrow's tail is there.
+        const bool note = c->kind == DrawCommand::Kind::Text && c->text.rfind("after the pitfall's push", 0) == 0;
+        if (!note && (c->kind != DrawCommand::Kind::Text || c->style != TextStyle::Heading ||
+                      c->text.rfind("MTV", 0) == 0 || c->text == "v" || c->text.rfind("v ", 0) == 0))
         {
             continue;
         }
@@ -2266,7 +2268,7 @@ std::vector<std::string> NameLeadersFromShafts(const RecordingCanvas& canvas)
             {
                 // From the arrow's tail, the middle of a body its velocity starts from, it names the body.
                 if (ToSegment(start, shaft->points[0], shaft->points[1]) < 0.5f * shaft->thickness + 5.0f &&
-                    std::hypot(start.x - shaft->points[0].x, start.y - shaft->points[0].y) > 8.0f)
+                    (note || std::hypot(start.x - shaft->points[0].x, start.y - shaft->points[0].y) > 8.0f))
                 {
                     problems.push_back(Describe(*c) + " is led from (" + std::to_string(static_cast<int>(start.x)) +
                                        ", " + std::to_string(static_cast<int>(start.y)) + "), on an arrow's shaft");
