@@ -2615,12 +2615,20 @@ class Painter
         // whose middle is c1), and from an arrow as naming the arrow.
         ScreenPoint incidentAt = At(0.5 * (clip.incidentV1 + clip.incidentV2));
         {
+            // And, where the edge runs on past the reference face, from that part: beside the face, a leader line
+            // crosses the face to reach the edge and ends as near the face as the edge (overlapping_boxes' A's
+            // right edge, 4 px beside B's left face).
             const float length = std::hypot(i2.x - i1.x, i2.y - i1.y);
+            const float referenceLength = std::max(std::hypot(r2.x - r1.x, r2.y - r1.y), 1e-3f);
             float best = INFINITY;
+            bool beyond = false;
             for (float d = 0.0f; length > 0.0f && d <= length; d += 2.0f)
             {
                 const ScreenPoint p{i1.x + (i2.x - i1.x) * d / length, i1.y + (i2.y - i1.y) * d / length};
                 bool clear = std::min(d, length - d) >= 6.0f;
+                const float along = ((p.x - r1.x) * (r2.x - r1.x) + (p.y - r1.y) * (r2.y - r1.y)) / referenceLength;
+                const bool far = along < -6.0f || along > referenceLength + 6.0f ||
+                                 DistanceToSegment(p, r1, r2) >= 2.0f * kClearOfDot;
                 for (int k = 0; k < m_study.manifold.contactCount && clear; ++k)
                 {
                     const ScreenPoint dot = At(m_study.manifold.contacts[k].point);
@@ -2630,10 +2638,11 @@ class Painter
                         !m_labels.NearArrowTail(p, kClearOfDot, {-static_cast<float>(n.x), static_cast<float>(n.y)}) &&
                         !m_labels.OnShaft(p, kClearOfDot);
                 const float off = std::abs(d - 0.5f * length);
-                if (clear && off < best)
+                if (clear && ((far && !beyond) || (far == beyond && off < best)))
                 {
                     best = off;
                     incidentAt = p;
+                    beyond = far;
                 }
             }
         }

@@ -2385,6 +2385,66 @@ std::vector<std::string> FaceLeadersFromMarks(const RecordingCanvas& canvas, Vec
     return problems;
 }
 
+// The incident edge's name on a leader line that crosses the reference face on its way, where the edge runs on past
+// the face: it ends beside that face and reads as naming it, or the contact where the two meet (overlapping_boxes'
+// leader across B's left face to A's right edge, 4 px beyond it).
+std::vector<std::string> IncidentLeadersAcrossReference(const RecordingCanvas& canvas)
+{
+    const auto side = [](ScreenPoint a, ScreenPoint b, ScreenPoint p) {
+        return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+    };
+    std::vector<std::string> problems;
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || c->text != "incident edge")
+        {
+            continue;
+        }
+        const DrawCommand* line = LeaderTo(canvas, *c);
+        if (line == nullptr)
+        {
+            continue;
+        }
+        const ScreenPoint p = line->points[0];
+        const ScreenPoint q = line->points[1];
+        // The incident edge: the thick stroke in its body's ink.
+        const DrawCommand* edge = nullptr;
+        for (const DrawCommand* d : canvas.InGroup("contacts"))
+        {
+            if (d->kind == DrawCommand::Kind::Segment && d->thickness >= 4.5f && (d->color >> 8) == (c->color >> 8))
+            {
+                edge = d;
+            }
+        }
+        for (const DrawCommand* face : canvas.InGroup("contacts"))
+        {
+            // The reference face: the thick stroke in the other body's ink.
+            if (edge == nullptr || face->kind != DrawCommand::Kind::Segment || face->thickness < 4.5f ||
+                (face->color >> 8) == (c->color >> 8))
+            {
+                continue;
+            }
+            const ScreenPoint a = face->points[0];
+            const ScreenPoint b = face->points[1];
+            // Only where the edge runs on past the face (by 6 px along it), so that a leader can reach it without
+            // crossing; an edge wholly beside the face (many_sides' short one) is reached across it.
+            const float length = std::max(std::hypot(b.x - a.x, b.y - a.y), 1e-3f);
+            bool past = false;
+            for (const ScreenPoint& e : edge->points)
+            {
+                const float along = ((e.x - a.x) * (b.x - a.x) + (e.y - a.y) * (b.y - a.y)) / length;
+                past = past || along < -6.0f || along > length + 6.0f;
+            }
+            if (past && side(a, b, p) * side(a, b, q) < 0.0f && side(p, q, a) * side(p, q, b) < 0.0f)
+            {
+                problems.push_back(Describe(*c) + " is led across the reference face");
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -2426,6 +2486,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         problems.push_back(std::move(p));
     }
     for (std::string& p : NameLeadersFromShafts(canvas))
+    {
+        problems.push_back(std::move(p));
+    }
+    for (std::string& p : IncidentLeadersAcrossReference(canvas))
     {
         problems.push_back(std::move(p));
     }
