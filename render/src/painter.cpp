@@ -2520,6 +2520,22 @@ class Painter
                     return false;
                 }
             }
+            // Nor where the other body's outline crosses the face: a leader line ending there names either body's
+            // edge (l13_overlap's, led to where B's face crosses A's right side).
+            // An edge flush along the face (a plank lying on the floor) is where the face is: it does not count.
+            const float faceLength = std::max(std::hypot(shown2.x - shown1.x, shown2.y - shown1.y), 1e-3f);
+            for (size_t i = 0; i < other.size(); ++i)
+            {
+                const ScreenPoint u = other[i];
+                const ScreenPoint v = other[(i + 1) % other.size()];
+                const float edgeLength = std::max(std::hypot(v.x - u.x, v.y - u.y), 1e-3f);
+                const float sine = std::fabs((v.x - u.x) * (shown2.y - shown1.y) - (v.y - u.y) * (shown2.x - shown1.x)) /
+                                   (edgeLength * faceLength);
+                if (sine > 0.2f && DistanceToSegment(p, u, v) < 6.0f)
+                {
+                    return false;
+                }
+            }
             return !m_labels.NearArrowTail(p, kClearOfDot, {static_cast<float>(n.x), -static_cast<float>(n.y)}) &&
                    !m_labels.OnShaft(p, kClearOfDot);
         };

@@ -2385,6 +2385,47 @@ std::vector<std::string> FaceLeadersFromMarks(const RecordingCanvas& canvas, Vec
     return problems;
 }
 
+// The reference face's name on a leader line that starts where the other body's outline crosses the face: it
+// names either body's edge there (l13_overlap's, led to where B's face crosses A's right side).
+std::vector<std::string> FaceLeadersAtCrossings(const RecordingCanvas& canvas, const Scene& scene,
+                                                const PairStudy& study, const View& view)
+{
+    std::vector<std::string> problems;
+    const Body* bodies[2] = {&scene.bodies[static_cast<size_t>(study.bodyA)],
+                             &scene.bodies[static_cast<size_t>(study.bodyB)]};
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || c->text != "reference face")
+        {
+            continue;
+        }
+        const DrawCommand* line = LeaderTo(canvas, *c);
+        if (line == nullptr)
+        {
+            continue;
+        }
+        for (int s = 0; s < 2; ++s)
+        {
+            // The other body: not the one whose ink the name is in.
+            if ((c->color >> 8) == (inks[s] >> 8) || bodies[s]->shape.type != ShapeType::Polygon)
+            {
+                continue;
+            }
+            const std::vector<ScreenPoint> outline = Outline(*bodies[s], view);
+            for (size_t i = 0; i < outline.size(); ++i)
+            {
+                if (ToSegment(line->points[0], outline[i], outline[(i + 1) % outline.size()]) < 3.0f)
+                {
+                    problems.push_back(Describe(*c) + " is led from " + bodies[s]->name + "'s outline");
+                    break;
+                }
+            }
+        }
+    }
+    return problems;
+}
+
 // The incident edge's name on a leader line that crosses the reference face on its way, where the edge runs on past
 // the face: it ends beside that face and reads as naming it, or the contact where the two meet (overlapping_boxes'
 // leader across B's left face to A's right edge, 4 px beyond it).
@@ -2523,6 +2564,10 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
             problems.push_back(std::move(p));
         }
         for (std::string& p : LeadersAlongOutlines(canvas, scene, setup.study, setup.figure.view))
+        {
+            problems.push_back(std::move(p));
+        }
+        for (std::string& p : FaceLeadersAtCrossings(canvas, scene, setup.study, setup.figure.view))
         {
             problems.push_back(std::move(p));
         }
