@@ -3698,6 +3698,26 @@ TEST_CASE("Beside a sweep's verdict the static gap names the axis it is measured
     CHECK(gap->parts[0] == FormatNumber(std::max(loB - hiA, loA - hiB)));
 }
 
+namespace
+{
+
+// The contact points' dots the app's canvas draws at the verdict of the pair it studies.
+int ContactDotsAtVerdict(Harness& h)
+{
+    Figure figure = CanvasFigure(*h.app);
+    figure.step = h.View().VerdictStep();
+    RecordingCanvas canvas;
+    PaintFigure(canvas, h.View().Studied(), h.View().Setup().study, figure);
+    int dots = 0;
+    for (const DrawCommand* c : canvas.InGroup("contacts"))
+    {
+        dots += c->kind == DrawCommand::Kind::FillCircle ? 1 : 0;
+    }
+    return dots;
+}
+
+} // namespace
+
 TEST_CASE("The Numbers panel lists the contact points the figure draws, and only those", "[app]")
 {
     // l02_box_and_triangle's view has no contacts layer: its verdict draws no contact dot, and the panel listed
@@ -3715,15 +3735,7 @@ TEST_CASE("The Numbers panel lists the contact points the figure draws, and only
         h.Frames(1);
         const PairStudy& study = h.View().Setup().study;
         REQUIRE_FALSE(study.sweep);
-        Figure figure = CanvasFigure(*h.app);
-        figure.step = h.View().VerdictStep();
-        RecordingCanvas canvas;
-        PaintFigure(canvas, h.View().Studied(), study, figure);
-        int dots = 0;
-        for (const DrawCommand* c : canvas.InGroup("contacts"))
-        {
-            dots += c->kind == DrawCommand::Kind::FillCircle ? 1 : 0;
-        }
+        const int dots = ContactDotsAtVerdict(h);
         int listed = 0;
         for (const NumberRow& row : StaticTestNumbers(h.View().Studied(), study, false, h.View().Choices().layers))
         {
@@ -3752,15 +3764,7 @@ TEST_CASE("Beside a sweep the Numbers panel lists only the contacts the figure d
         h.Frames(1);
         const PairStudy& study = h.View().Setup().study;
         REQUIRE(study.sweep);
-        Figure figure = CanvasFigure(*h.app);
-        figure.step = h.View().VerdictStep();
-        RecordingCanvas canvas;
-        PaintFigure(canvas, h.View().Studied(), study, figure);
-        int dots = 0;
-        for (const DrawCommand* c : canvas.InGroup("contacts"))
-        {
-            dots += c->kind == DrawCommand::Kind::FillCircle ? 1 : 0;
-        }
+        const int dots = ContactDotsAtVerdict(h);
         // The panel's rows "contact cK at impact" (one per contact of a hit), then the static test's rows.
         const bool hit = (study.Textbook() ? study.textbookSweepResult.status : study.sweepResult.status) ==
                          SweepStatus::Hit;

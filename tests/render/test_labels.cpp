@@ -2494,150 +2494,62 @@ struct Drawn
 
 // Every check of one drawn figure: its texts against each other, the marks and the image, and, for a pair, its
 // labels against the pair's bodies and (with namedFaces) the faces its sentences name.
+// Appends the problems one check found to the figure's.
+void Append(std::vector<std::string>& problems, std::vector<std::string> more)
+{
+    for (std::string& p : more)
+    {
+        problems.push_back(std::move(p));
+    }
+}
+
 std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Scene& scene, const FigureSetup& setup,
                                         bool namedFaces = true)
 {
     std::vector<std::string> problems = HiddenTexts(canvas, setup.figure.view.width, setup.figure.view.height);
-    for (std::string& p : LabelsOnLines(canvas))
-    {
-        problems.push_back(std::move(p));
-    }
-    for (std::string& p : LeadersOutOfImage(canvas, setup.figure.view.width, setup.figure.view.height))
-    {
-        problems.push_back(std::move(p));
-    }
-    for (std::string& p : LeadersAlongGrid(canvas))
-    {
-        problems.push_back(std::move(p));
-    }
-    for (std::string& p : PushesOnEdges(canvas))
-    {
-        problems.push_back(std::move(p));
-    }
-    for (std::string& p : LeadersFromArrowTails(canvas))
-    {
-        problems.push_back(std::move(p));
-    }
-    for (std::string& p : BandLeadersAstray(canvas))
-    {
-        problems.push_back(std::move(p));
-    }
-    for (std::string& p : ArrowNamesNearerOtherArrows(canvas))
-    {
-        problems.push_back(std::move(p));
-    }
-    for (std::string& p : NameLeadersFromShafts(canvas))
-    {
-        problems.push_back(std::move(p));
-    }
-    for (std::string& p : IncidentLeadersAcrossReference(canvas))
-    {
-        problems.push_back(std::move(p));
-    }
-    for (std::string& p : FaceLeadersFromMarks(canvas, setup.study.manifold.normal))
-    {
-        problems.push_back(std::move(p));
-    }
+    Append(problems, LabelsOnLines(canvas));
+    Append(problems, LeadersOutOfImage(canvas, setup.figure.view.width, setup.figure.view.height));
+    Append(problems, LeadersAlongGrid(canvas));
+    Append(problems, PushesOnEdges(canvas));
+    Append(problems, LeadersFromArrowTails(canvas));
+    Append(problems, BandLeadersAstray(canvas));
+    Append(problems, ArrowNamesNearerOtherArrows(canvas));
+    Append(problems, NameLeadersFromShafts(canvas));
+    Append(problems, IncidentLeadersAcrossReference(canvas));
+    Append(problems, FaceLeadersFromMarks(canvas, setup.study.manifold.normal));
     // A figure of its own (a decomposition, ...) draws no pair: the checks of labels against the pair's bodies
     // are for the pair's figures.
     if (setup.figure.kind == FigureKind::Pair)
     {
-        for (std::string& p : LabelsInOtherBody(canvas, scene, setup.study, setup.figure.view))
+        Append(problems, LabelsInOtherBody(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, VelocityInOtherGhost(canvas, scene, setup.study, setup.figure.view, setup.figure.layers));
+        Append(problems, LeadersAcrossSeparatingLine(canvas));
+        Append(problems, VertexNumbersInOtherBody(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, LabelsOnOutlines(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, LeadersAlongOutlines(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, FaceLeadersAtCrossings(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, EdgeNamesAheadOfArrows(canvas, scene, setup.study, setup.figure.view));
+        if (namedFaces)
         {
-            problems.push_back(std::move(p));
+            Append(problems, EdgeNamesBehind(canvas, scene, setup.study, setup.figure.view));
         }
-        for (std::string& p :
-             VelocityInOtherGhost(canvas, scene, setup.study, setup.figure.view, setup.figure.layers))
+        Append(problems, LabelsOnOtherBodies(canvas, scene, setup.study, setup.figure.view));
+        if (namedFaces)
         {
-            problems.push_back(std::move(p));
+            Append(problems, NamedFacesUnnamed(canvas, scene, setup.study, setup.figure.layers, setup.figure.view));
         }
-        for (std::string& p : LeadersAcrossSeparatingLine(canvas))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : VertexNumbersInOtherBody(canvas, scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : LabelsOnOutlines(canvas, scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : LeadersAlongOutlines(canvas, scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : FaceLeadersAtCrossings(canvas, scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : EdgeNamesAheadOfArrows(canvas, scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : namedFaces ? EdgeNamesBehind(canvas, scene, setup.study, setup.figure.view)
-                                         : std::vector<std::string>{})
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : LabelsOnOtherBodies(canvas, scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : namedFaces ? NamedFacesUnnamed(canvas, scene, setup.study, setup.figure.layers,
-                                                             setup.figure.view)
-                                         : std::vector<std::string>{})
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : NamesAstray(canvas, scene, setup.study))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : LabelsOnDashedOutlines(canvas))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : ReferenceFaceFar(canvas))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : ReferenceFaceAtCorner(canvas, scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : ReferenceFaceBeyondEnd(canvas))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : FaceNamesAstray(canvas, scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : EdgeNamesByRivalCorners(canvas, scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : ArrowsBetween(canvas, scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : CornersAtTheSides(scene, setup.study, setup.figure.view, setup.figure.layers))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : LabelsNearerAnotherMark(canvas, scene, setup.study, setup.figure.view))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : ArrowLabelsAstray(canvas))
-        {
-            problems.push_back(std::move(p));
-        }
-        for (std::string& p : LeadersAcrossBars(canvas))
-        {
-            problems.push_back(std::move(p));
-        }
+        Append(problems, NamesAstray(canvas, scene, setup.study));
+        Append(problems, LabelsOnDashedOutlines(canvas));
+        Append(problems, ReferenceFaceFar(canvas));
+        Append(problems, ReferenceFaceAtCorner(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, ReferenceFaceBeyondEnd(canvas));
+        Append(problems, FaceNamesAstray(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, EdgeNamesByRivalCorners(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, ArrowsBetween(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, CornersAtTheSides(scene, setup.study, setup.figure.view, setup.figure.layers));
+        Append(problems, LabelsNearerAnotherMark(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, ArrowLabelsAstray(canvas));
+        Append(problems, LeadersAcrossBars(canvas));
     }
     return problems;
 }
