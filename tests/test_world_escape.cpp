@@ -167,3 +167,66 @@ TEST_CASE("Two fast bodies thrown at each other never pass through each other", 
     // They must have met: a pair that never touched would say nothing.
     CHECK(met == pairs);
 }
+
+TEST_CASE("A body touching a wall, pressed by a body that overlaps it, is not pushed into the wall",
+          "[world][property][soft-step-fails]")
+{
+    // No gravity, every body at rest: a disc or a box whose side lies on a wall's face (its gap a few ulps either
+    // side of zero, so that the world's tests, which grow a shape by a margin and take it off again, round it to a
+    // touch or not), and a heavier box overlapping it from the other side by 0.02 to 0.15 (less than a pass of the
+    // position correction moves a body). The passes must push the heavy box out, not the small body into the wall:
+    // it may end no deeper in the wall than twice the slop (the passes leave a resting body up to the slop deep, and
+    // each pass pushes it out of the wall before it pushes the two bodies apart). Walls 0.01 to 1 thick, at any
+    // angle, anywhere.
+    int pressed = 0;
+    const int cases = 3000;
+    for (int k = 0; k < cases; ++k)
+    {
+        Rng rng(0x7a110000u + static_cast<uint64_t>(k));
+        World world; // no gravity
+        UseStepUnderTest(world);
+        const double heading = rng.Uniform(0.0, 2.0 * kPi);
+        const Vec2 d{std::cos(heading), std::sin(heading)}; // from the wall into the room
+        const Vec2 across{-d.y, d.x};
+        const Vec2 face = Vec2{rng.Uniform(-10.0, 10.0), rng.Uniform(-10.0, 10.0)};
+        const double thickness = rng.LogUniform(-2.0, 0.0);
+        const int wall = AddStatic(world, BoxShape(0.5 * thickness, 2.0), face - 0.5 * thickness * d, heading);
+        const double size = rng.Uniform(0.05, 0.5);
+        const bool disc = rng.Chance(0.5);
+        // The small body's centre, a whole number of ulps off touching.
+        Vec2 centre = face + size * d + rng.Uniform(-0.5, 0.5) * size * across;
+        const int ulps = rng.Int(-3, 6);
+        for (int u = 0; u < std::abs(ulps); ++u)
+        {
+            const Vec2 toward = ulps > 0 ? centre + d : centre - d;
+            centre = {std::nextafter(centre.x, toward.x), std::nextafter(centre.y, toward.y)};
+        }
+        const int small = AddDynamic(world, disc ? DiscShape(size) : BoxShape(size, size), centre, heading);
+        const double depth = rng.Uniform(0.02, std::min(0.15, size));
+        const double half = rng.Uniform(1.0, 3.0) * size;
+        const int heavy = AddDynamic(world, BoxShape(half, half),
+                                     centre + (size + half - depth) * d + rng.Uniform(-0.5, 0.5) * size * across,
+                                     heading, {}, 0.0, Material{}, rng.Uniform(1.0, 50.0));
+        const auto overlap = [&](int i, int j) {
+            const RigidBody& a = world.bodies[static_cast<size_t>(i)];
+            const RigidBody& b = world.bodies[static_cast<size_t>(j)];
+            const Manifold m = Collide(a.shape, a.Xf(), b.shape, b.Xf());
+            return m.overlap ? m.depth : 0.0;
+        };
+        const double before = overlap(small, heavy);
+        REQUIRE(before > 0.01);
+        for (int s = 0; s < 10; ++s)
+        {
+            Step(world, kDt);
+            // The event the check is about: the heavy box presses the small body (a contact where they overlap).
+            for (const WorldContact& c : world.contacts)
+            {
+                pressed += s == 0 && c.a == small && c.b == heavy && c.points[0].separation < 0.0 ? 1 : 0;
+            }
+            INFO("case " << k << " (" << (disc ? "disc" : "box") << " " << size << ", " << ulps << " ulps off, wall "
+                         << thickness << " thick), step " << s + 1);
+            REQUIRE(overlap(small, wall) <= 2.0 * world.settings.linearSlop);
+        }
+    }
+    CHECK(pressed == cases);
+}

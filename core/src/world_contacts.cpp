@@ -299,11 +299,15 @@ void Stepper::FindContacts()
             bool guard = false;
             if (m.contactCount == 0)
             {
-                // Beyond reach of a static body, but within what the position passes can move it: a guard.
+                // Beyond reach of a static body, but within what the position passes can move it: a guard. The
+                // pair is apart (the call above found nothing within the margin), so whatever the wider call finds
+                // is a guard, even when it calls the pair touching: a body resting against a wall, at rest in a
+                // world without gravity, has no margin, and the wider call, which grows one shape by the margin
+                // and takes it off again, can round its gap of a few ulps to a touch.
                 if (correctionReach > 0.0 && (a.type == BodyType::Static) != (b.type == BodyType::Static))
                 {
                     cm = detail::CollidePair(a, xfs[i], b, xfs[j], margin + correctionReach);
-                    guard = m.contactCount > 0 && !m.overlap;
+                    guard = m.contactCount > 0;
                 }
                 if (!guard)
                 {
@@ -313,7 +317,7 @@ void Stepper::FindContacts()
             WorldContact c;
             // A pair still apart that the sweep takes gets no speculative contact, only a guard (see LeftToSweep).
             c.guard = guard || (!m.overlap && LeftToSweep(i, j));
-            touchingOf[static_cast<size_t>(piece)] += m.overlap;
+            touchingOf[static_cast<size_t>(piece)] += m.overlap && !guard;
             speculativeOf[static_cast<size_t>(piece)] += !m.overlap && !c.guard;
             c.a = i;
             c.b = j;
