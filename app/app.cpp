@@ -207,6 +207,8 @@ bool App::Open(const std::string& path, int step, bool faces)
     }
     m_recent.Remember(path);
     m_takenBack.clear();
+    // A view.step past the figure's last step (the test taken in by now; a large pair's says it once its test is).
+    const std::string stepNotice = m_viewer.TakeStepNotice();
     if (!m_options.unsavedDir.empty() && InFolder(path, m_options.unsavedDir))
     {
         // Changes an app left when it ended without saving: saved to a file of the user's, the copy goes.
@@ -215,6 +217,11 @@ bool App::Open(const std::string& path, int step, bool faces)
         SetStatus("Opened " + path + ", changes kept when satviz ended before saving them: Save asks for a file "
                                      "to keep them in, then this copy is removed",
                   false);
+        return true;
+    }
+    if (!stepNotice.empty())
+    {
+        SetStatus(path + ": " + stepNotice, true);
         return true;
     }
     SetStatus("Opened " + path +
@@ -943,6 +950,10 @@ void App::TakeFinishedTest()
     if (!m_viewer.Setup().Ok())
     {
         SetStatus(m_viewer.Setup().error, true);
+    }
+    if (const std::string stepNotice = m_viewer.TakeStepNotice(); !stepNotice.empty())
+    {
+        SetStatus(m_document.File() + ": " + stepNotice, true);
     }
     if (m_viewer.TakeRetest())
     {

@@ -27,6 +27,8 @@ void Viewer::Reset(const Scene& scene)
         m_camera.zoom = scene.view.zoom;
     }
     m_step = scene.view.step;
+    m_stepAsked = true;
+    m_stepNotice.clear();
     m_time = scene.view.time;
     // The figure of the scene before is no longer shown, nor a test of it still running taken in.
     m_setup = FigureSetup{};
@@ -135,6 +137,17 @@ void Viewer::Adopt(FigureSetup fresh, Scene studied)
     {
         return;
     }
+    if (std::exchange(m_stepAsked, false))
+    {
+        // A step the file asks for and the figure does not have: satviz-render refuses the file; the app shows the
+        // verdict, says so, and a save writes the step shown.
+        const int steps = FigureStepCount(m_studied, m_setup);
+        if (m_step >= steps)
+        {
+            m_stepNotice = MissingStep("view.step", m_step, steps) + ", so it opens at the verdict";
+            m_step = VerdictStep();
+        }
+    }
     ShowStep(onVerdict ? VerdictStep() : m_step);
     // A scene that frames itself is framed for the canvas as satviz-render frames it for another size (FrameScene),
     // and fitted when that framing would show nothing.
@@ -213,6 +226,7 @@ int Viewer::NextStep(int step, int direction) const
 void Viewer::ShowStep(int step)
 {
     m_step = step;
+    m_stepAsked = false; // a step chosen (a lesson's) is no longer the file's
     if (!m_setup.Ok())
     {
         return;

@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <atomic>
 #include <memory>
+#include <string>
+#include <utility>
 
 namespace satviz
 {
@@ -75,6 +77,9 @@ class Viewer
     int Step() const { return m_step; }
     /// Shows trace step `step`; one that does not exist shows the verdict.
     void ShowStep(int step);
+    /// Once, after the first test of a scene whose view.step is past the figure's last step (a file satviz-render
+    /// refuses): why it is shown at the verdict instead, in one line that names the field; empty otherwise.
+    std::string TakeStepNotice() { return std::exchange(m_stepNotice, std::string()); }
     /// The last step, the verdict: the pair's SAT test's (PairStudy::VerdictStep), or for a concave pair the
     /// pieces figure's, after the broadphase and each pair of pieces tested.
     int VerdictStep() const;
@@ -159,6 +164,8 @@ class Viewer
     std::shared_ptr<StudyJob> m_job;
     bool m_retest = false;
     int m_step = 0;
+    bool m_stepAsked = false;  // m_step is still the scene's view.step, not yet checked against a test of it
+    std::string m_stepNotice;  // TakeStepNotice
     bool m_playing = false;
     double m_playClock = 0.0;
     double m_time = -1.0;

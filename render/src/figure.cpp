@@ -71,6 +71,12 @@ bool FigurePair(const Scene& scene, int& a, int& b)
     return true;
 }
 
+std::string MissingStep(const std::string& field, int step, int steps)
+{
+    return field + ": step " + std::to_string(step + 1) + " does not exist: this figure has steps 1 to " +
+           std::to_string(steps) + " (the last is the verdict)";
+}
+
 int FigureStepCount(const Scene& scene, const FigureSetup& setup)
 {
     switch (setup.figure.kind)
@@ -210,9 +216,7 @@ FigureSetup SetUpFigure(const Scene& scene, const FigureOptions& options)
     const int steps = FigureStepCount(scene, setup);
     if (step >= steps)
     {
-        setup.error = std::string(options.setStep ? "--step" : "view.step") + ": step " + std::to_string(step + 1) +
-                      " does not exist: this figure has steps 1 to " + std::to_string(steps) +
-                      " (the last is the verdict)";
+        setup.error = MissingStep(options.setStep ? "--step" : "view.step", step, steps);
         return setup;
     }
     figure.step = step < 0 ? (kind == FigureKind::Pieces ? steps - 1 : setup.study.VerdictStep()) : step;

@@ -1187,6 +1187,59 @@ TEST_CASE("A scene whose view asks for sim_steps opens at that step of its simul
     fs::remove(file);
 }
 
+/// A copy of bundled scene `name` whose view block asks for trace step `step` (from 1, as the file counts them).
+fs::path CopyAtStep(const std::string& name, int step)
+{
+    const fs::path copy = ScratchCopy(name);
+    nlohmann::json scene;
+    std::ifstream(copy) >> scene;
+    scene["view"]["step"] = step;
+    const fs::path asked = copy.parent_path() / ("step" + std::to_string(step) + "-" + name);
+    std::ofstream(asked) << scene.dump(2);
+    return asked;
+}
+
+TEST_CASE("A scene whose view.step is past its last step opens at the verdict and says so, naming the file and field",
+          "[app]")
+{
+    // satviz-render refuses such a file; the app shows it, at the verdict, with one line that says why, and a save
+    // writes the step shown. overlapping_boxes has 5 steps: its 4 axes and the verdict.
+    Harness h(ScratchCopy("separated_triangle.json").string());
+    const fs::path file = CopyAtStep("overlapping_boxes.json", 40);
+    REQUIRE(h.app->Open(file.string()));
+    h.Frames(2);
+    REQUIRE(h.View().Setup().Ok());
+    CHECK(h.View().Step() == h.View().VerdictStep());
+    CHECK(h.app->StatusIsError());
+    const std::string& said = h.app->Status();
+    CHECK(said.find(file.string()) == 0);
+    CHECK(said.find("view.step: step 40 does not exist: this figure has steps 1 to 5") != std::string::npos);
+    CHECK(said.find("the verdict") != std::string::npos);
+    CHECK(said.find('\n') == std::string::npos);
+    CHECK(h.Doc().File() == file.string());
+    CHECK(!h.Doc().Dirty());
+    CHECK(h.app->SceneForSaving().view.step == h.View().VerdictStep());
+
+    // A step that exists says nothing of it.
+    REQUIRE(h.app->Open(CopyAtStep("overlapping_boxes.json", 3).string()));
+    h.Frames(2);
+    CHECK(h.View().Step() == 2);
+    CHECK(!h.app->StatusIsError());
+
+    // A large pair tested on the worker thread says it once its test is in.
+    AppOptions background;
+    background.backgroundVertices = 8;
+    Harness large(ScratchCopy("separated_triangle.json").string(), background);
+    const fs::path many = CopyAtStep("many_sides.json", 500);
+    REQUIRE(large.app->Open(many.string()));
+    REQUIRE(large.AwaitStudy());
+    large.Frames(2);
+    REQUIRE(large.View().Setup().Ok());
+    CHECK(large.View().Step() == large.View().VerdictStep());
+    CHECK(large.app->StatusIsError());
+    CHECK(large.app->Status().find(many.string() + ": view.step: step 500 does not exist") == 0);
+}
+
 TEST_CASE("Quitting without changes needs no question", "[app]")
 {
     Harness h(ScratchCopy("overlapping_boxes.json").string());

@@ -47,6 +47,11 @@ bool FigurePair(const Scene& scene, int& a, int& b);
 /// of its own that has no steps (a decomposition, a slice, a disc cast).
 int FigureStepCount(const Scene& scene, const FigureSetup& setup);
 
+/// Why a figure has no trace step `step` (from 0) of the `steps` it has, asked for by `field` ("view.step",
+/// "--step"): "view.step: step 9 does not exist: this figure has steps 1 to 5 (the last is the verdict)", its
+/// steps counted from 1 as the file and the command line count them.
+std::string MissingStep(const std::string& field, int step, int steps);
+
 /// The camera of a slice figure (FigureKind::Slice) of the figure's size that draws `body` and the scene's cut
 /// filling the before panel, the left half below the caption band and the panel's title, at the scale the figure
 /// gives both panels when it frames itself. The app draws the slice through its camera and opens it so.
