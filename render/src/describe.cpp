@@ -192,6 +192,14 @@ std::string Time(double t)
     return std::isinf(t) ? (t > 0 ? "never" : "always") : "t = " + FormatNumber(t);
 }
 
+// Two times a sentence gives together ("from t = 0.610 until t = 2.253"), with as many decimals each as its row
+// and its time bar write them (FormatTimes); an infinite one as Time words it.
+std::pair<std::string, std::string> Times(double a, double b)
+{
+    const auto [x, y] = FormatTimes(a, b);
+    return {std::isinf(a) ? Time(a) : "t = " + x, std::isinf(b) ? Time(b) : "t = " + y};
+}
+
 // The span a sweep covers, t from 0 to 1: one step of a scene without a world, where a velocity is the displacement
 // over a step; one second of a world's scene, whose velocities are in units per second and whose figures sweep them
 // over a second (many steps of dt). A world that counts time in steps (dt = 1) says "step", as its lesson does.
@@ -454,8 +462,9 @@ std::string NeverClosesReason(const Scene& scene, const TextbookSweepAxis& t)
                           "shapes cannot interpenetrate"
                         : "on this axis the intervals are apart and do not move, so the shapes cannot interpenetrate";
     }
-    return "on this axis the intervals overlap only before " + SweptSpan(scene) + " (from " + Time(t.entry) + " until " +
-           Time(t.exit) + ") and move apart during it, so the shapes cannot interpenetrate";
+    const auto [from, until] = Times(t.entry, t.exit);
+    return "on this axis the intervals overlap only before " + SweptSpan(scene) + " (from " + from + " until " +
+           until + ") and move apart during it, so the shapes cannot interpenetrate";
 }
 
 // Why a face of a face-test sweep rules out a hit: the other shape is beyond it or on it at t = 0 and does not
@@ -515,14 +524,15 @@ std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, in
     {
         text += nameB + "'s interval moves " + FormatNumber(std::fabs(t.rate)) + " " + PerSpan(scene) + " " +
                 (t.rate > 0.0 ? "along" : "against") + " the axis, so they overlap ";
+        const auto [from, until] = Times(t.entry, t.exit);
         if (t.entry < 0.0 && t.exit > 0.0)
         {
             // The time bar marks that entry off its left end, "(before)": the sentence gives the same time.
-            text += "from before the start (" + Time(t.entry) + ") until " + Time(t.exit) + ".";
+            text += "from before the start (" + from + ") until " + until + ".";
         }
         else
         {
-            text += "from " + Time(t.entry) + " until " + Time(t.exit) + ".";
+            text += "from " + from + " until " + until + ".";
         }
     }
     if (t.endsTest)
@@ -533,9 +543,9 @@ std::string TextbookSweepAxisStep(const Scene& scene, const PairStudy& study, in
     {
         const TextbookSweepAxis& entry = study.textbookSweep.axes[static_cast<size_t>(t.latestEntry)];
         const TextbookSweepAxis& exit = study.textbookSweep.axes[static_cast<size_t>(t.earliestExit)];
-        text += " So far every axis overlaps from " +
-                (std::isinf(entry.entry) ? std::string("the start") : Time(entry.entry)) + " until " +
-                (std::isinf(exit.exit) ? std::string("the end") : Time(exit.exit)) + ".";
+        const auto [from, until] = Times(entry.entry, exit.exit);
+        text += " So far every axis overlaps from " + (std::isinf(entry.entry) ? std::string("the start") : from) +
+                " until " + (std::isinf(exit.exit) ? std::string("the end") : until) + ".";
     }
     return text;
 }
@@ -599,9 +609,10 @@ std::string TextbookSweepVerdict(const Scene& scene, const PairStudy& study)
         {
             const TextbookSweepAxis& entry = trace.axes[static_cast<size_t>(last.latestEntry)];
             const TextbookSweepAxis& exit = trace.axes[static_cast<size_t>(last.earliestExit)];
+            const auto [meet, part] = Times(entry.entry, exit.exit);
             return "Verdict: no hit during " + SweptSpan(scene) + ": on axis " + std::to_string(last.earliestExit + 1) +
-                   " the intervals part at " + Time(exit.exit) + ", before those of axis " +
-                   std::to_string(last.latestEntry + 1) + " meet at " + Time(entry.entry) +
+                   " the intervals part at " + part + ", before those of axis " +
+                   std::to_string(last.latestEntry + 1) + " meet at " + meet +
                    ", so the shapes never overlap on all axes at once.";
         }
     }
@@ -752,8 +763,9 @@ std::string SweepTimes(const SweepAxis& axis)
     {
         return " and moves away.";
     }
-    return "; it is behind from " + (std::isinf(axis.entry) ? std::string("the start") : Time(axis.entry)) + " until " +
-           (std::isinf(axis.exit) ? std::string("the end") : Time(axis.exit)) + ".";
+    const auto [from, until] = Times(axis.entry, axis.exit);
+    return "; it is behind from " + (std::isinf(axis.entry) ? std::string("the start") : from) + " until " +
+           (std::isinf(axis.exit) ? std::string("the end") : until) + ".";
 }
 
 // A face of a walked loop not walked to: what the bound of the other shape's vertex showed.
@@ -767,11 +779,12 @@ std::string BoundedFace(const std::string& other, const SweepAxis& axis)
              ? "the gap between the projection intervals on this axis is at most " + FormatNumber(axis.bound)
              : "the projection intervals on this axis overlap by at least " + FormatNumber(-axis.bound));
     const std::string rate = FormatNumber(std::fabs(axis.rate)) + " per step";
+    const auto [bound, known] = Times(axis.boundTime, axis.knownEntry);
     if (axis.exitPass)
     {
         return "Second pass, for the exits, once the latest entry is known. Not walked to: " + where +
-               ", and they move apart by " + rate + ": they part no earlier than " + Time(axis.boundTime) +
-               ", after the latest entry (" + Time(axis.knownEntry) +
+               ", and they move apart by " + rate + ": they part no earlier than " + bound +
+               ", after the latest entry (" + known +
                "), so this face cannot part them before every axis overlaps.";
     }
     if (axis.bound < 0.0)
@@ -781,7 +794,7 @@ std::string BoundedFace(const std::string& other, const SweepAxis& axis)
                "once the latest entry is known.";
     }
     return "Not walked to: " + where + ", and it closes by " + rate + ", so the intervals meet by " +
-           Time(axis.boundTime) + " at the latest, before an entry already found (" + Time(axis.knownEntry) +
+           bound + " at the latest, before an entry already found (" + known +
            "): this face's entry cannot be the latest.";
 }
 
@@ -839,7 +852,8 @@ std::string FaceSweepStep(const Scene& scene, const PairStudy& study, int step)
     {
         const SweepAxis& entry = study.sweepTrace.axes[static_cast<size_t>(axis.latestEntry)];
         const SweepAxis& exit = study.sweepTrace.axes[static_cast<size_t>(axis.earliestExit)];
-        text += " So far: latest entry " + Time(entry.entry) + ", earliest exit " + Time(exit.exit) + ".";
+        const auto [latest, earliest] = Times(entry.entry, exit.exit);
+        text += " So far: latest entry " + latest + ", earliest exit " + earliest + ".";
     }
     return text;
 }
@@ -1043,6 +1057,16 @@ std::vector<std::string> FormatAlike(const std::vector<double>& values)
     return texts;
 }
 
+std::pair<std::string, std::string> FormatTimes(double entry, double exit)
+{
+    if (std::isfinite(entry) && std::isfinite(exit))
+    {
+        const std::vector<std::string> alike = FormatAlike({entry, exit});
+        return {alike[0], alike[1]};
+    }
+    return {FormatNumber(entry), FormatNumber(exit)};
+}
+
 namespace
 {
 
@@ -1241,10 +1265,13 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
         title += "centres";
         break;
     }
-    auto times = [](double entry, double exit) {
-        return ", overlap from " + (std::isinf(entry) ? std::string("the start") : FormatNumber(entry)) + " to " +
-               (std::isinf(exit) ? std::string("the end") : FormatNumber(exit));
+    // The two times of a row read together, with as many decimals each (FormatTimes).
+    auto fromTo = [](double entry, double exit) {
+        const auto [from, to] = FormatTimes(entry, exit);
+        return (std::isinf(entry) ? std::string("the start") : from) + " to " +
+               (std::isinf(exit) ? std::string("the end") : to);
     };
+    auto times = [&](double entry, double exit) { return ", overlap from " + fromTo(entry, exit); };
     if (study.Textbook())
     {
         if (study.sweep)
@@ -1268,9 +1295,7 @@ std::string StepTitle(const Scene& scene, const PairStudy& study, int step)
                             : s.bound < 0.0 ? ", not walked to (overlaps at t = 0)"
                                             : ", not walked to (entry by " + FormatNumber(s.boundTime) + ")");
         }
-        return title + (s.exitPass ? ", exits: behind from " : ", behind from ") +
-               (std::isinf(s.entry) ? std::string("the start") : FormatNumber(s.entry)) + " to " +
-               (std::isinf(s.exit) ? std::string("the end") : FormatNumber(s.exit));
+        return title + (s.exitPass ? ", exits: behind from " : ", behind from ") + fromTo(s.entry, s.exit);
     }
     const AxisTest& test = study.trace.axes[k];
     if (test.skipped)

@@ -3406,14 +3406,15 @@ class Painter
             const float a = x(m_axis.windowExit);
             const float b = std::max(x(m_axis.windowEntry), a + 2.0f);
             m_canvas.FillRect({a, y - 3.0f}, {b, y + 3.0f}, WithAlpha(palette::kResult, 0.55f));
-            const std::string text = "no common time: exit " + FormatNumber(m_axis.windowExit) + " < entry " +
-                                     FormatNumber(m_axis.windowEntry);
+            const auto [entry, exit] = FormatTimes(m_axis.windowEntry, m_axis.windowExit);
+            const std::string text = "no common time: exit " + exit + " < entry " + entry;
             const ScreenPoint size = m_canvas.MeasureText(text, TextStyle::Label);
             // A row of its own, under the entry and exit labels.
             m_canvas.Text({std::clamp(0.5f * (a + b) - 0.5f * size.x, left, right - size.x), y + 43.0f}, text,
                          TextStyle::Label, 0xA04000FFu);
         }
-        auto marker = [&](double t, const std::string& name, bool up) {
+        // `shown`: t as the sentence writes it beside the other marker's time, with as many decimals (FormatTimes).
+        auto marker = [&](double t, const std::string& shown, const std::string& name, bool up) {
             if (std::isinf(t) || std::isnan(t))
             {
                 // A face test asks about one side of one face: an exit it never reaches is that face's alone, not
@@ -3432,7 +3433,7 @@ class Painter
             const float dir = up ? -1.0f : 1.0f;
             const ScreenPoint tri[3] = {{px, y}, {px - 5.0f, y + dir * 9.0f}, {px + 5.0f, y + dir * 9.0f}};
             m_canvas.FillConvex(tri, 3, palette::kInk);
-            std::string text = name + " " + (std::isinf(t) ? "never" : FormatNumber(t));
+            std::string text = name + " " + (std::isinf(t) ? "never" : shown);
             if (!inside)
             {
                 text += t < 0.0 ? " (before)" : " (after)";
@@ -3455,20 +3456,29 @@ class Painter
         // them is the miss, and the deciding axis's own entry would mark a time the verdict does not speak of.
         if (m_verdict && (status == SweepStatus::Hit || CommonWindow() == WindowShown::Never))
         {
-            marker(m_axis.windowEntry, "latest entry", true);
-            marker(m_axis.windowExit, "earliest exit", false);
+            // A hit's latest entry is its time of first contact, written as the verdict's row, sentence and ghost
+            // write it; a miss's two times are read together, as its "no common time" note gives them.
+            auto [entry, exit] = FormatTimes(m_axis.windowEntry, m_axis.windowExit);
+            if (status == SweepStatus::Hit)
+            {
+                entry = FormatNumber(m_axis.windowEntry);
+                exit = FormatNumber(m_axis.windowExit);
+            }
+            marker(m_axis.windowEntry, entry, "latest entry", true);
+            marker(m_axis.windowExit, exit, "earliest exit", false);
         }
         else
         {
+            const auto [entry, exit] = FormatTimes(m_axis.entry, m_axis.exit);
             if (!std::isinf(m_axis.entry) || m_axis.separation > 0.0 || m_axis.never)
             {
-                marker(m_axis.entry, "entry", true);
+                marker(m_axis.entry, entry, "entry", true);
             }
             const bool noCommonTime = !(w0 <= w1 && m_axis.windowEntry <= 1.0) && m_axis.windowExit < m_axis.windowEntry &&
                                       m_axis.windowExit <= 1.0;
             if (!(noCommonTime && std::isinf(m_axis.exit)) && !m_axis.never)
             {
-                marker(m_axis.exit, "exit", false);
+                marker(m_axis.exit, exit, "exit", false);
             }
         }
     }

@@ -2142,8 +2142,10 @@ TEST_CASE("A miss whose axes never overlap at once marks the latest entry and th
             bar += c->kind == DrawCommand::Kind::Text ? c->text + "\n" : "";
         }
         INFO(bar);
-        CHECK(bar.find("latest entry " + FormatNumber(latest) + "\n") != std::string::npos);
-        CHECK(bar.find("earliest exit " + FormatNumber(earliest) + "\n") != std::string::npos);
+        // Read together, with as many decimals each, as the note of no common time gives them (FormatTimes).
+        const auto [entry, exit] = FormatTimes(latest, earliest);
+        CHECK(bar.find("latest entry " + entry + "\n") != std::string::npos);
+        CHECK(bar.find("earliest exit " + exit + "\n") != std::string::npos);
         CHECK(bar.find("\nentry ") == std::string::npos);
     }
 }

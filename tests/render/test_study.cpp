@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
-// The study of a pair in single precision against the same study in double, on random pairs.
+// The study of a pair in single precision against the same study in double, on random pairs; the numbers of its
+// rows and sentences.
 
 #include "render/painter_support.h"
 #include "support/random_shapes.h"
+#include "support/scene_files.h"
 
 #include <satviz/render/describe.h>
 #include <satviz/render/study.h>
@@ -10,6 +12,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <regex>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -74,4 +79,117 @@ TEST_CASE("A sweep where nothing moves says what the static test at t = 0 decide
         INFO(touching);
         CHECK(touching.find("static test at t = 0 decides: it finds them touching without overlapping") != std::string::npos);
     }
+}
+
+TEST_CASE("The numbers of an axis row, and a sentence's times from and until, are written with as many decimals each",
+          "[study]")
+{
+    // A student reads a row's two times together: circle_and_polygon's sweep row read "overlap from 0.61 to 2.253",
+    // as if the first were rounded further than the second. Every row of the axes list (StepTitle) of every course
+    // scene, static and swept, in both step views; the times a step's sentence gives as "from t = .. until t = ..";
+    // and the entry and exit its time bar marks at an axis step. A number of more than three decimals is a small
+    // one's significant digits, not a width for the others.
+    const auto decimals = [](const std::string& t) {
+        const size_t dot = t.find('.');
+        return dot == std::string::npos ? 0 : static_cast<int>(t.size() - dot - 1);
+    };
+    const std::regex number(R"(-?\d+\.\d+)");
+    const std::regex times(R"(from (?:before the start \()?t = (-?\d+\.\d+)\)? until t = (-?\d+\.\d+))");
+    std::vector<std::string> mixed;
+    const std::regex marked(R"(^(?:entry|exit) (-?\d+\.\d+))");
+    int rows = 0;
+    int pairs = 0;
+    int bars = 0;
+    const auto check = [&](const std::vector<std::string>& numbers, const std::string& where) {
+        std::set<int> counts;
+        for (const std::string& n : numbers)
+        {
+            if (decimals(n) <= 3)
+            {
+                counts.insert(decimals(n));
+            }
+        }
+        if (counts.size() > 1)
+        {
+            mixed.push_back(where);
+        }
+    };
+    for (const std::string& file : testing::TutorialSceneFiles(true))
+    {
+        SceneResult loaded = LoadScene(file, SceneOptions{true});
+        REQUIRE(loaded.Ok());
+        const Scene& scene = loaded.scene;
+        if (scene.bodies.size() < 2 || scene.bodies[0].IsConcave() || scene.bodies[1].IsConcave())
+        {
+            continue;
+        }
+        const std::string name = std::filesystem::path(file).filename().string();
+        for (const ViewQuery query : {ViewQuery::Collide, ViewQuery::Sweep})
+        {
+            for (const StepView view : {StepView::Textbook, StepView::Faces})
+            {
+                const PairStudy study = StudyPair(scene, 0, 1, query, false, view);
+                for (int step = 0; step < study.StepCount() && step < 80; ++step)
+                {
+                    const std::string row = StepTitle(scene, study, step);
+                    std::vector<std::string> numbers;
+                    for (auto it = std::sregex_iterator(row.begin(), row.end(), number); it != std::sregex_iterator();
+                         ++it)
+                    {
+                        numbers.push_back(it->str());
+                    }
+                    ++rows;
+                    check(numbers, name + ": " + row);
+                    const std::string sentence = DescribeStep(scene, study, step);
+                    for (auto it = std::sregex_iterator(sentence.begin(), sentence.end(), times);
+                         it != std::sregex_iterator(); ++it)
+                    {
+                        ++pairs;
+                        check({(*it)[1].str(), (*it)[2].str()}, name + " step " + std::to_string(step + 1) + ": " +
+                                                                    it->str());
+                    }
+                }
+                if (!study.sweep)
+                {
+                    continue;
+                }
+                Scene asked = scene;
+                asked.view.query = query;
+                asked.view.steps = view;
+                FigureSetup setup = SetUpFigure(asked, {});
+                if (!setup.Ok() || setup.figure.kind != FigureKind::Pair)
+                {
+                    continue;
+                }
+                for (int step = 0; step < setup.study.VerdictStep() && step < 80; ++step)
+                {
+                    const RecordingCanvas canvas = painter_test::Paint(asked, setup, step, setup.figure.layers);
+                    std::vector<std::string> times;
+                    std::string bar;
+                    for (const DrawCommand* c : canvas.InGroup("timebar"))
+                    {
+                        std::smatch m;
+                        if (c->kind == DrawCommand::Kind::Text && std::regex_search(c->text, m, marked))
+                        {
+                            times.push_back(m[1].str());
+                            bar += " | " + c->text;
+                        }
+                    }
+                    if (times.size() == 2)
+                    {
+                        ++bars;
+                        check(times, name + " time bar of step " + std::to_string(step + 1) + bar);
+                    }
+                }
+            }
+        }
+    }
+    CHECK(rows > 1000);
+    CHECK(pairs > 50);
+    CHECK(bars > 50);
+    for (const std::string& m : mixed)
+    {
+        UNSCOPED_INFO(m);
+    }
+    CHECK(mixed.empty());
 }

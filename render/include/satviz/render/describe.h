@@ -5,6 +5,7 @@
 #include <satviz/render/study.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace satviz
@@ -34,6 +35,11 @@ std::string FormatPair(double x, double y, const char* open = "(", const char* c
 /// as they are. A whole number FormatNumber groups (999 999) is written as the others when they have decimals
 /// (999999.00 beside 1000000.90), not in a form of its own.
 std::vector<std::string> FormatAlike(const std::vector<double>& values);
+
+/// Two times read together, an entry and an exit, written as FormatAlike writes them when both are finite: "0.610"
+/// and "2.253", not "0.61" and "2.253". An infinite one is left as FormatNumber writes it ("inf", "-inf"), for the
+/// caller to word ("the start", "never"), and the other as FormatNumber writes it alone.
+std::pair<std::string, std::string> FormatTimes(double entry, double exit);
 
 /// hi - lo computed from the two values as FormatNumber shows them, so that a reader subtracting the printed ends
 /// gets the printed difference. Where the ends are too small or too large for that (beyond 1e5, their own rounding
