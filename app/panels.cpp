@@ -1494,8 +1494,9 @@ const std::vector<HelpSection>& HelpSections()
           "polygon vertices go counter-clockwise, the interior on their left",
           "the normal points from A to B: moving B by depth x normal separates the pair",
           "a velocity is in units per time unit: its arrow and the swept test (t from 0 to 1) cover one time unit",
-          "without a world block a step lasts dt = 1, so a velocity is the displacement over one step; lessons 14 "
-          "to 17 are in metres and seconds (m/s, steps of dt = 1/60 s), so t runs over one second, 60 steps",
+          "a scene without a world block is not stepped: its velocity is the displacement over the swept test's t "
+          "from 0 to 1, which its figures call one step (\"per step\"); lessons 14 to 17 have a world in metres and "
+          "seconds (m/s, steps of dt = 1/60 s), so t runs over one second, 60 steps",
           "the simulation steps a scene that has a world block; Add a world, under Simulation, gives one to a scene "
           "that has none (steps of 1/60 s, no gravity)"}},
     };

@@ -2343,6 +2343,37 @@ TEST_CASE("F1 names every key the app answers to, the simulation's among them", 
     }
 }
 
+TEST_CASE("F1 says a scene without a world block is not stepped, and what its figures call a step", "[app]")
+{
+    // F1 said "without a world block a step lasts dt = 1", of scenes the simulation does not step: what such a scene
+    // has is the swept test's span, t from 0 to 1, which its sentences call a step ("moves 1.588 per step").
+    std::string line;
+    for (const HelpSection& section : HelpSections())
+    {
+        for (const char* l : section.lines)
+        {
+            if (std::string(l).find("without a world block") != std::string::npos)
+            {
+                line = l;
+            }
+        }
+    }
+    INFO(line);
+    REQUIRE(!line.empty());
+    CHECK(line.find("is not stepped") != std::string::npos);
+    CHECK(line.find("lasts dt = 1") == std::string::npos);
+    CHECK(line.find("t from 0 to 1") != std::string::npos);
+    CHECK(line.find("\"per step\"") != std::string::npos);
+    // As the app says when p is pressed on such a scene, and as the sweep's sentences word it.
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/circle_and_polygon.json");
+    REQUIRE(!h.app->ShownScene().hasWorld);
+    h.app->SimPlay(true);
+    CHECK(h.app->Status().find("so it is not stepped") != std::string::npos);
+    const PairStudy& study = h.View().Setup().study;
+    REQUIRE(study.sweep);
+    CHECK(DescribeStep(h.View().Studied(), study, 0).find(" per step ") != std::string::npos);
+}
+
 TEST_CASE("A scene that frames itself keeps its framing, scaled to the canvas left beside a lesson", "[app][lessons]")
 {
     // The lessons' scenes frame their figures for 800 x 600 pixels; beside the lesson column and the side panel the
