@@ -877,7 +877,18 @@ void App::SimShowStep(int step)
 
 void App::SimReset()
 {
+    const int taken = m_sim.Last();
+    const bool back = m_sim.Shown() > 0;
     SimShowStep(0);
+    if (back && m_sim.Error().empty())
+    {
+        // The steps are kept: Reset shows the world where it started (or the oldest step the history holds), it
+        // takes none back.
+        const std::string where = m_sim.Shown() == 0 ? "at its start, the scene as written,"
+                                                     : "at step " + std::to_string(m_sim.Shown()) + ", the oldest held,";
+        SetPassingStatus("Reset: the world is back " + where + " after " + std::to_string(taken) +
+                         (taken == 1 ? " step" : " steps") + "; Forward and the step slider go through them again");
+    }
 }
 
 void App::SimSpeed(double stepsPerSecond)

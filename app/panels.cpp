@@ -1161,7 +1161,7 @@ void Panels::SimulationControls()
     // The step's time in the digits of the response's sentences (DescribeWorld); how many steps the app took is its
     // own.
     const WorldWords world = DescribeWorld(m_app.ShownScene(), sim.Record());
-    WrappedText(world.time + "; " + std::to_string(sim.Last()) + (sim.Last() == 1 ? " step" : " steps") + " taken");
+    WrappedText(world.time + "; " + StepsTakenWords(sim.Shown(), sim.Last()));
     if (sim.First() > 0)
     {
         ImGui::TextDisabled("steps before %d are no longer held", sim.First());

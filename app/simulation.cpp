@@ -339,4 +339,23 @@ void Simulation::ChoosePair(int pairA, int pairB)
     }
 }
 
+std::string StepsTakenWords(int shown, int last)
+{
+    const std::string steps = std::to_string(last) + (last == 1 ? " step" : " steps");
+    if (last == 0)
+    {
+        return "no step taken yet";
+    }
+    if (shown >= last)
+    {
+        return steps + " taken";
+    }
+    if (shown == 0)
+    {
+        return "back at the start, the scene as written, after " + steps +
+               ": Forward and the slider go through them again";
+    }
+    return "back at step " + std::to_string(shown) + " of the " + steps + " taken";
+}
+
 } // namespace satviz

@@ -133,6 +133,11 @@ class Simulation
     Run m_aside;
 };
 
+/// What the simulation panel says of the steps taken, beside the step shown (`shown`, of `last` taken): "135 steps
+/// taken" at the latest; back at step 0 (Reset), that the world is back at its start after them; at another step
+/// before the latest, which of them it is. Forward and the slider go through the steps taken again.
+std::string StepsTakenWords(int shown, int last);
+
 /// True when both scenes make the same world: the same bodies (shapes, states, static or dynamic, densities,
 /// materials) in the same order, and the same gravity and dt.
 bool SameWorld(const Scene& a, const Scene& b);

@@ -3283,6 +3283,41 @@ TEST_CASE("The sweep's ghost at time is named as what it draws, and ticked again
     CHECK(h.View().Studied().bodies[1].position == h.Doc().GetScene().bodies[1].position);
 }
 
+TEST_CASE("Reset says the world went back to its start after the steps taken, and the panel says where it is",
+          "[app][sim]")
+{
+    // After 135 steps and Reset the simulation panel read "Step 0: time 0 s (dt 0.0167 s); 135 steps taken", as if
+    // nothing had gone back, and Reset said nothing. The panel writes StepsTakenWords after the step's time.
+    Harness h(ScratchCopy("l15_slope.json").string());
+    const Simulation& sim = h.app->GetSimulation();
+    for (int i = 0; i < 135; ++i)
+    {
+        h.app->SimForward();
+    }
+    REQUIRE(sim.Shown() == 135);
+    CHECK(StepsTakenWords(sim.Shown(), sim.Last()) == "135 steps taken");
+    h.app->SimReset();
+    REQUIRE(sim.Shown() == 0);
+    REQUIRE(sim.Last() == 135);
+    CHECK(!h.app->StatusIsError());
+    CHECK(h.app->Status() == "Reset: the world is back at its start, the scene as written, after 135 steps; Forward "
+                             "and the step slider go through them again");
+    h.Frames(1);
+    CHECK(StepsTakenWords(sim.Shown(), sim.Last()) ==
+          "back at the start, the scene as written, after 135 steps: Forward and the slider go through them again");
+    h.app->SimShowStep(40);
+    h.Frames(1);
+    CHECK(StepsTakenWords(sim.Shown(), sim.Last()) == "back at step 40 of the 135 steps taken");
+    // The passing message goes with the step it spoke of; a Reset at the start says nothing, nothing went back.
+    CHECK(h.app->Status().empty());
+    h.app->SimShowStep(0);
+    h.Frames(1);
+    h.app->SimReset();
+    CHECK(h.app->Status().empty());
+    CHECK(StepsTakenWords(0, 0) == "no step taken yet");
+    CHECK(StepsTakenWords(1, 1) == "1 step taken");
+}
+
 TEST_CASE("The plots keep the totals of the latest kMaxSamples steps", "[app][sim]")
 {
     const SceneResult loaded = LoadScene((fs::path(SATVIZ_SOURCE_DIR) / "tutorials/scenes/l14_head_on.json").string());
