@@ -1261,32 +1261,72 @@ class Painter
             }
             MarkedArrow(from, tip, InkOf(s), 2.0f, 11.0f);
             m_velocityShafts.emplace_back(from, tip);
-            // Kept out of the other body, where it would read as that body's velocity.
-            const std::string name = shortened ? "v = " + FormatLabelNumber(Length(body.velocity)) +
-                                                     (m_scene.hasWorld ? " m/s" : " per step")
-                                               : "v";
-            m_labels.PlaceOutside(OutlineOf(1 - s), tip, name, shortened ? TextStyle::Label : TextStyle::Heading, InkOf(s),
-                                 static_cast<float>(body.velocity.x), static_cast<float>(-body.velocity.y), 6.0f,
-                                 LabelRank::Note);
-            m_labels.Names(MarkKind::ArrowHead);
-            // Beside its own shaft, where the head is crowded (beside a face's normal, whose "v" it would seem).
             // Not beside its own ghost on the way, where the name reads as the ghost's.
             std::vector<ScreenPoint> ghost;
             if (m_study.sweepResult.status == SweepStatus::Hit && Has(m_figure, kLayerGhost))
             {
                 ghost = ShapeOutline(m_view, body.shape, BodyTransformAt(body, m_study.sweepResult.toi));
             }
-            // A short shaft that runs wholly by it keeps its places: the ghost is then where the arrow is.
+            // Kept out of the other body, where it would read as that body's velocity: by its head, or beside its own
+            // shaft where the head is crowded (beside a face's normal, whose "v" it would seem).
+            const std::vector<ScreenPoint> otherOutline = OutlineOf(1 - s);
+            const auto along = [&](float f) {
+                return ScreenPoint{from.x + (tip.x - from.x) * f, from.y + (tip.y - from.y) * f};
+            };
+            bool into = false;
             std::vector<ScreenPoint> shaft;
             std::vector<ScreenPoint> clear;
-            for (const float f : {0.2f, 0.4f, 0.6f})
+            if (Covered(tip, otherOutline, 0.0f) && !Covered(from, otherOutline, 0.0f))
             {
-                const ScreenPoint p{tip.x + (from.x - tip.x) * f, tip.y + (from.y - tip.y) * f};
-                shaft.push_back(p);
-                if (!Covered(p, ghost, 24.0f))
+                // An arrow that runs into the other body (a box thrown at a floor): by its head, inside that body,
+                // the name would sit by that body's own name. It is named beside the part of its shaft between the
+                // two bodies, from the middle of that part out; where that part is too short for it (a box resting
+                // on a floor), by its head as before.
+                const auto edge = [&](const std::vector<ScreenPoint>& outline, bool entering) {
+                    float lo = 0.0f, hi = 1.0f;
+                    for (int k = 0; k < 24; ++k)
+                    {
+                        const float mid = 0.5f * (lo + hi);
+                        (Covered(along(mid), outline, 0.0f) == entering ? hi : lo) = mid;
+                    }
+                    return entering ? lo : hi;
+                };
+                const float enter = edge(otherOutline, true);
+                const float leave = Covered(from, OutlineOf(s), 0.0f) ? edge(OutlineOf(s), false) : 0.0f;
+                for (const float f : {0.5f, 0.35f, 0.65f, 0.2f, 0.8f})
                 {
-                    clear.push_back(p);
+                    const ScreenPoint p = along(leave + (enter - leave) * f);
+                    shaft.push_back(p);
+                    if (!Covered(p, ghost, 24.0f))
+                    {
+                        clear.push_back(p);
+                    }
                 }
+                into = true;
+            }
+            else
+            {
+                // A short shaft that runs wholly by it keeps its places: the ghost is then where the arrow is.
+                for (const float f : {0.8f, 0.6f, 0.4f})
+                {
+                    const ScreenPoint p = along(f);
+                    shaft.push_back(p);
+                    if (!Covered(p, ghost, 24.0f))
+                    {
+                        clear.push_back(p);
+                    }
+                }
+            }
+            const std::string name = shortened ? "v = " + FormatLabelNumber(Length(body.velocity)) +
+                                                     (m_scene.hasWorld ? " m/s" : " per step")
+                                               : "v";
+            m_labels.PlaceOutside(otherOutline, tip, name, shortened ? TextStyle::Label : TextStyle::Heading,
+                                  InkOf(s), static_cast<float>(body.velocity.x), static_cast<float>(-body.velocity.y),
+                                  6.0f, LabelRank::Note);
+            m_labels.Names(MarkKind::ArrowHead);
+            if (into)
+            {
+                m_labels.PreferOutOf(otherOutline);
             }
             m_labels.AlsoBeside(clear.empty() ? std::move(shaft) : std::move(clear));
             // And out of the other body where its ghost shows it (at the hit, at the figure's time).

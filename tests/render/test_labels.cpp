@@ -493,6 +493,72 @@ std::vector<std::string> VelocityInOtherGhost(const RecordingCanvas& canvas, con
     return problems;
 }
 
+// A body's velocity "v" inside the other body as it stands, where it reads as that body's (l09_landing's "v" by the
+// floor's head of the arrow, inside the floor, beside the floor's name), when the arrow runs into that body and the
+// part of its shaft between the two bodies has room for the name beside it (48 pixels: clear of the marks at both
+// ends, the body's outline and the other body's face).
+std::vector<std::string> VelocityInOtherBody(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
+                                             const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    const Body* bodies[2] = {&scene.bodies[static_cast<size_t>(study.bodyA)],
+                             &scene.bodies[static_cast<size_t>(study.bodyB)]};
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || c->text != "v")
+        {
+            continue;
+        }
+        for (int s = 0; s < 2; ++s)
+        {
+            const Body& body = *bodies[s];
+            const Body& other = *bodies[1 - s];
+            if ((c->color >> 8) != (inks[s] >> 8) || body.velocity == Vec2{})
+            {
+                continue;
+            }
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            if (!InsideBody(other, ToWorld(view, {c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y})))
+            {
+                continue;
+            }
+            // The arrow from the centre over one step's displacement: the length of its shaft outside both bodies
+            // before it enters the other, on screen.
+            const Vec2 from = TransformPoint(body.Xf(), body.shape.type == ShapeType::Polygon
+                                                            ? body.shape.polygon.Centroid()
+                                                            : body.shape.circle.center);
+            const Vec2 to = from + body.velocity;
+            const ScreenPoint a = ToScreen(view, from), b = ToScreen(view, to);
+            const float length = std::hypot(b.x - a.x, b.y - a.y);
+            if (!InsideBody(other, to) || InsideBody(other, from))
+            {
+                continue;
+            }
+            const int samples = 400;
+            int between = 0;
+            for (int k = 0; k < samples; ++k)
+            {
+                const Vec2 p = from + ((k + 0.5) / samples) * body.velocity;
+                if (InsideBody(other, p))
+                {
+                    break;
+                }
+                between += InsideBody(body, p) ? 0 : 1;
+            }
+            const float room = length * static_cast<float>(between) / samples;
+            if (room >= 48.0f)
+            {
+                problems.push_back(Describe(*c) + ", " + body.name + "'s velocity, lies inside " + other.name +
+                                   " where " + std::to_string(static_cast<int>(room)) +
+                                   " px of its shaft run between the two");
+            }
+        }
+    }
+    return problems;
+}
+
 // Leader lines across the separating line: the label lands on the other body's side of the line that parts the
 // two, among that body's labels (an edge's name led over the line beside its face).
 std::vector<std::string> LeadersAcrossSeparatingLine(const RecordingCanvas& canvas)
@@ -1822,19 +1888,27 @@ std::vector<std::string> LabelsNearerAnotherMark(const RecordingCanvas& canvas, 
 }
 
 // Labels that name an arrow ("v", "v = 2.00 m/s", "MTV 0.20") clearly nearer (by 6 pixels, to the nearest corner of
-// each head) the head of an arrow of another colour than any of their own colour: beside a face's normal, the velocity's "v" reads as that normal's name. A label on a
-// leader line is joined to its arrow.
+// each head) the head of an arrow of another colour than any arrow of their own colour, its head or its shaft:
+// beside a face's normal, the velocity's "v" reads as that normal's name. A label on a leader line is joined to its
+// arrow.
 std::vector<std::string> ArrowLabelsAstray(const RecordingCanvas& canvas)
 {
     std::vector<std::string> problems;
     RecordingCanvas measure;
     std::vector<const DrawCommand*> heads;
-    for (const DrawCommand& c : canvas.commands)
+    std::vector<const DrawCommand*> shafts; // each head's shaft, drawn just before it (null: none)
+    for (size_t k = 0; k < canvas.commands.size(); ++k)
     {
+        const DrawCommand& c = canvas.commands[k];
         if (IsArrowHead(c) && c.group != "labels" && c.group != "legend" && c.group != "panel" &&
             c.group != "timebar" && c.group != "caption")
         {
             heads.push_back(&c);
+            const DrawCommand* before = k > 0 ? &canvas.commands[k - 1] : nullptr;
+            shafts.push_back(before != nullptr && before->kind == DrawCommand::Kind::Segment &&
+                                     before->color == c.color && before->group == c.group
+                                 ? before
+                                 : nullptr);
         }
     }
     for (const DrawCommand* c : canvas.InGroup("labels"))
@@ -1849,8 +1923,9 @@ std::vector<std::string> ArrowLabelsAstray(const RecordingCanvas& canvas)
         const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
         float own = INFINITY, other = INFINITY;
         const DrawCommand* nearest = nullptr;
-        for (const DrawCommand* h : heads)
+        for (size_t k = 0; k < heads.size(); ++k)
         {
+            const DrawCommand* h = heads[k];
             float d = INFINITY;
             for (const ScreenPoint& p : h->points)
             {
@@ -1858,7 +1933,12 @@ std::vector<std::string> ArrowLabelsAstray(const RecordingCanvas& canvas)
             }
             if ((h->color >> 8) == (c->color >> 8))
             {
+                // Its own arrow, head or shaft: a name beside the shaft, away from a crowded head, is the arrow's.
                 own = std::min(own, d);
+                if (shafts[k] != nullptr)
+                {
+                    own = std::min(own, ToSegment(middle, shafts[k]->points[0], shafts[k]->points[1]));
+                }
             }
             else if (d < other)
             {
@@ -2523,6 +2603,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
     {
         Append(problems, LabelsInOtherBody(canvas, scene, setup.study, setup.figure.view));
         Append(problems, VelocityInOtherGhost(canvas, scene, setup.study, setup.figure.view, setup.figure.layers));
+        Append(problems, VelocityInOtherBody(canvas, scene, setup.study, setup.figure.view));
         Append(problems, LeadersAcrossSeparatingLine(canvas));
         Append(problems, VertexNumbersInOtherBody(canvas, scene, setup.study, setup.figure.view));
         Append(problems, LabelsOnOutlines(canvas, scene, setup.study, setup.figure.view));
