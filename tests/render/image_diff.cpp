@@ -17,6 +17,9 @@ namespace
 /// Mesa's software rasteriser rounds anti-aliased edges differently on hosts with different vector units (AVX2
 /// against AVX-512): a channel may move by one or two levels there. Anything larger is a real difference.
 constexpr int kChannelTolerance = 2;
+/// And it may place an edge pixel of a faint anti-aliased line (a dashed projection line) a step over on one host and
+/// not on another: a few stray pixels. A real change (a label moved, a mark added or gone) changes far more.
+constexpr size_t kStrayPixels = 8;
 
 struct Image
 {
@@ -85,14 +88,15 @@ int main(int argc, char** argv)
             diff[i] = diff[i + 1] = diff[i + 2] = pale;
         }
     }
-    if (differing == 0)
+    if (differing <= kStrayPixels)
     {
         return 0;
     }
     std::string error;
     const bool written = satviz::WritePngFile(argv[3], diff, expected.width, expected.height, false, error);
-    std::printf("%s differs from %s in %zu of %d pixels (largest channel difference %d, tolerance %d); %s%s\n", argv[1],
-                argv[2], differing, expected.width * expected.height, largest, kChannelTolerance,
+    std::printf("%s differs from %s in %zu of %d pixels (largest channel difference %d, tolerance %d, %zu stray pixels "
+                "allowed); %s%s\n",
+                argv[1], argv[2], differing, expected.width * expected.height, largest, kChannelTolerance, kStrayPixels,
                 written ? "difference image: " : "", written ? argv[3] : error.c_str());
     return 1;
 }
