@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <optional>
 
 namespace satviz
 {
@@ -3050,20 +3051,34 @@ class Painter
                                          away.y, 6.0f, LabelRank::Name);
                     continue;
                 }
-                // The MTV's arrow starts at the middle of the body it moves: the name goes just behind the arrow's
-                // tail or beside its shaft, where it still fits, rather than hang on a leader line that ends on
-                // that tail and reads as naming the arrow.
+                // The MTV's arrow starts at the middle of the body it moves, and a velocity at the middle of its
+                // body: the name goes just behind the arrow's tail or beside its shaft, where it still fits, rather
+                // than hang on a leader line that ends on that tail and reads as naming the arrow (l17_corner's
+                // ball, led to where its velocity starts).
+                std::optional<std::pair<ScreenPoint, ScreenPoint>> tailed;
                 if (m_hasMtvArrow && std::hypot(m_mtvFrom.x - anchor.x, m_mtvFrom.y - anchor.y) < 16.0f)
                 {
-                    const float length = std::hypot(m_mtvFrom.x - m_mtvTo.x, m_mtvFrom.y - m_mtvTo.y);
-                    const ScreenPoint back{length > 0.0f ? (m_mtvFrom.x - m_mtvTo.x) / length : 0.0f,
-                                           length > 0.0f ? (m_mtvFrom.y - m_mtvTo.y) / length : 1.0f};
-                    const ScreenPoint shaftMiddle{0.5f * (m_mtvFrom.x + m_mtvTo.x), 0.5f * (m_mtvFrom.y + m_mtvTo.y)};
+                    tailed = std::pair{m_mtvFrom, m_mtvTo};
+                }
+                for (const std::pair<ScreenPoint, ScreenPoint>& shaft : m_velocityShafts)
+                {
+                    if (!tailed && std::hypot(shaft.first.x - anchor.x, shaft.first.y - anchor.y) < 16.0f)
+                    {
+                        tailed = shaft;
+                    }
+                }
+                if (tailed)
+                {
+                    const auto [tailFrom, tailTo] = *tailed;
+                    const float length = std::hypot(tailFrom.x - tailTo.x, tailFrom.y - tailTo.y);
+                    const ScreenPoint back{length > 0.0f ? (tailFrom.x - tailTo.x) / length : 0.0f,
+                                           length > 0.0f ? (tailFrom.y - tailTo.y) / length : 1.0f};
+                    const ScreenPoint shaftMiddle{0.5f * (tailFrom.x + tailTo.x), 0.5f * (tailFrom.y + tailTo.y)};
                     const float hx = 0.5f * text.x + 4.0f;
                     const float hy = 0.5f * text.y + 2.0f;
                     bool moved = false;
                     for (const auto& [origin, way] :
-                         {std::pair{m_mtvFrom, back}, std::pair{shaftMiddle, ScreenPoint{-back.y, back.x}},
+                         {std::pair{tailFrom, back}, std::pair{shaftMiddle, ScreenPoint{-back.y, back.x}},
                           std::pair{shaftMiddle, ScreenPoint{back.y, -back.x}}})
                     {
                         const float shift = std::abs(way.x) * hx + std::abs(way.y) * hy + 4.0f;
@@ -3079,7 +3094,7 @@ class Painter
                     // A body too small to hold it there has a leader line to it start behind the tail, inside.
                     for (float d = 10.0f; !moved && d < 0.5f * std::max(wide, tall); d += 2.0f)
                     {
-                        const ScreenPoint q{m_mtvFrom.x + d * back.x, m_mtvFrom.y + d * back.y};
+                        const ScreenPoint q{tailFrom.x + d * back.x, tailFrom.y + d * back.y};
                         if (!Covered(q, outline, -3.0f))
                         {
                             break;

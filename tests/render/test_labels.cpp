@@ -2212,9 +2212,9 @@ std::vector<std::string> PushesOnEdges(const RecordingCanvas& canvas)
     return problems;
 }
 
-// A leader line that starts at the tail of the MTV's arrow or a piece pair's push (the middle of the body it moves,
-// where a body's name is led from when the arrow takes its place): it reads as naming the arrow
-// (l02_box_and_triangle's "triangle", l18_seam's "box").
+// A leader line that starts at the tail of the MTV's arrow, a piece pair's push or a velocity (the middle of the body
+// it moves, where a body's name is led from when the arrow takes its place): it reads as naming the arrow
+// (l02_box_and_triangle's "triangle", l18_seam's "box", l17_corner's "ball").
 std::vector<std::string> LeadersFromArrowTails(const RecordingCanvas& canvas)
 {
     std::vector<std::string> problems;
@@ -2223,9 +2223,20 @@ std::vector<std::string> LeadersFromArrowTails(const RecordingCanvas& canvas)
     {
         shafts.push_back(push);
     }
+    // A velocity: a solid shaft in "swept" followed by its head.
+    for (size_t k = 0; k + 1 < canvas.commands.size(); ++k)
+    {
+        const DrawCommand& c = canvas.commands[k];
+        if (c.group == "swept" && c.kind == DrawCommand::Kind::Segment && c.thickness >= 2.0f &&
+            IsArrowHead(canvas.commands[k + 1]) && canvas.commands[k + 1].color == c.color)
+        {
+            shafts.push_back(&c);
+        }
+    }
     for (const DrawCommand* shaft : shafts)
     {
-        if (shaft->kind != DrawCommand::Kind::Segment || shaft->thickness < (shaft->group == "push" ? 2.0f : 3.0f))
+        if (shaft->kind != DrawCommand::Kind::Segment ||
+            shaft->thickness < (shaft->group == "push" || shaft->group == "swept" ? 2.0f : 3.0f))
         {
             continue;
         }
@@ -2235,7 +2246,8 @@ std::vector<std::string> LeadersFromArrowTails(const RecordingCanvas& canvas)
             if (leader->kind == DrawCommand::Kind::Segment &&
                 std::hypot(leader->points[0].x - tail.x, leader->points[0].y - tail.y) < 10.0f)
             {
-                problems.push_back("a leader line starts at the tail of the MTV's arrow, at (" +
+                problems.push_back("a leader line starts at the tail of the " +
+                                   std::string(shaft->group == "swept" ? "velocity's" : "MTV's") + " arrow, at (" +
                                    std::to_string(static_cast<int>(tail.x)) + ", " +
                                    std::to_string(static_cast<int>(tail.y)) + ")");
             }
