@@ -3051,14 +3051,18 @@ class Painter
                                          away.y, 6.0f, LabelRank::Name);
                     continue;
                 }
-                // The MTV's arrow starts at the middle of the body it moves, and a velocity at the middle of its
-                // body: the name goes just behind the arrow's tail or beside its shaft, where it still fits, rather
+                // The MTV's arrow (or the pitfall's push) starts at the middle of the body it moves, and a velocity
+                // at the middle of its body: the name goes just behind the arrow's tail or beside its shaft, where it still fits, rather
                 // than hang on a leader line that ends on that tail and reads as naming the arrow (l17_corner's
                 // ball, led to where its velocity starts).
                 std::optional<std::pair<ScreenPoint, ScreenPoint>> tailed;
                 if (m_hasMtvArrow && std::hypot(m_mtvFrom.x - anchor.x, m_mtvFrom.y - anchor.y) < 16.0f)
                 {
                     tailed = std::pair{m_mtvFrom, m_mtvTo};
+                }
+                else if (m_hasPitfallArrow && std::hypot(m_pitfallFrom.x - anchor.x, m_pitfallFrom.y - anchor.y) < 16.0f)
+                {
+                    tailed = std::pair{m_pitfallFrom, m_pitfallTo};
                 }
                 for (const std::pair<ScreenPoint, ScreenPoint>& shaft : m_velocityShafts)
                 {
@@ -3091,11 +3095,27 @@ class Painter
                             break;
                         }
                     }
-                    // A body too small to hold it there has a leader line to it start behind the tail, inside.
-                    for (float d = 10.0f; !moved && d < 0.5f * std::max(wide, tall); d += 2.0f)
+                    // A body too small to hold it there has a leader line to it start behind the tail, inside, not
+                    // by a corner, where the leader would name the corner (pitfall_one_shape's diamond).
+                    const auto byCorner = [&](ScreenPoint q) {
+                        if (body.shape.type != ShapeType::Polygon)
+                        {
+                            return false;
+                        }
+                        for (const Vec2& v : body.shape.polygon.Vertices())
+                        {
+                            const ScreenPoint corner = At(TransformPoint(body.Xf(), v));
+                            if (std::hypot(corner.x - q.x, corner.y - q.y) < 16.0f)
+                            {
+                                return true;
+                            }
+                        }
+                        return false;
+                    };
+                    for (float d = 12.0f; !moved && d < 0.5f * std::max(wide, tall); d += 2.0f)
                     {
                         const ScreenPoint q{tailFrom.x + d * back.x, tailFrom.y + d * back.y};
-                        if (!Covered(q, outline, -3.0f))
+                        if (!Covered(q, outline, -3.0f) || byCorner(q))
                         {
                             break;
                         }

@@ -2212,13 +2212,24 @@ std::vector<std::string> PushesOnEdges(const RecordingCanvas& canvas)
     return problems;
 }
 
-// A leader line that starts at the tail of the MTV's arrow, a piece pair's push or a velocity (the middle of the body
-// it moves, where a body's name is led from when the arrow takes its place): it reads as naming the arrow
-// (l02_box_and_triangle's "triangle", l18_seam's "box", l17_corner's "ball").
+// A leader line that starts at the tail of the MTV's arrow, the pitfall's push, a piece pair's push or a velocity (the
+// middle of the body it moves, where a body's name is led from when the arrow takes its place): it reads as naming
+// the arrow (l02_box_and_triangle's "triangle", l18_seam's "box", l17_corner's "ball", pitfall_one_shape's
+// "diamond").
 std::vector<std::string> LeadersFromArrowTails(const RecordingCanvas& canvas)
 {
     std::vector<std::string> problems;
-    std::vector<const DrawCommand*> shafts = canvas.InGroup("mtv");
+    // The MTV's shaft (3 pixels thick) and the first dash of the pitfall's push (2), from its tail.
+    std::vector<const DrawCommand*> shafts;
+    bool pitfallTail = false;
+    for (const DrawCommand* c : canvas.InGroup("mtv"))
+    {
+        if (c->kind == DrawCommand::Kind::Segment && (c->thickness >= 3.0f || (c->thickness >= 2.0f && !pitfallTail)))
+        {
+            pitfallTail = pitfallTail || c->thickness < 3.0f;
+            shafts.push_back(c);
+        }
+    }
     for (const DrawCommand* push : canvas.InGroup("push"))
     {
         shafts.push_back(push);
@@ -2235,8 +2246,7 @@ std::vector<std::string> LeadersFromArrowTails(const RecordingCanvas& canvas)
     }
     for (const DrawCommand* shaft : shafts)
     {
-        if (shaft->kind != DrawCommand::Kind::Segment ||
-            shaft->thickness < (shaft->group == "push" || shaft->group == "swept" ? 2.0f : 3.0f))
+        if (shaft->kind != DrawCommand::Kind::Segment || shaft->thickness < 2.0f)
         {
             continue;
         }
