@@ -619,6 +619,17 @@ bool LabelPlacer::NearestFace(const Label& label, const ScreenRect& rect) const
             }
         }
     }
+    // Nor in a row with a contact's dot just past its end, where it reads as the dot's name (l06_tilted_plank's
+    // "reference face" ending some 15 px left of c1).
+    for (const Mark& m : m_marks)
+    {
+        const float dx = std::max({rect.minX - m.at.x, m.at.x - rect.maxX, 0.0f});
+        const float dy = std::max({rect.minY - m.at.y, m.at.y - rect.maxY, 0.0f});
+        if (m.kind == MarkKind::Contact && dy <= 2.0f && dx < 26.0f)
+        {
+            return false;
+        }
+    }
     // Nor about as near the head of another arrow as its own face: just past the head it reads as that arrow's name
     // (B's "e0" at the tip of A's e1 normal, which points into B along B's bottom face). Its own face's normal
     // points square to the face, from a point of it.

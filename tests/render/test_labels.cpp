@@ -1148,6 +1148,48 @@ std::vector<std::string> NamedFacesUnnamed(const RecordingCanvas& canvas, const 
     return problems;
 }
 
+bool OnLeader(const RecordingCanvas& canvas, const DrawCommand& text);
+
+// A face's name ("reference face", "incident edge", "e2") in a row with a contact's dot, just past the dot's side,
+// with no leader line: it reads as the dot's name (l06_tilted_plank's "reference face" ending 8 px left of c1).
+std::vector<std::string> FaceNamesByDots(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    std::vector<ScreenPoint> dots;
+    for (const DrawCommand* c : canvas.InGroup("contacts"))
+    {
+        if (c->kind == DrawCommand::Kind::FillCircle && c->color == palette::kResult)
+        {
+            dots.push_back(c->points[0]);
+        }
+    }
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        const std::string& t = c->text;
+        if (c->kind != DrawCommand::Kind::Text ||
+            !(t == "reference face" || t == "incident edge" || painter_test::IsEdgeName(t)) || OnLeader(canvas, *c))
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(t, c->style);
+        const float top = c->points[0].y, bottom = c->points[0].y + size.y;
+        const float left = c->points[0].x, right = c->points[0].x + size.x;
+        for (const ScreenPoint& dot : dots)
+        {
+            const float gap = std::max(left - dot.x, dot.x - right);
+            if (dot.y >= top - 2.0f && dot.y <= bottom + 2.0f && gap >= 0.0f && gap < 26.0f)
+            {
+                problems.push_back(Describe(*c) + " lies in a row with the contact's dot at (" +
+                                   std::to_string(static_cast<int>(dot.x)) + ", " +
+                                   std::to_string(static_cast<int>(dot.y)) + "), " +
+                                   std::to_string(static_cast<int>(gap)) + " px past its end");
+            }
+        }
+    }
+    return problems;
+}
+
 // A "reference face" label far from the contact: a textbook names the face where the incident edge is clipped
 // against it, beside the contact points (or between them), not at the far end of a long face (a floor's free
 // stretch). Far is more than a label's width and a half from the stretch between the contact points.
@@ -2644,6 +2686,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         Append(problems, NamesAstray(canvas, scene, setup.study));
         Append(problems, LabelsOnDashedOutlines(canvas));
         Append(problems, ReferenceFaceFar(canvas));
+        Append(problems, FaceNamesByDots(canvas));
         Append(problems, ReferenceFaceAtCorner(canvas, scene, setup.study, setup.figure.view));
         Append(problems, ReferenceFaceBeyondEnd(canvas));
         Append(problems, FaceNamesAstray(canvas, scene, setup.study, setup.figure.view));
