@@ -14,7 +14,6 @@ namespace satviz
 namespace
 {
 
-constexpr float kHeaderHeight = 40.0f; // a panel's title and the line under it
 constexpr float kMargin = 28.0f;       // room around the outline inside a panel, for vertex numbers
 
 // Indices of the outline's reflex vertices, taken in counter-clockwise order whatever the outline's own.
@@ -112,11 +111,18 @@ void OutlineBox(const std::vector<Vec2>& outline, const Transform& xf, Vec2& low
     }
 }
 
-// The two panels below the caption band whose bottom is `top`.
-void PanelRects(float top, float width, float height, ScreenRect (&rects)[2])
+// The subtitles of the two panels: the method each decomposition uses.
+constexpr const char* kMethods[2] = {"ear clipping, then Hertel-Mehlhorn", "exact programme, corners at vertices"};
+
+// The two panels below the caption band whose bottom is `top`, each below its header (`headers`), both below the
+// taller: a narrow canvas wraps a subtitle to more lines.
+void PanelRects(float top, float width, float height, PanelHeader (&headers)[2], ScreenRect (&rects)[2])
 {
-    rects[0] = {0.0f, top + kHeaderHeight, 0.5f * width, height};
-    rects[1] = {0.5f * width, top + kHeaderHeight, width, height};
+    headers[0] = LayOutPanelHeader(kMethods[0], 0.5f * width);
+    headers[1] = LayOutPanelHeader(kMethods[1], 0.5f * width);
+    const float header = std::max(headers[0].height, headers[1].height);
+    rects[0] = {0.0f, top + header, 0.5f * width, height};
+    rects[1] = {0.5f * width, top + header, width, height};
 }
 
 } // namespace
@@ -136,8 +142,9 @@ View FrameDecomposition(const Scene& scene, int bodyIndex, const Figure& figure)
                                                     Decompose(outline, DecomposeMethod::Fewest)),
                               width);
     }
+    PanelHeader headers[2];
     ScreenRect rects[2];
-    PanelRects(top, width, static_cast<float>(figure.view.height), rects);
+    PanelRects(top, width, static_cast<float>(figure.view.height), headers, rects);
     Vec2 low{};
     Vec2 high{};
     OutlineBox(outline, body.Xf(), low, high);
@@ -166,12 +173,12 @@ void PaintDecomposition(Canvas& surface, const Scene& scene, int bodyIndex, cons
     Vec2 low{};
     Vec2 high{};
     OutlineBox(outline, xf, low, high);
+    PanelHeader headers[2];
     ScreenRect rects[2];
-    PanelRects(top, width, height, rects);
+    PanelRects(top, width, height, headers, rects);
     const double zoom = std::min(FitZoom(rects[0], low, high, kMargin), FitZoom(rects[1], low, high, kMargin));
     const Decomposition* results[2] = {&fast, &fewest};
     const char* names[2] = {"Fast", "Fewest"};
-    const char* methods[2] = {"ear clipping, then Hertel-Mehlhorn", "exact programme, corners at vertices"};
     const std::vector<int> reflex = ReflexVertices(outline);
     const bool numbered = outline.size() <= 24;
     Vec2 middle{};
@@ -198,9 +205,8 @@ void PaintDecomposition(Canvas& surface, const Scene& scene, int bodyIndex, cons
         const std::string title =
             std::string(names[side]) + ": " + std::to_string(pieces) + (pieces == 1 ? " piece" : " pieces");
         const float x = rects[side].minX + 12.0f;
-        canvas.Text({x, top + 6.0f}, title, TextStyle::Heading, palette::kInk);
-        canvas.Text({x, top + 23.0f}, methods[side], TextStyle::Label, palette::kMuted);
-        labels.Reserve({x, top + 4.0f, rects[side].maxX, top + kHeaderHeight});
+        DrawPanelHeader(canvas, x, top, title, headers[side]);
+        labels.Reserve({x, top + 4.0f, rects[side].maxX, rects[side].minY});
         DrawPieces(canvas, panel.view, d.pieces, xf, rects[side]);
         for (const int i : reflex)
         {

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "draw_kit.h"
 
+#include <satviz/render/palette.h>
+#include <satviz/render/wrap.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -199,6 +202,40 @@ void DashedOutline(Canvas& canvas, const std::vector<ScreenPoint>& outline, Colo
             }
         }
         phase = std::fmod(phase + length, kPeriod);
+    }
+}
+
+namespace
+{
+
+constexpr float kSubtitleTop = 23.0f;    // from the band's bottom to the subtitle's first line
+constexpr float kOneLineHeader = 40.0f;  // a title and one line of subtitle
+
+float SubtitleLineHeight()
+{
+    return FontTextSize("Ag", TextStyle::Label).y + 2.0f;
+}
+
+} // namespace
+
+PanelHeader LayOutPanelHeader(const std::string& subtitle, float panelWidth)
+{
+    PanelHeader header;
+    // 12 pixels in from the panel's left side, 6 clear of its right.
+    header.lines = WrapLines(subtitle, std::max(1.0f, panelWidth - 18.0f),
+                             [](const std::string& s) { return FontTextSize(s, TextStyle::Label).x; });
+    const size_t lines = std::max<size_t>(1, header.lines.size());
+    header.height = kOneLineHeader + static_cast<float>(lines - 1) * SubtitleLineHeight();
+    return header;
+}
+
+void DrawPanelHeader(Canvas& canvas, float x, float top, const std::string& title, const PanelHeader& header)
+{
+    canvas.Text({x, top + 6.0f}, title, TextStyle::Heading, palette::kInk);
+    for (size_t i = 0; i < header.lines.size(); ++i)
+    {
+        canvas.Text({x, top + kSubtitleTop + static_cast<float>(i) * SubtitleLineHeight()}, header.lines[i],
+                    TextStyle::Label, palette::kMuted);
     }
 }
 

@@ -5,6 +5,7 @@
 #include <satviz/render/canvas.h>
 #include <satviz/shape.h>
 
+#include <string>
 #include <vector>
 
 namespace satviz
@@ -43,5 +44,20 @@ std::vector<ScreenPoint> ShapeOutline(const View& view, const Shape& shape, cons
 /// A closed dashed outline: the dash pattern restarts at each corner and runs on around a curve.
 void DashedOutline(Canvas& canvas, const std::vector<ScreenPoint>& outline, Color color, float thickness,
                    const ScreenRect& bounds);
+
+/// The header of one of a two-panel figure's panels (a slice's, a decomposition's): a title and a subtitle under it,
+/// the subtitle broken between words into lines that fit the panel (`panelWidth` wide, its text 12 pixels in) as
+/// the figures' fonts measure them, so that on a narrow canvas none runs past the panel's edge.
+struct PanelHeader
+{
+    std::vector<std::string> lines; ///< the subtitle's lines
+    float height = 0.0f;            ///< from the band's bottom to the panel's top: 40 pixels for one line
+};
+
+/// The header of a panel `panelWidth` wide whose subtitle is `subtitle`.
+PanelHeader LayOutPanelHeader(const std::string& subtitle, float panelWidth);
+
+/// Draws a panel's title at (x, top + 6) and the subtitle's lines under it.
+void DrawPanelHeader(Canvas& canvas, float x, float top, const std::string& title, const PanelHeader& header);
 
 } // namespace satviz

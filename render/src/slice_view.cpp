@@ -17,7 +17,6 @@ namespace satviz
 namespace
 {
 
-constexpr float kHeaderHeight = 40.0f; // a panel's title and the line under it
 constexpr float kMargin = 34.0f;       // room around the drawing inside a panel, for the crossings' coordinates
 constexpr float kApart = 10.0f;        // pixels each part is moved away from the cut in the after panel
 constexpr float kRoom = 6.0f;          // pixels a part's area keeps from the part's outline to be written inside it
@@ -206,14 +205,27 @@ namespace
 // hold the body and the cut.
 struct SliceLayout
 {
+    PanelHeader headers[2]; // the before panel's and the after panel's
     ScreenRect rects[2];
     Vec2 low, high; // the world box of the body's outline and the cut
     double zoom = 1.0;
 };
 
-SliceLayout LayOutSlice(const std::vector<Vec2>& outline, Vec2 a, Vec2 b, float top, float width, float height)
+// The subtitles of the before and after panels.
+std::string BeforeSubtitle(const Body& body)
+{
+    return body.name + ", and the cut";
+}
+constexpr const char* kAfterSubtitle = "each part cut into convex pieces";
+
+SliceLayout LayOutSlice(const Body& body, const std::vector<Vec2>& outline, Vec2 a, Vec2 b, float top, float width,
+                        float height)
 {
     SliceLayout layout;
+    // Both panels start below the taller header: a narrow canvas wraps a subtitle to more lines.
+    layout.headers[0] = LayOutPanelHeader(BeforeSubtitle(body), 0.5f * width);
+    layout.headers[1] = LayOutPanelHeader(kAfterSubtitle, 0.5f * width);
+    const float header = std::max(layout.headers[0].height, layout.headers[1].height);
     layout.low = {std::min(a.x, b.x), std::min(a.y, b.y)};
     layout.high = {std::max(a.x, b.x), std::max(a.y, b.y)};
     for (const Vec2& p : outline)
@@ -221,8 +233,8 @@ SliceLayout LayOutSlice(const std::vector<Vec2>& outline, Vec2 a, Vec2 b, float 
         layout.low = {std::min(layout.low.x, p.x), std::min(layout.low.y, p.y)};
         layout.high = {std::max(layout.high.x, p.x), std::max(layout.high.y, p.y)};
     }
-    layout.rects[0] = {0.0f, top + kHeaderHeight, 0.5f * width, height};
-    layout.rects[1] = {0.5f * width, top + kHeaderHeight, width, height};
+    layout.rects[0] = {0.0f, top + header, 0.5f * width, height};
+    layout.rects[1] = {0.5f * width, top + header, width, height};
     layout.zoom = std::min(FitZoom(layout.rects[0], layout.low, layout.high, kMargin + kApart),
                            FitZoom(layout.rects[1], layout.low, layout.high, kMargin + kApart));
     return layout;
@@ -250,7 +262,7 @@ View FrameSlice(const Scene& scene, int bodyIndex, const Figure& figure)
         RecordingCanvas measure;
         top = DrawCaptionBand(measure, figure.caption, DescribeSlice(body, a, b, parts, pieces), width);
     }
-    const SliceLayout layout = LayOutSlice(outline, a, b, top, width, static_cast<float>(figure.view.height));
+    const SliceLayout layout = LayOutSlice(body, outline, a, b, top, width, static_cast<float>(figure.view.height));
     return FramePanel(layout.rects[0], layout.low, layout.high, figure.view.width, figure.view.height, kMargin,
                       layout.zoom)
         .view;
@@ -277,7 +289,7 @@ void PaintSlice(Canvas& surface, const Scene& scene, int bodyIndex, const Figure
 
     const float top = DrawBackgroundAndCaption(canvas, labels, figure, DescribeSlice(body, a, b, parts, pieces));
 
-    const SliceLayout layout = LayOutSlice(outline, a, b, top, width, height);
+    const SliceLayout layout = LayOutSlice(body, outline, a, b, top, width, height);
     const ScreenRect(&rects)[2] = layout.rects;
     const Vec2 low = layout.low, high = layout.high;
     const double zoom = layout.zoom;
@@ -299,9 +311,8 @@ void PaintSlice(Canvas& surface, const Scene& scene, int bodyIndex, const Figure
     {
         const Panel panel = BodyPanel(0);
         canvas.BeginGroup("before");
-        canvas.Text({12.0f, top + 6.0f}, "Before", TextStyle::Heading, palette::kInk);
-        canvas.Text({12.0f, top + 23.0f}, body.name + ", and the cut", TextStyle::Label, palette::kMuted);
-        labels.Reserve({12.0f, top + 4.0f, rects[0].maxX, top + kHeaderHeight});
+        DrawPanelHeader(canvas, 12.0f, top, "Before", layout.headers[0]);
+        labels.Reserve({12.0f, top + 4.0f, rects[0].maxX, rects[0].minY});
         DrawPart(canvas, panel.view, whole.pieces, palette::kShapeA, {}, rects[0]);
         const ScreenPoint sa = ToScreen(panel.view, a);
         const ScreenPoint sb = ToScreen(panel.view, b);
@@ -324,11 +335,10 @@ void PaintSlice(Canvas& surface, const Scene& scene, int bodyIndex, const Figure
         const Panel panel = BodyPanel(1);
         canvas.BeginGroup("after");
         const float x = rects[1].minX + 12.0f;
-        canvas.Text({x, top + 6.0f},
-                    "After: " + std::to_string(parts.size()) + (parts.size() == 1 ? " part" : " parts"),
-                    TextStyle::Heading, palette::kInk);
-        canvas.Text({x, top + 23.0f}, "each part cut into convex pieces", TextStyle::Label, palette::kMuted);
-        labels.Reserve({x, top + 4.0f, rects[1].maxX, top + kHeaderHeight});
+        DrawPanelHeader(canvas, x, top,
+                        "After: " + std::to_string(parts.size()) + (parts.size() == 1 ? " part" : " parts"),
+                        layout.headers[1]);
+        labels.Reserve({x, top + 4.0f, rects[1].maxX, rects[1].minY});
         const Vec2 along = Normalize(b - a);
         const Vec2 left{-along.y, along.x};
         for (size_t i = 0; i < parts.size(); ++i)
