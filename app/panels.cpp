@@ -1505,9 +1505,16 @@ const std::vector<HelpSection>& HelpSections()
 
 void Panels::HelpOverlay()
 {
-    const ImVec2 center = ImGui::GetMainViewport()->GetCenter();
-    ImGui::SetNextWindowPos(center, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(620.0f, 0.0f));
+    // Centred between the menu bar and the status bar, and no taller than the room between them: in a small window
+    // it scrolls rather than cover the menus and the status line.
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    const float top = viewport->Pos.y + ImGui::GetFrameHeight();
+    const float room = std::max(100.0f, viewport->Size.y - ImGui::GetFrameHeight() - StatusHeight());
+    const float width = std::min(620.0f, viewport->Size.x);
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + 0.5f * viewport->Size.x, top + 0.5f * room), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(width, 0.0f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, room));
     ImGui::SetNextWindowBgAlpha(0.96f);
     if (ImGui::Begin("Help (F1 or Esc closes)", &m_showHelp,
                      ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoResize))

@@ -2863,6 +2863,46 @@ TEST_CASE("The status bar shows the whole of its message at the smallest window:
     }
 }
 
+TEST_CASE("F1's help stays between the menu bar and the status bar, at the smallest window and beside a lesson too",
+          "[app]")
+{
+    // At the smallest window the help, centred on the window and as tall as its text, covered the menu bar and the
+    // status line; it scrolls within the room between them.
+    Harness h(std::string(SATVIZ_SOURCE_DIR) + "/tutorials/scenes/overlapping_boxes.json");
+    const float bar = ImGui::GetFrameHeight();
+    for (const bool lesson : {false, true})
+    {
+        if (lesson)
+        {
+            REQUIRE(h.app->OpenLesson(0));
+        }
+        for (const ImVec2 size : {MinimumWindowSize(lesson, bar), ImVec2(1280.0f, 800.0f)})
+        {
+            ImGui::GetIO().DisplaySize = size;
+            h.Frames(2);
+            if (!Harness::Showing("Help (F1 or Esc closes)"))
+            {
+                h.Key(h.app->Options().keys.f1);
+            }
+            h.Frames(3);
+            const ImGuiWindow* help = ImGui::FindWindowByName("Help (F1 or Esc closes)");
+            const ImGuiWindow* status = ImGui::FindWindowByName("##status");
+            REQUIRE(help != nullptr);
+            REQUIRE(help->Active);
+            REQUIRE(status != nullptr);
+            INFO("window " << size.x << " x " << size.y << (lesson ? " with a lesson" : "") << ": help from y "
+                           << help->Pos.y << " to " << help->Pos.y + help->Size.y << ", status from "
+                           << status->Pos.y);
+            CHECK(help->Pos.y >= bar - 0.5f);
+            CHECK(help->Pos.y + help->Size.y <= status->Pos.y + 0.5f);
+            CHECK(help->Pos.x >= -0.5f);
+            CHECK(help->Pos.x + help->Size.x <= size.x + 0.5f);
+            // All of it can be read: what does not fit scrolls.
+            CHECK((help->ScrollMax.y > 0.0f) == (help->ContentSize.y > help->InnerRect.GetHeight() + 0.5f));
+        }
+    }
+}
+
 TEST_CASE("The bundled scenes are found from the program's folder: the data folder, else tutorials/ above it", "[app]")
 {
     const fs::path root = fs::temp_directory_path() / ("satviz-app-layout-" + std::to_string(::getpid()));
