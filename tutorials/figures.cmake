@@ -68,6 +68,7 @@ set(SATVIZ_FIGURE_SCENES
   concave/slice_stops_inside
   concave/disc_cast_cup
   concave/disc_cast_corner
+  concave/circle_and_polygon_cast
   concave/l19_bar_cut
 )
 set(SATVIZ_STEP_SCENES

@@ -335,6 +335,14 @@ void PaintDiscCast(Canvas& surface, const Scene& scene, int targetIndex, int dis
     }
     DashedOutline(canvas, dashed, palette::kMuted, 1.2f, rect);
 
+    // The disc at the hit is drawn before the centre's path: the path runs through it, and its arrow head (where the
+    // end lies about a radius from the hit, circle_and_polygon_cast's) stays in sight over the disc's fill and rim.
+    if (hit.hit)
+    {
+        canvas.BeginGroup("hit");
+        canvas.FillCircle(ToScreen(view, hit.center), radius, WithAlpha(palette::kShapeB, 0.35f));
+        canvas.Circle(ToScreen(view, hit.center), radius, palette::kShapeBInk, 2.0f);
+    }
     canvas.BeginGroup("path");
     const ScreenPoint s1 = ToScreen(view, p1);
     const ScreenPoint s2 = ToScreen(view, p2);
@@ -391,8 +399,6 @@ void PaintDiscCast(Canvas& surface, const Scene& scene, int targetIndex, int dis
         canvas.BeginGroup("hit");
         const ScreenPoint c = ToScreen(view, hit.center);
         const ScreenPoint p = ToScreen(view, hit.point);
-        canvas.FillCircle(c, radius, WithAlpha(palette::kShapeB, 0.35f));
-        canvas.Circle(c, radius, palette::kShapeBInk, 2.0f);
         // The normal from the contact point through the centre and beyond: the centre lies one radius along it,
         // its dot drawn over the arrow. Black, as a face's normal is: vermillion arrows are MTVs.
         const ScreenPoint tip = ToScreen(view, hit.point + (r + 22.0 / view.zoom) * hit.normal);

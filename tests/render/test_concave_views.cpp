@@ -15,7 +15,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 
@@ -597,4 +599,79 @@ TEST_CASE("The pieces figure's verdict on a pair apart draws the gap, as the con
         named = named || (c->kind == DrawCommand::Kind::Text && c->text == "gap at least 0.50");
     }
     CHECK(named);
+}
+
+TEST_CASE("Where a lesson tells of the outline a circle is swept against, a figure of its section draws that outline",
+          "[concave]")
+{
+    // Lesson 8 told of the polygon's outline pushed out by the radius, then showed circle_and_polygon, whose figure
+    // draws the pentagon as it is. A paragraph that speaks of that outline, and the figures after it up to the next
+    // heading: one of them draws the outline (the disc-cast figure's dashed "pushed out" group).
+    namespace fs = std::filesystem;
+    const fs::path tutorials = fs::path(SATVIZ_SOURCE_DIR) / "tutorials";
+    const std::regex figure(R"(!\[[^\]]*\]\(figures/([A-Za-z0-9_]+)\.png\))");
+    int told = 0;
+    for (const auto& entry : fs::directory_iterator(tutorials))
+    {
+        if (entry.path().extension() != ".md" || entry.path().filename() == "README.md")
+        {
+            continue;
+        }
+        // Paragraphs: runs of lines between blank ones, joined by spaces.
+        std::ifstream in(entry.path());
+        std::vector<std::string> paragraphs(1);
+        for (std::string line; std::getline(in, line);)
+        {
+            if (line.find_first_not_of(" \t") == std::string::npos)
+            {
+                paragraphs.emplace_back();
+                continue;
+            }
+            paragraphs.back() += (paragraphs.back().empty() ? "" : " ") + line;
+        }
+        for (size_t p = 0; p < paragraphs.size(); ++p)
+        {
+            const std::string& text = paragraphs[p];
+            if (text.find("pushed out by the radius") == std::string::npos &&
+                text.find("pushed-out outline") == std::string::npos)
+            {
+                continue;
+            }
+            std::vector<std::string> stems;
+            for (size_t q = p; q < paragraphs.size() && (q == p || paragraphs[q].rfind('#', 0) != 0); ++q)
+            {
+                for (auto it = std::sregex_iterator(paragraphs[q].begin(), paragraphs[q].end(), figure);
+                     it != std::sregex_iterator(); ++it)
+                {
+                    stems.push_back((*it)[1].str());
+                }
+            }
+            if (stems.empty())
+            {
+                continue; // a pitfall's line, with no figure to draw it
+            }
+            ++told;
+            INFO(entry.path().filename().string() << ": " << text.substr(0, 160));
+            bool drawn = false;
+            for (const std::string& stem : stems)
+            {
+                fs::path scene = tutorials / "scenes" / (stem + ".json");
+                if (!fs::exists(scene))
+                {
+                    scene = tutorials / "scenes" / "concave" / (stem + ".json");
+                }
+                if (!fs::exists(scene))
+                {
+                    continue; // a step's figure, SCENE-stepN
+                }
+                const Scene loaded = painter_test::LoadSimulated(scene.string());
+                FigureSetup setup = SetUpFigure(loaded, {});
+                REQUIRE(setup.Ok());
+                const RecordingCanvas canvas = painter_test::PaintStep(loaded, setup, setup.figure.step);
+                drawn = drawn || !canvas.InGroup("pushed out").empty();
+            }
+            CHECK(drawn);
+        }
+    }
+    CHECK(told >= 1);
 }
