@@ -2902,8 +2902,26 @@ class Painter
                         from = wholeFrom;
                         to = wholeTo;
                     }
-                    const ScreenPoint mid = FreeMiddle(from, to, other, 12.0f,
-                                                       BodyOf(1 - s).shape.type == ShapeType::Polygon);
+                    ScreenPoint mid = FreeMiddle(from, to, other, 12.0f, BodyOf(1 - s).shape.type == ShapeType::Polygon);
+                    // Not where a velocity's path crosses the edge: a leader line ending there names the path's
+                    // meeting with the face (l10_round_bullet's crate e2, where the bullet's path enters it).
+                    const auto crossed = [&](ScreenPoint p) {
+                        return std::any_of(m_velocityShafts.begin(), m_velocityShafts.end(),
+                                           [&](const std::pair<ScreenPoint, ScreenPoint>& shaft) {
+                                               return DistanceToSegment(p, shaft.first, shaft.second) < 10.0f;
+                                           });
+                    };
+                    if (crossed(mid))
+                    {
+                        for (const ScreenPoint& p : AlongFace(from, to, mid, other, 12.0f, 8.0f, 12.0f))
+                        {
+                            if (!crossed(p))
+                            {
+                                mid = p;
+                                break;
+                            }
+                        }
+                    }
                     const Vec2 n = Rotate(xf.q, poly.Normal(i));
                     if (m_labels.PlaceOutside(other, mid, "e" + std::to_string(i), TextStyle::Label,
                                              WithAlpha(InkOf(s), 0.75f), static_cast<float>(n.x),

@@ -1256,6 +1256,48 @@ const DrawCommand* LeaderTo(const RecordingCanvas& canvas, const DrawCommand& te
     return nullptr;
 }
 
+// A face's name ("e2", "reference face", "incident edge") on a leader line that starts where a velocity's shaft
+// crosses the face: the line names the path's meeting with the face (l10_round_bullet's crate "e2", led to where the
+// bullet's path enters it).
+std::vector<std::string> FaceLeadersFromPaths(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    std::vector<const DrawCommand*> shafts;
+    for (size_t k = 0; k + 1 < canvas.commands.size(); ++k)
+    {
+        const DrawCommand& c = canvas.commands[k];
+        if (c.group == "swept" && c.kind == DrawCommand::Kind::Segment && c.thickness >= 2.0f &&
+            IsArrowHead(canvas.commands[k + 1]) && canvas.commands[k + 1].color == c.color)
+        {
+            shafts.push_back(&c);
+        }
+    }
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        const std::string& t = c->text;
+        if (c->kind != DrawCommand::Kind::Text ||
+            !(t == "reference face" || t == "incident edge" || painter_test::IsEdgeName(t)))
+        {
+            continue;
+        }
+        const DrawCommand* line = LeaderTo(canvas, *c);
+        if (line == nullptr)
+        {
+            continue;
+        }
+        for (const DrawCommand* shaft : shafts)
+        {
+            if (ToSegment(line->points[0], shaft->points[0], shaft->points[1]) < 6.0f)
+            {
+                problems.push_back(Describe(*c) + " is led from where a velocity's shaft crosses its face, at (" +
+                                   std::to_string(static_cast<int>(line->points[0].x)) + ", " +
+                                   std::to_string(static_cast<int>(line->points[0].y)) + ")");
+            }
+        }
+    }
+    return problems;
+}
+
 // A reference face's name on a leader line that starts at a corner of the pair (the very end of the face) rather
 // than on the face: the line names the corner, an unnumbered one where a vertex number is left out.
 std::vector<std::string> ReferenceFaceAtCorner(const RecordingCanvas& canvas, const Scene& scene,
@@ -2687,6 +2729,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         Append(problems, LabelsOnDashedOutlines(canvas));
         Append(problems, ReferenceFaceFar(canvas));
         Append(problems, FaceNamesByDots(canvas));
+        Append(problems, FaceLeadersFromPaths(canvas));
         Append(problems, ReferenceFaceAtCorner(canvas, scene, setup.study, setup.figure.view));
         Append(problems, ReferenceFaceBeyondEnd(canvas));
         Append(problems, FaceNamesAstray(canvas, scene, setup.study, setup.figure.view));
