@@ -312,6 +312,20 @@ bool LabelPlacer::OnShaft(ScreenPoint p, float within) const
     });
 }
 
+bool LabelPlacer::NearCrossingShaft(ScreenPoint p, float within, ScreenPoint a, ScreenPoint b) const
+{
+    const float length = std::hypot(b.x - a.x, b.y - a.y);
+    if (length <= 0.0f)
+    {
+        return false;
+    }
+    return std::any_of(m_shafts.begin(), m_shafts.end(), [&](const std::pair<ScreenPoint, ScreenPoint>& shaft) {
+        const ScreenPoint tail = shaft.first;
+        const float off = std::fabs((b.x - a.x) * (tail.y - a.y) - (b.y - a.y) * (tail.x - a.x)) / length;
+        return off > 3.0f && DistanceToSegment(p, shaft.first, shaft.second) < within;
+    });
+}
+
 bool LabelPlacer::NearArrowTail(ScreenPoint p, float within, ScreenPoint own) const
 {
     return std::any_of(m_shafts.begin(), m_shafts.end(), [&](const std::pair<ScreenPoint, ScreenPoint>& shaft) {

@@ -71,6 +71,10 @@ class LabelPlacer
     /// point along `own` (a unit direction on screen): a face's normal starts on its face, and another face's normal
     /// there (the other body's, on a shared face) reads as what a leader line from there names.
     bool NearArrowTail(ScreenPoint p, float within, ScreenPoint own) const;
+    /// Whether `p` lies within `within` pixels of the shaft of an arrow marked so far (ReserveShaft) whose tail lies
+    /// off the line through `a` and `b` (a face): another face's normal crossing the face there, which a leader line
+    /// from `p` would seem to name. The face's own normal, which starts on it, does not count.
+    bool NearCrossingShaft(ScreenPoint p, float within, ScreenPoint a, ScreenPoint b) const;
     /// Marks a faint line (a dashed projection line, a ghost's outline, drawn translucent): a vertex number or an
     /// edge name keeps off it, where it would read as the number of the line's end; a larger label only where the
     /// room allows, as the line shows through its halo's gaps and is not read as part of it.

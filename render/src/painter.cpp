@@ -2564,21 +2564,36 @@ class Painter
             // Nor where the other body's outline crosses the face: a leader line ending there names either body's
             // edge (l13_overlap's, led to where B's face crosses A's right side).
             // An edge flush along the face (a plank lying on the floor) is where the face is: it does not count.
+            // So too the dashed outlines drawn over it: where the MTV or a sweep leaves a body.
             const float faceLength = std::max(std::hypot(shown2.x - shown1.x, shown2.y - shown1.y), 1e-3f);
-            for (size_t i = 0; i < other.size(); ++i)
+            std::vector<std::vector<ScreenPoint>> crossing = m_ghostOutlines;
+            crossing.push_back(other);
+            if (m_hasMtvArrow)
             {
-                const ScreenPoint u = other[i];
-                const ScreenPoint v = other[(i + 1) % other.size()];
-                const float edgeLength = std::max(std::hypot(v.x - u.x, v.y - u.y), 1e-3f);
-                const float sine = std::fabs((v.x - u.x) * (shown2.y - shown1.y) - (v.y - u.y) * (shown2.x - shown1.x)) /
-                                   (edgeLength * faceLength);
-                if (sine > 0.2f && DistanceToSegment(p, u, v) < 6.0f)
+                crossing.push_back(MtvOutline());
+            }
+            for (const std::vector<ScreenPoint>& outline : crossing)
+            {
+                for (size_t i = 0; i < outline.size(); ++i)
                 {
-                    return false;
+                    const ScreenPoint u = outline[i];
+                    const ScreenPoint v = outline[(i + 1) % outline.size()];
+                    const float edgeLength = std::max(std::hypot(v.x - u.x, v.y - u.y), 1e-3f);
+                    const float sine =
+                        std::fabs((v.x - u.x) * (shown2.y - shown1.y) - (v.y - u.y) * (shown2.x - shown1.x)) /
+                        (edgeLength * faceLength);
+                    if (sine > 0.2f && DistanceToSegment(p, u, v) < 6.0f)
+                    {
+                        return false;
+                    }
                 }
             }
+            // Nor beside another face's normal, or the MTV, that crosses the face (l05_naive_push's B's top normal
+            // and MTV, which start below A's top face and run up across it).
+            const bool byMtv = m_hasMtvArrow && DistanceToSegment(p, m_mtvFrom, m_mtvTo) < kClearOfDot;
             return !m_labels.NearArrowTail(p, kClearOfDot, {static_cast<float>(n.x), -static_cast<float>(n.y)}) &&
-                   !m_labels.OnShaft(p, kClearOfDot);
+                   !m_labels.OnShaft(p, kClearOfDot) && !m_labels.NearCrossingShaft(p, kClearOfDot, shown1, shown2) &&
+                   !byMtv;
         };
         if (m_study.manifold.contactCount > 0)
         {

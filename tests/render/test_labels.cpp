@@ -2557,10 +2557,23 @@ std::vector<std::string> FaceLeadersFromMarks(const RecordingCanvas& canvas, Vec
             for (const auto& [tail, end] : tails)
             {
                 const float length = std::hypot(end.x - tail.x, end.y - tail.y);
-                const bool own = (end.x - tail.x) * out.x + (end.y - tail.y) * out.y > 0.9f * length;
-                if (!own && std::hypot(line->points[0].x - tail.x, line->points[0].y - tail.y) < 7.0f)
+                // Its own face's normal starts on the face, where the leader starts: the other body's normal that
+                // points the same way starts off the face's line (l05_naive_push's B's top face, below A's).
+                const ScreenPoint start = line->points[0];
+                const bool own = (end.x - tail.x) * out.x + (end.y - tail.y) * out.y > 0.9f * length &&
+                                 std::abs((tail.x - start.x) * out.x + (tail.y - start.y) * out.y) < 6.0f;
+                if (!own && std::hypot(start.x - tail.x, start.y - tail.y) < 7.0f)
                 {
                     problems.push_back(Describe(*c) + " is led from the tail of the normal at (" +
+                                       std::to_string(static_cast<int>(tail.x)) + ", " +
+                                       std::to_string(static_cast<int>(tail.y)) + ")");
+                    break;
+                }
+                // Nor from beside the shaft of another face's normal that crosses the face there: the leader reads
+                // as naming the arrow.
+                if (!own && ToSegment(start, tail, end) < 6.0f)
+                {
+                    problems.push_back(Describe(*c) + " is led from beside the normal from (" +
                                        std::to_string(static_cast<int>(tail.x)) + ", " +
                                        std::to_string(static_cast<int>(tail.y)) + ")");
                     break;
