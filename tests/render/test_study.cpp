@@ -11,14 +11,125 @@
 
 #include <catch2/catch.hpp>
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <regex>
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 using namespace satviz;
+
+namespace
+{
+
+// The parsing below is written out: std::regex, compiled with the sanitizers, trips GCC 12's -Wmaybe-uninitialized
+// inside <regex>, which the build treats as an error.
+
+/// Reads a number with a decimal point ("0.61", "-2.253") at `at`, moving past it. False, `at` unchanged, if none.
+bool ReadDecimal(const std::string& s, size_t& at, std::string& out)
+{
+    size_t i = at;
+    if (i < s.size() && s[i] == '-')
+    {
+        ++i;
+    }
+    const size_t digits = i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])))
+    {
+        ++i;
+    }
+    if (i == digits || i + 1 >= s.size() || s[i] != '.' || !std::isdigit(static_cast<unsigned char>(s[i + 1])))
+    {
+        return false;
+    }
+    ++i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])))
+    {
+        ++i;
+    }
+    out = s.substr(at, i - at);
+    at = i;
+    return true;
+}
+
+/// Every number with a decimal point in `s`, left to right.
+std::vector<std::string> DecimalNumbers(const std::string& s)
+{
+    std::vector<std::string> numbers;
+    for (size_t at = 0; at < s.size();)
+    {
+        std::string n;
+        const bool starts = at == 0 || !std::isdigit(static_cast<unsigned char>(s[at - 1]));
+        if (starts && ReadDecimal(s, at, n))
+        {
+            numbers.push_back(n);
+        }
+        else
+        {
+            ++at;
+        }
+    }
+    return numbers;
+}
+
+/// A sentence's "from t = A until t = B" (or "from before the start (t = A) until t = B").
+struct TimePair
+{
+    std::string from, until, text;
+};
+
+std::vector<TimePair> TimePairs(const std::string& s)
+{
+    std::vector<TimePair> pairs;
+    const auto skip = [&](size_t& at, const std::string& word) {
+        if (s.compare(at, word.size(), word) == 0)
+        {
+            at += word.size();
+            return true;
+        }
+        return false;
+    };
+    for (size_t start = s.find("from "); start != std::string::npos; start = s.find("from ", start + 1))
+    {
+        size_t at = start + 5;
+        TimePair pair;
+        const bool before = skip(at, "before the start (");
+        if (!skip(at, "t = ") || !ReadDecimal(s, at, pair.from))
+        {
+            continue;
+        }
+        const bool closed = skip(at, ")");
+        if (before && !closed)
+        {
+            continue;
+        }
+        if (!skip(at, " until t = ") || !ReadDecimal(s, at, pair.until))
+        {
+            continue;
+        }
+        pair.text = s.substr(start, at - start);
+        pairs.push_back(pair);
+    }
+    return pairs;
+}
+
+/// The time a time bar's "entry 0.40" or "exit 1.267 (after)" marks.
+bool MarkedTime(const std::string& s, std::string& value)
+{
+    for (const std::string word : {"entry ", "exit "})
+    {
+        size_t at = word.size();
+        if (s.compare(0, word.size(), word) == 0 && ReadDecimal(s, at, value))
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
 
 TEST_CASE("The single-precision study agrees with double within float rounding, step for step", "[study]")
 {
@@ -93,10 +204,7 @@ TEST_CASE("The numbers of an axis row, and a sentence's times from and until, ar
         const size_t dot = t.find('.');
         return dot == std::string::npos ? 0 : static_cast<int>(t.size() - dot - 1);
     };
-    const std::regex number(R"(-?\d+\.\d+)");
-    const std::regex times(R"(from (?:before the start \()?t = (-?\d+\.\d+)\)? until t = (-?\d+\.\d+))");
     std::vector<std::string> mixed;
-    const std::regex marked(R"(^(?:entry|exit) (-?\d+\.\d+))");
     int rows = 0;
     int pairs = 0;
     int bars = 0;
@@ -132,21 +240,13 @@ TEST_CASE("The numbers of an axis row, and a sentence's times from and until, ar
                 for (int step = 0; step < study.StepCount() && step < 80; ++step)
                 {
                     const std::string row = StepTitle(scene, study, step);
-                    std::vector<std::string> numbers;
-                    for (auto it = std::sregex_iterator(row.begin(), row.end(), number); it != std::sregex_iterator();
-                         ++it)
-                    {
-                        numbers.push_back(it->str());
-                    }
                     ++rows;
-                    check(numbers, name + ": " + row);
+                    check(DecimalNumbers(row), name + ": " + row);
                     const std::string sentence = DescribeStep(scene, study, step);
-                    for (auto it = std::sregex_iterator(sentence.begin(), sentence.end(), times);
-                         it != std::sregex_iterator(); ++it)
+                    for (const TimePair& t : TimePairs(sentence))
                     {
                         ++pairs;
-                        check({(*it)[1].str(), (*it)[2].str()}, name + " step " + std::to_string(step + 1) + ": " +
-                                                                    it->str());
+                        check({t.from, t.until}, name + " step " + std::to_string(step + 1) + ": " + t.text);
                     }
                 }
                 if (!study.sweep)
@@ -168,10 +268,10 @@ TEST_CASE("The numbers of an axis row, and a sentence's times from and until, ar
                     std::string bar;
                     for (const DrawCommand* c : canvas.InGroup("timebar"))
                     {
-                        std::smatch m;
-                        if (c->kind == DrawCommand::Kind::Text && std::regex_search(c->text, m, marked))
+                        std::string value;
+                        if (c->kind == DrawCommand::Kind::Text && MarkedTime(c->text, value))
                         {
-                            times.push_back(m[1].str());
+                            times.push_back(value);
                             bar += " | " + c->text;
                         }
                     }
