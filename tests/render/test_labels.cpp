@@ -1256,12 +1256,9 @@ const DrawCommand* LeaderTo(const RecordingCanvas& canvas, const DrawCommand& te
     return nullptr;
 }
 
-// A face's name ("e2", "reference face", "incident edge") on a leader line that starts where a velocity's shaft
-// crosses the face: the line names the path's meeting with the face (l10_round_bullet's crate "e2", led to where the
-// bullet's path enters it).
-std::vector<std::string> FaceLeadersFromPaths(const RecordingCanvas& canvas)
+// The velocities' shafts: each a solid segment in "swept" drawn just before its head.
+std::vector<const DrawCommand*> VelocityShafts(const RecordingCanvas& canvas)
 {
-    std::vector<std::string> problems;
     std::vector<const DrawCommand*> shafts;
     for (size_t k = 0; k + 1 < canvas.commands.size(); ++k)
     {
@@ -1272,6 +1269,16 @@ std::vector<std::string> FaceLeadersFromPaths(const RecordingCanvas& canvas)
             shafts.push_back(&c);
         }
     }
+    return shafts;
+}
+
+// A face's name ("e2", "reference face", "incident edge") on a leader line that starts where a velocity's shaft
+// crosses the face: the line names the path's meeting with the face (l10_round_bullet's crate "e2", led to where the
+// bullet's path enters it).
+std::vector<std::string> FaceLeadersFromPaths(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    const std::vector<const DrawCommand*> shafts = VelocityShafts(canvas);
     for (const DrawCommand* c : canvas.InGroup("labels"))
     {
         const std::string& t = c->text;
@@ -2318,15 +2325,9 @@ std::vector<std::string> LeadersFromArrowTails(const RecordingCanvas& canvas)
     {
         shafts.push_back(push);
     }
-    // A velocity: a solid shaft in "swept" followed by its head.
-    for (size_t k = 0; k + 1 < canvas.commands.size(); ++k)
+    for (const DrawCommand* velocity : VelocityShafts(canvas))
     {
-        const DrawCommand& c = canvas.commands[k];
-        if (c.group == "swept" && c.kind == DrawCommand::Kind::Segment && c.thickness >= 2.0f &&
-            IsArrowHead(canvas.commands[k + 1]) && canvas.commands[k + 1].color == c.color)
-        {
-            shafts.push_back(&c);
-        }
+        shafts.push_back(velocity);
     }
     for (const DrawCommand* shaft : shafts)
     {
