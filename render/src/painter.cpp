@@ -1631,8 +1631,18 @@ class Painter
                 const Vec2 v = (1.0 / Length(body.velocity)) * body.velocity;
                 const float ux = static_cast<float>(v.x);
                 const float uy = static_cast<float>(-v.y);
+                // A corner buried in a body drawn where the sweep starts (its own, which a short move leaves the
+                // ghost lying across, or the other) is passed over where another is free: a label led from there
+                // lies across that body's edges and reads as one of its marks (l13_sweep's "t = 0.30" on the
+                // triangle's top edge).
+                const std::vector<ScreenPoint> own = ShapeOutline(m_view, body.shape, body.Xf());
+                const Body& otherBody = BodyOf(1 - s);
+                const std::vector<ScreenPoint> other = ShapeOutline(m_view, otherBody.shape, otherBody.Xf());
+                auto buried = [&](const ScreenPoint& p) { return Covered(p, own, 4.0f) || Covered(p, other, 4.0f); };
                 ScreenPoint back = outline.front();
-                auto rank = [&](const ScreenPoint& p) { return p.y + 0.3f * (p.x * ux + p.y * uy); };
+                auto rank = [&](const ScreenPoint& p) {
+                    return p.y + 0.3f * (p.x * ux + p.y * uy) + (buried(p) ? 1.0e6f : 0.0f);
+                };
                 for (const ScreenPoint& p : outline)
                 {
                     back = rank(p) < rank(back) ? p : back;

@@ -2686,6 +2686,106 @@ std::vector<std::string> IncidentLeadersAcrossReference(const RecordingCanvas& c
     return problems;
 }
 
+// A ghost's label ("t = 0.30") led from a corner of the ghost across an edge of a body of the pair as drawn where
+// the sweep starts, when the ghost has a corner clear of both bodies: the label lies beyond that body's edge and
+// reads as one of its marks (l13_sweep's "t = 0.30" above the triangle's top edge, led down across it to the ghost's
+// corner inside the triangle).
+std::vector<std::string> GhostLeadersAcrossBodies(const RecordingCanvas& canvas, const Scene& scene,
+                                                  const PairStudy& study, const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    const std::vector<ScreenPoint> outlines[2] = {Outline(scene.bodies[static_cast<size_t>(study.bodyA)], view),
+                                                  Outline(scene.bodies[static_cast<size_t>(study.bodyB)], view)};
+    // Whether p lies inside a convex outline (either way round), or within `near` pixels of it.
+    const auto within = [](ScreenPoint p, const std::vector<ScreenPoint>& outline, float near) {
+        float area = 0.0f;
+        for (size_t i = 0; i < outline.size(); ++i)
+        {
+            const ScreenPoint u = outline[i];
+            const ScreenPoint v = outline[(i + 1) % outline.size()];
+            area += u.x * v.y - v.x * u.y;
+        }
+        for (size_t i = 0; i < outline.size(); ++i)
+        {
+            const ScreenPoint u = outline[i];
+            const ScreenPoint v = outline[(i + 1) % outline.size()];
+            const float length = std::hypot(v.x - u.x, v.y - u.y);
+            const float cross = (v.x - u.x) * (p.y - u.y) - (v.y - u.y) * (p.x - u.x);
+            if (length > 0.0f && (area > 0.0f ? -cross : cross) / length >= near)
+            {
+                return false;
+            }
+        }
+        return outline.size() >= 3 && area != 0.0f;
+    };
+    // Whether segments pq and uv cross.
+    const auto cross = [](ScreenPoint p, ScreenPoint q, ScreenPoint u, ScreenPoint v) {
+        const auto side = [](ScreenPoint a, ScreenPoint b, ScreenPoint c) {
+            return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+        };
+        return side(p, q, u) * side(p, q, v) < 0.0f && side(u, v, p) * side(u, v, q) < 0.0f;
+    };
+    for (const DrawCommand* ghost : canvas.InGroup("ghost"))
+    {
+        if (ghost->kind != DrawCommand::Kind::FillConvex || ghost->points.size() < 3 || ghost->points.size() > 16)
+        {
+            continue;
+        }
+        const bool clearCorner = std::any_of(ghost->points.begin(), ghost->points.end(), [&](ScreenPoint p) {
+            return !within(p, outlines[0], 4.0f) && !within(p, outlines[1], 4.0f);
+        });
+        if (!clearCorner)
+        {
+            continue;
+        }
+        for (const DrawCommand* leader : canvas.InGroup("labels"))
+        {
+            if (leader->kind != DrawCommand::Kind::Segment)
+            {
+                continue;
+            }
+            const ScreenPoint p = leader->points[0];
+            const ScreenPoint q = leader->points[1];
+            const bool fromCorner = std::any_of(ghost->points.begin(), ghost->points.end(), [&](ScreenPoint c) {
+                return std::hypot(c.x - p.x, c.y - p.y) < 5.0f;
+            });
+            // The leader's label: a time ("t = 0.30", "bullet at t = 0.50") whose box its far end touches.
+            bool timeLabel = false;
+            for (const DrawCommand* text : canvas.InGroup("labels"))
+            {
+                if (text->kind != DrawCommand::Kind::Text || text->text.find("t = ") == std::string::npos)
+                {
+                    continue;
+                }
+                const ScreenPoint size = measure.MeasureText(text->text, text->style);
+                const ScreenPoint at = text->points[0];
+                timeLabel = timeLabel || (q.x >= at.x - 3.0f && q.x <= at.x + size.x + 3.0f && q.y >= at.y - 3.0f &&
+                                          q.y <= at.y + size.y + 3.0f);
+            }
+            if (!timeLabel)
+            {
+                continue;
+            }
+            bool across = false;
+            for (int k = 0; k < 2 && fromCorner && !across; ++k)
+            {
+                for (size_t i = 0; i < outlines[k].size() && !across; ++i)
+                {
+                    across = cross(p, q, outlines[k][i], outlines[k][(i + 1) % outlines[k].size()]);
+                }
+            }
+            if (across)
+            {
+                problems.push_back("a ghost's label is led from its corner at (" +
+                                   std::to_string(static_cast<int>(p.x)) + ", " + std::to_string(static_cast<int>(p.y)) +
+                                   ") across a body's edge, though a corner of the ghost is clear");
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -2753,6 +2853,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         Append(problems, LabelsNearerAnotherMark(canvas, scene, setup.study, setup.figure.view));
         Append(problems, ArrowLabelsAstray(canvas));
         Append(problems, LeadersAcrossBars(canvas));
+        Append(problems, GhostLeadersAcrossBodies(canvas, scene, setup.study, setup.figure.view));
     }
     return problems;
 }
