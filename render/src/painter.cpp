@@ -1798,6 +1798,16 @@ class Painter
                         }
                     }
                 }
+                // Nor tail to tail with the opposite face's normal (a thin wall): the two would read as one
+                // double-headed arrow across the body.
+                for (const auto& [tail, direction] : m_faceNormals)
+                {
+                    if (std::hypot(m.x - tail.x, m.y - tail.y) < 12.0f &&
+                        direction.x * static_cast<float>(n.x) - direction.y * static_cast<float>(n.y) < -0.9f)
+                    {
+                        return false;
+                    }
+                }
                 // Only the head matters: a shaft across another head leaves both readable.
                 return !CrossesHead(back, t, 9.0f);
             };
@@ -1834,6 +1844,7 @@ class Painter
             if (seen(mid))
             {
                 MarkedArrow(mid, tipOf(mid), color, 2.0f, 9.0f);
+                m_faceNormals.push_back({mid, {static_cast<float>(n.x), static_cast<float>(-n.y)}});
             }
         }
         else if (ref.kind == AxisKind::VertexToCenter && ref.shape >= 0)
@@ -3725,6 +3736,8 @@ class Painter
     bool m_hasMtvArrow = false;
     bool m_nameOnGhost[2] = {false, false}; // a body out of the picture, named on its ghost
     std::vector<std::pair<ScreenPoint, ScreenPoint>> m_velocityShafts; // the velocity arrows drawn, tail to head
+    // The tested faces' normals drawn, each its tail and its unit direction on screen.
+    std::vector<std::pair<ScreenPoint, ScreenPoint>> m_faceNormals;
     std::vector<ScreenPoint> m_contactDots;                            // the contact points drawn
     ScreenPoint m_mtvFrom{};
     ScreenPoint m_mtvTo{};

@@ -2786,6 +2786,58 @@ std::vector<std::string> GhostLeadersAcrossBodies(const RecordingCanvas& canvas,
     return problems;
 }
 
+// Two arrows of one ink that point opposite ways from tails a few pixels apart on one line (the normals of a thin
+// wall's two faces, each from its face's middle): they read as one double-headed arrow across the body.
+std::vector<std::string> ArrowsTailToTail(const RecordingCanvas& canvas)
+{
+    struct Shaft
+    {
+        ScreenPoint tail, head;
+        Color color;
+    };
+    std::vector<Shaft> arrows;
+    for (size_t k = 1; k < canvas.commands.size(); ++k)
+    {
+        const DrawCommand& c = canvas.commands[k];
+        const DrawCommand& before = canvas.commands[k - 1];
+        if (IsArrowHead(c) && before.kind == DrawCommand::Kind::Segment && before.color == c.color &&
+            before.group == c.group)
+        {
+            arrows.push_back({before.points[0], before.points[1], c.color});
+        }
+    }
+    std::vector<std::string> problems;
+    for (size_t i = 0; i < arrows.size(); ++i)
+    {
+        for (size_t j = i + 1; j < arrows.size(); ++j)
+        {
+            if (arrows[i].color != arrows[j].color)
+            {
+                continue;
+            }
+            const ScreenPoint a0 = arrows[i].tail, a1 = arrows[i].head;
+            const ScreenPoint b0 = arrows[j].tail, b1 = arrows[j].head;
+            const float la = std::hypot(a1.x - a0.x, a1.y - a0.y);
+            const float lb = std::hypot(b1.x - b0.x, b1.y - b0.y);
+            if (la < 1.0f || lb < 1.0f)
+            {
+                continue;
+            }
+            const float cosine = ((a1.x - a0.x) * (b1.x - b0.x) + (a1.y - a0.y) * (b1.y - b0.y)) / (la * lb);
+            // How far b's tail lies off a's line.
+            const float off = std::abs((a1.x - a0.x) * (b0.y - a0.y) - (a1.y - a0.y) * (b0.x - a0.x)) / la;
+            if (cosine < -0.95f && std::hypot(b0.x - a0.x, b0.y - a0.y) < 10.0f && off < 3.0f)
+            {
+                problems.push_back("two arrows point opposite ways from tails at (" +
+                                   std::to_string(static_cast<int>(a0.x)) + ", " + std::to_string(static_cast<int>(a0.y)) +
+                                   ") and (" + std::to_string(static_cast<int>(b0.x)) + ", " +
+                                   std::to_string(static_cast<int>(b0.y)) + "): one double-headed arrow");
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -2817,6 +2869,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
     Append(problems, NameLeadersFromShafts(canvas));
     Append(problems, IncidentLeadersAcrossReference(canvas));
     Append(problems, FaceLeadersFromMarks(canvas, setup.study.manifold.normal));
+    Append(problems, ArrowsTailToTail(canvas));
     // A figure of its own (a decomposition, ...) draws no pair: the checks of labels against the pair's bodies
     // are for the pair's figures.
     if (setup.figure.kind == FigureKind::Pair)
