@@ -848,7 +848,9 @@ void Panels::StepControls()
                               "bodies themselves stay at t = 0, where the test starts");
         }
         ImGui::SameLine();
-        float t = static_cast<float>(std::max(viewer.Time(), 0.0));
+        // Unticked, the slider's grab stays where the ghost comes back to and its text says the ghost is off:
+        // "t = 0.000" there read as a ghost drawn at the start.
+        float t = static_cast<float>(showTime ? viewer.Time() : m_ghostTime);
         ImGui::SetNextItemWidth(-1.0f);
         const float width = ImGui::CalcItemWidth();
         ImGui::BeginDisabled(!showTime);
@@ -858,7 +860,7 @@ void Panels::StepControls()
         }
         char text[32];
         std::snprintf(text, sizeof(text), "t = %.3f", static_cast<double>(t));
-        SliderTextBesideGrab(width, t, 0, text);
+        SliderTextBesideGrab(width, t, 0, showTime ? text : "off");
         ImGui::EndDisabled();
     }
 }
