@@ -2367,7 +2367,19 @@ class Painter
         }
         for (int i = 0; i < count; ++i)
         {
-            m_labels.Place(screen[i], "c" + std::to_string(i + 1), TextStyle::Label, palette::kResult, 1.0f, -1.0f, 6.0f,
+            // Of two points, each name leans away from the other point, so that neither sits between the two where
+            // it could be either's (l09_landing's "c2" below and between the two dots).
+            float dx = 1.0f;
+            float dy = -1.0f;
+            if (count == 2)
+            {
+                const float ax = screen[i].x - screen[1 - i].x;
+                const float ay = screen[i].y - screen[1 - i].y;
+                const float length = std::max(std::hypot(ax, ay), 1e-3f);
+                dx = ax / length + 0.3f;
+                dy = ay / length - 0.3f;
+            }
+            m_labels.Place(screen[i], "c" + std::to_string(i + 1), TextStyle::Label, palette::kResult, dx, dy, 6.0f,
                           LabelRank::Verdict);
             m_labels.Names(MarkKind::Contact);
         }

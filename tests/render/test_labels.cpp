@@ -1150,6 +1150,51 @@ std::vector<std::string> NamedFacesUnnamed(const RecordingCanvas& canvas, const 
 
 bool OnLeader(const RecordingCanvas& canvas, const DrawCommand& text);
 
+// The name of one of two contact points ("c1", "c2", no leader line) whose middle lies between the two dots, in the
+// middle half of the way from one to the other and closer to their line than to either dot's far side: it could be
+// either's (l09_landing's "c2" below the floor's face, between its dot and c1's).
+std::vector<std::string> ContactNamesBetweenDots(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    std::vector<ScreenPoint> dots;
+    for (const DrawCommand* c : canvas.InGroup("contacts"))
+    {
+        if (c->kind == DrawCommand::Kind::FillCircle && c->color == palette::kResult)
+        {
+            dots.push_back(c->points[0]);
+        }
+    }
+    if (dots.size() != 2)
+    {
+        return problems;
+    }
+    const ScreenPoint p = dots[0];
+    const ScreenPoint q = dots[1];
+    const float length = std::hypot(q.x - p.x, q.y - p.y);
+    if (length < 16.0f)
+    {
+        return problems;
+    }
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || (c->text != "c1" && c->text != "c2") || OnLeader(canvas, *c))
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(c->text, c->style);
+        const ScreenPoint m{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+        const float along = ((m.x - p.x) * (q.x - p.x) + (m.y - p.y) * (q.y - p.y)) / (length * length);
+        const float across = std::abs((q.x - p.x) * (m.y - p.y) - (q.y - p.y) * (m.x - p.x)) / length;
+        if (along > 0.25f && along < 0.75f && across < 0.5f * length)
+        {
+            problems.push_back(Describe(*c) + " lies between the two contact points, " +
+                               std::to_string(static_cast<int>(along * 100.0f)) + " % of the way from one to the other");
+        }
+    }
+    return problems;
+}
+
 // A face's name ("reference face", "incident edge", "e2") in a row with a contact's dot, just past the dot's side,
 // with no leader line: it reads as the dot's name (l06_tilted_plank's "reference face" ending 8 px left of c1).
 std::vector<std::string> FaceNamesByDots(const RecordingCanvas& canvas)
@@ -2896,6 +2941,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         Append(problems, LabelsOnDashedOutlines(canvas));
         Append(problems, ReferenceFaceFar(canvas));
         Append(problems, FaceNamesByDots(canvas));
+        Append(problems, ContactNamesBetweenDots(canvas));
         Append(problems, FaceLeadersFromPaths(canvas));
         Append(problems, ReferenceFaceAtCorner(canvas, scene, setup.study, setup.figure.view));
         Append(problems, ReferenceFaceBeyondEnd(canvas));
