@@ -456,10 +456,14 @@ void LabelPlacer::OutsideBoth(std::vector<ScreenPoint> own)
     }
 }
 
-void LabelPlacer::KeepOutOf(std::vector<ScreenPoint> outline)
+void LabelPlacer::KeepOutOf(std::vector<ScreenPoint> outline, bool leaderToo)
 {
     if (!m_labels.empty())
     {
+        if (leaderToo)
+        {
+            m_labels.back().leaderOut.push_back(outline);
+        }
         m_labels.back().keepOut.push_back(std::move(outline));
     }
 }
@@ -949,6 +953,20 @@ void LabelPlacer::Flush(Color halo)
                          [&](const std::vector<ScreenPoint>& outline) { return ClearOf(outline, rect); }))
         {
             return false;
+        }
+        // Nor led across what it keeps its leader out of: the line would run through it and seem to start there.
+        if (const LeaderLine leader = Leader(at, rect); leader.drawn)
+        {
+            for (const std::vector<ScreenPoint>& outline : label.leaderOut)
+            {
+                for (size_t k = 0; k < outline.size(); ++k)
+                {
+                    if (Cross(leader.from, leader.to, outline[k], outline[(k + 1) % outline.size()]))
+                    {
+                        return false;
+                    }
+                }
+            }
         }
         if (preferring && !std::all_of(label.preferOut.begin(), label.preferOut.end(),
                                        [&](const std::vector<ScreenPoint>& outline) { return ClearOf(outline, rect); }))

@@ -103,8 +103,9 @@ class LabelPlacer
     /// free, a vertex number is left out and a named one hangs on a leader line.
     void OutsideBoth(std::vector<ScreenPoint> own);
     /// Keeps the label added last out of `outline` too (a convex outline on screen): a body's velocity out of the
-    /// other body drawn where it will be (its dashed ghost), where it would read as that ghost's.
-    void KeepOutOf(std::vector<ScreenPoint> outline);
+    /// other body drawn where it will be (its dashed ghost), where it would read as that ghost's. With `leaderToo`
+    /// its leader line does not cross the outline either (a face's name led across a ghost seems to start there).
+    void KeepOutOf(std::vector<ScreenPoint> outline, bool leaderToo = false);
     /// Keeps the label added last out of `outline` (a convex outline) where a place near its anchor or on a short
     /// leader line allows; where none does, it is placed as if without it.
     void PreferOutOf(std::vector<ScreenPoint> outline);
@@ -168,6 +169,7 @@ class LabelPlacer
         std::vector<ScreenPoint> face;                 // with NamesFace: the face it names, and the rivals' outlines
         std::vector<std::vector<ScreenPoint>> rivals;
         std::vector<std::vector<ScreenPoint>> preferOut; // with PreferOutOf: outlines it keeps out of where it can
+        std::vector<std::vector<ScreenPoint>> leaderOut; // with KeepOutOf(.., true): outlines its leader does not cross
         bool inSpan = false;                             // with InFaceSpan: its middle along `face` within it
     };
     struct Mark

@@ -2978,6 +2978,18 @@ class Painter
                     {
                         m_labels.KeepOnSide();
                         m_labels.NamesFace(wholeFrom, wholeTo, Rivals(other));
+                        // Nor inside a ghost, on a leader line either: there it reads as the ghost's (the wall's
+                        // e3 inside the puck at the time of impact, on a narrow canvas). A ghost over the face,
+                        // or flush against all of it (the body's own ghost where it meets the face), leaves it no
+                        // choice.
+                        for (const std::vector<ScreenPoint>& ghost : m_ghostOutlines)
+                        {
+                            const bool flush = Covered(wholeFrom, ghost, 3.0f) && Covered(wholeTo, ghost, 3.0f);
+                            if (!Covered(mid, ghost, 0.0f) && !flush)
+                            {
+                                m_labels.KeepOutOf(ghost, true);
+                            }
+                        }
                         // A face a sentence names may have its name anywhere along it, away from its corners,
                         // when its middle is taken (a thin wall's name beside it).
                         // One flush against the other body along all its length has its name just inside its

@@ -2883,6 +2883,65 @@ std::vector<std::string> ArrowsTailToTail(const RecordingCanvas& canvas)
     return problems;
 }
 
+// An edge's name ("e3") inside a ghost, the moving body drawn at another time, when the face it names lies outside
+// that ghost: it reads as the ghost's (ex14_wall's "e3" on the app's narrow canvas, inside the puck at the time of
+// impact, led to the wall's face).
+std::vector<std::string> EdgeNamesInGhosts(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    // Whether p lies inside a convex outline (either way round).
+    const auto inside = [](ScreenPoint p, const std::vector<ScreenPoint>& outline) {
+        float area = 0.0f;
+        for (size_t i = 0; i < outline.size(); ++i)
+        {
+            const ScreenPoint u = outline[i];
+            const ScreenPoint v = outline[(i + 1) % outline.size()];
+            area += u.x * v.y - v.x * u.y;
+        }
+        for (size_t i = 0; i < outline.size(); ++i)
+        {
+            const ScreenPoint u = outline[i];
+            const ScreenPoint v = outline[(i + 1) % outline.size()];
+            const float cross = (v.x - u.x) * (p.y - u.y) - (v.y - u.y) * (p.x - u.x);
+            if ((area > 0.0f ? -cross : cross) >= 0.0f)
+            {
+                return false;
+            }
+        }
+        return outline.size() >= 3 && area != 0.0f;
+    };
+    for (const DrawCommand* ghost : canvas.InGroup("ghost"))
+    {
+        if (ghost->kind != DrawCommand::Kind::FillConvex || ghost->points.size() < 3)
+        {
+            continue;
+        }
+        for (const DrawCommand* c : canvas.InGroup("labels"))
+        {
+            if (c->kind != DrawCommand::Kind::Text || !painter_test::IsEdgeName(c->text))
+            {
+                continue;
+            }
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+            if (!inside(middle, ghost->points))
+            {
+                continue;
+            }
+            // Where its leader line ends (on its face), or, with none, the label itself.
+            const DrawCommand* leader = LeaderTo(canvas, *c);
+            if (leader != nullptr && !inside(leader->points[0], ghost->points))
+            {
+                problems.push_back(Describe(*c) + " lies inside a ghost, led to a face outside it at (" +
+                                   std::to_string(static_cast<int>(leader->points[0].x)) + ", " +
+                                   std::to_string(static_cast<int>(leader->points[0].y)) + ")");
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -2953,6 +3012,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         Append(problems, ArrowLabelsAstray(canvas));
         Append(problems, LeadersAcrossBars(canvas));
         Append(problems, GhostLeadersAcrossBodies(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, EdgeNamesInGhosts(canvas));
     }
     return problems;
 }
@@ -3727,6 +3787,51 @@ TEST_CASE("In every pair scene of the course, at the app's canvases too, no corn
                 {
                     failing.push_back(file.substr(file.rfind('/') + 1) + " at " + std::to_string(width) + " x " +
                                       std::to_string(height) + ": " + p);
+                }
+            }
+        }
+    }
+    CHECK(drawn > 100);
+    std::string all;
+    for (const std::string& f : failing)
+    {
+        all += f + "\n";
+    }
+    INFO(all);
+    CHECK(failing.empty());
+}
+
+TEST_CASE("In every sweep of the course, at the app's canvases too, no edge's name sits inside a ghost", "[labels]")
+{
+    // A face's name inside the moving body drawn at the time of impact (or at the figure's time), led to a face
+    // outside it, reads as the ghost's: ex14_wall's "e3" inside the puck beside the lesson column (460 x 758).
+    int drawn = 0;
+    std::vector<std::string> failing;
+    for (const std::string& file : testing::TutorialSceneFiles(true))
+    {
+        const Scene scene = painter_test::LoadSimulated(file);
+        if (scene.bodies.size() < 2)
+        {
+            continue;
+        }
+        for (const auto& [width, height] : {std::pair{0, 0}, std::pair{460, 758}, std::pair{360, 600}})
+        {
+            FigureOptions options;
+            options.width = width;
+            options.height = height;
+            FigureSetup setup = SetUpFigure(scene, options);
+            if (!setup.Ok() || setup.figure.kind != FigureKind::Pair || !setup.study.sweep)
+            {
+                continue;
+            }
+            for (int k = 0; k < FigureStepCount(scene, setup); ++k)
+            {
+                const RecordingCanvas canvas = painter_test::PaintStep(scene, setup, k);
+                ++drawn;
+                for (const std::string& p : EdgeNamesInGhosts(canvas))
+                {
+                    failing.push_back(file.substr(file.rfind('/') + 1) + " step " + std::to_string(k + 1) + " at " +
+                                      std::to_string(width) + " x " + std::to_string(height) + ": " + p);
                 }
             }
         }
