@@ -1277,7 +1277,44 @@ class Painter
             bool into = false;
             std::vector<ScreenPoint> shaft;
             std::vector<ScreenPoint> clear;
-            if (Covered(tip, otherOutline, 0.0f) && !Covered(from, otherOutline, 0.0f))
+            // An arrow that runs through the other body and out beyond it (l14_head_on's A at 3 m/s, through the
+            // ball B): by its head, past B, its name reads as B's velocity pointing the wrong way. It is named
+            // beside the part of its shaft before the other body, as one that ends inside it.
+            float through = -1.0f;
+            if (!Covered(tip, otherOutline, 0.0f) && !Covered(from, otherOutline, 0.0f))
+            {
+                for (int k = 1; k < 64 && through < 0.0f; ++k)
+                {
+                    const float f = static_cast<float>(k) / 64.0f;
+                    through = Covered(along(f), otherOutline, 0.0f) ? f : -1.0f;
+                }
+            }
+            if (through > 0.0f)
+            {
+                float lo = through - 1.0f / 64.0f, hi = through;
+                for (int k = 0; k < 16; ++k)
+                {
+                    const float mid = 0.5f * (lo + hi);
+                    (Covered(along(mid), otherOutline, 0.0f) ? hi : lo) = mid;
+                }
+                const float enter = lo;
+                float leave = 0.0f;
+                if (Covered(from, OutlineOf(s), 0.0f))
+                {
+                    float a = 0.0f, b = enter;
+                    for (int k = 0; k < 24; ++k)
+                    {
+                        const float mid = 0.5f * (a + b);
+                        (Covered(along(mid), OutlineOf(s), 0.0f) ? a : b) = mid;
+                    }
+                    leave = b;
+                }
+                for (const float f : {0.5f, 0.35f, 0.65f, 0.2f, 0.8f})
+                {
+                    shaft.push_back(along(leave + (enter - leave) * f));
+                }
+            }
+            else if (Covered(tip, otherOutline, 0.0f) && !Covered(from, otherOutline, 0.0f))
             {
                 // An arrow that runs into the other body (a box thrown at a floor): by its head, inside that body,
                 // the name would sit by that body's own name. It is named beside the part of its shaft between the
@@ -1321,15 +1358,29 @@ class Painter
             const std::string name = shortened ? "v = " + FormatLabelNumber(Length(body.velocity)) +
                                                      (m_scene.hasWorld ? " m/s" : " per step")
                                                : "v";
-            m_labels.PlaceOutside(otherOutline, tip, name, shortened ? TextStyle::Label : TextStyle::Heading,
-                                  InkOf(s), static_cast<float>(body.velocity.x), static_cast<float>(-body.velocity.y),
-                                  6.0f, LabelRank::Note);
-            m_labels.Names(MarkKind::ArrowHead);
-            if (into)
+            if (through > 0.0f)
             {
+                // Beside the middle of that part, on the side the arrow was moved to when it shares its line with
+                // the other body's (left of its motion), square to the shaft.
+                m_labels.PlaceOutside(otherOutline, shaft.front(), name,
+                                      shortened ? TextStyle::Label : TextStyle::Heading, InkOf(s),
+                                      static_cast<float>(-body.velocity.y), static_cast<float>(-body.velocity.x), 6.0f,
+                                      LabelRank::Note);
                 m_labels.PreferOutOf(otherOutline);
+                m_labels.AlsoBeside(std::move(shaft));
             }
-            m_labels.AlsoBeside(clear.empty() ? std::move(shaft) : std::move(clear));
+            else
+            {
+                m_labels.PlaceOutside(otherOutline, tip, name, shortened ? TextStyle::Label : TextStyle::Heading,
+                                      InkOf(s), static_cast<float>(body.velocity.x),
+                                      static_cast<float>(-body.velocity.y), 6.0f, LabelRank::Note);
+                m_labels.Names(MarkKind::ArrowHead);
+                if (into)
+                {
+                    m_labels.PreferOutOf(otherOutline);
+                }
+                m_labels.AlsoBeside(clear.empty() ? std::move(shaft) : std::move(clear));
+            }
             // And out of the other body where its ghost shows it (at the hit, at the figure's time).
             for (const double t : {m_study.sweepResult.status == SweepStatus::Hit ? m_study.sweepResult.toi : -1.0,
                                    m_figure.time})

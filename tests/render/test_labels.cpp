@@ -2942,6 +2942,80 @@ std::vector<std::string> EdgeNamesInGhosts(const RecordingCanvas& canvas)
     return problems;
 }
 
+// A velocity that runs through the other body of the pair and out beyond it, named past that body: its "v" reads
+// as the other body's velocity pointing the wrong way (l14_head_on's A at 3 m/s, through ball B, named right of B).
+std::vector<std::string> VelocityNamedPastBody(const RecordingCanvas& canvas, const Scene& scene,
+                                               const PairStudy& study, const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    const Body* bodies[2] = {&scene.bodies[static_cast<size_t>(study.bodyA)],
+                             &scene.bodies[static_cast<size_t>(study.bodyB)]};
+    for (const DrawCommand* shaft : VelocityShafts(canvas))
+    {
+        const ScreenPoint a = shaft->points[0];
+        // The arrow's tip: the point of its head (drawn next) farthest along the shaft.
+        ScreenPoint b = shaft->points[1];
+        const DrawCommand& head = canvas.commands[static_cast<size_t>(shaft - canvas.commands.data()) + 1];
+        for (const ScreenPoint& p : head.points)
+        {
+            if ((p.x - b.x) * (b.x - a.x) + (p.y - b.y) * (b.y - a.y) > 0.0f)
+            {
+                b = p;
+            }
+        }
+        const auto at = [&](float f) { return ScreenPoint{a.x + (b.x - a.x) * f, a.y + (b.y - a.y) * f}; };
+        // Inside by more than 2 pixels: a head that ends on the far side's outline (l14_head_on's A, reaching B's
+        // right side) has run through.
+        const auto inside = [&](const Body& body, ScreenPoint p) {
+            for (const ScreenPoint d : {ScreenPoint{2, 0}, ScreenPoint{-2, 0}, ScreenPoint{0, 2}, ScreenPoint{0, -2}})
+            {
+                if (!InsideBody(body, ToWorld(view, {p.x + d.x, p.y + d.y})))
+                {
+                    return false;
+                }
+            }
+            return true;
+        };
+        for (const Body* other : bodies)
+        {
+            // A head that ends inside it is by it, not past it (VelocityInOtherBody's concern).
+            if (inside(*other, a) || inside(*other, b))
+            {
+                continue;
+            }
+            float exit = -1.0f;
+            for (int k = 1; k < 256; ++k)
+            {
+                const float f = static_cast<float>(k) / 256.0f;
+                exit = inside(*other, at(f)) ? f : exit;
+            }
+            if (exit < 0.0f)
+            {
+                continue;
+            }
+            const float length2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
+            for (const DrawCommand* c : canvas.InGroup("labels"))
+            {
+                if (c->kind != DrawCommand::Kind::Text || c->text != "v" || (c->color >> 8) != (shaft->color >> 8) ||
+                    OnLeader(canvas, *c))
+                {
+                    continue;
+                }
+                const ScreenPoint size = measure.MeasureText(c->text, c->style);
+                const ScreenPoint m{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+                const float f = ((m.x - a.x) * (b.x - a.x) + (m.y - a.y) * (b.y - a.y)) / length2;
+                if (f > exit)
+                {
+                    problems.push_back(Describe(*c) + " is named past " + other->name +
+                                       ", which its velocity runs through");
+                }
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -3013,6 +3087,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         Append(problems, LeadersAcrossBars(canvas));
         Append(problems, GhostLeadersAcrossBodies(canvas, scene, setup.study, setup.figure.view));
         Append(problems, EdgeNamesInGhosts(canvas));
+        Append(problems, VelocityNamedPastBody(canvas, scene, setup.study, setup.figure.view));
     }
     return problems;
 }
