@@ -2232,8 +2232,10 @@ class Painter
         m_labels.Place(to, "MTV " + depth, TextStyle::Heading, palette::kResult, static_cast<float>(m.normal.x),
                       static_cast<float>(-m.normal.y), 6.0f, LabelRank::Verdict);
         m_labels.Names(MarkKind::ArrowHead);
+        // Beside its shaft, down to its tail: an arrow inside B, short and with its head crowded, is named inside B
+        // (pitfall_direction's block), where a leader line out to a place beyond B would cross B's side.
         std::vector<ScreenPoint> shaft;
-        for (const float f : {0.3f, 0.6f})
+        for (const float f : {0.3f, 0.6f, 0.9f})
         {
             shaft.push_back({to.x + (from.x - to.x) * f, to.y + (from.y - to.y) * f});
         }
@@ -2257,6 +2259,24 @@ class Painter
             {
                 m_pitfallTo = {from.x + 20.0f * static_cast<float>(pitfall.normal.x),
                               from.y - 20.0f * static_cast<float>(pitfall.normal.y)};
+            }
+            // On the MTV's line (the wrong way, or the right way by luck) the two arrows would read as one
+            // through B's centre: the wrong push moves aside, parallel, as the MTV moves aside for a normal.
+            if (right != nullptr && m_hasMtvArrow)
+            {
+                const float mx = m_mtvTo.x - m_mtvFrom.x;
+                const float my = m_mtvTo.y - m_mtvFrom.y;
+                const float length = std::max(std::hypot(mx, my), 1e-3f);
+                const float px = m_pitfallTo.x - from.x;
+                const float py = m_pitfallTo.y - from.y;
+                const float across = std::fabs(mx * py - my * px) / length;
+                if (across < 0.2f * std::max(std::hypot(px, py), 1e-3f))
+                {
+                    const ScreenPoint side{-my / length * 14.0f, mx / length * 14.0f};
+                    m_pitfallFrom = {from.x + side.x, from.y + side.y};
+                    m_pitfallTo = {m_pitfallTo.x + side.x, m_pitfallTo.y + side.y};
+                    from = m_pitfallFrom;
+                }
             }
             m_hasPitfallArrow = true;
             m_used.push_back(LegendMark::PitfallPush);
@@ -2365,9 +2385,13 @@ class Painter
         {
             const ScreenPoint from = m_pitfallFrom;
             const ScreenPoint to = m_pitfallTo;
+            // The head drawn whole, from a head's length back: drawn from a point just short of its tip, Arrow
+            // would shrink it to a few pixels, too small to tell the arrow from a line.
+            const float length = std::max(std::hypot(to.x - from.x, to.y - from.y), 1e-3f);
+            const float head = std::min(10.0f, length);
             DashedSegment(m_canvas, from, to, palette::kInk, 2.0f, m_bounds, 6.0f, 4.0f);
-            Arrow(m_canvas, {to.x - 0.01f * (to.x - from.x), to.y - 0.01f * (to.y - from.y)}, to, palette::kInk, 2.0f,
-                  10.0f);
+            Arrow(m_canvas, {to.x - head * (to.x - from.x) / length, to.y - head * (to.y - from.y) / length}, to,
+                  palette::kInk, 2.0f, 10.0f);
         }
     }
 

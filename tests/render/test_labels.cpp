@@ -3016,6 +3016,148 @@ std::vector<std::string> VelocityNamedPastBody(const RecordingCanvas& canvas, co
     return problems;
 }
 
+// Arrow heads drawn too small to read as heads: under 6 pixels from the tip to the base, the arrow reads as a line
+// that stops (a pitfall's push had a head of 4 pixels, drawn from a point just short of its tip).
+std::vector<std::string> TinyArrowHeads(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    for (const DrawCommand& c : canvas.commands)
+    {
+        if (!IsArrowHead(c) || c.group == "labels" || c.group == "legend")
+        {
+            continue;
+        }
+        const ScreenPoint base{0.5f * (c.points[1].x + c.points[2].x), 0.5f * (c.points[1].y + c.points[2].y)};
+        const float length = std::hypot(c.points[0].x - base.x, c.points[0].y - base.y);
+        if (length < 6.0f)
+        {
+            problems.push_back("the arrow head at (" + std::to_string(static_cast<int>(c.points[0].x)) + ", " +
+                               std::to_string(static_cast<int>(c.points[0].y)) + ") in \"" + c.group + "\" is " +
+                               std::to_string(length) + " pixels long");
+        }
+    }
+    return problems;
+}
+
+// A pitfall's push as drawn: the dashed black shaft in "mtv", from its first dash to its head's tip. False when
+// the figure draws none.
+bool PitfallArrow(const RecordingCanvas& canvas, ScreenPoint& tail, ScreenPoint& tip)
+{
+    bool any = false;
+    for (const DrawCommand* c : canvas.InGroup("mtv"))
+    {
+        if (c->kind == DrawCommand::Kind::Segment && c->color == palette::kInk && c->thickness == 2.0f && !any)
+        {
+            tail = c->points[0];
+            any = true;
+        }
+        if (any && c->kind == DrawCommand::Kind::FillConvex && c->color == palette::kInk && IsArrowHead(*c))
+        {
+            tip = c->points[0];
+            return true;
+        }
+    }
+    return false;
+}
+
+// The MTV's arrow as drawn: the thick vermillion shaft in "mtv". False when the figure draws none.
+bool MtvShaft(const RecordingCanvas& canvas, ScreenPoint& from, ScreenPoint& to)
+{
+    for (const DrawCommand* c : canvas.InGroup("mtv"))
+    {
+        if (c->kind == DrawCommand::Kind::Segment && c->color == palette::kResult && c->thickness >= 3.0f)
+        {
+            from = c->points[0];
+            to = c->points[1];
+            return true;
+        }
+    }
+    return false;
+}
+
+// A pitfall's push drawn on the MTV's line: the two arrows, one up and one down from B's centre, read as one line
+// through it, and the wrong push's head as the MTV's tail (pitfall_direction, where the block's own bottom normal
+// below it read as the pitfall's head).
+std::vector<std::string> PitfallOnMtvLine(const RecordingCanvas& canvas)
+{
+    ScreenPoint tail{}, tip{}, from{}, to{};
+    if (!PitfallArrow(canvas, tail, tip) || !MtvShaft(canvas, from, to))
+    {
+        return {};
+    }
+    const float length = std::hypot(to.x - from.x, to.y - from.y);
+    if (length <= 0.0f)
+    {
+        return {};
+    }
+    const auto off = [&](ScreenPoint p) {
+        return std::fabs((to.x - from.x) * (p.y - from.y) - (to.y - from.y) * (p.x - from.x)) / length;
+    };
+    if (off(tail) < 5.0f && off(tip) < 5.0f)
+    {
+        return {"the pitfall's push, from (" + std::to_string(static_cast<int>(tail.x)) + ", " +
+                std::to_string(static_cast<int>(tail.y)) + "), lies on the MTV's line"};
+    }
+    return {};
+}
+
+// An arrow's name (the MTV's, a pitfall's) led a long way through a body of the pair to a place outside it: the
+// line reads as a mark of that body, across its inside and its outline (pitfall_direction's "MTV 0.20", led 82
+// pixels across the block from the arrow in its middle to a place beyond its side). Over 60 pixels: a shorter way
+// in, from an arrow whose head lies near the outline, still reads as the arrow's.
+std::vector<std::string> ArrowNamesLedThroughBodies(const RecordingCanvas& canvas, const Scene& scene,
+                                                    const PairStudy& study, const View& view)
+{
+    std::vector<std::string> problems;
+    const auto inside = [](const std::vector<ScreenPoint>& polygon, ScreenPoint p) {
+        bool in = false;
+        for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+        {
+            const ScreenPoint& u = polygon[i];
+            const ScreenPoint& v = polygon[j];
+            if ((u.y > p.y) != (v.y > p.y) && p.x < u.x + (p.y - u.y) * (v.x - u.x) / (v.y - u.y))
+            {
+                in = !in;
+            }
+        }
+        return in;
+    };
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || (c->text.rfind("MTV ", 0) != 0 && c->text.rfind("pitfall ", 0) != 0))
+        {
+            continue;
+        }
+        const DrawCommand* line = LeaderTo(canvas, *c);
+        if (line == nullptr)
+        {
+            continue;
+        }
+        const ScreenPoint a = line->points[0];
+        const ScreenPoint b = line->points[1];
+        const float length = std::hypot(b.x - a.x, b.y - a.y);
+        for (const int index : {study.bodyA, study.bodyB})
+        {
+            const Body& body = scene.bodies[static_cast<size_t>(index)];
+            const std::vector<ScreenPoint> outline = Outline(body, view);
+            int in = 0;
+            const int samples = static_cast<int>(length) + 1;
+            for (int k = 0; k < samples; ++k)
+            {
+                const float t = static_cast<float>(k) / static_cast<float>(samples);
+                in += inside(outline, {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t}) ? 1 : 0;
+            }
+            const float through = length * static_cast<float>(in) / static_cast<float>(samples);
+            if (through > 60.0f)
+            {
+                problems.push_back(Describe(*c) + " is led " + std::to_string(static_cast<int>(through)) +
+                                   " pixels through " + body.name);
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -3047,6 +3189,8 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
     Append(problems, NameLeadersFromShafts(canvas));
     Append(problems, IncidentLeadersAcrossReference(canvas));
     Append(problems, FaceLeadersFromMarks(canvas, setup.study.manifold.normal));
+    Append(problems, TinyArrowHeads(canvas));
+    Append(problems, PitfallOnMtvLine(canvas));
     Append(problems, ArrowsTailToTail(canvas));
     // A figure of its own (a decomposition, ...) draws no pair: the checks of labels against the pair's bodies
     // are for the pair's figures.
@@ -3085,6 +3229,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         Append(problems, LabelsNearerAnotherMark(canvas, scene, setup.study, setup.figure.view));
         Append(problems, ArrowLabelsAstray(canvas));
         Append(problems, LeadersAcrossBars(canvas));
+        Append(problems, ArrowNamesLedThroughBodies(canvas, scene, setup.study, setup.figure.view));
         Append(problems, GhostLeadersAcrossBodies(canvas, scene, setup.study, setup.figure.view));
         Append(problems, EdgeNamesInGhosts(canvas));
         Append(problems, VelocityNamedPastBody(canvas, scene, setup.study, setup.figure.view));
