@@ -518,6 +518,14 @@ void LabelPlacer::Names(MarkKind kind)
     }
 }
 
+void LabelPlacer::LeadsOffArrow()
+{
+    if (!m_labels.empty())
+    {
+        m_labels.back().offArrow = true;
+    }
+}
+
 bool LabelPlacer::NearestOwn(const Label& label, const ScreenRect& rect, ScreenPoint at) const
 {
     if (label.names < 0)
@@ -561,7 +569,12 @@ bool LabelPlacer::NearestOwn(const Label& label, const ScreenRect& rect, ScreenP
         {
             continue;
         }
-        if (std::hypot(middle.x - m.at.x, middle.y - m.at.y) <= mine + (corner ? -4.0f : dot ? 4.0f : lead))
+        // Farther than 30 pixels from its corner a number no longer reads as that corner's at a glance: it keeps
+        // clearly nearer it than any other corner, at most 4/5 as far (pitfall_one_shape's "2" beside the diamond's
+        // upper-left edge, 34 pixels from its top corner and 39 from its left one).
+        const bool far = kind == MarkKind::Corner && m.kind == MarkKind::Corner && mine > 30.0f;
+        if (std::hypot(middle.x - m.at.x, middle.y - m.at.y) <=
+            mine + (far ? std::max(0.25f * mine, lead) : corner ? -4.0f : dot ? 4.0f : lead))
         {
             return false;
         }
@@ -794,6 +807,29 @@ bool LabelPlacer::LeaderCrossesBar(ScreenPoint anchor, const ScreenRect& rect) c
     return std::any_of(m_lines.begin(), m_lines.end(), [&](const Line& line) {
         return !line.leader && line.thickness >= 4.0f && Cross(from, leader.to, line.a, line.b);
     });
+}
+
+bool LabelPlacer::LeaderOnArrow(const Label& label, ScreenPoint anchor, const ScreenRect& rect, bool edges) const
+{
+    const LeaderLine leader = Leader(anchor, rect);
+    if (!label.offArrow || !leader.drawn)
+    {
+        return false;
+    }
+    // Leaving the head within 30 degrees of the arrow's line, it carries the shaft on past the head (pitfall_one_shape's
+    // "pitfall 0.257" led up through the diamond's top corner), or runs back over it.
+    const float lx = leader.to.x - leader.from.x;
+    const float ly = leader.to.y - leader.from.y;
+    const float length = std::hypot(lx, ly);
+    const float own = std::hypot(label.dx, label.dy);
+    if (length > 0.0f && own > 0.0f && std::fabs(lx * label.dx + ly * label.dy) / (length * own) > 0.866f)
+    {
+        return true;
+    }
+    // Across a body's edge, from a head inside the body to a place outside it (pitfall_direction's "MTV 0.20" led
+    // across the block's side), while a place on its own side of the edges may be free.
+    return edges && std::any_of(m_lines.begin(), m_lines.end(),
+                       [&](const Line& line) { return line.edge && Cross(leader.from, leader.to, line.a, line.b); });
 }
 
 bool LabelPlacer::AcrossParting(const Label& label, const ScreenRect& rect, ScreenPoint at) const
@@ -1147,7 +1183,7 @@ void LabelPlacer::Flush(Color halo)
                         if (Inside(rect) && Free(rect, 0.0f, label->rank) && Away(*label, rect, at) &&
                             OnItsSide(label->onSide, at, label->dx, label->dy, rect, true) &&
                             (!strict || LeaderClear(at, rect)) && (!clearOfBars || !LeaderCrossesBar(at, rect)) &&
-                            (!clearOfBars || !LeaderRunsAlong(at, rect)) &&
+                            (!clearOfBars || !LeaderRunsAlong(at, rect)) && !LeaderOnArrow(*label, at, rect, strict) &&
                             !(label->onSide && LeaderCrossesLine(at, rect)))
                         {
                             chosen = rect;

@@ -117,6 +117,11 @@ class LabelPlacer
     /// its head back) when no place near its own anchor is free, square to its preferred direction on either side:
     /// beside its own arrow rather than beside another arrow's head.
     void AlsoBeside(std::vector<ScreenPoint> anchors);
+    /// Keeps the leader line of the label added last (an arrow's name, anchored at its head, preferring the arrow's
+    /// direction) from running on along the arrow past its head, where it reads as a longer shaft and hides the
+    /// head, and from crossing a body's edge to a place outside it, where it reads as naming that edge; a place
+    /// that needs either is taken only when no other is free.
+    void LeadsOffArrow();
     /// Tells the label added last (a face's name) the outline of its own body (on screen): with no room outside the
     /// face, it may sit farther inside that body, wholly within it, where it still reads as that face's.
     void Within(std::vector<ScreenPoint> own);
@@ -171,6 +176,7 @@ class LabelPlacer
         std::vector<std::vector<ScreenPoint>> preferOut; // with PreferOutOf: outlines it keeps out of where it can
         std::vector<std::vector<ScreenPoint>> leaderOut; // with KeepOutOf(.., true): outlines its leader does not cross
         bool inSpan = false;                             // with InFaceSpan: its middle along `face` within it
+        bool offArrow = false;                           // with LeadsOffArrow
     };
     struct Mark
     {
@@ -199,6 +205,7 @@ class LabelPlacer
     bool LeaderCrossesLine(ScreenPoint anchor, const ScreenRect& rect) const;
     bool LeaderRunsAlong(ScreenPoint anchor, const ScreenRect& rect) const;
     bool LeaderCrossesBar(ScreenPoint anchor, const ScreenRect& rect) const;
+    bool LeaderOnArrow(const Label& label, ScreenPoint anchor, const ScreenRect& rect, bool edges) const;
     bool LeaderAlongGrid(ScreenPoint anchor, const ScreenRect& rect) const;
     bool Free(const ScreenRect& rect, float spacing, LabelRank rank, bool everyLine = false) const;
     bool Inside(const ScreenRect& rect) const;

@@ -73,7 +73,7 @@ const char* Meaning(LegendMark mark)
     case LegendMark::Separating:
         return "green dashed line: a separating line";
     case LegendMark::PitfallPush:
-        return "black dashed arrow and outline: a pitfall's wrong push";
+        return "black dashed arrow (and outline): a pitfall's wrong push (and where it leaves the body)";
     case LegendMark::Cut:
         return "vermillion line with dots: a cut, and where it crosses the outline";
     case LegendMark::FocusPiece:

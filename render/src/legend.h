@@ -41,7 +41,8 @@ enum class LegendMark
     Mtv,        ///< the vermillion arrow: the minimum translation vector
     Dashed,     ///< a dashed outline: a body at another time, or moved out by the MTV
     Separating, ///< the green dashed line: a separating line
-    PitfallPush, ///< the black dashed arrow and outline: a pitfall's wrong push, beside the right one
+    PitfallPush, ///< the black dashed arrow and outline: a pitfall's wrong push, beside the right one, and where it
+                 ///< leaves B when the pair overlaps
     Cut,        ///< the vermillion line with dots: a cut, and where it crosses the outline
     FocusPiece, ///< a convex piece filled darker than the others: the piece of the pair at hand, or that decides
     PieceFills, ///< fills in turn sky blue, orange, green, yellow: each part of a cut, or each convex piece, in its own

@@ -2280,8 +2280,9 @@ class Painter
             }
             m_hasPitfallArrow = true;
             m_used.push_back(LegendMark::PitfallPush);
-            // Apart, the push itself is the mistake (a collision reported, and a push for it): where it leaves B
-            // would only crowd B's own marks.
+            // Apart, the push itself is the mistake (a collision reported, and a push for it), and where it leaves B
+            // is left out, as the key allows: a push a fraction of B's size runs that outline through B, beside the
+            // faces the sentences name.
             if (right == nullptr)
             {
                 m_labels.ReserveLine(from, m_pitfallTo, 2.0f);
@@ -2365,6 +2366,7 @@ class Painter
     void NamesPitfallArrow()
     {
         m_labels.Names(MarkKind::ArrowHead);
+        m_labels.LeadsOffArrow();
         std::vector<ScreenPoint> shaft;
         for (const float f : {0.3f, 0.6f})
         {

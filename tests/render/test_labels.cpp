@@ -3158,6 +3158,105 @@ std::vector<std::string> ArrowNamesLedThroughBodies(const RecordingCanvas& canva
     return problems;
 }
 
+// The pitfall's name on a leader line that leaves its head along the arrow's line: the line carries the shaft on
+// past the head, which it hides (pitfall_one_shape's "pitfall 0.257" led straight up through the diamond's top
+// corner), or runs back over it.
+std::vector<std::string> PitfallLeaderOnArrow(const RecordingCanvas& canvas)
+{
+    ScreenPoint tail{}, tip{};
+    if (!PitfallArrow(canvas, tail, tip))
+    {
+        return {};
+    }
+    std::vector<std::string> problems;
+    const float length = std::hypot(tip.x - tail.x, tip.y - tail.y);
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || c->text.rfind("pitfall ", 0) != 0 || length <= 0.0f)
+        {
+            continue;
+        }
+        const DrawCommand* line = LeaderTo(canvas, *c);
+        if (line == nullptr)
+        {
+            continue;
+        }
+        const ScreenPoint a = line->points[0];
+        const ScreenPoint b = line->points[1];
+        const float leader = std::hypot(b.x - a.x, b.y - a.y);
+        const float along = ((b.x - a.x) * (tip.x - tail.x) + (b.y - a.y) * (tip.y - tail.y)) / (leader * length);
+        if (std::hypot(a.x - tip.x, a.y - tip.y) < 8.0f && leader > 0.0f && std::fabs(along) > 0.866f)
+        {
+            problems.push_back(Describe(*c) + " is led along its arrow's line from its head");
+        }
+    }
+    return problems;
+}
+
+// A vertex number not clearly nearer its own corner than any other corner of the pair: between two corners, or
+// beside the edge that joins them, it names either (pitfall_one_shape's "2" beside the diamond's upper-left edge,
+// 34 pixels from its top corner and 39 from the left one). Measured from the label's middle, as
+// LabelsNearerAnotherMark measures it: farther than 30 pixels from its corner, where it no longer reads as that
+// corner's at a glance, its own corner must be at most 4/5 as far as any other.
+std::vector<std::string> VertexNumbersBetweenCorners(const RecordingCanvas& canvas, const Scene& scene,
+                                                     const PairStudy& study, const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    const Body* bodies[2] = {&scene.bodies[static_cast<size_t>(study.bodyA)],
+                             &scene.bodies[static_cast<size_t>(study.bodyB)]};
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    std::vector<ScreenPoint> corners[2];
+    for (int s = 0; s < 2; ++s)
+    {
+        if (bodies[s]->shape.type == ShapeType::Polygon)
+        {
+            corners[s] = Outline(*bodies[s], view);
+        }
+    }
+    const auto distance = [](ScreenPoint p, ScreenPoint q) { return std::hypot(p.x - q.x, p.y - q.y); };
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text || !painter_test::IsVertexNumber(c->text) || OnLeader(canvas, *c))
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(c->text, c->style);
+        const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+        const size_t own = static_cast<size_t>(std::stoi(c->text));
+        for (int s = 0; s < 2; ++s)
+        {
+            if ((c->color >> 8) != (inks[s] >> 8) || own >= corners[s].size())
+            {
+                continue;
+            }
+            const float mine = distance(middle, corners[s][own]);
+            for (int o = 0; o < 2; ++o)
+            {
+                for (size_t k = 0; k < corners[o].size(); ++k)
+                {
+                    // A corner at the same place as its own (resting on the other body's) is the same place.
+                    if ((o == s && k == own) || distance(corners[o][k], corners[s][own]) <= 3.0f)
+                    {
+                        continue;
+                    }
+                    if (mine > 30.0f && mine > 0.8f * distance(middle, corners[o][k]))
+                    {
+                        problems.push_back(Describe(*c) + ", a vertex number of " + bodies[s]->name + ", lies " +
+                                           std::to_string(static_cast<int>(mine)) + " pixels from its corner and " +
+                                           std::to_string(static_cast<int>(distance(middle, corners[o][k]))) +
+                                           " from the corner at (" + std::to_string(static_cast<int>(corners[o][k].x)) +
+                                           ", " + std::to_string(static_cast<int>(corners[o][k].y)) + ")");
+                        o = 2;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -3191,6 +3290,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
     Append(problems, FaceLeadersFromMarks(canvas, setup.study.manifold.normal));
     Append(problems, TinyArrowHeads(canvas));
     Append(problems, PitfallOnMtvLine(canvas));
+    Append(problems, PitfallLeaderOnArrow(canvas));
     Append(problems, ArrowsTailToTail(canvas));
     // A figure of its own (a decomposition, ...) draws no pair: the checks of labels against the pair's bodies
     // are for the pair's figures.
@@ -3230,6 +3330,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         Append(problems, ArrowLabelsAstray(canvas));
         Append(problems, LeadersAcrossBars(canvas));
         Append(problems, ArrowNamesLedThroughBodies(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, VertexNumbersBetweenCorners(canvas, scene, setup.study, setup.figure.view));
         Append(problems, GhostLeadersAcrossBodies(canvas, scene, setup.study, setup.figure.view));
         Append(problems, EdgeNamesInGhosts(canvas));
         Append(problems, VelocityNamedPastBody(canvas, scene, setup.study, setup.figure.view));
