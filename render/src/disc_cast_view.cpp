@@ -320,6 +320,11 @@ void PaintDiscCast(Canvas& surface, const Scene& scene, int targetIndex, int dis
             canvas.FillConvex(outline.data(), static_cast<int>(outline.size()), WithAlpha(palette::kShapeA, 0.22f));
         }
         canvas.Polyline(outline.data(), static_cast<int>(outline.size()), true, palette::kShapeA, 2.0f);
+        // A leader line along or across the target's outline reads as naming an edge of it.
+        for (size_t i = 0; i < outline.size(); ++i)
+        {
+            labels.ReserveEdge(outline[i], outline[(i + 1) % outline.size()]);
+        }
     }
     else
     {
@@ -354,16 +359,74 @@ void PaintDiscCast(Canvas& surface, const Scene& scene, int targetIndex, int dis
                        WithAlpha(palette::kShapeB, 0.45f), 1.0f);
     }
     labels.ReserveLine(s1, s2, 1.5f);
-    const ScreenRect head = Arrow(canvas, s1, s2, palette::kInk, 1.5f);
+    // The normal at the hit runs from the contact point through the centre, which lies on the path: nearly along
+    // the path (a steep path onto a flat face, disc_cast_cup's) the two black lines would merge into one. The path
+    // then leaves off over the disc at the hit, as far from its centre as the normal reaches, either side.
+    const float gap = hit.hit && std::fabs(Dot(hit.normal, along)) > std::cos(0.5) ? radius + 26.0f : 0.0f;
+    const ScreenPoint sc = hit.hit ? ToScreen(view, hit.center) : s1;
+    const float run = std::hypot(s2.x - s1.x, s2.y - s1.y);
+    const float at = ((sc.x - s1.x) * (s2.x - s1.x) + (sc.y - s1.y) * (s2.y - s1.y)) / std::max(run, 1e-3f);
+    ScreenRect head{};
+    if (gap > 0.0f && at - gap > 0.0f && at + gap + 12.0f < run)
+    {
+        const auto point = [&](float d) {
+            return ScreenPoint{s1.x + (s2.x - s1.x) * d / run, s1.y + (s2.y - s1.y) * d / run};
+        };
+        canvas.Segment(s1, point(at - gap), palette::kInk, 1.5f);
+        head = Arrow(canvas, point(at + gap), s2, palette::kInk, 1.5f);
+    }
+    else
+    {
+        head = Arrow(canvas, s1, s2, palette::kInk, 1.5f);
+    }
     labels.Reserve(head);
     canvas.Circle(s1, radius, palette::kShapeBInk, 2.0f);
     canvas.FillCircle(s1, 3.0f, palette::kInk);
     DashedOutline(canvas, ShapeOutline(view, MakeShape(Circle{p2, r}), MakeTransform(Vec2{}, 0.0)),
                   WithAlpha(palette::kShapeBInk, 0.6f), 1.2f, rect);
+    // Each beside its disc and out of the target, where it would read as naming a corner of it
+    // (circle_and_polygon_cast's "end", whose disc overlaps the pentagon).
+    std::vector<std::vector<ScreenPoint>> targetParts;
+    for (const ConcavePart& part : target.concave.parts)
+    {
+        std::vector<ScreenPoint> outline;
+        for (const Vec2& v : part.shape.polygon.Vertices())
+        {
+            outline.push_back(ToScreen(view, TransformPoint(xf, v)));
+        }
+        targetParts.push_back(std::move(outline));
+    }
+    if (target.concave.parts.empty())
+    {
+        targetParts.push_back(ShapeOutline(view, target.shape, xf));
+    }
     labels.Place(s1, "start", TextStyle::Label, palette::kShapeBInk, s1.x - s2.x, s1.y - s2.y, radius + 6.0f,
                  LabelRank::Note);
-    labels.Place(s2, "end", TextStyle::Label, palette::kShapeBInk, s2.x - s1.x, s2.y - s1.y, radius + 6.0f,
-                 LabelRank::Note);
+    for (const std::vector<ScreenPoint>& part : targetParts)
+    {
+        labels.KeepOutOf(part);
+    }
+    // The end's disc may overlap the target: its name goes on the side away from the target's middle, and out
+    // of the disc at the hit too, whose name it would read as.
+    ScreenPoint targetMiddle{};
+    for (const std::vector<ScreenPoint>& part : targetParts)
+    {
+        for (const ScreenPoint& q : part)
+        {
+            targetMiddle = {targetMiddle.x + q.x / static_cast<float>(part.size() * targetParts.size()),
+                            targetMiddle.y + q.y / static_cast<float>(part.size() * targetParts.size())};
+        }
+    }
+    labels.Place(s2, "end", TextStyle::Label, palette::kShapeBInk, s2.x - targetMiddle.x, s2.y - targetMiddle.y,
+                 radius + 6.0f, LabelRank::Note);
+    for (const std::vector<ScreenPoint>& part : targetParts)
+    {
+        labels.KeepOutOf(part);
+    }
+    if (hit.hit)
+    {
+        labels.KeepOutOf(ShapeOutline(view, MakeShape(Circle{hit.center, r}), MakeTransform(Vec2{}, 0.0)));
+    }
     // The target's name inside it: at its largest piece's middle (a concave outline's own middle may lie outside).
     Vec2 middle = TransformPoint(xf, target.shape.type == ShapeType::Circle ? target.shape.circle.center : Vec2{});
     if (target.shape.type == ShapeType::Polygon)
@@ -407,10 +470,33 @@ void PaintDiscCast(Canvas& surface, const Scene& scene, int targetIndex, int dis
         canvas.FillCircle(p, 4.5f, palette::kResult);
         labels.Reserve({p.x - 5.0f, p.y - 5.0f, p.x + 5.0f, p.y + 5.0f});
         labels.Reserve({c.x - 4.0f, c.y - 4.0f, c.x + 4.0f, c.y + 4.0f});
+        // On the side of the path with the more room before the target (disc_cast_cup's open middle, not the arm
+        // beside the disc).
+        const auto room = [&](Vec2 d) {
+            double nearest = 1e300;
+            for (size_t i = 0; i < ring.size(); ++i)
+            {
+                const Vec2 a = ring[i];
+                const Vec2 e = ring[(i + 1) % ring.size()] - a;
+                const double den = Cross(d, e);
+                if (std::fabs(den) < 1e-12)
+                {
+                    continue;
+                }
+                const double t = Cross(a - hit.center, e) / den;
+                const double u = Cross(a - hit.center, d) / den;
+                if (t > 0.0 && u >= 0.0 && u <= 1.0)
+                {
+                    nearest = std::min(nearest, t);
+                }
+            }
+            return nearest;
+        };
+        const Vec2 away = room(-1.0 * side) > room(side) ? -1.0 * side : side;
         labels.Place(c, "t = " + FormatNumber(hit.fraction), TextStyle::Label, palette::kInk,
-                     static_cast<float>(side.x), static_cast<float>(-side.y), radius + 6.0f, LabelRank::Verdict);
+                     static_cast<float>(away.x), static_cast<float>(-away.y), radius + 6.0f, LabelRank::Verdict);
         // The time names the disc where it stops, not the target: it keeps out of the target's pieces (a cup's arm
-        // beside the disc), where it would read as a note on that piece.
+        // beside the disc), where it would read as a note on that piece, and its leader line off their edges.
         for (const ConcavePart& part : target.concave.parts)
         {
             std::vector<ScreenPoint> outline;
@@ -420,8 +506,14 @@ void PaintDiscCast(Canvas& surface, const Scene& scene, int targetIndex, int dis
             }
             labels.KeepOutOf(std::move(outline));
         }
+        labels.LeadsOffEdges();
         labels.Place(p, "contact", TextStyle::Label, palette::kResult, static_cast<float>(-hit.normal.y),
                      static_cast<float>(-hit.normal.x), 8.0f, LabelRank::Verdict);
+        // Out of the discs at the hit and at the end, whose names it would read as.
+        for (const Vec2& disc : {hit.center, p2})
+        {
+            labels.KeepOutOf(ShapeOutline(view, MakeShape(Circle{disc, r}), MakeTransform(Vec2{}, 0.0)));
+        }
     }
     labels.Flush(palette::kBackground);
 }

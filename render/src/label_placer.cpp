@@ -526,6 +526,14 @@ void LabelPlacer::LeadsOffArrow()
     }
 }
 
+void LabelPlacer::LeadsOffEdges()
+{
+    if (!m_labels.empty())
+    {
+        m_labels.back().offEdges = true;
+    }
+}
+
 bool LabelPlacer::NearestOwn(const Label& label, const ScreenRect& rect, ScreenPoint at) const
 {
     if (label.names < 0)
@@ -809,27 +817,29 @@ bool LabelPlacer::LeaderCrossesBar(ScreenPoint anchor, const ScreenRect& rect) c
     });
 }
 
-bool LabelPlacer::LeaderOnArrow(const Label& label, ScreenPoint anchor, const ScreenRect& rect, bool edges) const
+bool LabelPlacer::LeaderAstray(const Label& label, ScreenPoint anchor, const ScreenRect& rect, bool edges) const
 {
     const LeaderLine leader = Leader(anchor, rect);
-    if (!label.offArrow || !leader.drawn)
+    if (!(label.offArrow || label.offEdges) || !leader.drawn)
     {
         return false;
     }
-    // Leaving the head within 30 degrees of the arrow's line, it carries the shaft on past the head (pitfall_one_shape's
-    // "pitfall 0.257" led up through the diamond's top corner), or runs back over it.
+    // Leaving the head within 30 degrees of the arrow's line, it carries the shaft on past the head
+    // (pitfall_one_shape's "pitfall 0.257" led up through the diamond's top corner), or runs back over it.
     const float lx = leader.to.x - leader.from.x;
     const float ly = leader.to.y - leader.from.y;
     const float length = std::hypot(lx, ly);
     const float own = std::hypot(label.dx, label.dy);
-    if (length > 0.0f && own > 0.0f && std::fabs(lx * label.dx + ly * label.dy) / (length * own) > 0.866f)
+    if (label.offArrow && length > 0.0f && own > 0.0f &&
+        std::fabs(lx * label.dx + ly * label.dy) / (length * own) > 0.866f)
     {
         return true;
     }
-    // Across a body's edge, from a head inside the body to a place outside it (pitfall_direction's "MTV 0.20" led
-    // across the block's side), while a place on its own side of the edges may be free.
-    return edges && std::any_of(m_lines.begin(), m_lines.end(),
-                       [&](const Line& line) { return line.edge && Cross(leader.from, leader.to, line.a, line.b); });
+    // Across a body's edge, to a place beyond it, it reads as naming that edge or what lies across it
+    // (disc_cast_cup's "t = 0.74" led across the cup's whole right arm), while a place on its own side may be free.
+    return edges && std::any_of(m_lines.begin(), m_lines.end(), [&](const Line& line) {
+               return line.edge && Cross(leader.from, leader.to, line.a, line.b);
+           });
 }
 
 bool LabelPlacer::AcrossParting(const Label& label, const ScreenRect& rect, ScreenPoint at) const
@@ -1183,7 +1193,7 @@ void LabelPlacer::Flush(Color halo)
                         if (Inside(rect) && Free(rect, 0.0f, label->rank) && Away(*label, rect, at) &&
                             OnItsSide(label->onSide, at, label->dx, label->dy, rect, true) &&
                             (!strict || LeaderClear(at, rect)) && (!clearOfBars || !LeaderCrossesBar(at, rect)) &&
-                            (!clearOfBars || !LeaderRunsAlong(at, rect)) && !LeaderOnArrow(*label, at, rect, strict) &&
+                            (!clearOfBars || !LeaderRunsAlong(at, rect)) && !LeaderAstray(*label, at, rect, strict) &&
                             !(label->onSide && LeaderCrossesLine(at, rect)))
                         {
                             chosen = rect;

@@ -119,9 +119,11 @@ class LabelPlacer
     void AlsoBeside(std::vector<ScreenPoint> anchors);
     /// Keeps the leader line of the label added last (an arrow's name, anchored at its head, preferring the arrow's
     /// direction) from running on along the arrow past its head, where it reads as a longer shaft and hides the
-    /// head, and from crossing a body's edge to a place outside it, where it reads as naming that edge; a place
-    /// that needs either is taken only when no other is free.
+    /// head, and, as LeadsOffEdges does, from crossing a body's edge while another place is free.
     void LeadsOffArrow();
+    /// Keeps the leader line of the label added last from crossing a body's edge to a place beyond it, where it reads
+    /// as naming that edge; a place that needs it is taken only when no other is free.
+    void LeadsOffEdges();
     /// Tells the label added last (a face's name) the outline of its own body (on screen): with no room outside the
     /// face, it may sit farther inside that body, wholly within it, where it still reads as that face's.
     void Within(std::vector<ScreenPoint> own);
@@ -177,6 +179,7 @@ class LabelPlacer
         std::vector<std::vector<ScreenPoint>> leaderOut; // with KeepOutOf(.., true): outlines its leader does not cross
         bool inSpan = false;                             // with InFaceSpan: its middle along `face` within it
         bool offArrow = false;                           // with LeadsOffArrow
+        bool offEdges = false;                           // with LeadsOffEdges
     };
     struct Mark
     {
@@ -205,7 +208,7 @@ class LabelPlacer
     bool LeaderCrossesLine(ScreenPoint anchor, const ScreenRect& rect) const;
     bool LeaderRunsAlong(ScreenPoint anchor, const ScreenRect& rect) const;
     bool LeaderCrossesBar(ScreenPoint anchor, const ScreenRect& rect) const;
-    bool LeaderOnArrow(const Label& label, ScreenPoint anchor, const ScreenRect& rect, bool edges) const;
+    bool LeaderAstray(const Label& label, ScreenPoint anchor, const ScreenRect& rect, bool edges) const;
     bool LeaderAlongGrid(ScreenPoint anchor, const ScreenRect& rect) const;
     bool Free(const ScreenRect& rect, float spacing, LabelRank rank, bool everyLine = false) const;
     bool Inside(const ScreenRect& rect) const;

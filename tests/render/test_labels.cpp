@@ -3257,6 +3257,159 @@ std::vector<std::string> VertexNumbersBetweenCorners(const RecordingCanvas& canv
     return problems;
 }
 
+// The labels and marks of a disc-cast figure (a disc's centre moved along a path, drawn at its start, at the hit
+// and at its end) that a reader would attach to the wrong thing:
+// - "start" or "end" inside the target, or farther than 25 pixels beyond the rim of its disc: circle_and_polygon_cast's
+//   "end" sat in the pentagon, well left of the dashed disc, and read as naming the pentagon's corner;
+// - "contact" inside the disc at the hit or at the end, where it reads as that disc's name (circle_and_polygon_cast);
+// - the time's name led across the target's outline: disc_cast_cup's "t = 0.74" was led across the whole right arm;
+// - the normal at the hit run along the path for more than 10 pixels, where the two black lines merge into one
+//   (disc_cast_cup's, nearly parallel to the steep path).
+std::vector<std::string> DiscCastMarksAstray(const RecordingCanvas& canvas)
+{
+    std::vector<std::string> problems;
+    const std::vector<const DrawCommand*> path = canvas.InGroup("path");
+    const std::vector<const DrawCommand*> hit = canvas.InGroup("hit");
+    const std::vector<const DrawCommand*> target = canvas.InGroup("target");
+    // The path's shafts (a thin black line, one piece or more) and its head's tip; the start disc's rim.
+    std::vector<std::pair<ScreenPoint, ScreenPoint>> shafts;
+    ScreenPoint start{}, end{};
+    float radius = 0.0f;
+    bool head = false;
+    for (const DrawCommand* c : path)
+    {
+        if (c->kind == DrawCommand::Kind::Segment && c->color == palette::kInk)
+        {
+            shafts.push_back({c->points[0], c->points[1]});
+        }
+        if (IsArrowHead(*c) && c->color == palette::kInk)
+        {
+            end = c->points[0];
+            head = true;
+        }
+        if (c->kind == DrawCommand::Kind::Circle && radius == 0.0f)
+        {
+            start = c->points[0];
+            radius = c->radius;
+        }
+    }
+    if (shafts.empty() || !head || radius == 0.0f)
+    {
+        return problems;
+    }
+    // The disc at the hit: its rim in "hit"; the normal: the thick black line in "hit", drawn before its head.
+    ScreenPoint centre{};
+    bool hitDisc = false;
+    std::vector<std::pair<ScreenPoint, ScreenPoint>> normals;
+    for (const DrawCommand* c : hit)
+    {
+        if (c->kind == DrawCommand::Kind::Circle)
+        {
+            centre = c->points[0];
+            hitDisc = true;
+        }
+        if (c->kind == DrawCommand::Kind::Segment && c->color == palette::kInk)
+        {
+            normals.push_back({c->points[0], c->points[1]});
+        }
+    }
+    // The target's outline: the closed lines in "target" (a concave body's seams are dashed segments).
+    std::vector<std::vector<ScreenPoint>> outlines;
+    for (const DrawCommand* c : target)
+    {
+        if (c->kind == DrawCommand::Kind::Polyline)
+        {
+            outlines.push_back(c->points);
+        }
+    }
+    const auto inside = [](const std::vector<ScreenPoint>& polygon, ScreenPoint p) {
+        bool in = false;
+        for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+        {
+            const ScreenPoint& u = polygon[i];
+            const ScreenPoint& v = polygon[j];
+            if ((u.y > p.y) != (v.y > p.y) && p.x < u.x + (p.y - u.y) * (v.x - u.x) / (v.y - u.y))
+            {
+                in = !in;
+            }
+        }
+        return in;
+    };
+    const auto crosses = [](ScreenPoint p, ScreenPoint q, ScreenPoint u, ScreenPoint v) {
+        const auto side = [](ScreenPoint a, ScreenPoint b, ScreenPoint c) {
+            return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+        };
+        return side(p, q, u) * side(p, q, v) < 0.0f && side(u, v, p) * side(u, v, q) < 0.0f;
+    };
+    RecordingCanvas measure;
+    for (const DrawCommand* c : canvas.InGroup("labels"))
+    {
+        if (c->kind != DrawCommand::Kind::Text)
+        {
+            continue;
+        }
+        const ScreenPoint size = measure.MeasureText(c->text, c->style);
+        const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+        const auto far = [&](ScreenPoint from) { return std::hypot(middle.x - from.x, middle.y - from.y); };
+        if (c->text == "start" || c->text == "end")
+        {
+            const ScreenPoint own = c->text == "start" ? start : end;
+            for (const std::vector<ScreenPoint>& outline : outlines)
+            {
+                if (inside(outline, middle))
+                {
+                    problems.push_back(Describe(*c) + " lies inside the target");
+                }
+            }
+            if (far(own) > radius + 25.0f + 0.5f * size.x)
+            {
+                problems.push_back(Describe(*c) + " lies " + std::to_string(static_cast<int>(far(own) - radius)) +
+                                   " pixels beyond the rim of its disc");
+            }
+        }
+        if (c->text == "contact" && (far(end) < radius || (hitDisc && far(centre) < radius)))
+        {
+            problems.push_back(Describe(*c) + " lies inside a disc");
+        }
+        if (c->text.rfind("t = ", 0) == 0)
+        {
+            const DrawCommand* line = LeaderTo(canvas, *c);
+            for (size_t k = 0; line != nullptr && k < outlines.size(); ++k)
+            {
+                const std::vector<ScreenPoint>& outline = outlines[k];
+                for (size_t i = 0; i < outline.size(); ++i)
+                {
+                    if (crosses(line->points[0], line->points[1], outline[i], outline[(i + 1) % outline.size()]))
+                    {
+                        problems.push_back(Describe(*c) + " is led across the target's outline");
+                        k = outlines.size();
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    for (const auto& [a, b] : normals)
+    {
+        const float length = std::hypot(b.x - a.x, b.y - a.y);
+        float along = 0.0f;
+        for (float s = 0.0f; s <= length; s += 1.0f)
+        {
+            const ScreenPoint p{a.x + (b.x - a.x) * s / length, a.y + (b.y - a.y) * s / length};
+            const bool near = std::any_of(shafts.begin(), shafts.end(), [&](const auto& shaft) {
+                return ToSegment(p, shaft.first, shaft.second) < 2.5f;
+            });
+            along += near ? 1.0f : 0.0f;
+        }
+        if (along > 10.0f)
+        {
+            problems.push_back("the normal at the hit runs " + std::to_string(static_cast<int>(along)) +
+                               " pixels along the path");
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -3291,6 +3444,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
     Append(problems, TinyArrowHeads(canvas));
     Append(problems, PitfallOnMtvLine(canvas));
     Append(problems, PitfallLeaderOnArrow(canvas));
+    Append(problems, DiscCastMarksAstray(canvas));
     Append(problems, ArrowsTailToTail(canvas));
     // A figure of its own (a decomposition, ...) draws no pair: the checks of labels against the pair's bodies
     // are for the pair's figures.
