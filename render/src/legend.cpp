@@ -17,7 +17,7 @@ namespace
 {
 
 constexpr float kPadding = 8.0f; // inside the panel
-constexpr float kRow = 18.0f;    // row height
+constexpr float kRow = 17.0f;    // row height: 33 rows and the padding fit a canvas 600 pixels high
 constexpr float kSwatch = 28.0f; // swatch width
 constexpr float kGapAfterSwatch = 8.0f;
 constexpr float kLine = 15.0f; // the step to a wrapped meaning's next line
@@ -28,6 +28,10 @@ const char* Meaning(LegendMark mark)
     {
     case LegendMark::CandidateAxis:
         return "long grey dashes through the pair: the candidate axes";
+    case LegendMark::AxisArrow:
+        return "grey arrow named \"axis N\": the axis tested (only its direction matters, not where it is drawn)";
+    case LegendMark::Projection:
+        return "blue and orange bars, dashed lines to them: each shape's interval, its projection on the axis";
     case LegendMark::AxisFace:
         return "thick dark edge: the face whose normal is the axis";
     case LegendMark::Normal:
@@ -102,6 +106,23 @@ void Swatch(Canvas& canvas, LegendMark mark, float x, float y)
         DashedSegment(canvas, {x, cy}, {x1, cy}, kCandidateAxisColor, kCandidateAxisWidth,
                       {x - 1.0f, y, x1 + 1.0f, y + kRow}, kCandidateAxisDash, kCandidateAxisGap);
         break;
+    case LegendMark::AxisArrow:
+        // As the projection layer draws it (kAxisArrowWidth, kAxisArrowHead), in the group's grey.
+        Arrow(canvas, {x, cy}, {x1, cy}, palette::kMuted, kAxisArrowWidth, kAxisArrowHead);
+        break;
+    case LegendMark::Projection:
+    {
+        // As the projection layer draws them, turned as lesson 1's first figure turns them (its axis upright): a bar
+        // per shape, kIntervalBar wide, and thin dashed guides from the shapes' extreme points to the bars' ends.
+        const ScreenRect clip{x - 1.0f, y, x1 + 1.0f, y + kRow};
+        DashedSegment(canvas, {x1, y + 2.0f}, {x + 5.0f, y + 2.0f}, WithAlpha(palette::kShapeA, 0.55f), 1.0f, clip,
+                      4.0f, 4.0f);
+        DashedSegment(canvas, {x1, y + kRow - 2.0f}, {x + 13.0f, y + kRow - 2.0f}, WithAlpha(palette::kShapeBInk, 0.55f),
+                      1.0f, clip, 4.0f, 4.0f);
+        canvas.Segment({x + 5.0f, y + 2.0f}, {x + 5.0f, y + 11.0f}, palette::kShapeA, kIntervalBar);
+        canvas.Segment({x + 13.0f, y + 7.0f}, {x + 13.0f, y + kRow - 2.0f}, palette::kShapeB, kIntervalBar);
+        break;
+    }
     case LegendMark::AxisFace:
         canvas.Segment({x, cy}, {x1, cy}, palette::kInk, 4.0f);
         break;

@@ -19,6 +19,8 @@ namespace satviz
 enum class LegendMark
 {
     CandidateAxis, ///< the long grey dashes through the pair: every candidate axis
+    AxisArrow,  ///< the grey arrow named "axis N" (or "face test N") beside the pair: the axis tested, its direction
+    Projection, ///< the blue and orange bars along the axis, with thin dashed guides from the shapes: their intervals
     AxisFace,   ///< the thick dark edge whose normal is the current axis
     Normal,     ///< a short arrow on a face: its outward normal, in its body's colour, black on the axis's face
     VertexAxis, ///< the dark dot and dashed line: an axis from a vertex (or a centre) to a circle's centre
@@ -65,6 +67,13 @@ constexpr float kCandidateAxisWidth = 1.2f;
 constexpr float kCandidateAxisDash = 14.0f;
 /// The gap between a candidate axis's dashes.
 constexpr float kCandidateAxisGap = 6.0f;
+
+/// How the axis tested is drawn beside the pair, in the figure and its key: a grey arrow this wide ...
+constexpr float kAxisArrowWidth = 1.5f;
+/// ... with a head this long.
+constexpr float kAxisArrowHead = 11.0f;
+/// The width of an interval's bar along the axis, in the figure and its key.
+constexpr float kIntervalBar = 6.0f;
 
 /// Every mark, in the key's order.
 std::vector<LegendMark> AllLegendMarks();

@@ -38,7 +38,7 @@ constexpr float kFitMargin = 22.0f;        // pixels between the axis line and t
 constexpr float kFitSide = 36.0f;          // at the left and right edges: room for a corner's number and edge name
 constexpr float kOutline = 2.0f;           // shape outline thickness
 constexpr float kClearOfDot = 12.0f;       // a face's name led from this far off a contact's dot
-constexpr float kBar = 6.0f;               // interval bar thickness
+constexpr float kBar = kIntervalBar;       // interval bar thickness, as the key draws it
 constexpr float kLinePad = 26.0f;          // the axis line runs this far beyond the intervals
 
 bool Has(const Figure& figure, LayerMask layer)
@@ -715,6 +715,8 @@ class Painter
         }
         if (m_hasAxis && Has(m_figure, kLayerProjection) && !m_axis.skipped)
         {
+            used.push_back(LegendMark::AxisArrow);
+            used.push_back(LegendMark::Projection);
             for (int f = 0; f < m_axis.faceCount; ++f)
             {
                 if (m_axis.faces[f].kind == AxisKind::FaceNormal)
@@ -1982,7 +1984,7 @@ class Painter
             tail = At(Along(base, d, lo - pad));
             head = At(Along(base, d, hi + pad));
         }
-        MarkedArrow(tail, head, faint(palette::kMuted, 1.0f), 1.5f, 11.0f);
+        MarkedArrow(tail, head, faint(palette::kMuted, 1.0f), kAxisArrowWidth, kAxisArrowHead);
         const std::string name = (m_axis.textbook ? "axis " : "face test ") + std::to_string(m_axis.index + 1);
         // Named at its head.
         m_labels.Place(head,

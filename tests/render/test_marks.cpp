@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -457,6 +458,64 @@ TEST_CASE("Every fill colour a figure of the course draws is a body's colour or 
     }
     CHECK(unexplained.empty());
     CHECK(fills > 100);
+}
+
+TEST_CASE("Lesson 1's key draws each line of the projection layer as the figures draw it, the axis's grey arrow, the "
+          "intervals' bars and their dashed guides",
+          "[marks][legend]")
+{
+    // Every step figure draws the axis tested as a grey arrow named "axis N", each shape's interval as a bar along it
+    // and thin dashed lines from the shape to the bar's ends; the key had no row for any of them, and its only grey
+    // arrow was "a push through a seam". The oracle is lesson 1's key as drawn: each line the projection layer draws
+    // in the grey of the axis or in a body's colour (the bars opaque, the guides translucent) has a swatch line of
+    // the same colour and width. Lines drawn faint (a face decided without evaluation) are the same marks, paler.
+    const auto style = [](const DrawCommand& c) {
+        return std::pair<Color, int>{c.color >> 8, static_cast<int>(std::lround(c.thickness * 10.0f))};
+    };
+    std::set<std::pair<Color, int>> keyed;
+    {
+        const Scene scene = painter_test::LessonScene("l01_legend");
+        FigureSetup setup = SetUpFigure(scene, FigureOptions{});
+        REQUIRE(setup.Ok());
+        const RecordingCanvas key = painter_test::PaintStep(scene, setup, setup.figure.step);
+        for (const DrawCommand* c : key.InGroup("legend"))
+        {
+            if (c->kind == DrawCommand::Kind::Segment)
+            {
+                keyed.insert(style(*c));
+            }
+        }
+    }
+    const Color lines[] = {palette::kMuted >> 8, palette::kShapeA >> 8, palette::kShapeB >> 8,
+                           palette::kShapeBInk >> 8};
+    std::map<std::pair<Color, int>, std::string> unexplained; // each line's style, and the first figure that draws it
+    int seen = 0;
+    ForEachCourseFigure([&](const std::string& stem, bool faces, const FigureSetup&, int, const RecordingCanvas& canvas) {
+        for (const DrawCommand* c : canvas.InGroup("projection"))
+        {
+            const bool ours = std::find(std::begin(lines), std::end(lines), c->color >> 8) != std::end(lines);
+            // Opaque (a bar, the arrow's shaft) or as translucent as a guide; not a faint face's or the swept bar.
+            const Color alpha = c->color & 0xFFu;
+            if (c->kind != DrawCommand::Kind::Segment || !ours || (alpha < 0xC0u && (alpha < 0x80u || alpha > 0x90u)))
+            {
+                continue;
+            }
+            ++seen;
+            if (keyed.count(style(*c)) == 0 && unexplained.count(style(*c)) == 0)
+            {
+                std::ostringstream what;
+                what << "a line " << std::hex << c->color << std::dec << ", " << c->thickness << " wide, in "
+                     << (faces ? "faces/" : "") << stem << " and on";
+                unexplained[style(*c)] = what.str();
+            }
+        }
+    });
+    for (const auto& [line, what] : unexplained)
+    {
+        UNSCOPED_INFO(what);
+    }
+    CHECK(unexplained.empty());
+    CHECK(seen > 500);
 }
 
 TEST_CASE("No end value of a number line runs into its band, and no tick value of a time bar is crowded by a marker",
