@@ -698,3 +698,80 @@ TEST_CASE("Where a lesson tells of the outline a circle is swept against, a figu
     }
     CHECK(told >= 1);
 }
+
+TEST_CASE("Where the lessons first show a disc-cast figure, the text by it says what each of its marks is", "[concave]")
+{
+    // Lesson 8 showed circle_and_polygon_cast and named only its dashed outline: its black path arrow, the short black
+    // normal, the two pale lines bounding the swept band and the three discs were explained only in lesson 19. The
+    // first disc-cast figure in reading order (the figures whose picture draws the "pushed out" group): the words
+    // for each mark in its paragraph, the one before it or the ones after it up to the next figure or heading.
+    namespace fs = std::filesystem;
+    const fs::path tutorials = fs::path(SATVIZ_SOURCE_DIR) / "tutorials";
+    std::vector<fs::path> lessons;
+    for (const auto& entry : fs::directory_iterator(tutorials))
+    {
+        const std::string name = entry.path().filename().string();
+        if (entry.path().extension() == ".md" && name.size() > 3 && std::isdigit(static_cast<unsigned char>(name[0])))
+        {
+            lessons.push_back(entry.path());
+        }
+    }
+    std::sort(lessons.begin(), lessons.end());
+    const auto discCast = [&](const std::string& stem) {
+        const fs::path scene = tutorials / "scenes" / "concave" / (stem + ".json");
+        if (!fs::exists(scene))
+        {
+            return false;
+        }
+        const Scene loaded = painter_test::LoadSimulated(scene.string());
+        FigureSetup setup = SetUpFigure(loaded, {});
+        REQUIRE(setup.Ok());
+        return !painter_test::PaintStep(loaded, setup, setup.figure.step).InGroup("pushed out").empty();
+    };
+    bool found = false;
+    for (size_t l = 0; l < lessons.size() && !found; ++l)
+    {
+        std::ifstream in(lessons[l]);
+        std::vector<std::string> paragraphs(1);
+        for (std::string line; std::getline(in, line);)
+        {
+            if (line.find_first_not_of(" \t") == std::string::npos)
+            {
+                paragraphs.emplace_back();
+                continue;
+            }
+            paragraphs.back() += (paragraphs.back().empty() ? "" : " ") + line;
+        }
+        for (size_t p = 0; p < paragraphs.size() && !found; ++p)
+        {
+            const std::string& text = paragraphs[p];
+            const std::string link = "](figures/";
+            const size_t at = text.rfind("![", 0) == 0 ? text.find(link) : std::string::npos;
+            if (at == std::string::npos)
+            {
+                continue;
+            }
+            const size_t begin = at + link.size();
+            const std::string stem = text.substr(begin, text.find(".png", begin) - begin);
+            if (!discCast(stem))
+            {
+                continue;
+            }
+            found = true;
+            std::string around = p > 0 ? paragraphs[p - 1] : "";
+            for (size_t q = p + 1; q < paragraphs.size() && paragraphs[q].rfind('#', 0) != 0 &&
+                                   paragraphs[q].rfind("![", 0) != 0;
+                 ++q)
+            {
+                around += " " + paragraphs[q];
+            }
+            INFO(lessons[l].filename().string() << ", " << stem);
+            for (const char* words : {"ring", "filled", "dashed", "pale lines", "path", "normal"})
+            {
+                INFO("the words \"" << words << "\"");
+                CHECK(around.find(words) != std::string::npos);
+            }
+        }
+    }
+    CHECK(found);
+}
