@@ -36,6 +36,9 @@ struct StepMemory
     std::vector<SoftBody> softBodies;              ///< SolveSoft: each body's velocities and move in the sub-steps
     std::vector<SoftContact> softContacts;         ///< SolveSoft: the contacts in the passes' order
     std::vector<int> softAwake;                    ///< SolveSoft: the awake dynamic bodies
+    std::vector<int> softLevels;                   ///< SolveSoft: each body's next free colour, then where each colour starts
+    std::vector<int> softKeys;                     ///< SolveSoft: each contact's colour
+    std::vector<int> softOrder;                    ///< SolveSoft: the contacts by colour
     std::vector<SolverBody> softVelocities;        ///< SolveSoft: the velocities the sub-steps leave
     std::vector<int> bouncing;                     ///< SolveSoft: the contacts with a bouncing point
     std::vector<std::vector<int>> near;            ///< Move's time of impact: the bodies each body is swept with

@@ -142,12 +142,60 @@ void Stepper::SolveSoft()
     const int subSteps = std::max(1, settings.subSteps);
     const double h = dt / subSteps;
     const double invH = 1.0 / h;
-    // As in the velocity passes: top down, so that a pile's weight reaches its lower rows within one pass. Each
-    // contact is copied once into the small record the passes read, stored in that order so that each pass reads
-    // them in sequence; the solver contacts stay in the order found.
+    // As in the velocity passes: top down, so that a pile's weight reaches its lower rows within one pass.
     OrderTopDown();
     const int m = static_cast<int>(solverContacts.size());
+    // The colours (after Box2D v3's graph colouring, here by levels): each contact, taken top down, gets the first
+    // colour after those of the contacts before it that share a body the passes move, the largest of its moving
+    // bodies' next free colours. Two contacts that share such a body are then visited in the top-down order (the
+    // higher has the lower colour), and two that do not commute: visiting the colours in turn gives the same bits
+    // as visiting the contacts top down one at a time, and a colour's contacts may be visited side by side. Static
+    // and sleeping bodies do not count: with no inverse mass, a visit leaves their velocities as they are.
+    std::vector<int>& level = memory.softLevels;
+    level.assign(static_cast<size_t>(n), 0);
+    std::vector<int>& keys = memory.softKeys;
+    keys.resize(static_cast<size_t>(m));
+    int colours = 0;
+    for (int k = 0; k < m; ++k)
+    {
+        const SolverContact& c = solverContacts[static_cast<size_t>(solveOrder[static_cast<size_t>(k)])];
+        const bool movesA = IsAwakeDynamic(bodies[c.a]);
+        const bool movesB = IsAwakeDynamic(bodies[c.b]);
+        const int colour = std::max(movesA ? level[static_cast<size_t>(c.a)] : 0,
+                                    movesB ? level[static_cast<size_t>(c.b)] : 0);
+        if (movesA)
+        {
+            level[static_cast<size_t>(c.a)] = colour + 1;
+        }
+        if (movesB)
+        {
+            level[static_cast<size_t>(c.b)] = colour + 1;
+        }
+        keys[static_cast<size_t>(k)] = colour;
+        colours = std::max(colours, colour + 1);
+    }
+    // The contacts by colour, stable (a counting sort), and the passes' order with them.
+    std::vector<int>& starts = level;
+    starts.assign(static_cast<size_t>(colours + 1), 0);
+    for (const int key : keys)
+    {
+        ++starts[static_cast<size_t>(key) + 1];
+    }
+    for (size_t key = 1; key < starts.size(); ++key)
+    {
+        starts[key] += starts[key - 1];
+    }
+    std::vector<int>& order = memory.softOrder;
+    order.resize(static_cast<size_t>(m));
     foundOrder.resize(static_cast<size_t>(m));
+    for (int k = 0; k < m; ++k)
+    {
+        const size_t key = static_cast<size_t>(keys[static_cast<size_t>(k)]);
+        order[static_cast<size_t>(starts[key]++)] = solveOrder[static_cast<size_t>(k)];
+    }
+    solveOrder.swap(order);
+    // Each contact is copied once into the small record the passes read, stored in that order so that each pass
+    // reads them in sequence; the solver contacts stay in the order found.
     std::vector<SoftContact>& contacts = memory.softContacts;
     contacts.resize(static_cast<size_t>(m));
     for (int k = 0; k < m; ++k)
@@ -183,6 +231,7 @@ void Stepper::SolveSoft()
     const Softness stiff = hertz > 0.0 ? MakeSoftness(2.0 * hertz, settings.contactDampingRatio, h) : Softness{};
     NullSolveRecorder quiet;
     TraceSolveRecorder loud{world.trace};
+    // A pass visits the contacts colour by colour (the order of the records).
     const auto pass = [&](auto useBias, int number) {
         constexpr bool kUseBias = decltype(useBias)::value;
         for (SoftContact& c : contacts)
