@@ -39,8 +39,9 @@ struct SoftPoint
 };
 
 /// A contact as the soft step's passes read it: what they need of a SolverContact and of its bodies' masses, made
-/// once a step (MakeSoftContact) and stored in the passes' order (the solver contact it came from, which gets its
-/// impulses back after the step, is the Stepper's solveOrder at the same place).
+/// once a step (MakeSoftContact) and stored top down (the solver contact it came from, which gets its impulses back
+/// after the step, is the Stepper's solveOrder at the same place). The passes read it packed in a SoftBatch with
+/// others of its colour (soft_lanes.h), or as it is when the step trace records it.
 struct SoftContact
 {
     int a = -1;                     ///< first body

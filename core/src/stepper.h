@@ -3,6 +3,7 @@
 #pragma once
 
 #include "contact_solver.h"
+#include "soft_lanes.h"
 #include "soft_solver.h"
 
 #include <satviz/world.h>
@@ -34,11 +35,15 @@ struct StepMemory
     std::vector<std::pair<int, int>> candidates;   ///< FindContacts: the broadphase's pairs
     std::vector<Aabb> boxes;                       ///< FindContacts: the bodies' boxes
     std::vector<SoftBody> softBodies;              ///< SolveSoft: each body's velocities and move in the sub-steps
-    std::vector<SoftContact> softContacts;         ///< SolveSoft: the contacts in the passes' order
+    std::vector<SoftContact> softContacts;         ///< SolveSoft: the contacts, top down
     std::vector<int> softAwake;                    ///< SolveSoft: the awake dynamic bodies
-    std::vector<int> softLevels;                   ///< SolveSoft: each body's next free colour, then where each colour starts
-    std::vector<int> softKeys;                     ///< SolveSoft: each contact's colour
-    std::vector<int> softOrder;                    ///< SolveSoft: the contacts by colour
+    std::vector<uint8_t> softMoves;                ///< SolveSoft: whether each body is awake and dynamic
+    std::vector<SoftBatch> softBatches;            ///< SolveSoft: the untraced contacts, four side by side
+    std::vector<SoftColour> softColours;           ///< SolveSoft: each colour's batches and traced contacts
+    std::vector<int> softSingle;                   ///< SolveSoft: the contacts visited one at a time, by colour
+    std::vector<int> softLevels;                   ///< SolveSoft: each body's next colour, then each group's start
+    std::vector<int> softKeys;                     ///< SolveSoft: each contact's colour and kind
+    std::vector<int> softOrder;                    ///< SolveSoft: the contacts by colour and kind
     std::vector<SolverBody> softVelocities;        ///< SolveSoft: the velocities the sub-steps leave
     std::vector<int> bouncing;                     ///< SolveSoft: the contacts with a bouncing point
     std::vector<std::vector<int>> near;            ///< Move's time of impact: the bodies each body is swept with

@@ -2,6 +2,7 @@
 // satviz: the soft step (WorldSettings::softStep): sub-steps of soft contacts in place of the velocity passes, the
 // restitution's push-only passes and the position passes.
 
+#include "sat/cpu_dispatch.h"
 #include "stepper.h"
 #include "world_lookup.h"
 
@@ -28,6 +29,9 @@ Rot TurnBy(Rot q, double angle)
 
 // Passes of the restitution over the bouncing contacts: enough for a few contacts that land together to agree.
 constexpr int kRestitutionPasses = 4;
+
+// The groups of contacts within a colour: SoftKind's, then the traced contacts.
+constexpr int kKinds = 4;
 
 bool Fixed(const SolverBody& s)
 {
@@ -145,57 +149,33 @@ void Stepper::SolveSoft()
     // As in the velocity passes: top down, so that a pile's weight reaches its lower rows within one pass.
     OrderTopDown();
     const int m = static_cast<int>(solverContacts.size());
-    // The colours (after Box2D v3's graph colouring, here by levels): each contact, taken top down, gets the first
-    // colour after those of the contacts before it that share a body the passes move, the largest of its moving
-    // bodies' next free colours. Two contacts that share such a body are then visited in the top-down order (the
-    // higher has the lower colour), and two that do not commute: visiting the colours in turn gives the same bits
-    // as visiting the contacts top down one at a time, and a colour's contacts may be visited side by side. Static
-    // and sleeping bodies do not count: with no inverse mass, a visit leaves their velocities as they are.
-    std::vector<int>& level = memory.softLevels;
-    level.assign(static_cast<size_t>(n), 0);
-    std::vector<int>& keys = memory.softKeys;
-    keys.resize(static_cast<size_t>(m));
-    int colours = 0;
-    for (int k = 0; k < m; ++k)
+    // Two records past the bodies': a sink the lanes write the velocities of the bodies the passes do not move to
+    // (never read), and a body at rest with no mass that the batches' padding lanes read.
+    const int sink = n;
+    const int rest = n + 1;
+    std::vector<SoftBody>& states = memory.softBodies;
+    states.assign(static_cast<size_t>(n) + 2, SoftBody{});
+    std::vector<int>& awake = memory.softAwake;
+    awake.clear();
+    // Whether the passes move each body, read from the bodies once, in order (a body is read again for each of its
+    // contacts below).
+    std::vector<uint8_t>& moves = memory.softMoves;
+    moves.resize(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i)
     {
-        const SolverContact& c = solverContacts[static_cast<size_t>(solveOrder[static_cast<size_t>(k)])];
-        const bool movesA = IsAwakeDynamic(bodies[c.a]);
-        const bool movesB = IsAwakeDynamic(bodies[c.b]);
-        const int colour = std::max(movesA ? level[static_cast<size_t>(c.a)] : 0,
-                                    movesB ? level[static_cast<size_t>(c.b)] : 0);
-        if (movesA)
+        states[static_cast<size_t>(i)].v = solverBodies[i].v;
+        states[static_cast<size_t>(i)].w = solverBodies[i].w;
+        moves[static_cast<size_t>(i)] = IsAwakeDynamic(bodies[i]);
+        if (moves[static_cast<size_t>(i)] != 0)
         {
-            level[static_cast<size_t>(c.a)] = colour + 1;
+            // A body whose turn moves no point of its outline (a circle about its centre) keeps its anchors
+            // unturned (the normal between two circles joins their centres, whatever they turn): stored as -1 - i.
+            awake.push_back(bodies[i].turnRadius > 0.0 ? i : -1 - i);
         }
-        if (movesB)
-        {
-            level[static_cast<size_t>(c.b)] = colour + 1;
-        }
-        keys[static_cast<size_t>(k)] = colour;
-        colours = std::max(colours, colour + 1);
     }
-    // The contacts by colour, stable (a counting sort), and the passes' order with them.
-    std::vector<int>& starts = level;
-    starts.assign(static_cast<size_t>(colours + 1), 0);
-    for (const int key : keys)
-    {
-        ++starts[static_cast<size_t>(key) + 1];
-    }
-    for (size_t key = 1; key < starts.size(); ++key)
-    {
-        starts[key] += starts[key - 1];
-    }
-    std::vector<int>& order = memory.softOrder;
-    order.resize(static_cast<size_t>(m));
+    // Each contact is copied once into the small record the passes read, in the top-down order; the solver contacts
+    // stay in the order found.
     foundOrder.resize(static_cast<size_t>(m));
-    for (int k = 0; k < m; ++k)
-    {
-        const size_t key = static_cast<size_t>(keys[static_cast<size_t>(k)]);
-        order[static_cast<size_t>(starts[key]++)] = solveOrder[static_cast<size_t>(k)];
-    }
-    solveOrder.swap(order);
-    // Each contact is copied once into the small record the passes read, stored in that order so that each pass
-    // reads them in sequence; the solver contacts stay in the order found.
     std::vector<SoftContact>& contacts = memory.softContacts;
     contacts.resize(static_cast<size_t>(m));
     for (int k = 0; k < m; ++k)
@@ -208,20 +188,118 @@ void Stepper::SolveSoft()
     const auto solvedAt = [&](int k) -> SolverContact& {
         return solverContacts[static_cast<size_t>(solveOrder[static_cast<size_t>(k)])];
     };
-    std::vector<SoftBody>& states = memory.softBodies;
-    states.assign(static_cast<size_t>(n), SoftBody{});
-    std::vector<int>& awake = memory.softAwake;
-    awake.clear();
-    for (int i = 0; i < n; ++i)
+    // The colours (after Box2D v3's graph colouring, here by levels): each contact, taken top down, gets the first
+    // colour after those of the contacts before it that share a body the passes move, the largest of its moving
+    // bodies' next free colours. Two contacts that share such a body are then visited in the top-down order (the
+    // higher has the lower colour), and two that do not commute: visiting the colours in turn gives the same bits
+    // as visiting the contacts top down one at a time. Static and sleeping bodies do not count: the lanes read them
+    // and never write them, and a visit of one contact leaves their velocities as they are (they have no inverse
+    // mass). Without wide vectors (AVX2) there is one colour, whose contacts are visited one at a time, top down:
+    // lanes in the baseline's instructions (SSE2, two doubles a register) take more instructions than that.
+    const bool wide = HasWideVectors();
+    std::vector<int>& level = memory.softLevels;
+    level.assign(static_cast<size_t>(n), 0);
+    std::vector<int>& keys = memory.softKeys;
+    keys.resize(static_cast<size_t>(m));
+    int colours = 0;
+    for (int k = 0; k < m; ++k)
     {
-        states[static_cast<size_t>(i)].v = solverBodies[i].v;
-        states[static_cast<size_t>(i)].w = solverBodies[i].w;
-        if (IsAwakeDynamic(bodies[i]))
+        const SoftContact& c = contacts[static_cast<size_t>(k)];
+        const bool movesA = wide && moves[static_cast<size_t>(c.a)] != 0;
+        const bool movesB = wide && moves[static_cast<size_t>(c.b)] != 0;
+        const int colour =
+            std::max(movesA ? level[static_cast<size_t>(c.a)] : 0, movesB ? level[static_cast<size_t>(c.b)] : 0);
+        if (movesA)
         {
-            // A body whose turn moves no point of its outline (a circle about its centre) keeps its anchors
-            // unturned (the normal between two circles joins their centres, whatever they turn): stored as -1 - i.
-            awake.push_back(bodies[i].turnRadius > 0.0 ? i : -1 - i);
+            level[static_cast<size_t>(c.a)] = colour + 1;
         }
+        if (movesB)
+        {
+            level[static_cast<size_t>(c.b)] = colour + 1;
+        }
+        // Within a colour the contacts go by kind: the batches' lanes all do the same, and the traced ones are
+        // visited one at a time (their record is the step trace's).
+        const SoftKind kind = c.count == 1 ? SoftKind::OnePoint : c.block ? SoftKind::Block : SoftKind::TwoPoints;
+        keys[static_cast<size_t>(k)] = kKinds * colour + (c.traced || !wide ? kKinds - 1 : static_cast<int>(kind));
+        colours = std::max(colours, colour + 1);
+    }
+    // The contacts by colour and kind (a counting sort; within a group, top down).
+    std::vector<int>& starts = level;
+    starts.assign(static_cast<size_t>(kKinds * colours + 1), 0);
+    for (const int key : keys)
+    {
+        ++starts[static_cast<size_t>(key) + 1];
+    }
+    for (size_t key = 1; key < starts.size(); ++key)
+    {
+        starts[key] += starts[key - 1];
+    }
+    std::vector<int>& order = memory.softOrder;
+    order.resize(static_cast<size_t>(m));
+    for (int k = 0; k < m; ++k)
+    {
+        order[static_cast<size_t>(starts[static_cast<size_t>(keys[static_cast<size_t>(k)])]++)] = k;
+    }
+    // Each start moved to the next key's: moved back.
+    for (size_t key = starts.size() - 1; key > 0; --key)
+    {
+        starts[key] = starts[key - 1];
+    }
+    starts[0] = 0;
+    // Each colour's untraced contacts, kSoftLanes to a batch, and its traced ones, visited one at a time.
+    // The list only grows: a batch is filled whole before it is read, so the ones kept from earlier steps need not
+    // be cleared (a new one is, by the list).
+    std::vector<SoftBatch>& batches = memory.softBatches;
+    int batchCount = 0;
+    std::vector<SoftColour>& colourList = memory.softColours;
+    colourList.assign(static_cast<size_t>(colours), SoftColour{});
+    std::vector<int>& single = memory.softSingle;
+    single.clear();
+    SoftContact padding{};
+    padding.count = 2;
+    padding.points[0].separation = 1.0; // an open gap: the padding lanes are skipped like idle contacts
+    padding.points[1].separation = 1.0;
+    for (int colour = 0; colour < colours; ++colour)
+    {
+        SoftColour& list = colourList[static_cast<size_t>(colour)];
+        list.batchBegin = batchCount;
+        list.singleBegin = static_cast<int>(single.size());
+        for (int kind = 0; kind < kKinds; ++kind)
+        {
+            const int begin = starts[static_cast<size_t>(kKinds * colour + kind)];
+            const int end = starts[static_cast<size_t>(kKinds * colour + kind) + 1];
+            const bool lanes = kind < kKinds - 1;
+            for (int j = begin; j < end && !lanes; ++j)
+            {
+                single.push_back(order[static_cast<size_t>(j)]);
+            }
+            for (int j = begin; j < end && lanes; j += kSoftLanes)
+            {
+                if (batchCount == static_cast<int>(batches.size()))
+                {
+                    batches.emplace_back();
+                }
+                SoftBatch& batch = batches[static_cast<size_t>(batchCount++)];
+                batch.lanes = std::min(kSoftLanes, end - j);
+                batch.kind = static_cast<SoftKind>(kind);
+                for (int lane = 0; lane < kSoftLanes; ++lane)
+                {
+                    if (lane >= batch.lanes)
+                    {
+                        PackSoftLane(batch, lane, padding, rest, rest, sink, sink);
+                        batch.contact[lane] = -1;
+                        continue;
+                    }
+                    const int k = order[static_cast<size_t>(j + lane)];
+                    const SoftContact& c = contacts[static_cast<size_t>(k)];
+                    PackSoftLane(batch, lane, c, c.a, c.b, moves[static_cast<size_t>(c.a)] != 0 ? c.a : sink,
+                                 moves[static_cast<size_t>(c.b)] != 0 ? c.b : sink);
+                    batch.contact[lane] = k;
+                }
+            }
+        }
+        list.batchEnd = batchCount;
+        list.singleEnd = static_cast<int>(single.size());
     }
     // A spring faster than a quarter of the sub-step rate is not resolved by the sub-step: it would only add
     // stiffness that the implicit step turns into damping. Against a body that cannot give way (static, asleep) the
@@ -229,26 +307,52 @@ void Stepper::SolveSoft()
     const double hertz = std::min(settings.contactHertz, 0.25 * invH);
     const Softness soft = hertz > 0.0 ? MakeSoftness(hertz, settings.contactDampingRatio, h) : Softness{};
     const Softness stiff = hertz > 0.0 ? MakeSoftness(2.0 * hertz, settings.contactDampingRatio, h) : Softness{};
+    const SoftPassConstants constants{soft, stiff, invH, settings.maxPushSpeed};
     NullSolveRecorder quiet;
     TraceSolveRecorder loud{world.trace};
-    // A pass visits the contacts colour by colour (the order of the records).
-    const auto pass = [&](auto useBias, int number) {
-        constexpr bool kUseBias = decltype(useBias)::value;
-        for (SoftContact& c : contacts)
+    // One contact's visit (SolveSoftContact and WarmStart, whose operations the lanes repeat); `which` is a
+    // std::integral_constant of SoftPass, so that each pass's loop is compiled for its visit alone.
+    const auto visit = [&](auto which, int number, SoftContact& c, auto& recorder) {
+        SoftBody& a = states[static_cast<size_t>(c.a)];
+        SoftBody& b = states[static_cast<size_t>(c.b)];
+        const Softness& softness = c.stiff ? stiff : soft;
+        if constexpr (decltype(which)::value == SoftPass::WarmStart)
         {
-            SoftBody& a = states[static_cast<size_t>(c.a)];
-            SoftBody& b = states[static_cast<size_t>(c.b)];
-            const Softness& softness = c.stiff ? stiff : soft;
-            if (c.traced)
+            WarmStart(c, a, b);
+        }
+        else
+        {
+            constexpr bool kUseBias = decltype(which)::value == SoftPass::Solve;
+            SolveSoftContact<kUseBias>(c, a, b, softness, invH, settings.maxPushSpeed, number, recorder);
+        }
+    };
+    // A pass: the colours in turn, each colour's batches side by side in lanes, then its contacts visited one at a
+    // time.
+    const auto pass = [&](auto which, int number) {
+        for (const SoftColour& list : colourList)
+        {
+            if (list.batchBegin < list.batchEnd)
             {
-                SolveSoftContact<kUseBias>(c, a, b, softness, invH, settings.maxPushSpeed, number, loud);
+                SoftPassOverBatches(decltype(which)::value, batches.data() + list.batchBegin,
+                                    batches.data() + list.batchEnd, states.data(), constants);
             }
-            else
+            for (int t = list.singleBegin; t < list.singleEnd; ++t)
             {
-                SolveSoftContact<kUseBias>(c, a, b, softness, invH, settings.maxPushSpeed, number, quiet);
+                SoftContact& c = contacts[static_cast<size_t>(single[static_cast<size_t>(t)])];
+                if (c.traced)
+                {
+                    visit(which, number, c, loud);
+                }
+                else
+                {
+                    visit(which, number, c, quiet);
+                }
             }
         }
     };
+    using WarmStartPass = std::integral_constant<SoftPass, SoftPass::WarmStart>;
+    using SolvePass = std::integral_constant<SoftPass, SoftPass::Solve>;
+    using RelaxPass = std::integral_constant<SoftPass, SoftPass::Relax>;
     for (int sub = 0; sub < subSteps; ++sub)
     {
         for (const int code : awake)
@@ -256,11 +360,8 @@ void Stepper::SolveSoft()
             SoftBody& s = states[static_cast<size_t>(code >= 0 ? code : -1 - code)];
             s.v = s.v + h * settings.gravity;
         }
-        for (SoftContact& c : contacts)
-        {
-            WarmStart(c, states[static_cast<size_t>(c.a)], states[static_cast<size_t>(c.b)]);
-        }
-        pass(std::true_type{}, 2 * sub);
+        pass(WarmStartPass{}, 2 * sub);
+        pass(SolvePass{}, 2 * sub);
         for (const int code : awake)
         {
             SoftBody& s = states[static_cast<size_t>(code >= 0 ? code : -1 - code)];
@@ -271,7 +372,15 @@ void Stepper::SolveSoft()
                 s.rotation = TurnBy(s.rotation, h * s.w);
             }
         }
-        pass(std::false_type{}, 2 * sub + 1);
+        pass(RelaxPass{}, 2 * sub + 1);
+    }
+    for (int i = 0; i < batchCount; ++i)
+    {
+        const SoftBatch& batch = batches[static_cast<size_t>(i)];
+        for (int lane = 0; lane < batch.lanes; ++lane)
+        {
+            UnpackSoftLane(batch, lane, contacts[static_cast<size_t>(batch.contact[lane])]);
+        }
     }
     // Restitution after the sub-steps: the bounce speed is the target of the velocity the step ends with. A few
     // passes over the bouncing contacts alone, so that contacts that land together (a plank on two supports) share

@@ -24,6 +24,8 @@ struct Lanes8
 
     /// Every lane x.
     [[gnu::target("avx512f")]] static Lanes8 Fill(double x) { return {_mm512_set1_pd(x)}; }
+    /// Lanes p[0] to p[7] (p 64-byte aligned).
+    [[gnu::target("avx512f")]] static Lanes8 Load(const double* p) { return {_mm512_load_pd(p)}; }
     /// Eight points stored as x, y pairs from p (any alignment): their x in xs, their y in ys.
     [[gnu::target("avx512f")]] static void LoadPoints(const double* p, Lanes8& xs, Lanes8& ys)
     {
@@ -57,8 +59,12 @@ struct Lanes8
     struct Mask
     {
         __mmask8 m; ///< the lanes
+        /// Every lane c.
+        [[gnu::target("avx512f")]] static Mask Fill(bool c) { return {static_cast<__mmask8>(c ? 0xFF : 0)}; }
         /// The lanes as eight bits.
         [[gnu::target("avx512f")]] int Bits() const { return static_cast<int>(m); }
+        /// Every lane set.
+        [[gnu::target("avx512f")]] bool All() const { return m == 0xFF; }
         /// The lanes set in both.
         [[gnu::target("avx512f")]] friend Mask operator&(Mask a, Mask b) { return {static_cast<__mmask8>(a.m & b.m)}; }
         /// The lanes set in either.
