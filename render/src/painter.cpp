@@ -1913,6 +1913,10 @@ class Painter
             DashedSegment(m_canvas, At(v), At(c), color, 2.0f, m_bounds);
             m_canvas.FillCircle(At(v), 4.0f, color);
             m_labels.Reserve(Disc(At(v), 4.0f));
+            // The line ends at the circle's centre: a name over it (the ball's, centred in a small ball) hides
+            // where the axis comes from.
+            m_labels.Reserve(Disc(At(c), 3.0f));
+            m_labels.ReserveFaintLine(At(v), At(c), 2.0f);
             m_used.push_back(LegendMark::VertexAxis);
         }
         else if (ref.kind == AxisKind::CenterToCenter)
@@ -1920,6 +1924,9 @@ class Painter
             const Vec2 a = TransformPoint(m_bodyA.Xf(), m_bodyA.shape.circle.center);
             const Vec2 b = TransformPoint(m_bodyB.Xf(), m_bodyB.shape.circle.center);
             DashedSegment(m_canvas, At(a), At(b), color, 2.0f, m_bounds);
+            m_labels.Reserve(Disc(At(a), 3.0f));
+            m_labels.Reserve(Disc(At(b), 3.0f));
+            m_labels.ReserveFaintLine(At(a), At(b), 2.0f);
             m_used.push_back(LegendMark::VertexAxis);
         }
     }

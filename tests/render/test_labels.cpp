@@ -3410,6 +3410,60 @@ std::vector<std::string> DiscCastMarksAstray(const RecordingCanvas& canvas)
     return problems;
 }
 
+// A label over the centre of a circle of the pair where a dashed axis line ends (the axis from a vertex, or from
+// the other centre): it hides where the axis comes from (l07_near_miss's "ball", centred in the small ball).
+std::vector<std::string> LabelsOverAxisCentres(const RecordingCanvas& canvas, const Scene& scene,
+                                               const PairStudy& study, const View& view)
+{
+    std::vector<std::string> problems;
+    RecordingCanvas measure;
+    for (const int index : {study.bodyA, study.bodyB})
+    {
+        const Body& body = scene.bodies[static_cast<size_t>(index)];
+        if (body.shape.type != ShapeType::Circle)
+        {
+            continue;
+        }
+        const ScreenPoint centre = ToScreen(view, TransformPoint(body.Xf(), body.shape.circle.center));
+        // A dash of the line ends a few pixels short of the centre, on a line through it.
+        bool ends = false;
+        for (const DrawCommand* c : canvas.InGroup("projection"))
+        {
+            if (c->kind != DrawCommand::Kind::Segment)
+            {
+                continue;
+            }
+            const ScreenPoint p = c->points[0];
+            const ScreenPoint q = c->points[1];
+            const float length = std::hypot(q.x - p.x, q.y - p.y);
+            const float off = length > 0.0f
+                                  ? std::abs((q.x - p.x) * (centre.y - p.y) - (q.y - p.y) * (centre.x - p.x)) / length
+                                  : INFINITY;
+            ends = ends || (off < 1.5f && std::min(std::hypot(p.x - centre.x, p.y - centre.y),
+                                                   std::hypot(q.x - centre.x, q.y - centre.y)) < 8.0f);
+        }
+        if (!ends)
+        {
+            continue;
+        }
+        for (const DrawCommand* c : canvas.InGroup("labels"))
+        {
+            if (c->kind != DrawCommand::Kind::Text)
+            {
+                continue;
+            }
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            // The centre's dot, 2.5 pixels across its middle, and the last dash's end beside it.
+            if (centre.x >= c->points[0].x - 3.0f && centre.x <= c->points[0].x + size.x + 3.0f &&
+                centre.y >= c->points[0].y - 3.0f && centre.y <= c->points[0].y + size.y + 3.0f)
+            {
+                problems.push_back(Describe(*c) + " covers " + body.name + "'s centre, where the axis line ends");
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -3488,6 +3542,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         Append(problems, GhostLeadersAcrossBodies(canvas, scene, setup.study, setup.figure.view));
         Append(problems, EdgeNamesInGhosts(canvas));
         Append(problems, VelocityNamedPastBody(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, LabelsOverAxisCentres(canvas, scene, setup.study, setup.figure.view));
     }
     return problems;
 }
