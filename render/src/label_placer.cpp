@@ -403,7 +403,7 @@ bool LabelPlacer::Place(ScreenPoint anchor, std::string_view text, TextStyle sty
     {
         return false;
     }
-    m_labels.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}, false, {}, {}, {}, -1, false, {}, {}, {}});
+    m_labels.push_back({anchor, std::string(text), style, color, dx, dy, distance, rank, {}, false, false, {}, false, {}, {}, {}, -1, false, {}, {}, {}, {}});
     return true;
 }
 
