@@ -1232,10 +1232,12 @@ class Painter
                 continue;
             }
             // Where the shape would be at the end of the step; after a hit the ghost at impact says more.
+            std::vector<ScreenPoint> endOutline;
             if (m_study.sweepResult.status != SweepStatus::Hit)
             {
                 const Transform end = BodyTransformAt(body, 1.0);
                 const std::vector<ScreenPoint> outline = ShapeOutline(m_view, body.shape, end);
+                endOutline = outline;
                 DashedOutline(m_canvas, outline, WithAlpha(ColorOf(s), 0.55f), 1.2f, m_bounds);
                 // A face's name beside it would read as this outline's (the floor's e2 by the box's end).
                 m_ghostOutlines.push_back(outline);
@@ -1380,6 +1382,12 @@ class Painter
                 if (into)
                 {
                     m_labels.PreferOutOf(otherOutline);
+                }
+                // Its head is the centre of its dashed outline at the end of the step: a name beside it, inside
+                // that outline, reads as the outline's (fly_by's "v" in the dashed box).
+                if (!endOutline.empty())
+                {
+                    m_labels.PreferOutOf(endOutline);
                 }
                 m_labels.AlsoBeside(clear.empty() ? std::move(shaft) : std::move(clear));
             }

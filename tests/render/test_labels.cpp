@@ -3464,6 +3464,49 @@ std::vector<std::string> LabelsOverAxisCentres(const RecordingCanvas& canvas, co
     return problems;
 }
 
+// A velocity's "v" inside its own body's dashed outline where the step ends, drawn when the sweep finds no hit: the
+// arrow's head is that outline's centre, and a name beside it reads as the outline's (fly_by's "v" in the dashed
+// box, sliding_past's, l17_corner_after's in the dashed ball).
+std::vector<std::string> VelocityInOwnEnd(const RecordingCanvas& canvas, const Scene& scene, const PairStudy& study,
+                                          const View& view)
+{
+    std::vector<std::string> problems;
+    const std::vector<const DrawCommand*> swept = canvas.InGroup("swept");
+    const bool dashedEnd = std::any_of(swept.begin(), swept.end(), [](const DrawCommand* d) {
+        return d->kind == DrawCommand::Kind::Segment && d->thickness > 1.1f && d->thickness < 1.3f;
+    });
+    if (!dashedEnd)
+    {
+        return problems;
+    }
+    RecordingCanvas measure;
+    const Color inks[2] = {palette::kShapeA, palette::kShapeBInk};
+    const int indices[2] = {study.bodyA, study.bodyB};
+    for (int k = 0; k < 2; ++k)
+    {
+        Body end = scene.bodies[static_cast<size_t>(indices[k])];
+        if (end.velocity == Vec2{})
+        {
+            continue;
+        }
+        end.position = end.position + end.velocity;
+        for (const DrawCommand* c : canvas.InGroup("labels"))
+        {
+            if (c->kind != DrawCommand::Kind::Text || c->text != "v" || (c->color >> 8) != (inks[k] >> 8))
+            {
+                continue;
+            }
+            const ScreenPoint size = measure.MeasureText(c->text, c->style);
+            const ScreenPoint middle{c->points[0].x + 0.5f * size.x, c->points[0].y + 0.5f * size.y};
+            if (InsideBody(end, ToWorld(view, middle)))
+            {
+                problems.push_back(Describe(*c) + " lies inside " + end.name + "'s dashed outline where the step ends");
+            }
+        }
+    }
+    return problems;
+}
+
 struct Drawn
 {
     std::string name;
@@ -3543,6 +3586,7 @@ std::vector<std::string> FigureProblems(const RecordingCanvas& canvas, const Sce
         Append(problems, EdgeNamesInGhosts(canvas));
         Append(problems, VelocityNamedPastBody(canvas, scene, setup.study, setup.figure.view));
         Append(problems, LabelsOverAxisCentres(canvas, scene, setup.study, setup.figure.view));
+        Append(problems, VelocityInOwnEnd(canvas, scene, setup.study, setup.figure.view));
     }
     return problems;
 }
