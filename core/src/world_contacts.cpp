@@ -5,6 +5,7 @@
 #include "stepper.h"
 #include "parallel_for.h"
 #include "time_of_impact.h"
+#include "widen_within.h"
 #include "world_lookup.h"
 
 #include <satviz/collide.h>
@@ -294,8 +295,19 @@ void Stepper::FindContacts()
             }
             // The pair's speculative margin: how far the two can close within the step.
             const double margin = bodyReach[static_cast<size_t>(i)] + bodyReach[static_cast<size_t>(j)];
-            ConcaveManifold cm = detail::CollidePair(a, xfs[i], b, xfs[j], margin);
-            const Manifold& m = cm.manifold;
+            // The manifold is made where it stays, not copied out of a wrapper: a copy of a structure just written
+            // field by field stalls on the stores it reads back. A convex pair collides once for both margins.
+            const bool concave = AnyConcave(a, b);
+            int pieceA = -1;
+            int pieceB = -1;
+            const auto concaveWithin = [&](double within) -> Manifold {
+                const ConcaveManifold cm = detail::CollidePair(a, xfs[i], b, xfs[j], within);
+                pieceA = cm.pieceA;
+                pieceB = cm.pieceB;
+                return cm.manifold;
+            };
+            Manifold m = concave ? concaveWithin(margin) : Collide(a.shape, xfs[i], b.shape, xfs[j]);
+            const bool widened = !concave && margin > 0.0 && WidenWithin(m, a.shape, xfs[i], b.shape, xfs[j], margin);
             bool guard = false;
             if (m.contactCount == 0)
             {
@@ -306,7 +318,19 @@ void Stepper::FindContacts()
                 // and takes it off again, can round its gap of a few ulps to a touch.
                 if (correctionReach > 0.0 && (a.type == BodyType::Static) != (b.type == BodyType::Static))
                 {
-                    cm = detail::CollidePair(a, xfs[i], b, xfs[j], margin + correctionReach);
+                    if (concave)
+                    {
+                        m = concaveWithin(margin + correctionReach);
+                    }
+                    else
+                    {
+                        // Collide's manifold is still in m unless the first margin replaced it.
+                        if (widened)
+                        {
+                            m = Collide(a.shape, xfs[i], b.shape, xfs[j]);
+                        }
+                        WidenWithin(m, a.shape, xfs[i], b.shape, xfs[j], margin + correctionReach);
+                    }
                     guard = m.contactCount > 0;
                 }
                 if (!guard)
@@ -314,7 +338,7 @@ void Stepper::FindContacts()
                     continue;
                 }
             }
-            WorldContact c;
+            WorldContact& c = out.emplace_back();
             // A pair still apart that the sweep takes gets no speculative contact, only a guard (see LeftToSweep).
             c.guard = guard || (!m.overlap && LeftToSweep(i, j));
             touchingOf[static_cast<size_t>(piece)] += m.overlap && !guard;
@@ -333,7 +357,7 @@ void Stepper::FindContacts()
                 WorldContactPoint& p = c.points[k];
                 p.point = m.contacts[k].point;
                 p.separation = m.contacts[k].separation;
-                p.key = FeatureKey(m, cm.pieceA, cm.pieceB, k);
+                p.key = FeatureKey(m, pieceA, pieceB, k);
                 if (old != nullptr && !c.guard)
                 {
                     bool matched = false;
@@ -366,7 +390,6 @@ void Stepper::FindContacts()
                     }
                 }
             }
-            out.push_back(c);
         }
     };
     ParallelForPieces(world.tasks, pairCount, pieces, collide);

@@ -2,6 +2,9 @@
 // satviz: the material of a body (bounce and friction) and how two materials combine at a contact.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 namespace satviz
 {
 
@@ -29,6 +32,15 @@ struct ContactMaterial
 
 /// The one rule of combination: the larger restitution (a bouncy ball bounces on a dead floor), the geometric
 /// mean of the frictions (ice against anything slides: a zero coefficient wins). Box2D combines the same way.
-ContactMaterial CombineMaterials(const Material& a, const Material& b);
+/// Inline: the world combines two materials for every contact it finds, and a call returns the result through
+/// memory that the caller then reads back whole, before the stores have landed.
+inline ContactMaterial CombineMaterials(const Material& a, const Material& b)
+{
+    ContactMaterial m;
+    m.restitution = std::max(a.restitution, b.restitution);
+    m.friction = std::sqrt(a.friction * b.friction);
+    m.staticFriction = std::sqrt(a.staticFriction * b.staticFriction);
+    return m;
+}
 
 } // namespace satviz
