@@ -245,7 +245,9 @@ void Stepper::PrepareContacts()
             {
                 continue;
             }
-            SolverContact c;
+            // Built in place in its list: a solver contact is several cache lines, not worth building aside and
+            // copying.
+            SolverContact& c = (wc.guard ? guardsOut : contactsOut).emplace_back();
             c.a = wc.a;
             c.b = wc.b;
             c.normal = wc.normal;
@@ -260,7 +262,6 @@ void Stepper::PrepareContacts()
             }
             if (wc.guard)
             {
-                guardsOut.push_back(c);
                 continue;
             }
             double approach[2] = {0.0, 0.0};
@@ -279,7 +280,6 @@ void Stepper::PrepareContacts()
             const double pull = std::max(0.0, -Dot(gravityB - gravityA, c.normal));
             detail::PrepareContact(c, solverBodies[c.a], solverBodies[c.b], approach, pull, dt,
                                    settings.restitutionThreshold);
-            contactsOut.push_back(c);
         }
     };
     ParallelForPieces(world.tasks, contactCount, pieces, prepare);
