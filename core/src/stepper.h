@@ -30,6 +30,7 @@ struct StepMemory
     std::vector<uint8_t> bullets;                  ///< see Stepper
     std::vector<double> bodyReach;                 ///< see Stepper
     std::vector<Rot> rotations;                    ///< see Stepper
+    std::vector<double> rotationAngles;            ///< Move: the angle of which each of rotations is the rotation
     std::vector<SolverContact> spareContacts;      ///< SortContacts: the contacts in their new order
     std::vector<WorldContact> previousContacts;    ///< FindContacts: the last step's contacts
     std::vector<std::pair<int, int>> candidates;   ///< FindContacts: the broadphase's pairs
@@ -81,13 +82,14 @@ struct Stepper
     std::vector<uint8_t>& bullets;      // per body: moves beyond its reach or turns fast (FindContacts)
     std::vector<double>& bodyReach;     // per body: how far FindContacts looked beyond its box
     std::vector<Rot>& rotations;        // per body: MakeRot of its angle after Move
+    std::vector<double>& rotationAngles; // per body: that angle, kept to the next step's FindContacts
 
     /// The step of `world` by `step` seconds, with the world's settings, in the world's working lists.
     Stepper(World& w, double step)
         : world(w), dt(step), settings(w.settings), memory(MemoryOf(w)), solverBodies(memory.solverBodies),
           solverContacts(memory.solverContacts), guards(memory.guards), solveOrder(memory.solveOrder),
           foundOrder(memory.foundOrder), energyBefore(memory.energyBefore), xfs(memory.xfs), centers(memory.centers),
-          hit(memory.hit), bullets(memory.bullets), bodyReach(memory.bodyReach), rotations(memory.rotations)
+          hit(memory.hit), bullets(memory.bullets), bodyReach(memory.bodyReach), rotations(memory.rotations), rotationAngles(memory.rotationAngles)
     {
     }
 

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace satviz::detail
 {
@@ -37,6 +38,15 @@ uint32_t FeatureKey(const Manifold& m, int pieceA, int pieceB, int slot)
     const uint32_t foldA = static_cast<uint32_t>(pieceA + 1) & 0x3fu;
     const uint32_t foldB = static_cast<uint32_t>(pieceB + 1) & 0x3fu;
     return FeatureKey(m, slot) ^ (foldA << 11 | foldB << 24);
+}
+
+// Whether x and y are the same double to the bit (+0 and -0 apart, whose sines differ in sign).
+bool SameBits(double x, double y)
+{
+    uint64_t a = 0, b = 0;
+    std::memcpy(&a, &x, sizeof a);
+    std::memcpy(&b, &y, sizeof b);
+    return a == b;
 }
 
 // Candidate pairs (or bodies) that one piece of parallel work takes at least: fewer cost more to hand to another
@@ -183,7 +193,11 @@ void Stepper::FindContacts()
         for (int i = begin; i < end; ++i)
         {
             const RigidBody& body = bodies[i];
-            xfs[i] = body.Xf();
+            // The rotation of the angle the last step's move left, if the body still has that angle (to the
+            // bit: the body may have been turned or replaced since), else a sine and a cosine.
+            const bool kept = static_cast<size_t>(i) < rotationAngles.size() &&
+                              SameBits(rotationAngles[static_cast<size_t>(i)], body.angle);
+            xfs[i] = {body.position, kept ? rotations[static_cast<size_t>(i)] : MakeRot(body.angle)};
             // How far each awake dynamic body can move within the step (its speed after gravity, and the turn of its
             // farthest point), at most speculativeReach outer radii: a body that moves farther is a bullet, and the
             // sweep finds its hits; none for a body turning more than speculativeTurn.

@@ -52,10 +52,12 @@ void Stepper::Move()
     stage.Run();
     hit.assign(static_cast<size_t>(n), 0);
     rotations.resize(static_cast<size_t>(n));
+    rotationAngles.resize(static_cast<size_t>(n));
     for (int i = 0; i < n; ++i)
     {
         hit[static_cast<size_t>(i)] = stage.TookHit(i) ? 1 : 0;
         rotations[static_cast<size_t>(i)] = stage.Rotation(i);
+        rotationAngles[static_cast<size_t>(i)] = bodies[i].angle;
     }
     if (settings.softStep)
     {
