@@ -32,6 +32,7 @@ struct StepMemory
     std::vector<Rot> rotations;                    ///< see Stepper
     std::vector<double> rotationAngles;            ///< Move: the angle of which each of rotations is the rotation
     std::vector<SolverContact> spareContacts;      ///< SortContacts: the contacts in their new order
+    std::vector<uint8_t> moving;                   ///< PrepareContacts: whether each body is awake and dynamic
     std::vector<WorldContact> previousContacts;    ///< FindContacts: the last step's contacts
     std::vector<std::pair<int, int>> candidates;   ///< FindContacts: the broadphase's pairs
     std::vector<Aabb> boxes;                       ///< FindContacts: the bodies' boxes

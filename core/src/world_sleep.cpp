@@ -29,25 +29,29 @@ void Stepper::Sleep()
     }
     else
     {
+        // Each body is read once, in order, into small arrays (a body is several cache lines): whether it is
+        // dynamic and awake, and how long it has rested.
         const double linear2 = settings.sleepLinearSpeed * settings.sleepLinearSpeed;
-        for (RigidBody& body : bodies)
-        {
-            if (!IsAwakeDynamic(body))
-            {
-                continue;
-            }
-            const bool resting = LengthSquared(body.velocity) <= linear2 &&
-                                 std::fabs(body.angularVelocity) <= settings.sleepAngularSpeed;
-            body.sleepTime = resting ? body.sleepTime + dt : 0.0;
-        }
         std::vector<int> parent(n);
+        std::vector<uint8_t> dynamic(n), awake(n);
+        std::vector<double> rest(n);
         for (int i = 0; i < n; ++i)
         {
+            RigidBody& body = bodies[i];
             parent[i] = i;
+            dynamic[i] = body.type == BodyType::Dynamic ? 1 : 0;
+            awake[i] = body.awake ? 1 : 0;
+            if (IsAwakeDynamic(body))
+            {
+                const bool resting = LengthSquared(body.velocity) <= linear2 &&
+                                     std::fabs(body.angularVelocity) <= settings.sleepAngularSpeed;
+                body.sleepTime = resting ? body.sleepTime + dt : 0.0;
+            }
+            rest[i] = body.sleepTime;
         }
         for (const WorldContact& c : world.contacts)
         {
-            if (bodies[c.a].type == BodyType::Dynamic && bodies[c.b].type == BodyType::Dynamic)
+            if (dynamic[c.a] != 0 && dynamic[c.b] != 0)
             {
                 const int ra = FindRoot(parent, c.a), rb = FindRoot(parent, c.b);
                 if (ra != rb)
@@ -61,24 +65,24 @@ void Stepper::Sleep()
         std::vector<uint8_t> anyAwake(n, 0);
         for (int i = 0; i < n; ++i)
         {
-            if (bodies[i].type != BodyType::Dynamic)
+            if (dynamic[i] == 0)
             {
                 continue;
             }
             const int root = FindRoot(parent, i);
-            shortest[root] = std::min(shortest[root], bodies[i].awake ? bodies[i].sleepTime : INFINITY);
-            anyAwake[root] |= bodies[i].awake ? 1 : 0;
+            shortest[root] = std::min(shortest[root], awake[i] != 0 ? rest[i] : INFINITY);
+            anyAwake[root] |= awake[i];
         }
         for (int i = 0; i < n; ++i)
         {
-            RigidBody& body = bodies[i];
-            if (body.type != BodyType::Dynamic || !body.awake)
+            if (dynamic[i] == 0 || awake[i] == 0)
             {
                 continue;
             }
             const int root = FindRoot(parent, i);
             if (anyAwake[root] && shortest[root] >= settings.timeToSleep)
             {
+                RigidBody& body = bodies[i];
                 body.awake = false;
                 body.velocity = {};
                 body.angularVelocity = 0.0;

@@ -395,8 +395,8 @@ void Stepper::SolveSoft()
             continue;
         }
         // How fast gravity closes the pair along the normal: it pulls only the awake dynamic bodies.
-        const Vec2 gravityA = IsAwakeDynamic(bodies[c.a]) ? settings.gravity : Vec2{};
-        const Vec2 gravityB = IsAwakeDynamic(bodies[c.b]) ? settings.gravity : Vec2{};
+        const Vec2 gravityA = moves[static_cast<size_t>(c.a)] != 0 ? settings.gravity : Vec2{};
+        const Vec2 gravityB = moves[static_cast<size_t>(c.b)] != 0 ? settings.gravity : Vec2{};
         const double pull = std::max(0.0, -Dot(gravityB - gravityA, c.normal));
         if (SoftBounceTargets(solvedAt(k), c, states[static_cast<size_t>(c.a)], states[static_cast<size_t>(c.b)], pull,
                               h, dt))

@@ -195,10 +195,15 @@ void Stepper::PrepareContacts()
     const int n = static_cast<int>(bodies.size());
     solverBodies.assign(n, SolverBody{});
     centers.resize(n);
+    // Whether each body moves, read once in order: a body is several cache lines, read again for each of its
+    // contacts below.
+    std::vector<uint8_t>& moving = memory.moving;
+    moving.resize(static_cast<size_t>(n));
     for (int i = 0; i < n; ++i)
     {
         const RigidBody& body = bodies[i];
         centers[i] = TransformPoint(xfs[i], body.localCenter);
+        moving[static_cast<size_t>(i)] = IsAwakeDynamic(body) ? 1 : 0;
         if (IsAwakeDynamic(body))
         {
             SolverBody& s = solverBodies[i];
@@ -241,7 +246,9 @@ void Stepper::PrepareContacts()
         for (int k = begin; k < end; ++k)
         {
             const WorldContact& wc = world.contacts[static_cast<size_t>(k)];
-            if (!IsAwakeDynamic(bodies[wc.a]) && !IsAwakeDynamic(bodies[wc.b]))
+            const bool movesA = moving[static_cast<size_t>(wc.a)] != 0;
+            const bool movesB = moving[static_cast<size_t>(wc.b)] != 0;
+            if (!movesA && !movesB)
             {
                 continue;
             }
@@ -275,8 +282,8 @@ void Stepper::PrepareContacts()
                 p.tangentImpulse = wc.points[i].tangentImpulse;
             }
             // How fast gravity closes the pair along the normal: it pulls only the awake dynamic bodies.
-            const Vec2 gravityA = IsAwakeDynamic(bodies[c.a]) ? settings.gravity : Vec2{};
-            const Vec2 gravityB = IsAwakeDynamic(bodies[c.b]) ? settings.gravity : Vec2{};
+            const Vec2 gravityA = movesA ? settings.gravity : Vec2{};
+            const Vec2 gravityB = movesB ? settings.gravity : Vec2{};
             const double pull = std::max(0.0, -Dot(gravityB - gravityA, c.normal));
             detail::PrepareContact(c, solverBodies[c.a], solverBodies[c.b], approach, pull, dt,
                                    settings.restitutionThreshold);
