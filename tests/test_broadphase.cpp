@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The broadphase against independent computations: FindPairs against every pair of boxes compared, with touching,
-// identical and empty boxes, as the boxes move and with pairs skipped; ComputeAabb against the placed shape's
-// extremes; TouchingPairs against Overlap over every pair.
+// identical and empty boxes, as the boxes move and with pairs skipped; a world's pairs against every pair of its
+// grown boxes, step after step; ComputeAabb against the placed shape's extremes; TouchingPairs against Overlap over
+// every pair.
 
 #include "support/builders.h"
 #include "support/random_shapes.h"
+#include "support/world_scenes.h"
 
 #include <satviz/broadphase.h>
 #include <satviz/collide.h>
@@ -232,6 +234,99 @@ TEST_CASE("FindPairs keeps its order between calls as the boxes move", "[world][
                 boxes[i].max = boxes[i].max + d;
             }
         }
+    }
+}
+
+namespace
+{
+
+// The world's skip, from the bodies as the step began: both static, or neither awake and dynamic.
+struct StartOfStep
+{
+    std::vector<char> isStatic, moving;
+};
+
+bool SkipAtStart(const void* context, int i, int j)
+{
+    const StartOfStep& start = *static_cast<const StartOfStep*>(context);
+    const size_t a = static_cast<size_t>(i), b = static_cast<size_t>(j);
+    if (start.isStatic[a] && start.isStatic[b])
+    {
+        return true;
+    }
+    return !start.moving[a] && !start.moving[b];
+}
+
+} // namespace
+
+TEST_CASE("A world's broadphase pairs are every pair of its grown boxes, step after step", "[world][broadphase]")
+{
+    Rng rng(4142);
+    for (int run = 0; run < 4; ++run)
+    {
+        World world = WorldWithGravity(kGravity);
+        // Bodies fall asleep sooner than by default, so that every run has sleepers to wake, with either step.
+        world.settings.sleepLinearSpeed = 0.05;
+        world.settings.sleepAngularSpeed = 0.1;
+        world.settings.timeToSleep = 0.25;
+        AddGround(world, 12.0);
+        AddStatic(world, BoxShape(0.25, 4.0), {-12.0, 4.0});
+        AddStatic(world, BoxShape(0.25, 4.0), {12.0, 4.0});
+        StepTrace trace;
+        world.stepTrace = &trace;
+        std::vector<std::pair<int, int>> expected;
+        const auto addBody = [&](bool fast) {
+            const double size = rng.Uniform(0.1, 0.4);
+            const Shape shape = rng.Chance(0.5) ? DiscShape(size) : BoxShape(size, rng.Uniform(0.1, 0.4));
+            const Vec2 at{rng.Uniform(-11.0, 11.0), rng.Uniform(0.5, 16.0)};
+            const Vec2 velocity = fast ? Vec2{rng.Uniform(-80.0, 80.0), rng.Uniform(-120.0, 0.0)}
+                                       : Vec2{rng.Uniform(-1.0, 1.0), rng.Uniform(-1.0, 1.0)};
+            AddDynamic(world, shape, at, rng.Uniform(-1.0, 1.0), velocity, rng.Uniform(-2.0, 2.0));
+        };
+        // More bodies than the sweep takes before it cuts the world into bands.
+        for (int i = 0; i < 270; ++i)
+        {
+            addBody(rng.Chance(0.1));
+        }
+        int sleptOnce = 0;
+        for (int step = 0; step < 450; ++step)
+        {
+            StartOfStep start;
+            for (const RigidBody& body : world.bodies)
+            {
+                start.isStatic.push_back(body.type == BodyType::Static);
+                start.moving.push_back(body.type == BodyType::Dynamic && body.awake);
+            }
+            // The broadphase off for a few steps now and then: the bodies move meanwhile, unseen by it.
+            world.settings.broadphase = step % 50 < 40 || step % 50 >= 43;
+            Step(world, kDt);
+            if (world.settings.broadphase)
+            {
+                FindPairsBruteForce(trace.bounds, expected, SkipAtStart, &start);
+                INFO("run " << run << ", step " << step << ", bodies " << world.bodies.size());
+                REQUIRE(trace.candidates == expected);
+            }
+            for (const RigidBody& body : world.bodies)
+            {
+                sleptOnce += body.type == BodyType::Dynamic && !body.awake;
+            }
+            // Bodies dropped in now and then, fast ones among them, after the pile has had time to go to sleep;
+            // a body thrown across the world.
+            const bool calm = step < 250 || (step >= 320 && step < 400);
+            if (!calm && rng.Chance(0.05))
+            {
+                addBody(rng.Chance(0.5));
+            }
+            if (!calm && rng.Chance(0.02))
+            {
+                const int thrown = rng.Int(3, static_cast<int>(world.bodies.size()) - 1);
+                RigidBody& body = world.bodies[static_cast<size_t>(thrown)];
+                body.position = {rng.Uniform(-11.0, 11.0), rng.Uniform(1.0, 12.0)};
+                body.awake = true;
+                body.sleepTime = 0.0;
+            }
+        }
+        CHECK(sleptOnce > 0);
     }
 }
 

@@ -191,7 +191,7 @@ void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<
     for (int k = 0; k < n; ++k)
     {
         const Aabb& box = boxes[order[k]];
-        sorted[k] = {Lower(box, axis), Upper(box, axis), Lower(box, other), Upper(box, other), order[k]};
+        sorted[k] = {Lower(box, axis), Upper(box, axis), Lower(box, other), Upper(box, other), order[k], 0};
     }
     // Bands across the other axis: each box is swept only with the boxes of the bands it spans, so a box in a
     // tall pile swept across meets the few rows near it, not its whole column.
@@ -216,9 +216,10 @@ void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<
         banded.resize(static_cast<size_t>(bandStart[static_cast<size_t>(bands.count)]));
         std::vector<int>& fill = sweep.met;
         fill.assign(bandStart.begin(), bandStart.end() - 1);
-        for (const SortAndSweep::Entry& e : sorted)
+        for (SortAndSweep::Entry e : sorted)
         {
-            for (int b = bands.Of(e.otherLower), last = bands.Of(e.otherUpper); b <= last; ++b)
+            e.band = bands.Of(e.otherLower);
+            for (int b = e.band, last = bands.Of(e.otherUpper); b <= last; ++b)
             {
                 banded[static_cast<size_t>(fill[static_cast<size_t>(b)]++)] = e;
             }
@@ -254,8 +255,10 @@ void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<
             {
                 const SortAndSweep::Entry& b = swept[metAt[q]];
                 // A pair of boxes that both span several bands meets in each band they share: it is kept in the
-                // band where their overlap on the other axis begins, which both span.
-                if (bands.count > 1 && bands.Of(std::max(a.otherLower, b.otherLower)) != band)
+                // band where their overlap on the other axis begins, which both span. That is the band of the
+                // higher lower bound, so the higher of the two boxes' first bands, as a band only grows with its
+                // position (the lower bounds of two boxes that meet are numbers). Without bands, both are 0.
+                if (std::max(a.band, b.band) != band)
                 {
                     continue;
                 }
@@ -269,8 +272,10 @@ void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<
         }
     }
     sweep.comparisons = comparisons;
-    // A counting sort on the first index, then each (short) run sorted on the second: linear in the pairs.
-    std::vector<int> start(static_cast<size_t>(n) + 1, 0);
+    // A counting sort on the first index, then each (short) run sorted on the second: linear in the pairs. The
+    // runs hold a box's few neighbours after it, sorted in place; a long one (a box that meets many) by std::sort.
+    std::vector<int>& start = sweep.firstStart;
+    start.assign(static_cast<size_t>(n) + 1, 0);
     for (const auto& pair : pairs)
     {
         ++start[pair.first + 1];
@@ -279,16 +284,36 @@ void FindPairs(SortAndSweep& sweep, const std::vector<Aabb>& boxes, std::vector<
     {
         start[i + 1] += start[i];
     }
-    std::vector<std::pair<int, int>> byFirst(pairs.size());
+    std::vector<std::pair<int, int>>& byFirst = sweep.byFirst;
+    byFirst.resize(pairs.size());
     for (const auto& pair : pairs)
     {
         byFirst[start[pair.first]++] = pair;
     }
+    std::pair<int, int>* const run = byFirst.data();
     int begin = 0;
     for (int i = 0; i < n; ++i)
     {
-        std::sort(byFirst.begin() + begin, byFirst.begin() + start[i]);
-        begin = start[i];
+        const int end = start[i];
+        if (end - begin > 16)
+        {
+            std::sort(run + begin, run + end);
+        }
+        else
+        {
+            // One first index: the second ones alone decide, and no two are equal.
+            for (int k = begin + 1; k < end; ++k)
+            {
+                const std::pair<int, int> item = run[k];
+                int m = k - 1;
+                for (; m >= begin && run[m].second > item.second; --m)
+                {
+                    run[m + 1] = run[m];
+                }
+                run[m + 1] = item;
+            }
+        }
+        begin = end;
     }
     pairs.swap(byFirst);
 }

@@ -55,6 +55,7 @@ struct SortAndSweep
         double lower, upper;           ///< bounds on the sweep axis
         double otherLower, otherUpper; ///< bounds on the other axis
         int index;                     ///< the box's index in the caller's list
+        int band;                      ///< the band of otherLower when the sweep uses bands, else 0
     };
     /// The boxes' bounds in `order` (working memory of the last call, kept to save its allocation).
     std::vector<Entry> sorted;
@@ -64,6 +65,10 @@ struct SortAndSweep
     std::vector<Entry> banded;
     /// Where each band's entries begin in `banded`, and where the last ends (working memory).
     std::vector<int> bandStart;
+    /// Where each first index's pairs begin in `byFirst`, as the pairs are sorted (working memory).
+    std::vector<int> firstStart;
+    /// The pairs sorted by their first index (working memory).
+    std::vector<std::pair<int, int>> byFirst;
 };
 
 /// The pairs (i, j), i < j, of boxes that overlap, sorted by i then j, written to `pairs` (cleared first).
