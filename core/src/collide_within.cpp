@@ -15,22 +15,18 @@ namespace detail
 {
 
 template <typename S>
-bool WidenWithin(ManifoldT<S>& m, const ShapeT<S>& a, const TransformT<S>& xfA, const ShapeT<S>& b,
-                 const TransformT<S>& xfB, S margin)
+void Widen(ManifoldT<S>& m, const ShapeT<S>& a, const TransformT<S>& xfA, const ShapeT<S>& b, const TransformT<S>& xfB,
+           S margin)
 {
     const bool polygonA = a.type == ShapeType::Polygon;
     const bool polygonB = b.type == ShapeType::Polygon;
-    // Collide's gap is the separation of the first separating axis it met, at most the largest one: beyond the
-    // margin it already proves the pair apart by more. An overlapping pair with two contacts kept both ends of its
-    // clipped incident edge, and a circle has one contact: nothing is left to add.
-    if (m.gap > margin || (m.overlap && (m.contactCount == 2 || !(polygonA && polygonB))))
+    if (polygonA && polygonB && m.overlap)
     {
-        return false;
+        ReclipWithin(a.polygon, xfA, b.polygon, xfB, m, margin);
     }
-    if (polygonA && polygonB)
+    else if (polygonA && polygonB)
     {
-        m = m.overlap ? ReclippedWithin(a.polygon, xfA, b.polygon, xfB, m, margin)
-                      : SpeculativePolygons(a.polygon, xfA, b.polygon, xfB, margin);
+        m = SpeculativePolygons(a.polygon, xfA, b.polygon, xfB, margin);
     }
     else if (polygonA)
     {
@@ -44,13 +40,12 @@ bool WidenWithin(ManifoldT<S>& m, const ShapeT<S>& a, const TransformT<S>& xfA, 
     {
         m = SpeculativeCircles(a.circle, xfA, b.circle, xfB, margin);
     }
-    return true;
 }
 
-template bool WidenWithin(ManifoldT<double>&, const ShapeT<double>&, const TransformT<double>&, const ShapeT<double>&,
-                          const TransformT<double>&, double);
-template bool WidenWithin(ManifoldT<float>&, const ShapeT<float>&, const TransformT<float>&, const ShapeT<float>&,
-                          const TransformT<float>&, float);
+template void Widen(ManifoldT<double>&, const ShapeT<double>&, const TransformT<double>&, const ShapeT<double>&,
+                    const TransformT<double>&, double);
+template void Widen(ManifoldT<float>&, const ShapeT<float>&, const TransformT<float>&, const ShapeT<float>&,
+                    const TransformT<float>&, float);
 
 } // namespace detail
 

@@ -145,6 +145,16 @@ int ScannedIncidentEdge(const IncidentPolygon<S>& inc, Vec2T<S> normal)
     return hits != 0 ? __builtin_ctz(hits) : 0; // no hit only for NaN input
 }
 
+/// Incident edge `edge` of inc and its ends mapped into the reference frame one at a time (TransformPoint), into
+/// `out`: the same bits as inc's mapped vertices, so a caller that knows the edge need not map the whole polygon.
+template <typename S>
+void IncidentEdgeEnds(const IncidentPolygon<S>& inc, int edge, ClipResult<S>& out)
+{
+    out.incidentEdge = edge;
+    out.w1 = TransformPoint(inc.xf, inc.polygon.Vertices()[edge]);
+    out.w2 = TransformPoint(inc.xf, inc.polygon.Vertices()[Next(edge, inc.polygon.Count())]);
+}
+
 /// Step 1 of the clipping, the incident edge: the edge of inc whose outward normal is most anti-parallel to the
 /// reference face's unit `normal` (reference frame), one of the two edges at inc's support vertex in direction
 /// -normal. A scanned inc compares all its normals (ScannedIncidentEdge) and reads the edge's ends from its mapped
@@ -167,9 +177,7 @@ int IncidentEdge(const IncidentPolygon<S>& inc, Vec2T<S> normal, int support, Cl
         const int before = Prev(s, m);
         const S dotLeaving = Dot(normal, Rotate(inc.xf.q, inc.polygon.Normal(s)));
         const S dotEntering = Dot(normal, Rotate(inc.xf.q, inc.polygon.Normal(before)));
-        out.incidentEdge = Select(dotEntering < dotLeaving, before, s);
-        out.w1 = TransformPoint(inc.xf, inc.polygon.Vertices()[out.incidentEdge]);
-        out.w2 = TransformPoint(inc.xf, inc.polygon.Vertices()[Next(out.incidentEdge, m)]);
+        IncidentEdgeEnds(inc, Select(dotEntering < dotLeaving, before, s), out);
     }
     return s;
 }
@@ -295,6 +303,29 @@ void KeepDeepestVertex(const IncidentPolygon<S>& inc, int support, Vec2T<S> v1, 
     out.contactCount = 1;
 }
 
+/// Steps 2 to 4 of ClipIncidentEdge, on the incident edge `out` holds (IncidentEdge, or IncidentEdgeEnds where the
+/// edge is known): `s` is the incident support vertex step 1 used, or -1. Writes the contacts into `out`.
+template <typename S>
+void ClipIncidentEdgeFound(const PolygonT<S>& ref, int face, const IncidentPolygon<S>& inc, int s, S keepBelow,
+                           const Vec2T<S>* shift, ClipResult<S>& out)
+{
+    const Vec2T<S> v1 = ref.Vertices()[face];
+    const Vec2T<S> v2 = ref.Vertices()[Next(face, ref.Count())];
+    const Vec2T<S> normal = ref.Normal(face);
+    if (shift != nullptr)
+    {
+        out.w1 = out.w1 + *shift;
+        out.w2 = out.w2 + *shift;
+    }
+    const ClippedEdge<S> clipped = ClipSidePlanes(out.w1, out.w2, v1, v2, LeftPerp(normal), out);
+    KeepDeepPoints(clipped, v1, normal, keepBelow, out);
+    out.fallback = out.contactCount == 0;
+    if (out.fallback)
+    {
+        KeepDeepestVertex(inc, s, v1, normal, shift, out);
+    }
+}
+
 /// Contact points of a reference face (Catto; Gregorius).
 /// Outline:
 ///   1. Incident edge: the edge of the incident polygon whose normal is most anti-parallel to the reference normal
@@ -311,22 +342,8 @@ ClipResult<S> ClipIncidentEdge(const PolygonT<S>& ref, int face, const IncidentP
                                S keepBelow, const Vec2T<S>* shift = nullptr)
 {
     ClipResult<S> out;
-    const Vec2T<S> v1 = ref.Vertices()[face];
-    const Vec2T<S> v2 = ref.Vertices()[Next(face, ref.Count())];
-    const Vec2T<S> normal = ref.Normal(face);
-    const int s = IncidentEdge<kWide>(inc, normal, support, out);
-    if (shift != nullptr)
-    {
-        out.w1 = out.w1 + *shift;
-        out.w2 = out.w2 + *shift;
-    }
-    const ClippedEdge<S> clipped = ClipSidePlanes(out.w1, out.w2, v1, v2, LeftPerp(normal), out);
-    KeepDeepPoints(clipped, v1, normal, keepBelow, out);
-    out.fallback = out.contactCount == 0;
-    if (out.fallback)
-    {
-        KeepDeepestVertex(inc, s, v1, normal, shift, out);
-    }
+    const int s = IncidentEdge<kWide>(inc, ref.Normal(face), support, out);
+    ClipIncidentEdgeFound(ref, face, inc, s, keepBelow, shift, out);
     return out;
 }
 

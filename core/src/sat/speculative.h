@@ -85,20 +85,33 @@ ManifoldT<S> SpeculativePolygons(const PolygonT<S>& a, const TransformT<S>& xfA,
     return manifold;
 }
 
-/// The manifold of two overlapping polygons (Collide's `m`) with its clipping redone to keep the points of the
-/// incident edge up to `margin` above the reference face (ClipIncidentEdge), not only those below it: an edge that
-/// touches at one end and is turning onto the face gets its other end as a speculative contact.
+/// Turns the manifold of two overlapping polygons (Collide's `m`) into the same with its clipping redone to keep the
+/// points of the incident edge up to `margin` above the reference face (ClipIncidentEdge), not only those below it: an
+/// edge that touches at one end and is turning onto the face gets its other end as a speculative contact. A scanned
+/// incident polygon is not mapped again: Collide found its incident edge (`m.incidentEdge`) by ScannedIncidentEdge from
+/// the same relative transform and reference normal, which is what the clipping would find again, so only the edge's
+/// two ends are mapped, to the bits the whole mapping gives them. In place, as only the contacts change.
 template <typename S>
-ManifoldT<S> ReclippedWithin(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b,
-                             const TransformT<S>& xfB, ManifoldT<S> m, S margin)
+void ReclipWithin(const PolygonT<S>& a, const TransformT<S>& xfA, const PolygonT<S>& b, const TransformT<S>& xfB,
+                  ManifoldT<S>& m, S margin)
 {
     const bool flip = m.axis.shape == 1;
     const PolygonT<S>& ref = SelectRef(flip, b, a);
     const TransformT<S>& xfRef = SelectRef(flip, xfB, xfA);
-    const IncidentPolygon<S> inc(SelectRef(flip, a, b), xfRef, SelectRef(flip, xfA, xfB), kScanLimit,
-                                 MapInLanes<false>{});
+    const PolygonT<S>& incident = SelectRef(flip, a, b);
+    const TransformT<S>& xfInc = SelectRef(flip, xfA, xfB);
+    const int count = incident.Count();
+    if (count > 0 && count <= kScanLimit && m.incidentEdge >= 0 && m.incidentEdge < count)
+    {
+        const IncidentPolygon<S> inc(incident, xfRef, xfInc, 0); // a scan limit of 0: not mapped
+        ClipResult<S> clip;
+        IncidentEdgeEnds(inc, m.incidentEdge, clip);
+        ClipIncidentEdgeFound(ref, m.axis.index, inc, -1, margin, static_cast<const Vec2T<S>*>(nullptr), clip);
+        TakeContacts(m, clip, xfRef);
+        return;
+    }
+    const IncidentPolygon<S> inc(incident, xfRef, xfInc, kScanLimit, MapInLanes<false>{});
     TakeContacts(m, ClipIncidentEdge(ref, m.axis.index, inc, -1, margin), xfRef);
-    return m;
 }
 
 /// Moves a manifold of A against an inflated B (B's surface pushed out by `margin` along the normal) back to the
