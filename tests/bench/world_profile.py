@@ -11,21 +11,23 @@ import sys
 # The first pattern that matches a function's name takes its samples.
 STAGES = [
     ("speculative contacts (their manifolds)", r"Speculative"),
-    ("time of impact (sweeps, hits in time order)", r"TimeOfImpact|Sweep(?!Axis)|OutrunsPair|DiscCast|Conservative"),
+    ("time of impact (sweeps, hits in time order)", r"TimeOfImpact|Sweep(?!Axis)|OutrunsPair|DiscCast|Conservative|BoxGrid"),
     ("narrowphase (Collide, manifolds, warm-start matching)",
      r"Collide|RunWide|IncidentEdge|QueryFaces|CollidePair|FindContacts\(\)::\{lambda\(int, int, int\)#3|FeatureKey|"
-     r"TakeContacts|LargestSeparation|RefFaceQuery|HideFaces|SecondPassSkips|CombineMaterials"),
+     r"TakeContacts|LargestSeparation|RefFaceQuery|HideFaces|SecondPassSkips|CombineMaterials|WidenWithin|"
+     r"ClipIncidentEdge|ScannedIncidentEdge|WithTracer"),
     ("broadphase (sort and sweep, pair sort, boxes)",
      r"FindPairs|ComputeAabb|SweepAxis|SkipPair|SkipSlowPair|sort<.*pair<int, int>|insert<.*pair<int, int>"),
     ("soft step (its sub-steps and restitution, with --soft-step)",
-     r"SolveSoft|SoftRestitution|SoftBounceTargets|SolveNormalBlock"),
+     r"SolveSoft|SoftRestitution|SoftBounceTargets|SolveNormalBlock|PassOverBatches|SoftPassOverBatches|"
+     r"PackSoftLane|UnpackSoftLane|MakeSoftContact"),
     ("restitution", r"ApplyRestitution"),
     ("velocity passes (with preparation, warm start, order, energy limit)",
      r"SolveContactVelocity|SolveVelocities|PrepareContact|PrepareContacts|WarmStart|OrderTopDown|SortContacts|StoreImpulses|"
-     r"LimitEnergyGain|MakeSoftContact"),
+     r"LimitEnergyGain|RecordAfter"),
     ("position correction (passes, guards, lift off static bodies)", r"CorrectPositions|GuardAfterMove"),
     ("move (positions, sines and cosines)", r"Stepper::Move|sincos|MakeRot|TurnsBeyondContacts|__sin|__cos"),
-    ("sleep and waking islands", r"Sleep|WakeIslands"),
+    ("sleep and waking islands", r"Stepper::Sleep|WakeIslands"),
     ("allocation, clearing and copying memory, page faults",
      r"malloc|free|operator new|operator delete|memset|memmove|memcpy|_M_realloc|_M_default_append|_M_fill|"
      r"uninit|_int_|^\[k\]|tcache|unlink_chunk"),
