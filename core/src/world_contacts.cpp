@@ -168,9 +168,8 @@ void Stepper::FindContacts()
     // How far a pass of the position correction can move a body at a point (maxCorrection): a body beside a static
     // one within this distance beyond its reach gets a guard, so that the passes, pushing it out of another body,
     // do not push it into the static one. (Several passes can move it farther, but only out of an overlap that
-    // deep, which the sweep and the contacts leave rare.) The soft step has no position passes, and no such guards.
-    const double correctionReach =
-        !settings.softStep && settings.positionIterations > 0 ? settings.maxCorrection : 0.0;
+    // deep, which the sweep and the contacts leave rare.)
+    const double correctionReach = settings.positionIterations > 0 ? settings.maxCorrection : 0.0;
     PairFilter filter{&bodies, settings.skipStaticPairs};
     std::vector<std::pair<int, int>>& candidates = memory.candidates;
     candidates.clear();
