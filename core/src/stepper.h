@@ -77,7 +77,7 @@ struct Stepper
     std::vector<int>& solveOrder;       // solverContacts' indices in the order the passes visit them (OrderTopDown)
     std::vector<int>& foundOrder;       // after SortContacts: the solver contacts' indices in the order found
     std::vector<double>& energyBefore;  // per body, after gravity and before the contacts
-    std::vector<Transform>& xfs;        // transforms at the start of the step (one sine and cosine per body)
+    std::vector<Transform>& xfs;        // transforms at the start of the step
     std::vector<Vec2>& centers;         // centres of mass at the start of the step
     std::vector<uint8_t>& hit;          // per body: took a time-ordered hit in the step (Move)
     std::vector<uint8_t>& bullets;      // per body: moves beyond its reach or turns fast (FindContacts)
@@ -90,7 +90,8 @@ struct Stepper
         : world(w), dt(step), settings(w.settings), memory(MemoryOf(w)), solverBodies(memory.solverBodies),
           solverContacts(memory.solverContacts), guards(memory.guards), solveOrder(memory.solveOrder),
           foundOrder(memory.foundOrder), energyBefore(memory.energyBefore), xfs(memory.xfs), centers(memory.centers),
-          hit(memory.hit), bullets(memory.bullets), bodyReach(memory.bodyReach), rotations(memory.rotations), rotationAngles(memory.rotationAngles)
+          hit(memory.hit), bullets(memory.bullets), bodyReach(memory.bodyReach), rotations(memory.rotations),
+          rotationAngles(memory.rotationAngles)
     {
     }
 

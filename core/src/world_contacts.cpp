@@ -343,7 +343,12 @@ void Stepper::FindContacts()
                         {
                             m = Collide(a.shape, xfs[i], b.shape, xfs[j]);
                         }
-                        WidenWithin(m, a.shape, xfs[i], b.shape, xfs[j], margin + correctionReach);
+                        // As CollidePair: a margin that is not above 0 (a body whose velocity is not a number
+                        // has a reach that is not one) leaves Collide's manifold.
+                        if (margin + correctionReach > 0.0)
+                        {
+                            WidenWithin(m, a.shape, xfs[i], b.shape, xfs[j], margin + correctionReach);
+                        }
                     }
                     guard = m.contactCount > 0;
                 }

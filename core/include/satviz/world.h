@@ -28,7 +28,9 @@ struct StepMemory;
 
 /// The working lists of the step (its bodies' velocities, its contacts as the solver sees them, their order, ...),
 /// kept between steps so that a step reuses the memory of the one before instead of allocating its own. Working
-/// memory, not state: every step sets what it reads before reading it, and a copy of a world starts without any.
+/// memory, not state: a step sets what it reads before reading it, or reads a value kept from the step before only
+/// where the bodies show it still holds (a body's rotation, while the body has the angle it was taken of), so a copy
+/// of a world, which starts without any, steps as the original.
 struct StepMemoryCache
 {
     /// The lists; null until the first step.
