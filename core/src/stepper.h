@@ -32,14 +32,13 @@ struct StepMemory
     std::vector<Rot> rotations;                    ///< see Stepper
     std::vector<double> rotationAngles;            ///< Move: the angle of which each of rotations is the rotation
     std::vector<SolverContact> spareContacts;      ///< SortContacts: the contacts in their new order
-    std::vector<uint8_t> moving;                   ///< PrepareContacts: whether each body is awake and dynamic
+    std::vector<uint8_t> moving;                   ///< PrepareContacts, SolveSoft: whether each body moves
     std::vector<WorldContact> previousContacts;    ///< FindContacts: the last step's contacts
     std::vector<std::pair<int, int>> candidates;   ///< FindContacts: the broadphase's pairs
     std::vector<Aabb> boxes;                       ///< FindContacts: the bodies' boxes
     std::vector<SoftBody> softBodies;              ///< SolveSoft: each body's velocities and move in the sub-steps
     std::vector<SoftContact> softContacts;         ///< SolveSoft: the contacts, top down
     std::vector<int> softAwake;                    ///< SolveSoft: the awake dynamic bodies
-    std::vector<uint8_t> softMoves;                ///< SolveSoft: whether each body is awake and dynamic
     std::vector<SoftBatch> softBatches;            ///< SolveSoft: the untraced contacts, four side by side
     std::vector<SoftColour> softColours;           ///< SolveSoft: each colour's batches and traced contacts
     std::vector<int> softSingle;                   ///< SolveSoft: the contacts visited one at a time, by colour

@@ -157,15 +157,12 @@ void Stepper::SolveSoft()
     states.assign(static_cast<size_t>(n) + 2, SoftBody{});
     std::vector<int>& awake = memory.softAwake;
     awake.clear();
-    // Whether the passes move each body, read from the bodies once, in order (a body is read again for each of its
-    // contacts below).
-    std::vector<uint8_t>& moves = memory.softMoves;
-    moves.resize(static_cast<size_t>(n));
+    // Whether the passes move each body: awake and dynamic, as PrepareContacts read it from the bodies just before.
+    const std::vector<uint8_t>& moves = memory.moving;
     for (int i = 0; i < n; ++i)
     {
         states[static_cast<size_t>(i)].v = solverBodies[i].v;
         states[static_cast<size_t>(i)].w = solverBodies[i].w;
-        moves[static_cast<size_t>(i)] = IsAwakeDynamic(bodies[i]);
         if (moves[static_cast<size_t>(i)] != 0)
         {
             // A body whose turn moves no point of its outline (a circle about its centre) keeps its anchors
