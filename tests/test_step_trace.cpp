@@ -146,7 +146,7 @@ TEST_CASE("The step's record: grown boxes, the broadphase's pairs and the hits, 
 
 TEST_CASE("The solver's record of a lone contact: each body's velocity after is before, plus gravity, plus the "
           "impulses over its mass",
-          "[world][trace][soft-step-fails]")
+          "[world][trace]")
 {
     // A box sliding on the ground: one contact, two points, friction at the dynamic limit.
     World world = WorldWithGravity(9.81);

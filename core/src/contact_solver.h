@@ -36,6 +36,8 @@ struct SolverPoint
     double pushImpulse = 0.0;        ///< accumulated impulse of the push-only passes after the restitution
     double normalImpulse = 0.0;      ///< accumulated normal impulse
     double tangentImpulse = 0.0;     ///< accumulated friction impulse
+    double normalTotal = 0.0;        ///< soft step: the normal impulse summed over the sub-steps (no restitution)
+    double tangentTotal = 0.0;       ///< soft step: the friction impulse summed over the sub-steps
     bool stuck = false;              ///< static friction held in the last pass
     /// Soft step: the largest accumulated normal impulse over the sub-steps; 0 for a point that never pushed (a gap
     /// that stayed open), which does not bounce.

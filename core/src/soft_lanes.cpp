@@ -41,6 +41,8 @@ void PackSoftLane(SoftBatch& b, int lane, const SoftContact& s, int readA, int r
         q.normalImpulse[lane] = p.normalImpulse;
         q.tangentImpulse[lane] = p.tangentImpulse;
         q.maxNormalImpulse[lane] = p.maxNormalImpulse;
+        q.normalTotal[lane] = p.normalTotal;
+        q.tangentTotal[lane] = p.tangentTotal;
         b.stuck[i][lane] = s.stuck[i];
     }
     b.readA[lane] = readA;
@@ -58,6 +60,8 @@ void UnpackSoftLane(const SoftBatch& b, int lane, SoftContact& s)
         p.normalImpulse = q.normalImpulse[lane];
         p.tangentImpulse = q.tangentImpulse[lane];
         p.maxNormalImpulse = q.maxNormalImpulse[lane];
+        p.normalTotal = q.normalTotal[lane];
+        p.tangentTotal = q.tangentTotal[lane];
         s.stuck[i] = b.stuck[i][lane];
     }
 }

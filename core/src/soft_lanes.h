@@ -49,6 +49,8 @@ struct alignas(64) SoftLanePoints
     double normalImpulse[kSoftLanes];    ///< accumulated normal impulse
     double tangentImpulse[kSoftLanes];   ///< accumulated friction impulse
     double maxNormalImpulse[kSoftLanes]; ///< the largest accumulated normal impulse over the sub-steps
+    double normalTotal[kSoftLanes];      ///< the accumulated normal impulses of the sub-steps done, summed
+    double tangentTotal[kSoftLanes];     ///< the accumulated friction impulses of the sub-steps done, summed
 };
 
 /// Up to kSoftLanes contacts of one colour and one kind, each field a lane per contact (see SoftContact). Lanes

@@ -36,6 +36,8 @@ struct SoftPoint
     double normalImpulse = 0.0;    ///< accumulated normal impulse
     double tangentImpulse = 0.0;   ///< accumulated friction impulse
     double maxNormalImpulse = 0.0; ///< the largest accumulated normal impulse over the sub-steps
+    double normalTotal = 0.0;      ///< the accumulated normal impulses of the sub-steps done, summed
+    double tangentTotal = 0.0;     ///< the accumulated friction impulses of the sub-steps done, summed
 };
 
 /// A contact as the soft step's passes read it: what they need of a SolverContact and of its bodies' masses, made

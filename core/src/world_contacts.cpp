@@ -386,6 +386,8 @@ void Stepper::FindContacts()
                         {
                             p.normalImpulse = old->points[l].normalImpulse;
                             p.tangentImpulse = old->points[l].tangentImpulse;
+                            p.subStepNormalImpulse = old->points[l].subStepNormalImpulse;
+                            p.subStepTangentImpulse = old->points[l].subStepTangentImpulse;
                             matched = true;
                         }
                     }
@@ -403,6 +405,8 @@ void Stepper::FindContacts()
                                 nearest = d2;
                                 p.normalImpulse = old->points[l].normalImpulse;
                                 p.tangentImpulse = old->points[l].tangentImpulse;
+                                p.subStepNormalImpulse = old->points[l].subStepNormalImpulse;
+                                p.subStepTangentImpulse = old->points[l].subStepTangentImpulse;
                                 matched = true;
                             }
                         }

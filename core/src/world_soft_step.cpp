@@ -73,6 +73,8 @@ void MakeSoftContact(SoftContact& s, const SolverContact& c, const SolverBody& s
         q.normalImpulse = p.normalImpulse;
         q.tangentImpulse = p.tangentImpulse;
         q.maxNormalImpulse = 0.0;
+        q.normalTotal = 0.0;
+        q.tangentTotal = 0.0;
         s.bounces = s.bounces || p.bounce > 0.0;
     }
 }
@@ -370,6 +372,52 @@ void Stepper::SolveSoft()
             }
         }
         pass(RelaxPass{}, 2 * sub + 1);
+        // A sub-step applies each contact's accumulated impulses whole (the warm start, then the changes of its
+        // solve and relax): the step's impulses are their sum over the sub-steps.
+        for (int i = 0; i < batchCount; ++i)
+        {
+            SoftBatch& batch = batches[static_cast<size_t>(i)];
+            const int points = batch.kind == SoftKind::OnePoint ? 1 : 2;
+            for (int j = 0; j < points; ++j)
+            {
+                SoftLanePoints& q = batch.points[j];
+                for (int lane = 0; lane < kSoftLanes; ++lane)
+                {
+                    q.normalTotal[lane] += q.normalImpulse[lane];
+                    q.tangentTotal[lane] += q.tangentImpulse[lane];
+                }
+            }
+        }
+        for (const int k : single)
+        {
+            SoftContact& c = contacts[static_cast<size_t>(k)];
+            for (int i = 0; i < c.count; ++i)
+            {
+                c.points[i].normalTotal += c.points[i].normalImpulse;
+                c.points[i].tangentTotal += c.points[i].tangentImpulse;
+            }
+        }
+    }
+    // The traced contact's record gives each pass's impulses, and friction's limits, over the step so far (the
+    // sub-steps before its own added), as the velocity passes record theirs: the last pass's are the step's.
+    if (world.trace != nullptr)
+    {
+        ContactPointSolve before[2]{};
+        for (ContactPointSolve& record : world.trace->passes)
+        {
+            const ContactPointSolve& done = before[record.point];
+            record.normalImpulseWanted += done.normalImpulse;
+            record.normalImpulse += done.normalImpulse;
+            record.tangentImpulseWanted += done.tangentImpulse;
+            record.tangentImpulse += done.tangentImpulse;
+            record.staticLimit += done.staticLimit;
+            record.dynamicLimit += done.dynamicLimit;
+            if (record.pass % 2 == 1)
+            {
+                // The relax ends its sub-step.
+                before[record.point] = record;
+            }
+        }
     }
     for (int i = 0; i < batchCount; ++i)
     {
@@ -419,6 +467,8 @@ void Stepper::SolveSoft()
             solved.points[i].normalImpulse = c.points[i].normalImpulse;
             solved.points[i].tangentImpulse = c.points[i].tangentImpulse;
             solved.points[i].maxNormalImpulse = c.points[i].maxNormalImpulse;
+            solved.points[i].normalTotal = c.points[i].normalTotal;
+            solved.points[i].tangentTotal = c.points[i].tangentTotal;
             solved.points[i].stuck = c.stuck[i];
         }
         if (c.traced)

@@ -278,8 +278,9 @@ void Stepper::PrepareContacts()
                 detail::SolverPoint& p = c.points[i];
                 p.gapSpeed = std::max(0.0, p.separation) / dt;
                 p.approach = approach[i];
-                p.normalImpulse = wc.points[i].normalImpulse;
-                p.tangentImpulse = wc.points[i].tangentImpulse;
+                // The soft step warm starts each sub-step from the last sub-step's impulses.
+                p.normalImpulse = settings.softStep ? wc.points[i].subStepNormalImpulse : wc.points[i].normalImpulse;
+                p.tangentImpulse = settings.softStep ? wc.points[i].subStepTangentImpulse : wc.points[i].tangentImpulse;
             }
             // How fast gravity closes the pair along the normal: it pulls only the awake dynamic bodies.
             const Vec2 gravityA = movesA ? settings.gravity : Vec2{};
@@ -539,8 +540,12 @@ void Stepper::StoreImpulses()
         {
             // A bounce's own impulse is an impact, not a load the point will carry next step: only the compression
             // part is warm started.
-            wc.points[i].normalImpulse = c.points[i].normalImpulse - c.points[i].restitutionImpulse;
-            wc.points[i].tangentImpulse = c.points[i].tangentImpulse;
+            wc.points[i].subStepNormalImpulse = c.points[i].normalImpulse - c.points[i].restitutionImpulse;
+            wc.points[i].subStepTangentImpulse = c.points[i].tangentImpulse;
+            // The soft step's sub-steps each apply their accumulated impulses: the step's are their sum.
+            wc.points[i].normalImpulse = settings.softStep ? c.points[i].normalTotal : wc.points[i].subStepNormalImpulse;
+            wc.points[i].tangentImpulse =
+                settings.softStep ? c.points[i].tangentTotal : wc.points[i].subStepTangentImpulse;
             wc.points[i].stuck = c.points[i].stuck;
         }
     }

@@ -213,7 +213,11 @@ struct WorldContactPoint
     double separation = 0.0;     ///< < 0: overlap; > 0: a gap (a speculative contact, see WorldSettings)
     double normalImpulse = 0.0;  ///< accumulated normal impulse of the last step
     double tangentImpulse = 0.0; ///< accumulated friction impulse of the last step
-    bool stuck = false;          ///< static friction held this point in the last step
+    /// With WorldSettings::softStep, normalImpulse and tangentImpulse are the step's summed over its sub-steps,
+    /// and these the last sub-step's, from which the next step's sub-steps warm start; without, the same as they.
+    double subStepNormalImpulse = 0.0;
+    double subStepTangentImpulse = 0.0; ///< see subStepNormalImpulse
+    bool stuck = false;                 ///< static friction held this point in the last step
     uint32_t key = 0;            ///< identifies the point from step to step (reference face, incident edge, slot)
 };
 
