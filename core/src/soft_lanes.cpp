@@ -26,9 +26,10 @@ void PackSoftLane(SoftBatch& b, int lane, const SoftContact& s, int readA, int r
     b.k12[lane] = s.k12;
     b.k22[lane] = s.k22;
     b.stiff[lane] = s.stiff ? 1.0 : 0.0;
-    for (int i = 0; i < 2; ++i)
+    // A one-point contact's second point is never read (it is in a batch of one point, whose passes read the first
+    // alone): not copied.
+    for (int i = 0; i < s.count; ++i)
     {
-        // A one-point contact's second point is never read: copied as it is.
         const SoftPoint& p = s.points[i];
         SoftLanePoints& q = b.points[i];
         q.rnA[lane] = p.rnA;

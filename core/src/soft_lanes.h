@@ -21,6 +21,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 namespace satviz::detail
 {
@@ -69,7 +70,7 @@ struct alignas(64) SoftBatch
     double k12[kSoftLanes];             ///< K's off-diagonal
     double k22[kSoftLanes];             ///< K
     double stiff[kSoftLanes];           ///< 1 where the stiffer spring holds (SoftContact::stiff), else 0
-    SoftLanePoints points[2];           ///< the points
+    SoftLanePoints points[2];           ///< the points (the second filled for contacts of two points only)
     int readA[kSoftLanes];              ///< A's record in the body states
     int readB[kSoftLanes];              ///< B's record
     int writeA[kSoftLanes];             ///< where A's velocities go: its record if the passes move it, else a sink
@@ -216,13 +217,16 @@ struct Rows<Lanes8>
             _mm512_permutex2var_pd(a, highBlocks, c), // rows 4, 6
             _mm512_permutex2var_pd(b, highBlocks, d), // rows 5, 7
         };
+        // Each half extracted and stored plainly: no permutation to move the upper half down, and no masked store,
+        // which a later load of the same row (the next colour's, of a body they share) may have to wait for.
+        // (Masked extracts with every lane set: GCC 12 warns that the plain one's pass-through may be used
+        // uninitialized.)
+        constexpr __mmask8 kHalf = 0x0F;
         for (int k = 0; k < 4; ++k)
         {
             const int first = k % 2 + 4 * (k / 2);
-            _mm512_mask_storeu_pd(r[first], static_cast<__mmask8>(0x0F), rows[k]);
-            // The upper half, moved down by a permutation within the register.
-            const __m512d upper = _mm512_permutex2var_pd(rows[k], _mm512_setr_epi64(4, 5, 6, 7, 4, 5, 6, 7), rows[k]);
-            _mm512_mask_storeu_pd(r[first + 2], static_cast<__mmask8>(0x0F), upper);
+            _mm256_store_pd(r[first], _mm512_mask_extractf64x4_pd(_mm256_setzero_pd(), kHalf, rows[k], 0));
+            _mm256_store_pd(r[first + 2], _mm512_mask_extractf64x4_pd(_mm256_setzero_pd(), kHalf, rows[k], 1));
         }
     }
 };
@@ -345,6 +349,20 @@ inline L StdMin(L x, L y)
     return Min(y, x);
 }
 
+/// Stores lane k's bit of `bits` (a Mask's Bits) as flags[k], for k below L::kCount: each bit spread to a byte of
+/// its own by a multiplication and written in one store, not a shift and a store a lane (a visit's time goes with its
+/// instructions). The lanes are x86's, little-endian: byte k of the word is flags[k].
+template <typename L>
+inline void StoreFlags(int bits, bool* flags)
+{
+    static_assert(L::kCount <= 8, "a flag a byte, up to eight bytes");
+    // Byte k keeps bit k of the copy of the bits in each byte; adding 0x7F sets its top bit where that bit was set.
+    const uint64_t copies = static_cast<uint64_t>(bits & ((1 << L::kCount) - 1)) * 0x0101010101010101ULL;
+    const uint64_t kept = copies & 0x8040201008040201ULL;
+    const uint64_t spread = ((kept + 0x7F7F7F7F7F7F7F7FULL) >> 7) & 0x0101010101010101ULL;
+    std::memcpy(flags, &spread, L::kCount);
+}
+
 /// SolveSoftContact (untraced) on lanes at to at + L::kCount - 1 of batch c: the solve of a sub-step with `kUseBias`,
 /// else the relax. kPoints: 1 or 2; kBlock: the relax solves the two normal impulses together (SolveNormalBlock,
 /// BlockImpulses).
@@ -392,11 +410,7 @@ inline void SolveLanes(SoftBatch& c, int at, SoftBody* states, const SoftPassCon
     {
         for (int i = 0; i < kPoints; ++i)
         {
-            const int bits = skipStuck[i].Bits();
-            for (int lane = 0; lane < L::kCount; ++lane)
-            {
-                c.stuck[i][at + lane] = ((bits >> lane) & 1) != 0;
-            }
+            StoreFlags<L>(skipStuck[i].Bits(), c.stuck[i] + at);
         }
         return;
     }
@@ -492,11 +506,7 @@ inline void SolveLanes(SoftBatch& c, int at, SoftBody* states, const SoftPassCon
         Select(skip, ni[i], nextNi[i]).Store(p.normalImpulse + at);
         Select(skip, ti[i], nextTi[i]).Store(p.tangentImpulse + at);
         Select(skip, L::Load(p.maxNormalImpulse + at), maxNi[i]).Store(p.maxNormalImpulse + at);
-        const int bits = (skip & skipStuck[i]).Bits() | ((~skip) & stuck[i]).Bits();
-        for (int lane = 0; lane < L::kCount; ++lane)
-        {
-            c.stuck[i][at + lane] = ((bits >> lane) & 1) != 0;
-        }
+        StoreFlags<L>((skip & skipStuck[i]).Bits() | ((~skip) & stuck[i]).Bits(), c.stuck[i] + at);
     }
     StoreBodies(a, states, c.writeA + at);
     StoreBodies(b, states, c.writeB + at);
