@@ -503,8 +503,16 @@ inline void SolveLanes(SoftBatch& c, int at, SoftBody* states, const SoftPassCon
     for (int i = 0; i < kPoints; ++i)
     {
         SoftLanePoints& p = c.points[i];
-        Select(skip, ni[i], nextNi[i]).Store(p.normalImpulse + at);
-        Select(skip, ti[i], nextTi[i]).Store(p.tangentImpulse + at);
+        const L keptNi = Select(skip, ni[i], nextNi[i]);
+        const L keptTi = Select(skip, ti[i], nextTi[i]);
+        keptNi.Store(p.normalImpulse + at);
+        keptTi.Store(p.tangentImpulse + at);
+        if constexpr (!kUseBias)
+        {
+            // As SolveSoftContact's relax: the sub-step's impulses added to the step's (a skipped lane's are 0).
+            (L::Load(p.normalTotal + at) + keptNi).Store(p.normalTotal + at);
+            (L::Load(p.tangentTotal + at) + keptTi).Store(p.tangentTotal + at);
+        }
         Select(skip, L::Load(p.maxNormalImpulse + at), maxNi[i]).Store(p.maxNormalImpulse + at);
         StoreFlags<L>((skip & skipStuck[i]).Bits() | ((~skip) & stuck[i]).Bits(), c.stuck[i] + at);
     }

@@ -314,6 +314,15 @@ void SolveSoftContact(SoftContact& c, SoftBody& a, SoftBody& b, const Softness& 
         record[i].stuck = c.stuck[i];
     }
     StorePair(v, a, b);
+    if constexpr (!UseBias)
+    {
+        // The relax ends a sub-step, which applies the accumulated impulses whole: the step's are their sum.
+        for (int i = 0; i < c.count; ++i)
+        {
+            c.points[i].normalTotal += c.points[i].normalImpulse;
+            c.points[i].tangentTotal += c.points[i].tangentImpulse;
+        }
+    }
     for (int i = 0; i < c.count; ++i)
     {
         recorder.Pass(record[i]);

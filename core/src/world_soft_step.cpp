@@ -371,32 +371,8 @@ void Stepper::SolveSoft()
                 s.rotation = TurnBy(s.rotation, h * s.w);
             }
         }
+        // The relax adds each contact's impulses of the sub-step to the step's (SoftPoint::normalTotal).
         pass(RelaxPass{}, 2 * sub + 1);
-        // A sub-step applies each contact's accumulated impulses whole (the warm start, then the changes of its
-        // solve and relax): the step's impulses are their sum over the sub-steps.
-        for (int i = 0; i < batchCount; ++i)
-        {
-            SoftBatch& batch = batches[static_cast<size_t>(i)];
-            const int points = batch.kind == SoftKind::OnePoint ? 1 : 2;
-            for (int j = 0; j < points; ++j)
-            {
-                SoftLanePoints& q = batch.points[j];
-                for (int lane = 0; lane < kSoftLanes; ++lane)
-                {
-                    q.normalTotal[lane] += q.normalImpulse[lane];
-                    q.tangentTotal[lane] += q.tangentImpulse[lane];
-                }
-            }
-        }
-        for (const int k : single)
-        {
-            SoftContact& c = contacts[static_cast<size_t>(k)];
-            for (int i = 0; i < c.count; ++i)
-            {
-                c.points[i].normalTotal += c.points[i].normalImpulse;
-                c.points[i].tangentTotal += c.points[i].tangentImpulse;
-            }
-        }
     }
     // The traced contact's record gives each pass's impulses, and friction's limits, over the step so far (the
     // sub-steps before its own added), as the velocity passes record theirs: the last pass's are the step's.
