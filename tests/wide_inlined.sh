@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The wide queries are the portable templates instantiated with AVX2 or AVX-512 lanes and flattened into the
-# functions compiled for those instruction sets (core/src/entry.h: RunWide, RunWide512; sweep.cpp:
-# SweepPolygonsWide). They are correct only when every call below those functions is inlined: a template with wide
+# functions compiled for those instruction sets (core/src/entry.h: RunWide, RunWide512,
+# WithSweepTracer). They are correct only when every call below those functions is inlined: a template with wide
 # lanes left out of line is compiled for the baseline instruction set, and a call between it and the AVX code passes
 # vector registers in a convention one side does not share. This check fails when the library holds any such
 # function: a symbol that names the wide tracers or the wide lanes.
