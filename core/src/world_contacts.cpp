@@ -118,6 +118,15 @@ void WakeIslands(World& world, std::vector<int>& seeds)
     }
 }
 
+// A point of this step's contact takes the impulses of the last step's point it continues, to warm start from.
+void TakeImpulses(WorldContactPoint& p, const WorldContactPoint& old)
+{
+    p.normalImpulse = old.normalImpulse;
+    p.tangentImpulse = old.tangentImpulse;
+    p.subStepNormalImpulse = old.subStepNormalImpulse;
+    p.subStepTangentImpulse = old.subStepTangentImpulse;
+}
+
 } // namespace
 
 // Whether the pair (i, j), still apart, is left to the sweep instead of given a speculative contact: one of its
@@ -384,10 +393,7 @@ void Stepper::FindContacts()
                     {
                         if (old->points[l].key == p.key)
                         {
-                            p.normalImpulse = old->points[l].normalImpulse;
-                            p.tangentImpulse = old->points[l].tangentImpulse;
-                            p.subStepNormalImpulse = old->points[l].subStepNormalImpulse;
-                            p.subStepTangentImpulse = old->points[l].subStepTangentImpulse;
+                            TakeImpulses(p, old->points[l]);
                             matched = true;
                         }
                     }
@@ -403,10 +409,7 @@ void Stepper::FindContacts()
                             if (d2 < nearest)
                             {
                                 nearest = d2;
-                                p.normalImpulse = old->points[l].normalImpulse;
-                                p.tangentImpulse = old->points[l].tangentImpulse;
-                                p.subStepNormalImpulse = old->points[l].subStepNormalImpulse;
-                                p.subStepTangentImpulse = old->points[l].subStepTangentImpulse;
+                                TakeImpulses(p, old->points[l]);
                                 matched = true;
                             }
                         }
